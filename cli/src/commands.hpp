@@ -1,0 +1,10 @@
+#pragma once
+// Registration of the `lrchain` subcommands. Each subcommand lives in its own
+// <name>_command.cpp and adds itself to the app here; main.cpp calls them in order.
+#include <CLI/CLI.hpp>
+
+namespace lrchain::cli {
+
+void register_coeffs(CLI::App& app);    // coeffs_command.cpp (NLS coefficients, eq:c..eq:h_tilde)
+
+}  // namespace lrchain::cli

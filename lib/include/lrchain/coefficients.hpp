@@ -1,0 +1,41 @@
+#pragma once
+// NLS coefficients of the modulation equations (eq:mod1, eq:mod2, eq:NLS), evaluated with the
+// C++ code emitted by lrchain-derive (lib/include/lrchain/generated/nls_coefficients.hpp).
+#include <string_view>
+
+#include "lrchain/dispersion.hpp"
+#include "lrchain/params.hpp"
+
+namespace lrchain {
+
+enum class Regime { focusing, defocusing, singular };
+std::string_view to_string(Regime r);
+
+struct NlsCoefficients {
+  double theta = 0;           // carrier wavenumber
+  double omega = 0;           // carrier frequency omega_+-(theta) (eq:disp1d)
+  double group_velocity = 0;  // c = omega'(theta) (eq:c)
+  double curvature = 0;       // omega''(theta) (eq:ppOmega)
+  double gamma = 0;           // (eq:gamma)
+  double beta = 0;            // coupling to the mean flow (eq:ppOmega)
+  double h = 0;               // cubic coefficient before mean-flow elimination (eq:h); NaN if singular
+  double lambda = 0;          // mean-flow factor (eq:lambda); NaN if singular
+  double h_tilde = 0;         // h - lambda beta (eq:h_tilde); NaN if singular
+  double nonresonance1 = 0;   // (4w^2-4K2 sin^2 th-k)(k-4w^2 rho)+k^2 (eq:nonresonance1), != 0 required
+  double nonresonance2 = 0;   // c^2(1+rho)-K2 (eq:nonresonance2), != 0 required
+  Regime regime = Regime::singular;  // focusing iff curvature*h_tilde < 0
+};
+
+// Relative size below which a non-resonance value counts as violated (|value| <= tol * scale).
+inline constexpr double kNonresonanceTolerance = 1e-12;
+
+// All NLS coefficients for one branch at wavenumber theta in (-pi, pi].
+// Throws InvalidParameter for invalid params/theta (including theta = 0 on the acoustic branch,
+// the zero-frequency mode). Allocation-free; built on the generated evaluators.
+NlsCoefficients coefficients(const Params& p, Branch b, double theta);
+
+// Same without validation, for hot loops over pre-validated parameters (K's precomputed).
+NlsCoefficients coefficients_unchecked(const Params& p, const TaylorCoefficients& K, Branch b,
+                                       double theta);
+
+}  // namespace lrchain
