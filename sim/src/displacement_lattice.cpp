@@ -1,0 +1,95 @@
+// Displacement form of the resonant chain (eq:Hertz) with periodic/free/clamped/prescribed ends.
+#include "lrchain/sim/displacement_lattice.hpp"
+
+#include <cstring>
+
+#include "lrchain/errors.hpp"
+
+namespace lrchain::sim {
+
+DisplacementLattice::DisplacementLattice(const Params& p, std::size_t sites,
+                                         DisplacementBoundary boundary)
+    : params_(p), law_(make_contact_law(p)), layout_{sites}, boundary_(std::move(boundary)) {
+  if (sites < 2) throw InvalidParameter("sites", "the chain needs at least 2 beads");
+  for (const EndCondition* e : {&boundary_.left, &boundary_.right})
+    if (!boundary_.periodic && e->kind == EndKind::prescribed && !e->motion)
+      throw InvalidParameter("boundary", "a prescribed end needs a motion u(t)");
+  bond_force_.assign(sites + 1, 0.0);
+}
+
+bool DisplacementLattice::autonomous() const {
+  return boundary_.periodic || (boundary_.left.kind != EndKind::prescribed &&
+                                boundary_.right.kind != EndKind::prescribed);
+}
+
+double DisplacementLattice::ghost(const EndCondition& e, double t) const {
+  return e.kind == EndKind::prescribed ? e.motion(t) : 0.0;
+}
+
+// Bond forces f_j = V'(u_j - u_{j-1}), j = 0..sites, with the ghost beads of the boundary.
+void DisplacementLattice::acceleration(const double* q, double* a, double t) const {
+  const std::size_t n = layout_.sites;
+  const double* u = q;
+  const double* v = q + n;
+  double* f = bond_force_.data();
+  bond_forces_from_displacements(law_, u, f + 1, n - 1);  // interior bonds 1..n-1
+  if (boundary_.periodic) {
+    f[0] = bond_force(law_, u[0] - u[n - 1]);
+    f[n] = f[0];
+  } else {
+    f[0] = boundary_.left.kind == EndKind::free ? 0.0
+                                                : bond_force(law_, u[0] - ghost(boundary_.left, t));
+    f[n] = boundary_.right.kind == EndKind::free
+               ? 0.0
+               : bond_force(law_, ghost(boundary_.right, t) - u[n - 1]);
+  }
+  const double kappa = params_.kappa, kappa_over_rho = params_.kappa / params_.rho;
+  double* __restrict au = a;
+  double* __restrict av = a + n;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = u[i] - v[i];
+    au[i] = f[i + 1] - f[i] - kappa * w;
+    av[i] = kappa_over_rho * w;
+  }
+}
+
+void DisplacementLattice::operator()(const State& s, State& ds, double t) const {
+  const std::size_t n = layout_.sites;
+  std::memcpy(ds.data(), s.data() + 2 * n, 2 * n * sizeof(double));
+  acceleration(s.data(), ds.data() + 2 * n, t);
+}
+
+void DisplacementLattice::bond_strains(const double* u, double t, double* r) const {
+  const std::size_t n = layout_.sites;
+  for (std::size_t j = 1; j < n; ++j) r[j] = u[j] - u[j - 1];
+  if (boundary_.periodic) {
+    r[0] = r[n] = u[0] - u[n - 1];
+  } else {
+    r[0] = boundary_.left.kind == EndKind::free ? 0.0 : u[0] - ghost(boundary_.left, t);
+    r[n] = boundary_.right.kind == EndKind::free ? 0.0 : ghost(boundary_.right, t) - u[n - 1];
+  }
+}
+
+double DisplacementLattice::total_energy(const State& s, double t) const {
+  const std::size_t n = layout_.sites;
+  const double* u = layout_.primary(s);
+  const double* v = layout_.secondary(s);
+  const double* du = layout_.primary_rate(s);
+  const double* dv = layout_.secondary_rate(s);
+  double e = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = u[i] - v[i];
+    e += 0.5 * du[i] * du[i] + 0.5 * params_.rho * dv[i] * dv[i] + 0.5 * params_.kappa * w * w;
+  }
+  for (std::size_t j = 1; j < n; ++j) e += bond_energy(law_, u[j] - u[j - 1]);
+  if (boundary_.periodic) {
+    e += bond_energy(law_, u[0] - u[n - 1]);
+  } else {
+    if (boundary_.left.kind != EndKind::free) e += bond_energy(law_, u[0] - ghost(boundary_.left, t));
+    if (boundary_.right.kind != EndKind::free)
+      e += bond_energy(law_, ghost(boundary_.right, t) - u[n - 1]);
+  }
+  return e;
+}
+
+}  // namespace lrchain::sim
