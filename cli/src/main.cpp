@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
       "sqrt(m1/(A R^(alpha-1))), lengths in units of R). Numbers accept 0.25, 1e-3, 1/3, 3*pi/5."};
   app.require_subcommand(1);
   lrchain::cli::register_coeffs(app);
+  lrchain::cli::register_regime(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,510 @@
+// `lrchain regime intervals|map|thresholds`: focusing/defocusing regimes of the NLS limit
+// (Sec. 3.3, Figs. 2, 4, 5). JSON summary on stdout; data, gnuplot scripts and PNGs in --out.
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "commands.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/regime/boundary_curves.hpp"
+#include "lrchain/regime/focusing_intervals.hpp"
+#include "lrchain/regime/frequency_band.hpp"
+#include "lrchain/regime/paper_thresholds.hpp"
+#include "lrchain/regime/regime_events.hpp"
+#include "lrchain/regime/regime_map.hpp"
+#include "options.hpp"
+
+namespace lrchain::cli {
+
+namespace {
+
+using nlohmann::json;
+using namespace lrchain::regime;
+namespace fs = std::filesystem;
+
+// ---- output helpers -------------------------------------------------------------------------
+
+// Writes text to dir/name through a temporary name and a rename (never a truncated result).
+void write_file(const fs::path& dir, const std::string& name, const std::string& text) {
+  const fs::path target = dir / name;
+  const fs::path tmp = dir / ("." + name + ".tmp" + std::to_string(::getpid()));
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+    out << text;
+    if (!out.flush()) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, target);
+}
+
+// Runs gnuplot on dir/script, drawing to a temporary PNG that is renamed to png.
+bool run_gnuplot(const fs::path& dir, const std::string& script, const std::string& png) {
+  const std::string tmp = "." + png + ".tmp" + std::to_string(::getpid());
+  const std::string cmd = "cd '" + dir.string() + "' && gnuplot -e \"outfile='" + tmp + "'\" '" +
+                          script + "' 2>/dev/null";
+  if (std::system(cmd.c_str()) != 0 || !fs::exists(dir / tmp)) return false;
+  fs::rename(dir / tmp, dir / png);
+  return true;
+}
+
+json params_json(const Params& p) {
+  return {{"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}};
+}
+
+json interval_json(const FocusingInterval& i) {
+  return {{"lo", i.lo},
+          {"hi", i.hi},
+          {"lo_cause", std::string(to_string(i.lo_cause))},
+          {"hi_cause", std::string(to_string(i.hi_cause))}};
+}
+
+json event_json(const RegimeEvent& e) {
+  json causes = json::array();
+  for (auto c : e.causes) causes.push_back(std::string(to_string(c)));
+  json j = {{"value", e.value},
+            {"kind", std::string(to_string(e.kind))},
+            {"causes", causes},
+            {"focusing_intervals_before", e.intervals_before},
+            {"focusing_intervals_after", e.intervals_after}};
+  j["theta"] = std::isfinite(e.theta) ? json(e.theta) : json(nullptr);
+  return j;
+}
+
+// Pixel map as CSV "x,y,regime" in scan order (y rows, blank line between rows for gnuplot).
+std::string map_csv(const RegimeMap& m, const char* xname, const char* yname) {
+  std::ostringstream s;
+  s.precision(10);
+  s << xname << ',' << yname << ",regime\n";
+  for (int j = 0; j < m.y.n; ++j) {
+    for (int i = 0; i < m.x.n; ++i)
+      s << m.x.at(i) << ',' << m.y.at(j) << ',' << static_cast<int>(m.at(i, j)) << '\n';
+    s << '\n';
+  }
+  return s.str();
+}
+
+// Boundary polylines of one cause as CSV "x,y", one blank line between polylines.
+std::string curves_csv(const std::vector<BoundaryCurve>& curves, BoundaryCause cause,
+                       const char* xname, const char* yname, int& count) {
+  std::ostringstream s;
+  s.precision(15);
+  s << xname << ',' << yname << '\n';
+  count = 0;
+  for (const auto& c : curves) {
+    if (c.cause != cause) continue;
+    ++count;
+    for (const auto& p : c.points) s << p.x << ',' << p.y << '\n';
+    s << '\n';
+  }
+  return s.str();
+}
+
+// gnuplot line style per cause, after the legend of Fig. 2.
+std::string cause_style(BoundaryCause c) {
+  switch (c) {
+    case BoundaryCause::curvature_zero: return "lc rgb '#0000ff' lw 2 dt 2";
+    case BoundaryCause::nonresonance2: return "lc rgb '#009900' lw 2";
+    case BoundaryCause::nonresonance1: return "lc rgb '#000000' lw 2";
+    case BoundaryCause::h_tilde_zero: return "lc rgb '#cc0000' lw 1.5 dt 4";
+    case BoundaryCause::band_edge: return "lc rgb '#888888'";
+  }
+  return "";
+}
+std::string cause_title(BoundaryCause c) {
+  switch (c) {
+    case BoundaryCause::curvature_zero: return "{/Symbol w}''=0";
+    case BoundaryCause::nonresonance2: return "c^2(1+{/Symbol r})=K_2 (nonres. 2)";
+    case BoundaryCause::nonresonance1: return "nonres. 1 violated";
+    case BoundaryCause::h_tilde_zero: return "h~=0";
+    case BoundaryCause::band_edge: return "band edge";
+  }
+  return "";
+}
+
+const char* kPalette =
+    "set palette defined (-1 '#dddddd', 0 '#ffffff', 1 '#ffaacc', 2 '#000000')\n"
+    "set cbrange [-1:2]\nunset colorbox\n";
+
+// ---- regime intervals -----------------------------------------------------------------------
+
+struct IntervalsArgs {
+  Params p;
+  std::string branch = "optical";
+  int samples = 2048;
+  bool json_flag = false;
+};
+
+void run_intervals(const IntervalsArgs& a) {
+  const Branch b = parse_branch(a.branch);
+  validate(a.p);
+  const auto s = regime_structure(regime_functions(a.p, b), {a.samples, 1e-12});
+  json intervals = json::array(), roots = json::array();
+  for (const auto& i : s.intervals) intervals.push_back(interval_json(i));
+  for (const auto& r : s.roots)
+    roots.push_back({{"theta", r.theta}, {"cause", std::string(to_string(r.cause))}});
+  json out = {{"branch", std::string(to_string(b))},
+              {"params", params_json(a.p)},
+              {"intervals", intervals},
+              {"boundaries", roots},
+              {"theta_tolerance", 1e-12}};
+  std::cout << out.dump(2) << '\n';
+}
+
+// ---- regime map -----------------------------------------------------------------------------
+
+struct MapArgs {
+  Params p;
+  std::string plane = "theta-rho";
+  std::string branch = "both";
+  std::string out;
+  std::vector<std::string> rho_range, delta0_range, omega_range;  // lo hi (shared parser)
+  int res_x = 600, res_y = 600;
+  bool delta0_log = false;
+  bool no_curves = false;
+  bool no_png = false;
+};
+
+std::vector<Branch> branches_of(const std::string& text) {
+  if (text == "both") return {Branch::optical, Branch::acoustic};
+  return {parse_branch(text)};
+}
+
+std::vector<double> range_or(const std::vector<std::string>& given, std::vector<double> fallback,
+                             const char* name) {
+  if (given.empty()) return fallback;
+  if (given.size() != 2) throw InvalidParameter(name, "range needs two numbers lo hi");
+  const std::vector<double> r{parse_number(given[0], name), parse_number(given[1], name)};
+  if (!(r[0] < r[1])) throw InvalidParameter(name, "range needs lo < hi");
+  return r;
+}
+
+json map_theta_rho(const MapArgs& a, const fs::path& dir) {
+  json files = json::array(), panels = json::array();
+  std::ostringstream gp;
+  const auto bs = branches_of(a.branch);
+  gp << "# Regime map sign(omega'' h_tilde) over (rho, theta), cf. Fig. 2 of the paper.\n"
+        "# Pink: focusing (omega'' h_tilde < 0), white: defocusing. Re-run: gnuplot "
+        "regime_theta-rho.gp\n"
+     << "if (!exists('outfile')) outfile = 'regime_theta-rho.png'\n"
+     << "set terminal pngcairo size " << 700 * bs.size() << ",620 font 'DejaVu Sans,11'\n"
+     << "set output outfile\nset datafile separator ','\n" << kPalette
+     << "set multiplot layout 1," << bs.size() << "\n"
+     << "set xlabel '{/Symbol r}'\nset ylabel '{/Symbol q}'\nset yrange [0:pi]\n"
+        "set key bottom right opaque box font ',9'\n";
+  for (Branch b : bs) {
+    const std::string bn(to_string(b));
+    const auto rr =
+        range_or(a.rho_range, b == Branch::optical ? std::vector<double>{0.01, 30.0}
+                                                   : std::vector<double>{0.01, 2.5},
+                 "rho-range");
+    const GridAxis rho{rr[0], rr[1], a.res_x}, theta{std::numbers::pi / a.res_y, std::numbers::pi,
+                                                     a.res_y};
+    const auto t0 = std::chrono::steady_clock::now();
+    const RegimeMap m = theta_rho_map(a.p, b, rho, theta);
+    const double map_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const std::string mapfile = "regime_theta-rho_" + bn + ".csv";
+    write_file(dir, mapfile, map_csv(m, "rho", "theta"));
+    files.push_back(mapfile);
+    gp << "set title '" << bn << " branch ({/Symbol a}=" << a.p.alpha << ", {/Symbol d}_0="
+       << a.p.delta0 << ", {/Symbol k}=" << a.p.kappa << ")'\n"
+       << "set xrange [" << rr[0] << ":" << rr[1] << "]\n"
+       << "plot '" << mapfile << "' using 1:2:3 with image notitle";
+    json curves_info = json::object();
+    if (!a.no_curves) {
+      const auto t1 = std::chrono::steady_clock::now();
+      const auto curves = boundary_curves(a.p, b, ParameterAxis::rho, rr[0], rr[1]);
+      curves_info["seconds"] =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+      for (BoundaryCause c : kSmoothCauses) {
+        int n = 0;
+        const std::string csv = curves_csv(curves, c, "rho", "theta", n);
+        curves_info[std::string(to_string(c))] = n;
+        if (n == 0) continue;
+        const std::string f = "boundary_theta-rho_" + bn + "_" + std::string(to_string(c)) + ".csv";
+        write_file(dir, f, csv);
+        files.push_back(f);
+        gp << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title '"
+           << cause_title(c) << "'";
+      }
+    }
+    gp << "\n";
+    int focusing = 0;
+    for (auto v : m.values) focusing += v == PixelRegime::focusing;
+    panels.push_back({{"branch", bn},
+                      {"rho_range", rr},
+                      {"resolution", {a.res_x, a.res_y}},
+                      {"map_seconds", map_s},
+                      {"focusing_fraction", double(focusing) / m.values.size()},
+                      {"boundary_polylines", curves_info}});
+  }
+  gp << "unset multiplot\n";
+  write_file(dir, "regime_theta-rho.gp", gp.str());
+  files.push_back("regime_theta-rho.gp");
+  json out = {{"plane", "theta-rho"}, {"params", params_json(a.p)}, {"panels", panels}};
+  if (!a.no_png) {
+    const bool ok = run_gnuplot(dir, "regime_theta-rho.gp", "regime_theta-rho.png");
+    if (ok) files.push_back("regime_theta-rho.png");
+    out["png"] = ok;
+  }
+  out["files"] = files;
+  return out;
+}
+
+json map_delta0_omega(const MapArgs& a, const fs::path& dir) {
+  json files = json::array(), panels = json::array();
+  const auto bs = branches_of(a.branch == "both" ? "optical" : a.branch);
+  const Branch b = bs.front();
+  const std::string bn(to_string(b));
+  const auto dr = range_or(a.delta0_range, {0.001, 1.0}, "delta0-range");
+  const GridAxis delta0{dr[0], dr[1], a.res_x, a.delta0_log};
+  validate(delta0, "delta0");
+  // omega range: the union of the bands over the delta0 range (bands grow with delta0).
+  Params plo = with_parameter(a.p, ParameterAxis::delta0, dr[0]);
+  Params phi = with_parameter(a.p, ParameterAxis::delta0, dr[1]);
+  const FrequencyBand blo = frequency_band(plo, b), bhi = frequency_band(phi, b);
+  const double wmax = std::max(blo.hi, bhi.hi);
+  const auto wr =
+      range_or(a.omega_range, {b == Branch::optical ? 0.98 * blo.lo : 0.0, 1.02 * wmax},
+               "omega-range");
+  const GridAxis omega{wr[0], wr[1], a.res_y};
+  const auto t0 = std::chrono::steady_clock::now();
+  const RegimeMap m = delta0_omega_map(a.p, b, delta0, omega);
+  const double map_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const std::string tag = "delta0-omega_" + bn;
+  write_file(dir, "regime_" + tag + ".csv", map_csv(m, "delta0", "omega"));
+  files.push_back("regime_" + tag + ".csv");
+
+  // Root-found focusing frequency bands per delta0 (hatched in the figure), band edges, counts.
+  std::vector<std::vector<FocusingInterval>> per(delta0.n);
+#pragma omp parallel for schedule(dynamic)
+  for (int i = 0; i < delta0.n; ++i)
+    per[i] = focusing_intervals(with_parameter(a.p, ParameterAxis::delta0, delta0.at(i)), b,
+                                {1024, 1e-12});
+  std::ostringstream iv, cnt, edges;
+  iv.precision(12);
+  cnt.precision(12);
+  edges.precision(12);
+  iv << "delta0,omega_lo,omega_hi,theta_lo,theta_hi,lo_cause,hi_cause,delta0_lo,delta0_hi\n";
+  cnt << "delta0,focusing_bands\n";
+  edges << "delta0,omega_theta0,omega_thetapi\n";
+  json transitions = json::array();
+  int prev = -1;
+  for (int i = 0; i < delta0.n; ++i) {
+    const double d = delta0.at(i);
+    const Params p = with_parameter(a.p, ParameterAxis::delta0, d);
+    // cell edges in delta0 (for the hatched boxes)
+    const double dl = i > 0 ? 0.5 * (delta0.at(i - 1) + d) : d;
+    const double dh = i + 1 < delta0.n ? 0.5 * (d + delta0.at(i + 1)) : d;
+    for (const auto& f : per[i]) {
+      iv << d << ',' << dispersion_omega(p, b, f.lo) << ',' << dispersion_omega(p, b, f.hi) << ','
+         << f.lo << ',' << f.hi << ',' << to_string(f.lo_cause) << ',' << to_string(f.hi_cause)
+         << ',' << dl << ',' << dh << '\n';
+    }
+    const int n = static_cast<int>(per[i].size());
+    cnt << d << ',' << n << '\n';
+    edges << d << ',' << dispersion_omega(p, b, 0.0) << ','
+          << dispersion_omega(p, b, std::numbers::pi) << '\n';
+    if (n != prev)
+      transitions.push_back({{"delta0_from", i > 0 ? json(delta0.at(i - 1)) : json(nullptr)},
+                             {"delta0_to", d},
+                             {"focusing_bands", n}});
+    prev = n;
+  }
+  write_file(dir, "intervals_" + tag + ".csv", iv.str());
+  write_file(dir, "band_count_" + tag + ".csv", cnt.str());
+  write_file(dir, "band_edges_" + tag + ".csv", edges.str());
+  for (auto f : {"intervals_", "band_count_", "band_edges_"}) files.push_back(f + tag + ".csv");
+
+  std::ostringstream gp;
+  gp << "# Focusing (hatched) and defocusing (white) modes of the " << bn
+     << " band versus precompression delta0, cf. Figs. 4-5 of the paper.\n"
+     << "# Re-run: gnuplot regime_" << tag << ".gp\n"
+     << "if (!exists('outfile')) outfile = 'regime_" << tag << ".png'\n"
+     << "set terminal pngcairo size 800,900 font 'DejaVu Sans,11'\nset output outfile\n"
+     << "set datafile separator ','\n"
+     << "set multiplot layout 2,1 margins 0.12,0.96,0.08,0.95 spacing 0,0.08\n"
+     << (a.delta0_log ? "set logscale x\n" : "") << "set xrange [" << dr[0] << ":" << dr[1]
+     << "]\nset yrange [" << wr[0] << ":" << wr[1] << "]\n"
+     << "set xlabel '{/Symbol d}_0'\nset ylabel '{/Symbol w}'\n"
+     << "set title '" << bn << " band, {/Symbol r}=" << a.p.rho << ", {/Symbol k}=" << a.p.kappa
+     << ", {/Symbol a}=" << a.p.alpha << ": hatched = focusing ({/Symbol w}''h~ < 0)'\n"
+     << "set key top left opaque box font ',9'\n"
+     << "plot 'intervals_" << tag
+     << ".csv' using 1:(($2+$3)/2):8:9:2:3 with boxxyerror fs pattern 4 noborder lc rgb "
+        "'#cc3366' title 'focusing', \\\n"
+     << "  'band_edges_" << tag << ".csv' using 1:3 with lines lc rgb '#000000' dt 3 lw 2 title "
+     << (b == Branch::optical ? "'{/Symbol w}_+({/Symbol p})'" : "'{/Symbol w}_-({/Symbol p})'");
+  if (b == Branch::optical)
+    gp << ", \\\n  'band_edges_" << tag
+       << ".csv' using 1:2 with lines lc rgb '#ff0000' lw 2 title '{/Symbol w}_+(0)'";
+  json curves_info = json::object();
+  if (!a.no_curves) {
+    const auto t1 = std::chrono::steady_clock::now();
+    auto curves = boundary_curves(a.p, b, ParameterAxis::delta0, dr[0], dr[1]);
+    to_omega_plane(curves, a.p, b);
+    curves_info["seconds"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+    for (BoundaryCause c : kSmoothCauses) {
+      int n = 0;
+      const std::string csv = curves_csv(curves, c, "delta0", "omega", n);
+      curves_info[std::string(to_string(c))] = n;
+      if (n == 0) continue;
+      const std::string f = "boundary_" + tag + "_" + std::string(to_string(c)) + ".csv";
+      write_file(dir, f, csv);
+      files.push_back(f);
+      gp << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title '"
+         << cause_title(c) << "'";
+    }
+  }
+  gp << "\nset title 'number of focusing frequency bands'\nset ylabel 'bands'\n"
+        "set yrange [-0.2:*]\nset ytics 1\nunset key\n"
+     << "plot 'band_count_" << tag << ".csv' using 1:2 with steps lw 2 lc rgb '#cc3366'\n"
+     << "unset multiplot\n";
+  write_file(dir, "regime_" + tag + ".gp", gp.str());
+  files.push_back("regime_" + tag + ".gp");
+  json out = {{"plane", "delta0-omega"},
+              {"branch", bn},
+              {"params", params_json(a.p)},
+              {"delta0_range", dr},
+              {"omega_range", wr},
+              {"resolution", {a.res_x, a.res_y}},
+              {"map_seconds", map_s},
+              {"focusing_band_count", transitions},
+              {"boundary_polylines", curves_info}};
+  if (!a.no_png) {
+    const bool ok = run_gnuplot(dir, "regime_" + tag + ".gp", "regime_" + tag + ".png");
+    if (ok) files.push_back("regime_" + tag + ".png");
+    out["png"] = ok;
+  }
+  out["files"] = files;
+  return out;
+}
+
+void run_map(const MapArgs& a) {
+  validate(a.p);
+  if (a.res_x < 2 || a.res_x > 20000) throw InvalidParameter("nx", "must be in [2, 20000]");
+  if (a.res_y < 2 || a.res_y > 20000) throw InvalidParameter("ny", "must be in [2, 20000]");
+  const fs::path dir(a.out);
+  fs::create_directories(dir);
+  json out;
+  if (a.plane == "theta-rho")
+    out = map_theta_rho(a, dir);
+  else if (a.plane == "delta0-omega")
+    out = map_delta0_omega(a, dir);
+  else
+    throw InvalidParameter("plane", "must be 'theta-rho' or 'delta0-omega', got '" + a.plane + "'");
+  out["out"] = fs::absolute(dir).string();
+  std::cout << out.dump(2) << '\n';
+}
+
+// ---- regime thresholds ----------------------------------------------------------------------
+
+void run_thresholds(int scan_points) {
+  json scenarios = json::array();
+  for (auto s : paper_threshold_scenarios()) {
+    if (scan_points > 0) s.scan.n = scan_points;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto events = regime_events(s.base, s.branch, s.axis, s.scan);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    json ev = json::array(), matched = json::array();
+    for (const auto& e : events) ev.push_back(event_json(e));
+    for (const auto& m : match_paper_values(s, events)) {
+      json j = {{"paper", m.paper}, {"found", m.found}};
+      if (m.found) {
+        j["computed"] = m.event.value;
+        j["relative_difference"] = m.event.value / m.paper - 1.0;
+        j["event"] = event_json(m.event);
+      }
+      matched.push_back(j);
+    }
+    scenarios.push_back({{"name", s.name},
+                         {"branch", std::string(to_string(s.branch))},
+                         {"axis", std::string(to_string(s.axis))},
+                         {"params", params_json(s.base)},
+                         {"scan", {{"lo", s.scan.lo}, {"hi", s.scan.hi}, {"points", s.scan.n}}},
+                         {"paper_text", s.paper_text},
+                         {"paper_values", matched},
+                         {"events", ev},
+                         {"seconds", secs}});
+  }
+  std::cout << json{{"scenarios", scenarios}}.dump(2) << '\n';
+}
+
+}  // namespace
+
+void register_regime(CLI::App& app) {
+  auto* regime = app.add_subcommand(
+      "regime",
+      "Focusing/defocusing regimes of the NLS limit (Sec. 3.3, Figs. 2, 4, 5): focusing "
+      "wavenumber intervals (omega'' h_tilde < 0), regime maps and special parameter values.");
+  regime->require_subcommand(1);
+
+  // intervals
+  auto ia = std::make_shared<IntervalsArgs>();
+  auto* in = regime->add_subcommand(
+      "intervals",
+      "Focusing theta-intervals in (0, pi] for one branch. Ends are found by TOMS 748 on the smooth "
+      "functions omega'', numerator of h_tilde, eq:nonresonance1, eq:nonresonance2 to 1e-12 in "
+      "theta and labelled curvature_zero, h_tilde_zero, nonresonance1, nonresonance2 or band_edge. "
+      "theta is the dimensionless carrier wavenumber (radians per site).");
+  add_model_options(*in, ia->p, true);
+  in->add_option("--branch", ia->branch, "optical or acoustic (default optical)");
+  in->add_option("--samples", ia->samples,
+                 "theta samples used to bracket the zeros (default 2048)")
+      ->check(CLI::Range(8, 10000000));
+  in->add_flag("--json", ia->json_flag, "print JSON (the default and only format)");
+  in->callback([ia] { run_intervals(*ia); });
+
+  // map
+  auto ma = std::make_shared<MapArgs>();
+  auto* mp = regime->add_subcommand(
+      "map",
+      "Regime map written to --out: CSV pixel map (regime -1 outside band, 0 defocusing, "
+      "1 focusing, 2 singular), boundary curves as CSV polylines per cause (traced by "
+      "continuation), a gnuplot script and its PNG. theta-rho: Fig. 2 (rho on x, theta on y; "
+      "default rho range 0.01..30 optical, 0.01..2.5 acoustic; branch both draws two panels). "
+      "delta0-omega: Figs. 4-5 (kappa as given, paper: 1; default delta0 0.001..1; hatched "
+      "focusing frequency bands from root-found intervals, and their number versus delta0).");
+  add_model_options(*mp, ma->p, false);
+  mp->add_option("--plane", ma->plane, "theta-rho (default) or delta0-omega");
+  mp->add_option("--branch", ma->branch, "optical, acoustic or both (default both; theta-rho only)");
+  mp->add_option("--out", ma->out, "output directory (created)")->required();
+  mp->add_option("--rho-range", ma->rho_range, "theta-rho: rho lo hi")->expected(2);
+  mp->add_option("--delta0-range", ma->delta0_range, "delta0-omega: delta0 lo hi")->expected(2);
+  mp->add_option("--omega-range", ma->omega_range,
+                 "delta0-omega: omega lo hi (default: the band over the delta0 range)")
+      ->expected(2);
+  mp->add_flag("--delta0-log", ma->delta0_log, "delta0-omega: logarithmic delta0 axis");
+  mp->add_option("--nx", ma->res_x, "pixels along x (rho or delta0), default 600");
+  mp->add_option("--ny", ma->res_y, "pixels along y (theta or omega), default 600");
+  mp->add_flag("--no-curves", ma->no_curves, "skip tracing the boundary curves");
+  mp->add_flag("--no-png", ma->no_png, "write the .gp script but do not run gnuplot");
+  mp->callback([ma] { run_map(*ma); });
+
+  // thresholds
+  auto scan = std::make_shared<int>(0);
+  auto json_flag = std::make_shared<bool>(false);
+  auto* th = regime->add_subcommand(
+      "thresholds",
+      "The paper's special mass ratios and precompressions (Sec. 3.3) computed as codimension-two "
+      "points: scans of rho (delta0 = 4/9) or delta0 (rho = 3, 17.8, 0.32), kappa = 1, "
+      "alpha = 3/2; every change of the boundary structure is located by TOMS 748 (crossing of "
+      "two boundary curves, fold = birth/death of a pair of boundaries, entry through theta = pi) "
+      "with the number of focusing intervals before and after, and matched to the printed values.");
+  th->add_option("--scan", *scan, "scan points per scenario (default: built-in 300-400)")
+      ->check(CLI::Range(10, 100000));
+  th->add_flag("--json", *json_flag, "print JSON (the default and only format)");
+  th->callback([scan] { run_thresholds(*scan); });
+}
+
+}  // namespace lrchain::cli
