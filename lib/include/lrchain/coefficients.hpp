@@ -8,7 +8,9 @@
 
 namespace lrchain {
 
-enum class Regime { focusing, defocusing, singular };
+// focusing: omega''*h_tilde < 0; defocusing: > 0; degenerate: = 0 (e.g. theta = 0 optical, where
+// the NLS is linear, Sec. 4.2); singular: a non-resonance condition is violated (h_tilde has a pole).
+enum class Regime { focusing, defocusing, degenerate, singular };
 std::string_view to_string(Regime r);
 
 struct NlsCoefficients {
@@ -21,6 +23,7 @@ struct NlsCoefficients {
   double h = 0;               // cubic coefficient before mean-flow elimination (eq:h); NaN if singular
   double lambda = 0;          // mean-flow factor (eq:lambda); NaN if singular
   double h_tilde = 0;         // h - lambda beta (eq:h_tilde); NaN if singular
+  double h_tilde_numerator = 0;  // h_tilde * nonresonance1 * nonresonance2: smooth across the poles
   double nonresonance1 = 0;   // (4w^2-4K2 sin^2 th-k)(k-4w^2 rho)+k^2 (eq:nonresonance1), != 0 required
   double nonresonance2 = 0;   // c^2(1+rho)-K2 (eq:nonresonance2), != 0 required
   Regime regime = Regime::singular;  // focusing iff curvature*h_tilde < 0

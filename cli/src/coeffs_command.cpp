@@ -1,0 +1,113 @@
+// `lrchain coeffs`: NLS coefficients (eq:c, eq:ppOmega, eq:h, eq:gamma, eq:lambda, eq:h_tilde) at one
+// wavenumber, or (--table) the coefficient table of both branches at a few wavenumbers.
+#include <cmath>
+#include <cstdio>
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "lrchain/coefficients.hpp"
+#include "lrchain/errors.hpp"
+#include "options.hpp"
+
+namespace lrchain::cli {
+namespace {
+
+struct CoeffsOptions {
+  Params params;
+  double theta = std::numeric_limits<double>::quiet_NaN();
+  std::string branch;
+  bool json = false;
+  bool table = false;
+};
+
+nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json to_json(const NlsCoefficients& c) {
+  return {{"theta", c.theta},
+          {"omega", number_or_null(c.omega)},
+          {"group_velocity", number_or_null(c.group_velocity)},
+          {"curvature", number_or_null(c.curvature)},
+          {"gamma", number_or_null(c.gamma)},
+          {"beta", number_or_null(c.beta)},
+          {"h", number_or_null(c.h)},
+          {"lambda", number_or_null(c.lambda)},
+          {"h_tilde", number_or_null(c.h_tilde)},
+          {"nonresonance1", number_or_null(c.nonresonance1)},
+          {"nonresonance2", number_or_null(c.nonresonance2)},
+          {"regime", std::string(to_string(c.regime))}};
+}
+
+std::string cell(double v) { return std::isfinite(v) ? fmt::format("{:>12.6g}", v) : fmt::format("{:>12}", "singular"); }
+
+void print_text(const NlsCoefficients& c, Branch b, const Params& p) {
+  fmt::print("{} branch, theta = {:.12g} (alpha={:g}, delta0={:.12g}, kappa={:g}, rho={:.12g})\n", to_string(b),
+             c.theta, p.alpha, p.delta0, p.kappa, p.rho);
+  const auto row = [](const char* name, const char* eq, double v) {
+    fmt::print("  {:<15} {:<22} {}\n", name, eq, std::isfinite(v) ? fmt::format("{:.17g}", v) : "singular");
+  };
+  row("omega", "(eq:disp1d)", c.omega);
+  row("group_velocity", "c (eq:c)", c.group_velocity);
+  row("curvature", "omega'' (eq:ppOmega)", c.curvature);
+  row("gamma", "(eq:gamma)", c.gamma);
+  row("beta", "(eq:ppOmega)", c.beta);
+  row("h", "(eq:h)", c.h);
+  row("lambda", "(eq:lambda)", c.lambda);
+  row("h_tilde", "h - lambda beta", c.h_tilde);
+  row("nonresonance1", "(eq:nonresonance1)", c.nonresonance1);
+  row("nonresonance2", "(eq:nonresonance2)", c.nonresonance2);
+  fmt::print("  {:<15} {:<22} {}\n", "regime", "sign(omega'' h_tilde)", to_string(c.regime));
+}
+
+// The main job's table: both branches at theta = pi/8, pi/4, pi/2, 3pi/5, 3pi/4, pi.
+void print_table(const Params& p) {
+  fmt::print("NLS coefficients, alpha={:g}, delta0={:.6g}, kappa={:g}, rho={:.6g} (derived by lrchain-derive)\n",
+             p.alpha, p.delta0, p.kappa, p.rho);
+  const std::vector<std::pair<const char*, double>> thetas = {
+      {"pi/8", std::numbers::pi / 8}, {"pi/4", std::numbers::pi / 4},      {"pi/2", std::numbers::pi / 2},
+      {"3pi/5", 3 * std::numbers::pi / 5}, {"3pi/4", 3 * std::numbers::pi / 4}, {"pi", std::numbers::pi}};
+  for (Branch b : {Branch::optical, Branch::acoustic}) {
+    fmt::print("\n{} branch\n{:>7} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}  {}\n", to_string(b), "theta",
+               "omega", "c", "omega''", "beta", "h", "lambda", "h_tilde", "regime");
+    for (const auto& [label, theta] : thetas) {
+      const NlsCoefficients c = coefficients(p, b, theta);
+      fmt::print("{:>7} {}{}{}{}{}{}{}  {}\n", label, cell(c.omega), cell(c.group_velocity), cell(c.curvature),
+                 cell(c.beta), cell(c.h), cell(c.lambda), cell(c.h_tilde), to_string(c.regime));
+    }
+  }
+}
+
+}  // namespace
+
+void register_coeffs(CLI::App& app) {
+  auto opts = std::make_shared<CoeffsOptions>();
+  auto* cmd = app.add_subcommand(
+      "coeffs",
+      "NLS coefficients of the modulation equations (Sec. 3): omega, group velocity c, curvature omega'',\n"
+      "gamma, beta, h, lambda, h_tilde = h - lambda beta, the two non-resonance values and the regime\n"
+      "(focusing if omega'' h_tilde < 0). Dimensionless units of Sec. 2.");
+  add_number(*cmd, "--theta", opts->theta, "carrier wavenumber in (-pi, pi], e.g. pi/2 (required unless --table)");
+  add_model_options(*cmd, opts->params, /*rho_required=*/false);
+  cmd->add_option("--branch", opts->branch, "dispersion branch: optical (omega_+) or acoustic (omega_-)")
+      ->type_name("optical|acoustic");
+  cmd->add_flag("--json", opts->json, "print one JSON object (singular coefficients as null)");
+  cmd->add_flag("--table", opts->table, "print the table of both branches at theta = pi/8 ... pi");
+  cmd->callback([opts] {
+    if (opts->table) {
+      validate(opts->params);
+      print_table(opts->params);
+      return;
+    }
+    if (std::isnan(opts->theta)) throw InvalidParameter("theta", "is required: a wavenumber in (-pi, pi]");
+    if (opts->branch.empty()) throw InvalidParameter("branch", "is required: 'optical' or 'acoustic'");
+    const Branch b = parse_branch(opts->branch);
+    const NlsCoefficients c = coefficients(opts->params, b, opts->theta);
+    if (opts->json) std::printf("%s\n", to_json(c).dump().c_str());
+    else print_text(c, b, opts->params);
+  });
+}
+
+}  // namespace lrchain::cli
