@@ -1,0 +1,20 @@
+#pragma once
+// Files of a bright-breather run in --out: series.csv, snapshot_*.csv, energy_density_spacetime.bin,
+// summary.json, and the figures snapshots.gp/.png (like Figs. 6, 8, 10: profiles vs ansatz and
+// E_x, E_y) and energy.gp/.png (like Figs. 7, 9: e_n space-time and energy centre X(t)).
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "lrchain/sim/bright_run.hpp"
+
+namespace lrchain::sim {
+
+nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s);
+
+// Writes data, summary.json (= `summary`) and figures; returns the list of figure files rendered.
+std::vector<std::string> write_bright_outputs(const std::filesystem::path& dir,
+                                              const BrightRunResult& r,
+                                              const nlohmann::json& summary);
+
+}  // namespace lrchain::sim

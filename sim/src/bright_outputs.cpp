@@ -1,0 +1,127 @@
+// Output files and gnuplot figures of a bright-breather run (Figs. 6-13 style).
+#include "lrchain/sim/bright_outputs.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+#include "lrchain/sim/output_files.hpp"
+
+namespace lrchain::sim {
+
+nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
+  nlohmann::json j;
+  j["experiment"] = "bright";
+  j["params"] = {{"alpha", c.params.alpha}, {"delta0", c.params.delta0},
+                 {"kappa", c.params.kappa}, {"rho", c.params.rho}};
+  j["branch"] = std::string(to_string(c.branch));
+  j["theta"] = c.theta;
+  j["N"] = c.N;
+  j["periods"] = c.periods;
+  j["ansatz_ends"] = c.ansatz_ends;
+  j["integrator"] = {{"stepper", std::string(to_string(c.integrator.stepper))},
+                     {"abs_tol", c.integrator.abs_tol}, {"rel_tol", c.integrator.rel_tol},
+                     {"dt", c.integrator.dt}};
+  j["ansatz"] = {{"omega", s.omega},   {"omega_b", s.omega_b},  {"T_b", s.period},
+                 {"group_velocity", s.group_velocity},          {"curvature", s.curvature},
+                 {"h_tilde", s.h_tilde}, {"M1", s.M1},          {"M2", s.M2},
+                 {"inverse_width", s.inverse_width}};
+  j["x0_inf"] = s.x0_inf;
+  j["y0_inf"] = s.y0_inf;
+  j["max_E_x"] = s.max_Ex;
+  j["max_E_y"] = s.max_Ey;
+  if (c.error_window_end > 0)
+    j["error_window"] = {{"t_max", c.error_window_end}, {"max_E_x", s.max_Ex_window},
+                         {"max_E_y", s.max_Ey_window}};
+  j["final_E_x"] = s.final_Ex;
+  j["final_E_y"] = s.final_Ey;
+  j["energy0"] = s.energy0;
+  if (!c.ansatz_ends) j["max_relative_energy_drift"] = s.max_energy_drift;
+  j["centre_speed"] = s.centre_speed;
+  j["centre_start"] = s.centre_start;
+  j["centre_end"] = s.centre_end;
+  j["t_end"] = s.t_end;
+  j["interrupted"] = s.interrupted;
+  j["blew_up"] = s.blew_up;
+  j["steps"] = s.stats.steps;
+  j["rhs_evaluations"] = s.stats.rhs_evaluations;
+  j["solve_seconds"] = s.solve_seconds;
+  return j;
+}
+
+namespace {
+
+std::string snapshots_script(const BrightRunResult& r) {
+  std::string files, titles;
+  for (const auto& s : r.record.snapshots) {
+    files += "snapshot_" + s.tag + ".csv ";
+    titles += fmt::format("t={:.1f} ", s.t);
+  }
+  return fmt::format(R"GP(# Snapshots of x_n, y_n (lattice, lines) vs the NLS ansatz eq:focus_app (stars), and E_x, E_y.
+if (!exists("outfile")) outfile = 'snapshots.png'
+set terminal pngcairo size 1400,1100 font ",11"
+set output outfile
+set datafile separator ","
+files = "{}"
+titles = "{}"
+set key outside right
+set multiplot layout 3,1
+set xlabel "n"
+set ylabel "x_n"
+plot for [i=1:words(files)] word(files,i) using 1:2 with lines lw 1.5 title "lattice ".word(titles,i), \
+     for [i=1:words(files)] word(files,i) using 1:4 every 2 with points pt 3 ps 0.6 lc rgb "blue" title (i==1 ? "ansatz" : "")
+set ylabel "y_n"
+plot for [i=1:words(files)] word(files,i) using 1:3 with lines lw 1.5 title "lattice ".word(titles,i), \
+     for [i=1:words(files)] word(files,i) using 1:5 every 2 with points pt 3 ps 0.6 lc rgb "blue" title (i==1 ? "ansatz" : "")
+set xlabel "t"
+set ylabel "relative error"
+plot 'series.csv' using 1:2 skip 1 with lines lw 1.5 lc rgb "red" title "E_x", \
+     'series.csv' using 1:3 skip 1 with lines dt 2 lw 1.5 lc rgb "blue" title "E_y"
+unset multiplot
+)GP",
+                     files, titles);
+}
+
+std::string energy_script(const BrightRunResult& r) {
+  float emax = 0;
+  for (const auto& f : r.record.fields)
+    for (float v : f.values) emax = std::max(emax, v);
+  if (!(emax > 0)) emax = 1;
+  return fmt::format(R"GP(# Left: energy density e_n(t) (eq:edensity), log colour scale. Right: energy centre X(t) (eq:ectr).
+if (!exists("outfile")) outfile = 'energy.png'
+set terminal pngcairo size 1400,600 font ",11"
+set output outfile
+set multiplot layout 1,2
+set xlabel "n"
+set ylabel "t"
+set logscale cb
+set cbrange [{:.3e}:{:.3e}]
+set palette rgbformulae 33,13,10
+set format cb "%.0e"
+set autoscale fix
+plot 'energy_density_spacetime.bin' binary matrix using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle
+unset logscale cb
+set datafile separator ","
+set xlabel "t"
+set ylabel "X (energy centre)"
+plot 'series.csv' using 1:5 skip 1 with lines lw 1.5 notitle
+unset multiplot
+)GP",
+                     emax * 1e-6, emax, emax * 1e-6, emax * 1e-6);
+}
+
+}  // namespace
+
+std::vector<std::string> write_bright_outputs(const std::filesystem::path& dir,
+                                              const BrightRunResult& r,
+                                              const nlohmann::json& summary) {
+  ensure_directory(dir);
+  write_record(dir, r.record);
+  write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
+  std::vector<std::string> figures;
+  if (render_gnuplot(dir, "snapshots.gp", snapshots_script(r), "snapshots.png"))
+    figures.push_back("snapshots.png");
+  if (render_gnuplot(dir, "energy.gp", energy_script(r), "energy.png")) figures.push_back("energy.png");
+  return figures;
+}
+
+}  // namespace lrchain::sim
