@@ -1,0 +1,153 @@
+#include "lrchain/sim/dark/contact_integrator.hpp"
+
+#include <algorithm>
+#include <boost/math/tools/roots.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace lrchain::sim::dark {
+
+namespace {
+using State = std::vector<double>;
+using Stepper = boost::numeric::odeint::runge_kutta_fehlberg78<State>;
+
+// Cubic Hermite interpolant on [0, h] from values x0, x1 and slopes v0, v1, at s in [0, 1].
+inline double hermite(double x0, double v0, double x1, double v1, double h, double s) {
+  const double s2 = s * s, s3 = s2 * s;
+  return (2 * s3 - 3 * s2 + 1) * x0 + (s3 - 2 * s2 + s) * h * v0 + (-2 * s3 + 3 * s2) * x1 +
+         (s3 - s2) * h * v1;
+}
+}  // namespace
+
+ContactIntegrator::ContactIntegrator(const StrainLatticeOrbit& orbit,
+                                     ContactIntegrationOptions options)
+    : orbit_(orbit), options_(options), h_(options.initial_step) {
+  trial_stiffness_.resize(static_cast<std::size_t>(OrbitRecord::stages * orbit.sites()));
+}
+
+double ContactIntegrator::error_norm(const State& in, const State& out) const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const double scale =
+        options_.abs_tol + options_.rel_tol * std::max(std::abs(in[i]), std::abs(out[i]));
+    e = std::max(e, std::abs(err_[i]) / scale);
+  }
+  return e;
+}
+
+double ContactIntegrator::first_contact(const State& in, const State& out, double h) const {
+  const int N = orbit_.sites();
+  const double d0 = orbit_.params().delta0;
+  const double ignore = 1e-11;  // a crossing at the very start: we are sitting on that kink
+  auto crossing = [&](int n) -> double {
+    const double x0 = in[n] - d0, x1 = out[n] - d0;
+    if (!((x0 < 0.0 && x1 >= 0.0) || (x0 > 0.0 && x1 <= 0.0))) return -1.0;
+    const double v0 = in[2 * N + n], v1 = out[2 * N + n];
+    auto f = [&](double s) { return hermite(x0, v0, x1, v1, h, s); };
+    boost::uintmax_t it = 60;
+    const auto r = boost::math::tools::toms748_solve(
+        f, 0.0, 1.0, x0, x1, boost::math::tools::eps_tolerance<double>(45), it);
+    return 0.5 * (r.first + r.second) * h;
+  };
+  double first = std::numeric_limits<double>::infinity();
+  for (int n = 0; n < N; ++n) {
+    const double tc = crossing(n);
+    if (tc > ignore && tc < first) first = tc;
+  }
+  if (!std::isfinite(first)) return h;
+  double last = first;
+  for (int n = 0; n < N; ++n) {
+    const double tc = crossing(n);
+    if (tc > first && tc <= first + options_.group_window) last = std::max(last, tc);
+  }
+  const double cut = last + 1e-14;  // land just past the group: next step starts beyond the kink
+  return cut < h ? cut : h;
+}
+
+void ContactIntegrator::trial(const State& in, double t, double h) {
+  static thread_local Stepper stepper;  // stage storage reused across calls of this thread
+  const int N = orbit_.sites();
+  calls_ = 0;
+  auto sys = [this, N](const State& s, State& ds, double) {
+    double* g = recording_ ? trial_stiffness_.data() +
+                                 static_cast<std::size_t>(std::min(calls_, OrbitRecord::stages - 1)) * N
+                           : nullptr;
+    ++calls_;
+    orbit_.rhs(s.data(), ds.data(), g);
+  };
+  stepper.do_step(sys, in, t, out_, h, err_);
+  if (calls_ != OrbitRecord::stages)
+    throw std::logic_error("contact integrator: unexpected number of Runge-Kutta stages");
+}
+
+void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecord* record) {
+  if (!(t1 > t0)) return;
+  recording_ = record != nullptr;
+  if (record) record->sites = orbit_.sites();
+  out_.resize(state.size());
+  err_.resize(state.size());
+  double t = t0;
+  double h = std::min(h_, options_.max_step);
+  double cap = options_.max_step;   // grading cap after a contact change
+  double target = -1.0;             // located contact change ahead (absolute time), if any
+  while (t < t1) {
+    double step = std::min({h, cap, t1 - t});
+    bool landing = false;
+    if (options_.locate_contacts && target > t) {
+      // Remaining distances to the contact change shrink geometrically down to contact_step.
+      const double r = target - t;
+      const double cs = options_.contact_step;
+      if (r <= 1.5 * cs) {
+        step = r;
+        landing = true;
+      } else {
+        step = r - std::max({r - std::min(h, cap), r / options_.grading, cs});
+      }
+    }
+    trial(state, t, step);
+    const double e = error_norm(state, out_);
+    if (e > 1.0) {
+      ++stats_.rejected;
+      h = step * std::max(0.2, 0.9 * std::pow(e, -1.0 / 8.0));
+      if (h < options_.min_step)
+        throw std::runtime_error("dark-breather integration: step size below " +
+                                 std::to_string(options_.min_step) + " at t = " + std::to_string(t));
+      continue;
+    }
+    if (options_.locate_contacts && !landing) {
+      const double cut = first_contact(state, out_, step);
+      if (cut < step) {  // a contact change inside: approach it with graded steps
+        ++stats_.rejected;
+        target = t + cut;
+        continue;
+      }
+    }
+    const double next = step * std::min(4.0, 0.9 * std::pow(std::max(e, 1e-12), -1.0 / 8.0));
+    state.swap(out_);
+    ++stats_.steps;
+    if (record) {
+      record->t.push_back(t);
+      record->dt.push_back(step);
+      record->stiffness.insert(record->stiffness.end(), trial_stiffness_.begin(),
+                               trial_stiffness_.end());
+    }
+    const bool at_end = step >= t1 - t;
+    t = at_end ? t1 : t + step;
+    if (landing) {
+      ++stats_.contact_cuts;
+      target = -1.0;
+      cap = options_.contact_step;
+    } else {
+      cap = std::min(options_.max_step, cap * options_.grading);
+    }
+    // The controller's step changes only when it was the limiting factor.
+    if (step >= h * (1.0 - 1e-12)) h = std::min(next, options_.max_step);
+  }
+  h_ = h;
+  recording_ = false;
+}
+
+}  // namespace lrchain::sim::dark

@@ -1,0 +1,53 @@
+#include "lrchain/sim/dark/tangent_propagation.hpp"
+
+#include <algorithm>
+#include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
+#include <stdexcept>
+#include <vector>
+
+namespace lrchain::sim::dark {
+
+void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& record,
+                        Eigen::MatrixXd& phi, int block) {
+  using State = std::vector<double>;
+  const int N = orbit.sites();
+  const Eigen::Index rows = 4 * N;
+  if (phi.rows() != rows) throw std::invalid_argument("propagate_tangents: phi must have 4N rows");
+  if (record.steps() == 0 || phi.cols() == 0) return;
+  const int m = static_cast<int>(phi.cols());
+  const int blocks = (m + block - 1) / block;
+  const double kappa = orbit.params().kappa;
+  const double kor = orbit.params().kappa / orbit.params().rho;
+  bool stage_mismatch = false;
+
+#pragma omp parallel
+  {
+    boost::numeric::odeint::runge_kutta_fehlberg78<State> stepper;
+    State s;
+#pragma omp for schedule(dynamic, 1)
+    for (int bi = 0; bi < blocks; ++bi) {
+      const int c0 = bi * block;
+      const int b = std::min(block, m - c0);
+      s.assign(static_cast<std::size_t>(rows * b), 0.0);
+      for (int j = 0; j < b; ++j)
+        for (Eigen::Index r = 0; r < rows; ++r) s[static_cast<std::size_t>(r * b + j)] = phi(r, c0 + j);
+      std::size_t step = 0;
+      int call = 0;
+      auto sys = [&](const State& x, State& dx, double) {
+        const double* g = record.stage(step, std::min(call, OrbitRecord::stages - 1));
+        ++call;
+        tangent_block_rhs(N, b, kappa, kor, g, x.data(), dx.data());
+      };
+      for (step = 0; step < record.steps(); ++step) {
+        call = 0;
+        stepper.do_step(sys, s, record.t[step], record.dt[step]);
+        if (call != OrbitRecord::stages) stage_mismatch = true;
+      }
+      for (int j = 0; j < b; ++j)
+        for (Eigen::Index r = 0; r < rows; ++r) phi(r, c0 + j) = s[static_cast<std::size_t>(r * b + j)];
+    }
+  }
+  if (stage_mismatch) throw std::logic_error("propagate_tangents: stage count mismatch in replay");
+}
+
+}  // namespace lrchain::sim::dark
