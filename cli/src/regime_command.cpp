@@ -83,7 +83,7 @@ json event_json(const RegimeEvent& e) {
 // Pixel map as CSV "x,y,regime" in scan order (y rows, blank line between rows for gnuplot).
 std::string map_csv(const RegimeMap& m, const char* xname, const char* yname) {
   std::ostringstream s;
-  s.precision(10);
+  s.precision(8);
   s << xname << ',' << yname << ",regime\n";
   for (int j = 0; j < m.y.n; ++j) {
     for (int i = 0; i < m.x.n; ++i)
@@ -125,7 +125,7 @@ std::string cause_title(BoundaryCause c) {
     case BoundaryCause::curvature_zero: return "{/Symbol w}''=0";
     case BoundaryCause::nonresonance2: return "c^2(1+{/Symbol r})=K_2 (nonres. 2)";
     case BoundaryCause::nonresonance1: return "nonres. 1 violated";
-    case BoundaryCause::h_tilde_zero: return "h~=0";
+    case BoundaryCause::h_tilde_zero: return "h̃=0";
     case BoundaryCause::band_edge: return "band edge";
   }
   return "";
@@ -233,8 +233,8 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir) {
         const std::string f = "boundary_theta-rho_" + bn + "_" + std::string(to_string(c)) + ".csv";
         write_file(dir, f, csv);
         files.push_back(f);
-        gp << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title '"
-           << cause_title(c) << "'";
+        gp << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title \""
+           << cause_title(c) << "\"";
       }
     }
     gp << "\n";
@@ -332,18 +332,18 @@ json map_delta0_omega(const MapArgs& a, const fs::path& dir) {
      << "if (!exists('outfile')) outfile = 'regime_" << tag << ".png'\n"
      << "set terminal pngcairo size 800,900 font 'DejaVu Sans,11'\nset output outfile\n"
      << "set datafile separator ','\n"
-     << "set multiplot layout 2,1 margins 0.12,0.96,0.08,0.95 spacing 0,0.08\n"
+     << "set multiplot layout 2,1 margins 0.12,0.96,0.07,0.95 spacing 0,0.12\n"
      << (a.delta0_log ? "set logscale x\n" : "") << "set xrange [" << dr[0] << ":" << dr[1]
      << "]\nset yrange [" << wr[0] << ":" << wr[1] << "]\n"
      << "set xlabel '{/Symbol d}_0'\nset ylabel '{/Symbol w}'\n"
-     << "set title '" << bn << " band, {/Symbol r}=" << a.p.rho << ", {/Symbol k}=" << a.p.kappa
-     << ", {/Symbol a}=" << a.p.alpha << ": hatched = focusing ({/Symbol w}''h~ < 0)'\n"
+     << "set title \"" << bn << " band, {/Symbol r}=" << a.p.rho << ", {/Symbol k}=" << a.p.kappa
+     << ", {/Symbol a}=" << a.p.alpha << ": hatched = focusing ({/Symbol w}''h̃ < 0)\"\n"
      << "set key top left opaque box font ',9'\n"
      << "plot 'intervals_" << tag
      << ".csv' using 1:(($2+$3)/2):8:9:2:3 with boxxyerror fs pattern 4 noborder lc rgb "
         "'#cc3366' title 'focusing', \\\n"
      << "  'band_edges_" << tag << ".csv' using 1:3 with lines lc rgb '#000000' dt 3 lw 2 title "
-     << (b == Branch::optical ? "'{/Symbol w}_+({/Symbol p})'" : "'{/Symbol w}_-({/Symbol p})'");
+     << (b == Branch::optical ? "'{/Symbol w}_+({/Symbol p})'" : "'{/Symbol w}_{−}({/Symbol p})'");
   if (b == Branch::optical)
     gp << ", \\\n  'band_edges_" << tag
        << ".csv' using 1:2 with lines lc rgb '#ff0000' lw 2 title '{/Symbol w}_+(0)'";
@@ -362,8 +362,8 @@ json map_delta0_omega(const MapArgs& a, const fs::path& dir) {
       const std::string f = "boundary_" + tag + "_" + std::string(to_string(c)) + ".csv";
       write_file(dir, f, csv);
       files.push_back(f);
-      gp << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title '"
-         << cause_title(c) << "'";
+      gp << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title \""
+         << cause_title(c) << "\"";
     }
   }
   gp << "\nset title 'number of focusing frequency bands'\nset ylabel 'bands'\n"
