@@ -91,8 +91,11 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
   err_.resize(state.size());
   double t = t0;
   double h = std::min(h_, options_.max_step);
-  double cap = options_.max_step;   // grading cap after a contact change
-  double target = -1.0;             // located contact change ahead (absolute time), if any
+  // Grading cap after a contact change and a located contact change ahead (absolute time):
+  // carried over when this call continues the previous one.
+  const bool continued = t0 == last_t_;
+  double cap = continued ? cap_ : options_.max_step;
+  double target = continued ? target_ : -1.0;
   while (t < t1) {
     double step = std::min({h, cap, t1 - t});
     bool landing = false;
@@ -147,6 +150,9 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
     if (step >= h * (1.0 - 1e-12)) h = std::min(next, options_.max_step);
   }
   h_ = h;
+  cap_ = cap;
+  target_ = target;
+  last_t_ = t1;
   recording_ = false;
 }
 

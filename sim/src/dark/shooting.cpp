@@ -60,13 +60,22 @@ DarkShooting::DarkShooting(const Params& p, int sites, DarkCenter center, Shooti
     basis_ = Eigen::MatrixXd::Identity(2 * N, 2 * N);
 }
 
+double DarkShooting::shooting_time(double omega_b) const {
+  const double period = 2.0 * std::numbers::pi / omega_b;
+  if (mode_ == ShootingMode::full) return period;
+  return center_ == DarkCenter::site ? 0.5 * period : 0.25 * period;
+}
+
 void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
-                            Eigen::MatrixXd* jacobian) const {
+                            Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator) const {
   using Eigen::Index;
   const int N = sites_;
   const Index k = basis_.cols();
   const Index n2 = 2 * N, n4 = 4 * N;
-  const bool jac = jacobian != nullptr;
+  const bool full_phi = propagator != nullptr;
+  const bool jac = jacobian != nullptr || full_phi;
+  Eigen::MatrixXd jac_storage;
+  if (jacobian == nullptr && full_phi) jacobian = &jac_storage;
   const double period = 2.0 * std::numbers::pi / omega_b;
   const Eigen::VectorXd z0 = basis_ * q;
 
@@ -75,8 +84,12 @@ void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::Vec
   for (Index i = 0; i < n2; ++i) state[static_cast<std::size_t>(i)] = z0(i);
   Eigen::MatrixXd phi;
   if (jac) {
-    phi = Eigen::MatrixXd::Zero(n4, k);
-    phi.topRows(n2) = basis_;
+    if (full_phi) {
+      phi = Eigen::MatrixXd::Identity(n4, n4);
+    } else {
+      phi = Eigen::MatrixXd::Zero(n4, k);
+      phi.topRows(n2) = basis_;
+    }
   }
   ContactIntegrator integrator(orbit, integration_);
   OrbitRecord record;
@@ -100,7 +113,7 @@ void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::Vec
     sn.s = Eigen::Map<const Eigen::VectorXd>(state.data(), n4);
     orbit.rhs(state.data(), rhs.data());
     sn.f = Eigen::Map<const Eigen::VectorXd>(rhs.data(), n4) * (-tau / omega_b);
-    if (jac) sn.phi = phi;
+    if (jac) sn.phi = full_phi ? Eigen::MatrixXd(phi.leftCols(n2) * basis_) : phi;
     return sn;
   };
 
@@ -190,6 +203,7 @@ void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::Vec
     centre_row(h);
   }
 
+  if (full_phi) *propagator = phi;
   Index rows = 0;
   for (const auto& b : blocks) rows += b.size();
   residual.resize(rows);

@@ -70,6 +70,7 @@ class ContactIntegrator {
   double h_;
   std::vector<double> out_, err_, trial_stiffness_;
   int calls_ = 0;
+  double last_t_ = -1e300, cap_ = 0, target_ = -1;
   bool recording_ = false;
 };
 

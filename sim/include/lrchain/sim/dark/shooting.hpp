@@ -52,8 +52,13 @@ class DarkShooting {
   Eigen::VectorXd unknowns_from_z(const Eigen::VectorXd& z0) const { return basis_.transpose() * z0; }
 
   // Residual F(q, omega_b); if jacobian != nullptr also [dF/dq | dF/domega_b] (unknowns()+1 cols).
+  // If propagator != nullptr, all 4N tangent columns are integrated and it receives the state
+  // transition matrix over the shooting interval: Phi(T_b/2) (reversible, site), Phi(T_b/4)
+  // (reversible, bond) or Phi(T_b) (full mode): the input of the Floquet analysis (floquet.hpp).
   void evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
-                Eigen::MatrixXd* jacobian) const;
+                Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator = nullptr) const;
+  // Time over which the reversible/full shooting integrates: T_b/2, T_b/4 or T_b.
+  double shooting_time(double omega_b) const;
 
  private:
   Params p_;
