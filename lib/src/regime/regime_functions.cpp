@@ -2,19 +2,6 @@
 
 namespace lrchain::regime {
 
-namespace {
-// h_tilde * nonresonance1 * nonresonance2 (eq:h_tilde with both poles cleared). Uses the field
-// NlsCoefficients::h_tilde_numerator (smooth across the poles) when the library provides it.
-template <class C>
-double h_tilde_numerator_of(const C& c) {
-  if constexpr (requires { c.h_tilde_numerator; }) {
-    return c.h_tilde_numerator;
-  } else {
-    return c.h_tilde * c.nonresonance1 * c.nonresonance2;
-  }
-}
-}  // namespace
-
 double RegimeSample::operator[](BoundaryCause c) const {
   switch (c) {
     case BoundaryCause::curvature_zero: return curvature;
@@ -27,7 +14,8 @@ double RegimeSample::operator[](BoundaryCause c) const {
 }
 
 RegimeSample regime_sample(const NlsCoefficients& c) {
-  return {c.curvature, h_tilde_numerator_of(c), c.nonresonance1, c.nonresonance2};
+  // h_tilde_numerator = h_tilde * nonresonance1 * nonresonance2, smooth across the poles.
+  return {c.curvature, c.h_tilde_numerator, c.nonresonance1, c.nonresonance2};
 }
 
 RegimeFunctions regime_functions(const Params& p, Branch b) {
