@@ -1,0 +1,49 @@
+#pragma once
+// Pseudo-arclength continuation of a dark-breather family in omega_b (Sec. 5.3, Figs. 18, 21, 23),
+// through turning points, with Floquet multipliers at every point (Sec. 5.4).
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "lrchain/sim/dark/floquet.hpp"
+#include "lrchain/sim/dark/measures.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
+
+namespace lrchain::sim::dark {
+
+struct ContinuationOptions {
+  double ds = 0.02;          // initial arclength step in (q, omega_b)
+  double ds_min = 1e-5;      // stop when the step falls below this
+  double ds_max = 1.0;
+  int max_points = 100;
+  double omega_min = 0;      // stop when omega_b leaves [omega_min, omega_max]
+  double omega_max = 1e300;
+  double direction = -1;     // initial sign of d omega_b (into the gap: -1)
+  bool floquet = true;
+  int max_corrector = 12;
+  double tolerance = 1e-11;  // max|F| at convergence
+};
+
+struct BranchPoint {
+  double omega_b = 0;
+  Eigen::VectorXd z0;      // (x(0), y(0))
+  DarkMeasures measures;
+  FloquetResult floquet;   // empty multipliers if not requested
+  int iterations = 0;      // corrector iterations
+  double residual = 0;     // max|F|
+  double tangent_omega = 0;  // d omega_b / ds at this point
+};
+
+struct BranchResult {
+  std::vector<BranchPoint> points;
+  std::vector<double> turning_points;  // omega_b where d omega_b/ds changes sign
+  std::string stop_reason;
+};
+
+// Continues from a converged solution q0 at omega0. on_point is called after each point.
+BranchResult continue_branch(const DarkShooting& shooting, const Eigen::VectorXd& q0, double omega0,
+                             const ContinuationOptions& options,
+                             const std::function<void(const BranchPoint&)>& on_point = {});
+
+}  // namespace lrchain::sim::dark

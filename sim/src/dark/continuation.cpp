@@ -1,0 +1,126 @@
+#include "lrchain/sim/dark/continuation.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace lrchain::sim::dark {
+
+namespace {
+// Unit tangent of {F(u) = 0} at u: [J; t_prev^T] t = [0; 1] in least squares, oriented along t_prev.
+Eigen::VectorXd tangent(const Eigen::MatrixXd& J, const Eigen::VectorXd& t_prev) {
+  Eigen::MatrixXd A(J.rows() + 1, J.cols());
+  A.topRows(J.rows()) = J;
+  A.row(J.rows()) = t_prev.transpose();
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(A.rows());
+  b(J.rows()) = 1.0;
+  Eigen::VectorXd t = A.colPivHouseholderQr().solve(b);
+  t.normalize();
+  if (t.dot(t_prev) < 0) t = -t;
+  return t;
+}
+}  // namespace
+
+BranchResult continue_branch(const DarkShooting& shooting, const Eigen::VectorXd& q0, double omega0,
+                             const ContinuationOptions& o,
+                             const std::function<void(const BranchPoint&)>& on_point) {
+  const Eigen::Index k = shooting.unknowns();
+  BranchResult out;
+  Eigen::VectorXd u(k + 1);
+  u.head(k) = q0;
+  u(k) = omega0;
+  Eigen::VectorXd t_prev = Eigen::VectorXd::Zero(k + 1);
+  t_prev(k) = o.direction < 0 ? -1.0 : 1.0;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J, Phi;
+  double ds = o.ds;
+  int iterations = 0;
+
+  // Accepts the converged point u: Jacobian (and Floquet propagator), measures, tangent.
+  auto accept = [&](double residual) {
+    BranchPoint pt;
+    pt.omega_b = u(k);
+    pt.z0 = shooting.z_from_unknowns(u.head(k));
+    if (o.floquet && shooting.mode() == ShootingMode::reversible) {
+      shooting.evaluate(u.head(k), u(k), r, &J, &Phi);
+      pt.floquet = floquet_reversible(shooting, Phi);
+    } else {
+      shooting.evaluate(u.head(k), u(k), r, &J);
+      if (o.floquet) {  // full mode: the propagator is the monodromy
+        shooting.evaluate(u.head(k), u(k), r, &J, &Phi);
+        pt.floquet = floquet_from_monodromy(Phi);
+      }
+    }
+    pt.measures = measure_dark_breather(shooting.params(), pt.z0, pt.omega_b, shooting.integration());
+    pt.iterations = iterations;
+    pt.residual = residual;
+    const Eigen::VectorXd t = tangent(J, t_prev);
+    pt.tangent_omega = t(k);
+    if (!out.points.empty() && (t(k) > 0) != (out.points.back().tangent_omega > 0))
+      out.turning_points.push_back(pt.omega_b);
+    t_prev = t;
+    out.points.push_back(std::move(pt));
+    if (on_point) on_point(out.points.back());
+  };
+
+  shooting.evaluate(u.head(k), u(k), r, nullptr);
+  accept(r.lpNorm<Eigen::Infinity>());
+
+  while (static_cast<int>(out.points.size()) < o.max_points) {
+    const Eigen::VectorXd u_prev = u;
+    const Eigen::VectorXd t = t_prev;
+    // Chord corrector with the Jacobian of the last point, refreshed when it stalls.
+    Eigen::MatrixXd A(J.rows() + 1, k + 1);
+    A.topRows(J.rows()) = J;
+    A.row(J.rows()) = t.transpose();
+    auto qr = A.colPivHouseholderQr();
+    bool converged = false;
+    double res = INFINITY, last = INFINITY;
+    u = u_prev + ds * t;
+    const Eigen::VectorXd u_pred = u;
+    iterations = 0;
+    for (int it = 0; it < o.max_corrector; ++it) {
+      shooting.evaluate(u.head(k), u(k), r, nullptr);
+      res = r.lpNorm<Eigen::Infinity>();
+      iterations = it;
+      if (!std::isfinite(res)) break;
+      if (res <= o.tolerance) {
+        converged = true;
+        break;
+      }
+      if (res > 0.5 * last) {  // chord stalls: fresh Jacobian at the current point
+        if (res > 10 * last) break;
+        shooting.evaluate(u.head(k), u(k), r, &J);
+        A.topRows(J.rows()) = J;
+        qr = A.colPivHouseholderQr();
+      }
+      last = res;
+      Eigen::VectorXd rhs(r.size() + 1);
+      rhs.head(r.size()) = r;
+      rhs(r.size()) = t.dot(u - u_pred);
+      u -= qr.solve(rhs);
+    }
+    if (!converged) {
+      u = u_prev;
+      // Restore the Jacobian of the last accepted point for the next chord attempt.
+      shooting.evaluate(u.head(k), u(k), r, &J);
+      ds *= 0.5;
+      if (ds < o.ds_min) {
+        out.stop_reason = fmt::format("arclength step below {:g} at omega_b = {:.6f} (corrector did not "
+                                      "converge, last residual {:.3g})", o.ds_min, u(k), res);
+        return out;
+      }
+      continue;
+    }
+    if (u(k) < o.omega_min || u(k) > o.omega_max) {
+      out.stop_reason = fmt::format("omega_b = {:.6f} left [{:g}, {:g}]", u(k), o.omega_min, o.omega_max);
+      return out;
+    }
+    accept(res);
+    if (iterations <= 4) ds = std::min(ds * 1.5, o.ds_max);
+    if (iterations >= 7) ds *= 0.7;
+  }
+  out.stop_reason = fmt::format("reached {} points", o.max_points);
+  return out;
+}
+
+}  // namespace lrchain::sim::dark
