@@ -8,5 +8,6 @@ namespace lrchain::cli {
 void register_coeffs(CLI::App& app);    // coeffs_command.cpp (NLS coefficients, eq:c..eq:h_tilde)
 void register_regime(CLI::App& app);    // regime_command.cpp (focusing regimes, Sec. 3.3, Figs. 2, 4, 5)
 void register_simulate(CLI::App& app);  // simulate_command.cpp (lattice runs vs NLS ansatz, Sec. 4)
+void register_dark(CLI::App& app);      // dark_command.cpp (exact dark breathers, Sec. 5.3-5.4)
 
 }  // namespace lrchain::cli

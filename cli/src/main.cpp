@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   lrchain::cli::register_coeffs(app);
   lrchain::cli::register_regime(app);
   lrchain::cli::register_simulate(app);
+  lrchain::cli::register_dark(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,275 @@
+// `lrchain dark solve|continue|floquet`: exact stationary dark breathers (Sec. 5.3-5.4,
+// Figs. 17-24): shooting Newton from the eq:xy_app seed, pseudo-arclength continuation in omega_b,
+// Floquet multipliers. JSON on stdout, Newton progress on stderr, files in --out.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "commands.hpp"
+#include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/dark/continuation.hpp"
+#include "lrchain/sim/output_files.hpp"
+#include "options.hpp"
+
+namespace lrchain::cli {
+
+namespace {
+using namespace lrchain::sim::dark;
+using nlohmann::json;
+
+struct DarkArgs {
+  Params p;
+  double omega_b = 0;
+  std::string edge = "optical", center = "bond", mode = "reversible";
+  int sites = 101;
+  bool json_out = false, quiet = false, full_monodromy = false;
+  std::string out;
+  int points = 100;
+  double ds = 0.1, omega_min = 0, omega_max = 0;
+};
+
+void add_common(CLI::App& sub, DarkArgs& a) {
+  add_model_options(sub, a.p, false);
+  add_number(sub, "--omega-b", a.omega_b, "breather frequency, below the theta = pi band edge")->required();
+  sub.add_option("--edge", a.edge, "band edge: optical|acoustic")->check(CLI::IsMember({"optical", "acoustic"}));
+  sub.add_option("--center", a.center, "bond (n0 = 1/2) | site (n0 = 0)")->check(CLI::IsMember({"bond", "site"}));
+  sub.add_option("--sites", a.sites, "odd number of sites per field (periodic ends), default 101");
+  sub.add_option("--mode", a.mode, "reversible (half/quarter period, default) | full (check)")
+      ->check(CLI::IsMember({"reversible", "full"}));
+  sub.add_flag("--json", a.json_out, "print the JSON summary (always printed; kept for scripts)");
+  sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr");
+  sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures");
+}
+
+json floquet_json(const FloquetResult& f, bool with_multipliers) {
+  json j = {{"kind", f.kind()},
+            {"max_modulus", f.max_modulus},
+            {"max_real", f.max_real},
+            {"max_period_doubling", f.max_period_doubling},
+            {"max_oscillatory", f.max_oscillatory},
+            {"near_one", f.near_one},
+            {"pairing_defect", f.pairing_defect},
+            {"log_det", f.log_det}};
+  if (with_multipliers) {
+    json m = json::array();
+    for (auto l : f.multipliers) m.push_back({l.real(), l.imag()});
+    j["multipliers"] = m;
+  }
+  return j;
+}
+
+json measures_json(const DarkMeasures& m) {
+  return {{"norm_squared", m.norm_squared}, {"K_x", m.K_x}, {"K_y", m.K_y}, {"C_x", m.C_x},
+          {"C_y", m.C_y}, {"E_b", m.E_b}, {"max_strain", m.max_strain}};
+}
+
+// Seeds from eq:xy_app and runs Newton; throws runtime_error with the residual history on failure.
+struct Solved {
+  DarkShooting shooting;
+  DarkBreatherAnsatz ansatz;
+  NewtonResult newton;
+};
+Solved solve(const DarkArgs& a) {
+  validate(a.p);
+  const Branch edge = parse_branch(a.edge);
+  const DarkCenter center = parse_dark_center(a.center);
+  const DarkBreatherAnsatz ansatz = make_dark_breather_ansatz(a.p, edge, a.omega_b);
+  DarkShooting shooting(a.p, a.sites, center, parse_shooting_mode(a.mode));
+  NewtonOptions o;
+  if (!a.quiet)
+    o.progress = [](const NewtonRecord& r) {
+      std::fprintf(stderr, "newton %2d  max|F| = %.3e  max|step| = %.3e\n", r.iteration, r.residual, r.step);
+    };
+  NewtonResult res = newton_solve(shooting, shooting.unknowns_from_z(dark_seed(ansatz, center, a.sites)),
+                                  a.omega_b, o);
+  if (!res.converged) {
+    std::string hist;
+    for (const auto& r : res.history) hist += fmt::format(" {:.3e}", r.residual);
+    throw std::runtime_error("Newton did not converge at omega_b = " + fmt::format("{}", a.omega_b) +
+                             " (" + res.failure + "); residual history:" + hist);
+  }
+  return {std::move(shooting), ansatz, std::move(res)};
+}
+
+json base_json(const DarkArgs& a, const Solved& s) {
+  json hist = json::array();
+  for (const auto& r : s.newton.history) hist.push_back(r.residual);
+  return {{"rho", a.p.rho}, {"kappa", a.p.kappa}, {"delta0", a.p.delta0}, {"alpha", a.p.alpha},
+          {"edge", a.edge}, {"center", a.center}, {"sites", a.sites}, {"mode", a.mode},
+          {"omega_b", a.omega_b}, {"omega_edge", s.ansatz.omega},
+          {"newton_residuals", hist}};
+}
+
+void write_profile(const std::string& dir, const std::string& name, const Eigen::VectorXd& z0,
+                   const Eigen::VectorXd& seed, const Eigen::VectorXd& zT) {
+  const int N = static_cast<int>(z0.size() / 2);
+  std::ostringstream os;
+  os << "n,x0,y0,x_seed,y_seed,x_T,y_T\n";
+  for (int i = 0; i < N; ++i)
+    os << fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", i - (N - 1) / 2, z0(i),
+                      z0(N + i), seed(i), seed(N + i), zT(i), zT(N + i));
+  sim::write_file_atomic(dir, name, os.str());
+}
+
+void write_multipliers(const std::string& dir, const std::string& stem, const FloquetResult& f,
+                       double omega_b) {
+  std::ostringstream os;
+  os << "re,im,modulus\n";
+  for (auto l : f.multipliers) os << fmt::format("{:.17g},{:.17g},{:.17g}\n", l.real(), l.imag(), std::abs(l));
+  sim::write_file_atomic(dir, stem + ".csv", os.str());
+  sim::render_gnuplot(dir, stem + ".gp",
+                      fmt::format("if (!exists(\"outfile\")) outfile = '{0}.png'\n"
+                                  "set terminal pngcairo size 700,700\nset output outfile\n"
+                                  "set datafile separator ','\nset size square\nset key off\n"
+                                  "set xlabel 'Re {{/Symbol l}}'\nset ylabel 'Im {{/Symbol l}}'\n"
+                                  "set title 'Floquet multipliers, omega_b = {1:.5f}'\n"
+                                  "set parametric\nset trange [0:2*pi]\n"
+                                  "plot cos(t),sin(t) lc 'gray', '{0}.csv' skip 1 using 1:2 with points pt 7 ps 0.8\n",
+                                  stem, omega_b),
+                      stem + ".png");
+}
+
+void run_solve(const DarkArgs& a, bool floquet) {
+  Solved s = solve(a);
+  json j = base_json(a, s);
+  const Eigen::VectorXd z0 = s.shooting.z_from_unknowns(s.newton.q);
+  const DarkMeasures m = measure_dark_breather(a.p, z0, a.omega_b, s.shooting.integration());
+  j["measures"] = measures_json(m);
+  FloquetResult f;
+  if (floquet) {
+    Eigen::VectorXd r;
+    Eigen::MatrixXd J, A;
+    s.shooting.evaluate(s.newton.q, a.omega_b, r, &J, &A);
+    if (a.full_monodromy || s.shooting.mode() == ShootingMode::full) {
+      DarkShooting full(a.p, a.sites, s.shooting.center(), ShootingMode::full);
+      full.evaluate(full.unknowns_from_z(z0), a.omega_b, r, &J, &A);
+      f = floquet_from_monodromy(A);
+      j["monodromy"] = "full period";
+    } else {
+      f = floquet_reversible(s.shooting, A);
+      j["monodromy"] = "reversible reduction";
+    }
+    j["floquet"] = floquet_json(f, true);
+  }
+  if (!a.out.empty()) {
+    sim::ensure_directory(a.out);
+    const auto seed = dark_seed(s.ansatz, s.shooting.center(), a.sites);
+    auto evo = dark_breather_evolution(a.p, z0, 2 * std::numbers::pi / a.omega_b, 1, s.shooting.integration());
+    write_profile(a.out, "profile.csv", z0, seed, evo.back());
+    sim::render_gnuplot(a.out, "profile.gp",
+                        fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
+                                    "set terminal pngcairo size 1000,700\nset output outfile\n"
+                                    "set datafile separator ','\nset xlabel 'n'\nset key outside\n"
+                                    "set title 'dark breather ({} centred), omega_b = {:.5f}: Z(0), Z(T_b), eq:xy_app seed'\n"
+                                    "plot 'profile.csv' skip 1 u 1:2 w lp pt 3 t 'x_n(0)', '' skip 1 u 1:6 w p pt 4 ps 1.5 t 'x_n(T_b)', "
+                                    "'' skip 1 u 1:4 w p pt 6 t 'x seed', '' skip 1 u 1:3 w lp pt 3 t 'y_n(0)', "
+                                    "'' skip 1 u 1:7 w p pt 4 ps 1.5 t 'y_n(T_b)', '' skip 1 u 1:5 w p pt 6 t 'y seed'\n",
+                                    a.center, a.omega_b),
+                        "profile.png");
+    if (floquet) write_multipliers(a.out, "multipliers", f, a.omega_b);
+  }
+  std::printf("%s\n", j.dump(2).c_str());
+}
+
+void run_continue(const DarkArgs& a) {
+  Solved s = solve(a);
+  ContinuationOptions o;
+  o.max_points = a.points;
+  o.ds = a.ds;
+  o.omega_min = a.omega_min;
+  o.omega_max = a.omega_max > 0 ? a.omega_max : s.ansatz.omega;
+  std::ostringstream csv;
+  csv << "omega_b,norm_squared,K_x,K_y,C_x,C_y,E_b,stability,max_modulus,max_real,max_period_doubling,"
+         "max_oscillatory,iterations\n";
+  std::ostringstream mult;  // omega_b, |lambda|, type (0 complex, 1 real>0, 2 real<0)
+  mult << "omega_b,modulus,type,branch_part\n";
+  int part = 0, count = 0;
+  double last_tangent = -1;
+  auto on_point = [&](const BranchPoint& b) {
+    if (!a.quiet)
+      std::fprintf(stderr, "point %3d omega_b = %.6f norm^2 = %.5f %s max|lambda| = %.5f\n",
+                   count++, b.omega_b, b.measures.norm_squared, b.floquet.kind().c_str(), b.floquet.max_modulus);
+    if ((b.tangent_omega > 0) != (last_tangent > 0)) ++part;
+    last_tangent = b.tangent_omega;
+    csv << fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.6g},{:.6g},{:.3g},{},{:.12g},{:.12g},{:.12g},{:.12g},{}\n",
+                       b.omega_b, b.measures.norm_squared, b.measures.K_x, b.measures.K_y, b.measures.C_x,
+                       b.measures.C_y, b.measures.E_b, b.floquet.kind(), b.floquet.max_modulus,
+                       b.floquet.max_real, b.floquet.max_period_doubling, b.floquet.max_oscillatory,
+                       b.iterations);
+    for (auto l : b.floquet.multipliers) {
+      if (std::abs(l) < 1.0 + 1e-6) continue;
+      const bool real = std::abs(l.imag()) <= 1e-7 * std::abs(l);
+      mult << fmt::format("{:.12g},{:.12g},{},{}\n", b.omega_b, std::abs(l), real ? (l.real() > 0 ? 1 : 2) : 0, part);
+    }
+  };
+  const BranchResult br = continue_branch(s.shooting, s.newton.q, a.omega_b, o, on_point);
+  json j = base_json(a, s);
+  j["points"] = br.points.size();
+  j["stop_reason"] = br.stop_reason;
+  j["turning_points"] = br.turning_points;
+  double worst = 0;
+  for (const auto& b : br.points) worst = std::max(worst, b.measures.E_b);
+  j["max_E_b"] = worst;
+  if (!a.out.empty()) {
+    sim::ensure_directory(a.out);
+    sim::write_file_atomic(a.out, "branch.csv", csv.str());
+    sim::write_file_atomic(a.out, "floquet_moduli.csv", mult.str());
+    sim::render_gnuplot(a.out, "branch.gp",
+                        fmt::format("if (!exists(\"outfile\")) outfile = 'branch.png'\n"
+                                    "set terminal pngcairo size 900,650\nset output outfile\n"
+                                    "set datafile separator ','\nset xlabel 'omega_b'\n"
+                                    "set ylabel 'renormalised l2 norm squared (eq:l2norm)'\n"
+                                    "set arrow from {0},graph 0 to {0},graph 1 nohead lc 'black'\n"
+                                    "set title '{1} {2}-centred dark breathers, rho = {3:g} (red: real instability)'\n"
+                                    "plot 'branch.csv' skip 1 u 1:2 w l lc 'blue' t 'branch', "
+                                    "'' skip 1 u 1:(strstrt(strcol(8),'real') > 0 ? $2 : 1/0) w p pt 7 lc 'red' t 'real instability'\n",
+                                    s.ansatz.omega, a.edge, a.center, a.p.rho),
+                        "branch.png");
+    sim::render_gnuplot(a.out, "floquet_moduli.gp",
+                        fmt::format("if (!exists(\"outfile\")) outfile = 'floquet_moduli.png'\n"
+                                    "set terminal pngcairo size 1000,700\nset output outfile\n"
+                                    "set datafile separator ','\nset xlabel 'omega_b'\nset ylabel '|lambda|'\n"
+                                    "set multiplot layout 2,1 title 'Floquet moduli > 1 (blue: complex, red: real > 0, green: real < 0)'\n"
+                                    "set title 'weakly nonlinear (before the turning point)'\n"
+                                    "plot 'floquet_moduli.csv' skip 1 u 1:($4==1 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
+                                    "'' skip 1 u 1:($4==1 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
+                                    "'' skip 1 u 1:($4==1 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle\n"
+                                    "set title 'strongly nonlinear (after the turning point)'\n"
+                                    "plot 'floquet_moduli.csv' skip 1 u 1:($4>1 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
+                                    "'' skip 1 u 1:($4>1 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
+                                    "'' skip 1 u 1:($4>1 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle\n"
+                                    "unset multiplot\n"),
+                        "floquet_moduli.png");
+  }
+  std::printf("%s\n", j.dump(2).c_str());
+  if (br.points.size() < 2) throw std::runtime_error("continuation stopped: " + br.stop_reason);
+}
+}  // namespace
+
+void register_dark(CLI::App& app) {
+  auto* dark = app.add_subcommand("dark", "exact stationary dark breathers (Sec. 5.3-5.4)");
+  dark->require_subcommand(1);
+  auto args = std::make_shared<DarkArgs>();
+  auto* solve_cmd = dark->add_subcommand("solve", "Newton solve from the eq:xy_app seed");
+  add_common(*solve_cmd, *args);
+  solve_cmd->callback([args] { run_solve(*args, false); });
+  auto* floq = dark->add_subcommand("floquet", "solve, then Floquet multipliers (Sec. 5.4)");
+  add_common(*floq, *args);
+  floq->add_flag("--full-monodromy", args->full_monodromy,
+                 "integrate the full period (check of the reversible reduction)");
+  floq->callback([args] { run_solve(*args, true); });
+  auto* cont = dark->add_subcommand("continue", "pseudo-arclength continuation in omega_b with Floquet");
+  add_common(*cont, *args);
+  cont->add_option("--points", args->points, "number of branch points (default 100)");
+  add_number(*cont, "--ds", args->ds, "initial arclength step (default 0.1)");
+  add_number(*cont, "--omega-min", args->omega_min, "stop below this omega_b (default 0)");
+  add_number(*cont, "--omega-max", args->omega_max, "stop above this omega_b (default: band edge)");
+  cont->callback([args] { run_continue(*args); });
+}
+
+}  // namespace lrchain::cli
