@@ -198,10 +198,12 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir) {
      << "if (!exists('outfile')) outfile = 'regime_theta-rho.png'\n"
      << "set terminal pngcairo size " << 700 * bs.size() << ",620 font 'DejaVu Sans,11'\n"
      << "set output outfile\nset datafile separator ','\n" << kPalette
-     << "set multiplot layout 1," << bs.size() << "\n"
-     << "set xlabel '{/Symbol r}'\nset ylabel '{/Symbol q}'\nset yrange [0:pi]\n"
-        "set key bottom right opaque box font ',9'\n";
-  for (Branch b : bs) {
+     << "set multiplot\n"
+     << "set xlabel '{/Symbol r}'\nset ylabel '{/Symbol q}'\n"
+        "set key top right opaque box font ',9'\n";
+  const double panel_w = 1.0 / static_cast<double>(bs.size());
+  for (std::size_t k = 0; k < bs.size(); ++k) {
+    const Branch b = bs[k];
     const std::string bn(to_string(b));
     const auto rr =
         range_or(a.rho_range, b == Branch::optical ? std::vector<double>{0.01, 30.0}
@@ -215,10 +217,19 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir) {
     const std::string mapfile = "regime_theta-rho_" + bn + ".csv";
     write_file(dir, mapfile, map_csv(m, "rho", "theta"));
     files.push_back(mapfile);
-    gp << "set title '" << bn << " branch ({/Symbol a}=" << a.p.alpha << ", {/Symbol d}_0="
+    // Inset of the narrow acoustic region at small rho (as in Fig. 2), from a finer map.
+    const bool inset = b == Branch::acoustic && rr[0] < 0.3 && rr[1] > 0.35;
+    const double in_lo = std::max(rr[0], 0.04), in_hi = 0.35, in_theta = 1.6;
+    gp << "set origin " << k * panel_w << ",0\nset size " << panel_w << ",1\n"
+       << "set title '" << bn << " branch ({/Symbol a}=" << a.p.alpha << ", {/Symbol d}_0="
        << a.p.delta0 << ", {/Symbol k}=" << a.p.kappa << ")'\n"
-       << "set xrange [" << rr[0] << ":" << rr[1] << "]\n"
-       << "plot '" << mapfile << "' using 1:2:3 with image notitle";
+       << "set xrange [" << rr[0] << ":" << rr[1] << "]\nset yrange [0:pi]\n"
+       << (b == Branch::acoustic ? "set key bottom left\n" : "set key top right\n");
+    if (inset)
+      gp << "set object 1 rect from " << in_lo << "," << in_theta << " to " << in_hi
+         << ",pi front fs empty border lc rgb '#000000' lw 1\n";
+    std::ostringstream plot;
+    plot << "plot '" << mapfile << "' using 1:2:3 with image notitle";
     json curves_info = json::object();
     if (!a.no_curves) {
       const auto t1 = std::chrono::steady_clock::now();
@@ -233,11 +244,26 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir) {
         const std::string f = "boundary_theta-rho_" + bn + "_" + std::string(to_string(c)) + ".csv";
         write_file(dir, f, csv);
         files.push_back(f);
-        gp << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title \""
-           << cause_title(c) << "\"";
+        plot << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title \""
+             << cause_title(c) << "\"";
       }
     }
-    gp << "\n";
+    gp << plot.str() << "\n";
+    if (inset) {
+      const RegimeMap zoom = theta_rho_map(a.p, b, {in_lo, in_hi, 300}, {in_theta, std::numbers::pi, 300});
+      const std::string zf = "regime_theta-rho_" + bn + "_inset.csv";
+      write_file(dir, zf, map_csv(zoom, "rho", "theta"));
+      files.push_back(zf);
+      std::string zplot = plot.str();
+      zplot.replace(zplot.find(mapfile), mapfile.size(), zf);
+      gp << "unset object 1\nset origin " << k * panel_w + 0.45 * panel_w << ",0.14\nset size "
+         << 0.5 * panel_w << ",0.45\nunset title\nunset xlabel\nunset ylabel\nunset key\n"
+         << "set xrange [" << in_lo << ":" << in_hi << "]\nset yrange [" << in_theta << ":pi]\n"
+         << "set xtics 0.1 font ',8'\nset ytics 0.5 font ',8'\n"
+         << zplot << "\n"
+         << "set xlabel '{/Symbol r}'\nset ylabel '{/Symbol q}'\nset key\nset xtics auto\n"
+            "set ytics auto\n";
+    }
     int focusing = 0;
     for (auto v : m.values) focusing += v == PixelRegime::focusing;
     panels.push_back({{"branch", bn},
@@ -262,8 +288,7 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir) {
 
 json map_delta0_omega(const MapArgs& a, const fs::path& dir) {
   json files = json::array(), panels = json::array();
-  const auto bs = branches_of(a.branch == "both" ? "optical" : a.branch);
-  const Branch b = bs.front();
+  const Branch b = parse_branch(a.branch);
   const std::string bn(to_string(b));
   const auto dr = range_or(a.delta0_range, {0.001, 1.0}, "delta0-range");
   const GridAxis delta0{dr[0], dr[1], a.res_x, a.delta0_log};
@@ -394,13 +419,24 @@ void run_map(const MapArgs& a) {
   validate(a.p);
   if (a.res_x < 2 || a.res_x > 20000) throw InvalidParameter("nx", "must be in [2, 20000]");
   if (a.res_y < 2 || a.res_y > 20000) throw InvalidParameter("ny", "must be in [2, 20000]");
+  if (a.plane != "theta-rho" && a.plane != "delta0-omega")
+    throw InvalidParameter("plane", "must be 'theta-rho' or 'delta0-omega', got '" + a.plane + "'");
+  branches_of(a.branch);  // validates --branch before anything is written
   const fs::path dir(a.out);
   fs::create_directories(dir);
   json out;
   if (a.plane == "theta-rho")
     out = map_theta_rho(a, dir);
-  else if (a.plane == "delta0-omega")
-    out = map_delta0_omega(a, dir);
+  else if (a.plane == "delta0-omega") {
+    // one figure per branch (Fig. 4 optical, Fig. 5 acoustic)
+    json maps = json::array();
+    for (Branch b : branches_of(a.branch)) {
+      MapArgs one = a;
+      one.branch = std::string(to_string(b));
+      maps.push_back(map_delta0_omega(one, dir));
+    }
+    out = {{"plane", "delta0-omega"}, {"maps", maps}};
+  }
   else
     throw InvalidParameter("plane", "must be 'theta-rho' or 'delta0-omega', got '" + a.plane + "'");
   out["out"] = fs::absolute(dir).string();
