@@ -236,13 +236,13 @@ void run_continue(const DarkArgs& a) {
                                     "set datafile separator ','\nset xlabel 'omega_b'\nset ylabel '|lambda|'\n"
                                     "set multiplot layout 2,1 title 'Floquet moduli > 1 (blue: complex, red: real > 0, green: real < 0)'\n"
                                     "set title 'weakly nonlinear (before the turning point)'\n"
-                                    "plot 'floquet_moduli.csv' skip 1 u 1:($4==1 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
-                                    "'' skip 1 u 1:($4==1 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
-                                    "'' skip 1 u 1:($4==1 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle\n"
+                                    "plot 'floquet_moduli.csv' skip 1 u 1:($4==0 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
+                                    "'' skip 1 u 1:($4==0 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
+                                    "'' skip 1 u 1:($4==0 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle\n"
                                     "set title 'strongly nonlinear (after the turning point)'\n"
-                                    "plot 'floquet_moduli.csv' skip 1 u 1:($4>1 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
-                                    "'' skip 1 u 1:($4>1 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
-                                    "'' skip 1 u 1:($4>1 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle\n"
+                                    "plot 'floquet_moduli.csv' skip 1 u 1:($4>=1 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
+                                    "'' skip 1 u 1:($4>=1 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
+                                    "'' skip 1 u 1:($4>=1 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle\n"
                                     "unset multiplot\n"),
                         "floquet_moduli.png");
   }

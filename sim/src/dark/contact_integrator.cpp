@@ -12,7 +12,7 @@ namespace lrchain::sim::dark {
 
 namespace {
 using State = std::vector<double>;
-using Stepper = boost::numeric::odeint::runge_kutta_fehlberg78<State>;
+using Rkf78 = boost::numeric::odeint::runge_kutta_fehlberg78<State>;
 
 // Cubic Hermite interpolant on [0, h] from values x0, x1 and slopes v0, v1, at s in [0, 1].
 inline double hermite(double x0, double v0, double x1, double v1, double h, double s) {
@@ -22,9 +22,15 @@ inline double hermite(double x0, double v0, double x1, double v1, double h, doub
 }
 }  // namespace
 
+struct ContactIntegrator::Stepper {
+  Rkf78 rk;
+};
+
+ContactIntegrator::~ContactIntegrator() = default;
+
 ContactIntegrator::ContactIntegrator(const StrainLatticeOrbit& orbit,
                                      ContactIntegrationOptions options)
-    : orbit_(orbit), options_(options), h_(options.initial_step) {
+    : stepper_(std::make_unique<Stepper>()), orbit_(orbit), options_(options), h_(options.initial_step) {
   trial_stiffness_.resize(static_cast<std::size_t>(OrbitRecord::stages * orbit.sites()));
 }
 
@@ -68,7 +74,6 @@ double ContactIntegrator::first_contact(const State& in, const State& out, doubl
 }
 
 void ContactIntegrator::trial(const State& in, double t, double h) {
-  static thread_local Stepper stepper;  // stage storage reused across calls of this thread
   const int N = orbit_.sites();
   calls_ = 0;
   auto sys = [this, N](const State& s, State& ds, double) {
@@ -78,7 +83,7 @@ void ContactIntegrator::trial(const State& in, double t, double h) {
     ++calls_;
     orbit_.rhs(s.data(), ds.data(), g);
   };
-  stepper.do_step(sys, in, t, out_, h, err_);
+  stepper_->rk.do_step(sys, in, t, out_, h, err_);
   if (calls_ != OrbitRecord::stages)
     throw std::logic_error("contact integrator: unexpected number of Runge-Kutta stages");
 }

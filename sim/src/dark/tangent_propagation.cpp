@@ -22,12 +22,13 @@ void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& reco
 
 #pragma omp parallel
   {
-    boost::numeric::odeint::runge_kutta_fehlberg78<State> stepper;
     State s;
 #pragma omp for schedule(dynamic, 1)
     for (int bi = 0; bi < blocks; ++bi) {
       const int c0 = bi * block;
       const int b = std::min(block, m - c0);
+      // One stepper per block: Odeint sizes its stage storage on first use (blocks differ in size).
+      boost::numeric::odeint::runge_kutta_fehlberg78<State> stepper;
       s.assign(static_cast<std::size_t>(rows * b), 0.0);
       for (int j = 0; j < b; ++j)
         for (Eigen::Index r = 0; r < rows; ++r) s[static_cast<std::size_t>(r * b + j)] = phi(r, c0 + j);

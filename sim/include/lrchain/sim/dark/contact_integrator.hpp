@@ -13,6 +13,7 @@
 // that the variational equations can be integrated afterwards with exactly the same steps
 // (tangent_propagation.hpp): the Jacobian is then the exact derivative of the discrete flow.
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "lrchain/sim/dark/strain_variational.hpp"
@@ -54,6 +55,9 @@ struct OrbitRecord {
 class ContactIntegrator {
  public:
   ContactIntegrator(const StrainLatticeOrbit& orbit, ContactIntegrationOptions options = {});
+  ~ContactIntegrator();
+  ContactIntegrator(const ContactIntegrator&) = delete;
+  ContactIntegrator& operator=(const ContactIntegrator&) = delete;
   // Integrates the orbit state [x y xdot ydot] from t0 to t1 in place; appends to *record if given.
   void integrate(std::vector<double>& state, double t0, double t1, OrbitRecord* record = nullptr);
   const ContactIntegrationStats& stats() const { return stats_; }
@@ -64,6 +68,8 @@ class ContactIntegrator {
   double first_contact(const std::vector<double>& in, const std::vector<double>& out, double h) const;
   void trial(const std::vector<double>& in, double t, double h);
 
+  struct Stepper;  // Odeint RKF78 stepper (stage storage sized for this orbit)
+  std::unique_ptr<Stepper> stepper_;
   const StrainLatticeOrbit& orbit_;
   ContactIntegrationOptions options_;
   ContactIntegrationStats stats_;
