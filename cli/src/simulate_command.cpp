@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -17,7 +18,9 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/bright_outputs.hpp"
 #include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/experiment_config.hpp"
+#include "lrchain/sim/more_experiment_config.hpp"
 #include "options.hpp"
 
 namespace lrchain::cli {
@@ -85,6 +88,58 @@ void run_bright_and_report(const sim::BrightRunConfig& cfg, const std::string& o
   }
 }
 
+// Ends the process like run_bright_and_report: exit 130 on Ctrl-C, 1 on blow-up.
+void finish(bool interrupted, bool blew_up, double t_end) {
+  if (interrupted) std::exit(130);
+  if (blew_up) {
+    std::fprintf(stderr, "lrchain: error: the integration blew up (non-finite state) at t = %g\n", t_end);
+    std::exit(1);
+  }
+}
+
+void run_drive_and_report(const sim::DriveRunConfig& cfg, const std::string& out, bool compact) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  ProgressBar bar;
+  sim::DriveRunResult r;
+  {
+    const sim::RunControl control = make_control(bar);
+    r = sim::run_drive(cfg, control);
+  }
+  ::signal(SIGINT, SIG_DFL);
+  nlohmann::json j = sim::to_json(cfg, r.summary);
+  if (!out.empty()) {
+    j["out"] = out;
+    j["figures"] = sim::write_drive_outputs(out, r, j);
+  }
+  j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
+  finish(r.summary.interrupted, r.summary.blew_up, r.summary.t_end);
+}
+
+// Checkpoints go to --checkpoint, else to OUT/checkpoint.bin when --out is given.
+void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& out, bool compact) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  if (cfg.checkpoint_file.empty() && !out.empty() && cfg.checkpoint_every > 0) {
+    sim::ensure_directory(out);
+    cfg.checkpoint_file = (std::filesystem::path(out) / "checkpoint.bin").string();
+  }
+  ProgressBar bar;
+  sim::ModulatedRunResult r;
+  {
+    const sim::RunControl control = make_control(bar);
+    r = sim::run_modulated(cfg, control);
+  }
+  ::signal(SIGINT, SIG_DFL);
+  nlohmann::json j = sim::to_json(cfg, r.summary);
+  if (!out.empty()) {
+    j["out"] = out;
+    j["figures"] = sim::write_modulated_outputs(out, r, j);
+  }
+  j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
+  finish(r.summary.interrupted, r.summary.blew_up, r.summary.t_end);
+}
+
 void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::string& stepper) {
   app.add_option("--stepper", stepper, "rkf78 (default), dopri5 or symplectic");
   add_number(app, "--abs-tol", o.abs_tol, "absolute local error tolerance (default 1e-12)");
@@ -103,6 +158,11 @@ void register_simulate(CLI::App& app) {
   sim_cmd->add_option("--config", *config, "run the experiment in this TOML file (examples/*.toml)");
   sim_cmd->add_option("--out", *out, "output directory for data and figures");
   sim_cmd->add_flag("--json", *compact, "print the JSON summary on one line");
+  auto restart = std::make_shared<std::string>();
+  auto checkpoint = std::make_shared<std::string>();
+  sim_cmd->add_option("--restart", *restart, "modulated runs: continue from this checkpoint file");
+  sim_cmd->add_option("--checkpoint", *checkpoint,
+                      "modulated runs: checkpoint file (default OUT/checkpoint.bin)");
   sim_cmd->require_subcommand(0, 1);
 
   // simulate bright
@@ -139,10 +199,81 @@ void register_simulate(CLI::App& app) {
     run_bright_and_report(*cfg, *out, *compact);
   });
 
+  // simulate drive (experiment 6, Sec. 4.3)
+  auto dcfg = std::make_shared<sim::DriveRunConfig>();
+  auto dstepper = std::make_shared<std::string>("rkf78");
+  auto* drive = sim_cmd->add_subcommand(
+      "drive", "chain at rest driven at u_0(t) = A0 sin(omega0 t) chi(t), clamped far end (Sec. 4.3)");
+  add_model_options(*drive, dcfg->params, false);
+  dcfg->params.rho = 10;
+  drive->add_option("--beads", dcfg->beads, "beads n = 1..beads (default 2000)");
+  add_number(*drive, "--amplitude", dcfg->amplitude, "A0 (default 0.06)");
+  add_number(*drive, "--omega0", dcfg->omega0, "driving frequency, in the optical band (default 2.1)");
+  add_number(*drive, "--ramp-rate", dcfg->ramp_rate, "r of chi(t) (default 0.046)");
+  add_number(*drive, "--t-m", dcfg->t_m, "switch-off time t_m of chi(t) (default 700)");
+  add_number(*drive, "--t-end", dcfg->t_end, "final time (default 2400)");
+  add_number(*drive, "--sample-every", dcfg->sample_every, "series interval (default 1)");
+  add_number(*drive, "--spacetime-every", dcfg->spacetime_every, "e_n row interval (default 2)");
+  drive->add_option("--snapshots", dcfg->snapshot_times, "snapshot times (default 779.9 2400)");
+  add_number(*drive, "--front-fraction", dcfg->front_fraction,
+             "front = last n with e_n > this * max e_n (default 0.1)");
+  add_number(*drive, "--front-fit-start", dcfg->front_fit_start, "front-speed fit from (default 100)");
+  add_number(*drive, "--front-fit-end", dcfg->front_fit_end, "front-speed fit to (default 700)");
+  dcfg->integrator = sim::DriveRunConfig{}.integrator;
+  add_integrator_options(*drive, dcfg->integrator, *dstepper);
+  drive->fallthrough();
+  drive->callback([=] {
+    dcfg->integrator.stepper = sim::parse_stepper(*dstepper);
+    run_drive_and_report(*dcfg, *out, *compact);
+  });
+
+  // simulate modulated (experiment 7, Sec. 5.1)
+  auto mcfg = std::make_shared<sim::ModulatedRunConfig>();
+  auto mstepper = std::make_shared<std::string>("symplectic");
+  auto* mod = sim_cmd->add_subcommand(
+      "modulated", "periodic chain from the modulated acoustic wave eq:cimi, checkpoint/restart (Sec. 5.1)");
+  add_model_options(*mod, mcfg->params, false);
+  mcfg->params.rho = 0.32;
+  mcfg->params.delta0 = 0.27;
+  mod->add_option("--N", mcfg->N, "periodic chain length (default 401)");
+  add_number(*mod, "--epsilon", mcfg->epsilon, "amplitude of eq:cimi (default 0.03)");
+  add_number(*mod, "--theta-waves", mcfg->theta_waves, "theta0 = this * pi / N (default 252)");
+  add_number(*mod, "--b", mcfg->b, "modulation depth (default 0.01)");
+  add_number(*mod, "--t-end", mcfg->t_end, "final time (default 45000)");
+  add_number(*mod, "--sample-every", mcfg->sample_every, "series and e_n row interval (default 10)");
+  mod->add_option("--snapshots", mcfg->snapshot_times, "snapshot times (default 0 17100 32400)");
+  add_number(*mod, "--contrast-threshold", mcfg->contrast_threshold,
+             "instability when (max-min)/mean of smoothed e_n exceeds this (default 0.5)");
+  add_number(*mod, "--speed-fit-start", mcfg->speed_fit_start, "dark-speed fit from (default 30000)");
+  add_number(*mod, "--speed-fit-end", mcfg->speed_fit_end, "dark-speed fit to (default 33000)");
+  add_number(*mod, "--checkpoint-every", mcfg->checkpoint_every,
+             "time between checkpoints (default 1000, 0: none)");
+  add_integrator_options(*mod, mcfg->integrator, *mstepper);
+  mod->fallthrough();
+  mod->callback([=] {
+    mcfg->integrator.stepper = sim::parse_stepper(*mstepper);
+    mcfg->restart_file = *restart;
+    mcfg->checkpoint_file = *checkpoint;
+    run_modulated_and_report(*mcfg, *out, *compact);
+  });
+
   sim_cmd->callback([=] {
     if (!sim_cmd->get_subcommands().empty()) return;
     if (config->empty())
-      throw InvalidParameter("config", "give a subcommand (bright) or --config FILE.toml");
+      throw InvalidParameter("config", "give a subcommand (bright, drive, modulated) or --config FILE.toml");
+    const std::string kind = sim::experiment_kind(*config);
+    if (kind == "drive") {
+      const auto dc = sim::load_drive_config(*config);
+      run_drive_and_report(dc.run, !out->empty() ? *out : dc.out_dir, *compact);
+      return;
+    }
+    if (kind == "modulated") {
+      auto mc = sim::load_modulated_config(*config);
+      mc.run.restart_file = *restart;
+      mc.run.checkpoint_file = *checkpoint;
+      run_modulated_and_report(mc.run, !out->empty() ? *out : mc.out_dir, *compact);
+      return;
+    }
     const sim::ExperimentConfig ec = sim::load_experiment_config(*config);
     const std::string dir = !out->empty() ? *out : ec.out_dir;
     if (ec.experiment == "bright") run_bright_and_report(ec.bright, dir, *compact);

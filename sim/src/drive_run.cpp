@@ -1,0 +1,284 @@
+// Experiment 6 (Sec. 4.3): boundary-driven chain, clamped far end; outputs like Figs. 14, 15.
+#include "lrchain/sim/drive_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "lrchain/coefficients.hpp"
+#include "lrchain/dispersion.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/displacement_lattice.hpp"
+#include "lrchain/sim/energy.hpp"
+#include "lrchain/sim/output_files.hpp"
+
+namespace lrchain::sim {
+
+void validate(const DriveRunConfig& c) {
+  validate(c.params);
+  if (c.beads < 10) throw InvalidParameter("beads", "must be >= 10");
+  if (!(c.amplitude > 0)) throw InvalidParameter("amplitude", "must be > 0");
+  if (!(c.omega0 > 0)) throw InvalidParameter("omega0", "must be > 0");
+  if (!(c.ramp_rate > 0)) throw InvalidParameter("ramp-rate", "must be > 0");
+  if (!(c.t_end > 0)) throw InvalidParameter("t-end", "must be > 0");
+  if (!(c.sample_every > 0 && c.sample_every <= c.t_end))
+    throw InvalidParameter("sample-every", "must be in (0, t_end]");
+  if (!(c.spacetime_every >= c.sample_every))
+    throw InvalidParameter("spacetime-every", "must be >= sample-every");
+  if (!(c.front_fraction > 0 && c.front_fraction < 1))
+    throw InvalidParameter("front-fraction", "must be in (0, 1)");
+  if (!(c.front_fit_end > c.front_fit_start))
+    throw InvalidParameter("front-fit", "window end must exceed its start");
+  validate(c.integrator);
+  if (c.integrator.stepper == StepperKind::symplectic)
+    throw InvalidParameter("stepper", "the driven chain is not autonomous: use rkf78 or dopri5");
+}
+
+// chi(t) = tanh(r t) (1 - tanh(r (t - t_m))) / 2 (Sec. 4.3).
+double drive_envelope(double t, double r, double t_m) {
+  return std::tanh(r * t) * (1 - std::tanh(r * (t - t_m))) / 2;
+}
+
+namespace {
+
+double slope(const std::vector<double>& t, const std::vector<double>& y) {
+  const double n = double(t.size());
+  if (t.size() < 2) return 0;
+  double st = 0, sy = 0, stt = 0, sty = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    st += t[i]; sy += y[i]; stt += t[i] * t[i]; sty += t[i] * y[i];
+  }
+  const double den = n * stt - st * st;
+  return den != 0 ? (n * sty - st * sy) / den : 0;
+}
+
+// theta in (0, pi] with omega_+(theta) = omega0 (eq:disp1d; omega_+ increases on [0, pi]).
+double optical_wavenumber(const Params& p, double omega0) {
+  double a = 0, b = M_PI;
+  const double wa = dispersion_omega(p, Branch::optical, a), wb = dispersion_omega(p, Branch::optical, b);
+  if (!(omega0 > wa && omega0 <= wb))
+    throw InvalidParameter("omega0", fmt::format("must lie in the optical band ({:.6g}, {:.6g}]", wa, wb));
+  for (int k = 0; k < 200 && b - a > 1e-15; ++k) {
+    const double m = 0.5 * (a + b);
+    (dispersion_omega(p, Branch::optical, m) < omega0 ? a : b) = m;
+  }
+  return 0.5 * (a + b);
+}
+
+// Number of sites carrying the energy: (sum e)^2 / sum e^2.
+double participation(const std::vector<double>& e) {
+  double s = 0, s2 = 0;
+  for (double v : e) { s += v; s2 += v * v; }
+  return s2 > 0 ? s * s / s2 : 0;
+}
+
+// Local maxima of the 3-site running mean of e above `fraction` of its maximum.
+long count_peaks(const std::vector<double>& e, double fraction) {
+  const std::size_t n = e.size();
+  if (n < 5) return 0;
+  std::vector<double> m(n, 0);
+  for (std::size_t i = 1; i + 1 < n; ++i) m[i] = (e[i - 1] + e[i] + e[i + 1]) / 3;
+  const double top = *std::max_element(m.begin(), m.end());
+  long peaks = 0;
+  for (std::size_t i = 2; i + 2 < n; ++i)
+    if (m[i] > fraction * top && m[i] >= m[i - 1] && m[i] > m[i + 1] && m[i] >= m[i - 2] &&
+        m[i] > m[i + 2])
+      ++peaks;
+  return peaks;
+}
+
+}  // namespace
+
+DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
+  validate(c);
+  DriveRunResult result;
+  auto& S = result.summary;
+  S.theta = optical_wavenumber(c.params, c.omega0);
+  S.group_velocity = coefficients(c.params, Branch::optical, S.theta).group_velocity;
+
+  const std::size_t beads = std::size_t(c.beads);
+  DisplacementBoundary boundary;
+  boundary.left.kind = EndKind::prescribed;
+  boundary.left.motion = [A = c.amplitude, w = c.omega0, r = c.ramp_rate, tm = c.t_m](double t) {
+    return A * std::sin(w * t) * drive_envelope(t, r, tm);
+  };
+  boundary.right.kind = EndKind::clamped;
+  const DisplacementLattice chain(c.params, beads, boundary);
+  const auto& L = chain.layout();
+  State s(L.size(), 0.0);  // chain at rest
+
+  std::vector<double> times;
+  const long samples = long(std::floor(c.t_end / c.sample_every + 1e-9));
+  for (long k = 0; k <= samples; ++k) times.push_back(double(k) * c.sample_every);
+  if (c.t_end - times.back() > 1e-9 * c.t_end) times.push_back(c.t_end);
+  std::vector<double> snap_times;
+  for (double ts : c.snapshot_times)
+    if (ts >= 0 && ts <= c.t_end * (1 + 1e-12)) snap_times.push_back(std::min(ts, c.t_end));
+  times.insert(times.end(), snap_times.begin(), snap_times.end());
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end(),
+                          [&](double a, double b) { return std::abs(a - b) <= 1e-9 * c.t_end; }),
+              times.end());
+
+  auto& rec = result.record;
+  rec.series.names = {"t", "energy", "front", "participation", "u0"};
+  SpaceTime field;
+  field.quantity = "energy_density";
+  field.first_label = 1;
+  field.sites = beads;
+  std::vector<double> e(beads), scratch(beads + 1), front_t, front_n;
+  double next_st = 0;
+
+  auto observe = [&](const State& st, double t) {
+    energy_density(chain, st, t, e.data(), scratch.data());
+    const double emax = *std::max_element(e.begin(), e.end());
+    long front = 0;
+    for (std::size_t i = beads; i-- > 0;)
+      if (emax > 0 && e[i] > c.front_fraction * emax) { front = long(i) + 1; break; }
+    const double energy = chain.total_energy(st, t), part = participation(e);
+    rec.series.data.insert(rec.series.data.end(),
+                           {t, energy, double(front), part, boundary.left.motion(t)});
+    if (t >= c.front_fit_start - 1e-9 && t <= c.front_fit_end + 1e-9) {
+      front_t.push_back(t);
+      front_n.push_back(double(front));
+    }
+    S.max_energy = std::max(S.max_energy, energy);
+    S.max_participation = std::max(S.max_participation, part);
+    S.final_energy = energy;
+    S.final_participation = part;
+    S.final_peaks = count_peaks(e, 0.1);
+    if (t >= next_st - 1e-9 * c.t_end) {
+      field.times.push_back(t);
+      for (double v : e) field.values.push_back(float(v));
+      next_st += c.spacetime_every;
+    }
+    for (double ts : snap_times) {
+      if (std::abs(ts - t) > 1e-9 * c.t_end) continue;
+      Snapshot snap;
+      snap.t = t;
+      snap.tag = fmt::format("t{:.1f}", t);
+      snap.names = {"n", "u", "v", "u_dot", "v_dot", "e"};
+      const double *u = L.primary(st), *v = L.secondary(st), *ud = L.primary_rate(st),
+                   *vd = L.secondary_rate(st);
+      for (std::size_t i = 0; i < beads; ++i)
+        snap.data.insert(snap.data.end(), {double(i + 1), u[i], v[i], ud[i], vd[i], e[i]});
+      rec.snapshots.push_back(std::move(snap));
+      break;
+    }
+    if (control.progress) control.progress(t / c.t_end);
+    return !control.stop_requested();
+  };
+
+  const auto start = std::chrono::steady_clock::now();
+  S.stats = integrate_observed(chain, s, times, observe, c.integrator);
+  S.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  S.t_end = S.stats.t_reached;
+  S.interrupted = S.stats.stopped;
+  S.blew_up = S.stats.blew_up;
+  S.front_speed = slope(front_t, front_n);
+  rec.fields.push_back(std::move(field));
+  return result;
+}
+
+nlohmann::json to_json(const DriveRunConfig& c, const DriveRunSummary& s) {
+  nlohmann::json j;
+  j["experiment"] = "drive";
+  j["params"] = {{"alpha", c.params.alpha}, {"delta0", c.params.delta0},
+                 {"kappa", c.params.kappa}, {"rho", c.params.rho}};
+  j["beads"] = c.beads;
+  j["drive"] = {{"amplitude", c.amplitude}, {"omega0", c.omega0}, {"ramp_rate", c.ramp_rate},
+                {"t_m", c.t_m}};
+  j["integrator"] = {{"stepper", std::string(to_string(c.integrator.stepper))},
+                     {"abs_tol", c.integrator.abs_tol}, {"rel_tol", c.integrator.rel_tol},
+                     {"dt", c.integrator.dt}};
+  j["theta"] = s.theta;
+  j["group_velocity"] = s.group_velocity;
+  j["front_speed"] = s.front_speed;
+  j["front_fit"] = {c.front_fit_start, c.front_fit_end};
+  j["final_participation"] = s.final_participation;
+  j["max_participation"] = s.max_participation;
+  j["final_peaks"] = s.final_peaks;
+  j["final_energy"] = s.final_energy;
+  j["max_energy"] = s.max_energy;
+  j["t_end"] = s.t_end;
+  j["interrupted"] = s.interrupted;
+  j["blew_up"] = s.blew_up;
+  j["steps"] = s.stats.steps;
+  j["rhs_evaluations"] = s.stats.rhs_evaluations;
+  j["solve_seconds"] = s.solve_seconds;
+  return j;
+}
+
+namespace {
+
+std::string drive_energy_script(const DriveRunResult& r) {
+  float emax = 0;
+  for (const auto& f : r.record.fields)
+    for (float v : f.values) emax = std::max(emax, v);
+  if (!(emax > 0)) emax = 1;
+  return fmt::format(R"GP(# Energy density e_n(t) (eq:edensity) of the driven chain (Fig. 14 left), with n = c_+ t
+# (dashed), and the front of the wave pattern (right).
+if (!exists("outfile")) outfile = 'energy.png'
+set terminal pngcairo size 1400,650 font ",11"
+set output outfile
+set multiplot layout 1,2
+set xlabel "n"
+set ylabel "t"
+set logscale cb
+set cbrange [{:.3e}:{:.3e}]
+set palette rgbformulae 33,13,10
+set format cb "%.0e"
+set autoscale fix
+plot 'energy_density_spacetime.bin' binary matrix using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle, \
+     [0:{:.1f}] (x/{:.6f}) with lines dt 2 lw 2 lc rgb "white" title "n = c_+ t"
+unset logscale cb
+set datafile separator ","
+set xlabel "t"
+set ylabel "front n, participation"
+plot 'series.csv' using 1:3 skip 1 with lines lw 1.5 title "front", \
+     'series.csv' using 1:4 skip 1 with lines lw 1.5 title "participation (sum e)^2/sum e^2", \
+     {:.6f}*x with lines dt 2 lc rgb "black" title "c_+ t"
+unset multiplot
+)GP",
+                     emax * 1e-5, emax, emax * 1e-5, emax * 1e-5,
+                     double(r.record.fields.empty() ? 0 : r.record.fields[0].sites),
+                     r.summary.group_velocity, r.summary.group_velocity);
+}
+
+std::string drive_snapshots_script(const DriveRunResult& r) {
+  std::string body;
+  for (const auto& s : r.record.snapshots)
+    body += fmt::format("set title \"t = {:.1f}\"\nplot 'snapshot_{}.csv' using 1:4 skip 1 with lines lw 1 notitle\n",
+                        s.t, s.tag);
+  return fmt::format(R"GP(# Bead velocities du_n/dt at the snapshot times (Fig. 15).
+if (!exists("outfile")) outfile = 'snapshots.png'
+set terminal pngcairo size 1400,{} font ",11"
+set output outfile
+set datafile separator ","
+set multiplot layout {},1
+set xlabel "n"
+set ylabel "du_n/dt"
+{}unset multiplot
+)GP",
+                     350 * std::max<std::size_t>(1, r.record.snapshots.size()),
+                     std::max<std::size_t>(1, r.record.snapshots.size()), body);
+}
+
+}  // namespace
+
+std::vector<std::string> write_drive_outputs(const std::string& dir, const DriveRunResult& r,
+                                             const nlohmann::json& summary) {
+  ensure_directory(dir);
+  write_record(dir, r.record);
+  write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
+  std::vector<std::string> figures;
+  if (render_gnuplot(dir, "energy.gp", drive_energy_script(r), "energy.png"))
+    figures.push_back("energy.png");
+  if (!r.record.snapshots.empty() &&
+      render_gnuplot(dir, "snapshots.gp", drive_snapshots_script(r), "snapshots.png"))
+    figures.push_back("snapshots.png");
+  return figures;
+}
+
+}  // namespace lrchain::sim

@@ -1,0 +1,307 @@
+// Experiment 7 (Sec. 5.1): modulated acoustic wave eq:cimi on the periodic chain, long run with
+// checkpoint/restart; outputs like Fig. 16.
+#include "lrchain/sim/modulated_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "lrchain/coefficients.hpp"
+#include "lrchain/dispersion.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/checkpoint.hpp"
+#include "lrchain/sim/displacement_lattice.hpp"
+#include "lrchain/sim/energy.hpp"
+#include "lrchain/sim/output_files.hpp"
+
+namespace lrchain::sim {
+
+void validate(const ModulatedRunConfig& c) {
+  validate(c.params);
+  if (c.N < 8) throw InvalidParameter("N", "must be >= 8");
+  if (!(c.epsilon > 0)) throw InvalidParameter("epsilon", "must be > 0");
+  if (!(c.theta_waves > 0 && c.theta_waves < double(c.N)))
+    throw InvalidParameter("theta-waves", "theta0 = theta_waves*pi/N must lie in (0, pi)");
+  if (!(c.b >= 0 && c.b < 1)) throw InvalidParameter("b", "must be in [0, 1)");
+  if (!(c.t_end > 0)) throw InvalidParameter("t-end", "must be > 0");
+  if (!(c.sample_every > 0 && c.sample_every <= c.t_end))
+    throw InvalidParameter("sample-every", "must be in (0, t_end]");
+  if (!(c.checkpoint_every >= 0)) throw InvalidParameter("checkpoint-every", "must be >= 0");
+  if (c.dark_window < 1 || c.dark_window >= c.N) throw InvalidParameter("dark-window", "must be in [1, N)");
+  if (!(c.contrast_threshold > 0)) throw InvalidParameter("contrast-threshold", "must be > 0");
+  validate(c.integrator);
+}
+
+// eq:cimi with omega = omega_-(theta0), theta0 = theta_waves pi / N.
+State modulated_initial_state(const ModulatedRunConfig& c, double& omega, double& theta0) {
+  const std::size_t N = std::size_t(c.N);
+  theta0 = c.theta_waves * M_PI / double(c.N);
+  omega = dispersion_omega(c.params, Branch::acoustic, theta0);
+  const double ratio = c.params.kappa / (c.params.kappa - c.params.rho * omega * omega);
+  StateLayout L{N};
+  State s(L.size());
+  for (std::size_t i = 0; i < N; ++i) {
+    const double n = double(i), mod = 1 + c.b * std::cos(2 * n * M_PI / double(c.N));
+    const double u = c.epsilon * std::sin(theta0 * n) * mod;
+    const double ud = -c.epsilon * omega * std::cos(theta0 * n) * mod;
+    L.primary(s)[i] = u;
+    L.secondary(s)[i] = ratio * u;
+    L.primary_rate(s)[i] = ud;
+    L.secondary_rate(s)[i] = ratio * ud;
+  }
+  return s;
+}
+
+namespace {
+
+double slope(const std::vector<double>& t, const std::vector<double>& y) {
+  const double n = double(t.size());
+  if (t.size() < 2) return 0;
+  double st = 0, sy = 0, stt = 0, sty = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    st += t[i]; sy += y[i]; stt += t[i] * t[i]; sty += t[i] * y[i];
+  }
+  const double den = n * stt - st * st;
+  return den != 0 ? (n * sty - st * sy) / den : 0;
+}
+
+// Periodic running mean of e over w sites (centred), into m.
+void running_mean(const std::vector<double>& e, long w, std::vector<double>& m) {
+  const long N = long(e.size()), h = w / 2;
+  for (long i = 0; i < N; ++i) {
+    double s = 0;
+    for (long k = -h; k < -h + w; ++k) s += e[std::size_t(((i + k) % N + N) % N)];
+    m[std::size_t(i)] = s / double(w);
+  }
+}
+
+}  // namespace
+
+ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& control) {
+  validate(c);
+  ModulatedRunResult result;
+  auto& S = result.summary;
+  const std::size_t N = std::size_t(c.N);
+  State s = modulated_initial_state(c, S.omega, S.theta0);
+  S.group_velocity = coefficients(c.params, Branch::acoustic, S.theta0).group_velocity;
+  DisplacementBoundary boundary;
+  boundary.periodic = true;
+  const DisplacementLattice chain(c.params, N, boundary);
+  const auto& L = chain.layout();
+  S.energy0 = chain.total_energy(s, 0);  // of eq:cimi, also on restart
+  double t0 = 0;
+  if (!c.restart_file.empty()) {
+    Checkpoint ck = read_checkpoint(c.restart_file);
+    if (ck.state.size() != L.size() || ck.tag != c.name)
+      throw InvalidParameter("restart", fmt::format("checkpoint '{}' is for run '{}' with {} values, "
+                                                    "not '{}' with {}", c.restart_file, ck.tag,
+                                                    ck.state.size(), c.name, L.size()));
+    if (!(ck.t < c.t_end)) throw InvalidParameter("restart", "checkpoint time is not before t_end");
+    s = std::move(ck.state);
+    t0 = ck.t;
+  }
+  S.t_start = t0;
+
+  // Observation times: samples on the grid k*sample_every, checkpoint and snapshot times.
+  std::vector<double> times{t0};
+  for (long k = long(std::floor(t0 / c.sample_every)) + 1; double(k) * c.sample_every < c.t_end; ++k)
+    times.push_back(double(k) * c.sample_every);
+  if (c.checkpoint_every > 0)
+    for (long k = long(std::floor(t0 / c.checkpoint_every)) + 1; double(k) * c.checkpoint_every < c.t_end; ++k)
+      times.push_back(double(k) * c.checkpoint_every);
+  times.push_back(c.t_end);
+  for (double ts : c.snapshot_times)
+    if (ts >= t0 && ts <= c.t_end) times.push_back(ts);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end(),
+                          [&](double a, double b) { return std::abs(a - b) <= 1e-9 * c.t_end; }),
+              times.end());
+
+  auto& rec = result.record;
+  rec.series.names = {"t", "energy", "contrast", "dark_centre", "dark_unwrapped"};
+  SpaceTime field;
+  field.quantity = "energy_density";
+  field.first_label = 0;
+  field.sites = N;
+  std::vector<double> e(N), m(N), scratch(N + 1), fit_t, fit_x;
+  double prev_centre = -1, unwrapped = 0, next_row = t0;
+  bool first = true;
+  auto near = [&](double a, double b) { return std::abs(a - b) <= 1e-9 * c.t_end; };
+  auto save = [&](const State& st, double t) {
+    if (c.checkpoint_file.empty()) return;
+    write_checkpoint(c.checkpoint_file, Checkpoint{t, st, c.name});
+    ++S.checkpoints_written;
+  };
+
+  auto observe = [&](const State& st, double t) {
+    energy_density(chain, st, t, e.data(), scratch.data());
+    running_mean(e, c.dark_window, m);
+    const auto [mn, mx] = std::minmax_element(m.begin(), m.end());
+    double mean = 0;
+    for (double v : m) mean += v;
+    mean /= double(N);
+    const double contrast = (*mx - *mn) / mean;
+    const double centre = double(mn - m.begin());
+    if (prev_centre >= 0) {
+      double d = centre - prev_centre;
+      if (d > double(N) / 2) d -= double(N);
+      if (d < -double(N) / 2) d += double(N);
+      unwrapped += d;
+    } else {
+      unwrapped = centre;
+    }
+    prev_centre = centre;
+    const double energy = chain.total_energy(st, t);
+    if (first) S.initial_contrast = contrast;
+    first = false;
+    S.max_energy_drift = std::max(S.max_energy_drift, std::abs(energy - S.energy0) / S.energy0);
+    if (S.instability_time < 0 && contrast > c.contrast_threshold) S.instability_time = t;
+    if (t >= c.speed_fit_start - 1e-9 && t <= c.speed_fit_end + 1e-9) {
+      fit_t.push_back(t);
+      fit_x.push_back(unwrapped);
+    }
+    rec.series.data.insert(rec.series.data.end(), {t, energy, contrast, centre, unwrapped});
+    if (t >= next_row - 1e-9 * c.t_end) {
+      field.times.push_back(t);
+      for (double v : e) field.values.push_back(float(v));
+      next_row += c.sample_every;
+    }
+    for (double ts : c.snapshot_times) {
+      if (!near(ts, t)) continue;
+      Snapshot snap;
+      snap.t = t;
+      snap.tag = fmt::format("t{:.0f}", t);
+      snap.names = {"n", "u", "v", "u_dot", "v_dot", "e"};
+      const double *u = L.primary(st), *v = L.secondary(st), *ud = L.primary_rate(st),
+                   *vd = L.secondary_rate(st);
+      for (std::size_t i = 0; i < N; ++i)
+        snap.data.insert(snap.data.end(), {double(i), u[i], v[i], ud[i], vd[i], e[i]});
+      rec.snapshots.push_back(std::move(snap));
+      break;
+    }
+    if (c.checkpoint_every > 0 && t > t0) {
+      const double k = std::round(t / c.checkpoint_every);
+      if (near(k * c.checkpoint_every, t) || near(t, c.t_end)) save(st, t);
+    }
+    if (control.progress) control.progress((t - t0) / (c.t_end - t0));
+    if (control.stop_requested()) {
+      save(st, t);  // Ctrl-C: keep a restartable state
+      return false;
+    }
+    return true;
+  };
+
+  const auto start = std::chrono::steady_clock::now();
+  S.stats = integrate_observed(chain, s, times, observe, c.integrator);
+  S.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  S.t_end = S.stats.t_reached;
+  S.interrupted = S.stats.stopped;
+  S.blew_up = S.stats.blew_up;
+  S.dark_samples = long(fit_t.size());
+  S.dark_speed = std::abs(slope(fit_t, fit_x));
+  rec.fields.push_back(std::move(field));
+  return result;
+}
+
+nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s) {
+  nlohmann::json j;
+  j["experiment"] = "modulated";
+  j["name"] = c.name;
+  j["params"] = {{"alpha", c.params.alpha}, {"delta0", c.params.delta0},
+                 {"kappa", c.params.kappa}, {"rho", c.params.rho}};
+  j["N"] = c.N;
+  j["initial"] = {{"epsilon", c.epsilon}, {"theta0", s.theta0}, {"omega", s.omega}, {"b", c.b}};
+  j["integrator"] = {{"stepper", std::string(to_string(c.integrator.stepper))},
+                     {"abs_tol", c.integrator.abs_tol}, {"rel_tol", c.integrator.rel_tol},
+                     {"dt", c.integrator.dt}};
+  j["group_velocity"] = s.group_velocity;
+  j["t_start"] = s.t_start;
+  j["initial_contrast"] = s.initial_contrast;
+  j["contrast_threshold"] = c.contrast_threshold;
+  j["instability_time"] = s.instability_time;
+  j["dark_speed"] = s.dark_speed;
+  j["dark_speed_fit"] = {c.speed_fit_start, c.speed_fit_end};
+  j["dark_samples"] = s.dark_samples;
+  j["energy0"] = s.energy0;
+  j["max_relative_energy_drift"] = s.max_energy_drift;
+  j["checkpoints_written"] = s.checkpoints_written;
+  if (!c.checkpoint_file.empty()) j["checkpoint_file"] = c.checkpoint_file;
+  j["t_end"] = s.t_end;
+  j["interrupted"] = s.interrupted;
+  j["blew_up"] = s.blew_up;
+  j["steps"] = s.stats.steps;
+  j["rhs_evaluations"] = s.stats.rhs_evaluations;
+  j["solve_seconds"] = s.solve_seconds;
+  return j;
+}
+
+namespace {
+
+std::string modulated_energy_script(const ModulatedRunResult& r) {
+  float emax = 0, emin = 1e30f;
+  for (const auto& f : r.record.fields)
+    for (float v : f.values) { emax = std::max(emax, v); emin = std::min(emin, v); }
+  if (!(emax > 0)) emax = 1;
+  return fmt::format(R"GP(# Energy density e_n(t) (eq:edensity) on the periodic chain (Fig. 16 bottom right), and the
+# contrast (max-min)/mean of the running-mean e_n with the position of its minimum (dark-breather centre).
+if (!exists("outfile")) outfile = 'energy.png'
+set terminal pngcairo size 1400,700 font ",11"
+set output outfile
+set multiplot layout 1,2
+set xlabel "n"
+set ylabel "t"
+set palette gray negative
+set cbrange [0:{:.3e}]
+set autoscale fix
+plot 'energy_density_spacetime.bin' binary matrix with image notitle
+set datafile separator ","
+set xlabel "t"
+set ylabel "contrast of e_n"
+set y2label "min-e site"
+set y2tics
+set ytics nomirror
+set logscale y
+plot 'series.csv' using 1:3 skip 1 with lines lw 1.2 title "contrast", \
+     'series.csv' using 1:4 skip 1 axes x1y2 with dots lc rgb "red" title "min-e site"
+unset multiplot
+)GP",
+                     0.5 * emax);
+}
+
+std::string modulated_snapshots_script(const ModulatedRunResult& r) {
+  std::string body;
+  for (const auto& s : r.record.snapshots)
+    body += fmt::format("set title \"t = {:.0f}\"\nplot 'snapshot_{}.csv' using 1:4 skip 1 with linespoints pt 7 ps 0.3 lw 0.8 notitle\n",
+                        s.t, s.tag);
+  const std::size_t k = std::max<std::size_t>(1, r.record.snapshots.size());
+  return fmt::format(R"GP(# Bead velocities du_n/dt at the snapshot times (Fig. 16).
+if (!exists("outfile")) outfile = 'snapshots.png'
+set terminal pngcairo size 1400,{} font ",11"
+set output outfile
+set datafile separator ","
+set multiplot layout {},1
+set xlabel "n"
+set ylabel "du_n/dt"
+{}unset multiplot
+)GP",
+                     330 * k, k, body);
+}
+
+}  // namespace
+
+std::vector<std::string> write_modulated_outputs(const std::string& dir, const ModulatedRunResult& r,
+                                                 const nlohmann::json& summary) {
+  ensure_directory(dir);
+  write_record(dir, r.record);
+  write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
+  std::vector<std::string> figures;
+  if (render_gnuplot(dir, "energy.gp", modulated_energy_script(r), "energy.png"))
+    figures.push_back("energy.png");
+  if (!r.record.snapshots.empty() &&
+      render_gnuplot(dir, "snapshots.gp", modulated_snapshots_script(r), "snapshots.png"))
+    figures.push_back("snapshots.png");
+  return figures;
+}
+
+}  // namespace lrchain::sim
