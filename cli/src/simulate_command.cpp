@@ -243,7 +243,7 @@ void register_simulate(CLI::App& app) {
   add_number(*mod, "--sample-every", mcfg->sample_every, "series and e_n row interval (default 10)");
   mod->add_option("--snapshots", mcfg->snapshot_times, "snapshot times (default 0 17100 32400)");
   add_number(*mod, "--contrast-threshold", mcfg->contrast_threshold,
-             "instability when (max-min)/mean of smoothed e_n exceeds this (default 0.5)");
+             "instability when (max-min)/mean of smoothed e_n exceeds this (default 0.2)");
   add_number(*mod, "--speed-fit-start", mcfg->speed_fit_start, "dark-speed fit from (default 30000)");
   add_number(*mod, "--speed-fit-end", mcfg->speed_fit_end, "dark-speed fit to (default 33000)");
   add_number(*mod, "--checkpoint-every", mcfg->checkpoint_every,

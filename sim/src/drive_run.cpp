@@ -229,10 +229,12 @@ set logscale cb
 set cbrange [{:.3e}:{:.3e}]
 set palette rgbformulae 33,13,10
 set format cb "%.0e"
-set autoscale fix
+set xrange [1:{:.1f}]
+set yrange [0:{:.1f}]
 plot 'energy_density_spacetime.bin' binary matrix using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle, \
-     [0:{:.1f}] (x/{:.6f}) with lines dt 2 lw 2 lc rgb "white" title "n = c_+ t"
+     (x/{:.6f}) with lines dt 2 lw 2 lc rgb "white" title "n = c_+ t"
 unset logscale cb
+set autoscale
 set datafile separator ","
 set xlabel "t"
 set ylabel "front n, participation"
@@ -241,9 +243,9 @@ plot 'series.csv' using 1:3 skip 1 with lines lw 1.5 title "front", \
      {:.6f}*x with lines dt 2 lc rgb "black" title "c_+ t"
 unset multiplot
 )GP",
-                     emax * 1e-5, emax, emax * 1e-5, emax * 1e-5,
-                     double(r.record.fields.empty() ? 0 : r.record.fields[0].sites),
-                     r.summary.group_velocity, r.summary.group_velocity);
+                     emax * 1e-5, emax,
+                     double(r.record.fields.empty() ? 1 : r.record.fields[0].sites), r.summary.t_end,
+                     emax * 1e-5, emax * 1e-5, r.summary.group_velocity, r.summary.group_velocity);
 }
 
 std::string drive_snapshots_script(const DriveRunResult& r) {

@@ -239,10 +239,10 @@ nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s
 namespace {
 
 std::string modulated_energy_script(const ModulatedRunResult& r) {
-  float emax = 0, emin = 1e30f;
+  double sum = 0, count = 0;
   for (const auto& f : r.record.fields)
-    for (float v : f.values) { emax = std::max(emax, v); emin = std::min(emin, v); }
-  if (!(emax > 0)) emax = 1;
+    for (float v : f.values) { sum += v; count += 1; }
+  const double emean = count > 0 && sum > 0 ? sum / count : 1;
   return fmt::format(R"GP(# Energy density e_n(t) (eq:edensity) on the periodic chain (Fig. 16 bottom right), and the
 # contrast (max-min)/mean of the running-mean e_n with the position of its minimum (dark-breather centre).
 if (!exists("outfile")) outfile = 'energy.png'
@@ -261,12 +261,11 @@ set ylabel "contrast of e_n"
 set y2label "min-e site"
 set y2tics
 set ytics nomirror
-set logscale y
 plot 'series.csv' using 1:3 skip 1 with lines lw 1.2 title "contrast", \
      'series.csv' using 1:4 skip 1 axes x1y2 with dots lc rgb "red" title "min-e site"
 unset multiplot
 )GP",
-                     0.5 * emax);
+                     2 * emean);
 }
 
 std::string modulated_snapshots_script(const ModulatedRunResult& r) {

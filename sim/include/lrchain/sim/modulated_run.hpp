@@ -26,7 +26,7 @@ struct ModulatedRunConfig {
   double t_end = 45000;
   double sample_every = 10;           // series rows and e_n(t) rows
   std::vector<double> snapshot_times = {0, 17100, 32400};
-  double contrast_threshold = 0.5;    // instability time: first t with (max e - min e)/mean e above this
+  double contrast_threshold = 0.2;    // instability time: first t with (max e - min e)/mean e above this
   long dark_window = 9;               // running mean (sites) before locating min e_n
   double speed_fit_start = 30000, speed_fit_end = 33000;  // dark-breather speed fit window
   double checkpoint_every = 1000;     // time units between checkpoints (0: none)
