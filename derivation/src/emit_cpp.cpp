@@ -1,5 +1,6 @@
 #include "lrchain/derivation/emit_cpp.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -7,9 +8,84 @@ namespace lrchain::derivation {
 
 using namespace GiNaC;
 
+namespace {
+
+// A canonical text of an expression that does not depend on GiNaC's internal term order (which
+// follows hash values that change from run to run): children of sums and products sorted.
+class CanonicalText {
+ public:
+  const std::string& of(const ex& e) {
+    if (auto it = memo_.find(e); it != memo_.end()) return it->second;
+    std::string text;
+    if (is_a<numeric>(e)) {
+      std::ostringstream os;
+      os << e;
+      text = os.str();
+    } else if (is_a<symbol>(e)) {
+      text = ex_to<symbol>(e).get_name();
+    } else if (is_a<GiNaC::add>(e) || is_a<mul>(e)) {
+      std::vector<std::string> parts;
+      for (const auto& child : e) parts.push_back(of(child));
+      std::sort(parts.begin(), parts.end());
+      const char* sep = is_a<GiNaC::add>(e) ? "+" : "*";
+      text = "(";
+      for (std::size_t i = 0; i < parts.size(); ++i) text += (i ? sep : "") + parts[i];
+      text += ")";
+    } else if (is_a<power>(e)) {
+      text = of(e.op(0)) + "^" + of(e.op(1));
+    } else {
+      std::ostringstream os;
+      os << e;
+      text = os.str();
+    }
+    return memo_.emplace(e, text).first->second;
+  }
+
+ private:
+  std::map<ex, std::string, ex_is_less> memo_;
+};
+
+// Children of a sum or product in canonical order.
+std::vector<ex> sorted_children(const ex& e, CanonicalText& canon) {
+  std::vector<ex> children(e.begin(), e.end());
+  std::sort(children.begin(), children.end(),
+            [&](const ex& a, const ex& b) { return canon.of(a) < canon.of(b); });
+  return children;
+}
+
+// Fixes the sign of each polynomial factor (P or -P, whichever has the smaller canonical text),
+// so that factor()'s hash-dependent choice of leading term does not leak into the output.
+ex canonical_signs(const ex& product, CanonicalText& canon) {
+  std::vector<ex> factors = is_a<mul>(product) ? std::vector<ex>(product.begin(), product.end()) : std::vector<ex>{product};
+  ex result = 1;
+  for (const ex& f : factors) {
+    ex base = f, exponent = 1;
+    if (is_a<power>(f)) {
+      base = f.op(0);
+      exponent = f.op(1);
+    }
+    if (is_a<GiNaC::add>(base) && exponent.info(info_flags::integer)) {
+      base = expand(base);  // a sum of monomials has one structure whatever the term order
+      const numeric content = base.integer_content();  // and one scale: primitive integer coefficients
+      base = expand(base / content);
+      result *= pow(content, exponent);
+      const ex negated = expand(-base);
+      if (canon.of(negated) < canon.of(base)) {
+        result *= pow(-1, exponent);
+        base = negated;
+      }
+    }
+    result *= pow(base, exponent);
+  }
+  return result;
+}
+
+}  // namespace
+
 ex factored(const ex& e) {
+  CanonicalText canon;
   const ex nd = normal(e).numer_denom();
-  return factor(nd.op(0)) / factor(nd.op(1));
+  return canonical_signs(factor(nd.op(0)), canon) / canonical_signs(factor(nd.op(1)), canon);
 }
 
 namespace {
@@ -17,6 +93,7 @@ namespace {
 class Printer {
  public:
   Printer(const std::map<ex, std::string, ex_is_less>& names) : names_(names) {}
+  CanonicalText canon;
 
   void count(const ex& e) {
     if (names_.count(e) || is_a<numeric>(e) || is_a<symbol>(e)) return;
@@ -66,8 +143,9 @@ class Printer {
   std::string print_node(const ex& e) {
     if (is_a<GiNaC::add>(e)) {
       std::string s;
-      for (std::size_t i = 0; i < e.nops(); ++i) {
-        const std::string term = print(e.op(i));
+      const std::vector<ex> terms = sorted_children(e, canon);
+      for (std::size_t i = 0; i < terms.size(); ++i) {
+        const std::string term = print(terms[i]);
         if (i == 0) s = term;
         else if (!term.empty() && term[0] == '-') s += " - " + term.substr(1);
         else s += " + " + term;
@@ -77,7 +155,7 @@ class Printer {
     if (is_a<mul>(e)) {
       std::vector<std::string> num, den;
       numeric coeff = 1;
-      for (const auto& f : e) {
+      for (const auto& f : sorted_children(e, canon)) {
         if (is_a<numeric>(f)) { coeff *= ex_to<numeric>(f); continue; }
         if (is_a<power>(f) && f.op(1).info(info_flags::negint)) {
           const int n = -ex_to<numeric>(f.op(1)).to_int();

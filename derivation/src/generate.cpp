@@ -20,6 +20,13 @@ Derivation derive_all() {
 
 namespace {
 
+// Number of nodes of an expression tree (a measure of its size).
+std::size_t term_count(const ex& e) {
+  std::size_t n = 0;
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) ++n;
+  return n;
+}
+
 // One evaluator: inputs D1, sigma, omega, model parameters; outputs in derivation order, each
 // written with the earlier named results (group velocity c, gamma, beta, ...) the way the
 // derivation produces them.
@@ -30,6 +37,7 @@ EmittedFunction evaluator(const DerivedCoefficients& c, const Symbols& s, const 
   f.result_type = "NlsValues";
   f.inputs = {{s.D1, "D1"}, {s.sigma, "sigma"}, {s.omega, "omega"}};
   for (const ex& p : m.parameters) f.inputs.emplace_back(p, ex_to<symbol>(p).get_name());
+  for (const auto& input : m.emission_inputs) f.inputs.push_back(input);
   const realsymbol beta("beta"), n1("nonresonance1"), n2("nonresonance2"), h("h"), lambda("lambda");
   f.output_symbols = {{"group_velocity", s.c}, {"gamma", s.gamma}, {"beta", beta}, {"nonresonance1", n1},
                       {"nonresonance2", n2}, {"h", h}, {"lambda", lambda}};
@@ -46,6 +54,14 @@ EmittedFunction evaluator(const DerivedCoefficients& c, const Symbols& s, const 
       {"h_tilde_numerator", s.gamma * c.h_n1_over_gamma * n2 - c.lambda_n2 * beta * n1},
       {"dispersion", c.dispersion},
   };
+  // Each output keeps whichever form (original, or with the model's rewrites) has fewer terms
+  // after factoring: fewer terms, fewer opportunities for cancellation in double precision.
+  for (auto& [name, e] : f.outputs) {
+    ex rewritten = e;
+    for (const auto& [pattern, replacement] : m.emission_rewrites)
+      rewritten = rewritten.subs(pattern == replacement, subs_options::algebraic);
+    if (term_count(factored(rewritten)) < term_count(factored(e))) e = rewritten;
+  }
   return f;
 }
 

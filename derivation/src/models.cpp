@@ -32,6 +32,10 @@ LatticeModel resonant_chain_model(const Symbols& s) {
   const ex u_m = m.shift(0, -1), u0 = m.shift(0, 0), u_p = m.shift(0, 1), v0 = m.shift(1, 0);
   m.rhs = {hertz_force_taylor(s, u_p - u0) - hertz_force_taylor(s, u0 - u_m) - s.kappa * (u0 - v0),
            s.kappa * (u0 - v0)};
+  // The paper's ubiquitous factor rho omega^2 - kappa (eq:gamma) as an input of the emitted code:
+  // expanded polynomials in omega^2 lose digits to cancellation when rho omega^2 ~ kappa.
+  m.emission_rewrites = {{pow(s.omega, 2), (s.mu + s.kappa) / s.rho}};
+  m.emission_inputs = {{s.mu, "mu"}};
   return m;
 }
 

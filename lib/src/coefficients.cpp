@@ -29,8 +29,16 @@ NlsCoefficients coefficients_unchecked(const Params& p, const TaylorCoefficients
   const double m = D + p.kappa - kr;
   const double upper = 0.5 * (D + p.kappa + kr + std::sqrt(m * m + 4.0 * p.kappa * kr));
   const double omega = b == Branch::optical ? std::sqrt(upper) : std::sqrt(D * kr / upper);
+  // mu = rho omega^2 - kappa, the root of mu^2 - B mu - rho kappa^2 = 0 (det M = 0 rewritten),
+  // B = rho (D + kappa) - kappa; positive root on the optical branch, negative on the acoustic one,
+  // each taken in the form without cancellation.
+  const double B = p.rho * (D + p.kappa) - p.kappa;
+  const double disc = std::sqrt(B * B + 4.0 * p.rho * p.kappa * p.kappa);
+  const double rk2 = 2.0 * p.rho * p.kappa * p.kappa;
+  const double mu = b == Branch::optical ? (B >= 0.0 ? 0.5 * (B + disc) : rk2 / (disc - B))
+                                         : (B <= 0.0 ? 0.5 * (B - disc) : -rk2 / (B + disc));
 
-  const generated::NlsValues v = generated::resonant_chain_nls(D1, sigma, omega, K.K2, K.K3, K.K4, p.kappa, p.rho);
+  const generated::NlsValues v = generated::resonant_chain_nls(D1, sigma, omega, K.K2, K.K3, K.K4, p.kappa, p.rho, mu);
   NlsCoefficients c;
   c.theta = theta;
   c.omega = omega;

@@ -15,6 +15,7 @@ struct Symbols {
   GiNaC::realsymbol omega{"omega"};               // carrier frequency
   GiNaC::realsymbol c{"c"};                       // group velocity (unknown until eps^2 E^1)
   GiNaC::realsymbol gamma{"gamma"};               // (eq:gamma), the NLS normalisation factor
+  GiNaC::realsymbol mu{"mu"};                     // rho omega^2 - kappa (resonant chain, emission only)
   GiNaC::realsymbol D1{"D1"};                     // 4 sin^2(theta/2) = 2(1 - cos theta) (paper's D_1)
   GiNaC::realsymbol sigma{"sigma"};               // sin(theta) (paper's s = 2 i sigma)
   GiNaC::realsymbol eps{"eps"}, E{"E"};           // expansion parameter and carrier E = e^{i(n theta - omega t)}
@@ -27,6 +28,11 @@ struct LatticeModel {
   std::vector<GiNaC::ex> inertia;   // coefficient of d^2/dt^2 in each field's equation
   std::vector<GiNaC::ex> rhs;       // polynomial in shift(f, m) symbols and parameters
   std::vector<GiNaC::ex> parameters;     // the model's parameters other than theta and omega
+  // Optional rewrites applied only to the emitted C++ (never to the derivation or its checks):
+  // an intermediate computed without cancellation by the caller, e.g. mu = rho omega^2 - kappa with
+  // omega^2 -> (mu + kappa)/rho. Each intermediate becomes an extra input of the evaluator.
+  std::vector<std::pair<GiNaC::ex, GiNaC::ex>> emission_rewrites;   // pattern -> replacement
+  std::vector<std::pair<GiNaC::ex, std::string>> emission_inputs;   // intermediate symbol -> name
   // Symbol standing for field f at site n+m inside rhs (m in [-3, 3]).
   GiNaC::symbol shift(std::size_t f, int m) const;
   std::vector<std::vector<GiNaC::symbol>> shifted;  // shifted[f][m+3]

@@ -15,57 +15,53 @@ struct NlsValues {
 };
 
 // NLS coefficients of the locally resonant granular chain (eq:Hertz), fields u (beads) and v (resonators).
-inline NlsValues resonant_chain_nls(double D1, double sigma, double omega, double K2, double K3, double K4, double kappa, double rho) noexcept {
+inline NlsValues resonant_chain_nls(double D1, double sigma, double omega, double K2, double K3, double K4, double kappa, double rho, double mu) noexcept {
   NlsValues r{};
-  const double t0 = (rho * rho);
-  const double t1 = (omega * omega * omega * omega);
-  const double t2 = (kappa * kappa);
-  const double t3 = (omega * omega);
-  const double t4 = (t0 * t1 + (rho + 1.0) * t2 - (2.0 * rho * t3 * kappa));
-  const double t5 = (rho * t3 - (kappa));
-  const double t6 = (t5 * t5);
-  r.group_velocity = t6 * sigma * K2 / (omega * t4);
-  r.gamma = t6 / (omega * t4);
-  const double t7 = (kappa * kappa * kappa);
-  const double t8 = (r.group_velocity * r.group_velocity);
-  const double t9 = (rho * rho * rho);
-  const double t10 = (omega * omega * omega * omega * omega * omega);
-  r.curvature = (1.0 / 2.0) * r.gamma * (3.0 * t0 * D1 * t1 * kappa * K2 - (2.0 * t7 * K2) + 6.0 * t0 * t1 * t8 * kappa + D1 * t7 * K2 + 2.0 * t8 * t7 + 2.0 * t9 * t10 * K2 + 6.0 * t0 * t3 * t8 * t2 - (t9 * D1 * t10 * K2) - (2.0 * t9 * t10 * t8) + 2.0 * rho * t8 * t7 - (3.0 * rho * D1 * t3 * t2 * K2) - (6.0 * rho * t3 * t8 * t2) + 6.0 * rho * t3 * t2 * K2 - (6.0 * t0 * t1 * kappa * K2)) / ((t5 * t5 * t5));
-  r.beta = -(r.gamma * K3 * D1);
-  const double t11 = (D1 * D1);
-  r.nonresonance1 = (16.0 * rho * D1 * t3 * K2 + t11 * kappa * K2 + 4.0 * t3 * kappa - (4.0 * D1 * kappa * K2) - (4.0 * rho * t11 * t3 * K2) - (16.0 * rho * t1) + 4.0 * rho * t3 * kappa);
-  r.nonresonance2 = (rho * t8 + t8 - (K2));
-  const double t12 = (K3 * K3);
-  r.h = (1.0 / 2.0) * r.gamma * t11 * (12.0 * rho * t3 * K4 * kappa + 8.0 * t12 * D1 * kappa + 8.0 * rho * t12 * t11 * t3 - (3.0 * (4.0 * rho * t11 * t3 * K4 - (t11 * K4 * kappa) + 4.0 * D1 * K4 * kappa - (16.0 * rho * D1 * t3 * K4)) * K2) + 12.0 * t3 * K4 * kappa - (48.0 * rho * t1 * K4) - (2.0 * t12 * t11 * kappa) - (32.0 * rho * t12 * D1 * t3)) / (r.nonresonance1);
-  r.lambda = 2.0 * K3 * D1 / (r.nonresonance2);
-  r.h_tilde = (-(r.lambda * r.beta) + r.h);
-  const double t13 = (D1 * D1 * D1);
-  r.h_tilde_numerator = (1.0 / 2.0) * (2.0 * r.gamma * (6.0 * D1 * t3 * r.nonresonance2 * K4 * kappa + 4.0 * t12 * t11 * r.nonresonance2 * kappa - (t12 * t13 * r.nonresonance2 * kappa) + 2.0 * (2.0 * t12 * (t13 * t3 * r.nonresonance2 - (4.0 * t11 * t3 * r.nonresonance2)) - (3.0 * D1 * (4.0 * t1 * r.nonresonance2 * K4 - (t3 * r.nonresonance2 * K4 * kappa)))) * rho) - (3.0 * r.gamma * (4.0 * t11 * r.nonresonance2 * K4 * kappa + 4.0 * (t13 * t3 * r.nonresonance2 * K4 - (4.0 * t11 * t3 * r.nonresonance2 * K4)) * rho - (t13 * r.nonresonance2 * K4 * kappa)) * K2) - (4.0 * r.nonresonance1 * K3 * r.beta)) * D1;
-  r.dispersion = (-(rho * D1 * t3 * K2) - (t3 * kappa) + D1 * kappa * K2 + rho * t1 - (rho * t3 * kappa));
+  const double t0 = (kappa * kappa);
+  const double t1 = (mu * mu);
+  const double t2 = (t0 * rho + t1);
+  r.group_velocity = K2 * t1 * sigma / (t2 * omega);
+  r.gamma = t1 / (t2 * omega);
+  const double t3 = (mu * mu * mu);
+  const double t4 = (r.group_velocity * r.group_velocity);
+  r.curvature = -((1.0 / 2.0) * (-(2.0 * K2 * t3) - (6.0 * t4 * t0 * mu * rho) - (8.0 * t4 * (kappa * kappa * kappa) * rho) + 2.0 * t4 * t3 + D1 * K2 * t3) * r.gamma / ((mu * mu * mu)));
+  r.beta = -(D1 * K3 * r.gamma);
+  const double t5 = (omega * omega * omega * omega);
+  const double t6 = (D1 * D1);
+  const double t7 = (omega * omega);
+  r.nonresonance1 = (-(16.0 * t5 * rho) - (4.0 * D1 * K2 * kappa) - (4.0 * t6 * K2 * t7 * rho) + 16.0 * D1 * K2 * t7 * rho + 4.0 * kappa * t7 + 4.0 * kappa * t7 * rho + t6 * K2 * kappa);
+  r.nonresonance2 = (-(K2) + t4 * rho + t4);
+  const double t8 = (K3 * K3);
+  r.h = -((1.0 / 2.0) * (-(12.0 * K4 * kappa * t7) - (12.0 * K4 * kappa * t7 * rho) - (3.0 * t6 * K2 * K4 * kappa) - (48.0 * D1 * K2 * K4 * t7 * rho) - (8.0 * D1 * t8 * kappa) - (8.0 * t6 * t8 * t7 * rho) + 12.0 * D1 * K2 * K4 * kappa + 12.0 * t6 * K2 * K4 * t7 * rho + 2.0 * t6 * t8 * kappa + 32.0 * D1 * t8 * t7 * rho + 48.0 * K4 * t5 * rho) * t6 * r.gamma / (r.nonresonance1));
+  r.lambda = 2.0 * D1 * K3 / (r.nonresonance2);
+  r.h_tilde = (-(r.beta * r.lambda) + r.h);
+  const double t9 = (D1 * D1 * D1);
+  r.h_tilde_numerator = (1.0 / 2.0) * (-(12.0 * t6 * K2 * K4 * r.gamma * kappa * r.nonresonance2) - (12.0 * t9 * K2 * K4 * r.gamma * r.nonresonance2 * t7 * rho) - (2.0 * t9 * t8 * r.gamma * kappa * r.nonresonance2) - (32.0 * t6 * t8 * r.gamma * r.nonresonance2 * t7 * rho) - (4.0 * K3 * r.beta * r.nonresonance1) - (48.0 * D1 * K4 * r.gamma * r.nonresonance2 * t5 * rho) + 12.0 * D1 * K4 * r.gamma * kappa * r.nonresonance2 * t7 + 12.0 * D1 * K4 * r.gamma * kappa * r.nonresonance2 * t7 * rho + 3.0 * t9 * K2 * K4 * r.gamma * kappa * r.nonresonance2 + 48.0 * t6 * K2 * K4 * r.gamma * r.nonresonance2 * t7 * rho + 8.0 * t6 * t8 * r.gamma * kappa * r.nonresonance2 + 8.0 * t9 * t8 * r.gamma * r.nonresonance2 * t7 * rho) * D1;
+  r.dispersion = (-(D1 * K2 * mu * rho) - (kappa * mu * rho) - (t0 * rho) + kappa * mu + t1) / (rho);
   return r;
 }
 
 // NLS coefficients of the homogeneous precompressed granular chain (rho -> 0 limit, Chong13), field u.
 inline NlsValues homogeneous_chain_nls(double D1, double sigma, double omega, double K2, double K3, double K4) noexcept {
   NlsValues r{};
-  r.group_velocity = sigma * K2 / (omega);
+  r.group_velocity = K2 * sigma / (omega);
   const double t0 = (1.0 / omega);
   r.gamma = t0;
-  const double t1 = D1 * K2;
-  const double t2 = (r.group_velocity * r.group_velocity);
-  r.curvature = -((1.0 / 2.0) * r.gamma * (t1 + 2.0 * t2 - (2.0 * K2)));
-  r.beta = -(r.gamma * K3 * D1);
-  const double t3 = (D1 * D1);
-  const double t4 = (omega * omega);
-  r.nonresonance1 = (-(4.0 * D1 * K2) + t3 * K2 + 4.0 * t4);
-  r.nonresonance2 = (t2 - (K2));
+  const double t1 = (r.group_velocity * r.group_velocity);
+  const double t2 = D1 * K2;
+  r.curvature = -((1.0 / 2.0) * (-(2.0 * K2) + 2.0 * t1 + t2) * r.gamma);
+  r.beta = -(D1 * K3 * r.gamma);
+  const double t3 = (omega * omega);
+  const double t4 = (D1 * D1);
+  r.nonresonance1 = (-(4.0 * D1 * K2) + 4.0 * t3 + t4 * K2);
+  r.nonresonance2 = (-(K2) + t1);
   const double t5 = (K3 * K3);
-  r.h = (1.0 / 2.0) * r.gamma * (12.0 * t4 * K4 + 3.0 * (t3 * K4 - (4.0 * D1 * K4)) * K2 - (2.0 * t5 * t3) + 8.0 * t5 * D1) * t3 / (r.nonresonance1);
-  r.lambda = 2.0 * K3 * D1 / (r.nonresonance2);
-  r.h_tilde = (r.h - (r.beta * r.lambda));
+  r.h = -((1.0 / 2.0) * (-(12.0 * K4 * t3) - (3.0 * t4 * K2 * K4) - (8.0 * D1 * t5) + 12.0 * D1 * K2 * K4 + 2.0 * t4 * t5) * t4 * r.gamma / (r.nonresonance1));
+  r.lambda = 2.0 * D1 * K3 / (r.nonresonance2);
+  r.h_tilde = (-(r.beta * r.lambda) + r.h);
   const double t6 = (D1 * D1 * D1);
-  r.h_tilde_numerator = (1.0 / 2.0) * (2.0 * r.nonresonance2 * r.gamma * ((4.0 * t3 - (t6)) * t5 + 6.0 * D1 * t4 * K4) - (4.0 * K3 * r.beta * r.nonresonance1) + 3.0 * r.nonresonance2 * r.gamma * (t6 * K4 - (4.0 * t3 * K4)) * K2) * D1;
-  r.dispersion = (t1 - (t4));
+  r.h_tilde_numerator = -((1.0 / 2.0) * (-(12.0 * D1 * K4 * r.gamma * r.nonresonance2 * t3) - (3.0 * t6 * K2 * K4 * r.gamma * r.nonresonance2) - (8.0 * t4 * t5 * r.gamma * r.nonresonance2) + 12.0 * t4 * K2 * K4 * r.gamma * r.nonresonance2 + 2.0 * t6 * t5 * r.gamma * r.nonresonance2 + 4.0 * K3 * r.beta * r.nonresonance1) * D1);
+  r.dispersion = (-(t3) + t2);
   return r;
 }
 

@@ -1,0 +1,37 @@
+// Throughput of coefficients() (issue 2: target >= 10 million evaluations per second on one core).
+#include <benchmark/benchmark.h>
+
+#include <numbers>
+#include <vector>
+
+#include "lrchain/coefficients.hpp"
+
+static void BM_coefficients(benchmark::State& state) {
+  const lrchain::Params p = lrchain::paper_params();
+  const auto K = lrchain::taylor_coefficients(p);
+  const auto branch = state.range(0) ? lrchain::Branch::optical : lrchain::Branch::acoustic;
+  std::vector<double> thetas(1024);
+  for (std::size_t i = 0; i < thetas.size(); ++i) thetas[i] = std::numbers::pi * (i + 0.5) / thetas.size();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto c = lrchain::coefficients_unchecked(p, K, branch, thetas[i++ & 1023]);
+    benchmark::DoNotOptimize(c);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_coefficients)->Arg(1)->Arg(0);
+
+// The validating entry point (parameter checks + K2,K3,K4 with one pow per call).
+static void BM_coefficients_checked(benchmark::State& state) {
+  const lrchain::Params p = lrchain::paper_params();
+  double theta = 0.1;
+  for (auto _ : state) {
+    const auto c = lrchain::coefficients(p, lrchain::Branch::optical, theta);
+    benchmark::DoNotOptimize(c);
+    theta = theta < 3.0 ? theta + 1e-3 : 0.1;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_coefficients_checked);
+
+BENCHMARK_MAIN();
