@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   lrchain::cli::register_regime(app);
   lrchain::cli::register_simulate(app);
   lrchain::cli::register_dark(app);
+  lrchain::cli::register_reproduce(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

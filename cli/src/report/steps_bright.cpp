@@ -1,0 +1,190 @@
+// Reproduce steps: the bright-breather experiments 1-5 of Sec. 4.2-4.3 (Figs. 6-13): the lattice
+// started from the NLS ansatz (eq:focus_app, eq:focus_ini) and compared with it.
+#include <fmt/format.h>
+
+#include "experiment_runs.hpp"
+#include "lrchain/coefficients.hpp"
+#include "steps.hpp"
+
+namespace lrchain::report {
+
+namespace {
+
+using nlohmann::json;
+
+double get(const json& j, const std::string& key) {
+  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : not_computed;
+}
+
+std::string run_facts(const json& s) {
+  return fmt::format(
+      "Run: N = {} (strain sites -N..N), {} T_b = {:.2f} time units, {} stepper (tol {:g}); "
+      "relative energy drift {:.1e}; {} RHS evaluations, {:.2f} s solve.",
+      s.value("N", 0), s.value("periods", 0.0), s.value("t_end", 0.0),
+      s["integrator"].value("stepper", std::string("?")), s["integrator"].value("rel_tol", 0.0),
+      s.value("max_relative_energy_drift", 0.0), s.value("rhs_evaluations", 0), s.value("solve_seconds", 0.0));
+}
+
+void add_figures(Section& s, const std::string& id, const std::string& snap_fig, const std::string& snap_caption,
+                 const std::string& energy_fig, const std::string& energy_caption) {
+  s.figures.push_back({id + "/snapshots.png", snap_fig, snap_caption});
+  s.figures.push_back({id + "/energy.png", energy_fig, energy_caption});
+}
+
+// Relative speed tolerance for "moves at approximately c".
+constexpr double speed_tolerance = 0.05;
+
+Section exp1(const StepContext& ctx) {
+  Section s;
+  s.id = "exp1";
+  s.title = "Experiment 1: optical bright breather, theta = pi/2, rho = 1/3 (Figs. 6, 7)";
+  const auto run = run_experiment(ctx, s.id, "exp1_optical_pi2.toml", {}, s);
+  const json& j = run.summary;
+  const double c = j["ansatz"]["group_velocity"].get<double>();
+  s.intro = "Paper's size and length. " + run_facts(j);
+  s.rows.push_back(below_row("max_t E_x(t), t <= 200 T_b", "Sec. 4.2", "< 3.5 %", 0.035, get(j, "max_E_x")));
+  s.rows.push_back(below_row("max_t E_y(t), t <= 200 T_b", "Sec. 4.2", "< 3.5 %", 0.035, get(j, "max_E_y")));
+  s.rows.push_back(equals_row("speed of the energy centre X(t) (eq:ectr)", "Sec. 4.2", "~ c_+ ~ 0.23", 0.23,
+                              get(j, "centre_speed"), 0.005, fmt::format("least-squares slope; c_+ = {:.5f}", c)));
+  add_figures(s, s.id, "Fig. 6 (fig:focus1)",
+              "Snapshots of x_n, y_n (lattice) against the NLS ansatz at t = 0, 50.125 T_b, 200 T_b, and the "
+              "relative errors E_x(t), E_y(t).",
+              "Fig. 7 (fig:focus3)", "Energy density e_n(t) (eq:edensity) and the energy centre X(t) (eq:ectr, m = 100).");
+  return s;
+}
+
+Section exp2(const StepContext& ctx) {
+  Section s;
+  s.id = "exp2";
+  s.title = "Experiment 2: optical bright breather, theta = pi/8 (Figs. 8, 9)";
+  const auto run = run_experiment(ctx, s.id, "exp2_optical_pi8.toml", {}, s);
+  const json& j = run.summary;
+  s.intro = "Paper's size and length (150 T_b). " + run_facts(j);
+  s.rows.push_back(equals_row("||x_n(0)||_inf", "Sec. 4.2", "~ 0.208", 0.208, get(j, "x0_inf"), 5e-4));
+  const json w = j.value("error_window", json::object());
+  s.rows.push_back(below_row("max E_x(t) for t <= 150", "Sec. 4.2", "< 3 %", 0.03, get(w, "max_E_x"), "",
+                             "Simulator"));
+  s.rows.push_back(below_row("max E_y(t) for t <= 150", "Sec. 4.2", "< 3 %", 0.03, get(w, "max_E_y"), "",
+                             "Simulator"));
+  add_figures(s, s.id, "Fig. 8 (fig:focus4)", "Snapshot at t = 150 T_b against the ansatz, and E_x(t), E_y(t).",
+              "Fig. 9 (fig:focus5)", "Energy density and energy centre: the energy spreads towards both ends later on.");
+  return s;
+}
+
+Section exp3(const StepContext& ctx) {
+  Section s;
+  s.id = "exp3";
+  s.title = "Experiment 3: optical bright breather near theta_c, theta = 3 pi/5 (Fig. 10)";
+  const auto run = run_experiment(ctx, s.id, "exp3_optical_3pi5.toml",
+                                  [](toml::table& t) { set_config(t, "bright", "N", toml::value<int64_t>(500)); }, s);
+  const json& j = run.summary;
+  const double c = j["ansatz"]["group_velocity"].get<double>();
+  s.intro = std::string(ctx.full ? "Paper's size (N = 1000)." : "Quick run: N = 500 instead of 1000 (the breather moves ~130 sites).") +
+            " " + run_facts(j);
+  s.rows.push_back(equals_row("speed of the energy centre / c_+", "Sec. 4.2", "~ 1 (moves at ~ c_+)", 1.0,
+                              get(j, "centre_speed") / c, speed_tolerance, fmt::format("c_+ = {:.5f}", c)));
+  // "growing trend of the relative error ... from the very beginning": E_x at the end against
+  // the largest E_x over the first 10 T_b.
+  double early = 0;
+  const auto t = run.column("t"), ex = run.column("E_x");
+  const double Tb = j["ansatz"]["T_b"].get<double>();
+  for (const auto& r : run.series)
+    if (r[t] <= 10 * Tb) early = std::max(early, r[ex]);
+  Comparison grow = below_row("max E_x over t <= 10 T_b / E_x(200 T_b)", "Sec. 4.2", "< 1 (error grows)", 1.0,
+                              early / get(j, "final_E_x"));
+  s.rows.push_back(grow);
+  add_figures(s, s.id, "Fig. 10 (fig:focus6), left", "Snapshot at t = 200 T_b against the ansatz, and E_x(t), E_y(t).",
+              "Fig. 10 (fig:focus6), right", "Energy density: the growing tail behind the breather.");
+  return s;
+}
+
+// Rows for a secondary structure, when the simulator measured one (summary key secondary_speed).
+void secondary_row(Section& s, const json& j, double c_opt, const std::string& where) {
+  s.rows.push_back(equals_row("speed of the secondary (optical) breather / (-c_+)", where,
+                              "~ 1 (moves left at ~ -c_+)", 1.0, get(j, "secondary_speed") / -c_opt, 0.1,
+                              fmt::format("c_+ = {:.4f} at this theta", c_opt)));
+}
+
+Section exp4(const StepContext& ctx) {
+  Section s;
+  s.id = "exp4";
+  s.title = "Experiment 4: acoustic bright breather, theta = 1.948 (Fig. 11)";
+  const auto run = run_experiment(ctx, s.id, "exp4_acoustic_1948.toml",
+                                  [](toml::table& t) { set_config(t, "bright", "N", toml::value<int64_t>(600)); }, s);
+  const json& j = run.summary;
+  s.intro = std::string(ctx.full ? "Paper's size (N = 1000)." : "Quick run: N = 600 instead of 1000.") + " " +
+            run_facts(j);
+  const double c_opt = coefficients(Params{j["params"]["alpha"].get<double>(), j["params"]["delta0"].get<double>(),
+                                           j["params"]["kappa"].get<double>(), j["params"]["rho"].get<double>()},
+                                    Branch::optical, j["theta"].get<double>())
+                           .group_velocity;
+  secondary_row(s, j, c_opt, "Sec. 4.2, Fig. 11");
+  add_figures(s, s.id, "Fig. 11 (fig:focus_acoustic2), left", "Snapshots against the acoustic ansatz, E_x(t), E_y(t).",
+              "Fig. 11 (fig:focus_acoustic2), right", "Energy density of the parent acoustic breather.");
+  return s;
+}
+
+Section exp4b(const StepContext& ctx, bool emitting) {
+  Section s;
+  s.id = emitting ? "exp4c" : "exp4b";
+  s.title = emitting ? "Experiment 4c: theta = 1.87 with emitting (ansatz) ends (Sec. 4.2)"
+                     : "Experiment 4b: acoustic nanopteron, theta = 1.87 (Fig. 12)";
+  const auto quick = [](toml::table& t) {
+    set_config(t, "bright", "N", toml::value<int64_t>(1000));
+    set_config(t, "bright", "periods", toml::value<double>(300.0));
+    toml::array snaps;
+    snaps.push_back(0.0);
+    snaps.push_back(150.0);
+    snaps.push_back(300.0);
+    set_config(t, "bright", "snapshot_periods", std::move(snaps));
+  };
+  const auto run = run_experiment(ctx, s.id, emitting ? "exp4c_acoustic_187_emitting.toml" : "exp4b_acoustic_187.toml",
+                                  quick, s);
+  const json& j = run.summary;
+  s.intro = std::string(ctx.full ? "Paper's size and length (N = 2000, 700 T_b)."
+                                 : "Quick run: N = 1000 and 300 T_b instead of N = 2000 and 700 T_b.") +
+            " " + run_facts(j);
+  if (!emitting) {
+    const double c_opt = coefficients(Params{1.5, j["params"]["delta0"].get<double>(), 1.0, j["params"]["rho"].get<double>()},
+                                      Branch::optical, j["theta"].get<double>()).group_velocity;
+    secondary_row(s, j, c_opt, "Sec. 4.2, Fig. 12");
+  }
+  add_figures(s, s.id, emitting ? "Sec. 4.2 (no figure in the paper)" : "Fig. 12 (fig:focus_nano)",
+              emitting ? "Snapshots and errors with the ends driven by the ansatz (emitting boundary conditions)."
+                       : "Snapshots against the ansatz: nanopteron tails behind the primary acoustic breather.",
+              emitting ? "Sec. 4.2 (no figure in the paper)" : "Fig. 12 (fig:focus_nano), energy",
+              "Energy density e_n(t).");
+  return s;
+}
+
+Section exp5(const StepContext& ctx) {
+  Section s;
+  s.id = "exp5";
+  s.title = "Experiment 5: optical bright breather, rho = 10, theta = 1.23 (Fig. 13)";
+  const auto run = run_experiment(ctx, s.id, "exp5_optical_rho10_123.toml", {}, s);
+  const json& j = run.summary;
+  const double c = j["ansatz"]["group_velocity"].get<double>();
+  s.intro = "Paper's size and length. " + run_facts(j);
+  s.rows.push_back(equals_row("speed of the optical breather (energy centre)", "Sec. 4.3", "~ c_+ ~ 0.6", 0.6,
+                              get(j, "centre_speed"), 0.6 * speed_tolerance, fmt::format("c_+ = {:.5f}", c)));
+  if (j.contains("acoustic_train_speed"))
+    s.rows.push_back(equals_row("speed of the acoustic train", "Sec. 4.3", "~ c_- ~ 0.0754", 0.0754,
+                                get(j, "acoustic_train_speed"), 0.0754 * 0.1));
+  add_figures(s, s.id, "Fig. 13 (fig:focus_opt_r10), left", "Snapshots against the optical ansatz, E_x(t), E_y(t).",
+              "Fig. 13 (fig:focus_opt_r10), right", "Energy density: the optical breather moving right at ~ c_+.");
+  return s;
+}
+
+}  // namespace
+
+std::vector<Step> bright_steps() {
+  return {{"exp1", "Experiment 1", 3, exp1},
+          {"exp2", "Experiment 2", 3, exp2},
+          {"exp3", "Experiment 3", 4, exp3},
+          {"exp4", "Experiment 4", 6, exp4},
+          {"exp4b", "Experiment 4b", 15, [](const StepContext& c) { return exp4b(c, false); }},
+          {"exp4c", "Experiment 4c", 15, [](const StepContext& c) { return exp4b(c, true); }},
+          {"exp5", "Experiment 5", 8, exp5}};
+}
+
+}  // namespace lrchain::report

@@ -1,0 +1,172 @@
+// Reproduce steps: exact stationary dark breathers of Secs. 5.3-5.4 (Figs. 17-25) - solutions at
+// omega_b = 2.42, branches continued in omega_b through the turning point, Floquet stability.
+#include <fmt/format.h>
+
+#include "experiment_runs.hpp"
+#include "lrchain_process.hpp"
+#include "steps.hpp"
+
+namespace lrchain::report {
+
+namespace {
+
+using nlohmann::json;
+
+struct BranchRun {
+  std::string sub;      // output sub-directory under dark/
+  std::string rho, edge, center, start;
+  int quick_points, full_points;
+};
+
+json run_branch(const StepContext& ctx, const BranchRun& b, Section& s, CsvTable& table) {
+  const auto dir = ctx.out / "dark" / b.sub;
+  const int points = ctx.full ? b.full_points : b.quick_points;
+  json j = run_lrchain(ctx,
+                       {"dark", "continue", "--rho", b.rho, "--edge", b.edge, "--center", b.center, "--omega-b",
+                        b.start, "--points", std::to_string(points), "--quiet", "--out", dir.string()},
+                       dir, "summary", s.commands);
+  table = read_csv(dir / "branch.csv");
+  s.links.push_back("dark/" + b.sub + "/branch.csv");
+  s.links.push_back("dark/" + b.sub + "/floquet_moduli.csv");
+  return j;
+}
+
+std::string branch_facts(const json& j, const CsvTable& t) {
+  double lo = 1e300, hi = -1e300, worst = 0;
+  for (std::size_t i = 0; i < t.cells.size(); ++i) {
+    lo = std::min(lo, t.number(i, "omega_b"));
+    hi = std::max(hi, t.number(i, "omega_b"));
+    worst = std::max(worst, t.number(i, "E_b"));
+  }
+  return fmt::format("{} points for omega_b in [{:.5f}, {:.5f}], {} sites per field; stop: {}; max E_b(T_b) = {:.1e}.",
+                     t.cells.size(), lo, hi, j.value("sites", 0), j.value("stop_reason", std::string("?")), worst);
+}
+
+Section solutions(const StepContext& ctx) {
+  Section s;
+  s.id = "dark_solutions";
+  s.title = "Dark breathers at omega_b = 2.42, rho = 1/3 (Sec. 5.3, Fig. 17)";
+  s.intro = "Shooting Newton on the period map of eq:Hertzd0S with periodic ends, seeded by eq:xy_app; "
+            "E_b(T_b) is eq:relerr after one period.";
+  for (const std::string center : {"bond", "site"}) {
+    const auto dir = ctx.out / "dark" / ("solve_" + center);
+    const json j = run_lrchain(ctx,
+                               {"dark", "solve", "--rho", "1/3", "--edge", "optical", "--center", center, "--omega-b",
+                                "2.42", "--quiet", "--out", dir.string()},
+                               dir, "summary", s.commands);
+    const double eb = j.contains("measures") ? j["measures"].value("E_b", not_computed) : not_computed;
+    s.rows.push_back(below_row(center + "-centred solution: E_b(T_b)", "Sec. 5.3", "< 3e-9", 3e-9, eb,
+                               fmt::format("{} sites per field", j.value("sites", 0))));
+    s.figures.push_back({"dark/solve_" + center + "/profile.png", "Fig. 17 (fig:opt_r03_wb242), " +
+                         std::string(center == "bond" ? "left" : "right"),
+                         center + "-centred dark breather at omega_b = 2.42: solution, after one period, and the seed eq:xy_app."});
+    s.links.push_back("dark/solve_" + center + "/summary.json");
+  }
+  return s;
+}
+
+// Largest value of `column` over the branch points (the strongest instability of that kind).
+double branch_max(const CsvTable& t, const std::string& column) {
+  double m = not_computed;
+  for (std::size_t i = 0; i < t.cells.size(); ++i) {
+    const double v = t.number(i, column);
+    if (!(v <= m)) m = v;
+  }
+  return m;
+}
+
+Section optical_bond(const StepContext& ctx) {
+  Section s;
+  s.id = "dark_optical_bond";
+  s.title = "Optical bond-centred branch, rho = 1/3 (Figs. 18 left, 20 left, 21)";
+  CsvTable t;
+  const json j = run_branch(ctx, {"optical_bond_rho_1_3", "1/3", "optical", "bond", "2.44", 70, 140}, s, t);
+  s.intro = "Pseudo-arclength continuation in omega_b from 2.44 (near omega_opt = 2.4495), Floquet multipliers at "
+            "every point. " + branch_facts(j, t);
+  double turning = not_computed;
+  for (const auto& tp : j.value("turning_points", json::array()))
+    if (std::isnan(turning) || std::abs(tp.get<double>() - 2.37) < std::abs(turning - 2.37)) turning = tp.get<double>();
+  s.rows.push_back(equals_row("turning point of the branch", "Sec. 5.3, Fig. 18", "omega_b ~ 2.37", 2.37, turning, 0.005));
+  Comparison pd = below_row("largest period-doubling multiplier modulus (real < -1)", "Sec. 5.4, Fig. 20",
+                            "> 1 (period doubling, bond-centred)", 1.0, branch_max(t, "max_period_doubling"));
+  pd.claim = Claim::above;
+  pd.paper = 1.0 + 1e-6;
+  s.rows.push_back(pd);
+  s.figures.push_back({"dark/optical_bond_rho_1_3/branch.png", "Fig. 18 (fig:r03_norm), left",
+                       "Renormalised l2 norm (eq:l2norm) of bond-centred optical dark breathers versus omega_b; "
+                       "red: real instability; vertical line: omega_opt."});
+  s.figures.push_back({"dark/optical_bond_rho_1_3/floquet_moduli.png", "Fig. 20 (fig:opt_floq_r03), left",
+                       "Moduli of the Floquet multipliers outside the unit circle versus omega_b, weakly (top) and "
+                       "strongly (bottom) nonlinear parts; blue complex, red real > 0, green real < 0."});
+  return s;
+}
+
+Section optical_site(const StepContext& ctx) {
+  Section s;
+  s.id = "dark_optical_site";
+  s.title = "Optical site-centred branch, rho = 1/3 (Figs. 18 right, 20 right)";
+  CsvTable t;
+  const json j = run_branch(ctx, {"optical_site_rho_1_3", "1/3", "optical", "site", "2.44", 70, 140}, s, t);
+  s.intro = "Continuation from omega_b = 2.44 with Floquet multipliers at every point. " + branch_facts(j, t);
+  s.figures.push_back({"dark/optical_site_rho_1_3/branch.png", "Fig. 18 (fig:r03_norm), right",
+                       "Renormalised l2 norm of site-centred optical dark breathers versus omega_b; red: real instability."});
+  s.figures.push_back({"dark/optical_site_rho_1_3/floquet_moduli.png", "Fig. 20 (fig:opt_floq_r03), right",
+                       "Floquet moduli of the site-centred branch (weakly / strongly nonlinear)."});
+  return s;
+}
+
+Section acoustic_bond(const StepContext& ctx) {
+  Section s;
+  s.id = "dark_acoustic_bond";
+  s.title = "Acoustic bond-centred branch, rho = 1/3 (Fig. 23)";
+  CsvTable t;
+  const json j = run_branch(ctx, {"acoustic_bond_rho_1_3", "1/3", "acoustic", "bond", "1.41", 40, 100}, s, t);
+  s.intro = "Continuation from omega_b = 1.41 (omega_acs = 1.4142). " + branch_facts(j, t);
+  s.figures.push_back({"dark/acoustic_bond_rho_1_3/branch.png", "Fig. 23 (fig:acs_floq_bc_r03), left",
+                       "Renormalised l2 norm of bond-centred acoustic dark breathers versus omega_b."});
+  s.figures.push_back({"dark/acoustic_bond_rho_1_3/floquet_moduli.png", "Fig. 23 (fig:acs_floq_bc_r03), right",
+                       "Floquet moduli of the acoustic branch (weakly / strongly nonlinear)."});
+  return s;
+}
+
+Section rho1_bond(const StepContext& ctx) {
+  Section s;
+  s.id = "dark_rho1_bond";
+  s.title = "Optical bond-centred branch, rho = 1 (Figs. 19, 24, 25)";
+  CsvTable t;
+  const json j = run_branch(ctx, {"optical_bond_rho_1", "1", "optical", "bond", "2.28", 60, 140}, s, t);
+  s.intro = "Continuation from omega_b = 2.28 (omega_opt = 2.2882). " + branch_facts(j, t);
+  // The weakly nonlinear point closest to 2.207: the first point (in continuation order) within
+  // 0.01 of it, before any turning point.
+  double max_real = not_computed, at = not_computed;
+  for (std::size_t i = 0; i < t.cells.size(); ++i) {
+    const double w = t.number(i, "omega_b");
+    if (i > 0 && w > t.number(i - 1, "omega_b")) break;  // past the turning point
+    if (std::abs(w - 2.207) < 0.01 && (std::isnan(at) || std::abs(w - 2.207) < std::abs(at - 2.207)))
+      at = w, max_real = t.number(i, "max_real");
+  }
+  Comparison real = below_row("largest real multiplier > 0 at omega_b ~ 2.207 (weakly nonlinear)",
+                              "Sec. 5.4, Fig. 25", "> 1 (real instability sets the breather in motion)", 1.0 + 1e-6,
+                              max_real, std::isnan(at) ? "the branch did not reach 2.207"
+                                                       : fmt::format("branch point omega_b = {:.5f}", at),
+                              "Dark breathers");
+  real.claim = Claim::above;
+  s.rows.push_back(real);
+  s.figures.push_back({"dark/optical_bond_rho_1/branch.png", "Fig. 19 (fig:r1_norm), left",
+                       "Renormalised l2 norm of bond-centred optical dark breathers, rho = 1; red: real instability."});
+  s.figures.push_back({"dark/optical_bond_rho_1/floquet_moduli.png", "Fig. 24 (fig:opt_floq_r1), left",
+                       "Floquet moduli for rho = 1, weakly / strongly nonlinear."});
+  return s;
+}
+
+}  // namespace
+
+std::vector<Step> dark_steps() {
+  return {{"dark_solutions", "Dark breathers at 2.42", 3, solutions},
+          {"dark_optical_bond", "Optical bond-centred branch", 40, optical_bond},
+          {"dark_optical_site", "Optical site-centred branch", 40, optical_site},
+          {"dark_acoustic_bond", "Acoustic bond-centred branch", 25, acoustic_bond},
+          {"dark_rho1_bond", "Optical bond-centred branch, rho = 1", 35, rho1_bond}};
+}
+
+}  // namespace lrchain::report

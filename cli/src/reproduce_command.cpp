@@ -1,0 +1,193 @@
+// `lrchain reproduce`: runs every computation of the paper (coefficients, regimes, lattice
+// experiments, dark breathers) and writes a static HTML report, DIR/index.html (issue 6).
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/output_files.hpp"
+#include "report/html_report.hpp"
+#include "report/lrchain_process.hpp"
+#include "report/steps.hpp"
+
+#ifndef LRCHAIN_SOURCE_DIR
+#define LRCHAIN_SOURCE_DIR ""
+#endif
+
+namespace lrchain::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace lrchain::report;
+
+struct ReproduceArgs {
+  bool quick = false, full = false, list = false;
+  std::string out = "lrchain-report";
+  std::string examples, errata;
+  int jobs = 0;
+  std::vector<std::string> only;
+};
+
+// First existing path among: the option, the source tree, <prefix>/share/lrchain/<rel>.
+fs::path locate(const std::string& given, const std::string& rel, const std::string& option) {
+  if (!given.empty()) {
+    if (!fs::exists(given)) throw InvalidParameter(option, "'" + given + "' does not exist");
+    return fs::absolute(given);
+  }
+  const fs::path exe = current_executable();
+  for (const fs::path& p : {fs::path(LRCHAIN_SOURCE_DIR) / rel, exe.parent_path().parent_path() / "share/lrchain" / rel})
+    if (!p.empty() && fs::exists(p)) return p;
+  throw InvalidParameter(option, "cannot find " + rel + " (give " + option + ")");
+}
+
+std::string now_text() {
+  const std::time_t t = std::time(nullptr);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S %Z", std::localtime(&t));
+  return buf;
+}
+
+// The report replaces DIR only if DIR is absent, empty, or an earlier report.
+void check_out_dir(const fs::path& dir) {
+  if (!fs::exists(dir)) return;
+  if (!fs::is_directory(dir)) throw InvalidParameter("out", "'" + dir.string() + "' exists and is not a directory");
+  if (fs::is_empty(dir) || fs::exists(dir / "index.html")) return;
+  throw InvalidParameter("out", "'" + dir.string() + "' exists and is not an lrchain report (no index.html); "
+                                "give a new or empty directory");
+}
+
+void run_reproduce(const ReproduceArgs& a) {
+  std::vector<Step> steps = all_steps();
+  if (a.list) {
+    for (const auto& s : steps) std::printf("%-20s %s\n", s.id.c_str(), s.title.c_str());
+    return;
+  }
+  if (!a.only.empty()) {
+    std::vector<Step> chosen;
+    for (const auto& id : a.only) {
+      auto it = std::find_if(steps.begin(), steps.end(), [&](const Step& s) { return s.id == id; });
+      if (it == steps.end()) throw InvalidParameter("only", "unknown step '" + id + "' (see --list)");
+      chosen.push_back(*it);
+    }
+    steps = chosen;
+  }
+  if (a.jobs < 0 || a.jobs > 64) throw InvalidParameter("jobs", "must be in [1, 64] (0: one per core)");
+  const fs::path out = fs::absolute(a.out);
+  check_out_dir(out);
+
+  StepContext ctx;
+  ctx.exe = current_executable();
+  ctx.examples = locate(a.examples, "examples", "examples");
+  ctx.full = a.full;
+  const int jobs = a.jobs > 0 ? a.jobs : std::max(1, omp_get_num_procs());
+  ctx.child_threads = std::max(1, omp_get_num_procs() / jobs);
+  ReportInfo info;
+  info.mode = a.full ? "full" : "quick";
+  info.started = now_text();
+  try {
+    const fs::path errata = locate(a.errata, "docs/paper-errata.md", "errata");
+    std::ifstream in(errata);
+    std::stringstream text;
+    text << in.rdbuf();
+    info.errata_markdown = text.str();
+    info.errata_source = errata.string();
+  } catch (const InvalidParameter&) {
+    if (!a.errata.empty()) throw;
+    info.errata_source = "the source tree and share/lrchain/docs";
+  }
+
+  ctx.out = out.string() + ".partial";
+  fs::remove_all(ctx.out);
+  sim::ensure_directory(ctx.out);
+
+  // Long steps first so that the two cores stay busy; the report keeps the paper's order.
+  std::vector<std::size_t> order(steps.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](auto x, auto y) { return steps[x].cost > steps[y].cost; });
+
+  std::vector<Section> sections(steps.size());
+  const auto t0 = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  int done = 0;
+  std::fprintf(stderr, "lrchain reproduce --%s: %zu steps, %d at a time, writing %s\n", info.mode.c_str(),
+               steps.size(), jobs, ctx.out.c_str());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(jobs)
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const Step& step = steps[order[k]];
+    const auto s0 = std::chrono::steady_clock::now();
+    Section section;
+    try {
+      section = step.run(ctx);
+    } catch (const std::exception& e) {
+      section.failed = true;
+      section.error = e.what();
+    }
+    if (section.id.empty()) section.id = step.id;
+    if (section.title.empty()) section.title = step.title;
+    section.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
+    const Counts c = count({section});
+#pragma omp critical(reproduce_progress)
+    {
+      ++done;
+      std::fprintf(stderr, "[%2d/%zu] %6.1f s  %-20s %s in %.1f s: %d pass, %d deviates, %d errata%s%s\n", done,
+                   steps.size(), elapsed(), step.id.c_str(), section.failed ? "FAILED" : "done", section.seconds,
+                   c.pass, c.deviates, c.errata, section.failed ? " - " : "", section.failed ? section.error.c_str() : "");
+      sections[order[k]] = std::move(section);
+    }
+  }
+  info.total_seconds = elapsed();
+  write_html_report(ctx.out, sections, info);
+  fs::remove_all(out);
+  fs::rename(ctx.out, out);
+
+  const Counts c = count(sections);
+  int failed = 0;
+  nlohmann::json steps_json = nlohmann::json::array();
+  for (const auto& s : sections) {
+    failed += s.failed;
+    const Counts sc = count({s});
+    steps_json.push_back({{"id", s.id}, {"seconds", s.seconds}, {"failed", s.failed}, {"pass", sc.pass},
+                          {"deviates", sc.deviates}, {"errata", sc.errata}});
+  }
+  const nlohmann::json summary = {{"report", (out / "index.html").string()}, {"mode", info.mode},
+                                  {"pass", c.pass}, {"deviates", c.deviates}, {"errata", c.errata},
+                                  {"failed_steps", failed}, {"seconds", info.total_seconds}, {"steps", steps_json}};
+  std::printf("%s\n", summary.dump(2).c_str());
+  std::fprintf(stderr, "report: %s (%d pass, %d deviates, %d errata) in %.1f s\n", (out / "index.html").c_str(), c.pass,
+               c.deviates, c.errata, info.total_seconds);
+  if (failed > 0) throw std::runtime_error(fmt::format("{} step(s) failed; see the report", failed));
+}
+
+}  // namespace
+
+void register_reproduce(CLI::App& app) {
+  auto a = std::make_shared<ReproduceArgs>();
+  auto* sub = app.add_subcommand(
+      "reproduce",
+      "Run every computation of the paper and write a static HTML report DIR/index.html: each number the paper "
+      "quotes next to ours (pass / deviates / errata) and each figure with the paper figure it corresponds to. "
+      "The report is written to DIR.partial and renamed to DIR when complete.");
+  auto* quick = sub->add_flag("--quick", a->quick,
+                              "smaller lattices and shorter runs where that keeps the conclusion (default; ~2 min on 2 cores)");
+  auto* full = sub->add_flag("--full", a->full, "the paper's lattice sizes and run times (tens of minutes)");
+  quick->excludes(full);
+  sub->add_option("--out", a->out, "report directory (default lrchain-report; replaced if it holds an earlier report)");
+  sub->add_option("--jobs", a->jobs, "steps run at the same time (default 0: one per core)");
+  sub->add_option("--only", a->only, "run only these steps (ids from --list)")->delimiter(',');
+  sub->add_flag("--list", a->list, "list the steps and exit");
+  sub->add_option("--examples", a->examples, "directory of the experiment configs (default: the source tree's examples/)");
+  sub->add_option("--errata", a->errata, "docs/paper-errata.md to include (default: the source tree's)");
+  sub->callback([a] { run_reproduce(*a); });
+}
+
+}  // namespace lrchain::cli

@@ -1,0 +1,55 @@
+// `lrchain reproduce` (issue 6) on a few fast steps: the report is written, every link resolves,
+// and headless Chromium renders it with every figure loaded. The full quick report is checked by
+// tests/validation/report_quick_test.cpp.
+#include <doctest/doctest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "../support/report_checks.hpp"
+
+using namespace lrchain::test;
+namespace fs = std::filesystem;
+
+TEST_CASE("reproduce: a partial report renders in headless Chromium with all figures and links") {
+  const fs::path dir = fs::temp_directory_path() / "lrchain-report-fast-test";
+  fs::remove_all(dir);
+  int code = 0;
+  const std::string out = run_capture(std::string(LRCHAIN_CLI) + " reproduce --quick --only coefficients,regime,dark_solutions "
+                                      "--out '" + dir.string() + "' 2>/dev/null", code);
+  REQUIRE(code == 0);
+  const auto summary = nlohmann::json::parse(out);
+  // 32+ rows from the coefficient library, 16 from the regimes, 2 dark-breather residuals.
+  CHECK(summary["pass"].get<int>() + summary["deviates"].get<int>() + summary["errata"].get<int>() >= 45);
+  CHECK(summary["failed_steps"].get<int>() == 0);
+  // Known paper typos (docs/paper-errata.md): 1.949, 1.888, 15.335, Fig. 19's 2.2282.
+  CHECK(summary["errata"].get<int>() == 4);
+  REQUIRE(fs::exists(dir / "index.html"));
+  CHECK_FALSE(fs::exists(dir.string() + ".partial"));
+  for (const auto& page : {dir / "index.html", dir / "errata.html"}) {
+    const auto broken = broken_links(page);
+    INFO("broken links in ", page.string(), ": ", broken.size() ? broken.front() : "");
+    CHECK(broken.empty());
+  }
+  const auto r = render_in_chromium(dir / "index.html", dir.string() + "-chromium-profile");
+  REQUIRE_MESSAGE(r.ran, "chromium did not run (scripts/test.sh installs Debian's chromium)");
+  CHECK(r.images >= 7);  // Figs. 1, 2, 3, 4 (two), 5, 17 (two)
+  CHECK(r.loaded == r.images);
+  CHECK(r.broken == 0);
+  CHECK(r.dom.find("reproduction report") != std::string::npos);
+  fs::remove_all(dir.string() + "-chromium-profile");
+}
+
+TEST_CASE("reproduce: bad options exit 2 naming the option and leave nothing on disk") {
+  const fs::path dir = fs::temp_directory_path() / "lrchain-report-bad";
+  fs::remove_all(dir);
+  int code = 0;
+  run_capture(std::string(LRCHAIN_CLI) + " reproduce --only no_such_step --out '" + dir.string() + "' 2>&1", code);
+  CHECK(code == 2);
+  CHECK_FALSE(fs::exists(dir));
+  CHECK_FALSE(fs::exists(dir.string() + ".partial"));
+  const std::string msg = run_capture(std::string(LRCHAIN_CLI) + " reproduce --jobs -3 --out '" + dir.string() + "' 2>&1", code);
+  CHECK(code == 2);
+  CHECK(msg.find("jobs") != std::string::npos);
+  const std::string both = run_capture(std::string(LRCHAIN_CLI) + " reproduce --quick --full 2>&1", code);
+  CHECK(code == 2);
+}
