@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages lrchain needs (only those missing), then configures and
 # builds in ./build (Release). Run as root on Debian 12. Usage: scripts/setup.sh [build-dir]
+# With LRCHAIN_TEST_TOOLS=1 (scripts/test.sh) it also installs what the tests need: chromium
+# (headless browser test of the `lrchain reproduce` report).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${1:-build}
@@ -10,6 +12,9 @@ PACKAGES=(build-essential cmake pkg-config git
   libeigen3-dev libboost-dev
   doctest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev
   libomp-dev gnuplot-nox fonts-dejavu-core)
+if [[ "${LRCHAIN_TEST_TOOLS:-0}" == 1 ]]; then
+  PACKAGES+=(chromium)
+fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do
