@@ -152,16 +152,19 @@ void run_reproduce(const ReproduceArgs& a) {
 
   const Counts c = count(sections);
   int failed = 0;
-  nlohmann::json steps_json = nlohmann::json::array();
+  nlohmann::json steps_json = nlohmann::json::array(), missing = nlohmann::json::array();
   for (const auto& s : sections) {
     failed += s.failed;
+    for (const auto& f : s.figures)
+      if (!fs::exists(out / f.file)) missing.push_back(f.file);
     const Counts sc = count({s});
     steps_json.push_back({{"id", s.id}, {"seconds", s.seconds}, {"failed", s.failed}, {"pass", sc.pass},
                           {"deviates", sc.deviates}, {"errata", sc.errata}});
   }
   const nlohmann::json summary = {{"report", (out / "index.html").string()}, {"mode", info.mode},
                                   {"pass", c.pass}, {"deviates", c.deviates}, {"errata", c.errata},
-                                  {"failed_steps", failed}, {"seconds", info.total_seconds}, {"steps", steps_json}};
+                                  {"failed_steps", failed}, {"figures_missing", missing}, {"seconds", info.total_seconds},
+                                  {"steps", steps_json}};
   std::printf("%s\n", summary.dump(2).c_str());
   std::fprintf(stderr, "report: %s (%d pass, %d deviates, %d errata) in %.1f s\n", (out / "index.html").c_str(), c.pass,
                c.deviates, c.errata, info.total_seconds);

@@ -21,6 +21,8 @@ TEST_CASE("reproduce: a partial report renders in headless Chromium with all fig
   // 32+ rows from the coefficient library, 16 from the regimes, 2 dark-breather residuals.
   CHECK(summary["pass"].get<int>() + summary["deviates"].get<int>() + summary["errata"].get<int>() >= 45);
   CHECK(summary["failed_steps"].get<int>() == 0);
+  INFO("figures not produced: ", summary["figures_missing"].dump());
+  CHECK(summary["figures_missing"].empty());
   // Known paper typos (docs/paper-errata.md): 1.949, 1.888, 15.335, Fig. 19's 2.2282.
   CHECK(summary["errata"].get<int>() == 4);
   REQUIRE(fs::exists(dir / "index.html"));

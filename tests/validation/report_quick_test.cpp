@@ -25,6 +25,8 @@ TEST_CASE("reproduce --quick: complete report, rendered by headless Chromium") {
   std::cerr << "reproduce --quick: " << summary["pass"] << " pass, " << summary["deviates"] << " deviates, "
             << summary["errata"] << " errata, " << summary["failed_steps"] << " failed steps, " << seconds << " s\n";
   CHECK(summary["failed_steps"].get<int>() == 0);
+  INFO("figures not produced: ", summary["figures_missing"].dump());
+  CHECK(summary["figures_missing"].empty());
   // Every step of all_steps() ran (coefficients, regime, exp1-7 with 4b/4c, 5 dark-breather steps).
   CHECK(summary["steps"].size() == 16);
   const int rows = summary["pass"].get<int>() + summary["deviates"].get<int>() + summary["errata"].get<int>();

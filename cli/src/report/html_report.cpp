@@ -78,7 +78,11 @@ std::string section_html(const fs::path& dir, const Section& s, const std::strin
     h += "</table>\n";
   }
   for (const auto& f : s.figures) {
-    if (!fs::exists(dir / f.file)) continue;  // never link a missing image
+    if (!fs::exists(dir / f.file)) {  // never link a missing image; say that it is missing
+      h += fmt::format("<p class=\"failed\">{}: figure {} was not produced (its gnuplot script and data are "
+                       "next to where it should be).</p>\n", html_escape(f.paper_figure), html_escape(f.file));
+      continue;
+    }
     h += fmt::format(
         "<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a><figcaption><b>{1}.</b> {2}"
         "</figcaption></figure>\n",

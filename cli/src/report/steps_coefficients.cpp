@@ -74,9 +74,9 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
       "set xlabel 'theta/pi'\nset yrange [-3:3]\nset key bottom left font ',8'\nset grid\n";
   for (const auto& [tag, label] : {std::pair{"rho_1_3", "rho = 1/3"}, std::pair{"rho_10", "rho = 10"}}) {
     gp += fmt::format(
-        "set title 'c (green), omega'''' (red), h_tilde (blue): {}; optical solid, acoustic dashed'\n"
+        "set title \"c (green), omega'' (red), h_tilde (blue): {}; optical solid, acoustic dashed\"\n"
         "plot '{f}' u 1:4 w l lc rgb '#1a9850' lw 2 t 'c+', '{f}' u 1:5 w l lc rgb '#1a9850' dt 2 lw 2 t 'c-', "
-        "'{f}' u 1:6 w l lc rgb '#d73027' lw 2 t 'omega''''+', '{f}' u 1:7 w l lc rgb '#d73027' dt 2 lw 2 t 'omega''''-', "
+        "'{f}' u 1:6 w l lc rgb '#d73027' lw 2 t \"omega''+\", '{f}' u 1:7 w l lc rgb '#d73027' dt 2 lw 2 t \"omega''-\", "
         "'{f}' u 1:8 w l lc rgb '#4575b4' lw 2 t 'h_tilde+', '{f}' u 1:9 w l lc rgb '#4575b4' dt 2 lw 2 t 'h_tilde-'\n",
         label, fmt::arg("f", std::string("coefficients_") + tag + ".csv"));
   }
