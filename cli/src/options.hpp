@@ -2,7 +2,10 @@
 // Shared option helpers for all subcommands: numeric options go through the one parser
 // (lrchain/numeric_parse.hpp), so "1/3", "4/9", "pi/2", "3*pi/5" work everywhere.
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
 #include <string>
+#include <utility>
 
 #include "lrchain/numeric_parse.hpp"
 #include "lrchain/params.hpp"
@@ -20,14 +23,25 @@ inline CLI::Option* add_number(CLI::App& app, const std::string& name, double& t
   return opt;
 }
 
-// The model parameters every subcommand shares: --rho, --kappa, --delta0, --alpha.
-// Defaults are the paper's (alpha=3/2, delta0=4/9, kappa=1, rho=1/3).
+// A default value as the help shows it: the paper's fractions as fractions, else %g.
+inline std::string default_text(double v) {
+  for (const auto& [num, den] : {std::pair{1, 3}, std::pair{4, 9}, std::pair{3, 2}, std::pair{2, 3}})
+    if (std::abs(v - static_cast<double>(num) / den) < 1e-14) return std::to_string(num) + "/" + std::to_string(den);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// The model parameters every subcommand shares: --rho, --kappa, --delta0, --alpha. The help shows
+// the values in `p` at registration as the defaults (the paper's: alpha=3/2, delta0=4/9, kappa=1,
+// rho=1/3, unless the subcommand's experiment uses others), so set them before calling this.
 inline void add_model_options(CLI::App& app, Params& p, bool rho_required) {
-  auto* r = add_number(app, "--rho", p.rho, "mass ratio m2/m1 > 0 (default 1/3)");
+  auto* r = add_number(app, "--rho", p.rho,
+                       "mass ratio m2/m1 > 0 (" + (rho_required ? std::string("required") : "default " + default_text(p.rho)) + ")");
   if (rho_required) r->required();
-  add_number(app, "--kappa", p.kappa, "resonator spring constant > 0, dimensionless (default 1)");
-  add_number(app, "--delta0", p.delta0, "precompression overlap > 0, dimensionless (default 4/9)");
-  add_number(app, "--alpha", p.alpha, "Hertz exponent > 1 (default 3/2)");
+  add_number(app, "--kappa", p.kappa, "resonator spring constant > 0, dimensionless (default " + default_text(p.kappa) + ")");
+  add_number(app, "--delta0", p.delta0, "precompression overlap > 0, dimensionless (default " + default_text(p.delta0) + ")");
+  add_number(app, "--alpha", p.alpha, "Hertz exponent > 1 (default " + default_text(p.alpha) + ")");
 }
 
 }  // namespace lrchain::cli

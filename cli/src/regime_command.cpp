@@ -493,7 +493,7 @@ void register_regime(CLI::App& app) {
       "functions omega'', numerator of h_tilde, eq:nonresonance1, eq:nonresonance2 to 1e-12 in "
       "theta and labelled curvature_zero, h_tilde_zero, nonresonance1, nonresonance2 or band_edge. "
       "theta is the dimensionless carrier wavenumber (radians per site).");
-  add_model_options(*in, ia->p, true);
+  add_model_options(*in, ia->p, false);
   in->add_option("--branch", ia->branch, "optical or acoustic (default optical)");
   in->add_option("--samples", ia->samples,
                  "theta samples used to bracket the zeros (default 2048)")

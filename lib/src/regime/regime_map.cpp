@@ -15,6 +15,8 @@ std::int8_t pixel(const NlsCoefficients& c) {
     case Regime::focusing: return PixelRegime::focusing;
     case Regime::defocusing: return PixelRegime::defocusing;
     case Regime::singular: return PixelRegime::singular;
+    // omega'' h_tilde = 0 exactly (e.g. theta = 0 optical): not focusing (focusing needs < 0).
+    case Regime::degenerate: return PixelRegime::defocusing;
   }
   return PixelRegime::singular;
 }
