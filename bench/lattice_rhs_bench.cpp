@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "lrchain/params.hpp"
+#include "lrchain/sim/contact_law.hpp"
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/strain_lattice.hpp"
 
@@ -37,6 +38,37 @@ static void BM_DisplacementRHS(benchmark::State& st) {
 }
 BENCHMARK(BM_DisplacementRHS)->Arg(1002)->Arg(4002);
 
+// Accelerations only (what the symplectic RKN steppers call): q = [u v] -> [u'' v''].
+static void BM_DisplacementAcceleration(benchmark::State& st) {
+  const std::size_t n = std::size_t(st.range(0));
+  DisplacementLattice chain(Params{}, n);
+  State s = random_state(n), a(2 * n);
+  for (auto _ : st) {
+    chain.acceleration(s.data(), a.data(), 0.0);
+    benchmark::DoNotOptimize(a.data());
+    benchmark::ClobberMemory();
+  }
+  st.counters["ns_per_site"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate |
+                                                                 benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_DisplacementAcceleration)->Arg(1002)->Arg(4002);
+
+// Bond forces alone (the vectorised s*sqrt(s) loop of contact_law.cpp).
+static void BM_BondForces(benchmark::State& st) {
+  const std::size_t n = std::size_t(st.range(0));
+  const ContactLaw law = make_contact_law(Params{});
+  State u = random_state(n);
+  std::vector<double> f(n);
+  for (auto _ : st) {
+    bond_forces_from_displacements(law, u.data(), f.data(), n - 1);
+    benchmark::DoNotOptimize(f.data());
+    benchmark::ClobberMemory();
+  }
+  st.counters["ns_per_site"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate |
+                                                                 benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_BondForces)->Arg(1002)->Arg(4002);
+
 static void BM_StrainRHS(benchmark::State& st) {
   const std::size_t n = std::size_t(st.range(0));
   StrainLattice chain(Params{}, n);
@@ -64,5 +96,30 @@ static void BM_SqrtPerBondFloor(benchmark::State& st) {
                                                                  benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_SqrtPerBondFloor)->Arg(1001)->Arg(4001);
+
+// The floor with packed sqrt: the same loop built for this CPU's widest vectors (target_clones,
+// errno-free sqrt), i.e. the best one sqrt per bond can do without -march flags.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+__attribute__((target_clones("avx512f", "avx2", "default"), optimize("fast-math"), noinline))
+#endif
+static void packed_sqrt_floor(const double* __restrict r, double* __restrict f, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    double s = r[i];
+    s = s > 0.0 ? s : 0.0;
+    f[i] = s * __builtin_sqrt(s);
+  }
+}
+static void BM_PackedSqrtPerBondFloor(benchmark::State& st) {
+  const std::size_t n = std::size_t(st.range(0));
+  std::vector<double> r(n, 0.4), f(n);
+  for (auto _ : st) {
+    packed_sqrt_floor(r.data(), f.data(), n);
+    benchmark::DoNotOptimize(f.data());
+    benchmark::ClobberMemory();
+  }
+  st.counters["ns_per_site"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate |
+                                                                 benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_PackedSqrtPerBondFloor)->Arg(1001)->Arg(4001);
 
 BENCHMARK_MAIN();

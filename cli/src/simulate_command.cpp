@@ -141,10 +141,10 @@ void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& ou
 }
 
 void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::string& stepper) {
-  app.add_option("--stepper", stepper, "rkf78 (default), dopri5 or symplectic");
+  app.add_option("--stepper", stepper, "rkf78, dopri5, symplectic (McLachlan 4), srkn11b, srkn14a (Blanes-Moan 6) or ss17 (McLachlan 8)");
   add_number(app, "--abs-tol", o.abs_tol, "absolute local error tolerance (default 1e-12)");
   add_number(app, "--rel-tol", o.rel_tol, "relative local error tolerance (default 1e-12)");
-  add_number(app, "--dt", o.dt, "initial step (adaptive) or fixed step (symplectic), default 0.05");
+  add_number(app, "--dt", o.dt, "initial step (adaptive) or fixed/maximal step (symplectic, srkn*), default 0.05");
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // Hertzian bond force and energy (eq:Vr), with the alpha = 3/2 loops specialised as s*sqrt(s).
 #include "lrchain/sim/contact_law.hpp"
 
+#include "vector_loops.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -31,48 +33,55 @@ double bond_energy(const ContactLaw& law, double r) {
 
 namespace {
 
-// The hot loops. s >= 0 always, so __builtin_sqrt needs no errno path and vectorises.
-template <bool ThreeHalves>
-void forces_strain_loop(const ContactLaw& law, const double* __restrict r, double* __restrict f,
-                        std::size_t n) {
-  const double d0 = law.delta0, d0a = law.delta0_pow_alpha, alpha = law.alpha;
+// The hot loops; for alpha = 3/2 vectorised with packed sqrt (see vector_loops.hpp).
+LRCHAIN_SQRT_VECTOR_CLONES
+void forces_strain_three_halves(double d0, double d0a, const double* __restrict r,
+                                double* __restrict f, std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) {
-    const double s = std::max(d0 - r[i], 0.0);
-    if constexpr (ThreeHalves)
-      f[i] = d0a - s * __builtin_sqrt(s);
-    else
-      f[i] = d0a - std::pow(s, alpha);
+    double s = d0 - r[i];
+    s = s > 0.0 ? s : 0.0;
+    f[i] = d0a - s * __builtin_sqrt(s);
   }
 }
 
-template <bool ThreeHalves>
-void forces_displacement_loop(const ContactLaw& law, const double* __restrict u,
-                              double* __restrict f, std::size_t n) {
-  const double d0 = law.delta0, d0a = law.delta0_pow_alpha, alpha = law.alpha;
+LRCHAIN_SQRT_VECTOR_CLONES
+void forces_displacement_three_halves(double d0, double d0a, const double* __restrict u,
+                                      double* __restrict f, std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) {
-    const double s = std::max(d0 - (u[i + 1] - u[i]), 0.0);
-    if constexpr (ThreeHalves)
-      f[i] = d0a - s * __builtin_sqrt(s);
-    else
-      f[i] = d0a - std::pow(s, alpha);
+    double s = d0 - (u[i + 1] - u[i]);
+    s = s > 0.0 ? s : 0.0;
+    f[i] = d0a - s * __builtin_sqrt(s);
   }
+}
+
+void forces_strain_general(const ContactLaw& law, const double* __restrict r, double* __restrict f,
+                           std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i)
+    f[i] = law.delta0_pow_alpha - std::pow(std::max(law.delta0 - r[i], 0.0), law.alpha);
+}
+
+void forces_displacement_general(const ContactLaw& law, const double* __restrict u,
+                                 double* __restrict f, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i)
+    f[i] = law.delta0_pow_alpha -
+           std::pow(std::max(law.delta0 - (u[i + 1] - u[i]), 0.0), law.alpha);
 }
 
 }  // namespace
 
 void bond_forces_from_strains(const ContactLaw& law, const double* r, double* f, std::size_t n) {
   if (law.three_halves)
-    forces_strain_loop<true>(law, r, f, n);
+    forces_strain_three_halves(law.delta0, law.delta0_pow_alpha, r, f, n);
   else
-    forces_strain_loop<false>(law, r, f, n);
+    forces_strain_general(law, r, f, n);
 }
 
 void bond_forces_from_displacements(const ContactLaw& law, const double* u, double* f,
                                     std::size_t n) {
   if (law.three_halves)
-    forces_displacement_loop<true>(law, u, f, n);
+    forces_displacement_three_halves(law.delta0, law.delta0_pow_alpha, u, f, n);
   else
-    forces_displacement_loop<false>(law, u, f, n);
+    forces_displacement_general(law, u, f, n);
 }
 
 }  // namespace lrchain::sim

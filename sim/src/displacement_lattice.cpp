@@ -4,8 +4,26 @@
 #include <cstring>
 
 #include "lrchain/errors.hpp"
+#include "vector_loops.hpp"
 
 namespace lrchain::sim {
+
+namespace {
+
+// u_n'' = f_{n+1} - f_n - kappa (u_n - v_n), v_n'' = (kappa/rho) (u_n - v_n) (eq:Hertz), f the bond
+// forces (f_n left of bead n).
+LRCHAIN_VECTOR_CLONES
+void bead_accelerations(const double* __restrict f, const double* __restrict u,
+                        const double* __restrict v, double* __restrict au, double* __restrict av,
+                        double kappa, double kappa_over_rho, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = u[i] - v[i];
+    au[i] = f[i + 1] - f[i] - kappa * w;
+    av[i] = kappa_over_rho * w;
+  }
+}
+
+}  // namespace
 
 DisplacementLattice::DisplacementLattice(const Params& p, std::size_t sites,
                                          DisplacementBoundary boundary)
@@ -43,14 +61,7 @@ void DisplacementLattice::acceleration(const double* q, double* a, double t) con
                ? 0.0
                : bond_force(law_, ghost(boundary_.right, t) - u[n - 1]);
   }
-  const double kappa = params_.kappa, kappa_over_rho = params_.kappa / params_.rho;
-  double* __restrict au = a;
-  double* __restrict av = a + n;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double w = u[i] - v[i];
-    au[i] = f[i + 1] - f[i] - kappa * w;
-    av[i] = kappa_over_rho * w;
-  }
+  bead_accelerations(f, u, v, a, a + n, params_.kappa, params_.kappa / params_.rho, n);
 }
 
 void DisplacementLattice::operator()(const State& s, State& ds, double t) const {

@@ -31,7 +31,7 @@ void validate(const DriveRunConfig& c) {
   if (!(c.front_fit_end > c.front_fit_start))
     throw InvalidParameter("front-fit", "window end must exceed its start");
   validate(c.integrator);
-  if (c.integrator.stepper == StepperKind::symplectic)
+  if (is_symplectic(c.integrator.stepper))
     throw InvalidParameter("stepper", "the driven chain is not autonomous: use rkf78 or dopri5");
 }
 

@@ -3,11 +3,19 @@
 //   rkf78      controlled Runge-Kutta-Fehlberg 7(8) (default; high accuracy per RHS evaluation)
 //   dopri5     Dormand-Prince 5(4) with dense output
 //   symplectic McLachlan's 4th-order symplectic RKN (fixed step `dt`, autonomous systems only)
+//   srkn11b    Blanes-Moan 6th-order symplectic RKN SRKN_11^b (symplectic_rkn.hpp), autonomous only;
+//   srkn14a    Blanes-Moan 6th-order SRKN_14^a
+//   ss17       McLachlan's 8th-order symmetric composition SS17 of Stoermer-Verlet steps;
+//              srkn11b, srkn14a, ss17 take, between consecutive observation times, the fewest
+//              equal steps not longer than `dt`
 // The observer is called as obs(state, t) at every requested time; it may return false to stop
 // (e.g. on Ctrl-C), which ends the integration at that observation time.
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,13 +23,17 @@
 #include <boost/numeric/odeint.hpp>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/sim/contiguous_algebra.hpp"
 #include "lrchain/sim/state.hpp"
+#include "lrchain/sim/symplectic_rkn.hpp"
 
 namespace lrchain::sim {
 
-enum class StepperKind { rkf78, dopri5, symplectic };
+enum class StepperKind { rkf78, dopri5, symplectic, srkn11b, srkn14a, ss17 };
 StepperKind parse_stepper(std::string_view text);  // throws InvalidParameter("stepper", ...)
 std::string_view to_string(StepperKind k);
+// The symplectic steppers (symplectic, srkn11b, srkn14a, ss17) integrate autonomous systems only.
+bool is_symplectic(StepperKind k);
 
 struct IntegratorOptions {
   StepperKind stepper = StepperKind::rkf78;
@@ -63,6 +75,72 @@ struct CountedAcceleration {
   }
 };
 
+// Force wrapper for the Blanes-Moan steppers: Odeint calls it once per stage, in order. A stage
+// whose kick b_l is 0 does not use the force (its buffer keeps earlier, finite values), and a stage
+// 0 with drift a_0 = 0 sees the positions of the previous step's last stage, whose force is still in
+// the stepper's buffer (first-same-as-last); neither is recomputed. The FSAL reuse is checked:
+// the positions must be bitwise those of the last evaluation and the buffer the same one.
+template <class System>
+struct StagedAcceleration {
+  struct Shared {
+    const System* sys = nullptr;
+    std::size_t* count = nullptr;
+    std::vector<double> kick;  // b_l per Odeint stage
+    bool fsal = false;         // a_0 == 0
+    std::size_t call = 0;
+    std::vector<double> last_q;
+    const double* last_a = nullptr;
+  };
+  Shared* shared;
+  void operator()(const std::vector<double>& q, std::vector<double>& a) const {
+    Shared& s = *shared;
+    const std::size_t stages = s.kick.size();
+    const std::size_t l = s.call++ % stages;
+    if (s.kick[l] == 0.0) return;
+    if (l == 0 && s.fsal && s.last_a == a.data() && s.last_q.size() == q.size() &&
+        std::memcmp(q.data(), s.last_q.data(), q.size() * sizeof(double)) == 0)
+      return;
+    ++*s.count;
+    s.sys->acceleration(q.data(), a.data(), 0.0);
+    if (s.fsal && l == stages - 1) {
+      s.last_q.assign(q.begin(), q.end());
+      s.last_a = a.data();
+    }
+  }
+};
+
+// Integrates q'' = a(q) with a Blanes-Moan stepper from times.front() through the observation
+// times; each interval between observations is split into the fewest equal steps <= dt.
+template <class Stepper, class System, class Obs>
+std::size_t integrate_rkn_observed(const System& system, State& state,
+                                   const std::vector<double>& times, Obs& obs, double dt,
+                                   std::size_t& rhs_evaluations) {
+  namespace odeint = boost::numeric::odeint;
+  const std::size_t half = state.size() / 2;
+  std::vector<double> q(state.begin(), state.begin() + half);
+  std::vector<double> p(state.begin() + half, state.end());
+  Stepper stepper;
+  typename StagedAcceleration<System>::Shared shared;
+  shared.sys = &system;
+  shared.count = &rhs_evaluations;
+  shared.kick.assign(stepper.coef_b().begin(), stepper.coef_b().end());
+  shared.fsal = stepper.coef_a()[0] == 0.0;
+  StagedAcceleration<System> acc{&shared};
+  std::size_t steps = 0;
+  for (std::size_t k = 0;; ++k) {
+    obs(state, times[k]);
+    if (k + 1 == times.size()) break;
+    const double interval = times[k + 1] - times[k];
+    const std::size_t m = std::max<std::size_t>(1, std::size_t(std::ceil(interval / dt * (1 - 1e-12))));
+    odeint::integrate_n_steps(std::ref(stepper), acc, std::make_pair(std::ref(q), std::ref(p)),
+                              times[k], interval / double(m), m);
+    steps += m;
+    std::copy(q.begin(), q.end(), state.begin());
+    std::copy(p.begin(), p.end(), state.begin() + half);
+  }
+  return steps;
+}
+
 struct StopIntegration {};
 
 }  // namespace detail
@@ -76,6 +154,10 @@ IntegrationStats integrate_observed(const System& system, State& state,
   validate(opt);
   IntegrationStats stats;
   if (times.empty()) return stats;
+  if constexpr (requires { system.autonomous(); })
+    if (is_symplectic(opt.stepper) && !system.autonomous())
+      throw InvalidParameter("stepper", std::string(to_string(opt.stepper)) +
+                                            " needs an autonomous system: use rkf78 or dopri5");
   stats.t_reached = times.front();
   auto obs = [&](const State& s, double t) {
     stats.t_reached = t;
@@ -121,6 +203,27 @@ IntegrationStats integrate_observed(const System& system, State& state,
                                                 times.begin(), times.end(), opt.dt, pair_obs);
         } else {
           throw InvalidParameter("stepper", "symplectic needs a system with acceleration()");
+        }
+        break;
+      }
+      case StepperKind::srkn11b:
+      case StepperKind::srkn14a:
+      case StepperKind::ss17: {
+        if constexpr (requires { system.acceleration(nullptr, nullptr, 0.0); }) {
+          if (opt.stepper == StepperKind::srkn11b)
+            stats.steps = detail::integrate_rkn_observed<
+                blanes_moan_srkn11b<std::vector<double>, contiguous_algebra>>(
+                system, state, times, obs, opt.dt, stats.rhs_evaluations);
+          else if (opt.stepper == StepperKind::srkn14a)
+            stats.steps = detail::integrate_rkn_observed<
+                blanes_moan_srkn14a<std::vector<double>, contiguous_algebra>>(
+                system, state, times, obs, opt.dt, stats.rhs_evaluations);
+          else
+            stats.steps = detail::integrate_rkn_observed<
+                mclachlan_ss17<std::vector<double>, contiguous_algebra>>(
+                system, state, times, obs, opt.dt, stats.rhs_evaluations);
+        } else {
+          throw InvalidParameter("stepper", "srkn11b/srkn14a/ss17 need a system with acceleration()");
         }
         break;
       }
