@@ -48,15 +48,55 @@ double ContactIntegrator::first_contact(const State& in, const State& out, doubl
   const int N = orbit_.sites();
   const double d0 = orbit_.params().delta0;
   const double ignore = 1e-11;  // a crossing at the very start: we are sitting on that kink
+  // First time in (0, h] where the cubic Hermite interpolant of x_n - delta0 changes sign,
+  // or -1. The cubic is split at its interior extrema so that a grazing contact (x_n crosses
+  // delta0 and comes back within one step, equal signs at both ends) is found too.
   auto crossing = [&](int n) -> double {
     const double x0 = in[n] - d0, x1 = out[n] - d0;
-    if (!((x0 < 0.0 && x1 >= 0.0) || (x0 > 0.0 && x1 <= 0.0))) return -1.0;
     const double v0 = in[2 * N + n], v1 = out[2 * N + n];
     auto f = [&](double s) { return hermite(x0, v0, x1, v1, h, s); };
-    boost::uintmax_t it = 60;
-    const auto r = boost::math::tools::toms748_solve(
-        f, 0.0, 1.0, x0, x1, boost::math::tools::eps_tolerance<double>(45), it);
-    return 0.5 * (r.first + r.second) * h;
+    auto changes = [](double a, double b) { return (a < 0.0 && b >= 0.0) || (a > 0.0 && b <= 0.0); };
+    // Breakpoints: 0, the roots of p'(s) = A s^2 + B s + C in (0, 1) in increasing order, 1.
+    double knots[4] = {0.0, 1.0, 1.0, 1.0};
+    int count = 1;
+    const bool same_side = !changes(x0, x1);
+    if (same_side) {
+      // Only an interior extremum on the far side of delta0 can hide a contact change: the
+      // velocity must point towards delta0 at the start or away from it at the end.
+      const double A = 6 * x0 + 3 * h * v0 - 6 * x1 + 3 * h * v1;
+      const double B = -6 * x0 - 4 * h * v0 + 6 * x1 - 2 * h * v1;
+      const double C = h * v0;
+      double r[2];
+      int nr = 0;
+      if (std::abs(A) < 1e-300) {
+        if (B != 0.0) r[nr++] = -C / B;
+      } else {
+        const double disc = B * B - 4 * A * C;
+        if (disc >= 0.0) {
+          const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+          r[nr++] = q / A;
+          if (q != 0.0) r[nr++] = C / q;
+        }
+      }
+      if (nr == 2 && r[0] > r[1]) std::swap(r[0], r[1]);
+      for (int i = 0; i < nr; ++i)
+        if (r[i] > 0.0 && r[i] < 1.0) knots[count++] = r[i];
+      if (count == 1) return -1.0;
+    }
+    knots[count] = 1.0;
+    double a = 0.0, fa = x0;
+    for (int i = 1; i <= count; ++i) {
+      const double b = knots[i], fb = i == count ? x1 : f(b);
+      if (changes(fa, fb)) {
+        boost::uintmax_t it = 60;
+        const auto root = boost::math::tools::toms748_solve(
+            f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(45), it);
+        return 0.5 * (root.first + root.second) * h;
+      }
+      a = b;
+      fa = fb;
+    }
+    return -1.0;
   };
   double first = std::numeric_limits<double>::infinity();
   for (int n = 0; n < N; ++n) {
@@ -71,6 +111,17 @@ double ContactIntegrator::first_contact(const State& in, const State& out, doubl
   }
   const double cut = last + 1e-14;  // land just past the group: next step starts beyond the kink
   return cut < h ? cut : h;
+}
+
+double ContactIntegrator::time_to_contact(const State& out) const {
+  const int N = orbit_.sites();
+  const double d0 = orbit_.params().delta0;
+  double tau = std::numeric_limits<double>::infinity();
+  for (int n = 0; n < N; ++n) {
+    const double gap = d0 - out[n], v = out[2 * N + n];
+    if (gap * v > 0.0) tau = std::min(tau, gap / v);  // moving towards delta0
+  }
+  return tau;
 }
 
 void ContactIntegrator::trial(const State& in, double t, double h) {
@@ -101,20 +152,27 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
   const bool continued = t0 == last_t_;
   double cap = continued ? cap_ : options_.max_step;
   double target = continued ? target_ : -1.0;
+  double contact_step = continued ? contact_step_ : options_.contact_step;
   while (t < t1) {
-    double step = std::min({h, cap, t1 - t});
+    const double remaining = t1 - t;
+    double step = std::min(h, cap);
     bool landing = false;
     if (options_.locate_contacts && target > t) {
       // Remaining distances to the contact change shrink geometrically down to contact_step.
       const double r = target - t;
-      const double cs = options_.contact_step;
-      if (r <= 1.5 * cs) {
+      const double cs = contact_step;
+      if (r <= 1.5 * cs && r <= remaining) {
         step = r;
         landing = true;
+      } else if (r <= 1.5 * cs) {  // the call ends first: stay graded towards the contact change
+        step = r - r / options_.grading;
       } else {
-        step = r - std::max({r - std::min(h, cap), r / options_.grading, cs});
+        step = r - std::max({r - step, r / options_.grading, cs});
       }
     }
+    // Never step past the end of this call (a contact change beyond t1 stays the target).
+    const bool at_end = step >= remaining;
+    if (at_end) step = remaining;
     trial(state, t, step);
     const double e = error_norm(state, out_);
     if (e > 1.0) {
@@ -125,12 +183,29 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
                                  std::to_string(options_.min_step) + " at t = " + std::to_string(t));
       continue;
     }
-    if (options_.locate_contacts && !landing) {
+    if (options_.locate_contacts) {
+      // Landing steps end just past the located group; an earlier contact change of another
+      // site (or a grazing one) inside them is approached in turn.
       const double cut = first_contact(state, out_, step);
-      if (cut < step) {  // a contact change inside: approach it with graded steps
+      const double slack = landing ? options_.group_window : 0.0;
+      if (cut < step - slack) {  // a contact change inside: approach it with graded steps
         ++stats_.rejected;
         target = t + cut;
         continue;
+      }
+      // A long step that ends just before a contact change is as inaccurate as one across it
+      // (the |t - t*|^(3/2) singularity lies within its radius of convergence, and the embedded
+      // error estimate does not see it): unless it is no longer than a landing step
+      // (1.5 contact_step), its end must stay step / (2 (grading - 1)) away from the next contact
+      // change (linear extrapolation of x_n; graded steps keep twice that).
+      if (step > 1.5 * contact_step) {
+        const double tau = time_to_contact(out_);
+        const double estimate = t + step + tau;
+        if (tau < 0.5 * step / (options_.grading - 1.0) && (!(target > t) || estimate < target)) {
+          ++stats_.rejected;
+          target = estimate;
+          continue;
+        }
       }
     }
     const double next = step * std::min(4.0, 0.9 * std::pow(std::max(e, 1e-12), -1.0 / 8.0));
@@ -142,12 +217,12 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
       record->stiffness.insert(record->stiffness.end(), trial_stiffness_.begin(),
                                trial_stiffness_.end());
     }
-    const bool at_end = step >= t1 - t;
     t = at_end ? t1 : t + step;
     if (landing) {
       ++stats_.contact_cuts;
       target = -1.0;
-      cap = options_.contact_step;
+      cap = contact_step;
+      contact_step = options_.contact_step;
     } else {
       cap = std::min(options_.max_step, cap * options_.grading);
     }
@@ -157,6 +232,7 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
   h_ = h;
   cap_ = cap;
   target_ = target;
+  contact_step_ = contact_step;
   last_t_ = t1;
   recording_ = false;
 }

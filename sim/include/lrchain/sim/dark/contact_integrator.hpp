@@ -26,7 +26,7 @@ struct ContactIntegrationOptions {
   double max_step = 0.25;      // upper bound on a step (time units of Sec. 2)
   double initial_step = 0.02;
   double min_step = 1e-13;     // below this the integration throws std::runtime_error
-  double contact_step = 1e-3;  // step next to a contact change (steps grade geometrically from it)
+  double contact_step = 1e-4;  // step next to a contact change (steps grade geometrically from it)
   double grading = 3.0;        // growth factor of steps away from a contact change
   double group_window = 1e-7;  // contact changes closer than this are crossed in one step
   bool locate_contacts = true; // false: plain adaptive stepping across kinks (for comparison)
@@ -67,6 +67,8 @@ class ContactIntegrator {
   // Earliest contact change in (0, h] (end of its group), or h if none.
   double first_contact(const std::vector<double>& in, const std::vector<double>& out, double h) const;
   void trial(const std::vector<double>& in, double t, double h);
+  // Smallest time until some x_n reaches delta0 by linear extrapolation from the end state.
+  double time_to_contact(const std::vector<double>& out) const;
 
   struct Stepper;  // Odeint RKF78 stepper (stage storage sized for this orbit)
   std::unique_ptr<Stepper> stepper_;
@@ -76,7 +78,7 @@ class ContactIntegrator {
   double h_;
   std::vector<double> out_, err_, trial_stiffness_;
   int calls_ = 0;
-  double last_t_ = -1e300, cap_ = 0, target_ = -1;
+  double last_t_ = -1e300, cap_ = 0, target_ = -1, contact_step_ = 0;
   bool recording_ = false;
 };
 
