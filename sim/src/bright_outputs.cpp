@@ -114,14 +114,9 @@ unset multiplot
 std::vector<std::string> write_bright_outputs(const std::filesystem::path& dir,
                                               const BrightRunResult& r,
                                               const nlohmann::json& summary) {
-  ensure_directory(dir);
-  write_record(dir, r.record);
-  write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
-  std::vector<std::string> figures;
-  if (render_gnuplot(dir, "snapshots.gp", snapshots_script(r), "snapshots.png"))
-    figures.push_back("snapshots.png");
-  if (render_gnuplot(dir, "energy.gp", energy_script(r), "energy.png")) figures.push_back("energy.png");
-  return figures;
+  return write_run_outputs(dir, r.record, summary.dump(2),
+                           {{"snapshots.gp", snapshots_script(r), "snapshots.png"},
+                            {"energy.gp", energy_script(r), "energy.png"}});
 }
 
 }  // namespace lrchain::sim

@@ -10,6 +10,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/energy.hpp"
+#include "lrchain/sim/least_squares.hpp"
 
 namespace lrchain::sim {
 
@@ -25,21 +26,6 @@ void validate(const BrightRunConfig& c) {
   validate(c.integrator);
 }
 
-namespace {
-
-// Least-squares slope of y(t).
-double slope(const std::vector<double>& t, const std::vector<double>& y) {
-  const double n = double(t.size());
-  if (t.size() < 2) return 0;
-  double st = 0, sy = 0, stt = 0, sty = 0;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    st += t[i]; sy += y[i]; stt += t[i] * t[i]; sty += t[i] * y[i];
-  }
-  const double den = n * stt - st * st;
-  return den != 0 ? (n * sty - st * sy) / den : 0;
-}
-
-}  // namespace
 
 BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) {
   validate(c);
@@ -179,7 +165,7 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
   S.t_end = S.stats.t_reached;
   S.interrupted = S.stats.stopped;
   S.blew_up = S.stats.blew_up;
-  S.centre_speed = slope(centre_t, centre_x);
+  S.centre_speed = least_squares_slope(centre_t, centre_x);
   if (!centre_x.empty()) {
     S.centre_start = centre_x.front();
     S.centre_end = centre_x.back();

@@ -54,6 +54,19 @@ void forces_displacement_three_halves(double d0, double d0a, const double* __res
   }
 }
 
+// V(r) = (s^(5/2) - delta0^(5/2))/(5/2) + delta0^(3/2) r, s = (delta0 - r)_+ (eq:Vr, alpha = 3/2);
+// the same operations as bond_energy(). In place: r[i] <- V(r[i]).
+LRCHAIN_SQRT_VECTOR_CLONES
+void energies_strain_three_halves(double d0, double d0a, double d0a1, double* __restrict r,
+                                  std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = r[i];
+    double s = d0 - x;
+    s = s > 0.0 ? s : 0.0;
+    r[i] = (s * s * __builtin_sqrt(s) - d0a1) / 2.5 + d0a * x;
+  }
+}
+
 void forces_strain_general(const ContactLaw& law, const double* __restrict r, double* __restrict f,
                            std::size_t n) {
   for (std::size_t i = 0; i < n; ++i)
@@ -74,6 +87,15 @@ void bond_forces_from_strains(const ContactLaw& law, const double* r, double* f,
     forces_strain_three_halves(law.delta0, law.delta0_pow_alpha, r, f, n);
   else
     forces_strain_general(law, r, f, n);
+}
+
+void bond_energies_from_strains(const ContactLaw& law, const double* r, double* V, std::size_t n) {
+  if (law.three_halves) {
+    if (V != r) std::copy(r, r + n, V);
+    energies_strain_three_halves(law.delta0, law.delta0_pow_alpha, law.delta0_pow_alpha1, V, n);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) V[i] = bond_energy(law, r[i]);
+  }
 }
 
 void bond_forces_from_displacements(const ContactLaw& law, const double* u, double* f,

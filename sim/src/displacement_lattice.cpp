@@ -1,6 +1,7 @@
 // Displacement form of the resonant chain (eq:Hertz) with periodic/free/clamped/prescribed ends.
 #include "lrchain/sim/displacement_lattice.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "lrchain/errors.hpp"
@@ -50,7 +51,6 @@ void DisplacementLattice::acceleration(const double* q, double* a, double t) con
   const double* u = q;
   const double* v = q + n;
   double* f = bond_force_.data();
-  bond_forces_from_displacements(law_, u, f + 1, n - 1);  // interior bonds 1..n-1
   if (boundary_.periodic) {
     f[0] = bond_force(law_, u[0] - u[n - 1]);
     f[n] = f[0];
@@ -61,7 +61,16 @@ void DisplacementLattice::acceleration(const double* q, double* a, double t) con
                ? 0.0
                : bond_force(law_, ghost(boundary_.right, t) - u[n - 1]);
   }
-  bead_accelerations(f, u, v, a, a + n, params_.kappa, params_.kappa / params_.rho, n);
+  // Blocks of beads, so that each block's forces are still in L1 when its accelerations use them:
+  // block [b0, b1) needs bonds b0..b1; interior bonds are 1..n-1, bond b0 came with the last block.
+  constexpr std::size_t block = 256;
+  const double kappa = params_.kappa, kappa_over_rho = params_.kappa / params_.rho;
+  for (std::size_t b0 = 0; b0 < n; b0 += block) {
+    const std::size_t b1 = std::min(n, b0 + block);
+    const std::size_t j0 = b0 == 0 ? 1 : b0 + 1, j1 = std::min(b1, n - 1);  // new bonds j0..j1
+    if (j1 >= j0) bond_forces_from_displacements(law_, u + j0 - 1, f + j0, j1 - j0 + 1);
+    bead_accelerations(f + b0, u + b0, v + b0, a + b0, a + n + b0, kappa, kappa_over_rho, b1 - b0);
+  }
 }
 
 void DisplacementLattice::operator()(const State& s, State& ds, double t) const {
@@ -92,13 +101,15 @@ double DisplacementLattice::total_energy(const State& s, double t) const {
     const double w = u[i] - v[i];
     e += 0.5 * du[i] * du[i] + 0.5 * params_.rho * dv[i] * dv[i] + 0.5 * params_.kappa * w * w;
   }
-  for (std::size_t j = 1; j < n; ++j) e += bond_energy(law_, u[j] - u[j - 1]);
+  double* V = bond_force_.data();  // scratch: bond strains, then V(r_j) (eq:Vr)
+  bond_strains(u, t, V);
+  bond_energies_from_strains(law_, V, V, n + 1);
+  for (std::size_t j = 1; j < n; ++j) e += V[j];
   if (boundary_.periodic) {
-    e += bond_energy(law_, u[0] - u[n - 1]);
+    e += V[0];
   } else {
-    if (boundary_.left.kind != EndKind::free) e += bond_energy(law_, u[0] - ghost(boundary_.left, t));
-    if (boundary_.right.kind != EndKind::free)
-      e += bond_energy(law_, ghost(boundary_.right, t) - u[n - 1]);
+    if (boundary_.left.kind != EndKind::free) e += V[0];
+    if (boundary_.right.kind != EndKind::free) e += V[n];
   }
   return e;
 }

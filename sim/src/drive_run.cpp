@@ -11,6 +11,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/energy.hpp"
+#include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/output_files.hpp"
 
 namespace lrchain::sim {
@@ -41,17 +42,6 @@ double drive_envelope(double t, double r, double t_m) {
 }
 
 namespace {
-
-double slope(const std::vector<double>& t, const std::vector<double>& y) {
-  const double n = double(t.size());
-  if (t.size() < 2) return 0;
-  double st = 0, sy = 0, stt = 0, sty = 0;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    st += t[i]; sy += y[i]; stt += t[i] * t[i]; sty += t[i] * y[i];
-  }
-  const double den = n * stt - st * st;
-  return den != 0 ? (n * sty - st * sy) / den : 0;
-}
 
 // theta in (0, pi] with omega_+(theta) = omega0 (eq:disp1d; omega_+ increases on [0, pi]).
 double optical_wavenumber(const Params& p, double omega0) {
@@ -176,7 +166,7 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   S.t_end = S.stats.t_reached;
   S.interrupted = S.stats.stopped;
   S.blew_up = S.stats.blew_up;
-  S.front_speed = slope(front_t, front_n);
+  S.front_speed = least_squares_slope(front_t, front_n);
   rec.fields.push_back(std::move(field));
   return result;
 }
@@ -271,16 +261,10 @@ set ylabel "du_n/dt"
 
 std::vector<std::string> write_drive_outputs(const std::string& dir, const DriveRunResult& r,
                                              const nlohmann::json& summary) {
-  ensure_directory(dir);
-  write_record(dir, r.record);
-  write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
-  std::vector<std::string> figures;
-  if (render_gnuplot(dir, "energy.gp", drive_energy_script(r), "energy.png"))
-    figures.push_back("energy.png");
-  if (!r.record.snapshots.empty() &&
-      render_gnuplot(dir, "snapshots.gp", drive_snapshots_script(r), "snapshots.png"))
-    figures.push_back("snapshots.png");
-  return figures;
+  std::vector<FigureScript> figures = {{"energy.gp", drive_energy_script(r), "energy.png"}};
+  if (!r.record.snapshots.empty())
+    figures.push_back({"snapshots.gp", drive_snapshots_script(r), "snapshots.png"});
+  return write_run_outputs(dir, r.record, summary.dump(2), figures);
 }
 
 }  // namespace lrchain::sim

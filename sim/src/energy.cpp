@@ -15,7 +15,7 @@ void energy_density(const DisplacementLattice& lattice, const State& s, double t
   const double* du = L.primary_rate(s);
   const double* dv = L.secondary_rate(s);
   lattice.bond_strains(u, t, r);
-  for (std::size_t j = 0; j <= n; ++j) r[j] = bond_energy(lattice.law(), r[j]);  // V(r_j)
+  bond_energies_from_strains(lattice.law(), r, r, n + 1);  // V(r_j)
   for (std::size_t i = 0; i < n; ++i) {
     const double w = u[i] - v[i];
     e[i] = 0.5 * du[i] * du[i] + 0.5 * p.rho * dv[i] * dv[i] + 0.5 * p.kappa * w * w +

@@ -13,6 +13,7 @@
 #include "lrchain/sim/checkpoint.hpp"
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/energy.hpp"
+#include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/output_files.hpp"
 
 namespace lrchain::sim {
@@ -54,17 +55,6 @@ State modulated_initial_state(const ModulatedRunConfig& c, double& omega, double
 }
 
 namespace {
-
-double slope(const std::vector<double>& t, const std::vector<double>& y) {
-  const double n = double(t.size());
-  if (t.size() < 2) return 0;
-  double st = 0, sy = 0, stt = 0, sty = 0;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    st += t[i]; sy += y[i]; stt += t[i] * t[i]; sty += t[i] * y[i];
-  }
-  const double den = n * stt - st * st;
-  return den != 0 ? (n * sty - st * sy) / den : 0;
-}
 
 // Periodic running mean of e over w sites (centred), into m.
 void running_mean(const std::vector<double>& e, long w, std::vector<double>& m) {
@@ -199,7 +189,7 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
   S.interrupted = S.stats.stopped;
   S.blew_up = S.stats.blew_up;
   S.dark_samples = long(fit_t.size());
-  S.dark_speed = std::abs(slope(fit_t, fit_x));
+  S.dark_speed = std::abs(least_squares_slope(fit_t, fit_x));
   rec.fields.push_back(std::move(field));
   return result;
 }
@@ -291,16 +281,10 @@ set ylabel "du_n/dt"
 
 std::vector<std::string> write_modulated_outputs(const std::string& dir, const ModulatedRunResult& r,
                                                  const nlohmann::json& summary) {
-  ensure_directory(dir);
-  write_record(dir, r.record);
-  write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
-  std::vector<std::string> figures;
-  if (render_gnuplot(dir, "energy.gp", modulated_energy_script(r), "energy.png"))
-    figures.push_back("energy.png");
-  if (!r.record.snapshots.empty() &&
-      render_gnuplot(dir, "snapshots.gp", modulated_snapshots_script(r), "snapshots.png"))
-    figures.push_back("snapshots.png");
-  return figures;
+  std::vector<FigureScript> figures = {{"energy.gp", modulated_energy_script(r), "energy.png"}};
+  if (!r.record.snapshots.empty())
+    figures.push_back({"snapshots.gp", modulated_snapshots_script(r), "snapshots.png"});
+  return write_run_outputs(dir, r.record, summary.dump(2), figures);
 }
 
 }  // namespace lrchain::sim

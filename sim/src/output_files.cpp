@@ -1,6 +1,8 @@
 // Atomic output files (temp name + rename), CSV, gnuplot binary matrices, gnuplot rendering.
 #include "lrchain/sim/output_files.hpp"
 
+#include <future>
+
 #include <unistd.h>
 
 #include <cstdio>
@@ -111,6 +113,23 @@ bool render_gnuplot(const fs::path& dir, const std::string& script, const std::s
   fs::remove(dir / ("." + script + ".log"));
   commit(dir / tmp, dir, png);
   return true;
+}
+
+std::vector<std::string> write_run_outputs(const fs::path& dir, const RunRecord& record,
+                                           const std::string& summary_json,
+                                           const std::vector<FigureScript>& figures) {
+  ensure_directory(dir);
+  write_record(dir, record);
+  write_file_atomic(dir, "summary.json", summary_json + "\n");
+  std::vector<std::future<bool>> rendered;
+  for (const auto& f : figures)
+    rendered.push_back(std::async(std::launch::async, [&dir, &f] {
+      return render_gnuplot(dir, f.script, f.script_text, f.png);
+    }));
+  std::vector<std::string> pngs;
+  for (std::size_t i = 0; i < figures.size(); ++i)
+    if (rendered[i].get()) pngs.push_back(figures[i].png);
+  return pngs;
 }
 
 }  // namespace lrchain::sim

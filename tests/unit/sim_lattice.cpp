@@ -74,7 +74,7 @@ TEST_CASE("strain form equals the difference of the free-end displacement form" 
   }
 }
 
-TEST_CASE("energy density sums to the total energy; energy is conserved by rkf78 and symplectic" * doctest::test_suite("fast")) {
+TEST_CASE("energy density sums to the total energy, energy is conserved by rkf78 and symplectic" * doctest::test_suite("fast")) {
   const Params p;
   for (bool periodic : {false, true}) {
     DisplacementBoundary b;
@@ -142,7 +142,7 @@ TEST_CASE("small plane wave on a periodic chain oscillates at omega(theta) of eq
   }
 }
 
-TEST_CASE("energy centre (eq:ectr) of a symmetric bump is its centre; window m clips" * doctest::test_suite("fast")) {
+TEST_CASE("energy centre (eq:ectr) of a symmetric bump is its centre, window m clips" * doctest::test_suite("fast")) {
   std::vector<double> e(301, 0.0);
   for (int i = 0; i < 301; ++i) e[i] = std::exp(-0.01 * (i - 120) * (i - 120));
   CHECK(energy_centre(e.data(), e.size(), 100) == doctest::Approx(120.0).epsilon(1e-9));
@@ -166,4 +166,37 @@ TEST_CASE("clamped and prescribed ends: prescribed motion drives the first bead"
   DisplacementBoundary bad;
   bad.left.kind = EndKind::prescribed;
   CHECK_THROWS_AS(DisplacementLattice(p, 10, bad), InvalidParameter);
+}
+
+TEST_CASE("vectorised bond loops equal the scalar eq:Vr formulas (forces bit for bit, incl. contact loss)" * doctest::test_suite("fast")) {
+  // The loops run in the AVX-512/AVX2/SSE2 clone this CPU selects. Forces (the dynamics) must give
+  // the IEEE results of bond_force(); energies (diagnostics only) may differ by rounding (the
+  // vectorised loop multiplies by 1/(alpha+1)): |dV| < 1e-15 for V = O(0.1).
+  for (const double alpha : {1.5, 1.7}) {
+    Params p;
+    p.alpha = alpha;
+    const ContactLaw law = make_contact_law(p);
+    std::vector<double> r(1003), f(1003), V(1003), u(1004);
+    for (std::size_t i = 0; i < r.size(); ++i) r[i] = -0.6 + 1.2 * double(i) / 1002.0;  // r > delta0: loss
+    u[0] = 0.1;
+    for (std::size_t i = 0; i < r.size(); ++i) u[i + 1] = u[i] + r[i];
+    bond_forces_from_strains(law, r.data(), f.data(), r.size());
+    bond_energies_from_strains(law, r.data(), V.data(), r.size());
+    std::size_t force_mismatch = 0, disp_mismatch = 0;
+    double energy_error = 0;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      force_mismatch += f[i] != bond_force(law, r[i]);
+      energy_error = std::max(energy_error, std::abs(V[i] - bond_energy(law, r[i])));
+    }
+    bond_forces_from_displacements(law, u.data(), f.data(), r.size());
+    for (std::size_t i = 0; i < r.size(); ++i) disp_mismatch += f[i] != bond_force(law, u[i + 1] - u[i]);
+    bond_energies_from_strains(law, r.data(), r.data(), r.size());  // in place
+    std::size_t in_place_mismatch = 0;
+    for (std::size_t i = 0; i < r.size(); ++i) in_place_mismatch += r[i] != V[i];
+    INFO("alpha = ", alpha);
+    CHECK(force_mismatch == 0);
+    CHECK(energy_error < 1e-15);
+    CHECK(in_place_mismatch == 0);
+    CHECK(disp_mismatch == 0);
+  }
 }

@@ -36,7 +36,7 @@ TEST_CASE("exp1: optical theta=pi/2 breather follows the NLS ansatz for 200 T_b 
   CHECK(s.centre_speed == doctest::Approx(s.group_velocity).epsilon(0.01));
 }
 
-TEST_CASE("exp1 convergence: halving the step/tolerances changes E_x by < 1e-4; tight rkf78 agrees" * doctest::test_suite("validation")) {
+TEST_CASE("exp1 convergence: halving the step/tolerances changes E_x by < 1e-4, tight rkf78 agrees" * doctest::test_suite("validation")) {
   auto cfg = example("exp1_optical_pi2.toml").bright;
   const auto a = run_bright(cfg).summary;
   // Halve the accuracy parameter of the configured stepper: the step of the fixed-step symplectic

@@ -120,7 +120,7 @@ TEST_CASE("exp7 checkpoint/restart: 0->1000 then restart ->2000 equals one run 0
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("CLI: simulate modulated writes checkpoint, --restart continues; drive refuses omega0 outside the optical band" * doctest::test_suite("validation")) {
+TEST_CASE("CLI: simulate modulated writes checkpoint, --restart continues, drive refuses omega0 outside the optical band" * doctest::test_suite("validation")) {
   const auto dir = std::filesystem::temp_directory_path() / "lrchain_sim_more_cli";
   std::filesystem::remove_all(dir);
   int status = 0;

@@ -26,6 +26,8 @@ double bond_energy(const ContactLaw& law, double r);
 
 // f[i] = V'(r[i]) for i < n (one sqrt per bond when alpha = 3/2). No allocation.
 void bond_forces_from_strains(const ContactLaw& law, const double* r, double* f, std::size_t n);
+// V[i] = V(r[i]) for i < n (eq:Vr; one sqrt per bond when alpha = 3/2); V may be r. No allocation.
+void bond_energies_from_strains(const ContactLaw& law, const double* r, double* V, std::size_t n);
 // f[i] = V'(u[i+1] - u[i]) for i < n (reads u[0..n]). No allocation.
 void bond_forces_from_displacements(const ContactLaw& law, const double* u, double* f,
                                     std::size_t n);

@@ -4,6 +4,7 @@
 // script (.gp) next to its data files, rendered to PNG when gnuplot is installed.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "lrchain/sim/run_record.hpp"
 
@@ -30,5 +31,18 @@ void write_record(const std::filesystem::path& dir, const RunRecord& r);
 // Returns false if gnuplot is missing or fails (the script and data stay for the user).
 bool render_gnuplot(const std::filesystem::path& dir, const std::string& script,
                     const std::string& script_text, const std::string& png);
+
+// One figure: gnuplot script name, its text, the PNG it renders (see render_gnuplot).
+struct FigureScript {
+  std::string script;
+  std::string script_text;
+  std::string png;
+};
+// The output directory of a run: the record (write_record), summary.json (`summary_json` + newline)
+// and the figures, rendered concurrently (one gnuplot process each). Returns the PNGs rendered, in
+// the order given.
+std::vector<std::string> write_run_outputs(const std::filesystem::path& dir, const RunRecord& record,
+                                           const std::string& summary_json,
+                                           const std::vector<FigureScript>& figures);
 
 }  // namespace lrchain::sim
