@@ -35,11 +35,11 @@ struct DarkArgs {
 
 void add_common(CLI::App& sub, DarkArgs& a) {
   add_model_options(sub, a.p, false);
-  add_number(sub, "--omega-b", a.omega_b, "breather frequency, below the theta = pi band edge")->required();
-  sub.add_option("--edge", a.edge, "band edge: optical|acoustic")->check(CLI::IsMember({"optical", "acoustic"}));
-  sub.add_option("--center", a.center, "bond (n0 = 1/2) | site (n0 = 0)")->check(CLI::IsMember({"bond", "site"}));
-  sub.add_option("--sites", a.sites, "odd number of sites per field (periodic ends), default 101");
-  sub.add_option("--mode", a.mode, "reversible (half/quarter period, default) | full (check)")
+  add_number(sub, "--omega-b", a.omega_b, "breather frequency omega_b (dimensionless, time unit of Sec. 2; period T_b = 2 pi/omega_b), below the theta = pi band edge (required)")->required();
+  sub.add_option("--edge", a.edge, "theta = pi band edge the breather bifurcates from: optical|acoustic (default optical)")->check(CLI::IsMember({"optical", "acoustic"}));
+  sub.add_option("--center", a.center, "family: bond (n0 = 1/2) | site (n0 = 0) (default bond)")->check(CLI::IsMember({"bond", "site"}));
+  sub.add_option("--sites", a.sites, "odd number of lattice sites per field x, y (periodic ends; default 101)");
+  sub.add_option("--mode", a.mode, "shooting: reversible (half/quarter period; default) | full (whole period, a check)")
       ->check(CLI::IsMember({"reversible", "full"}));
   sub.add_flag("--json", a.json_out, "print the JSON summary (always printed; kept for scripts)");
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr");
@@ -127,7 +127,7 @@ void write_multipliers(const std::string& dir, const std::string& stem, const Fl
                                   "set terminal pngcairo size 700,700\nset output outfile\n"
                                   "set datafile separator ','\nset size square\nset key off\n"
                                   "set xlabel 'Re {{/Symbol l}}'\nset ylabel 'Im {{/Symbol l}}'\n"
-                                  "set title 'Floquet multipliers, omega_b = {1:.5f}'\n"
+                                  "set title 'Floquet multipliers, omega_b = {1:.5f}' noenhanced\n"
                                   "set parametric\nset trange [0:2*pi]\n"
                                   "plot cos(t),sin(t) lc 'gray', '{0}.csv' skip 1 using 1:2 with points pt 7 ps 0.8\n",
                                   stem, omega_b),
@@ -165,7 +165,7 @@ void run_solve(const DarkArgs& a, bool floquet) {
                         fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
                                     "set terminal pngcairo size 1000,700\nset output outfile\n"
                                     "set datafile separator ','\nset xlabel 'n'\nset key outside\n"
-                                    "set title 'dark breather ({} centred), omega_b = {:.5f}: Z(0), Z(T_b), eq:xy_app seed'\n"
+                                    "set title 'dark breather ({} centred), omega_b = {:.5f}: Z(0), Z(T_b), eq:xy_app seed' noenhanced\n"
                                     "plot 'profile.csv' skip 1 u 1:2 w lp pt 3 t 'x_n(0)', '' skip 1 u 1:6 w p pt 4 ps 1.5 t 'x_n(T_b)', "
                                     "'' skip 1 u 1:4 w p pt 6 t 'x seed', '' skip 1 u 1:3 w lp pt 3 t 'y_n(0)', "
                                     "'' skip 1 u 1:7 w p pt 4 ps 1.5 t 'y_n(T_b)', '' skip 1 u 1:5 w p pt 6 t 'y seed'\n",
@@ -222,10 +222,10 @@ void run_continue(const DarkArgs& a) {
     sim::render_gnuplot(a.out, "branch.gp",
                         fmt::format("if (!exists(\"outfile\")) outfile = 'branch.png'\n"
                                     "set terminal pngcairo size 900,650\nset output outfile\n"
-                                    "set datafile separator ','\nset xlabel 'omega_b'\n"
-                                    "set ylabel 'renormalised l2 norm squared (eq:l2norm)'\n"
+                                    "set datafile separator ','\nset xlabel '{{/Symbol w}}_b'\n"
+                                    "set ylabel 'renormalised l2 norm squared (eq:l2norm)' noenhanced\n"
                                     "set arrow from {0},graph 0 to {0},graph 1 nohead lc 'black'\n"
-                                    "set title '{1} {2}-centred dark breathers, rho = {3:g} (red: real instability)'\n"
+                                    "set title '{1} {2}-centred dark breathers, rho = {3:g} (red: real instability)' noenhanced\n"
                                     "plot 'branch.csv' skip 1 u 1:2 w l lc 'blue' t 'branch', "
                                     "'' skip 1 u 1:(strstrt(strcol(8),'real') > 0 ? $2 : 1/0) w p pt 7 lc 'red' t 'real instability'\n",
                                     s.ansatz.omega, a.edge, a.center, a.p.rho),
@@ -233,8 +233,8 @@ void run_continue(const DarkArgs& a) {
     sim::render_gnuplot(a.out, "floquet_moduli.gp",
                         fmt::format("if (!exists(\"outfile\")) outfile = 'floquet_moduli.png'\n"
                                     "set terminal pngcairo size 1000,700\nset output outfile\n"
-                                    "set datafile separator ','\nset xlabel 'omega_b'\nset ylabel '|lambda|'\n"
-                                    "set multiplot layout 2,1 title 'Floquet moduli > 1 (blue: complex, red: real > 0, green: real < 0)'\n"
+                                    "set datafile separator ','\nset xlabel '{{/Symbol w}}_b'\nset ylabel '|{{/Symbol l}}|'\n"
+                                    "set multiplot layout 2,1 title '{0} {1}-centred, rho = {2:g}: Floquet moduli > 1 (blue: complex, red: real > 0, green: real < 0)' noenhanced\n"
                                     "set title 'weakly nonlinear (before the turning point)'\n"
                                     "plot 'floquet_moduli.csv' skip 1 u 1:($4==0 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
                                     "'' skip 1 u 1:($4==0 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
@@ -243,7 +243,7 @@ void run_continue(const DarkArgs& a) {
                                     "plot 'floquet_moduli.csv' skip 1 u 1:($4>=1 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
                                     "'' skip 1 u 1:($4>=1 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
                                     "'' skip 1 u 1:($4>=1 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle\n"
-                                    "unset multiplot\n"),
+                                    "unset multiplot\n", a.edge, a.center, a.p.rho),
                         "floquet_moduli.png");
   }
   std::printf("%s\n", j.dump(2).c_str());
@@ -265,10 +265,10 @@ void register_dark(CLI::App& app) {
   floq->callback([args] { run_solve(*args, true); });
   auto* cont = dark->add_subcommand("continue", "pseudo-arclength continuation in omega_b with Floquet");
   add_common(*cont, *args);
-  cont->add_option("--points", args->points, "number of branch points (default 100)");
-  add_number(*cont, "--ds", args->ds, "initial arclength step (default 0.1)");
-  add_number(*cont, "--omega-min", args->omega_min, "stop below this omega_b (default 0)");
-  add_number(*cont, "--omega-max", args->omega_max, "stop above this omega_b (default: band edge)");
+  cont->add_option("--points", args->points, "maximum number of branch points, the first included (default 100; e.g. --points 10 for a quick run)");
+  add_number(*cont, "--ds", args->ds, "initial pseudo-arclength step in (Z(0), omega_b), dimensionless, adapted between 1e-5 and 1 (default 0.1)");
+  add_number(*cont, "--omega-min", args->omega_min, "stop when omega_b falls below this (dimensionless frequency; default 0)");
+  add_number(*cont, "--omega-max", args->omega_max, "stop when omega_b rises above this (dimensionless frequency; default: the band edge omega(pi))");
   cont->callback([args] { run_continue(*args); });
 }
 

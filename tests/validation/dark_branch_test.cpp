@@ -1,6 +1,7 @@
 // Validation of exact dark breathers against Sec. 5.3-5.4 (Figs. 17-22), lattice N = 101.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "lrchain/ansatz/dark_breather.hpp"
@@ -47,14 +48,26 @@ TEST_CASE("dark: optical bond-centred branch rho = 1/3 turns near omega_b = 2.37
   const auto br = continue_branch(sh, res.q, w0, o);
   REQUIRE(br.turning_points.size() == 1);
   CHECK(br.turning_points[0] == doctest::Approx(2.37).epsilon(0.005));  // paper: ~2.37
-  for (const auto& pt : br.points) CHECK(pt.measures.E_b < 3e-9);        // paper: < 3e-9
+  for (const auto& pt : br.points) CHECK(pt.measures.E_b <= 1e-10);  // paper: < 3e-9; issue 5: 1e-10
 }
 
-TEST_CASE("dark: long-time E_b(1200) < 2e-4 at omega_b = 2.4255 (Sec. 5.4)") {
+TEST_CASE("dark: long-time E_b(1200) < 2e-4 for 2.4255 <= omega_b <= omega_opt, larger below (Sec. 5.4)") {
   const Params p;
-  const double wb = 2.4255;
-  const auto z = solve_z(p, 101, DarkCenter::bond, wb);
-  const auto h = relative_error_history(p, z, wb, 1200.0);
-  REQUIRE(!h.empty());
-  CHECK(h.back().E_b < 2e-4);
+  // Paper Sec. 5.4: E_b(1200) stays below 2e-4 for 2.4255 <= omega_b <= omega_opt = 2.4495 and
+  // increases dramatically at smaller frequencies. Both families at the lower end, bond near the edge.
+  struct Case { DarkCenter center; double omega_b; };
+  for (const Case c : {Case{DarkCenter::bond, 2.4255}, Case{DarkCenter::site, 2.4255},
+                       Case{DarkCenter::bond, 2.44}}) {
+    CAPTURE(c.omega_b);
+    const auto z = solve_z(p, 101, c.center, c.omega_b);
+    const auto h = relative_error_history(p, z, c.omega_b, 1200.0);
+    REQUIRE(!h.empty());
+    double worst = 0;
+    for (const auto& s : h) worst = std::max(worst, s.E_b);
+    CHECK(worst < 2e-4);
+  }
+  // Below the window (bond, omega_b = 2.40): the breather breaks up (Fig. 22-like), E_b(1200) = O(1).
+  const auto z = solve_z(p, 101, DarkCenter::bond, 2.40);
+  const auto h = relative_error_history(p, z, 2.40, 1200.0);
+  CHECK(h.back().E_b > 1e-2);
 }
