@@ -39,6 +39,15 @@ nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
   j["centre_speed"] = s.centre_speed;
   j["centre_start"] = s.centre_start;
   j["centre_end"] = s.centre_end;
+  if (c.trailing.fit_start > 0)
+    j["trailing_structure"] = {{"found", s.trailing.found},
+                               {"fit_start", c.trailing.fit_start},
+                               {"speed", s.trailing.speed},
+                               {"centre_end", s.trailing.centre_end},
+                               {"max_energy_density", s.trailing.max_energy_density},
+                               {"max_abs_x", s.trailing.max_abs_x},
+                               {"y_over_x", s.trailing.y_over_x},
+                               {"branch", s.trailing.y_over_x < 0 ? "optical" : "acoustic"}};
   j["t_end"] = s.t_end;
   j["interrupted"] = s.interrupted;
   j["blew_up"] = s.blew_up;

@@ -170,6 +170,9 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
     S.centre_start = centre_x.front();
     S.centre_end = centre_x.back();
   }
+  // x, y hold the strains of the last observation.
+  S.trailing = track_trailing_structure(field, centre_t, centre_x, x.data(), y.data(), -N, strains,
+                                        c.trailing);
   rec.fields.push_back(std::move(field));
   return result;
 }

@@ -30,6 +30,8 @@ void read_bright(const toml::table& t, BrightRunConfig& c) {
   }
   if (auto b = t["ansatz_ends"].value<bool>()) c.ansatz_ends = *b;
   read_numbers(t, "snapshot_periods", c.snapshot_periods);
+  read_number(t, "trailing_fit_start", c.trailing.fit_start);
+  read_number(t, "trailing_gap", c.trailing.gap);
 }
 
 }  // namespace

@@ -171,4 +171,17 @@ TEST_CASE("exp4: acoustic theta=1.948 breather (Fig. 11): paper's T_b and omega_
   // paper: "the NLS approximation does not capture this feature"; we measure final E_x ~ 1.04
   CHECK(s.final_Ex > 0.3);
   CHECK(s.max_energy_drift <= 1e-9);
+  // paper: "a small-amplitude bright breather eventually detaching ... and moving to the left with
+  // constant velocity near -c_+, suggesting that this second breather is an optical one".
+  // c_+ = omega_+'(1.948) = 0.2477 (eq:disp1d). We measure -0.229 over t in [500, 994] and
+  // y/x = -1.26 (optical: kappa/(kappa - rho omega^2) < 0; the acoustic parent has y/x ~ +2),
+  // i.e. omega ~ 2.32 on the optical band, whose group velocity there is 0.23.
+  const auto& tr = s.trailing;
+  MESSAGE("trailing: speed=" << tr.speed << " y/x=" << tr.y_over_x << " max|x|=" << tr.max_abs_x
+          << " centre_end=" << tr.centre_end);
+  REQUIRE(tr.found);
+  CHECK(tr.speed == doctest::Approx(-0.2477).epsilon(0.12));
+  CHECK(tr.y_over_x < -0.5);                  // optical
+  CHECK(tr.max_abs_x < 0.3 * s.x0_inf);       // small amplitude compared with the parent
+  CHECK(tr.centre_end < -150);                // well behind (left of) the start
 }

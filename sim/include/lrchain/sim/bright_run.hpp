@@ -16,6 +16,7 @@
 #include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/run_control.hpp"
 #include "lrchain/sim/run_record.hpp"
+#include "lrchain/sim/trailing_structure.hpp"
 
 namespace lrchain::sim {
 
@@ -33,6 +34,7 @@ struct BrightRunConfig {
   std::size_t centre_window = 100;  // m of eq:ectr
   double error_window_end = -1;     // also report max E_x, E_y over t <= this (if > 0)
   bool ansatz_ends = false;
+  TrailingStructureOptions trailing;  // secondary structure behind the breather (fit_start > 0)
   IntegratorOptions integrator;
 };
 void validate(const BrightRunConfig& c);
@@ -49,6 +51,7 @@ struct BrightRunSummary {
   double centre_start = 0, centre_end = 0;
   double t_end = 0;                       // time reached
   bool interrupted = false, blew_up = false;
+  TrailingStructure trailing;             // if config.trailing.fit_start > 0
   IntegrationStats stats;
   double solve_seconds = 0;
 };
