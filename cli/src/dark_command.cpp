@@ -230,6 +230,7 @@ void run_continue(const DarkArgs& a) {
                                     "'' skip 1 u 1:(strstrt(strcol(8),'real') > 0 ? $2 : 1/0) w p pt 7 lc 'red' t 'real instability'\n",
                                     s.ansatz.omega, a.edge, a.center, a.p.rho),
                         "branch.png");
+    // The line |lambda| = 1 keeps a panel drawable when it has no multiplier off the unit circle.
     sim::render_gnuplot(a.out, "floquet_moduli.gp",
                         fmt::format("if (!exists(\"outfile\")) outfile = 'floquet_moduli.png'\n"
                                     "set terminal pngcairo size 1000,700\nset output outfile\n"
@@ -238,11 +239,13 @@ void run_continue(const DarkArgs& a) {
                                     "set title 'weakly nonlinear (before the turning point)'\n"
                                     "plot 'floquet_moduli.csv' skip 1 u 1:($4==0 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
                                     "'' skip 1 u 1:($4==0 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
-                                    "'' skip 1 u 1:($4==0 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle\n"
+                                    "'' skip 1 u 1:($4==0 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle, "
+                                    "1 lc 'grey' dt 2 notitle\n"
                                     "set title 'strongly nonlinear (after the turning point)'\n"
                                     "plot 'floquet_moduli.csv' skip 1 u 1:($4>=1 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
                                     "'' skip 1 u 1:($4>=1 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
-                                    "'' skip 1 u 1:($4>=1 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle\n"
+                                    "'' skip 1 u 1:($4>=1 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle, "
+                                    "1 lc 'grey' dt 2 notitle\n"
                                     "unset multiplot\n", a.edge, a.center, a.p.rho),
                         "floquet_moduli.png");
   }

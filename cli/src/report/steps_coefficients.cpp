@@ -125,7 +125,8 @@ Section coefficients_section(const StepContext& ctx) {
   s.rows.push_back(equals_row("omega_b at theta = pi/8", "Sec. 4.2", "2.0097", 2.0097, pi8.omega_b(), half));
   s.rows.push_back(equals_row("T_b at theta = pi/8", "Sec. 4.2", "3.1265", 3.1265, pi8.period(), half));
   s.rows.push_back(equals_row("||x_n(0)||_inf at theta = pi/8 (eq:focus_app)", "Sec. 4.2", "~ 0.208",
-                              0.208, ansatz_strain_sup(pi8, 2000), 5e-4, "ansatz on n = -2000..2000"));
+                              0.208, ansatz_strain_sup(pi8, 2000), 5e-4, "ansatz on n = -2000..2000",
+                              "Lattice simulator"));
 
   const BrightBreatherAnsatz t35(p, Branch::optical, 3 * pi / 5);
   s.rows.push_back(equals_row("theta = 3 pi/5", "Sec. 4.2", "~ 1.885", 1.885, 3 * pi / 5, 5e-4));

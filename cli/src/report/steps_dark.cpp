@@ -129,32 +129,41 @@ Section acoustic_bond(const StepContext& ctx) {
   return s;
 }
 
-Section rho1_bond(const StepContext& ctx) {
-  Section s;
-  s.id = "dark_rho1_bond";
-  s.title = "Optical bond-centred branch, rho = 1 (Figs. 19, 24, 25)";
-  CsvTable t;
-  const json j = run_branch(ctx, {"optical_bond_rho_1", "1", "optical", "bond", "2.28", 60, 140}, s, t);
-  s.intro = "Continuation from omega_b = 2.28 (omega_opt = 2.2882). " + branch_facts(j, t);
-  // The weakly nonlinear point closest to 2.207: the first point (in continuation order) within
-  // 0.01 of it, before any turning point.
-  double max_real = not_computed, at = not_computed;
+// Largest real multiplier > 0 at the weakly nonlinear branch point closest to omega (within
+// 0.01, before the turning point); sets `at` to that point's omega_b.
+double real_multiplier_near(const CsvTable& t, double omega, double& at) {
+  double max_real = not_computed;
+  at = not_computed;
   for (std::size_t i = 0; i < t.cells.size(); ++i) {
     const double w = t.number(i, "omega_b");
     if (i > 0 && w > t.number(i - 1, "omega_b")) break;  // past the turning point
-    if (std::abs(w - 2.207) < 0.01 && (std::isnan(at) || std::abs(w - 2.207) < std::abs(at - 2.207)))
+    if (std::abs(w - omega) < 0.01 && (std::isnan(at) || std::abs(w - omega) < std::abs(at - omega)))
       at = w, max_real = t.number(i, "max_real");
   }
-  Comparison real = below_row("largest real multiplier > 0 at omega_b ~ 2.207 (weakly nonlinear)",
+  return max_real;
+}
+
+Section rho1(const StepContext& ctx, const std::string& center) {
+  Section s;
+  s.id = "dark_rho1_" + center;
+  const bool bond = center == "bond";
+  s.title = "Optical " + center + "-centred branch, rho = 1 (Figs. 19, 24" + (bond ? ", 25)" : ")");
+  CsvTable t;
+  const json j = run_branch(ctx, {"optical_" + center + "_rho_1", "1", "optical", center, "2.28", 50, 140}, s, t);
+  s.intro = "Continuation from omega_b = 2.28 (omega_opt = 2.2882). " + branch_facts(j, t);
+  double at = not_computed;
+  const double max_real = real_multiplier_near(t, 2.207, at);
+  Comparison real = below_row("largest real multiplier > 0 at omega_b ~ 2.207 (weakly nonlinear, " + center + "-centred)",
                               "Sec. 5.4, Fig. 25", "> 1 (real instability sets the breather in motion)", 1.0 + 1e-6,
                               max_real, std::isnan(at) ? "the branch did not reach 2.207"
                                                        : fmt::format("branch point omega_b = {:.5f}", at),
-                              "Dark breathers");
+                              bond ? "Dark breathers" : "");
   real.claim = Claim::above;
   s.rows.push_back(real);
-  s.figures.push_back({"dark/optical_bond_rho_1/branch.png", "Fig. 19 (fig:r1_norm), left",
-                       "Renormalised l2 norm of bond-centred optical dark breathers, rho = 1; red: real instability."});
-  s.figures.push_back({"dark/optical_bond_rho_1/floquet_moduli.png", "Fig. 24 (fig:opt_floq_r1), left",
+  const std::string side = bond ? "left" : "right";
+  s.figures.push_back({"dark/optical_" + center + "_rho_1/branch.png", "Fig. 19 (fig:r1_norm), " + side,
+                       "Renormalised l2 norm of " + center + "-centred optical dark breathers, rho = 1; red: real instability."});
+  s.figures.push_back({"dark/optical_" + center + "_rho_1/floquet_moduli.png", "Fig. 24 (fig:opt_floq_r1), " + side,
                        "Floquet moduli for rho = 1, weakly / strongly nonlinear."});
   return s;
 }
@@ -166,7 +175,8 @@ std::vector<Step> dark_steps() {
           {"dark_optical_bond", "Optical bond-centred branch", 40, optical_bond},
           {"dark_optical_site", "Optical site-centred branch", 40, optical_site},
           {"dark_acoustic_bond", "Acoustic bond-centred branch", 25, acoustic_bond},
-          {"dark_rho1_bond", "Optical bond-centred branch, rho = 1", 35, rho1_bond}};
+          {"dark_rho1_bond", "Optical bond-centred branch, rho = 1", 35, [](const StepContext& c) { return rho1(c, "bond"); }},
+          {"dark_rho1_site", "Optical site-centred branch, rho = 1", 35, [](const StepContext& c) { return rho1(c, "site"); }}};
 }
 
 }  // namespace lrchain::report
