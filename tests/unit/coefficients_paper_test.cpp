@@ -18,7 +18,7 @@ TEST_CASE("dispersion values quoted in the paper") {
   CHECK(dispersion_omega(p, Branch::acoustic, pi) == doctest::Approx(1.4142).epsilon(5e-5 / 1.4142));  // Sec. 5.3 omega_acs
   CHECK(dispersion_omega(p, Branch::optical, pi / 8) == doctest::Approx(2.0098).epsilon(5e-5 / 2.0098));  // Sec. 4.2
   CHECK(dispersion_omega(p, Branch::optical, pi / 2) - 1e-4 == doctest::Approx(2.1752).epsilon(5e-5 / 2.1752));  // Fig. 6
-  // rho = 1: omega_opt = 2.2882 (Sec. 5.3 text; Fig. 21's caption prints 2.2282, see docs/paper-errata.md).
+  // rho = 1: omega_opt = 2.2882 (Sec. 5.3 text; Fig. 19's caption (fig:r1_norm) prints 2.2282, see docs/paper-errata.md).
   Params p1 = p;
   p1.rho = 1.0;
   CHECK(dispersion_omega(p1, Branch::optical, pi) == doctest::Approx(2.2882).epsilon(5e-5 / 2.2882));
