@@ -22,6 +22,11 @@ State random_state(std::size_t sites) {
   for (double& x : s) x = d(gen);
   return s;
 }
+// Reports the time per site (per evaluation) as the counter ns_per_site.
+void per_site_counter(benchmark::State& st, std::size_t sites) {
+  st.counters["ns_per_site"] = benchmark::Counter(
+      double(sites), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
 }  // namespace
 
 static void BM_DisplacementRHS(benchmark::State& st) {
@@ -33,8 +38,7 @@ static void BM_DisplacementRHS(benchmark::State& st) {
     benchmark::DoNotOptimize(ds.data());
     benchmark::ClobberMemory();
   }
-  st.counters["ns_per_site"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate |
-                                                                 benchmark::Counter::kInvert);
+  per_site_counter(st, n);
 }
 BENCHMARK(BM_DisplacementRHS)->Arg(1002)->Arg(4002);
 
@@ -48,8 +52,7 @@ static void BM_DisplacementAcceleration(benchmark::State& st) {
     benchmark::DoNotOptimize(a.data());
     benchmark::ClobberMemory();
   }
-  st.counters["ns_per_site"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate |
-                                                                 benchmark::Counter::kInvert);
+  per_site_counter(st, n);
 }
 BENCHMARK(BM_DisplacementAcceleration)->Arg(1002)->Arg(4002);
 
@@ -64,8 +67,7 @@ static void BM_BondForces(benchmark::State& st) {
     benchmark::DoNotOptimize(f.data());
     benchmark::ClobberMemory();
   }
-  st.counters["ns_per_site"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate |
-                                                                 benchmark::Counter::kInvert);
+  per_site_counter(st, n);
 }
 BENCHMARK(BM_BondForces)->Arg(1002)->Arg(4002);
 
@@ -78,8 +80,7 @@ static void BM_StrainRHS(benchmark::State& st) {
     benchmark::DoNotOptimize(ds.data());
     benchmark::ClobberMemory();
   }
-  st.counters["ns_per_site"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate |
-                                                                 benchmark::Counter::kInvert);
+  per_site_counter(st, n);
 }
 BENCHMARK(BM_StrainRHS)->Arg(1001)->Arg(4001);
 
@@ -92,8 +93,7 @@ static void BM_SqrtPerBondFloor(benchmark::State& st) {
     benchmark::DoNotOptimize(f.data());
     benchmark::ClobberMemory();
   }
-  st.counters["ns_per_site"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate |
-                                                                 benchmark::Counter::kInvert);
+  per_site_counter(st, n);
 }
 BENCHMARK(BM_SqrtPerBondFloor)->Arg(1001)->Arg(4001);
 
@@ -117,8 +117,7 @@ static void BM_PackedSqrtPerBondFloor(benchmark::State& st) {
     benchmark::DoNotOptimize(f.data());
     benchmark::ClobberMemory();
   }
-  st.counters["ns_per_site"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate |
-                                                                 benchmark::Counter::kInvert);
+  per_site_counter(st, n);
 }
 BENCHMARK(BM_PackedSqrtPerBondFloor)->Arg(1001)->Arg(4001);
 

@@ -5,22 +5,20 @@
 #include <fmt/format.h>
 
 #include "lrchain/sim/output_files.hpp"
+#include "run_json.hpp"
 
 namespace lrchain::sim {
 
 nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
   nlohmann::json j;
   j["experiment"] = "bright";
-  j["params"] = {{"alpha", c.params.alpha}, {"delta0", c.params.delta0},
-                 {"kappa", c.params.kappa}, {"rho", c.params.rho}};
+  j["params"] = params_json(c.params);
   j["branch"] = std::string(to_string(c.branch));
   j["theta"] = c.theta;
   j["N"] = c.N;
   j["periods"] = c.periods;
   j["ansatz_ends"] = c.ansatz_ends;
-  j["integrator"] = {{"stepper", std::string(to_string(c.integrator.stepper))},
-                     {"abs_tol", c.integrator.abs_tol}, {"rel_tol", c.integrator.rel_tol},
-                     {"dt", c.integrator.dt}};
+  j["integrator"] = integrator_json(c.integrator);
   j["ansatz"] = {{"omega", s.omega},   {"omega_b", s.omega_b},  {"T_b", s.period},
                  {"group_velocity", s.group_velocity},          {"curvature", s.curvature},
                  {"h_tilde", s.h_tilde}, {"M1", s.M1},          {"M2", s.M2},
@@ -48,12 +46,7 @@ nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
                                {"max_abs_x", s.trailing.max_abs_x},
                                {"y_over_x", s.trailing.y_over_x},
                                {"branch", s.trailing.y_over_x < 0 ? "optical" : "acoustic"}};
-  j["t_end"] = s.t_end;
-  j["interrupted"] = s.interrupted;
-  j["blew_up"] = s.blew_up;
-  j["steps"] = s.stats.steps;
-  j["rhs_evaluations"] = s.stats.rhs_evaluations;
-  j["solve_seconds"] = s.solve_seconds;
+  add_run_status(j, s.t_end, s.interrupted, s.blew_up, s.stats, s.solve_seconds);
   return j;
 }
 

@@ -13,6 +13,7 @@
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "run_json.hpp"
 
 namespace lrchain::sim {
 
@@ -174,14 +175,11 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
 nlohmann::json to_json(const DriveRunConfig& c, const DriveRunSummary& s) {
   nlohmann::json j;
   j["experiment"] = "drive";
-  j["params"] = {{"alpha", c.params.alpha}, {"delta0", c.params.delta0},
-                 {"kappa", c.params.kappa}, {"rho", c.params.rho}};
+  j["params"] = params_json(c.params);
   j["beads"] = c.beads;
   j["drive"] = {{"amplitude", c.amplitude}, {"omega0", c.omega0}, {"ramp_rate", c.ramp_rate},
                 {"t_m", c.t_m}};
-  j["integrator"] = {{"stepper", std::string(to_string(c.integrator.stepper))},
-                     {"abs_tol", c.integrator.abs_tol}, {"rel_tol", c.integrator.rel_tol},
-                     {"dt", c.integrator.dt}};
+  j["integrator"] = integrator_json(c.integrator);
   j["theta"] = s.theta;
   j["group_velocity"] = s.group_velocity;
   j["front_speed"] = s.front_speed;
@@ -191,12 +189,7 @@ nlohmann::json to_json(const DriveRunConfig& c, const DriveRunSummary& s) {
   j["final_peaks"] = s.final_peaks;
   j["final_energy"] = s.final_energy;
   j["max_energy"] = s.max_energy;
-  j["t_end"] = s.t_end;
-  j["interrupted"] = s.interrupted;
-  j["blew_up"] = s.blew_up;
-  j["steps"] = s.stats.steps;
-  j["rhs_evaluations"] = s.stats.rhs_evaluations;
-  j["solve_seconds"] = s.solve_seconds;
+  add_run_status(j, s.t_end, s.interrupted, s.blew_up, s.stats, s.solve_seconds);
   return j;
 }
 

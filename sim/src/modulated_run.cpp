@@ -15,6 +15,7 @@
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "run_json.hpp"
 
 namespace lrchain::sim {
 
@@ -198,13 +199,10 @@ nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s
   nlohmann::json j;
   j["experiment"] = "modulated";
   j["name"] = c.name;
-  j["params"] = {{"alpha", c.params.alpha}, {"delta0", c.params.delta0},
-                 {"kappa", c.params.kappa}, {"rho", c.params.rho}};
+  j["params"] = params_json(c.params);
   j["N"] = c.N;
   j["initial"] = {{"epsilon", c.epsilon}, {"theta0", s.theta0}, {"omega", s.omega}, {"b", c.b}};
-  j["integrator"] = {{"stepper", std::string(to_string(c.integrator.stepper))},
-                     {"abs_tol", c.integrator.abs_tol}, {"rel_tol", c.integrator.rel_tol},
-                     {"dt", c.integrator.dt}};
+  j["integrator"] = integrator_json(c.integrator);
   j["group_velocity"] = s.group_velocity;
   j["t_start"] = s.t_start;
   j["initial_contrast"] = s.initial_contrast;
@@ -217,12 +215,7 @@ nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s
   j["max_relative_energy_drift"] = s.max_energy_drift;
   j["checkpoints_written"] = s.checkpoints_written;
   if (!c.checkpoint_file.empty()) j["checkpoint_file"] = c.checkpoint_file;
-  j["t_end"] = s.t_end;
-  j["interrupted"] = s.interrupted;
-  j["blew_up"] = s.blew_up;
-  j["steps"] = s.stats.steps;
-  j["rhs_evaluations"] = s.stats.rhs_evaluations;
-  j["solve_seconds"] = s.solve_seconds;
+  add_run_status(j, s.t_end, s.interrupted, s.blew_up, s.stats, s.solve_seconds);
   return j;
 }
 

@@ -57,105 +57,88 @@ inline constexpr double ss17_weight[9] = {
 
 namespace detail {
 
-template <std::size_t Stages>
-boost::array<double, Stages> bm11b_odeint_drifts() {  // {0, a_1, ..., a_11}
-  boost::array<double, Stages> a{};
-  a[0] = 0.0;
-  for (std::size_t l = 1; l < Stages; ++l) a[l] = rkn_coefficients::bm11b_drift[l - 1];
-  return a;
-}
-template <std::size_t Stages>
-boost::array<double, Stages> bm11b_odeint_kicks() {  // {b_1, ..., b_12}
-  boost::array<double, Stages> b{};
-  for (std::size_t l = 0; l < Stages; ++l) b[l] = rkn_coefficients::bm11b_kick[l];
-  return b;
-}
-template <std::size_t Stages>
-boost::array<double, Stages> bm14a_odeint_drifts() {  // {a_1, ..., a_15}
-  boost::array<double, Stages> a{};
-  for (std::size_t l = 0; l < Stages; ++l) a[l] = rkn_coefficients::bm14a_drift[l];
-  return a;
-}
-template <std::size_t Stages>
-boost::array<double, Stages> bm14a_odeint_kicks() {  // {b_1, ..., b_14, 0}
-  boost::array<double, Stages> b{};
-  for (std::size_t l = 0; l + 1 < Stages; ++l) b[l] = rkn_coefficients::bm14a_kick[l];
-  b[Stages - 1] = 0.0;
-  return b;
-}
+// Each method as Odeint stages {a_l}, {b_l} (stage l: q += a_l dt p, then p += b_l dt a(q)).
 
-// SS17 as Odeint stages: drift-kick-drift Stoermer-Verlet steps w_i dt with adjacent half drifts
-// merged: a = {w_1/2, (w_1+w_2)/2, ..., (w_16+w_17)/2, w_17/2}, b = {w_1, ..., w_17, 0}.
-inline double ss17_w(std::size_t i) {  // w_i, i = 0..16
-  return rkn_coefficients::ss17_weight[i < 9 ? i : 16 - i];
-}
-template <std::size_t Stages>
-boost::array<double, Stages> ss17_odeint_drifts() {
-  boost::array<double, Stages> a{};
-  a[0] = ss17_w(0) / 2;
-  for (std::size_t l = 1; l < 17; ++l) a[l] = (ss17_w(l - 1) + ss17_w(l)) / 2;
-  a[17] = ss17_w(16) / 2;
-  return a;
-}
-template <std::size_t Stages>
-boost::array<double, Stages> ss17_odeint_kicks() {
-  boost::array<double, Stages> b{};
-  for (std::size_t l = 0; l < 17; ++l) b[l] = ss17_w(l);
-  b[17] = 0.0;
-  return b;
-}
+// Blanes-Moan SRKN_11^b (BAB): a = {0, a_1, ..., a_11}, b = {b_1, ..., b_12}.
+struct BlanesMoan11b {
+  static constexpr std::size_t stages = 12;
+  static constexpr unsigned short order = 6;
+  static boost::array<double, stages> drifts() {
+    boost::array<double, stages> a{};
+    for (std::size_t l = 1; l < stages; ++l) a[l] = rkn_coefficients::bm11b_drift[l - 1];
+    return a;
+  }
+  static boost::array<double, stages> kicks() {
+    boost::array<double, stages> b{};
+    for (std::size_t l = 0; l < stages; ++l) b[l] = rkn_coefficients::bm11b_kick[l];
+    return b;
+  }
+};
+
+// Blanes-Moan SRKN_14^a (ABA): a = {a_1, ..., a_15}, b = {b_1, ..., b_14, 0}.
+struct BlanesMoan14a {
+  static constexpr std::size_t stages = 15;
+  static constexpr unsigned short order = 6;
+  static boost::array<double, stages> drifts() {
+    boost::array<double, stages> a{};
+    for (std::size_t l = 0; l < stages; ++l) a[l] = rkn_coefficients::bm14a_drift[l];
+    return a;
+  }
+  static boost::array<double, stages> kicks() {
+    boost::array<double, stages> b{};
+    for (std::size_t l = 0; l + 1 < stages; ++l) b[l] = rkn_coefficients::bm14a_kick[l];
+    return b;
+  }
+};
+
+// McLachlan SS17: drift-kick-drift Stoermer-Verlet steps w_i dt with adjacent half drifts merged:
+// a = {w_1/2, (w_1+w_2)/2, ..., (w_16+w_17)/2, w_17/2}, b = {w_1, ..., w_17, 0}.
+struct McLachlanSS17 {
+  static constexpr std::size_t stages = 18;
+  static constexpr unsigned short order = 8;
+  static double w(std::size_t i) {  // w_{i+1}, i = 0..16 (symmetric)
+    return rkn_coefficients::ss17_weight[i < 9 ? i : 16 - i];
+  }
+  static boost::array<double, stages> drifts() {
+    boost::array<double, stages> a{};
+    a[0] = w(0) / 2;
+    for (std::size_t l = 1; l < 17; ++l) a[l] = (w(l - 1) + w(l)) / 2;
+    a[17] = w(16) / 2;
+    return a;
+  }
+  static boost::array<double, stages> kicks() {
+    boost::array<double, stages> b{};
+    for (std::size_t l = 0; l < 17; ++l) b[l] = w(l);
+    return b;
+  }
+};
 
 }  // namespace detail
 
+// An Odeint symplectic RKN stepper with the stage coefficients of `Method` (detail::*).
+template <class Method, class Coor,
+          class Algebra = typename boost::numeric::odeint::algebra_dispatcher<Coor>::algebra_type,
+          class Operations = typename boost::numeric::odeint::operations_dispatcher<Coor>::operations_type>
+class coefficient_rkn
+    : public boost::numeric::odeint::symplectic_nystroem_stepper_base<
+          Method::stages, Method::order, Coor, Coor, double, Coor, Coor, double, Algebra,
+          Operations, boost::numeric::odeint::initially_resizer> {
+  using base = boost::numeric::odeint::symplectic_nystroem_stepper_base<
+      Method::stages, Method::order, Coor, Coor, double, Coor, Coor, double, Algebra, Operations,
+      boost::numeric::odeint::initially_resizer>;
+
+ public:
+  coefficient_rkn() : base(Method::drifts(), Method::kicks()) {}
+};
+
 // Blanes-Moan SRKN_11^b: order 6, 12 Odeint stages, 11 distinct force evaluations per step.
-template <class Coor, class Algebra = typename boost::numeric::odeint::algebra_dispatcher<Coor>::algebra_type,
-          class Operations = typename boost::numeric::odeint::operations_dispatcher<Coor>::operations_type>
-class blanes_moan_srkn11b
-    : public boost::numeric::odeint::symplectic_nystroem_stepper_base<
-          12, 6, Coor, Coor, double, Coor, Coor, double, Algebra, Operations,
-          boost::numeric::odeint::initially_resizer> {
-  using base = boost::numeric::odeint::symplectic_nystroem_stepper_base<
-      12, 6, Coor, Coor, double, Coor, Coor, double, Algebra, Operations,
-      boost::numeric::odeint::initially_resizer>;
-
- public:
-  blanes_moan_srkn11b()
-      : base(detail::bm11b_odeint_drifts<12>(), detail::bm11b_odeint_kicks<12>()) {}
-};
-
+template <class Coor, class... AlgebraOps>
+using blanes_moan_srkn11b = coefficient_rkn<detail::BlanesMoan11b, Coor, AlgebraOps...>;
 // Blanes-Moan SRKN_14^a: order 6, 15 Odeint stages (last kick 0), 14 force evaluations per step.
-template <class Coor, class Algebra = typename boost::numeric::odeint::algebra_dispatcher<Coor>::algebra_type,
-          class Operations = typename boost::numeric::odeint::operations_dispatcher<Coor>::operations_type>
-class blanes_moan_srkn14a
-    : public boost::numeric::odeint::symplectic_nystroem_stepper_base<
-          15, 6, Coor, Coor, double, Coor, Coor, double, Algebra, Operations,
-          boost::numeric::odeint::initially_resizer> {
-  using base = boost::numeric::odeint::symplectic_nystroem_stepper_base<
-      15, 6, Coor, Coor, double, Coor, Coor, double, Algebra, Operations,
-      boost::numeric::odeint::initially_resizer>;
-
- public:
-  blanes_moan_srkn14a()
-      : base(detail::bm14a_odeint_drifts<15>(), detail::bm14a_odeint_kicks<15>()) {}
-};
-
-}  // namespace lrchain::sim
-
-namespace lrchain::sim {
-
+template <class Coor, class... AlgebraOps>
+using blanes_moan_srkn14a = coefficient_rkn<detail::BlanesMoan14a, Coor, AlgebraOps...>;
 // McLachlan SS17: order 8, 18 Odeint stages (last kick 0), 17 force evaluations per step.
-template <class Coor, class Algebra = typename boost::numeric::odeint::algebra_dispatcher<Coor>::algebra_type,
-          class Operations = typename boost::numeric::odeint::operations_dispatcher<Coor>::operations_type>
-class mclachlan_ss17
-    : public boost::numeric::odeint::symplectic_nystroem_stepper_base<
-          18, 8, Coor, Coor, double, Coor, Coor, double, Algebra, Operations,
-          boost::numeric::odeint::initially_resizer> {
-  using base = boost::numeric::odeint::symplectic_nystroem_stepper_base<
-      18, 8, Coor, Coor, double, Coor, Coor, double, Algebra, Operations,
-      boost::numeric::odeint::initially_resizer>;
-
- public:
-  mclachlan_ss17() : base(detail::ss17_odeint_drifts<18>(), detail::ss17_odeint_kicks<18>()) {}
-};
+template <class Coor, class... AlgebraOps>
+using mclachlan_ss17 = coefficient_rkn<detail::McLachlanSS17, Coor, AlgebraOps...>;
 
 }  // namespace lrchain::sim

@@ -1,0 +1,29 @@
+// JSON pieces shared by the run summaries (run_json.hpp).
+#include "run_json.hpp"
+
+#include <string>
+
+namespace lrchain::sim {
+
+nlohmann::json params_json(const Params& p) {
+  return {{"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}};
+}
+
+nlohmann::json integrator_json(const IntegratorOptions& o) {
+  return {{"stepper", std::string(to_string(o.stepper))},
+          {"abs_tol", o.abs_tol},
+          {"rel_tol", o.rel_tol},
+          {"dt", o.dt}};
+}
+
+void add_run_status(nlohmann::json& j, double t_end, bool interrupted, bool blew_up,
+                    const IntegrationStats& stats, double solve_seconds) {
+  j["t_end"] = t_end;
+  j["interrupted"] = interrupted;
+  j["blew_up"] = blew_up;
+  j["steps"] = stats.steps;
+  j["rhs_evaluations"] = stats.rhs_evaluations;
+  j["solve_seconds"] = solve_seconds;
+}
+
+}  // namespace lrchain::sim

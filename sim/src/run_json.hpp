@@ -1,0 +1,18 @@
+#pragma once
+// JSON pieces shared by the run summaries (bright, drive, modulated): model parameters,
+// integrator options, and the run status (time reached, interrupt, blow-up, work, solve time).
+// Private to sim/src.
+#include <nlohmann/json.hpp>
+
+#include "lrchain/params.hpp"
+#include "lrchain/sim/integrator.hpp"
+
+namespace lrchain::sim {
+
+nlohmann::json params_json(const Params& p);
+nlohmann::json integrator_json(const IntegratorOptions& o);
+// Sets t_end, interrupted, blew_up, steps, rhs_evaluations, solve_seconds.
+void add_run_status(nlohmann::json& j, double t_end, bool interrupted, bool blew_up,
+                    const IntegrationStats& stats, double solve_seconds);
+
+}  // namespace lrchain::sim
