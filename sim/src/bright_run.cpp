@@ -11,6 +11,7 @@
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
+#include "lrchain/sim/observation.hpp"
 
 namespace lrchain::sim {
 
@@ -80,11 +81,7 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
   std::vector<double> snap_times;
   for (double p : c.snapshot_periods)
     if (p >= 0 && p <= c.periods * (1 + 1e-12)) snap_times.push_back(std::min(p * Tb, t_end));
-  times.insert(times.end(), snap_times.begin(), snap_times.end());
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end(),
-                          [&](double a, double b) { return std::abs(a - b) <= 1e-9 * t_end; }),
-              times.end());
+  times = merge_observation_times(std::move(times), snap_times, t_end);
   const double st_every = c.spacetime_every * Tb;
 
   auto& rec = result.record;

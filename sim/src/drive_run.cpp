@@ -12,6 +12,7 @@
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
+#include "lrchain/sim/observation.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "run_json.hpp"
 
@@ -106,11 +107,7 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   std::vector<double> snap_times;
   for (double ts : c.snapshot_times)
     if (ts >= 0 && ts <= c.t_end * (1 + 1e-12)) snap_times.push_back(std::min(ts, c.t_end));
-  times.insert(times.end(), snap_times.begin(), snap_times.end());
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end(),
-                          [&](double a, double b) { return std::abs(a - b) <= 1e-9 * c.t_end; }),
-              times.end());
+  times = merge_observation_times(std::move(times), snap_times, c.t_end);
 
   auto& rec = result.record;
   rec.series.names = {"t", "energy", "front", "participation", "u0"};
@@ -146,15 +143,7 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
     }
     for (double ts : snap_times) {
       if (std::abs(ts - t) > 1e-9 * c.t_end) continue;
-      Snapshot snap;
-      snap.t = t;
-      snap.tag = fmt::format("t{:.1f}", t);
-      snap.names = {"n", "u", "v", "u_dot", "v_dot", "e"};
-      const double *u = L.primary(st), *v = L.secondary(st), *ud = L.primary_rate(st),
-                   *vd = L.secondary_rate(st);
-      for (std::size_t i = 0; i < beads; ++i)
-        snap.data.insert(snap.data.end(), {double(i + 1), u[i], v[i], ud[i], vd[i], e[i]});
-      rec.snapshots.push_back(std::move(snap));
+      rec.snapshots.push_back(displacement_snapshot(L, st, e.data(), t, fmt::format("t{:.1f}", t), 1));
       break;
     }
     if (control.progress) control.progress(t / c.t_end);

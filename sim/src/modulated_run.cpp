@@ -14,6 +14,7 @@
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
+#include "lrchain/sim/observation.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "run_json.hpp"
 
@@ -102,12 +103,10 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
     for (long k = long(std::floor(t0 / c.checkpoint_every)) + 1; double(k) * c.checkpoint_every < c.t_end; ++k)
       times.push_back(double(k) * c.checkpoint_every);
   times.push_back(c.t_end);
+  std::vector<double> snap_times;
   for (double ts : c.snapshot_times)
-    if (ts >= t0 && ts <= c.t_end) times.push_back(ts);
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end(),
-                          [&](double a, double b) { return std::abs(a - b) <= 1e-9 * c.t_end; }),
-              times.end());
+    if (ts >= t0 && ts <= c.t_end) snap_times.push_back(ts);
+  times = merge_observation_times(std::move(times), snap_times, c.t_end);
 
   auto& rec = result.record;
   rec.series.names = {"t", "energy", "contrast", "dark_centre", "dark_unwrapped"};
@@ -160,15 +159,7 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
     }
     for (double ts : c.snapshot_times) {
       if (!near(ts, t)) continue;
-      Snapshot snap;
-      snap.t = t;
-      snap.tag = fmt::format("t{:.0f}", t);
-      snap.names = {"n", "u", "v", "u_dot", "v_dot", "e"};
-      const double *u = L.primary(st), *v = L.secondary(st), *ud = L.primary_rate(st),
-                   *vd = L.secondary_rate(st);
-      for (std::size_t i = 0; i < N; ++i)
-        snap.data.insert(snap.data.end(), {double(i), u[i], v[i], ud[i], vd[i], e[i]});
-      rec.snapshots.push_back(std::move(snap));
+      rec.snapshots.push_back(displacement_snapshot(L, st, e.data(), t, fmt::format("t{:.0f}", t), 0));
       break;
     }
     if (c.checkpoint_every > 0 && t > t0) {
