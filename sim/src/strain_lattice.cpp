@@ -4,8 +4,26 @@
 #include <cstring>
 
 #include "lrchain/errors.hpp"
+#include "vector_loops.hpp"
 
 namespace lrchain::sim {
+
+namespace {
+
+// x_n'' = F_{n+1} - 2 F_n + F_{n-1} - kappa (x_n - y_n), y_n'' = (kappa/rho)(x_n - y_n)
+// (eq:Hertzd0S), F[i] = V'(x) at site i - 1 (one ghost entry on each side).
+LRCHAIN_VECTOR_CLONES
+void site_accelerations(const double* __restrict F, const double* __restrict x,
+                        const double* __restrict y, double* __restrict ax, double* __restrict ay,
+                        double kappa, double kappa_over_rho, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = x[i] - y[i];
+    ax[i] = F[i + 2] - 2.0 * F[i + 1] + F[i] - kappa * w;
+    ay[i] = kappa_over_rho * w;
+  }
+}
+
+}  // namespace
 
 StrainLattice::StrainLattice(const Params& p, std::size_t sites, StrainEnds ends)
     : params_(p), law_(make_contact_law(p)), layout_{sites}, ends_(ends) {
@@ -26,14 +44,7 @@ void StrainLattice::acceleration(const double* q, double* a) const {
   } else {
     F[0] = F[n + 1] = 0.0;  // V'(0) = 0 at x_{-N-1} = x_{N+1} = 0
   }
-  const double kappa = params_.kappa, kappa_over_rho = params_.kappa / params_.rho;
-  double* __restrict ax = a;
-  double* __restrict ay = a + n;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double w = x[i] - y[i];
-    ax[i] = F[i + 2] - 2.0 * F[i + 1] + F[i] - kappa * w;
-    ay[i] = kappa_over_rho * w;
-  }
+  site_accelerations(F, x, y, a, a + n, params_.kappa, params_.kappa / params_.rho, n);
 }
 
 void StrainLattice::operator()(const State& s, State& ds, double /*t*/) const {
