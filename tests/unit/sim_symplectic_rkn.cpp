@@ -147,3 +147,20 @@ TEST_CASE("symplectic steppers refuse a non-autonomous chain (prescribed end mot
                     InvalidParameter);
   }
 }
+
+TEST_CASE("srkn11b stops at the observation where the observer asks to (Ctrl-C path), counts kept" * doctest::test_suite("fast")) {
+  DisplacementBoundary b;
+  b.periodic = true;
+  const DisplacementLattice chain(Params{}, 24, b);
+  State s = rough_state(24);
+  std::vector<double> times;
+  for (int k = 0; k <= 10; ++k) times.push_back(1.0 * k);
+  IntegratorOptions opt;
+  opt.stepper = StepperKind::srkn11b;
+  opt.dt = 0.25;
+  const auto st = integrate_observed(chain, s, times, [](const State&, double t) { return t < 4.0; }, opt);
+  CHECK(st.stopped);
+  CHECK(st.t_reached == 4.0);
+  CHECK(st.steps == 16);                    // 4 intervals x 4 steps
+  CHECK(st.rhs_evaluations == 16 * 11 + 1);
+}

@@ -111,10 +111,11 @@ struct StagedAcceleration {
 
 // Integrates q'' = a(q) with a Blanes-Moan stepper from times.front() through the observation
 // times; each interval between observations is split into the fewest equal steps <= dt.
+// `steps` and `rhs_evaluations` are counted in place, so they stay right if obs throws to stop.
 template <class Stepper, class System, class Obs>
-std::size_t integrate_rkn_observed(const System& system, State& state,
-                                   const std::vector<double>& times, Obs& obs, double dt,
-                                   std::size_t& rhs_evaluations) {
+void integrate_rkn_observed(const System& system, State& state, const std::vector<double>& times,
+                            Obs& obs, double dt, std::size_t& steps,
+                            std::size_t& rhs_evaluations) {
   namespace odeint = boost::numeric::odeint;
   const std::size_t half = state.size() / 2;
   std::vector<double> q(state.begin(), state.begin() + half);
@@ -126,7 +127,6 @@ std::size_t integrate_rkn_observed(const System& system, State& state,
   shared.kick.assign(stepper.coef_b().begin(), stepper.coef_b().end());
   shared.fsal = stepper.coef_a()[0] == 0.0;
   StagedAcceleration<System> acc{&shared};
-  std::size_t steps = 0;
   for (std::size_t k = 0;; ++k) {
     obs(state, times[k]);
     if (k + 1 == times.size()) break;
@@ -138,7 +138,6 @@ std::size_t integrate_rkn_observed(const System& system, State& state,
     std::copy(q.begin(), q.end(), state.begin());
     std::copy(p.begin(), p.end(), state.begin() + half);
   }
-  return steps;
 }
 
 struct StopIntegration {};
@@ -211,17 +210,14 @@ IntegrationStats integrate_observed(const System& system, State& state,
       case StepperKind::ss17: {
         if constexpr (requires { system.acceleration(nullptr, nullptr, 0.0); }) {
           if (opt.stepper == StepperKind::srkn11b)
-            stats.steps = detail::integrate_rkn_observed<
-                blanes_moan_srkn11b<std::vector<double>, contiguous_algebra>>(
-                system, state, times, obs, opt.dt, stats.rhs_evaluations);
+            detail::integrate_rkn_observed<blanes_moan_srkn11b<std::vector<double>, contiguous_algebra>>(
+                system, state, times, obs, opt.dt, stats.steps, stats.rhs_evaluations);
           else if (opt.stepper == StepperKind::srkn14a)
-            stats.steps = detail::integrate_rkn_observed<
-                blanes_moan_srkn14a<std::vector<double>, contiguous_algebra>>(
-                system, state, times, obs, opt.dt, stats.rhs_evaluations);
+            detail::integrate_rkn_observed<blanes_moan_srkn14a<std::vector<double>, contiguous_algebra>>(
+                system, state, times, obs, opt.dt, stats.steps, stats.rhs_evaluations);
           else
-            stats.steps = detail::integrate_rkn_observed<
-                mclachlan_ss17<std::vector<double>, contiguous_algebra>>(
-                system, state, times, obs, opt.dt, stats.rhs_evaluations);
+            detail::integrate_rkn_observed<mclachlan_ss17<std::vector<double>, contiguous_algebra>>(
+                system, state, times, obs, opt.dt, stats.steps, stats.rhs_evaluations);
         } else {
           throw InvalidParameter("stepper", "srkn11b/srkn14a/ss17 need a system with acceleration()");
         }
