@@ -68,7 +68,7 @@ void read_series(ExperimentRun& run) {
 }  // namespace
 
 ExperimentRun run_experiment(const StepContext& ctx, const std::string& id, const std::string& config,
-                             const std::function<void(toml::table&)>& quick_edit, Section& section) {
+                             const ConfigEdit& edit, Section& section) {
   const fs::path source = ctx.examples / config;
   toml::table table;
   try {
@@ -77,7 +77,7 @@ ExperimentRun run_experiment(const StepContext& ctx, const std::string& id, cons
     throw std::runtime_error("cannot read experiment config " + source.string() + ": " +
                              std::string(e.description()));
   }
-  if (!ctx.full && quick_edit) quick_edit(table);
+  if (edit) edit(table, ctx.full);
   if (auto* output = table["output"].as_table()) output->erase("dir");
   std::ostringstream text;
   text << "# written by `lrchain reproduce --" << (ctx.full ? "full" : "quick") << "` from examples/"

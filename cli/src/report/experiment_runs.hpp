@@ -31,10 +31,11 @@ struct ExperimentRun {
   std::size_t column(const std::string& name) const;  // index in series_names (throws if absent)
 };
 
-// Copies examples/<config> to configs/<id>.toml (after `edit`, if the run is quick and edit is
-// set), runs it into <id>/ and reads summary.json and series.csv.
+// Copies examples/<config> to configs/<id>.toml (after `edit(config, ctx.full)`, if set), runs it
+// into <id>/ and reads summary.json and series.csv.
+using ConfigEdit = std::function<void(toml::table&, bool full)>;
 ExperimentRun run_experiment(const StepContext& ctx, const std::string& id, const std::string& config,
-                             const std::function<void(toml::table&)>& quick_edit, Section& section);
+                             const ConfigEdit& edit, Section& section);
 
 // Sets table[key] = value inside the sub-table `table_name` of a config.
 void set_config(toml::table& config, const std::string& table_name, const std::string& key,

@@ -120,7 +120,7 @@ Section acoustic_bond(const StepContext& ctx) {
   s.id = "dark_acoustic_bond";
   s.title = "Acoustic bond-centred branch, rho = 1/3 (Fig. 23)";
   CsvTable t;
-  const json j = run_branch(ctx, {"acoustic_bond_rho_1_3", "1/3", "acoustic", "bond", "1.41", 40, 100}, s, t);
+  const json j = run_branch(ctx, {"acoustic_bond_rho_1_3", "1/3", "acoustic", "bond", "1.41", 80, 150}, s, t);
   s.intro = "Continuation from omega_b = 1.41 (omega_acs = 1.4142). " + branch_facts(j, t);
   s.figures.push_back({"dark/acoustic_bond_rho_1_3/branch.png", "Fig. 23 (fig:acs_floq_bc_r03), left",
                        "Renormalised l2 norm of bond-centred acoustic dark breathers versus omega_b."});

@@ -55,7 +55,8 @@ Section exp7(const StepContext& ctx) {
   Section s;
   s.id = "exp7";
   s.title = "Experiment 7: modulated acoustic wave, periodic chain N = 401 (Sec. 5.1, Fig. 16)";
-  const auto run = run_experiment(ctx, s.id, "exp7_modulated_dark.toml", [](toml::table& t) {
+  const auto run = run_experiment(ctx, s.id, "exp7_modulated_dark.toml", [](toml::table& t, bool full) {
+    if (full) return;
     set_config(t, "modulated", "t_end", toml::value<double>(33000.0));
     set_config(t, "modulated", "checkpoint_every", toml::value<double>(0.0));
   }, s);
