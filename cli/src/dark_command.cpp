@@ -255,18 +255,21 @@ void run_continue(const DarkArgs& a) {
 }  // namespace
 
 void register_dark(CLI::App& app) {
-  auto* dark = app.add_subcommand("dark", "exact stationary dark breathers (Sec. 5.3-5.4)");
+  auto* dark = app.add_subcommand(
+      "dark", "Exact stationary dark breathers (Secs. 5.3-5.4): shooting Newton on the period-T_b map, "
+              "continuation in omega_b, Floquet stability");
   dark->require_subcommand(1);
   auto args = std::make_shared<DarkArgs>();
   auto* solve_cmd = dark->add_subcommand("solve", "Newton solve from the eq:xy_app seed");
   add_common(*solve_cmd, *args);
   solve_cmd->callback([args] { run_solve(*args, false); });
-  auto* floq = dark->add_subcommand("floquet", "solve, then Floquet multipliers (Sec. 5.4)");
+  auto* floq = dark->add_subcommand("floquet", "Solve, then the Floquet multipliers of the monodromy matrix (Sec. 5.4)");
   add_common(*floq, *args);
   floq->add_flag("--full-monodromy", args->full_monodromy,
                  "integrate the full period (check of the reversible reduction)");
   floq->callback([args] { run_solve(*args, true); });
-  auto* cont = dark->add_subcommand("continue", "pseudo-arclength continuation in omega_b with Floquet");
+  auto* cont = dark->add_subcommand(
+      "continue", "Pseudo-arclength continuation in omega_b through turning points, Floquet at every point");
   add_common(*cont, *args);
   cont->add_option("--points", args->points, "maximum number of branch points, the first included (default 100; e.g. --points 10 for a quick run)");
   add_number(*cont, "--ds", args->ds, "initial pseudo-arclength step in (Z(0), omega_b), dimensionless, adapted between 1e-5 and 1 (default 0.1)");
