@@ -37,6 +37,11 @@ using ConfigEdit = std::function<void(toml::table&, bool full)>;
 ExperimentRun run_experiment(const StepContext& ctx, const std::string& id, const std::string& config,
                              const ConfigEdit& edit, Section& section);
 
+// j[key] if it is a number, else not_computed.
+inline double json_number(const nlohmann::json& j, const std::string& key) {
+  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : not_computed;
+}
+
 // Sets table[key] = value inside the sub-table `table_name` of a config.
 void set_config(toml::table& config, const std::string& table_name, const std::string& key,
                 toml::node&& value);

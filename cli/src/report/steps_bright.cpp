@@ -12,17 +12,15 @@ namespace {
 
 using nlohmann::json;
 
-double get(const json& j, const std::string& key) {
-  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : not_computed;
-}
-
 std::string run_facts(const json& s) {
-  return fmt::format(
-      "Run: N = {} (strain sites -N..N), {} T_b = {:.2f} time units, {} stepper (tol {:g}); "
-      "relative energy drift {:.1e}; {} RHS evaluations, {:.2f} s solve.",
-      s.value("N", 0), s.value("periods", 0.0), s.value("t_end", 0.0),
-      s["integrator"].value("stepper", std::string("?")), s["integrator"].value("rel_tol", 0.0),
-      s.value("max_relative_energy_drift", 0.0), s.value("rhs_evaluations", 0), s.value("solve_seconds", 0.0));
+  const std::string drift = s.contains("max_relative_energy_drift")
+                                ? fmt::format("relative energy drift {:.1e}", s["max_relative_energy_drift"].get<double>())
+                                : std::string("energy not conserved (driven ends)");
+  return fmt::format("Run: N = {} (strain sites -N..N), {} T_b = {:.2f} time units, {} stepper (tol {:g}, dt {:g}); "
+                     "{}; {} RHS evaluations, {:.2f} s solve.",
+                     s.value("N", 0), s.value("periods", 0.0), s.value("t_end", 0.0),
+                     s["integrator"].value("stepper", std::string("?")), s["integrator"].value("rel_tol", 0.0),
+                     s["integrator"].value("dt", 0.0), drift, s.value("rhs_evaluations", 0), s.value("solve_seconds", 0.0));
 }
 
 void add_figures(Section& s, const std::string& id, const std::string& snap_fig, const std::string& snap_caption,
@@ -42,10 +40,10 @@ Section exp1(const StepContext& ctx) {
   const json& j = run.summary;
   const double c = j["ansatz"]["group_velocity"].get<double>();
   s.intro = "Paper's size and length. " + run_facts(j);
-  s.rows.push_back(below_row("max_t E_x(t), t <= 200 T_b", "Sec. 4.2", "< 3.5 %", 0.035, get(j, "max_E_x")));
-  s.rows.push_back(below_row("max_t E_y(t), t <= 200 T_b", "Sec. 4.2", "< 3.5 %", 0.035, get(j, "max_E_y")));
+  s.rows.push_back(below_row("max_t E_x(t), t <= 200 T_b", "Sec. 4.2", "< 3.5 %", 0.035, json_number(j, "max_E_x")));
+  s.rows.push_back(below_row("max_t E_y(t), t <= 200 T_b", "Sec. 4.2", "< 3.5 %", 0.035, json_number(j, "max_E_y")));
   s.rows.push_back(equals_row("speed of the energy centre X(t) (eq:ectr)", "Sec. 4.2", "~ c_+ ~ 0.23", 0.23,
-                              get(j, "centre_speed"), 0.005, fmt::format("least-squares slope; c_+ = {:.5f}", c)));
+                              json_number(j, "centre_speed"), 0.005, fmt::format("least-squares slope; c_+ = {:.5f}", c)));
   add_figures(s, s.id, "Fig. 6 (fig:focus1)",
               "Snapshots of x_n, y_n (lattice) against the NLS ansatz at t = 0, 50.125 T_b, 200 T_b, and the "
               "relative errors E_x(t), E_y(t).",
@@ -60,12 +58,12 @@ Section exp2(const StepContext& ctx) {
   const auto run = run_experiment(ctx, s.id, "exp2_optical_pi8.toml", {}, s);
   const json& j = run.summary;
   s.intro = "Paper's size and length (150 T_b). " + run_facts(j);
-  s.rows.push_back(equals_row("||x_n(0)||_inf", "Sec. 4.2", "~ 0.208", 0.208, get(j, "x0_inf"), 5e-4, "",
+  s.rows.push_back(equals_row("||x_n(0)||_inf", "Sec. 4.2", "~ 0.208", 0.208, json_number(j, "x0_inf"), 5e-4, "",
                               "Lattice simulator"));
   const json w = j.value("error_window", json::object());
-  s.rows.push_back(below_row("max E_x(t) for t <= 150", "Sec. 4.2", "< 3 %", 0.03, get(w, "max_E_x"), "",
+  s.rows.push_back(below_row("max E_x(t) for t <= 150", "Sec. 4.2", "< 3 %", 0.03, json_number(w, "max_E_x"), "",
                              "Lattice simulator"));
-  s.rows.push_back(below_row("max E_y(t) for t <= 150", "Sec. 4.2", "< 3 %", 0.03, get(w, "max_E_y"), "",
+  s.rows.push_back(below_row("max E_y(t) for t <= 150", "Sec. 4.2", "< 3 %", 0.03, json_number(w, "max_E_y"), "",
                              "Lattice simulator"));
   add_figures(s, s.id, "Fig. 8 (fig:focus4)", "Snapshot at t = 150 T_b against the ansatz, and E_x(t), E_y(t).",
               "Fig. 9 (fig:focus5)", "Energy density and energy centre: the energy spreads towards both ends later on.");
@@ -81,7 +79,7 @@ Section exp3(const StepContext& ctx) {
   const double c = j["ansatz"]["group_velocity"].get<double>();
   s.intro = "Paper's size and length. " + run_facts(j);
   s.rows.push_back(equals_row("speed of the energy centre / c_+", "Sec. 4.2", "~ 1 (moves at ~ c_+)", 1.0,
-                              get(j, "centre_speed") / c, speed_tolerance, fmt::format("c_+ = {:.5f}", c)));
+                              json_number(j, "centre_speed") / c, speed_tolerance, fmt::format("c_+ = {:.5f}", c)));
   // "growing trend of the relative error ... from the very beginning": E_x at the end against
   // the largest E_x over the first 10 T_b.
   double early = 0;
@@ -90,7 +88,7 @@ Section exp3(const StepContext& ctx) {
   for (const auto& r : run.series)
     if (r[t] <= 10 * Tb) early = std::max(early, r[ex]);
   Comparison grow = below_row("max E_x over t <= 10 T_b / E_x(200 T_b)", "Sec. 4.2", "< 1 (error grows)", 1.0,
-                              early / get(j, "final_E_x"));
+                              early / json_number(j, "final_E_x"));
   s.rows.push_back(grow);
   add_figures(s, s.id, "Fig. 10 (fig:focus6), left", "Snapshot at t = 200 T_b against the ansatz, and E_x(t), E_y(t).",
               "Fig. 10 (fig:focus6), right", "Energy density: the growing tail behind the breather.");
@@ -104,10 +102,10 @@ void secondary_rows(Section& s, const json& j, double c_opt, const std::string& 
   std::string note = "not found behind the parent";
   if (j.contains("trailing_structure") && j["trailing_structure"].value("found", false)) {
     const json& t = j["trailing_structure"];
-    speed = get(t, "speed");
-    y_over_x = get(t, "y_over_x");
+    speed = json_number(t, "speed");
+    y_over_x = json_number(t, "y_over_x");
     note = fmt::format("speed {:.4f} fitted from t = {:g}, y/x = {:.2f}, max|x| = {:.2g}; c_+ = {:.4f} at this theta",
-                       speed, get(t, "fit_start"), y_over_x, get(t, "max_abs_x"), c_opt);
+                       speed, json_number(t, "fit_start"), y_over_x, json_number(t, "max_abs_x"), c_opt);
   }
   s.rows.push_back(below_row("y/x of the secondary breather behind the parent (< 0: optical)", where,
                              "optical breather", 0.0, y_over_x, note));
@@ -160,9 +158,9 @@ Section exp4b(const StepContext& ctx, bool emitting) {
     s.rows.push_back(equals_row("secondary breather behind the parent (1 = found)", "Sec. 4.2", "none (0)", 0.0,
                                 found ? 1.0 : 0.0, 0,
                                 found ? fmt::format("found: speed {:.4f}, y/x = {:.2f}, max|x| = {:.2g} (as in exp4b; docs/simulator.md)",
-                                                    get(j["trailing_structure"], "speed"),
-                                                    get(j["trailing_structure"], "y_over_x"),
-                                                    get(j["trailing_structure"], "max_abs_x"))
+                                                    json_number(j["trailing_structure"], "speed"),
+                                                    json_number(j["trailing_structure"], "y_over_x"),
+                                                    json_number(j["trailing_structure"], "max_abs_x"))
                                       : "no localised structure behind the parent"));
   }
   add_figures(s, s.id, emitting ? "Sec. 4.2 (no figure in the paper)" : "Fig. 12 (fig:focus_nano)",
@@ -182,10 +180,10 @@ Section exp5(const StepContext& ctx) {
   const double c = j["ansatz"]["group_velocity"].get<double>();
   s.intro = "Paper's size and length. " + run_facts(j);
   s.rows.push_back(equals_row("speed of the optical breather (energy centre)", "Sec. 4.3", "~ c_+ ~ 0.6", 0.6,
-                              get(j, "centre_speed"), 0.6 * speed_tolerance, fmt::format("c_+ = {:.5f}", c)));
+                              json_number(j, "centre_speed"), 0.6 * speed_tolerance, fmt::format("c_+ = {:.5f}", c)));
   if (j.contains("acoustic_train_speed"))
     s.rows.push_back(equals_row("speed of the acoustic train", "Sec. 4.3", "~ c_- ~ 0.0754", 0.0754,
-                                get(j, "acoustic_train_speed"), 0.0754 * 0.1));
+                                json_number(j, "acoustic_train_speed"), 0.0754 * 0.1));
   add_figures(s, s.id, "Fig. 13 (fig:focus_opt_r10), left", "Snapshots against the optical ansatz, E_x(t), E_y(t).",
               "Fig. 13 (fig:focus_opt_r10), right", "Energy density: the optical breather moving right at ~ c_+.");
   return s;

@@ -42,6 +42,29 @@ std::string branch_facts(const json& j, const CsvTable& t) {
                      t.cells.size(), lo, hi, j.value("sites", 0), j.value("stop_reason", std::string("?")), worst);
 }
 
+struct BranchFigures {
+  std::string branch_figure, branch_caption, moduli_figure, moduli_caption;
+};
+
+// A section for one continued branch: runs it, states what was computed, adds both figures.
+Section branch_section(const StepContext& ctx, const std::string& id, const std::string& title,
+                       const BranchRun& run, const BranchFigures& figures, CsvTable& table, json& summary) {
+  Section s;
+  s.id = id;
+  s.title = title;
+  summary = run_branch(ctx, run, s, table);
+  s.intro = "Pseudo-arclength continuation in omega_b from " + run.start + ", Floquet multipliers at every point. " +
+            branch_facts(summary, table);
+  const std::string dir = "dark/" + run.sub + "/";
+  s.figures.push_back({dir + "branch.png", figures.branch_figure, figures.branch_caption});
+  s.figures.push_back({dir + "floquet_moduli.png", figures.moduli_figure, figures.moduli_caption});
+  return s;
+}
+
+const std::string moduli_legend =
+    "Moduli of the Floquet multipliers outside the unit circle versus omega_b, weakly (top) and strongly (bottom) "
+    "nonlinear parts; blue complex, red real > 0, green real < 0.";
+
 Section solutions(const StepContext& ctx) {
   Section s;
   s.id = "dark_solutions";
@@ -76,57 +99,47 @@ double branch_max(const CsvTable& t, const std::string& column) {
 }
 
 Section optical_bond(const StepContext& ctx) {
-  Section s;
-  s.id = "dark_optical_bond";
-  s.title = "Optical bond-centred branch, rho = 1/3 (Figs. 18 left, 20 left, 21)";
   CsvTable t;
-  const json j = run_branch(ctx, {"optical_bond_rho_1_3", "1/3", "optical", "bond", "2.44", 70, 140}, s, t);
-  s.intro = "Pseudo-arclength continuation in omega_b from 2.44 (near omega_opt = 2.4495), Floquet multipliers at "
-            "every point. " + branch_facts(j, t);
+  json j;
+  Section s = branch_section(
+      ctx, "dark_optical_bond", "Optical bond-centred branch, rho = 1/3 (Figs. 18 left, 20 left)",
+      {"optical_bond_rho_1_3", "1/3", "optical", "bond", "2.44", 70, 140},
+      {"Fig. 18 (fig:r03_norm), left",
+       "Renormalised l2 norm (eq:l2norm) of bond-centred optical dark breathers versus omega_b; red: real "
+       "instability; vertical line: omega_opt = 2.4495.",
+       "Fig. 20 (fig:opt_floq_r03), left", moduli_legend},
+      t, j);
   double turning = not_computed;
   for (const auto& tp : j.value("turning_points", json::array()))
     if (std::isnan(turning) || std::abs(tp.get<double>() - 2.37) < std::abs(turning - 2.37)) turning = tp.get<double>();
   s.rows.push_back(equals_row("turning point of the branch", "Sec. 5.3, Fig. 18", "omega_b ~ 2.37", 2.37, turning, 0.005));
   Comparison pd = below_row("largest period-doubling multiplier modulus (real < -1)", "Sec. 5.4, Fig. 20",
-                            "> 1 (period doubling, bond-centred)", 1.0, branch_max(t, "max_period_doubling"));
+                            "> 1 (period doubling, bond-centred)", 1.0 + 1e-6, branch_max(t, "max_period_doubling"));
   pd.claim = Claim::above;
-  pd.paper = 1.0 + 1e-6;
   s.rows.push_back(pd);
-  s.figures.push_back({"dark/optical_bond_rho_1_3/branch.png", "Fig. 18 (fig:r03_norm), left",
-                       "Renormalised l2 norm (eq:l2norm) of bond-centred optical dark breathers versus omega_b; "
-                       "red: real instability; vertical line: omega_opt."});
-  s.figures.push_back({"dark/optical_bond_rho_1_3/floquet_moduli.png", "Fig. 20 (fig:opt_floq_r03), left",
-                       "Moduli of the Floquet multipliers outside the unit circle versus omega_b, weakly (top) and "
-                       "strongly (bottom) nonlinear parts; blue complex, red real > 0, green real < 0."});
   return s;
 }
 
 Section optical_site(const StepContext& ctx) {
-  Section s;
-  s.id = "dark_optical_site";
-  s.title = "Optical site-centred branch, rho = 1/3 (Figs. 18 right, 20 right)";
   CsvTable t;
-  const json j = run_branch(ctx, {"optical_site_rho_1_3", "1/3", "optical", "site", "2.44", 70, 140}, s, t);
-  s.intro = "Continuation from omega_b = 2.44 with Floquet multipliers at every point. " + branch_facts(j, t);
-  s.figures.push_back({"dark/optical_site_rho_1_3/branch.png", "Fig. 18 (fig:r03_norm), right",
-                       "Renormalised l2 norm of site-centred optical dark breathers versus omega_b; red: real instability."});
-  s.figures.push_back({"dark/optical_site_rho_1_3/floquet_moduli.png", "Fig. 20 (fig:opt_floq_r03), right",
-                       "Floquet moduli of the site-centred branch (weakly / strongly nonlinear)."});
-  return s;
+  json j;
+  return branch_section(ctx, "dark_optical_site", "Optical site-centred branch, rho = 1/3 (Figs. 18 right, 20 right)",
+                        {"optical_site_rho_1_3", "1/3", "optical", "site", "2.44", 70, 140},
+                        {"Fig. 18 (fig:r03_norm), right",
+                         "Renormalised l2 norm of site-centred optical dark breathers versus omega_b; red: real instability.",
+                         "Fig. 20 (fig:opt_floq_r03), right", moduli_legend},
+                        t, j);
 }
 
 Section acoustic_bond(const StepContext& ctx) {
-  Section s;
-  s.id = "dark_acoustic_bond";
-  s.title = "Acoustic bond-centred branch, rho = 1/3 (Fig. 23)";
   CsvTable t;
-  const json j = run_branch(ctx, {"acoustic_bond_rho_1_3", "1/3", "acoustic", "bond", "1.41", 80, 150}, s, t);
-  s.intro = "Continuation from omega_b = 1.41 (omega_acs = 1.4142). " + branch_facts(j, t);
-  s.figures.push_back({"dark/acoustic_bond_rho_1_3/branch.png", "Fig. 23 (fig:acs_floq_bc_r03), left",
-                       "Renormalised l2 norm of bond-centred acoustic dark breathers versus omega_b."});
-  s.figures.push_back({"dark/acoustic_bond_rho_1_3/floquet_moduli.png", "Fig. 23 (fig:acs_floq_bc_r03), right",
-                       "Floquet moduli of the acoustic branch (weakly / strongly nonlinear)."});
-  return s;
+  json j;
+  return branch_section(ctx, "dark_acoustic_bond", "Acoustic bond-centred branch, rho = 1/3 (Fig. 23)",
+                        {"acoustic_bond_rho_1_3", "1/3", "acoustic", "bond", "1.41", 80, 150},
+                        {"Fig. 23 (fig:acs_floq_bc_r03), left",
+                         "Renormalised l2 norm of bond-centred acoustic dark breathers versus omega_b (omega_acs = 1.4142).",
+                         "Fig. 23 (fig:acs_floq_bc_r03), right", moduli_legend},
+                        t, j);
 }
 
 // Largest real multiplier > 0 at the weakly nonlinear branch point closest to omega (within
@@ -144,13 +157,18 @@ double real_multiplier_near(const CsvTable& t, double omega, double& at) {
 }
 
 Section rho1(const StepContext& ctx, const std::string& center) {
-  Section s;
-  s.id = "dark_rho1_" + center;
   const bool bond = center == "bond";
-  s.title = "Optical " + center + "-centred branch, rho = 1 (Figs. 19, 24" + (bond ? ", 25)" : ")");
+  const std::string side = bond ? "left" : "right";
   CsvTable t;
-  const json j = run_branch(ctx, {"optical_" + center + "_rho_1", "1", "optical", center, "2.28", 50, 140}, s, t);
-  s.intro = "Continuation from omega_b = 2.28 (omega_opt = 2.2882). " + branch_facts(j, t);
+  json j;
+  Section s = branch_section(
+      ctx, "dark_rho1_" + center, "Optical " + center + "-centred branch, rho = 1 (Figs. 19, 24" + (bond ? ", 25)" : ")"),
+      {"optical_" + center + "_rho_1", "1", "optical", center, "2.28", 50, 140},
+      {"Fig. 19 (fig:r1_norm), " + side,
+       "Renormalised l2 norm of " + center + "-centred optical dark breathers, rho = 1 (omega_opt = 2.2882); red: "
+       "real instability.",
+       "Fig. 24 (fig:opt_floq_r1), " + side, moduli_legend},
+      t, j);
   double at = not_computed;
   const double max_real = real_multiplier_near(t, 2.207, at);
   Comparison real = below_row("largest real multiplier > 0 at omega_b ~ 2.207 (weakly nonlinear, " + center + "-centred)",
@@ -160,11 +178,6 @@ Section rho1(const StepContext& ctx, const std::string& center) {
                               bond ? "Dark breathers" : "");
   real.claim = Claim::above;
   s.rows.push_back(real);
-  const std::string side = bond ? "left" : "right";
-  s.figures.push_back({"dark/optical_" + center + "_rho_1/branch.png", "Fig. 19 (fig:r1_norm), " + side,
-                       "Renormalised l2 norm of " + center + "-centred optical dark breathers, rho = 1; red: real instability."});
-  s.figures.push_back({"dark/optical_" + center + "_rho_1/floquet_moduli.png", "Fig. 24 (fig:opt_floq_r1), " + side,
-                       "Floquet moduli for rho = 1, weakly / strongly nonlinear."});
   return s;
 }
 

@@ -11,13 +11,8 @@ namespace {
 
 using nlohmann::json;
 
-double get(const json& j, const std::string& key) {
-  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : not_computed;
-}
-
-void add_existing_figures(Section& s, const std::string& id, const json& j,
-                          const std::vector<Figure>& wanted) {
-  (void)j;
+// The run's figures, files relative to its directory `id`.
+void add_figures(Section& s, const std::string& id, const std::vector<Figure>& wanted) {
   for (const auto& f : wanted) s.figures.push_back({id + "/" + f.file, f.paper_figure, f.caption});
 }
 
@@ -27,24 +22,24 @@ Section exp6(const StepContext& ctx) {
   s.title = "Experiment 6: boundary-driven chain, rho = 10 (Sec. 4.3, Figs. 14, 15)";
   const auto run = run_experiment(ctx, s.id, "exp6_drive_rho10.toml", {}, s);
   const json& j = run.summary;
-  const double c = get(j, "group_velocity");
+  const double c = json_number(j, "group_velocity");
   s.intro = fmt::format(
       "Paper's size and length: {} beads, clamped end, u_0(t) = A0 sin(omega0 t) chi(t), t <= {}; {} stepper "
       "(tol {:g}), {} RHS evaluations, {:.1f} s solve.",
       j.value("beads", 0), j.value("t_end", 0.0), j["integrator"].value("stepper", std::string("?")),
       j["integrator"].value("rel_tol", 0.0), j.value("rhs_evaluations", 0), j.value("solve_seconds", 0.0));
   s.rows.push_back(equals_row("front speed of the driven wave / c_+(theta)", "Sec. 4.3",
-                              "~ 1 (pattern between n = 0 and c_+ t)", 1.0, get(j, "front_speed") / c, 0.05,
+                              "~ 1 (pattern between n = 0 and c_+ t)", 1.0, json_number(j, "front_speed") / c, 0.05,
                               fmt::format("c_+ = {:.5f}; front = last n with e_n > 10 % of max, fitted over t in [100, 700]", c)));
   s.rows.push_back(equals_row("support of the wave pattern after t_m (participation number of e_n)", "Sec. 4.3",
-                              "~ 200 sites", 200, get(j, "max_participation"), 50,
+                              "~ 200 sites", 200, json_number(j, "max_participation"), 50,
                               "(sum e_n)^2 / sum e_n^2, largest value; a participation number, not the paper's visual estimate"));
   Comparison peaks = below_row("energy peaks at t = 2400 (multibreather: a train of breathers)", "Sec. 4.3",
-                               "> 1 (train of breathers)", 1, get(j, "final_peaks"),
+                               "> 1 (train of breathers)", 1, json_number(j, "final_peaks"),
                                "local maxima of 3-site smoothed e_n above 10 % of the maximum");
   peaks.claim = Claim::above;
   s.rows.push_back(peaks);
-  add_existing_figures(s, s.id, j,
+  add_figures(s, s.id,
                        {{"energy.png", "Fig. 14 (fig:spatio)", "Energy density e_n(t) of the driven chain (left) and a zoom."},
                         {"snapshots.png", "Fig. 15 (fig:spatio:stab1)",
                          "Bead velocities du_n/dt at t = 779.9 (periodic wave) and t = 2400 (travelling multibreather)."}});
@@ -69,12 +64,12 @@ Section exp7(const StepContext& ctx) {
       j.value("N", 0), j["integrator"].value("stepper", std::string("?")), j["integrator"].value("dt", 0.0),
       j.value("max_relative_energy_drift", 0.0), j.value("solve_seconds", 0.0));
   s.rows.push_back(equals_row("onset of the oscillatory instability", "Sec. 5.1", "t ~ 16300", 16300,
-                              get(j, "instability_time"), 16300 * 0.05,
+                              json_number(j, "instability_time"), 16300 * 0.05,
                               fmt::format("first t where the contrast (max - min)/mean of smoothed e_n exceeds {}",
                                           j.value("contrast_threshold", 0.0))));
   s.rows.push_back(equals_row("speed of the travelling dark breather", "Sec. 5.1", "c_db ~ 0.3", 0.3,
-                              get(j, "dark_speed"), 0.05, "slope of the minimum of smoothed e_n over t in [30000, 33000]"));
-  add_existing_figures(s, s.id, j,
+                              json_number(j, "dark_speed"), 0.05, "slope of the minimum of smoothed e_n over t in [30000, 33000]"));
+  add_figures(s, s.id,
                        {{"snapshots.png", "Fig. 16 (midarkb), velocity panels",
                          "Bead velocities du_n/dt at t = 0, 17100 (short-wavelength instability) and 32400 (dark breather)."},
                         {"energy.png", "Fig. 16 (midarkb), bottom right", "Energy density e_n(t) in grey levels."}});
