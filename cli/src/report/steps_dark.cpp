@@ -181,6 +181,50 @@ Section rho1(const StepContext& ctx, const std::string& center) {
   return s;
 }
 
+Section rho10_optical(const StepContext& ctx) {
+  CsvTable t;
+  json j;
+  Section s = branch_section(ctx, "dark_rho10_optical", "Optical bond-centred branch, rho = 10 (Sec. 5.4)",
+                             {"optical_bond_rho_10", "10", "optical", "bond", "2.235", 40, 120},
+                             {"Sec. 5.3 (no figure in the paper)",
+                              "Renormalised l2 norm of bond-centred optical dark breathers, rho = 10 (omega_opt = 2.2406).",
+                              "Sec. 5.4 (no figure in the paper)", moduli_legend},
+                             t, j);
+  // "the oscillatory instability appears to set in already in the immediate vicinity of the
+  // linear limit at the edge of the optical band": the first branch point, 0.0056 below the edge.
+  Comparison first = below_row("largest oscillatory multiplier modulus at the branch point nearest the band edge",
+                               "Sec. 5.4", "> 1 (oscillatory instability next to the edge)", 1.0 + 1e-6,
+                               t.cells.empty() ? not_computed : t.number(0, "max_oscillatory"),
+                               t.cells.empty() ? "" : fmt::format("omega_b = {:.4f}, edge {:.4f}", t.number(0, "omega_b"),
+                                                                  j.value("omega_edge", 0.0)));
+  first.claim = Claim::above;
+  s.rows.push_back(first);
+  return s;
+}
+
+Section rho01_acoustic(const StepContext& ctx) {
+  CsvTable t;
+  json j;
+  Section s = branch_section(ctx, "dark_rho01_acoustic", "Acoustic bond-centred branch, rho = 0.1 (Sec. 5.4)",
+                             {"acoustic_bond_rho_0.1", "0.1", "acoustic", "bond", "1.85", 70, 150},
+                             {"Sec. 5.3 (no figure in the paper)",
+                              "Renormalised l2 norm of bond-centred acoustic dark breathers, rho = 0.1 (omega_acs = 1.8625).",
+                              "Sec. 5.4 (no figure in the paper)", moduli_legend},
+                             t, j);
+  // "the real instability of some of the weakly nonlinear solutions is again more significant
+  // than the oscillatory instability": weakly nonlinear points where max real > max oscillatory.
+  int dominant = 0;
+  for (std::size_t i = 0; i < t.cells.size(); ++i) {
+    if (i > 0 && t.number(i, "omega_b") > t.number(i - 1, "omega_b")) break;  // past the turning point
+    if (t.number(i, "max_real") > 1 + 1e-6 && t.number(i, "max_real") > t.number(i, "max_oscillatory")) ++dominant;
+  }
+  Comparison real = below_row("weakly nonlinear branch points where the real instability exceeds the oscillatory one",
+                              "Sec. 5.4", "some (> 0)", 0.0, dominant);
+  real.claim = Claim::above;
+  s.rows.push_back(real);
+  return s;
+}
+
 }  // namespace
 
 std::vector<Step> dark_steps() {
@@ -189,7 +233,9 @@ std::vector<Step> dark_steps() {
           {"dark_optical_site", "Optical site-centred branch", 40, optical_site},
           {"dark_acoustic_bond", "Acoustic bond-centred branch", 25, acoustic_bond},
           {"dark_rho1_bond", "Optical bond-centred branch, rho = 1", 35, [](const StepContext& c) { return rho1(c, "bond"); }},
-          {"dark_rho1_site", "Optical site-centred branch, rho = 1", 35, [](const StepContext& c) { return rho1(c, "site"); }}};
+          {"dark_rho1_site", "Optical site-centred branch, rho = 1", 35, [](const StepContext& c) { return rho1(c, "site"); }},
+          {"dark_rho10_optical", "Optical branch, rho = 10", 10, rho10_optical},
+          {"dark_rho01_acoustic", "Acoustic branch, rho = 0.1", 40, rho01_acoustic}};
 }
 
 }  // namespace lrchain::report
