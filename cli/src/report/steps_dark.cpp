@@ -225,6 +225,65 @@ Section rho01_acoustic(const StepContext& ctx) {
   return s;
 }
 
+// Direct integration from an exact solution (`lrchain dark evolve`): E_b(t) (eq:relerr) and the
+// position of the amplitude dip over time.
+json evolve(const StepContext& ctx, Section& s, const std::string& sub, const std::string& rho,
+            const std::string& center, const std::string& omega_b, const std::string& t_end) {
+  const auto dir = ctx.out / "dark" / sub;
+  const json j = run_lrchain(ctx,
+                             {"dark", "evolve", "--rho", rho, "--edge", "optical", "--center", center, "--omega-b",
+                              omega_b, "--t-end", t_end, "--samples", "12", "--quiet", "--out", dir.string()},
+                             dir, "summary", s.commands);
+  s.links.push_back("dark/" + sub + "/evolution.csv");
+  return j;
+}
+
+Section evolution_long_lived(const StepContext& ctx) {
+  Section s;
+  s.id = "dark_evolution_2.4255";
+  s.title = "Long-lived bond-centred dark breather, rho = 1/3, omega_b = 2.4255 (Fig. 21)";
+  s.intro = "Exact solution integrated to t = 1200 with periodic ends.";
+  const json j = evolve(ctx, s, "evolve_bond_2.4255", "1/3", "bond", "2.4255", "1200");
+  s.rows.push_back(below_row("E_b(1200) (eq:relerr)", "Sec. 5.4", "< 2e-4", 2e-4, json_number(j, "E_b_end")));
+  s.figures.push_back({"dark/evolve_bond_2.4255/evolution.png", "Fig. 21 (fig:opt_bc_r03_wb24255), right",
+                       "Snapshots at t = 0 and 1200 and space-time plots of x_n and y_n (one row per period)."});
+  return s;
+}
+
+Section evolution_destroyed(const StepContext& ctx) {
+  Section s;
+  s.id = "dark_evolution_2.40";
+  s.title = "Unstable site-centred dark breather, rho = 1/3, omega_b = 2.40 (Fig. 22)";
+  s.intro = "Exact solution integrated to t = 500 with periodic ends.";
+  const json j = evolve(ctx, s, "evolve_site_2.40", "1/3", "site", "2.40", "500");
+  Comparison eb = below_row("E_b(500) (eq:relerr)", "Sec. 5.4, Fig. 22", "large: the structure is destroyed (> 1e-2)",
+                            1e-2, json_number(j, "E_b_end"));
+  eb.claim = Claim::above;
+  s.rows.push_back(eb);
+  s.figures.push_back({"dark/evolve_site_2.40/evolution.png", "Fig. 22 (fig:opt_sc_r03_wb240)",
+                       "Snapshots at t = 0 and 500 and space-time plots of x_n, y_n: the breather breaks up."});
+  return s;
+}
+
+Section evolution_moving(const StepContext& ctx) {
+  Section s;
+  s.id = "dark_evolution_rho1";
+  s.title = "Real instability sets the breather in motion, rho = 1, omega_b = 2.207 (Fig. 25)";
+  s.intro = "Site-centred exact solution (the family with the real instability at 2.207 in our computation; "
+            "docs/paper-errata.md) integrated to t = 1500 (526 T_b); no perturbation, the motion grows from round-off.";
+  const json j = evolve(ctx, s, "evolve_site_rho1_2.207", "1", "site", "2.207", "1500");
+  Comparison moved = below_row("distance the dark breather has moved by t = 1500 (sites)", "Sec. 5.4, Fig. 25",
+                               "set in motion (> 1 site)", 1.0, json_number(j, "max_centre_shift"),
+                               "position of the amplitude dip, weighted circular mean");
+  moved.claim = Claim::above;
+  s.rows.push_back(moved);
+  s.figures.push_back({"dark/evolve_site_rho1_2.207/evolution.png", "Fig. 25 (fig:weak_opt_bc_r1_evol)",
+                       "Snapshots at t = 0 and 1500 and space-time plots of x_n, y_n: the dark breather starts to move."});
+  s.figures.push_back({"dark/evolve_site_rho1_2.207/diagnostics.png", "Fig. 25, diagnostics",
+                       "E_b(t) and the position of the dark breather versus time."});
+  return s;
+}
+
 }  // namespace
 
 std::vector<Step> dark_steps() {
@@ -235,7 +294,10 @@ std::vector<Step> dark_steps() {
           {"dark_rho1_bond", "Optical bond-centred branch, rho = 1", 35, [](const StepContext& c) { return rho1(c, "bond"); }},
           {"dark_rho1_site", "Optical site-centred branch, rho = 1", 35, [](const StepContext& c) { return rho1(c, "site"); }},
           {"dark_rho10_optical", "Optical branch, rho = 10", 10, rho10_optical},
-          {"dark_rho01_acoustic", "Acoustic branch, rho = 0.1", 40, rho01_acoustic}};
+          {"dark_rho01_acoustic", "Acoustic branch, rho = 0.1", 40, rho01_acoustic},
+          {"dark_evolution_2.4255", "Evolution at 2.4255", 4, evolution_long_lived},
+          {"dark_evolution_2.40", "Evolution at 2.40", 10, evolution_destroyed},
+          {"dark_evolution_rho1", "Evolution at 2.207, rho = 1", 18, evolution_moving}};
 }
 
 }  // namespace lrchain::report
