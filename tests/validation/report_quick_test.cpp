@@ -33,6 +33,15 @@ TEST_CASE("reproduce --quick: complete report, rendered by headless Chromium") {
   CHECK(rows >= 70);
   // Most paper numbers are reproduced; the deviations are listed in the report and the note.
   CHECK(summary["pass"].get<int>() >= rows * 3 / 4);
+  // The one known deviation is exp4c (emitting ends still nucleate the secondary breather,
+  // docs/simulator.md); every dark-breather row (turning point 2.37, E_b, period doubling, rho = 1
+  // site-centred real instability at 2.207, rho = 10 and rho = 0.1 branches, E_b(1200), motion at
+  // rho = 1) must pass or be a documented erratum.
+  CHECK(summary["deviates"].get<int>() <= 1);
+  for (const auto& step : summary["steps"]) {
+    INFO("step ", step["id"].get<std::string>());
+    if (step["id"].get<std::string>().rfind("dark_", 0) == 0) CHECK(step["deviates"].get<int>() == 0);
+  }
   for (const auto& page : {dir / "index.html", dir / "errata.html"}) {
     const auto broken = broken_links(page);
     INFO("broken links in ", page.string(), ": ", broken.size() ? broken.front() : "");
