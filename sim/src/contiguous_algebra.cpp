@@ -14,6 +14,13 @@ void update_in_place_first(double* __restrict out, const double* __restrict y, d
   for (std::size_t i = 0; i < n; ++i) out[i] = a1 * out[i] + a2 * y[i];
 }
 
+// a1 = 1 (every RKN drift and kick): 1 * out[i] is out[i] exactly, so the same bits.
+LRCHAIN_VECTOR_CLONES
+void add_scaled_in_place(double* __restrict out, const double* __restrict y, double a2,
+                         std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) out[i] = out[i] + a2 * y[i];
+}
+
 LRCHAIN_VECTOR_CLONES
 void update_in_place_second(double* __restrict out, const double* __restrict x, double a1,
                             double a2, std::size_t n) {
@@ -34,6 +41,8 @@ void scale_sum2_contiguous(double* out, const double* x, const double* y, double
                                                    // steppers (equal to x for finite y)
   if (out == x && out == y) {
     for (std::size_t i = 0; i < n; ++i) out[i] = a1 * out[i] + a2 * out[i];
+  } else if (out == x && a1 == 1.0) {
+    add_scaled_in_place(out, y, a2, n);
   } else if (out == x) {
     update_in_place_first(out, y, a1, a2, n);
   } else if (out == y) {

@@ -34,6 +34,7 @@ DisplacementLattice::DisplacementLattice(const Params& p, std::size_t sites,
     if (!boundary_.periodic && e->kind == EndKind::prescribed && !e->motion)
       throw InvalidParameter("boundary", "a prescribed end needs a motion u(t)");
   bond_force_.assign(sites + 1, 0.0);
+  block_force_.assign(block_ + 1, 0.0);
 }
 
 bool DisplacementLattice::autonomous() const {
@@ -50,26 +51,32 @@ void DisplacementLattice::acceleration(const double* q, double* a, double t) con
   const std::size_t n = layout_.sites;
   const double* u = q;
   const double* v = q + n;
-  double* f = bond_force_.data();
+  double f_first, f_last;  // bonds 0 and n
   if (boundary_.periodic) {
-    f[0] = bond_force(law_, u[0] - u[n - 1]);
-    f[n] = f[0];
+    f_first = f_last = bond_force(law_, u[0] - u[n - 1]);
   } else {
-    f[0] = boundary_.left.kind == EndKind::free ? 0.0
-                                                : bond_force(law_, u[0] - ghost(boundary_.left, t));
-    f[n] = boundary_.right.kind == EndKind::free
-               ? 0.0
-               : bond_force(law_, ghost(boundary_.right, t) - u[n - 1]);
+    f_first = boundary_.left.kind == EndKind::free
+                  ? 0.0
+                  : bond_force(law_, u[0] - ghost(boundary_.left, t));
+    f_last = boundary_.right.kind == EndKind::free
+                 ? 0.0
+                 : bond_force(law_, ghost(boundary_.right, t) - u[n - 1]);
   }
-  // Blocks of beads, so that each block's forces are still in L1 when its accelerations use them:
-  // block [b0, b1) needs bonds b0..b1; interior bonds are 1..n-1, bond b0 came with the last block.
-  constexpr std::size_t block = 256;
+  // Blocks of beads, so that each block's forces are still in L1 when its accelerations use them;
+  // they live in a block-sized scratch (not a whole-chain array), which keeps the stepper's
+  // position, momentum and force arrays in L1 too. Block [b0, b1) needs bonds b0..b1, f[k] holds
+  // bond b0 + k: bond b0 comes from the previous block (or the left end), interior bonds
+  // b0+1..min(b1, n-1) are new, bond n is the right end.
   const double kappa = params_.kappa, kappa_over_rho = params_.kappa / params_.rho;
-  for (std::size_t b0 = 0; b0 < n; b0 += block) {
-    const std::size_t b1 = std::min(n, b0 + block);
-    const std::size_t j0 = b0 == 0 ? 1 : b0 + 1, j1 = std::min(b1, n - 1);  // new bonds j0..j1
-    if (j1 >= j0) bond_forces_from_displacements(law_, u + j0 - 1, f + j0, j1 - j0 + 1);
-    bead_accelerations(f + b0, u + b0, v + b0, a + b0, a + n + b0, kappa, kappa_over_rho, b1 - b0);
+  double* f = block_force_.data();
+  f[0] = f_first;
+  for (std::size_t b0 = 0; b0 < n; b0 += block_) {
+    const std::size_t b1 = std::min(n, b0 + block_);
+    if (b0 > 0) f[0] = f[block_];  // bond b0, the last bond of the previous (full) block
+    const std::size_t j0 = b0 + 1, j1 = std::min(b1, n - 1);  // new bonds j0..j1
+    if (j1 >= j0) bond_forces_from_displacements(law_, u + j0 - 1, f + 1, j1 - j0 + 1);
+    if (b1 == n) f[n - b0] = f_last;
+    bead_accelerations(f, u + b0, v + b0, a + b0, a + n + b0, kappa, kappa_over_rho, b1 - b0);
   }
 }
 

@@ -1,7 +1,29 @@
 // Stepper selection and option checks for integrate_observed (Boost.Odeint).
 #include "lrchain/sim/integrator.hpp"
 
+#include <cstdint>
+
+#include "vector_loops.hpp"
+
 namespace lrchain::sim {
+
+namespace detail {
+
+// An entry is NaN or infinite iff its exponent bits are all ones; an integer OR-reduction, which
+// GCC vectorises (a branch per entry cost ~1 ns per entry).
+LRCHAIN_VECTOR_CLONES
+bool all_finite(const double* x, std::size_t n) {
+  constexpr std::uint64_t exponent = 0x7ff0000000000000ull;
+  std::uint64_t bad = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint64_t bits;
+    std::memcpy(&bits, x + i, sizeof bits);
+    bad |= std::uint64_t((bits & exponent) == exponent);
+  }
+  return bad == 0;
+}
+
+}  // namespace detail
 
 StepperKind parse_stepper(std::string_view text) {
   if (text == "rkf78") return StepperKind::rkf78;

@@ -61,7 +61,9 @@ class DisplacementLattice {
   ContactLaw law_;
   StateLayout layout_;
   DisplacementBoundary boundary_;
-  mutable std::vector<double> bond_force_;  // scratch, sites + 1 entries
+  mutable std::vector<double> bond_force_;   // scratch of total_energy, sites + 1 entries
+  static constexpr std::size_t block_ = 256;  // beads per block of acceleration()
+  mutable std::vector<double> block_force_;  // scratch of acceleration: one block's bond forces
 };
 
 }  // namespace lrchain::sim

@@ -20,6 +20,7 @@
 #include <string_view>
 #include <vector>
 
+#include <boost/align/aligned_allocator.hpp>
 #include <boost/numeric/odeint.hpp>
 
 #include "lrchain/errors.hpp"
@@ -53,6 +54,9 @@ struct IntegrationStats {
 
 namespace detail {
 
+// True if no entry is NaN or infinite (a vectorised loop: the observer calls it every sample).
+bool all_finite(const double* x, std::size_t n);
+
 // Wraps a system to count RHS evaluations (first-order form).
 template <class System>
 struct Counted {
@@ -78,8 +82,10 @@ struct CountedAcceleration {
 // Force wrapper for the Blanes-Moan steppers: Odeint calls it once per stage, in order. A stage
 // whose kick b_l is 0 does not use the force (its buffer keeps earlier, finite values), and a stage
 // 0 with drift a_0 = 0 sees the positions of the previous step's last stage, whose force is still in
-// the stepper's buffer (first-same-as-last); neither is recomputed. The FSAL reuse is checked:
-// the positions must be bitwise those of the last evaluation and the buffer the same one.
+// the stepper's buffer (first-same-as-last); neither is recomputed. FSAL reuse needs the same
+// position and force buffers as the last evaluation, made at the previous call (the last stage of
+// the previous step): integrate_rkn_observed owns the positions and only the stepper writes them,
+// and contiguous_algebra leaves them untouched in a zero drift (q + 0 p is not even computed).
 template <class System>
 struct StagedAcceleration {
   struct Shared {
@@ -88,26 +94,32 @@ struct StagedAcceleration {
     std::vector<double> kick;  // b_l per Odeint stage
     bool fsal = false;         // a_0 == 0
     std::size_t call = 0;
-    std::vector<double> last_q;
+    const double* last_q = nullptr;  // buffers of the evaluation at the previous call, if any
     const double* last_a = nullptr;
   };
   Shared* shared;
-  void operator()(const std::vector<double>& q, std::vector<double>& a) const {
+  template <class Coor, class Deriv>
+  void operator()(const Coor& q, Deriv& a) const {
     Shared& s = *shared;
     const std::size_t stages = s.kick.size();
     const std::size_t l = s.call++ % stages;
+    const double* last_q = s.last_q;
+    const double* last_a = s.last_a;
+    s.last_q = s.last_a = nullptr;
     if (s.kick[l] == 0.0) return;
-    if (l == 0 && s.fsal && s.last_a == a.data() && s.last_q.size() == q.size() &&
-        std::memcmp(q.data(), s.last_q.data(), q.size() * sizeof(double)) == 0)
-      return;
+    if (l == 0 && s.fsal && last_q == q.data() && last_a == a.data()) return;
     ++*s.count;
     s.sys->acceleration(q.data(), a.data(), 0.0);
     if (s.fsal && l == stages - 1) {
-      s.last_q.assign(q.begin(), q.end());
+      s.last_q = q.data();
       s.last_a = a.data();
     }
   }
 };
+
+// Position and momentum storage of the RKN steppers: cache-line aligned, so that the vectorised
+// stage updates (contiguous_algebra) and the force loops do not split loads across cache lines.
+using RknCoor = std::vector<double, boost::alignment::aligned_allocator<double, 64>>;
 
 // Integrates q'' = a(q) with a Blanes-Moan stepper from times.front() through the observation
 // times; each interval between observations is split into the fewest equal steps <= dt.
@@ -118,8 +130,8 @@ void integrate_rkn_observed(const System& system, State& state, const std::vecto
                             std::size_t& rhs_evaluations) {
   namespace odeint = boost::numeric::odeint;
   const std::size_t half = state.size() / 2;
-  std::vector<double> q(state.begin(), state.begin() + half);
-  std::vector<double> p(state.begin() + half, state.end());
+  RknCoor q(state.begin(), state.begin() + half);
+  RknCoor p(state.begin() + half, state.end());
   Stepper stepper;
   typename StagedAcceleration<System>::Shared shared;
   shared.sys = &system;
@@ -160,10 +172,7 @@ IntegrationStats integrate_observed(const System& system, State& state,
   stats.t_reached = times.front();
   auto obs = [&](const State& s, double t) {
     stats.t_reached = t;
-    bool finite = true;
-    for (double v : s)
-      if (!std::isfinite(v)) { finite = false; break; }
-    if (!finite) { stats.blew_up = true; throw detail::StopIntegration{}; }
+    if (!detail::all_finite(s.data(), s.size())) { stats.blew_up = true; throw detail::StopIntegration{}; }
     if (!observer(s, t)) { stats.stopped = true; throw detail::StopIntegration{}; }
   };
   detail::Counted<System> rhs{&system, &stats.rhs_evaluations};
@@ -210,13 +219,13 @@ IntegrationStats integrate_observed(const System& system, State& state,
       case StepperKind::ss17: {
         if constexpr (requires { system.acceleration(nullptr, nullptr, 0.0); }) {
           if (opt.stepper == StepperKind::srkn11b)
-            detail::integrate_rkn_observed<blanes_moan_srkn11b<std::vector<double>, contiguous_algebra>>(
+            detail::integrate_rkn_observed<blanes_moan_srkn11b<detail::RknCoor, contiguous_algebra>>(
                 system, state, times, obs, opt.dt, stats.steps, stats.rhs_evaluations);
           else if (opt.stepper == StepperKind::srkn14a)
-            detail::integrate_rkn_observed<blanes_moan_srkn14a<std::vector<double>, contiguous_algebra>>(
+            detail::integrate_rkn_observed<blanes_moan_srkn14a<detail::RknCoor, contiguous_algebra>>(
                 system, state, times, obs, opt.dt, stats.steps, stats.rhs_evaluations);
           else
-            detail::integrate_rkn_observed<mclachlan_ss17<std::vector<double>, contiguous_algebra>>(
+            detail::integrate_rkn_observed<mclachlan_ss17<detail::RknCoor, contiguous_algebra>>(
                 system, state, times, obs, opt.dt, stats.steps, stats.rhs_evaluations);
         } else {
           throw InvalidParameter("stepper", "srkn11b/srkn14a/ss17 need a system with acceleration()");
