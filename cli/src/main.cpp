@@ -1,10 +1,12 @@
-// `lrchain`: command-line front end. Exit codes: 0 ok, 2 invalid input, 1 runtime failure.
+// `lrchain`: command-line front end. Exit codes (lrchain/exit_codes.hpp): 0 ok, 1 runtime failure,
+// 2 invalid input, 3 numerical failure, 130/143 interrupted by SIGINT/SIGTERM.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 
 #include "commands.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/exit_codes.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -23,13 +25,19 @@ int main(int argc, char** argv) {
     // --help exits 0; usage errors exit 2 with CLI11's one-line message.
     if (e.get_exit_code() == 0) return app.exit(e);
     std::fprintf(stderr, "lrchain: %s\n", e.what());
-    return 2;
-  } catch (const lrchain::InvalidParameter& e) {
-    std::fprintf(stderr, "lrchain: invalid %s\n", e.what());
-    return 2;
+    return lrchain::exit_code::invalid_input;
+  } catch (const lrchain::InputError& e) {
+    std::fprintf(stderr, "lrchain: %s\n", e.what());
+    return lrchain::exit_code::invalid_input;
+  } catch (const lrchain::NumericalFailure& e) {
+    std::fprintf(stderr, "lrchain: numerical failure: %s\n", e.what());
+    return lrchain::exit_code::numerical_failure;
+  } catch (const lrchain::Interrupted& e) {
+    std::fprintf(stderr, "lrchain: %s\n", e.what());
+    return lrchain::exit_code::interrupted_base + e.signal_number();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "lrchain: error: %s\n", e.what());
-    return 1;
+    return lrchain::exit_code::runtime_error;
   }
   return 0;
 }

@@ -1,0 +1,57 @@
+#pragma once
+// Running another program (gnuplot, the C++ compiler, lrchain itself in the report and tests) with
+// an argument vector through posix_spawnp: never a shell, so a path is passed as data, not code.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lrchain {
+
+struct ProcessOptions {
+  std::filesystem::path working_directory;        // empty: the caller's
+  std::optional<std::filesystem::path> stdout_file; // redirect stdout to this file (truncated)
+  std::optional<std::filesystem::path> stderr_file; // redirect stderr to this file (truncated)
+  bool capture_stdout = false;                    // collect stdout into ProcessResult::output
+  bool capture_stderr = false;                    // collect stderr into ProcessResult::error_output
+  bool stdin_null = true;                         // child's stdin from /dev/null
+  // Extra environment entries "NAME=value" (replace the caller's of the same name); variables
+  // named in unset_environment are removed from the child's environment.
+  std::vector<std::string> environment;
+  std::vector<std::string> unset_environment;
+};
+
+struct ProcessResult {
+  int exit_code = -1;           // valid when exited
+  int signal_number = 0;        // non-zero when killed by a signal
+  bool exited = false;
+  std::string output;           // stdout, when captured
+  std::string error_output;     // stderr, when captured
+  bool ok() const { return exited && exit_code == 0; }
+};
+
+// A started child process; wait() reaps it. Lets a caller forward signals (kill) while waiting.
+class ChildProcess {
+ public:
+  ChildProcess(const std::vector<std::string>& argv, const ProcessOptions& options = {});
+  ~ChildProcess();
+  ChildProcess(const ChildProcess&) = delete;
+  ChildProcess& operator=(const ChildProcess&) = delete;
+  int pid() const { return pid_; }
+  void send_signal(int signal_number) const;
+  ProcessResult wait();  // reads the captured pipes to the end, then waits for the child
+
+ private:
+  int pid_ = -1;
+  int out_fd_ = -1, err_fd_ = -1;
+  bool waited_ = false;
+};
+
+// Runs argv[0] (looked up in PATH when it has no '/') with argv, waits for it.
+// Throws std::runtime_error if the program cannot be started (e.g. not found).
+ProcessResult run_program(const std::vector<std::string>& argv, const ProcessOptions& options = {});
+
+// True when `program` is an executable file in PATH (or, with a '/', at that path).
+bool program_in_path(const std::string& program);
+
+}  // namespace lrchain

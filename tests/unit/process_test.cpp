@@ -1,0 +1,46 @@
+// run_program (lrchain/process.hpp): argv passed as data, never through a shell.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "lrchain/process.hpp"
+
+namespace fs = std::filesystem;
+
+TEST_CASE("run_program passes shell metacharacters as plain arguments") {
+  const fs::path dir = fs::temp_directory_path() / "lrchain-process-test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string evil = "$(touch INJECTED); echo 'x' \"y\" ";
+  lrchain::ProcessOptions o;
+  o.working_directory = dir;
+  o.capture_stdout = true;
+  const auto r = lrchain::run_program({"printf", "%s|", evil, "two words"}, o);
+  CHECK(r.ok());
+  CHECK(r.output == evil + "|two words|");
+  CHECK_FALSE(fs::exists(dir / "INJECTED"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("run_program reports exit codes, stderr and a missing program") {
+  lrchain::ProcessOptions o;
+  o.capture_stderr = true;
+  const auto r = lrchain::run_program({"ls", "/nonexistent-lrchain-path"}, o);
+  CHECK(r.exited);
+  CHECK(r.exit_code != 0);
+  CHECK_FALSE(r.error_output.empty());
+  CHECK_THROWS(lrchain::run_program({"lrchain-no-such-program-xyz"}));
+  CHECK_FALSE(lrchain::program_in_path("lrchain-no-such-program-xyz"));
+  CHECK(lrchain::program_in_path("ls"));
+}
+
+TEST_CASE("run_program sets and removes environment variables") {
+  lrchain::ProcessOptions o;
+  o.capture_stdout = true;
+  o.environment = {"LRCHAIN_PROCESS_TEST=42"};
+  o.unset_environment = {"HOME"};
+  const auto r = lrchain::run_program({"env"}, o);
+  CHECK(r.output.find("LRCHAIN_PROCESS_TEST=42\n") != std::string::npos);
+  CHECK(r.output.find("\nHOME=") == std::string::npos);
+}
