@@ -4,6 +4,8 @@
 // on stderr, files in --out.
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <filesystem>
+#include <limits>
 #include <cstdio>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -13,10 +15,12 @@
 
 #include "commands.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/checked_number.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
 #include "lrchain/sim/dark/evolution.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "lrchain/sim/resource_estimate.hpp"
 #include "options.hpp"
 
 namespace lrchain::cli {
@@ -36,19 +40,61 @@ struct DarkArgs {
   double ds = 0.1, omega_min = 0, omega_max = 0;
   double t_end = 0;
   int samples = 24;
+  double max_memory = 0;  // bytes (--max-memory); 0: the machine's available memory
 };
+
+enum class DarkJob { solve, floquet, branch, evolve };
+
+// Checks every option of a dark job, its memory and output size, and --out, before any Newton
+// iteration and before anything is written (InvalidParameter/InputError: exit 2).
+void validate_job(const DarkArgs& a, DarkJob job) {
+  validate(a.p);
+  make_dark_breather_ansatz(a.p, parse_branch(a.edge), a.omega_b);  // checks --omega-b and --edge
+  parse_dark_center(a.center);
+  if (a.sites < 9 || a.sites % 2 == 0)
+    throw InvalidParameter("sites", "must be an odd integer >= 9 (a staggered dark breather fits "
+                                    "periodic ends only on an odd number of sites)");
+  const double period = 2 * std::numbers::pi / a.omega_b;
+  const double shooting_time =
+      a.mode == "full" || job == DarkJob::floquet ? period : (a.center == "site" ? period / 2 : period / 4);
+  double periods = 0;
+  if (job == DarkJob::branch) {
+    if (!(a.ds > 0 && std::isfinite(a.ds))) throw InvalidParameter("ds", "must be a finite number > 0");
+    checked_finite(a.omega_min, "omega-min");
+    checked_finite(a.omega_max, "omega-max");
+  }
+  if (job == DarkJob::evolve) {
+    if (!(std::isfinite(a.t_end) && a.t_end >= period))
+      throw InvalidParameter("t-end", fmt::format("must be a finite time >= one period T_b = 2 pi/omega_b = {:.6g} "
+                                                  "(dimensionless time of Sec. 2)", period));
+    periods = double(checked_count(std::floor(a.t_end / period), "t-end", 1,
+                                   std::numeric_limits<int>::max(), "periods (t-end / T_b)"));
+  }
+  const sim::ResourceEstimate e =
+      sim::estimate_dark_breather(a.sites, job == DarkJob::floquet || job == DarkJob::branch, shooting_time, periods);
+  sim::check_memory(e, a.max_memory, periods > 1e3 ? "t-end" : "sites",
+                    periods > 1e3 ? "lower t-end" : "lower sites");
+  if (!a.out.empty()) {
+    std::error_code ec;
+    if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))
+      throw InputError("--out '" + a.out + "' exists and is not a directory");
+    sim::check_output_space(e, a.out, "out", "choose another --out");
+  }
+}
 
 void add_common(CLI::App& sub, DarkArgs& a) {
   add_model_options(sub, a.p, false);
   add_number(sub, "--omega-b", a.omega_b, "breather frequency omega_b (dimensionless, time unit of Sec. 2; period T_b = 2 pi/omega_b), below the theta = pi band edge (required)")->required();
   sub.add_option("--edge", a.edge, "theta = pi band edge the breather bifurcates from: optical|acoustic (default optical)")->check(CLI::IsMember({"optical", "acoustic"}));
   sub.add_option("--center", a.center, "family: bond (n0 = 1/2) | site (n0 = 0) (default bond)")->check(CLI::IsMember({"bond", "site"}));
-  sub.add_option("--sites", a.sites, "odd number of lattice sites per field x, y (periodic ends; default 101)");
+  add_integer(sub, "--sites", a.sites, 9, std::numeric_limits<int>::max(),
+              "odd number of lattice sites per field x, y (periodic ends; default 101)");
   sub.add_option("--mode", a.mode, "shooting: reversible (half/quarter period; default) | full (whole period, a check)")
       ->check(CLI::IsMember({"reversible", "full"}));
   sub.add_flag("--json", a.json_out, "print the JSON summary (always printed; kept for scripts)");
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr");
   sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures");
+  add_max_memory(sub, a.max_memory);
 }
 
 json floquet_json(const FloquetResult& f, bool with_multipliers) {
@@ -73,12 +119,14 @@ json measures_json(const DarkMeasures& m) {
           {"C_y", m.C_y}, {"E_b", m.E_b}, {"max_strain", m.max_strain}};
 }
 
-// Seeds from eq:xy_app and runs Newton; throws runtime_error with the residual history on failure.
+// Seeds from eq:xy_app and runs Newton; on failure prints the JSON summary (converged false, the
+// residual history, the failure) and throws NumericalFailure (exit 3).
 struct Solved {
   DarkShooting shooting;
   DarkBreatherAnsatz ansatz;
   NewtonResult newton;
 };
+json base_json(const DarkArgs& a, const DarkBreatherAnsatz& ansatz, const NewtonResult& newton);
 Solved solve(const DarkArgs& a) {
   validate(a.p);
   const Branch edge = parse_branch(a.edge);
@@ -95,20 +143,26 @@ Solved solve(const DarkArgs& a) {
   if (!res.converged) {
     std::string hist;
     for (const auto& r : res.history) hist += fmt::format(" {:.3e}", r.residual);
-    throw std::runtime_error("Newton did not converge at omega_b = " + fmt::format("{}", a.omega_b) +
-                             " (" + res.failure + "); residual history:" + hist);
+    const std::string message = "Newton did not converge at omega_b = " + fmt::format("{}", a.omega_b) +
+                                " (" + res.failure + "); residual history:" + hist;
+    json j = base_json(a, ansatz, res);
+    j["failure"] = {{"kind", "newton"}, {"message", message}};
+    std::printf("%s\n", j.dump(2).c_str());
+    throw NumericalFailure(message);
   }
   return {std::move(shooting), ansatz, std::move(res)};
 }
 
-json base_json(const DarkArgs& a, const Solved& s) {
+// The options, the band edge and the Newton history of a dark job; "failure" null unless set.
+json base_json(const DarkArgs& a, const DarkBreatherAnsatz& ansatz, const NewtonResult& newton) {
   json hist = json::array();
-  for (const auto& r : s.newton.history) hist.push_back(r.residual);
+  for (const auto& r : newton.history) hist.push_back(r.residual);
   return {{"rho", a.p.rho}, {"kappa", a.p.kappa}, {"delta0", a.p.delta0}, {"alpha", a.p.alpha},
           {"edge", a.edge}, {"center", a.center}, {"sites", a.sites}, {"mode", a.mode},
-          {"omega_b", a.omega_b}, {"omega_edge", s.ansatz.omega},
-          {"newton_residuals", hist}};
+          {"omega_b", a.omega_b}, {"omega_edge", ansatz.omega},
+          {"newton_converged", newton.converged}, {"newton_residuals", hist}, {"failure", nullptr}};
 }
+json base_json(const DarkArgs& a, const Solved& s) { return base_json(a, s.ansatz, s.newton); }
 
 void write_profile(const std::string& dir, const std::string& name, const Eigen::VectorXd& z0,
                    const Eigen::VectorXd& seed, const Eigen::VectorXd& zT) {
@@ -140,6 +194,7 @@ void write_multipliers(const std::string& dir, const std::string& stem, const Fl
 }
 
 void run_solve(const DarkArgs& a, bool floquet) {
+  validate_job(a, floquet ? DarkJob::floquet : DarkJob::solve);
   Solved s = solve(a);
   json j = base_json(a, s);
   const Eigen::VectorXd z0 = s.shooting.z_from_unknowns(s.newton.q);
@@ -182,6 +237,7 @@ void run_solve(const DarkArgs& a, bool floquet) {
 }
 
 void run_continue(const DarkArgs& a) {
+  validate_job(a, DarkJob::branch);
   Solved s = solve(a);
   ContinuationOptions o;
   o.max_points = a.points;
@@ -220,6 +276,8 @@ void run_continue(const DarkArgs& a) {
   double worst = 0;
   for (const auto& b : br.points) worst = std::max(worst, b.measures.E_b);
   j["max_E_b"] = worst;
+  const bool failed = br.points.size() < 2;  // the corrector failed from the first step on
+  if (failed) j["failure"] = {{"kind", "continuation"}, {"message", "continuation stopped: " + br.stop_reason}};
   if (!a.out.empty()) {
     sim::ensure_directory(a.out);
     sim::write_file_atomic(a.out, "branch.csv", csv.str());
@@ -255,7 +313,7 @@ void run_continue(const DarkArgs& a) {
                         "floquet_moduli.png");
   }
   std::printf("%s\n", j.dump(2).c_str());
-  if (br.points.size() < 2) throw std::runtime_error("continuation stopped: " + br.stop_reason);
+  if (failed) throw NumericalFailure("continuation stopped: " + br.stop_reason);
 }
 
 // Space-time files and figures of a direct integration (Figs. 21, 22, 25).
@@ -331,7 +389,7 @@ void write_evolution(const DarkArgs& a, const DarkEvolution& e, const json& summ
 }
 
 void run_evolve(const DarkArgs& a) {
-  if (!(a.t_end > 0)) throw InvalidParameter("t-end", "must be > 0 (dimensionless time of Sec. 2)");
+  validate_job(a, DarkJob::evolve);
   Solved s = solve(a);
   const Eigen::VectorXd z0 = s.shooting.z_from_unknowns(s.newton.q);
   const DarkEvolution e = evolve_dark_breather(a.p, z0, a.omega_b, a.t_end, a.samples, s.shooting.integration());
@@ -381,7 +439,7 @@ void register_dark(CLI::App& app) {
   auto* cont = dark->add_subcommand(
       "continue", "Pseudo-arclength continuation in omega_b through turning points, Floquet at every point");
   add_common(*cont, *args);
-  cont->add_option("--points", args->points, "maximum number of branch points, the first included (default 100; e.g. --points 10 for a quick run)");
+  add_integer(*cont, "--points", args->points, 1, 1'000'000, "maximum number of branch points, the first included (default 100; e.g. --points 10 for a quick run)");
   add_number(*cont, "--ds", args->ds, "initial pseudo-arclength step in (Z(0), omega_b), dimensionless, adapted between 1e-5 and 1 (default 0.1)");
   add_number(*cont, "--omega-min", args->omega_min, "stop when omega_b falls below this (dimensionless frequency; default 0)");
   add_number(*cont, "--omega-max", args->omega_max, "stop when omega_b rises above this (dimensionless frequency; default: the band edge omega(pi))");
@@ -390,7 +448,8 @@ void register_dark(CLI::App& app) {
       "evolve", "Solve, then integrate eq:Hertzd0S from the solution: space-time x_n, y_n, E_b(t), breather position (Figs. 21, 22, 25)");
   add_common(*evo, *args);
   add_number(*evo, "--t-end", args->t_end, "integration time (dimensionless, time unit of Sec. 2), at least one period T_b (required)")->required();
-  evo->add_option("--samples", args->samples, "samples of x_n(t) per period for the amplitudes of the position measure (default 24, >= 4)");
+  add_integer(*evo, "--samples", args->samples, 4, 1'000'000,
+              "samples of x_n(t) per period for the amplitudes of the position measure (default 24, >= 4)");
   evo->callback([args] { run_evolve(*args); });
 }
 

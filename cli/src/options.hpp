@@ -3,12 +3,15 @@
 // (lrchain/numeric_parse.hpp), so "1/3", "4/9", "pi/2", "3*pi/5" work everywhere.
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <utility>
 
+#include "lrchain/checked_number.hpp"
 #include "lrchain/numeric_parse.hpp"
 #include "lrchain/params.hpp"
+#include "lrchain/sim/resource_estimate.hpp"
 
 namespace lrchain::cli {
 
@@ -20,6 +23,33 @@ inline CLI::Option* add_number(CLI::App& app, const std::string& name, double& t
       name, [&target, param](const std::string& text) { target = parse_number(text, param); },
       description);
   opt->type_name("NUM");
+  return opt;
+}
+
+// Adds --name taking an integer in [min, max] into `target`; integral values written as numbers,
+// e.g. 1e3, are accepted (lrchain::checked_integer), fractions, NaN, inf and overflow are not.
+template <class Int>
+CLI::Option* add_integer(CLI::App& app, const std::string& name, Int& target, std::int64_t min,
+                         std::int64_t max, const std::string& description) {
+  const std::string param = name.substr(name.find_first_not_of('-'));
+  auto* opt = app.add_option_function<std::string>(
+      name,
+      [&target, param, min, max](const std::string& text) {
+        target = static_cast<Int>(checked_integer(parse_number(text, param), param, min, max));
+      },
+      description);
+  opt->type_name("INT");
+  return opt;
+}
+
+// Adds --max-memory SIZE (2G, 500M, ...) into `bytes`: the memory a job may use before it is
+// refused (default 0: the machine's available memory).
+inline CLI::Option* add_max_memory(CLI::App& app, double& bytes) {
+  auto* opt = app.add_option_function<std::string>(
+      "--max-memory", [&bytes](const std::string& text) { bytes = sim::parse_memory_size(text, "max-memory"); },
+      "refuse the job when its estimated memory exceeds SIZE, e.g. 2G or 500M (default: the memory "
+      "this machine has available)");
+  opt->type_name("SIZE");
   return opt;
 }
 

@@ -22,6 +22,7 @@
 #include "lrchain/regime/paper_thresholds.hpp"
 #include "lrchain/regime/regime_events.hpp"
 #include "lrchain/regime/regime_map.hpp"
+#include "lrchain/sim/resource_estimate.hpp"
 #include "options.hpp"
 
 namespace lrchain::cli {
@@ -169,6 +170,7 @@ struct MapArgs {
   std::string out;
   std::vector<std::string> rho_range, delta0_range, omega_range;  // lo hi (shared parser)
   int res_x = 600, res_y = 600;
+  double max_memory = 0;  // bytes (--max-memory); 0: the machine's available memory
   bool delta0_log = false;
   bool no_curves = false;
   bool no_png = false;
@@ -415,13 +417,37 @@ json map_delta0_omega(const MapArgs& a, const fs::path& dir) {
   return out;
 }
 
-void run_map(const MapArgs& a) {
+// Checks every option of a map, its memory and output size and --out before anything is written.
+void validate_map(const MapArgs& a) {
   validate(a.p);
-  if (a.res_x < 2 || a.res_x > 20000) throw InvalidParameter("nx", "must be in [2, 20000]");
-  if (a.res_y < 2 || a.res_y > 20000) throw InvalidParameter("ny", "must be in [2, 20000]");
   if (a.plane != "theta-rho" && a.plane != "delta0-omega")
     throw InvalidParameter("plane", "must be 'theta-rho' or 'delta0-omega', got '" + a.plane + "'");
-  branches_of(a.branch);  // validates --branch before anything is written
+  const auto branches = branches_of(a.branch);
+  if (a.plane == "theta-rho") {
+    for (const double r : range_or(a.rho_range, {0.01, 30.0}, "rho-range")) {
+      if (!(r > 0)) throw InvalidParameter("rho-range", "rho must be > 0");
+      validate(with_parameter(a.p, ParameterAxis::rho, r));
+    }
+  } else {
+    const auto dr = range_or(a.delta0_range, {0.001, 1.0}, "delta0-range");
+    validate(GridAxis{dr[0], dr[1], a.res_x, a.delta0_log}, "delta0");
+    for (const double d : dr) {
+      if (!(d > 0)) throw InvalidParameter("delta0-range", "delta0 must be > 0");
+      validate(with_parameter(a.p, ParameterAxis::delta0, d));
+    }
+    range_or(a.omega_range, {0.0, 1.0}, "omega-range");
+  }
+  const sim::ResourceEstimate e =
+      sim::estimate_regime_map(double(a.res_x) * double(a.res_y), double(branches.size()));
+  sim::check_memory(e, a.max_memory, "nx", "lower nx and ny");
+  std::error_code ec;
+  if (fs::exists(a.out, ec) && !fs::is_directory(a.out, ec))
+    throw InputError("--out '" + a.out + "' exists and is not a directory");
+  sim::check_output_space(e, a.out, "out", "choose another --out or lower nx and ny");
+}
+
+void run_map(const MapArgs& a) {
+  validate_map(a);
   const fs::path dir(a.out);
   fs::create_directories(dir);
   json out;
@@ -495,9 +521,8 @@ void register_regime(CLI::App& app) {
       "theta is the dimensionless carrier wavenumber (radians per site).");
   add_model_options(*in, ia->p, false);
   in->add_option("--branch", ia->branch, "optical or acoustic (default optical)");
-  in->add_option("--samples", ia->samples,
-                 "theta samples used to bracket the zeros (default 2048)")
-      ->check(CLI::Range(8, 10000000));
+  add_integer(*in, "--samples", ia->samples, 8, 10'000'000,
+              "theta samples used to bracket the zeros (default 2048)");
   in->add_flag("--json", ia->json_flag, "print JSON (the default and only format)");
   in->callback([ia] { run_intervals(*ia); });
 
@@ -521,8 +546,9 @@ void register_regime(CLI::App& app) {
                  "delta0-omega: omega lo hi (default: the band over the delta0 range)")
       ->expected(2);
   mp->add_flag("--delta0-log", ma->delta0_log, "delta0-omega: logarithmic delta0 axis");
-  mp->add_option("--nx", ma->res_x, "pixels along x (rho or delta0), default 600");
-  mp->add_option("--ny", ma->res_y, "pixels along y (theta or omega), default 600");
+  add_integer(*mp, "--nx", ma->res_x, 2, 20000, "pixels along x (rho or delta0), default 600");
+  add_integer(*mp, "--ny", ma->res_y, 2, 20000, "pixels along y (theta or omega), default 600");
+  add_max_memory(*mp, ma->max_memory);
   mp->add_flag("--no-curves", ma->no_curves, "skip tracing the boundary curves");
   mp->add_flag("--no-png", ma->no_png, "write the .gp script but do not run gnuplot");
   mp->callback([ma] { run_map(*ma); });
@@ -537,8 +563,7 @@ void register_regime(CLI::App& app) {
       "alpha = 3/2; every change of the boundary structure is located by TOMS 748 (crossing of "
       "two boundary curves, fold = birth/death of a pair of boundaries, entry through theta = pi) "
       "with the number of focusing intervals before and after, and matched to the printed values.");
-  th->add_option("--scan", *scan, "scan points per scenario (default: built-in 300-400)")
-      ->check(CLI::Range(10, 100000));
+  add_integer(*th, "--scan", *scan, 10, 100'000, "scan points per scenario (default: built-in 300-400)");
   th->add_flag("--json", *json_flag, "print JSON (the default and only format)");
   th->callback([scan] { run_thresholds(*scan); });
 }

@@ -9,7 +9,9 @@
 #include <cstdlib>
 #include <iostream>
 #include <filesystem>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -64,8 +66,27 @@ sim::RunControl make_control(ProgressBar& bar) {
   return c;
 }
 
+// Ends the run after its summary and outputs are written: exit 130 on Ctrl-C; a blow-up is a
+// NumericalFailure (exit 3) saying when and where, the outputs up to then kept.
+void finish(bool interrupted, const std::optional<sim::BlowUp>& blow_up, const std::string& out) {
+  if (interrupted) std::exit(130);
+  if (blow_up)
+    throw NumericalFailure(blow_up->message() +
+                           (out.empty() ? std::string() : "; the outputs up to then are in " + out));
+}
+
+// Refuses (exit 2) a run whose output would not fit in --out, before anything is written.
+template <class Config>
+void check_output(const Config& cfg, const std::string& out) {
+  if (!out.empty())
+    sim::check_output_space(sim::estimate_resources(cfg), out, "out",
+                            "choose another --out, or shorten or thin out the run");
+}
+
 void run_bright_and_report(const sim::BrightRunConfig& cfg, const std::string& out, bool compact) {
   const auto wall0 = std::chrono::steady_clock::now();
+  sim::validate(cfg);
+  check_output(cfg, out);
   ProgressBar bar;
   sim::BrightRunResult r;
   {
@@ -80,25 +101,13 @@ void run_bright_and_report(const sim::BrightRunConfig& cfg, const std::string& o
   }
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
-  if (r.summary.interrupted) std::exit(130);
-  if (r.summary.blew_up) {
-    std::fprintf(stderr, "lrchain: error: the integration blew up (non-finite state) at t = %g\n",
-                 r.summary.t_end);
-    std::exit(1);
-  }
-}
-
-// Ends the process like run_bright_and_report: exit 130 on Ctrl-C, 1 on blow-up.
-void finish(bool interrupted, bool blew_up, double t_end) {
-  if (interrupted) std::exit(130);
-  if (blew_up) {
-    std::fprintf(stderr, "lrchain: error: the integration blew up (non-finite state) at t = %g\n", t_end);
-    std::exit(1);
-  }
+  finish(r.summary.interrupted, r.summary.blow_up, out);
 }
 
 void run_drive_and_report(const sim::DriveRunConfig& cfg, const std::string& out, bool compact) {
   const auto wall0 = std::chrono::steady_clock::now();
+  sim::validate(cfg);
+  check_output(cfg, out);
   ProgressBar bar;
   sim::DriveRunResult r;
   {
@@ -113,12 +122,14 @@ void run_drive_and_report(const sim::DriveRunConfig& cfg, const std::string& out
   }
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
-  finish(r.summary.interrupted, r.summary.blew_up, r.summary.t_end);
+  finish(r.summary.interrupted, r.summary.blow_up, out);
 }
 
 // Checkpoints go to --checkpoint, else to OUT/checkpoint.bin when --out is given.
 void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& out, bool compact) {
   const auto wall0 = std::chrono::steady_clock::now();
+  sim::validate(cfg);  // before the output directory is created
+  check_output(cfg, out);
   if (cfg.checkpoint_file.empty() && !out.empty() && cfg.checkpoint_every > 0) {
     sim::ensure_directory(out);
     cfg.checkpoint_file = (std::filesystem::path(out) / "checkpoint.bin").string();
@@ -137,7 +148,7 @@ void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& ou
   }
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
-  finish(r.summary.interrupted, r.summary.blew_up, r.summary.t_end);
+  finish(r.summary.interrupted, r.summary.blow_up, out);
 }
 
 void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::string& stepper) {
@@ -166,6 +177,8 @@ void register_simulate(CLI::App& app) {
   sim_cmd->add_option("--restart", *restart, "modulated runs: continue from this checkpoint file");
   sim_cmd->add_option("--checkpoint", *checkpoint,
                       "modulated runs: checkpoint file (default OUT/checkpoint.bin)");
+  auto max_memory = std::make_shared<double>(0.0);
+  add_max_memory(*sim_cmd, *max_memory);
   sim_cmd->require_subcommand(0, 1);
 
   // simulate bright
@@ -184,7 +197,7 @@ void register_simulate(CLI::App& app) {
     cfg->detuning = parse_number(s, "detuning");
   }, "omega_b - omega (default sign(h_tilde)*1e-4)")->type_name("NUM");
   add_number(*bright, "--n0", cfg->n0, "initial breather centre (default 0)");
-  bright->add_option("--N", cfg->N, "strain sites n = -N..N (default 500)");
+  add_integer(*bright, "--N", cfg->N, 2, 1'000'000'000'000'000, "strain sites n = -N..N (default 500)");
   add_number(*bright, "--periods", cfg->periods, "run length in breather periods T_b (default 200)");
   add_number(*bright, "--sample-every", cfg->sample_every, "sampling interval in T_b (default 0.25)");
   add_number(*bright, "--spacetime-every", cfg->spacetime_every,
@@ -199,6 +212,7 @@ void register_simulate(CLI::App& app) {
   bright->callback([=] {
     cfg->integrator.stepper = sim::parse_stepper(*stepper);
     if (!snapshots->empty()) cfg->snapshot_periods = *snapshots;
+    cfg->max_memory = *max_memory;
     run_bright_and_report(*cfg, *out, *compact);
   });
 
@@ -209,7 +223,8 @@ void register_simulate(CLI::App& app) {
       "drive", "Chain at rest driven at u_0(t) = A0 sin(omega0 t) chi(t), clamped far end (Sec. 4.3)");
   add_model_options(*drive, dcfg->params, false);
   dcfg->params.rho = 10;
-  drive->add_option("--beads", dcfg->beads, "beads n = 1..beads (default 2000)");
+  add_integer(*drive, "--beads", dcfg->beads, 10, std::numeric_limits<std::int64_t>::max(),
+              "beads n = 1..beads (default 2000)");
   add_number(*drive, "--amplitude", dcfg->amplitude, "A0 (default 0.06)");
   add_number(*drive, "--omega0", dcfg->omega0, "driving frequency, in the optical band (default 2.1)");
   add_number(*drive, "--ramp-rate", dcfg->ramp_rate, "r of chi(t) (default 0.046)");
@@ -227,6 +242,7 @@ void register_simulate(CLI::App& app) {
   drive->fallthrough();
   drive->callback([=] {
     dcfg->integrator.stepper = sim::parse_stepper(*dstepper);
+    dcfg->max_memory = *max_memory;
     run_drive_and_report(*dcfg, *out, *compact);
   });
 
@@ -238,7 +254,8 @@ void register_simulate(CLI::App& app) {
   add_model_options(*mod, mcfg->params, false);
   mcfg->params.rho = 0.32;
   mcfg->params.delta0 = 0.27;
-  mod->add_option("--N", mcfg->N, "periodic chain length (default 401)");
+  add_integer(*mod, "--N", mcfg->N, 8, std::numeric_limits<std::int64_t>::max(),
+              "periodic chain length (default 401)");
   add_number(*mod, "--epsilon", mcfg->epsilon, "amplitude of eq:cimi (default 0.03)");
   add_number(*mod, "--theta-waves", mcfg->theta_waves, "theta0 = this * pi / N (default 252)");
   add_number(*mod, "--b", mcfg->b, "modulation depth (default 0.01)");
@@ -257,6 +274,7 @@ void register_simulate(CLI::App& app) {
     mcfg->integrator.stepper = sim::parse_stepper(*mstepper);
     mcfg->restart_file = *restart;
     mcfg->checkpoint_file = *checkpoint;
+    mcfg->max_memory = *max_memory;
     run_modulated_and_report(*mcfg, *out, *compact);
   });
 
@@ -266,7 +284,8 @@ void register_simulate(CLI::App& app) {
       throw InvalidParameter("config", "give a subcommand (bright, drive, modulated) or --config FILE.toml");
     const std::string kind = sim::experiment_kind(*config);
     if (kind == "drive") {
-      const auto dc = sim::load_drive_config(*config);
+      auto dc = sim::load_drive_config(*config);
+      dc.run.max_memory = *max_memory;
       run_drive_and_report(dc.run, !out->empty() ? *out : dc.out_dir, *compact);
       return;
     }
@@ -274,10 +293,12 @@ void register_simulate(CLI::App& app) {
       auto mc = sim::load_modulated_config(*config);
       mc.run.restart_file = *restart;
       mc.run.checkpoint_file = *checkpoint;
+      mc.run.max_memory = *max_memory;
       run_modulated_and_report(mc.run, !out->empty() ? *out : mc.out_dir, *compact);
       return;
     }
-    const sim::ExperimentConfig ec = sim::load_experiment_config(*config);
+    sim::ExperimentConfig ec = sim::load_experiment_config(*config);
+    ec.bright.max_memory = *max_memory;
     const std::string dir = !out->empty() ? *out : ec.out_dir;
     if (ec.experiment == "bright") run_bright_and_report(ec.bright, dir, *compact);
   });

@@ -46,7 +46,7 @@ nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
                                {"max_abs_x", s.trailing.max_abs_x},
                                {"y_over_x", s.trailing.y_over_x},
                                {"branch", s.trailing.y_over_x < 0 ? "optical" : "acoustic"}};
-  add_run_status(j, s.t_end, s.interrupted, s.blew_up, s.stats, s.solve_seconds);
+  add_run_status(j, s.t_end, s.interrupted, s.blew_up, s.stats, s.solve_seconds, s.blow_up);
   return j;
 }
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "lrchain/ansatz/bright_breather.hpp"
+#include "lrchain/checked_number.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/energy.hpp"
@@ -15,16 +16,70 @@
 
 namespace lrchain::sim {
 
+namespace {
+
+constexpr std::int64_t max_samples = 1'000'000'000'000'000;  // far above any memory; no overflow
+constexpr long max_sites = 1'000'000'000'000'000;  // N: 2N + 2 beads stay far from overflow
+
+// Sample intervals floor(periods / sample_every) of the run (validated: no overflow).
+std::int64_t sample_intervals(const BrightRunConfig& c) {
+  return checked_count(std::floor(c.periods / c.sample_every + 1e-9), "periods", 1, max_samples,
+                       "samples (periods / sample-every)");
+}
+
+}  // namespace
+
+std::vector<double> snapshot_periods_in_run(const BrightRunConfig& c) {
+  if (c.snapshot_periods != default_bright_snapshot_periods()) return c.snapshot_periods;
+  std::vector<double> inside;
+  for (double p : c.snapshot_periods)
+    if (p <= c.periods * (1 + 1e-12)) inside.push_back(p);
+  return inside;
+}
+
+namespace {
+
+// The sizes the run's memory and output grow with.
+LatticeRunSizes run_sizes(const BrightRunConfig& c) {
+  LatticeRunSizes s;
+  s.sites = 2 * double(c.N) + 2;
+  const double snapshots = double(snapshot_periods_in_run(c).size());
+  s.observations = double(sample_intervals(c)) + 2 + snapshots;
+  s.series_columns = 5;
+  s.spacetime_rows = std::floor(c.periods / c.spacetime_every) + 1;
+  s.snapshots = snapshots;
+  s.stepper = c.integrator.stepper;
+  return s;
+}
+
+}  // namespace
+
+ResourceEstimate estimate_resources(const BrightRunConfig& c) { return estimate_lattice_run(run_sizes(c)); }
+
 void validate(const BrightRunConfig& c) {
   validate(c.params);
-  if (c.N < 2 || c.N > 50'000'000) throw InvalidParameter("N", "must be an integer in [2, 5e7]");
-  if (!(c.periods > 0 && std::isfinite(c.periods))) throw InvalidParameter("periods", "must be > 0");
+  if (c.N < 2 || c.N > max_sites) throw InvalidParameter("N", "must be an integer in [2, 1e15]");
+  if (!(c.periods > 0 && std::isfinite(c.periods)))
+    throw InvalidParameter("periods", "must be a finite number > 0 (units of T_b)");
   if (!(c.sample_every > 0 && c.sample_every <= c.periods))
     throw InvalidParameter("sample-every", "must be in (0, periods] (units of T_b)");
-  if (!(c.spacetime_every >= c.sample_every))
-    throw InvalidParameter("spacetime-every", "must be >= sample-every (units of T_b)");
+  if (!(c.spacetime_every >= c.sample_every && std::isfinite(c.spacetime_every)))
+    throw InvalidParameter("spacetime-every", "must be a finite number >= sample-every (units of T_b)");
+  checked_finite(c.theta, "theta");
+  checked_finite(c.n0, "n0");
+  if (c.detuning) checked_finite(*c.detuning, "detuning");
+  checked_finite(c.error_window_end, "error-window");
   if (c.centre_window < 1) throw InvalidParameter("centre-window", "must be >= 1");
+  for (double p : snapshot_periods_in_run(c))
+    if (!(p >= 0 && p <= c.periods * (1 + 1e-12)))
+      throw InvalidParameter("snapshots", fmt::format("snapshot time {} T_b lies outside the run [0, {}] T_b",
+                                                      p, c.periods));
   validate(c.integrator);
+  sample_intervals(c);
+  const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
+  const bool lattice = lattice_dominates(sizes);
+  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "N" : "periods",
+               lattice ? "lower N" : "lower periods or raise sample-every and spacetime-every");
 }
 
 
@@ -74,13 +129,13 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
 
   // Observation times: regular samples, plus the snapshot times.
   const double Tb = ansatz.period(), t_end = c.periods * Tb, h = c.sample_every * Tb;
-  const long samples = long(std::floor(c.periods / c.sample_every + 1e-9));
+  const std::int64_t samples = sample_intervals(c);
   std::vector<double> times;
-  for (long k = 0; k <= samples; ++k) times.push_back(double(k) * h);
+  times.reserve(static_cast<std::size_t>(samples) + 2);
+  for (std::int64_t k = 0; k <= samples; ++k) times.push_back(double(k) * h);
   if (t_end - times.back() > 1e-9 * t_end) times.push_back(t_end);
   std::vector<double> snap_times;
-  for (double p : c.snapshot_periods)
-    if (p >= 0 && p <= c.periods * (1 + 1e-12)) snap_times.push_back(std::min(p * Tb, t_end));
+  for (double p : snapshot_periods_in_run(c)) snap_times.push_back(std::min(p * Tb, t_end));
   times = merge_observation_times(std::move(times), snap_times, t_end);
   const double st_every = c.spacetime_every * Tb;
 
@@ -162,6 +217,7 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
   S.t_end = S.stats.t_reached;
   S.interrupted = S.stats.stopped;
   S.blew_up = S.stats.blew_up;
+  S.blow_up = locate_blow_up(S.stats, beads, first);
   S.centre_speed = least_squares_slope(centre_t, centre_x);
   if (!centre_x.empty()) {
     S.centre_start = centre_x.front();

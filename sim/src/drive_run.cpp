@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "lrchain/checked_number.hpp"
 #include "lrchain/coefficients.hpp"
 #include "lrchain/dispersion.hpp"
 #include "lrchain/errors.hpp"
@@ -18,24 +19,76 @@
 
 namespace lrchain::sim {
 
+namespace {
+
+constexpr std::int64_t max_samples = 1'000'000'000'000'000;  // far above any memory; no overflow
+
+// Sample intervals floor(t_end / sample_every) of the run (validated: no overflow).
+std::int64_t sample_intervals(const DriveRunConfig& c) {
+  return checked_count(std::floor(c.t_end / c.sample_every + 1e-9), "t-end", 1, max_samples,
+                       "samples (t-end / sample-every)");
+}
+
+}  // namespace
+
+std::vector<double> snapshot_times_in_run(const DriveRunConfig& c) {
+  if (c.snapshot_times != default_drive_snapshot_times()) return c.snapshot_times;
+  std::vector<double> inside;
+  for (double t : c.snapshot_times)
+    if (t <= c.t_end * (1 + 1e-12)) inside.push_back(t);
+  return inside;
+}
+
+namespace {
+
+// The sizes the run's memory and output grow with.
+LatticeRunSizes run_sizes(const DriveRunConfig& c) {
+  LatticeRunSizes s;
+  s.sites = double(c.beads);
+  const double snapshots = double(snapshot_times_in_run(c).size());
+  s.observations = double(sample_intervals(c)) + 2 + snapshots;
+  s.series_columns = 5;
+  s.spacetime_rows = std::floor(c.t_end / c.spacetime_every) + 1;
+  s.snapshots = snapshots;
+  s.stepper = c.integrator.stepper;
+  return s;
+}
+
+}  // namespace
+
+ResourceEstimate estimate_resources(const DriveRunConfig& c) { return estimate_lattice_run(run_sizes(c)); }
+
 void validate(const DriveRunConfig& c) {
   validate(c.params);
-  if (c.beads < 10) throw InvalidParameter("beads", "must be >= 10");
-  if (!(c.amplitude > 0)) throw InvalidParameter("amplitude", "must be > 0");
-  if (!(c.omega0 > 0)) throw InvalidParameter("omega0", "must be > 0");
-  if (!(c.ramp_rate > 0)) throw InvalidParameter("ramp-rate", "must be > 0");
-  if (!(c.t_end > 0)) throw InvalidParameter("t-end", "must be > 0");
+  if (c.beads < 10) throw InvalidParameter("beads", "must be an integer >= 10");
+  if (!(c.amplitude > 0 && std::isfinite(c.amplitude)))
+    throw InvalidParameter("amplitude", "must be a finite number > 0");
+  if (!(c.omega0 > 0 && std::isfinite(c.omega0))) throw InvalidParameter("omega0", "must be a finite number > 0");
+  if (!(c.ramp_rate > 0 && std::isfinite(c.ramp_rate)))
+    throw InvalidParameter("ramp-rate", "must be a finite number > 0");
+  checked_finite(c.t_m, "t-m");
+  if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t-end", "must be a finite number > 0");
   if (!(c.sample_every > 0 && c.sample_every <= c.t_end))
     throw InvalidParameter("sample-every", "must be in (0, t_end]");
-  if (!(c.spacetime_every >= c.sample_every))
-    throw InvalidParameter("spacetime-every", "must be >= sample-every");
+  if (!(c.spacetime_every >= c.sample_every && std::isfinite(c.spacetime_every)))
+    throw InvalidParameter("spacetime-every", "must be a finite number >= sample-every");
   if (!(c.front_fraction > 0 && c.front_fraction < 1))
     throw InvalidParameter("front-fraction", "must be in (0, 1)");
+  checked_finite(c.front_fit_start, "front-fit-start");
+  checked_finite(c.front_fit_end, "front-fit-end");
   if (!(c.front_fit_end > c.front_fit_start))
     throw InvalidParameter("front-fit", "window end must exceed its start");
+  for (double t : snapshot_times_in_run(c))
+    if (!(t >= 0 && t <= c.t_end * (1 + 1e-12)))
+      throw InvalidParameter("snapshots", fmt::format("snapshot time {} lies outside the run [0, {}]", t, c.t_end));
   validate(c.integrator);
   if (is_symplectic(c.integrator.stepper))
     throw InvalidParameter("stepper", "the driven chain is not autonomous: use rkf78 or dopri5");
+  sample_intervals(c);
+  const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
+  const bool lattice = lattice_dominates(sizes);
+  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "beads" : "t-end",
+               lattice ? "lower beads" : "lower t-end or raise sample-every and spacetime-every");
 }
 
 // chi(t) = tanh(r t) (1 - tanh(r (t - t_m))) / 2 (Sec. 4.3).
@@ -101,12 +154,12 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   State s(L.size(), 0.0);  // chain at rest
 
   std::vector<double> times;
-  const long samples = long(std::floor(c.t_end / c.sample_every + 1e-9));
-  for (long k = 0; k <= samples; ++k) times.push_back(double(k) * c.sample_every);
+  const std::int64_t samples = sample_intervals(c);
+  times.reserve(static_cast<std::size_t>(samples) + 2);
+  for (std::int64_t k = 0; k <= samples; ++k) times.push_back(double(k) * c.sample_every);
   if (c.t_end - times.back() > 1e-9 * c.t_end) times.push_back(c.t_end);
   std::vector<double> snap_times;
-  for (double ts : c.snapshot_times)
-    if (ts >= 0 && ts <= c.t_end * (1 + 1e-12)) snap_times.push_back(std::min(ts, c.t_end));
+  for (double ts : snapshot_times_in_run(c)) snap_times.push_back(std::min(ts, c.t_end));
   times = merge_observation_times(std::move(times), snap_times, c.t_end);
 
   auto& rec = result.record;
@@ -156,6 +209,7 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   S.t_end = S.stats.t_reached;
   S.interrupted = S.stats.stopped;
   S.blew_up = S.stats.blew_up;
+  S.blow_up = locate_blow_up(S.stats, beads, 1);
   S.front_speed = least_squares_slope(front_t, front_n);
   rec.fields.push_back(std::move(field));
   return result;
@@ -178,7 +232,7 @@ nlohmann::json to_json(const DriveRunConfig& c, const DriveRunSummary& s) {
   j["final_peaks"] = s.final_peaks;
   j["final_energy"] = s.final_energy;
   j["max_energy"] = s.max_energy;
-  add_run_status(j, s.t_end, s.interrupted, s.blew_up, s.stats, s.solve_seconds);
+  add_run_status(j, s.t_end, s.interrupted, s.blew_up, s.stats, s.solve_seconds, s.blow_up);
   return j;
 }
 

@@ -2,6 +2,7 @@
 #include "lrchain/sim/integrator.hpp"
 
 #include <cstdint>
+#include <fmt/format.h>
 
 #include "vector_loops.hpp"
 
@@ -23,7 +24,28 @@ bool all_finite(const double* x, std::size_t n) {
   return bad == 0;
 }
 
+std::size_t first_non_finite(const double* x, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(x[i])) return i;
+  return n;
+}
+
 }  // namespace detail
+
+std::string BlowUp::message() const {
+  return fmt::format("the integration blew up (non-finite state) at t = {:.6g}, first at site n = {} ({})",
+                     t, site, field);
+}
+
+std::optional<BlowUp> locate_blow_up(const IntegrationStats& stats, std::size_t sites, long first_label) {
+  if (!stats.blew_up || sites == 0) return std::nullopt;
+  static const char* const fields[] = {"u", "v", "du/dt", "dv/dt"};
+  BlowUp b;
+  b.t = stats.t_reached;
+  b.site = first_label + static_cast<long>(stats.blow_up_index % sites);
+  b.field = fields[std::min<std::size_t>(stats.blow_up_index / sites, 3)];
+  return b;
+}
 
 StepperKind parse_stepper(std::string_view text) {
   if (text == "rkf78") return StepperKind::rkf78;
@@ -57,6 +79,12 @@ void validate(const IntegratorOptions& o) {
   if (!(o.abs_tol > 0 && o.abs_tol < 1)) throw InvalidParameter("abs_tol", "must be in (0, 1)");
   if (!(o.rel_tol >= 0 && o.rel_tol < 1)) throw InvalidParameter("rel_tol", "must be in [0, 1)");
   if (!(o.dt > 0 && std::isfinite(o.dt))) throw InvalidParameter("dt", "must be a finite number > 0");
+}
+
+void validate_step_count(const IntegratorOptions& o, double duration) {
+  if (!is_symplectic(o.stepper)) return;  // adaptive steppers grow their first step
+  checked_count(duration / o.dt, "dt", 0, detail::max_fixed_steps,
+                "fixed steps over the run (duration / dt)");
 }
 
 }  // namespace lrchain::sim

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "lrchain/checked_number.hpp"
 #include "lrchain/coefficients.hpp"
 #include "lrchain/dispersion.hpp"
 #include "lrchain/errors.hpp"
@@ -20,20 +21,74 @@
 
 namespace lrchain::sim {
 
+namespace {
+
+constexpr std::int64_t max_samples = 1'000'000'000'000'000;  // far above any memory; no overflow
+
+// Observation times k * every for k = first..: floor(t / every) (validated: no overflow).
+std::int64_t grid_index(double t, double every, const std::string& parameter) {
+  return checked_count(std::floor(t / every), parameter, 0, max_samples,
+                       "samples (t-end / " + parameter + ")");
+}
+
+}  // namespace
+
+std::vector<double> snapshot_times_in_run(const ModulatedRunConfig& c) {
+  if (c.snapshot_times != default_modulated_snapshot_times()) return c.snapshot_times;
+  std::vector<double> inside;
+  for (double t : c.snapshot_times)
+    if (t <= c.t_end) inside.push_back(t);
+  return inside;
+}
+
+namespace {
+
+// The sizes the run's memory and output grow with.
+LatticeRunSizes run_sizes(const ModulatedRunConfig& c) {
+  LatticeRunSizes s;
+  s.sites = double(c.N);
+  const double snapshots = double(snapshot_times_in_run(c).size());
+  const double samples = double(grid_index(c.t_end, c.sample_every, "sample-every")) + 2;
+  const double checkpoints =
+      c.checkpoint_every > 0 ? double(grid_index(c.t_end, c.checkpoint_every, "checkpoint-every")) + 1 : 0;
+  s.observations = samples + checkpoints + snapshots;
+  s.series_columns = 5;
+  s.spacetime_rows = samples;
+  s.snapshots = snapshots;
+  s.stepper = c.integrator.stepper;
+  return s;
+}
+
+}  // namespace
+
+ResourceEstimate estimate_resources(const ModulatedRunConfig& c) { return estimate_lattice_run(run_sizes(c)); }
+
 void validate(const ModulatedRunConfig& c) {
   validate(c.params);
-  if (c.N < 8) throw InvalidParameter("N", "must be >= 8");
-  if (!(c.epsilon > 0)) throw InvalidParameter("epsilon", "must be > 0");
+  if (c.N < 8) throw InvalidParameter("N", "must be an integer >= 8");
+  if (!(c.epsilon > 0 && std::isfinite(c.epsilon))) throw InvalidParameter("epsilon", "must be a finite number > 0");
   if (!(c.theta_waves > 0 && c.theta_waves < double(c.N)))
     throw InvalidParameter("theta-waves", "theta0 = theta_waves*pi/N must lie in (0, pi)");
   if (!(c.b >= 0 && c.b < 1)) throw InvalidParameter("b", "must be in [0, 1)");
-  if (!(c.t_end > 0)) throw InvalidParameter("t-end", "must be > 0");
+  if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t-end", "must be a finite number > 0");
   if (!(c.sample_every > 0 && c.sample_every <= c.t_end))
     throw InvalidParameter("sample-every", "must be in (0, t_end]");
-  if (!(c.checkpoint_every >= 0)) throw InvalidParameter("checkpoint-every", "must be >= 0");
+  if (!(c.checkpoint_every >= 0 && std::isfinite(c.checkpoint_every)))
+    throw InvalidParameter("checkpoint-every", "must be a finite number >= 0");
   if (c.dark_window < 1 || c.dark_window >= c.N) throw InvalidParameter("dark-window", "must be in [1, N)");
-  if (!(c.contrast_threshold > 0)) throw InvalidParameter("contrast-threshold", "must be > 0");
+  if (!(c.contrast_threshold > 0 && std::isfinite(c.contrast_threshold)))
+    throw InvalidParameter("contrast-threshold", "must be a finite number > 0");
+  checked_finite(c.speed_fit_start, "speed-fit-start");
+  checked_finite(c.speed_fit_end, "speed-fit-end");
+  for (double t : snapshot_times_in_run(c))
+    if (!(t >= 0 && t <= c.t_end))
+      throw InvalidParameter("snapshots", fmt::format("snapshot time {} lies outside the run [0, {}]", t, c.t_end));
   validate(c.integrator);
+  validate_step_count(c.integrator, c.t_end);
+  const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
+  const bool lattice = lattice_dominates(sizes);
+  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "N" : "sample-every",
+               lattice ? "lower N" : "lower t-end or raise sample-every and checkpoint-every");
 }
 
 // eq:cimi with omega = omega_-(theta0), theta0 = theta_waves pi / N.
@@ -97,15 +152,17 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
 
   // Observation times: samples on the grid k*sample_every, checkpoint and snapshot times.
   std::vector<double> times{t0};
-  for (long k = long(std::floor(t0 / c.sample_every)) + 1; double(k) * c.sample_every < c.t_end; ++k)
+  for (std::int64_t k = grid_index(t0, c.sample_every, "sample-every") + 1;
+       double(k) * c.sample_every < c.t_end; ++k)
     times.push_back(double(k) * c.sample_every);
   if (c.checkpoint_every > 0)
-    for (long k = long(std::floor(t0 / c.checkpoint_every)) + 1; double(k) * c.checkpoint_every < c.t_end; ++k)
+    for (std::int64_t k = grid_index(t0, c.checkpoint_every, "checkpoint-every") + 1;
+         double(k) * c.checkpoint_every < c.t_end; ++k)
       times.push_back(double(k) * c.checkpoint_every);
   times.push_back(c.t_end);
   std::vector<double> snap_times;
-  for (double ts : c.snapshot_times)
-    if (ts >= t0 && ts <= c.t_end) snap_times.push_back(ts);
+  for (double ts : snapshot_times_in_run(c))
+    if (ts >= t0) snap_times.push_back(ts);
   times = merge_observation_times(std::move(times), snap_times, c.t_end);
 
   auto& rec = result.record;
@@ -146,7 +203,7 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
     if (first) S.initial_contrast = contrast;
     first = false;
     S.max_energy_drift = std::max(S.max_energy_drift, std::abs(energy - S.energy0) / S.energy0);
-    if (S.instability_time < 0 && contrast > c.contrast_threshold) S.instability_time = t;
+    if (!S.instability_time && contrast > c.contrast_threshold) S.instability_time = t;
     if (t >= c.speed_fit_start - 1e-9 && t <= c.speed_fit_end + 1e-9) {
       fit_t.push_back(t);
       fit_x.push_back(unwrapped);
@@ -157,7 +214,7 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
       for (double v : e) field.values.push_back(float(v));
       next_row += c.sample_every;
     }
-    for (double ts : c.snapshot_times) {
+    for (double ts : snap_times) {
       if (!near(ts, t)) continue;
       rec.snapshots.push_back(displacement_snapshot(L, st, e.data(), t, fmt::format("t{:.0f}", t), 0));
       break;
@@ -180,6 +237,7 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
   S.t_end = S.stats.t_reached;
   S.interrupted = S.stats.stopped;
   S.blew_up = S.stats.blew_up;
+  S.blow_up = locate_blow_up(S.stats, N, 0);
   S.dark_samples = long(fit_t.size());
   S.dark_speed = std::abs(least_squares_slope(fit_t, fit_x));
   rec.fields.push_back(std::move(field));
@@ -198,7 +256,7 @@ nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s
   j["t_start"] = s.t_start;
   j["initial_contrast"] = s.initial_contrast;
   j["contrast_threshold"] = c.contrast_threshold;
-  j["instability_time"] = s.instability_time;
+  j["instability_time"] = s.instability_time ? nlohmann::json(*s.instability_time) : nlohmann::json(nullptr);
   j["dark_speed"] = s.dark_speed;
   j["dark_speed_fit"] = {c.speed_fit_start, c.speed_fit_end};
   j["dark_samples"] = s.dark_samples;
@@ -206,7 +264,7 @@ nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s
   j["max_relative_energy_drift"] = s.max_energy_drift;
   j["checkpoints_written"] = s.checkpoints_written;
   if (!c.checkpoint_file.empty()) j["checkpoint_file"] = c.checkpoint_file;
-  add_run_status(j, s.t_end, s.interrupted, s.blew_up, s.stats, s.solve_seconds);
+  add_run_status(j, s.t_end, s.interrupted, s.blew_up, s.stats, s.solve_seconds, s.blow_up);
   return j;
 }
 

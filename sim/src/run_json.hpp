@@ -2,6 +2,8 @@
 // JSON pieces shared by the run summaries (bright, drive, modulated): model parameters,
 // integrator options, and the run status (time reached, interrupt, blow-up, work, solve time).
 // Private to sim/src.
+#include <optional>
+
 #include <nlohmann/json.hpp>
 
 #include "lrchain/params.hpp"
@@ -11,8 +13,10 @@ namespace lrchain::sim {
 
 nlohmann::json params_json(const Params& p);
 nlohmann::json integrator_json(const IntegratorOptions& o);
-// Sets t_end, interrupted, blew_up, steps, rhs_evaluations, solve_seconds.
+// Sets t_end, interrupted, blew_up, failure (null, or the blow-up: kind, t, site, field, message),
+// steps, rhs_evaluations, solve_seconds.
 void add_run_status(nlohmann::json& j, double t_end, bool interrupted, bool blew_up,
-                    const IntegrationStats& stats, double solve_seconds);
+                    const IntegrationStats& stats, double solve_seconds,
+                    const std::optional<BlowUp>& blow_up);
 
 }  // namespace lrchain::sim

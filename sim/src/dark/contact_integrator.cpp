@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "lrchain/errors.hpp"
+
 namespace lrchain::sim::dark {
 
 namespace {
@@ -179,7 +181,7 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
       ++stats_.rejected;
       h = step * std::max(0.2, 0.9 * std::pow(e, -1.0 / 8.0));
       if (h < options_.min_step)
-        throw std::runtime_error("dark-breather integration: step size below " +
+        throw NumericalFailure("dark-breather integration: step size below " +
                                  std::to_string(options_.min_step) + " at t = " + std::to_string(t));
       continue;
     }

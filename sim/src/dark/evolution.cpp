@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
+#include "lrchain/checked_number.hpp"
 #include "lrchain/errors.hpp"
 
 namespace lrchain::sim::dark {
@@ -34,8 +36,10 @@ DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, d
   if (samples_per_period < 4) throw InvalidParameter("samples", "at least 4 samples per period");
   const int N = static_cast<int>(z0.size() / 2);
   const double period = 2.0 * std::numbers::pi / omega_b;
-  if (!(t_end >= period)) throw InvalidParameter("t-end", "must be at least one period T_b = 2 pi/omega_b");
-  const int M = static_cast<int>(std::floor(t_end / period));
+  if (!(t_end >= period && std::isfinite(t_end)))
+    throw InvalidParameter("t-end", "must be a finite time of at least one period T_b = 2 pi/omega_b");
+  const int M = static_cast<int>(checked_count(std::floor(t_end / period), "t-end", 1,
+                                               std::numeric_limits<int>::max(), "periods (t-end / T_b)"));
   StrainLatticeOrbit orbit(p, N);
   ContactIntegrator integrator(orbit, integration);
   std::vector<double> s(static_cast<std::size_t>(4 * N), 0.0);

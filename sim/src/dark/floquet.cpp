@@ -7,6 +7,8 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
+#include "lrchain/errors.hpp"
+
 namespace lrchain::sim::dark {
 
 std::string FloquetResult::kind() const {
@@ -69,7 +71,7 @@ FloquetResult classify_multipliers(std::vector<std::complex<double>> lambda,
 
 FloquetResult floquet_from_monodromy(const Eigen::MatrixXd& M, const FloquetOptions& o) {
   Eigen::EigenSolver<Eigen::MatrixXd> es(M, false);
-  if (es.info() != Eigen::Success) throw std::runtime_error("Floquet: eigenvalue solver failed");
+  if (es.info() != Eigen::Success) throw NumericalFailure("Floquet: eigenvalue solver failed");
   std::vector<std::complex<double>> l(es.eigenvalues().data(),
                                       es.eigenvalues().data() + es.eigenvalues().size());
   return classify_multipliers(std::move(l), o);
@@ -95,7 +97,7 @@ FloquetResult floquet_reversible(const DarkShooting& shooting, const Eigen::Matr
   const Eigen::MatrixXd X = A.partialPivLu().solve(WA);  // first 2N columns of A^{-1} W A
   const Eigen::MatrixXd P = X.topRows(n2);
   Eigen::EigenSolver<Eigen::MatrixXd> es(P, false);
-  if (es.info() != Eigen::Success) throw std::runtime_error("Floquet: eigenvalue solver failed");
+  if (es.info() != Eigen::Success) throw NumericalFailure("Floquet: eigenvalue solver failed");
   std::vector<std::complex<double>> l;
   l.reserve(static_cast<std::size_t>(n4));
   for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+
+#include "lrchain/checked_number.hpp"
 
 namespace lrchain::sim::dark {
 
@@ -63,7 +66,8 @@ std::vector<RelativeErrorSample> relative_error_history(const Params& p, const E
   ContactIntegrator integrator(orbit, integration);
   std::vector<double> s = initial_state(z0);
   const double period = 2.0 * std::numbers::pi / omega_b;
-  const int periods = static_cast<int>(std::floor(t_end / period));
+  const int periods = static_cast<int>(checked_count(std::floor(t_end / period), "t-end", 0,
+                                                     std::numeric_limits<int>::max(), "periods (t-end / T_b)"));
   std::vector<RelativeErrorSample> out;
   out.reserve(static_cast<std::size_t>(periods));
   for (int m = 1; m <= periods; ++m) {

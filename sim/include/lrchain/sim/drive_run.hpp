@@ -3,6 +3,7 @@
 // far end u_{beads+1} = 0, first bead driven by u_0(t) = A0 sin(omega0 t) chi(t) with the plateau
 // chi(t) = tanh(r t) (1 - tanh(r (t - t_m))) / 2. Records e_n(t) (eq:edensity), the front of the
 // wave pattern, the participation number of e_n, and velocity snapshots.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,10 +11,13 @@
 
 #include "lrchain/params.hpp"
 #include "lrchain/sim/integrator.hpp"
+#include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/sim/run_control.hpp"
 #include "lrchain/sim/run_record.hpp"
 
 namespace lrchain::sim {
+
+inline std::vector<double> default_drive_snapshot_times() { return {779.9, 2400}; }
 
 struct DriveRunConfig {
   Params params{1.5, 4.0 / 9.0, 1.0, 10.0};
@@ -25,12 +29,20 @@ struct DriveRunConfig {
   double t_end = 2400;
   double sample_every = 1.0;    // series (energy, front, participation)
   double spacetime_every = 2.0; // rows of e_n(t)
-  std::vector<double> snapshot_times = {779.9, 2400};
+  // Snapshot times, each in [0, t_end]; the default list keeps only those inside a shorter run.
+  std::vector<double> snapshot_times = default_drive_snapshot_times();
   double front_fraction = 0.1;  // front = largest n with e_n > front_fraction * max_n e_n
   double front_fit_start = 100, front_fit_end = 700;  // window of the front-speed fit
   IntegratorOptions integrator{StepperKind::rkf78, 1e-10, 1e-10, 0.05};
+  double max_memory = 0;  // bytes the run may use (--max-memory); 0: the machine's available memory
 };
+// Checks every option, the sample counts and the memory estimate (InvalidParameter naming the
+// option); nothing is allocated before this.
 void validate(const DriveRunConfig& c);
+// Memory and output size of the run (resource_estimate.hpp).
+ResourceEstimate estimate_resources(const DriveRunConfig& c);
+// The snapshot times of the run: the given ones, or the default ones inside the run.
+std::vector<double> snapshot_times_in_run(const DriveRunConfig& c);
 
 // chi(t) of Sec. 4.3.
 double drive_envelope(double t, double r, double t_m);
@@ -46,6 +58,7 @@ struct DriveRunSummary {
   double max_energy = 0;
   double t_end = 0;
   bool interrupted = false, blew_up = false;
+  std::optional<BlowUp> blow_up;  // when and where, if blew_up
   IntegrationStats stats;
   double solve_seconds = 0;
 };

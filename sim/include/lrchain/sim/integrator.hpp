@@ -14,8 +14,10 @@
 #include <atomic>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +25,7 @@
 #include <boost/align/aligned_allocator.hpp>
 #include <boost/numeric/odeint.hpp>
 
+#include "lrchain/checked_number.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/contiguous_algebra.hpp"
 #include "lrchain/sim/state.hpp"
@@ -43,6 +46,9 @@ struct IntegratorOptions {
   double dt = 0.05;        // initial step (adaptive) or fixed step (symplectic)
 };
 void validate(const IntegratorOptions& o);
+// The fixed-step steppers take about `duration / dt` steps: refuses (InvalidParameter("dt")) a dt
+// that gives more than 1e12 steps (years of work) or a step count that overflows an integer.
+void validate_step_count(const IntegratorOptions& o, double duration);
 
 struct IntegrationStats {
   std::size_t steps = 0;
@@ -50,12 +56,27 @@ struct IntegrationStats {
   double t_reached = 0;     // time of the last observation made
   bool stopped = false;     // the observer asked to stop (interrupt)
   bool blew_up = false;     // the state became non-finite
+  std::size_t blow_up_index = 0;  // when blew_up: first non-finite entry of the state vector
 };
+
+// Where a blown-up integration of a displacement-form state (state.hpp) first became non-finite.
+struct BlowUp {
+  double t = 0;       // observation time at which the state was found non-finite
+  long site = 0;      // label of the first site with a non-finite entry
+  std::string field;  // "u", "v", "du/dt" or "dv/dt"
+  std::string message() const;  // "the integration blew up (non-finite state) at t = ..., ..."
+};
+// The blow-up recorded in `stats`, if any, on `sites` sites labelled first_label, first_label + 1, ...
+std::optional<BlowUp> locate_blow_up(const IntegrationStats& stats, std::size_t sites, long first_label);
 
 namespace detail {
 
+inline constexpr std::int64_t max_fixed_steps = 1'000'000'000'000;  // see validate_step_count
+
 // True if no entry is NaN or infinite (a vectorised loop: the observer calls it every sample).
 bool all_finite(const double* x, std::size_t n);
+// Index of the first NaN or infinite entry (n if none).
+std::size_t first_non_finite(const double* x, std::size_t n);
 
 // Wraps a system to count RHS evaluations (first-order form).
 template <class System>
@@ -143,7 +164,8 @@ void integrate_rkn_observed(const System& system, State& state, const std::vecto
     obs(state, times[k]);
     if (k + 1 == times.size()) break;
     const double interval = times[k + 1] - times[k];
-    const std::size_t m = std::max<std::size_t>(1, std::size_t(std::ceil(interval / dt * (1 - 1e-12))));
+    const auto m = static_cast<std::size_t>(
+        checked_count(interval / dt * (1 - 1e-12), "dt", 1, max_fixed_steps, "steps between observations"));
     odeint::integrate_n_steps(std::ref(stepper), acc, std::make_pair(std::ref(q), std::ref(p)),
                               times[k], interval / double(m), m);
     steps += m;
@@ -165,6 +187,7 @@ IntegrationStats integrate_observed(const System& system, State& state,
   validate(opt);
   IntegrationStats stats;
   if (times.empty()) return stats;
+  validate_step_count(opt, times.back() - times.front());
   if constexpr (requires { system.autonomous(); })
     if (is_symplectic(opt.stepper) && !system.autonomous())
       throw InvalidParameter("stepper", std::string(to_string(opt.stepper)) +
@@ -172,7 +195,11 @@ IntegrationStats integrate_observed(const System& system, State& state,
   stats.t_reached = times.front();
   auto obs = [&](const State& s, double t) {
     stats.t_reached = t;
-    if (!detail::all_finite(s.data(), s.size())) { stats.blew_up = true; throw detail::StopIntegration{}; }
+    if (!detail::all_finite(s.data(), s.size())) {
+      stats.blew_up = true;
+      stats.blow_up_index = detail::first_non_finite(s.data(), s.size());
+      throw detail::StopIntegration{};
+    }
     if (!observer(s, t)) { stats.stopped = true; throw detail::StopIntegration{}; }
   };
   detail::Counted<System> rhs{&system, &stats.rhs_evaluations};

@@ -3,6 +3,7 @@
 // slowly modulated acoustic wave eq:cimi; long run with checkpoint/restart. Records e_n(t)
 // (eq:edensity), the contrast of e_n (instability detector), the position of the minimum of the
 // smoothed e_n (dark-breather centre) and velocity snapshots.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,11 +11,14 @@
 
 #include "lrchain/params.hpp"
 #include "lrchain/sim/integrator.hpp"
+#include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/sim/run_control.hpp"
 #include "lrchain/sim/run_record.hpp"
 #include "lrchain/sim/state.hpp"
 
 namespace lrchain::sim {
+
+inline std::vector<double> default_modulated_snapshot_times() { return {0, 17100, 32400}; }
 
 struct ModulatedRunConfig {
   std::string name = "modulated";
@@ -25,7 +29,8 @@ struct ModulatedRunConfig {
   double b = 0.01;                    // modulation depth
   double t_end = 45000;
   double sample_every = 10;           // series rows and e_n(t) rows
-  std::vector<double> snapshot_times = {0, 17100, 32400};
+  // Snapshot times, each in [0, t_end]; the default list keeps only those inside a shorter run.
+  std::vector<double> snapshot_times = default_modulated_snapshot_times();
   double contrast_threshold = 0.2;    // instability time: first t with (max e - min e)/mean e above this
   long dark_window = 9;               // running mean (sites) before locating min e_n
   double speed_fit_start = 30000, speed_fit_end = 33000;  // dark-breather speed fit window
@@ -33,8 +38,15 @@ struct ModulatedRunConfig {
   std::string checkpoint_file;        // where to write checkpoints (empty: none)
   std::string restart_file;           // continue from this checkpoint (empty: start at t = 0)
   IntegratorOptions integrator{StepperKind::symplectic, 1e-12, 1e-12, 0.05};
+  double max_memory = 0;  // bytes the run may use (--max-memory); 0: the machine's available memory
 };
+// Checks every option, the sample and checkpoint counts and the memory estimate (InvalidParameter
+// naming the option); nothing is allocated or written before this.
 void validate(const ModulatedRunConfig& c);
+// Memory and output size of the run from t = 0 (resource_estimate.hpp).
+ResourceEstimate estimate_resources(const ModulatedRunConfig& c);
+// The snapshot times of the run: the given ones, or the default ones inside the run.
+std::vector<double> snapshot_times_in_run(const ModulatedRunConfig& c);
 
 // Initial condition eq:cimi: u, v and their rates on the periodic chain (layout of State).
 State modulated_initial_state(const ModulatedRunConfig& c, double& omega, double& theta0);
@@ -44,13 +56,14 @@ struct ModulatedRunSummary {
   double group_velocity = 0;        // omega_-'(theta0)
   double t_start = 0;               // 0 or the restart time
   double initial_contrast = 0;
-  double instability_time = -1;     // first t with contrast > threshold (-1: none)
+  std::optional<double> instability_time;  // first t with contrast > threshold, if any
   double dark_speed = 0;            // |slope| of the unwrapped min-e position over the fit window
   long dark_samples = 0;            // samples in that window
   double energy0 = 0, max_energy_drift = 0;
   double t_end = 0;
   long checkpoints_written = 0;
   bool interrupted = false, blew_up = false;
+  std::optional<BlowUp> blow_up;  // when and where, if blew_up
   IntegrationStats stats;
   double solve_seconds = 0;
 };

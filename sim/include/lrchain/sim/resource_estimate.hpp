@@ -1,0 +1,65 @@
+#pragma once
+// Memory and output size of a job, estimated from its options before anything is allocated or
+// written, and the check that refuses a job that does not fit (InvalidParameter -> exit 2):
+// the machine's available memory (MemAvailable of /proc/meminfo) or an explicit --max-memory,
+// and the free space of the output directory's file system.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "lrchain/sim/integrator.hpp"
+
+namespace lrchain::sim {
+
+struct ResourceEstimate {
+  double memory_bytes = 0;  // peak memory of the job
+  double output_bytes = 0;  // files written to the output directory
+  std::string sizes;        // what the estimate grows with, e.g. "N = 1e+09 sites, 801 samples"
+};
+
+// Sizes of a lattice run (bright, drive, modulated) that its memory and output grow with.
+struct LatticeRunSizes {
+  double sites = 0;             // lattice sites (beads) integrated
+  double observations = 0;      // observation times = rows of the series
+  double series_columns = 5;    // columns of the series
+  double spacetime_rows = 0;    // rows of the energy-density space-time field
+  double snapshots = 0;         // snapshot profiles (6 columns per site)
+  StepperKind stepper = StepperKind::rkf78;
+};
+ResourceEstimate estimate_lattice_run(const LatticeRunSizes& s);
+// True when fewer sites save more memory than fewer samples: then a refusal names the lattice
+// size rather than the sampling options.
+bool lattice_dominates(const LatticeRunSizes& s);
+
+// Exact dark breathers on `sites` sites: Newton/Floquet matrices, the recorded orbit of one
+// shooting interval of `shooting_time`, and for an evolution `periods` stroboscopic snapshots.
+ResourceEstimate estimate_dark_breather(double sites, bool floquet, double shooting_time,
+                                        double periods);
+
+// A regime map of `pixels` pixels in `panels` panels (CSV text, pixel values, boundary curves).
+ResourceEstimate estimate_regime_map(double pixels, double panels);
+
+// MemAvailable of /proc/meminfo in bytes; 0 when it cannot be read.
+double available_memory_bytes();
+
+// Bytes free for an unprivileged user on the file system that holds `dir` (or, if it does not
+// exist yet, its nearest existing parent); -1 when unknown.
+double available_disk_bytes(const std::filesystem::path& dir);
+
+// "2G", "500M", "1.5T", "64k", "4096" (bytes; binary units, K/M/G/T, optional trailing B/iB)
+// -> bytes. Throws InvalidParameter(option) for anything else or a size < 1 MiB.
+double parse_memory_size(const std::string& text, const std::string& option);
+
+// Refuses the job (InvalidParameter(parameter)) when its memory exceeds `max_memory_bytes`
+// (> 0) or, when that is 0, the machine's available memory. `advice` says what to lower.
+void check_memory(const ResourceEstimate& e, double max_memory_bytes, const std::string& parameter,
+                  const std::string& advice);
+
+// Refuses the job when its output would not fit on the file system of `out_dir`.
+void check_output_space(const ResourceEstimate& e, const std::filesystem::path& out_dir,
+                        const std::string& parameter, const std::string& advice);
+
+// A byte count for a message: "48 GB", "512 MB", "12 kB" (powers of 1000, 2 significant digits).
+std::string format_bytes(double bytes);
+
+}  // namespace lrchain::sim
