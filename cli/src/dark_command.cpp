@@ -72,8 +72,12 @@ void validate_job(const DarkArgs& a, DarkJob job) {
   }
   const sim::ResourceEstimate e =
       sim::estimate_dark_breather(a.sites, job == DarkJob::floquet || job == DarkJob::branch, shooting_time, periods);
-  sim::check_memory(e, a.max_memory, periods > 1e3 ? "t-end" : "sites",
-                    periods > 1e3 ? "lower t-end" : "lower sites");
+  if (e.dominant == "period")
+    sim::check_memory(e, a.max_memory, "omega-b", "raise omega-b (a shorter period T_b)");
+  else if (e.dominant == "periods")
+    sim::check_memory(e, a.max_memory, "t-end", "lower t-end");
+  else
+    sim::check_memory(e, a.max_memory, "sites", "lower sites");
   if (!a.out.empty()) {
     std::error_code ec;
     if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))

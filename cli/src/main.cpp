@@ -14,6 +14,11 @@ int main(int argc, char** argv) {
       "All quantities are dimensionless as in Sec. 2 of the paper (time in units of\n"
       "sqrt(m1/(A R^(alpha-1))), lengths in units of R). Numbers accept 0.25, 1e-3, 1/3, 3*pi/5."};
   app.require_subcommand(1);
+  app.footer(
+      "Exit codes: 0 success; 1 another error (e.g. a file could not be written); 2 bad input or a\n"
+      "job too large for the machine (one line on stderr names the option; nothing written);\n"
+      "3 numerical failure (blow-up of a lattice run, Newton not converging; also in the JSON);\n"
+      "130/143 interrupted by SIGINT/SIGTERM.");
   lrchain::cli::register_coeffs(app);
   lrchain::cli::register_regime(app);
   lrchain::cli::register_simulate(app);

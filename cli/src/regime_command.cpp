@@ -430,11 +430,11 @@ void validate_map(const MapArgs& a) {
     }
   } else {
     const auto dr = range_or(a.delta0_range, {0.001, 1.0}, "delta0-range");
-    validate(GridAxis{dr[0], dr[1], a.res_x, a.delta0_log}, "delta0");
     for (const double d : dr) {
       if (!(d > 0)) throw InvalidParameter("delta0-range", "delta0 must be > 0");
       validate(with_parameter(a.p, ParameterAxis::delta0, d));
     }
+    validate(GridAxis{dr[0], dr[1], a.res_x, a.delta0_log}, "delta0");
     range_or(a.omega_range, {0.0, 1.0}, "omega-range");
   }
   const sim::ResourceEstimate e =

@@ -15,6 +15,34 @@
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// Exit codes of every lrchain program (lib/include/lrchain/exit_codes.hpp, which this target does
+// not link): 1 runtime failure or failed checks, 2 bad input (nothing written).
+constexpr int exit_runtime_error = 1;
+constexpr int exit_invalid_input = 2;
+
+// Why `dir` cannot be the output directory (empty if it can): it, or the nearest existing parent
+// it would be created in, must be a writable directory.
+std::string output_directory_problem(const std::string& dir) {
+  std::error_code ec;
+  fs::path p(dir);
+  if (fs::exists(p, ec)) {
+    if (!fs::is_directory(p, ec)) return "--out '" + dir + "' exists and is not a directory";
+    if (::access(p.c_str(), W_OK | X_OK) != 0) return "--out '" + dir + "' is not writable";
+    return {};
+  }
+  fs::path parent = fs::absolute(p, ec).parent_path();
+  while (!parent.empty() && !fs::exists(parent, ec) && parent != parent.parent_path()) parent = parent.parent_path();
+  if (!fs::is_directory(parent, ec))
+    return "--out '" + dir + "' cannot be created: '" + parent.string() + "' is not a directory";
+  if (::access(parent.c_str(), W_OK | X_OK) != 0)
+    return "--out '" + dir + "' cannot be created: '" + parent.string() + "' is not writable";
+  return {};
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   // GiNaC orders the terms of sums and products by hash values that include the addresses of its
   // classes' type information, which address-space randomisation changes from run to run. The
@@ -31,8 +59,17 @@ int main(int argc, char** argv) {
     else {
       std::cerr << "usage: lrchain-derive [--out DIR] [--quiet]\n"
                    "  Derives the NLS coefficients of the resonant and homogeneous chains, checks them\n"
-                   "  against the paper, and writes DIR/nls_coefficients.hpp (default: print report only).\n";
-      return 2;
+                   "  against the paper, and writes DIR/nls_coefficients.hpp (default: print report only).\n"
+                   "  Exit codes: 0 all checks passed, 1 a check failed or a file could not be written,\n"
+                   "  2 bad arguments or --out (nothing written).\n";
+      return exit_invalid_input;
+    }
+  }
+  if (!out_dir.empty()) {
+    const std::string problem = output_directory_problem(out_dir);
+    if (!problem.empty()) {
+      std::cerr << "lrchain-derive: " << problem << "\n";
+      return exit_invalid_input;
     }
   }
   const auto t0 = std::chrono::steady_clock::now();
@@ -46,18 +83,24 @@ int main(int argc, char** argv) {
   if (!out_dir.empty()) {
     const fs::path target = fs::path(out_dir) / "nls_coefficients.hpp";
     const fs::path tmp = fs::path(out_dir) / ".nls_coefficients.hpp.tmp";
-    fs::create_directories(out_dir);
+    std::error_code ec;
+    fs::create_directories(out_dir, ec);
     {
       std::ofstream f(tmp, std::ios::binary);
       f << header;
-      if (!f) {
-        std::cerr << "lrchain-derive: cannot write " << tmp << "\n";
-        return 1;
+      if (ec || !f) {
+        std::cerr << "lrchain-derive: cannot write " << tmp.string() << "\n";
+        return exit_runtime_error;
       }
     }
-    fs::rename(tmp, target);
+    fs::rename(tmp, target, ec);
+    if (ec) {
+      fs::remove(tmp, ec);
+      std::cerr << "lrchain-derive: cannot write " << target.string() << "\n";
+      return exit_runtime_error;
+    }
     if (!quiet) std::cout << "wrote " << target.string() << "\n";
   }
   if (!quiet) std::printf("derivation + checks + emission: %.2f s\n", seconds);
-  return all_passed ? 0 : 1;
+  return all_passed ? 0 : exit_runtime_error;
 }

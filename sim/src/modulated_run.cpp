@@ -84,10 +84,12 @@ void validate(const ModulatedRunConfig& c) {
     if (!(t >= 0 && t <= c.t_end))
       throw InvalidParameter("snapshots", fmt::format("snapshot time {} lies outside the run [0, {}]", t, c.t_end));
   validate(c.integrator);
-  validate_step_count(c.integrator, c.t_end);
   const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
+  validate_step_count(c.integrator, c.t_end);
   const bool lattice = lattice_dominates(sizes);
-  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "N" : "sample-every",
+  const bool checkpoints = c.checkpoint_every > 0 && c.checkpoint_every < c.sample_every;
+  check_memory(estimate_lattice_run(sizes), c.max_memory,
+               lattice ? "N" : checkpoints ? "checkpoint-every" : "sample-every",
                lattice ? "lower N" : "lower t-end or raise sample-every and checkpoint-every");
 }
 

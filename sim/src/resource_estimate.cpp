@@ -71,6 +71,7 @@ ResourceEstimate estimate_dark_breather(double sites, bool floquet, double shoot
   const double evolution = 8 * 2 * n * (periods + 1)  // stroboscopic snapshots Z(m T_b)
                            + 2 * 4 * (n + 1) * (periods + 1);  // the two float32 fields written
   e.memory_bytes = matrices + record + evolution + 64 * 4 * n;
+  e.dominant = matrices >= record && matrices >= evolution ? "sites" : record >= evolution ? "period" : "periods";
   e.output_bytes = 2 * 4 * (n + 1) * (periods + 1)  // x/y space-time binaries
                    + 24 * 6 * (periods + n)          // evolution.csv, profile/snapshot CSVs
                    + 2e6;                            // branch tables, scripts, figures

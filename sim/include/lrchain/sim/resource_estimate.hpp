@@ -15,6 +15,7 @@ struct ResourceEstimate {
   double memory_bytes = 0;  // peak memory of the job
   double output_bytes = 0;  // files written to the output directory
   std::string sizes;        // what the estimate grows with, e.g. "N = 1e+09 sites, 801 samples"
+  std::string dominant;     // the size that makes most of the memory (dark: sites, period, periods)
 };
 
 // Sizes of a lattice run (bright, drive, modulated) that its memory and output grow with.

@@ -1,0 +1,194 @@
+// The CLI on big numbers, jobs too large for the machine, numerical failures and the small input
+// rules: exit 2 within seconds with the option named and nothing written, exit 3 on a blow-up with
+// the failure in the JSON, integral values such as 1e3 for integer options, null for "none".
+// Every job runs through lrchain::run_program in a fresh working directory whose listing is
+// compared before and after.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "lrchain/process.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Job {
+  int exit_code = -1;
+  std::string out, err;
+  double seconds = 0;
+  std::set<std::string> created;  // paths (relative) that did not exist before the job
+};
+
+std::set<std::string> listing(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) names.insert(fs::relative(e.path(), dir).string());
+  return names;
+}
+
+// Runs `lrchain args...` in a fresh directory (holding `files`: name -> content, written first).
+Job run_lrchain(const std::vector<std::string>& args,
+                const std::vector<std::pair<std::string, std::string>>& files = {}) {
+  static int counter = 0;
+  const fs::path dir = fs::temp_directory_path() /
+                       ("lrchain-limits-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const auto& [name, content] : files) std::ofstream(dir / name) << content;
+  const auto before = listing(dir);
+  lrchain::ProcessOptions o;
+  o.working_directory = dir;
+  o.capture_stdout = o.capture_stderr = true;
+  std::vector<std::string> argv{LRCHAIN_CLI};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto r = lrchain::run_program(argv, o);
+  Job job;
+  job.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  job.exit_code = r.exited ? r.exit_code : 128 + r.signal_number;
+  job.out = r.output;
+  job.err = r.error_output;
+  for (const auto& name : listing(dir))
+    if (!before.count(name)) job.created.insert(name);
+  fs::remove_all(dir);
+  return job;
+}
+
+// Exit 2 within a few seconds, one line on stderr naming `option`, nothing written.
+void check_refused(const std::vector<std::string>& args, const std::string& option,
+                   const std::vector<std::pair<std::string, std::string>>& files = {}) {
+  std::string line;
+  for (const auto& a : args) line += a + " ";
+  INFO("lrchain " << line);
+  const Job j = run_lrchain(args, files);
+  INFO("stderr: " << j.err);
+  CHECK(j.exit_code == 2);
+  CHECK(j.seconds < 5.0);
+  CHECK(j.err.find(option) != std::string::npos);
+  CHECK(std::count(j.err.begin(), j.err.end(), '\n') == 1);
+  CHECK(j.created.empty());
+}
+
+const std::vector<std::string> bright = {"simulate", "bright", "--branch", "optical", "--theta", "pi/2"};
+
+std::vector<std::string> with(std::vector<std::string> base, const std::vector<std::string>& more) {
+  base.insert(base.end(), more.begin(), more.end());
+  return base;
+}
+
+}  // namespace
+
+TEST_CASE("big numbers that crashed (overflowing float-to-integer casts) are exit 2") {
+  // Before: segmentation faults (sample count overflow, then times.back() of an empty vector).
+  check_refused(with(bright, {"--periods", "1e300pi", "--out", "o"}), "periods");
+  check_refused({"simulate", "drive", "--t-end", "1e308pi", "--out", "o"}, "t-end");
+  check_refused({"simulate", "drive", "--t-end", "inf", "--out", "o"}, "t-end");
+  check_refused({"simulate", "modulated", "--t-end", "1e300", "--out", "o"}, "t-end / sample-every");
+  // Before: dt = 1e-300 overflowed the step count of srkn11b (16 steps taken instead of 32, exit 0).
+  check_refused(with(bright, {"--stepper", "srkn11b", "--dt", "1e-300", "--periods", "1", "--out", "o"}), "dt");
+  check_refused({"dark", "evolve", "--omega-b", "2.0", "--t-end", "1e300", "--out", "o"}, "t-end");
+  check_refused({"dark", "evolve", "--omega-b", "2.0", "--t-end", "nan", "--out", "o"}, "t-end");
+}
+
+TEST_CASE("a t_end of inf in a config file is exit 2 with nothing written") {
+  std::ifstream in(std::string(LRCHAIN_SOURCE_DIR) + "/examples/exp6_drive_rho10.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find("t_end = 2400");
+  REQUIRE(at != std::string::npos);
+  text.replace(at, 12, "t_end = inf");
+  check_refused({"simulate", "--config", "drive.toml", "--out", "o"}, "t", {{"drive.toml", text}});
+}
+
+TEST_CASE("jobs larger than the machine are refused before any allocation, naming the option") {
+  // Each of these allocated until std::bad_alloc or ran for minutes. The estimates are terabytes,
+  // beyond any machine, except where --max-memory sets the limit.
+  check_refused(with(bright, {"--N", "1e9", "--out", "o"}), "N");
+  check_refused(with(bright, {"--periods", "1e9", "--out", "o"}), "periods");
+  check_refused(with(bright, {"--periods", "1", "--sample-every", "1e-9", "--out", "o"}), "sample-every");
+  check_refused(with(bright, {"--periods", "100", "--sample-every", "1e-6", "--spacetime-every", "1e-6",
+                              "--out", "o"}),
+                "spacetime-every");
+  check_refused({"simulate", "drive", "--beads", "1e10", "--out", "o"}, "beads");
+  check_refused({"simulate", "drive", "--t-end", "1e9", "--out", "o"}, "t-end");
+  check_refused({"simulate", "modulated", "--N", "1e9", "--out", "o"}, "N");
+  check_refused({"simulate", "modulated", "--sample-every", "1e-6", "--out", "o"}, "sample-every");
+  check_refused({"simulate", "modulated", "--checkpoint-every", "1e-7", "--out", "o"}, "checkpoint-every");
+  check_refused({"dark", "solve", "--omega-b", "2.0", "--sites", "1000001", "--out", "o"}, "sites");
+  check_refused({"dark", "floquet", "--omega-b", "2.0", "--sites", "101", "--max-memory", "10M", "--out", "o"},
+                "max-memory");
+  check_refused({"dark", "evolve", "--omega-b", "2.0", "--t-end", "1e9", "--out", "o"}, "t-end");
+  check_refused({"dark", "solve", "--omega-b", "1e-300", "--out", "o"}, "omega-b");
+  check_refused({"regime", "map", "--nx", "20000", "--ny", "20000", "--max-memory", "1G", "--out", "o"}, "nx");
+  check_refused(with(bright, {"--max-memory", "1M", "--out", "o"}), "max-memory");
+  check_refused(with(bright, {"--max-memory", "lots", "--out", "o"}), "max-memory");
+}
+
+TEST_CASE("snapshot times outside the run are exit 2, not dropped") {
+  check_refused(with(bright, {"--periods", "10", "--snapshots", "0", "20", "--out", "o"}), "snapshots");
+  check_refused({"simulate", "drive", "--snapshots", "-1", "--out", "o"}, "snapshots");
+  check_refused({"simulate", "modulated", "--t-end", "10", "--snapshots", "20", "--out", "o"}, "snapshots");
+}
+
+TEST_CASE("regime map, modulated runs and dark continue validate everything before writing") {
+  check_refused({"regime", "map", "--rho-range", "-1", "2", "--out", "o"}, "rho-range");
+  check_refused({"regime", "map", "--plane", "delta0-omega", "--delta0-range", "0", "1", "--out", "o"},
+                "delta0-range");
+  check_refused({"simulate", "modulated", "--epsilon", "inf", "--out", "o"}, "epsilon");
+  check_refused({"dark", "continue", "--omega-b", "2.4", "--points", "-1", "--out", "o"}, "points");
+  check_refused({"dark", "continue", "--omega-b", "2.4", "--ds", "inf", "--out", "o"}, "ds");
+}
+
+TEST_CASE("integer options accept integral values such as 1e3 and refuse fractions") {
+  const Job j = run_lrchain(with(bright, {"--N", "1e2", "--periods", "2", "--json"}));
+  REQUIRE(j.exit_code == 0);
+  CHECK(nlohmann::json::parse(j.out)["N"] == 100);
+  check_refused(with(bright, {"--N", "100.5"}), "N");
+  check_refused(with(bright, {"--N", "1e300"}), "N");
+  check_refused({"regime", "intervals", "--samples", "1e300"}, "samples");
+}
+
+TEST_CASE("a blown-up lattice run is exit 3, says when and where, and keeps its outputs") {
+  // McLachlan's symplectic stepper with dt = 1.5 is unstable on this chain (measured: it blows up
+  // at t = 90; the same run with dt = 1 stays finite to t = 200).
+  const Job j = run_lrchain({"simulate", "modulated", "--N", "16", "--theta-waves", "8", "--dt", "1.5",
+                             "--t-end", "200", "--checkpoint-every", "0", "--out", "o", "--json"});
+  INFO("stderr: " << j.err);
+  CHECK(j.exit_code == 3);
+  CHECK(j.err.find("blew up") != std::string::npos);
+  CHECK(j.err.find("site") != std::string::npos);
+  const auto s = nlohmann::json::parse(j.out);
+  CHECK(s["blew_up"] == true);
+  REQUIRE(s["failure"].is_object());
+  CHECK(s["failure"]["kind"] == "blow-up");
+  CHECK(s["failure"]["t"].get<double>() < 200);
+  CHECK(s["failure"]["site"].get<long>() >= 0);
+  CHECK(s["failure"]["site"].get<long>() < 16);
+  CHECK(j.created.count("o/summary.json") == 1);
+  CHECK(j.created.count("o/series.csv") == 1);
+}
+
+TEST_CASE("JSON says null for none: no instability, no failure") {
+  // Contrast threshold 10: far above the contrast of eq:cimi (about 0.1), so no instability time.
+  const Job j = run_lrchain({"simulate", "modulated", "--N", "64", "--theta-waves", "40", "--t-end", "50",
+                             "--contrast-threshold", "10", "--checkpoint-every", "0", "--json"});
+  REQUIRE(j.exit_code == 0);
+  const auto s = nlohmann::json::parse(j.out);
+  CHECK(s["instability_time"].is_null());
+  CHECK(s["failure"].is_null());
+  CHECK(s["blew_up"] == false);
+}
+
+TEST_CASE("--help lists the exit codes") {
+  const Job j = run_lrchain({"--help"});
+  CHECK(j.exit_code == 0);
+  for (const char* code : {"Exit codes", "0 success", "2 bad input", "3 numerical failure", "130/143"})
+    CHECK(j.out.find(code) != std::string::npos);
+}
