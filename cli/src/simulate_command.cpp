@@ -75,12 +75,16 @@ void finish(bool interrupted, const std::optional<sim::BlowUp>& blow_up, const s
                            (out.empty() ? std::string() : "; the outputs up to then are in " + out));
 }
 
-// Refuses (exit 2) a run whose output would not fit in --out, before anything is written.
+// Refuses (exit 2) an --out that is not a directory or where the run's output would not fit,
+// before anything is written.
 template <class Config>
 void check_output(const Config& cfg, const std::string& out) {
-  if (!out.empty())
-    sim::check_output_space(sim::estimate_resources(cfg), out, "out",
-                            "choose another --out, or shorten or thin out the run");
+  if (out.empty()) return;
+  std::error_code ec;
+  if (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
+    throw InputError("--out '" + out + "' exists and is not a directory");
+  sim::check_output_space(sim::estimate_resources(cfg), out, "out",
+                          "choose another --out, or shorten or thin out the run");
 }
 
 void run_bright_and_report(const sim::BrightRunConfig& cfg, const std::string& out, bool compact) {

@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -144,6 +145,15 @@ TEST_CASE("regime map, modulated runs and dark continue validate everything befo
   check_refused({"simulate", "modulated", "--epsilon", "inf", "--out", "o"}, "epsilon");
   check_refused({"dark", "continue", "--omega-b", "2.4", "--points", "-1", "--out", "o"}, "points");
   check_refused({"dark", "continue", "--omega-b", "2.4", "--ds", "inf", "--out", "o"}, "ds");
+}
+
+TEST_CASE("an --out that is a file is exit 2 with the file untouched") {
+  const Job j = run_lrchain(with(bright, {"--N", "20", "--periods", "1", "--out", "taken"}), {{"taken", "user data"}});
+  CHECK(j.exit_code == 2);
+  CHECK(j.err.find("taken") != std::string::npos);
+  CHECK(j.created.empty());
+  CHECK(run_lrchain({"regime", "map", "--out", "taken"}, {{"taken", "x"}}).exit_code == 2);
+  CHECK(run_lrchain({"dark", "solve", "--omega-b", "2.4", "--out", "taken"}, {{"taken", "x"}}).exit_code == 2);
 }
 
 TEST_CASE("integer options accept integral values such as 1e3 and refuse fractions") {
