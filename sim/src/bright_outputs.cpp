@@ -37,15 +37,17 @@ nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
   j["centre_speed"] = s.centre_speed;
   j["centre_start"] = s.centre_start;
   j["centre_end"] = s.centre_end;
-  if (c.trailing.fit_start > 0)
+  if (c.trailing.fit_start > 0) {
+    const auto found = [&s](const nlohmann::json& v) { return s.trailing.found ? v : nlohmann::json(nullptr); };
     j["trailing_structure"] = {{"found", s.trailing.found},
                                {"fit_start", c.trailing.fit_start},
-                               {"speed", s.trailing.speed},
-                               {"centre_end", s.trailing.centre_end},
-                               {"max_energy_density", s.trailing.max_energy_density},
-                               {"max_abs_x", s.trailing.max_abs_x},
-                               {"y_over_x", s.trailing.y_over_x},
-                               {"branch", s.trailing.y_over_x < 0 ? "optical" : "acoustic"}};
+                               {"speed", found(s.trailing.speed)},
+                               {"centre_end", found(s.trailing.centre_end)},
+                               {"max_energy_density", found(s.trailing.max_energy_density)},
+                               {"max_abs_x", found(s.trailing.max_abs_x)},
+                               {"y_over_x", found(s.trailing.y_over_x)},
+                               {"branch", found(s.trailing.y_over_x < 0 ? "optical" : "acoustic")}};
+  }
   add_run_status(j, s.t_end, s.interrupted, s.blew_up, s.stats, s.solve_seconds, s.blow_up);
   return j;
 }

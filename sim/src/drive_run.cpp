@@ -211,6 +211,7 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   S.blew_up = S.stats.blew_up;
   S.blow_up = locate_blow_up(S.stats, beads, 1);
   S.front_speed = least_squares_slope(front_t, front_n);
+  S.front_samples = long(front_t.size());
   rec.fields.push_back(std::move(field));
   return result;
 }
@@ -225,7 +226,7 @@ nlohmann::json to_json(const DriveRunConfig& c, const DriveRunSummary& s) {
   j["integrator"] = integrator_json(c.integrator);
   j["theta"] = s.theta;
   j["group_velocity"] = s.group_velocity;
-  j["front_speed"] = s.front_speed;
+  j["front_speed"] = s.front_samples >= 2 ? nlohmann::json(s.front_speed) : nlohmann::json(nullptr);
   j["front_fit"] = {c.front_fit_start, c.front_fit_end};
   j["final_participation"] = s.final_participation;
   j["max_participation"] = s.max_participation;

@@ -259,7 +259,7 @@ nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s
   j["initial_contrast"] = s.initial_contrast;
   j["contrast_threshold"] = c.contrast_threshold;
   j["instability_time"] = s.instability_time ? nlohmann::json(*s.instability_time) : nlohmann::json(nullptr);
-  j["dark_speed"] = s.dark_speed;
+  j["dark_speed"] = s.dark_samples >= 2 ? nlohmann::json(s.dark_speed) : nlohmann::json(nullptr);  // fit needs 2
   j["dark_speed_fit"] = {c.speed_fit_start, c.speed_fit_end};
   j["dark_samples"] = s.dark_samples;
   j["energy0"] = s.energy0;

@@ -185,13 +185,14 @@ TEST_CASE("a blown-up lattice run is exit 3, says when and where, and keeps its 
   CHECK(j.created.count("o/series.csv") == 1);
 }
 
-TEST_CASE("JSON says null for none: no instability, no failure") {
+TEST_CASE("JSON says null for none: no instability, no dark-breather speed, no failure") {
   // Contrast threshold 10: far above the contrast of eq:cimi (about 0.1), so no instability time.
   const Job j = run_lrchain({"simulate", "modulated", "--N", "64", "--theta-waves", "40", "--t-end", "50",
                              "--contrast-threshold", "10", "--checkpoint-every", "0", "--json"});
   REQUIRE(j.exit_code == 0);
   const auto s = nlohmann::json::parse(j.out);
   CHECK(s["instability_time"].is_null());
+  CHECK(s["dark_speed"].is_null());  // its fit window [30000, 33000] lies beyond t_end = 50
   CHECK(s["failure"].is_null());
   CHECK(s["blew_up"] == false);
 }

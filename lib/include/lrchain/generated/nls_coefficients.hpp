@@ -18,26 +18,27 @@ struct NlsValues {
 inline NlsValues resonant_chain_nls(double D1, double sigma, double omega, double K2, double K3, double K4, double kappa, double rho, double mu) noexcept {
   NlsValues r{};
   const double t0 = (kappa * kappa);
-  const double t1 = (mu * mu);
-  const double t2 = (t0 * rho + t1);
-  r.group_velocity = K2 * t1 * sigma / (t2 * omega);
-  r.gamma = t1 / (t2 * omega);
-  const double t3 = (mu * mu * mu);
-  const double t4 = (r.group_velocity * r.group_velocity);
-  r.curvature = -((1.0 / 2.0) * (-(2.0 * K2 * t3) - (6.0 * t4 * t0 * mu * rho) - (8.0 * t4 * (kappa * kappa * kappa) * rho) + 2.0 * t4 * t3 + D1 * K2 * t3) * r.gamma / ((mu * mu * mu)));
+  const double t1 = t0 * rho;
+  const double t2 = (mu * mu);
+  const double t3 = (t1 + t2);
+  r.group_velocity = K2 * t2 * sigma / (t3 * omega);
+  r.gamma = t2 / (t3 * omega);
+  const double t4 = (mu * mu * mu);
+  const double t5 = (r.group_velocity * r.group_velocity);
+  r.curvature = -((1.0 / 2.0) * (-(2.0 * K2 * t4) - (6.0 * t5 * t0 * mu * rho) - (8.0 * t5 * (kappa * kappa * kappa) * rho) + 2.0 * t5 * t4 + D1 * K2 * t4) * r.gamma / ((mu * mu * mu)));
   r.beta = -(D1 * K3 * r.gamma);
-  const double t5 = (omega * omega * omega * omega);
-  const double t6 = (D1 * D1);
-  const double t7 = (omega * omega);
-  r.nonresonance1 = (-(16.0 * t5 * rho) - (4.0 * D1 * K2 * kappa) - (4.0 * t6 * K2 * t7 * rho) + 16.0 * D1 * K2 * t7 * rho + 4.0 * kappa * t7 + 4.0 * kappa * t7 * rho + t6 * K2 * kappa);
-  r.nonresonance2 = (-(K2) + t4 * rho + t4);
-  const double t8 = (K3 * K3);
-  r.h = -((1.0 / 2.0) * (-(12.0 * K4 * kappa * t7) - (12.0 * K4 * kappa * t7 * rho) - (3.0 * t6 * K2 * K4 * kappa) - (48.0 * D1 * K2 * K4 * t7 * rho) - (8.0 * D1 * t8 * kappa) - (8.0 * t6 * t8 * t7 * rho) + 12.0 * D1 * K2 * K4 * kappa + 12.0 * t6 * K2 * K4 * t7 * rho + 2.0 * t6 * t8 * kappa + 32.0 * D1 * t8 * t7 * rho + 48.0 * K4 * t5 * rho) * t6 * r.gamma / (r.nonresonance1));
+  const double t6 = (omega * omega * omega * omega);
+  const double t7 = (D1 * D1);
+  const double t8 = (omega * omega);
+  r.nonresonance1 = (-(16.0 * t6 * rho) - (4.0 * D1 * K2 * kappa) - (4.0 * t7 * K2 * t8 * rho) + 16.0 * D1 * K2 * t8 * rho + 4.0 * kappa * t8 + 4.0 * kappa * t8 * rho + t7 * K2 * kappa);
+  r.nonresonance2 = (-(K2) + t5 * rho + t5);
+  const double t9 = (K3 * K3);
+  r.h = (1.0 / 2.0) * (-(12.0 * D1 * K2 * K4 * kappa) - (12.0 * t7 * K2 * K4 * t8 * rho) - (2.0 * t7 * t9 * kappa) - (32.0 * D1 * t9 * t8 * rho) - (48.0 * K4 * t6 * rho) + 12.0 * K4 * kappa * t8 + 12.0 * K4 * kappa * t8 * rho + 3.0 * t7 * K2 * K4 * kappa + 48.0 * D1 * K2 * K4 * t8 * rho + 8.0 * D1 * t9 * kappa + 8.0 * t7 * t9 * t8 * rho) * t7 * r.gamma / (r.nonresonance1);
   r.lambda = 2.0 * D1 * K3 / (r.nonresonance2);
   r.h_tilde = (-(r.beta * r.lambda) + r.h);
-  const double t9 = (D1 * D1 * D1);
-  r.h_tilde_numerator = (1.0 / 2.0) * (-(12.0 * t6 * K2 * K4 * r.gamma * kappa * r.nonresonance2) - (12.0 * t9 * K2 * K4 * r.gamma * r.nonresonance2 * t7 * rho) - (2.0 * t9 * t8 * r.gamma * kappa * r.nonresonance2) - (32.0 * t6 * t8 * r.gamma * r.nonresonance2 * t7 * rho) - (4.0 * K3 * r.beta * r.nonresonance1) - (48.0 * D1 * K4 * r.gamma * r.nonresonance2 * t5 * rho) + 12.0 * D1 * K4 * r.gamma * kappa * r.nonresonance2 * t7 + 12.0 * D1 * K4 * r.gamma * kappa * r.nonresonance2 * t7 * rho + 3.0 * t9 * K2 * K4 * r.gamma * kappa * r.nonresonance2 + 48.0 * t6 * K2 * K4 * r.gamma * r.nonresonance2 * t7 * rho + 8.0 * t6 * t8 * r.gamma * kappa * r.nonresonance2 + 8.0 * t9 * t8 * r.gamma * r.nonresonance2 * t7 * rho) * D1;
-  r.dispersion = (-(D1 * K2 * mu * rho) - (kappa * mu * rho) - (t0 * rho) + kappa * mu + t1) / (rho);
+  const double t10 = (D1 * D1 * D1);
+  r.h_tilde_numerator = (1.0 / 2.0) * (-(12.0 * t7 * K2 * K4 * r.gamma * kappa * r.nonresonance2) - (12.0 * t10 * K2 * K4 * r.gamma * r.nonresonance2 * t8 * rho) - (2.0 * t10 * t9 * r.gamma * kappa * r.nonresonance2) - (32.0 * t7 * t9 * r.gamma * r.nonresonance2 * t8 * rho) - (4.0 * K3 * r.beta * r.nonresonance1) - (48.0 * D1 * K4 * r.gamma * r.nonresonance2 * t6 * rho) + 12.0 * D1 * K4 * r.gamma * kappa * r.nonresonance2 * t8 + 12.0 * D1 * K4 * r.gamma * kappa * r.nonresonance2 * t8 * rho + 3.0 * t10 * K2 * K4 * r.gamma * kappa * r.nonresonance2 + 48.0 * t7 * K2 * K4 * r.gamma * r.nonresonance2 * t8 * rho + 8.0 * t7 * t9 * r.gamma * kappa * r.nonresonance2 + 8.0 * t10 * t9 * r.gamma * r.nonresonance2 * t8 * rho) * D1;
+  r.dispersion = -((-(kappa * mu) - (t2) + D1 * K2 * mu * rho + kappa * mu * rho + t1) / (rho));
   return r;
 }
 
@@ -56,11 +57,11 @@ inline NlsValues homogeneous_chain_nls(double D1, double sigma, double omega, do
   r.nonresonance1 = (-(4.0 * D1 * K2) + 4.0 * t3 + t4 * K2);
   r.nonresonance2 = (-(K2) + t1);
   const double t5 = (K3 * K3);
-  r.h = -((1.0 / 2.0) * (-(12.0 * K4 * t3) - (3.0 * t4 * K2 * K4) - (8.0 * D1 * t5) + 12.0 * D1 * K2 * K4 + 2.0 * t4 * t5) * t4 * r.gamma / (r.nonresonance1));
+  r.h = (1.0 / 2.0) * (-(12.0 * D1 * K2 * K4) - (2.0 * t4 * t5) + 12.0 * K4 * t3 + 3.0 * t4 * K2 * K4 + 8.0 * D1 * t5) * t4 * r.gamma / (r.nonresonance1);
   r.lambda = 2.0 * D1 * K3 / (r.nonresonance2);
   r.h_tilde = (-(r.beta * r.lambda) + r.h);
   const double t6 = (D1 * D1 * D1);
-  r.h_tilde_numerator = -((1.0 / 2.0) * (-(12.0 * D1 * K4 * r.gamma * r.nonresonance2 * t3) - (3.0 * t6 * K2 * K4 * r.gamma * r.nonresonance2) - (8.0 * t4 * t5 * r.gamma * r.nonresonance2) + 12.0 * t4 * K2 * K4 * r.gamma * r.nonresonance2 + 2.0 * t6 * t5 * r.gamma * r.nonresonance2 + 4.0 * K3 * r.beta * r.nonresonance1) * D1);
+  r.h_tilde_numerator = (1.0 / 2.0) * (-(12.0 * t4 * K2 * K4 * r.gamma * r.nonresonance2) - (2.0 * t6 * t5 * r.gamma * r.nonresonance2) - (4.0 * K3 * r.beta * r.nonresonance1) + 12.0 * D1 * K4 * r.gamma * r.nonresonance2 * t3 + 3.0 * t6 * K2 * K4 * r.gamma * r.nonresonance2 + 8.0 * t4 * t5 * r.gamma * r.nonresonance2) * D1;
   r.dispersion = (-(t3) + t2);
   return r;
 }

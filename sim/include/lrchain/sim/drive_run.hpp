@@ -51,6 +51,7 @@ struct DriveRunSummary {
   double theta = 0;            // omega_+(theta) = omega0 (optical branch)
   double group_velocity = 0;   // c_+ = omega_+'(theta)
   double front_speed = 0;      // least-squares slope of the front over the fit window
+  long front_samples = 0;      // samples in that window (the speed needs at least 2)
   double final_participation = 0;  // (sum e)^2 / sum e^2 at t_end (sites carrying energy)
   double max_participation = 0;
   long final_peaks = 0;        // local maxima of e_n (3-site smoothed) above 10 % of the maximum
