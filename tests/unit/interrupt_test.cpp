@@ -170,3 +170,36 @@ TEST_CASE("simulate bright: SIGINT stops the run with exit 130 and a checkpoint"
   check_files_complete(dir / "out");
   fs::remove_all(dir);
 }
+
+TEST_CASE("dark continue: SIGTERM stops after the current branch point, writes the branch so far, exit 143") {
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-interrupt-dark-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  lrchain::ProcessOptions o;
+  o.capture_stdout = true;
+  o.stderr_file = dir / "stderr.txt";  // the per-point progress lines, polled below
+  lrchain::ChildProcess child({LRCHAIN_CLI, "dark", "continue", "--omega-b", "2.445", "--rho", "1/3",
+                               "--center", "bond", "--sites", "31", "--points", "1000", "--out",
+                               (dir / "out").string()},
+                              o);
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (slurp(dir / "stderr.txt").find("point   2 ") == std::string::npos &&
+         std::chrono::steady_clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  child.send_signal(SIGTERM);
+  const auto r = child.wait();
+  REQUIRE(r.exited);
+  CHECK(r.exit_code == 143);
+  const std::string err = slurp(dir / "stderr.txt");
+  CHECK(err.find("interrupted by SIGTERM after") != std::string::npos);
+  const auto j = nlohmann::json::parse(r.output);
+  CHECK(j["interrupted"].get<bool>());
+  const std::size_t points = j["points"].get<std::size_t>();
+  CHECK(points >= 3);
+  CHECK(points < 1000);
+  // branch.csv: a header and one complete row per point
+  const std::string csv = slurp(dir / "out" / "branch.csv");
+  CHECK(std::size_t(std::count(csv.begin(), csv.end(), '\n')) == points + 1);
+  for (const auto& e : fs::directory_iterator(dir / "out")) CHECK(e.path().filename().string()[0] != '.');
+  fs::remove_all(dir);
+}
