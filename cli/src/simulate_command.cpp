@@ -25,50 +25,11 @@
 #include "lrchain/sim/experiment_config.hpp"
 #include "lrchain/sim/more_experiment_config.hpp"
 #include "options.hpp"
+#include "stop_signals.hpp"
 
 namespace lrchain::cli {
 
 namespace {
-
-// Set by the first SIGINT/SIGTERM: the run stops at its next step boundary, writes a checkpoint
-// and its outputs so far. Only lock-free atomics are touched in the handler.
-std::atomic<bool> g_stop{false};
-std::atomic<int> g_signal{0};
-static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free);
-
-// First signal: ask the run to stop; the handlers go back to the default, so that a second
-// SIGINT or SIGTERM ends the process at once (sigaction is async-signal-safe).
-extern "C" void on_stop_signal(int signal_number) {
-  g_signal.store(signal_number);
-  g_stop.store(true);
-  struct sigaction default_action {};
-  default_action.sa_handler = SIG_DFL;
-  sigemptyset(&default_action.sa_mask);
-  ::sigaction(SIGINT, &default_action, nullptr);
-  ::sigaction(SIGTERM, &default_action, nullptr);
-}
-
-// Installs on_stop_signal for SIGINT and SIGTERM for the lifetime of a run; restores the defaults.
-struct StopSignals {
-  StopSignals() {
-    g_stop.store(false);
-    g_signal.store(0);
-    struct sigaction action {};
-    action.sa_handler = on_stop_signal;
-    sigemptyset(&action.sa_mask);
-    ::sigaction(SIGINT, &action, nullptr);
-    ::sigaction(SIGTERM, &action, nullptr);
-  }
-  ~StopSignals() {
-    struct sigaction default_action {};
-    default_action.sa_handler = SIG_DFL;
-    sigemptyset(&default_action.sa_mask);
-    ::sigaction(SIGINT, &default_action, nullptr);
-    ::sigaction(SIGTERM, &default_action, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-};
 
 // One argument as a POSIX shell reads it back (single quotes when it has anything but
 // [A-Za-z0-9_./=:+-]), for the restart command shown to the user; nothing here is ever executed.
@@ -102,8 +63,8 @@ std::string restart_command(const std::string& checkpoint) {
 void throw_if_interrupted(bool interrupted, double t_reached, double checkpoint_time,
                           const std::string& checkpoint_file) {
   if (!interrupted) return;
-  const int signal_number = g_signal.load() != 0 ? g_signal.load() : SIGINT;
-  const char* name = signal_number == SIGTERM ? "SIGTERM" : "SIGINT";
+  const int signal_number = StopSignals::received() != 0 ? StopSignals::received() : SIGINT;
+  const char* name = StopSignals::name(signal_number);
   if (checkpoint_file.empty() || checkpoint_time < 0)
     throw Interrupted(signal_number, fmt::format("interrupted by {} at t = {}; no checkpoint written "
                                                  "(give --out or --checkpoint to make a run restartable)",
@@ -151,7 +112,7 @@ struct ProgressBar {
 
 sim::RunControl make_control(ProgressBar& bar) {
   sim::RunControl c;
-  c.stop = &g_stop;
+  c.stop = StopSignals::flag();
   c.progress = [&bar](double f) { bar.update(f); };
   return c;
 }

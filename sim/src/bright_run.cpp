@@ -208,7 +208,7 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
   };
   // At step boundaries: periodic and final checkpoints; on an interrupt, a checkpoint and stop.
   auto at_boundary = [&](const State& st, double t, double next_step, const IntegrationStats& work) {
-    const bool stop = control.stop_requested();
+    const bool stop = control.stop_requested() && t < times.back();  // at the end: just finish
     if (stop || sink.due(t))
       sink.write(st, t, next_step, work, rec,
                  {{"x0_inf", S.x0_inf}, {"y0_inf", S.y0_inf}, {"energy0", S.energy0},

@@ -198,7 +198,7 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   };
   // At step boundaries: periodic and final checkpoints; on an interrupt, a checkpoint and stop.
   auto at_boundary = [&](const State& st, double t, double next_step, const IntegrationStats& work) {
-    const bool stop = control.stop_requested();
+    const bool stop = control.stop_requested() && t < times.back();  // at the end: just finish
     if (stop || sink.due(t))
       sink.write(st, t, next_step, work, rec,
                  {{"max_energy", S.max_energy}, {"max_participation", S.max_participation},

@@ -191,7 +191,7 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
   };
   // At step boundaries: periodic and final checkpoints; on an interrupt, a checkpoint and stop.
   auto at_boundary = [&](const State& st, double t, double next_step, const IntegrationStats& work) {
-    const bool stop = control.stop_requested();
+    const bool stop = control.stop_requested() && t < times.back();  // at the end: just finish
     if (stop || sink.due(t))
       sink.write(st, t, next_step, work, rec,
                  {{"initial_contrast", S.initial_contrast}, {"max_energy_drift", S.max_energy_drift},

@@ -187,6 +187,27 @@ void integrate_times_controlled(Stepper& st, System system, State& x, const std:
   }
 }
 
+// Boost.Odeint's integrate_times for a plain stepper (same file), counting steps in place so that
+// a checkpoint written from the observer records the work done so far.
+template <class Stepper, class System, class StateType, class Obs>
+void integrate_times_fixed(Stepper& st, System system, StateType& x, const std::vector<double>& times,
+                           double dt, Obs& obs, std::size_t& steps) {
+  namespace odeint = boost::numeric::odeint;
+  double current_dt = dt;
+  auto it = times.begin();
+  while (true) {
+    double current_time = *it++;
+    obs(x, current_time);
+    if (it == times.end()) break;
+    while (odeint::detail::less_with_sign(current_time, *it, current_dt)) {
+      current_dt = odeint::detail::min_abs(dt, *it - current_time);
+      st.do_step(system, x, current_time, current_dt);
+      current_time += current_dt;
+      ++steps;
+    }
+  }
+}
+
 // Boost.Odeint's integrate_times for a dense-output stepper (same file), with `boundary` called at
 // each step end after the observations inside the step, with the stepper's current state, time and
 // next step: a restart from those (initialize() recomputes the first-same-as-last derivative from the
@@ -287,9 +308,8 @@ IntegrationStats integrate_observed(const System& system, State& state,
             obs_at_boundary(state, t);
           };
           odeint::symplectic_rkn_sb3a_mclachlan<std::vector<double>> stepper;
-          stats.steps = odeint::integrate_times(stepper, acc,
-                                                std::make_pair(std::ref(q), std::ref(p)),
-                                                times.begin(), times.end(), opt.dt, pair_obs);
+          auto qp = std::make_pair(std::ref(q), std::ref(p));
+          detail::integrate_times_fixed(stepper, acc, qp, times, opt.dt, pair_obs, stats.steps);
         } else {
           throw InvalidParameter("stepper", "symplectic needs a system with acceleration()");
         }
