@@ -22,6 +22,7 @@
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
 #include "options.hpp"
+#include "stop_signals.hpp"
 
 namespace lrchain::cli {
 
@@ -243,7 +244,9 @@ void run_solve(const DarkArgs& a, bool floquet) {
 void run_continue(const DarkArgs& a) {
   validate_job(a, DarkJob::branch);
   Solved s = solve(a);
+  StopSignals signals;  // SIGINT/SIGTERM: stop after the current branch point, write the branch so far
   ContinuationOptions o;
+  o.stop = StopSignals::flag();
   o.max_points = a.points;
   o.ds = a.ds;
   o.omega_min = a.omega_min;
@@ -277,10 +280,11 @@ void run_continue(const DarkArgs& a) {
   j["points"] = br.points.size();
   j["stop_reason"] = br.stop_reason;
   j["turning_points"] = br.turning_points;
+  j["interrupted"] = br.interrupted;
   double worst = 0;
   for (const auto& b : br.points) worst = std::max(worst, b.measures.E_b);
   j["max_E_b"] = worst;
-  const bool failed = br.points.size() < 2;  // the corrector failed from the first step on
+  const bool failed = br.points.size() < 2 && !br.interrupted;  // the corrector failed at once
   if (failed) j["failure"] = {{"kind", "continuation"}, {"message", "continuation stopped: " + br.stop_reason}};
   if (!a.out.empty()) {
     sim::ensure_directory(a.out);
@@ -317,6 +321,12 @@ void run_continue(const DarkArgs& a) {
                         "floquet_moduli.png");
   }
   std::printf("%s\n", j.dump(2).c_str());
+  std::fflush(stdout);
+  if (br.interrupted)
+    throw Interrupted(StopSignals::received(),
+                      fmt::format("interrupted by {} after {} branch points{}",
+                                  StopSignals::name(StopSignals::received()), br.points.size(),
+                                  a.out.empty() ? std::string() : "; the branch so far is in " + a.out));
   if (failed) throw NumericalFailure("continuation stopped: " + br.stop_reason);
 }
 

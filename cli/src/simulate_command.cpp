@@ -9,11 +9,14 @@
 #include <cstdlib>
 #include <iostream>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
@@ -24,16 +27,82 @@
 #include "lrchain/sim/experiment_config.hpp"
 #include "lrchain/sim/more_experiment_config.hpp"
 #include "options.hpp"
+#include "stop_signals.hpp"
 
 namespace lrchain::cli {
 
 namespace {
 
-std::atomic<bool> g_stop{false};
+// One argument as a POSIX shell reads it back (single quotes when it has anything but
+// [A-Za-z0-9_./=:+-]), for the restart command shown to the user; nothing here is ever executed.
+std::string shell_quoted(const std::string& a) {
+  if (!a.empty() && a.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                        "0123456789_./=:+-,") == std::string::npos)
+    return a;
+  std::string q = "'";
+  for (char ch : a) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return q + "'";
+}
 
-extern "C" void on_sigint(int) {
-  g_stop.store(true);
-  ::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
+// This process's command line with `--restart FILE` (replacing any earlier one): the command that
+// continues an interrupted run. Read from /proc/self/cmdline; empty where that is unavailable.
+std::string restart_command(const std::string& checkpoint) {
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  std::vector<std::string> args;
+  for (std::string a; std::getline(in, a, '\0');) args.push_back(a);
+  if (args.empty()) return {};
+  std::string cmd;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--restart") { ++i; continue; }
+    if (args[i].rfind("--restart=", 0) == 0) continue;
+    cmd += (cmd.empty() ? "" : " ") + shell_quoted(args[i]);
+  }
+  return cmd + " --restart " + shell_quoted(checkpoint);
+}
+
+// After the outputs of a run stopped by a signal are written: exit 128 + signal (via
+// lrchain::Interrupted) with one line saying where the run stopped and how to continue it.
+void throw_if_interrupted(bool interrupted, double t_reached, double checkpoint_time,
+                          const std::string& checkpoint_file) {
+  if (!interrupted) return;
+  const int signal_number = StopSignals::received() != 0 ? StopSignals::received() : SIGINT;
+  const char* name = StopSignals::name(signal_number);
+  if (checkpoint_file.empty() || checkpoint_time < 0)
+    throw Interrupted(signal_number, fmt::format("interrupted by {} at t = {}; no checkpoint written "
+                                                 "(give --out or --checkpoint to make a run restartable)",
+                                                 name, t_reached));
+  const std::string cmd = restart_command(checkpoint_file);
+  throw Interrupted(signal_number,
+                    fmt::format("interrupted by {} at t = {}; checkpoint at t = {} in '{}'; continue with: {}",
+                                name, t_reached, checkpoint_time, checkpoint_file,
+                                cmd.empty() ? "the same command with --restart " + checkpoint_file : cmd));
+}
+
+// Ends a run whose integration blew up (non-finite state): exit 3, after the outputs are written;
+// the message says when and where (also in the JSON summary's "failure").
+void throw_if_blew_up(const std::optional<sim::BlowUp>& blow_up, const std::string& out) {
+  if (blow_up)
+    throw NumericalFailure(blow_up->message() +
+                           (out.empty() ? std::string() : "; the outputs up to then are in " + out));
+}
+
+// Refuses (exit 2) an --out that is not a directory or where the run's output would not fit,
+// before anything is written.
+template <class Config>
+void check_output(const Config& cfg, const std::string& out) {
+  if (out.empty()) return;
+  std::error_code ec;
+  if (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
+    throw InputError("--out '" + out + "' exists and is not a directory");
+  sim::check_output_space(sim::estimate_resources(cfg), out, "out",
+                          "choose another --out, or shorten or thin out the run");
+}
+
+// Where checkpoints go: --checkpoint, else OUT/checkpoint.bin when --out is given (else none).
+std::string checkpoint_path(const std::string& checkpoint, const std::string& out) {
+  if (!checkpoint.empty()) return checkpoint;
+  if (!out.empty()) return (std::filesystem::path(out) / "checkpoint.bin").string();
+  return {};
 }
 
 // Progress bar on stderr, only when stderr is a terminal and the run lasts more than ~2 s.
@@ -58,101 +127,60 @@ struct ProgressBar {
 };
 
 sim::RunControl make_control(ProgressBar& bar) {
-  g_stop.store(false);
-  ::signal(SIGINT, on_sigint);
   sim::RunControl c;
-  c.stop = &g_stop;
+  c.stop = StopSignals::flag();
   c.progress = [&bar](double f) { bar.update(f); };
   return c;
 }
 
-// Ends the run after its summary and outputs are written: exit 130 on Ctrl-C; a blow-up is a
-// NumericalFailure (exit 3) saying when and where, the outputs up to then kept.
-void finish(bool interrupted, const std::optional<sim::BlowUp>& blow_up, const std::string& out) {
-  if (interrupted) std::exit(130);
-  if (blow_up)
-    throw NumericalFailure(blow_up->message() +
-                           (out.empty() ? std::string() : "; the outputs up to then are in " + out));
-}
-
-// Refuses (exit 2) an --out that is not a directory or where the run's output would not fit,
-// before anything is written.
-template <class Config>
-void check_output(const Config& cfg, const std::string& out) {
-  if (out.empty()) return;
-  std::error_code ec;
-  if (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
-    throw InputError("--out '" + out + "' exists and is not a directory");
-  sim::check_output_space(sim::estimate_resources(cfg), out, "out",
-                          "choose another --out, or shorten or thin out the run");
-}
-
-void run_bright_and_report(const sim::BrightRunConfig& cfg, const std::string& out, bool compact) {
+// Runs one experiment with SIGINT/SIGTERM handling, writes its JSON summary and outputs (also when
+// interrupted: the outputs so far, consistent with the checkpoint), prints the summary, then ends
+// like an interrupted run (130/143) or a blown-up one (3) where that applies.
+template <class Config, class Run, class Write>
+void run_and_report(const Config& cfg, const std::string& out, bool compact, Run run, Write write) {
   const auto wall0 = std::chrono::steady_clock::now();
-  sim::validate(cfg);
+  sim::validate(cfg);  // every option, counts and memory: before anything is created
   check_output(cfg, out);
+  StopSignals signals;
   ProgressBar bar;
-  sim::BrightRunResult r;
-  {
-    const sim::RunControl control = make_control(bar);
-    r = sim::run_bright(cfg, control);
-  }
-  ::signal(SIGINT, SIG_DFL);
+  const sim::RunControl control = make_control(bar);
+  const auto r = run(cfg, control);
   nlohmann::json j = sim::to_json(cfg, r.summary);
+  j["checkpoint_file"] = cfg.checkpoint_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(cfg.checkpoint_file);
+  j["checkpoints_written"] = r.summary.checkpoints_written;
+  j["t_start"] = r.summary.t_start;
   if (!out.empty()) {
     j["out"] = out;
-    j["figures"] = sim::write_bright_outputs(out, r, j);
+    j["figures"] = write(out, r, j);
   }
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
-  finish(r.summary.interrupted, r.summary.blow_up, out);
+  std::fflush(stdout);
+  throw_if_interrupted(r.summary.interrupted, r.summary.t_end, r.summary.last_checkpoint_time,
+                       cfg.checkpoint_file);
+  throw_if_blew_up(r.summary.blow_up, out);
 }
 
-void run_drive_and_report(const sim::DriveRunConfig& cfg, const std::string& out, bool compact) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  sim::validate(cfg);
-  check_output(cfg, out);
-  ProgressBar bar;
-  sim::DriveRunResult r;
-  {
-    const sim::RunControl control = make_control(bar);
-    r = sim::run_drive(cfg, control);
-  }
-  ::signal(SIGINT, SIG_DFL);
-  nlohmann::json j = sim::to_json(cfg, r.summary);
-  if (!out.empty()) {
-    j["out"] = out;
-    j["figures"] = sim::write_drive_outputs(out, r, j);
-  }
-  j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
-  finish(r.summary.interrupted, r.summary.blow_up, out);
+// Checkpoints go to --checkpoint, else to OUT/checkpoint.bin when --out is given; one is written
+// at the end too when checkpoints were asked for (--checkpoint or --checkpoint-every).
+void run_bright_and_report(sim::BrightRunConfig cfg, const std::string& out, bool compact) {
+  cfg.checkpoint_at_end = !cfg.checkpoint_file.empty() || cfg.checkpoint_every > 0;
+  cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
+  run_and_report(cfg, out, compact, [](const auto& c, const auto& k) { return sim::run_bright(c, k); },
+                 [](const std::string& d, const auto& r, const auto& j) { return sim::write_bright_outputs(d, r, j); });
 }
 
-// Checkpoints go to --checkpoint, else to OUT/checkpoint.bin when --out is given.
+void run_drive_and_report(sim::DriveRunConfig cfg, const std::string& out, bool compact) {
+  cfg.checkpoint_at_end = !cfg.checkpoint_file.empty() || cfg.checkpoint_every > 0;
+  cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
+  run_and_report(cfg, out, compact, [](const auto& c, const auto& k) { return sim::run_drive(c, k); },
+                 [](const std::string& d, const auto& r, const auto& j) { return sim::write_drive_outputs(d, r, j); });
+}
+
 void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& out, bool compact) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  sim::validate(cfg);  // before the output directory is created
-  check_output(cfg, out);
-  if (cfg.checkpoint_file.empty() && !out.empty() && cfg.checkpoint_every > 0) {
-    sim::ensure_directory(out);
-    cfg.checkpoint_file = (std::filesystem::path(out) / "checkpoint.bin").string();
-  }
-  ProgressBar bar;
-  sim::ModulatedRunResult r;
-  {
-    const sim::RunControl control = make_control(bar);
-    r = sim::run_modulated(cfg, control);
-  }
-  ::signal(SIGINT, SIG_DFL);
-  nlohmann::json j = sim::to_json(cfg, r.summary);
-  if (!out.empty()) {
-    j["out"] = out;
-    j["figures"] = sim::write_modulated_outputs(out, r, j);
-  }
-  j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
-  finish(r.summary.interrupted, r.summary.blow_up, out);
+  cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
+  run_and_report(cfg, out, compact, [](const auto& c, const auto& k) { return sim::run_modulated(c, k); },
+                 [](const std::string& d, const auto& r, const auto& j) { return sim::write_modulated_outputs(d, r, j); });
 }
 
 void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::string& stepper) {
@@ -178,9 +206,12 @@ void register_simulate(CLI::App& app) {
   sim_cmd->add_flag("--json", *compact, "print the JSON summary on one line");
   auto restart = std::make_shared<std::string>();
   auto checkpoint = std::make_shared<std::string>();
-  sim_cmd->add_option("--restart", *restart, "modulated runs: continue from this checkpoint file");
+  sim_cmd->add_option("--restart", *restart,
+                      "continue the run from this checkpoint file (written with the same physics, "
+                      "lattice and stepper; the outputs cover the whole run)");
   sim_cmd->add_option("--checkpoint", *checkpoint,
-                      "modulated runs: checkpoint file (default OUT/checkpoint.bin)");
+                      "checkpoint file, written periodically, at the end and on SIGINT/SIGTERM "
+                      "(default OUT/checkpoint.bin: on SIGINT/SIGTERM, and periodically with --checkpoint-every)");
   auto max_memory = std::make_shared<double>(0.0);
   add_max_memory(*sim_cmd, *max_memory);
   sim_cmd->require_subcommand(0, 1);
@@ -211,11 +242,15 @@ void register_simulate(CLI::App& app) {
   bright->add_option("--snapshots", *snapshots, "snapshot times in T_b (default 0 50.125 200)");
   bright->add_flag("--ansatz-ends", cfg->ansatz_ends,
                    "end beads follow the ansatz (emitting boundary conditions, Sec. 4.2)");
+  add_number(*bright, "--checkpoint-every", cfg->checkpoint_every,
+             "periods T_b between checkpoints (default 0: only on SIGINT/SIGTERM)");
   add_integrator_options(*bright, cfg->integrator, *stepper);
   bright->fallthrough();  // --out, --json may follow the subcommand
   bright->callback([=] {
     cfg->integrator.stepper = sim::parse_stepper(*stepper);
     if (!snapshots->empty()) cfg->snapshot_periods = *snapshots;
+    cfg->restart_file = *restart;
+    cfg->checkpoint_file = *checkpoint;
     cfg->max_memory = *max_memory;
     run_bright_and_report(*cfg, *out, *compact);
   });
@@ -241,11 +276,15 @@ void register_simulate(CLI::App& app) {
              "front = last n with e_n > this * max e_n (default 0.1)");
   add_number(*drive, "--front-fit-start", dcfg->front_fit_start, "front-speed fit from (default 100)");
   add_number(*drive, "--front-fit-end", dcfg->front_fit_end, "front-speed fit to (default 700)");
+  add_number(*drive, "--checkpoint-every", dcfg->checkpoint_every,
+             "time between checkpoints (default 0: only on SIGINT/SIGTERM)");
   dcfg->integrator = sim::DriveRunConfig{}.integrator;
   add_integrator_options(*drive, dcfg->integrator, *dstepper);
   drive->fallthrough();
   drive->callback([=] {
     dcfg->integrator.stepper = sim::parse_stepper(*dstepper);
+    dcfg->restart_file = *restart;
+    dcfg->checkpoint_file = *checkpoint;
     dcfg->max_memory = *max_memory;
     run_drive_and_report(*dcfg, *out, *compact);
   });
@@ -289,6 +328,8 @@ void register_simulate(CLI::App& app) {
     const std::string kind = sim::experiment_kind(*config);
     if (kind == "drive") {
       auto dc = sim::load_drive_config(*config);
+      dc.run.restart_file = *restart;
+      dc.run.checkpoint_file = *checkpoint;
       dc.run.max_memory = *max_memory;
       run_drive_and_report(dc.run, !out->empty() ? *out : dc.out_dir, *compact);
       return;
@@ -302,8 +343,10 @@ void register_simulate(CLI::App& app) {
       return;
     }
     sim::ExperimentConfig ec = sim::load_experiment_config(*config);
-    ec.bright.max_memory = *max_memory;
     const std::string dir = !out->empty() ? *out : ec.out_dir;
+    ec.bright.restart_file = *restart;
+    ec.bright.checkpoint_file = *checkpoint;
+    ec.bright.max_memory = *max_memory;
     if (ec.experiment == "bright") run_bright_and_report(ec.bright, dir, *compact);
   });
 }
