@@ -34,7 +34,7 @@ namespace lrchain::cli {
 namespace {
 
 // One argument as a POSIX shell reads it back (single quotes when it has anything but
-// [A-Za-z0-9_./=:+-]), for the restart command shown to the user; nothing here is ever executed.
+// [A-Za-z0-9_./=:+,-]), for the restart command shown to the user; nothing here is ever executed.
 std::string shell_quoted(const std::string& a) {
   if (!a.empty() && a.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
                                         "0123456789_./=:+-,") == std::string::npos)
