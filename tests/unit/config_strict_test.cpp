@@ -325,3 +325,80 @@ TEST_CASE("config: docs/configs.md lists every key of the schema (generated part
   CHECK_MESSAGE(same, "docs/configs.md is out of date with the schema: the expected text is in "
                           "configs.generated.md in the test's working directory");
 }
+
+TEST_CASE("config: a schema with sub-tables, arrays of tables and user-named keys (model files, sweeps)") {
+  using namespace lrchain::config;
+  // A model-file-like schema: [[fields]] entries, and [parameters] whose keys the user names.
+  const auto field = std::make_shared<const TableSchema>(
+      TableSchema{"one field", {string("name", "", "field name").require(), number("mass", NumberRange::positive(), "1", "")},
+                  std::nullopt});
+  const auto parameter = std::make_shared<const TableSchema>(TableSchema{
+      "one parameter", {number("default", NumberRange::any(), "", "").require(), numbers("range", NumberRange::any(), "", "")},
+      std::nullopt});
+  KeySchema any_parameter = table("parameter", parameter);
+  const auto parameters = std::make_shared<const TableSchema>(TableSchema{"the parameters", {}, any_parameter});
+  const TableSchema root{"a model",
+                         {string("model", "", "").require(), strings("tags", "[]", ""), tables("fields", field),
+                          table("parameters", parameters), boolean("on_site", "false", "")},
+                         std::nullopt};
+  const std::string text =
+      "model = \"fpu\"\n"                       // 1
+      "tags = [\"a\", \"b\"]\n"                 // 2
+      "[[fields]]\n"                            // 3
+      "name = \"u\"\n"                          // 4
+      "[[fields]]\n"                            // 5
+      "name = \"v\"\n"                          // 6
+      "mass = \"1/3\"\n"                        // 7
+      "[parameters.beta]\n"                     // 8
+      "default = 0.5\n"                         // 9
+      "range = [0, \"pi\"]\n";                  // 10
+  const Document doc = Document::from_text(text, "fpu.toml");
+  const CheckedTable model = check(doc, root);
+  std::vector<std::string> tags;
+  CHECK(model.read("tags", tags));
+  CHECK(tags == std::vector<std::string>{"a", "b"});
+  const auto fields = model.tables("fields");
+  REQUIRE(fields.size() == 2);
+  std::string name;
+  CHECK(fields[1].read("name", name));
+  CHECK(name == "v");
+  CHECK(fields[1].number("mass").value() == doctest::Approx(1.0 / 3.0).epsilon(1e-15));
+  CHECK_FALSE(fields[0].number("mass").has_value());
+  CHECK(fields[1].path() == "fields[2]");
+  const auto params = model.table("parameters");
+  REQUIRE(params);
+  CHECK(params->keys() == std::vector<std::string>{"beta"});
+  const auto beta = params->table("beta");
+  REQUIRE(beta);
+  CHECK(beta->number("default").value() == 0.5);
+  CHECK(beta->line("default") == 9);
+  std::vector<double> range;
+  CHECK(beta->read("range", range));
+  CHECK(range[1] == doctest::Approx(std::numbers::pi).epsilon(1e-15));
+  bool on_site = true;
+  CHECK_FALSE(model.read("on_site", on_site));  // absent: the default stays
+  CHECK(on_site);
+  // Reading a key the schema does not list is a programming error, not an InputError.
+  CHECK_THROWS_AS(model.read("modle", name), std::logic_error);
+  // Problems inside the nested tables are located the same way.
+  const auto error = [&](const std::string& t) -> std::string {
+    try {
+      check(Document::from_text(t, "fpu.toml"), root);
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK(error("model = \"x\"\n[[fields]]\nname = \"u\"\nmas = 2\n") ==
+        "unknown key 'mas' in [fields[1]] at fpu.toml:4; did you mean 'mass'?");
+  CHECK(error("model = \"x\"\n[[fields]]\nmass = 2\n") ==
+        "missing key 'name' in [fields[1]] at fpu.toml:2: expected a string");
+  CHECK(error("model = \"x\"\n[parameters.beta]\ndefault = inf\n") ==
+        "invalid value for 'default' in [parameters.beta] at fpu.toml:3: expected a finite number; got inf");
+  CHECK(error("model = \"x\"\ntags = [\"a\", 1]\n") ==
+        "wrong type for 'tags' in the top-level table at fpu.toml:2: element 2: expected an array of strings; got "
+        "the integer 1");
+  CHECK(error("model = \"x\"\nfields = 3\n") ==
+        "wrong type for 'fields' in the top-level table at fpu.toml:2: expected an array of tables [[fields]]; got "
+        "the integer 3");
+}
