@@ -402,3 +402,29 @@ TEST_CASE("config: a schema with sub-tables, arrays of tables and user-named key
         "wrong type for 'fields' in the top-level table at fpu.toml:2: expected an array of tables [[fields]]; got "
         "the integer 3");
 }
+
+TEST_CASE("config: non-ASCII where toml++ 3.3 would reach undefined behaviour is refused; elsewhere it is kept") {
+  // Found by the config fuzzer: U+FCFF (bytes EF B3 BF) outside a string made toml++ 3.3.0 reach
+  // __builtin_unreachable in is_non_ascii_horizontal_whitespace (upstream issues #190, #295).
+  const auto error = [](const std::string& text) -> std::string {
+    try {
+      Document::from_text(text, "u.toml");
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string hint = " (write it as a \\uXXXX escape inside a \"string\")";
+  CHECK(error("\xEF\xB3\xBF") == "malformed TOML in u.toml:1: non-ASCII character outside a string or comment" + hint);
+  CHECK(error("a = 1\n\xC3\xA9 = 2\n") == "malformed TOML in u.toml:2: non-ASCII character outside a string or comment" + hint);
+  CHECK(error("s = \"\"\"\\\n\xC2\xA7\"\"\"\n") ==  // upstream issue #190's example
+        "malformed TOML in u.toml:2: non-ASCII character first on a line continued by a backslash" + hint);
+  CHECK(error("s = \"a\\\xC3\xA9\"\n") == "malformed TOML in u.toml:1: non-ASCII character right after a backslash" + hint);
+  // Inside strings and comments non-ASCII text is fine, and a byte order mark may start the file.
+  const Document ok = Document::from_text(
+      "\xEF\xBB\xBF# \xCF\x89 = 2.1 (omega)\nname = \"\xC3\xA9t\xC3\xA9\"\nl = '\xCF\x89'\nm = \"\"\"\n\xCF\x89\"\"\"\"\nn = 1\n",
+      "u.toml");
+  CHECK(ok.root()["name"].value<std::string>().value() == "\xC3\xA9t\xC3\xA9");
+  CHECK(ok.root()["m"].value<std::string>().value() == "\xCF\x89\"");
+  CHECK(ok.root()["n"].value<long>().value() == 1);
+}
