@@ -15,14 +15,17 @@ cmake -S "$src" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelW
 cmake --build "$build" --target lrchain-config-fuzz -j2
 fuzzer=$build/tests/fuzz/lrchain-config-fuzz
 work=$build/fuzz-work
-rm -rf "$work"
+rm -rf "$work/artifacts" "$work/merged"  # the working corpus carries over between runs
 mkdir -p "$work/corpus" "$work/artifacts" "$work/merged"
 cp "$src"/examples/*.toml "$work/corpus/"
 if compgen -G "$src/tests/fuzz/corpus/*" >/dev/null; then cp "$src"/tests/fuzz/corpus/* "$work/corpus/"; fi
 # Inputs up to 4 KiB (the examples are ~1 KiB); the dictionary holds the schema's keys and TOML tokens.
+status=0
 "$fuzzer" -max_total_time="$seconds" -max_len=4096 -dict="$src/tests/fuzz/config.dict" \
-  -artifact_prefix="$work/artifacts/" -print_final_stats=1 "$work/corpus" 2>&1 | tee "$work/fuzz.log" | tail -40
+  -artifact_prefix="$work/artifacts/" -print_final_stats=1 "$work/corpus" >"$work/fuzz.log" 2>&1 || status=$?
+grep -v '^#' "$work/fuzz.log" | tail -30
 "$fuzzer" -merge=1 "$work/merged" "$work/corpus" >"$work/merge.log" 2>&1
 rm -f "$src"/tests/fuzz/corpus/*
 cp "$work"/merged/* "$src/tests/fuzz/corpus/"
-echo "corpus: $(ls "$src/tests/fuzz/corpus" | wc -l) files; findings: $(ls "$work/artifacts" | wc -l)"
+echo "corpus: $(ls "$src/tests/fuzz/corpus" | wc -l) files; findings: $(ls "$work/artifacts" | wc -l); fuzzer exit $status"
+exit "$status"

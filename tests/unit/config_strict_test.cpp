@@ -419,6 +419,9 @@ TEST_CASE("config: non-ASCII where toml++ 3.3 would reach undefined behaviour is
   CHECK(error("a = 1\n\xC3\xA9 = 2\n") == "malformed TOML in u.toml:2: non-ASCII character outside a string or comment" + hint);
   CHECK(error("s = \"\"\"\\\n\xC2\xA7\"\"\"\n") ==  // upstream issue #190's example
         "malformed TOML in u.toml:2: non-ASCII character first on a line continued by a backslash" + hint);
+  // The fuzzer's second finding: a quote inside a malformed value does not open a string.
+  CHECK(error("# [modulated]\n\nperrE=571'\xD3\x8E\xCD\x94") ==
+        "malformed TOML in u.toml:3: non-ASCII character outside a string or comment" + hint);
   CHECK(error("s = \"a\\\xC3\xA9\"\n") == "malformed TOML in u.toml:1: non-ASCII character right after a backslash" + hint);
   // Inside strings and comments non-ASCII text is fine, and a byte order mark may start the file.
   const Document ok = Document::from_text(

@@ -23,15 +23,25 @@ std::optional<UnsafeCharacter> find_unsafe_non_ascii(std::string_view s) {
   long line = 1;
   std::size_t i = 0;
   if (s.substr(0, 3) == "\xEF\xBB\xBF") i = 3;  // byte order mark
+  // A quote opens a string only where TOML allows one (after '=', '[', ',', '{', at a line's start,
+  // or after '.' in a dotted key before any '='); elsewhere toml++ reads it as part of a malformed
+  // value and scans on, so it stays outside strings here too.
+  char previous = '\n';
+  bool equals_on_line = false;
   const auto unsafe = [&](const char* what) { return UnsafeCharacter{line, what}; };
   while (i < s.size()) {
     const char c = s[i];
     if (c == '\n') ++line;
     switch (state) {
-      case State::normal:
+      case State::normal: {
         if (non_ascii(c)) return unsafe("non-ASCII character outside a string or comment");
+        const bool string_may_start = previous == '=' || previous == '[' || previous == ',' || previous == '{' ||
+                                      previous == '\n' || (previous == '.' && !equals_on_line);
+        if (c == '\n') equals_on_line = false;
+        if (c == '=') equals_on_line = true;
+        if (c != ' ' && c != '\t' && c != '\r') previous = c;
         if (c == '#') state = State::comment;
-        if (c == '"' || c == '\'') {
+        if ((c == '"' || c == '\'') && string_may_start) {
           const std::size_t n = run_of(s, i, c);
           const bool multiline = n >= 3;
           state = c == '"' ? (multiline ? State::multiline_basic : State::basic)
@@ -45,8 +55,13 @@ std::optional<UnsafeCharacter> find_unsafe_non_ascii(std::string_view s) {
           continue;
         }
         break;
+      }
       case State::comment:
-        if (c == '\n') state = State::normal;
+        if (c == '\n') {
+          state = State::normal;
+          previous = '\n';
+          equals_on_line = false;
+        }
         break;
       case State::basic:
       case State::multiline_basic:
@@ -67,20 +82,30 @@ std::optional<UnsafeCharacter> find_unsafe_non_ascii(std::string_view s) {
           i += 2;
           continue;
         }
-        if (state == State::basic && (c == '"' || c == '\n')) state = State::normal;
+        if (state == State::basic && (c == '"' || c == '\n')) {
+          state = State::normal;
+          previous = c;
+          if (c == '\n') equals_on_line = false;
+        }
         if (state == State::multiline_basic && c == '"' && run_of(s, i, '"') >= 3) {
           i += std::min<std::size_t>(run_of(s, i, '"'), 5);  // up to two quotes end the content
           state = State::normal;
+          previous = '"';
           continue;
         }
         break;
       case State::literal:
-        if (c == '\'' || c == '\n') state = State::normal;
+        if (c == '\'' || c == '\n') {
+          state = State::normal;
+          previous = c;
+          if (c == '\n') equals_on_line = false;
+        }
         break;
       case State::multiline_literal:
         if (c == '\'' && run_of(s, i, '\'') >= 3) {
           i += std::min<std::size_t>(run_of(s, i, '\''), 5);
           state = State::normal;
+          previous = '\'';
           continue;
         }
         break;
