@@ -422,6 +422,10 @@ TEST_CASE("config: non-ASCII where toml++ 3.3 would reach undefined behaviour is
   // The fuzzer's second finding: a quote inside a malformed value does not open a string.
   CHECK(error("# [modulated]\n\nperrE=571'\xD3\x8E\xCD\x94") ==
         "malformed TOML in u.toml:3: non-ASCII character outside a string or comment" + hint);
+  // The third: quotes after a malformed value's braces ("05{{...{\"\"\"") do not open a string either.
+  CHECK(error("a_= 05{{rho{{8{{{\"\"\"{{\xEF\xB5\xBF{{_f{") ==
+        "malformed TOML in u.toml:1: non-ASCII character outside a string or comment" + hint);
+  CHECK(error("x = 1.\"\xC3\xA9\"\n") == "malformed TOML in u.toml:1: non-ASCII character outside a string or comment" + hint);
   CHECK(error("s = \"a\\\xC3\xA9\"\n") == "malformed TOML in u.toml:1: non-ASCII character right after a backslash" + hint);
   // Inside strings and comments non-ASCII text is fine, and a byte order mark may start the file.
   const Document ok = Document::from_text(

@@ -23,11 +23,12 @@ std::optional<UnsafeCharacter> find_unsafe_non_ascii(std::string_view s) {
   long line = 1;
   std::size_t i = 0;
   if (s.substr(0, 3) == "\xEF\xBB\xBF") i = 3;  // byte order mark
-  // A quote opens a string only where TOML allows one (after '=', '[', ',', '{', at a line's start,
-  // or after '.' in a dotted key before any '='); elsewhere toml++ reads it as part of a malformed
-  // value and scans on, so it stays outside strings here too.
+  // A quote opens a string only where TOML allows one: after '=', '[', ',', '{' or at a line's
+  // start, and not inside a token (a run of other characters up to a blank, newline, ']', '}', ','
+  // or '#'). toml++ reads a quote inside a malformed value as part of it and scans on to the next
+  // such terminator, testing each character for whitespace, so that text stays outside strings here.
   char previous = '\n';
-  bool equals_on_line = false;
+  bool in_token = false;
   const auto unsafe = [&](const char* what) { return UnsafeCharacter{line, what}; };
   while (i < s.size()) {
     const char c = s[i];
@@ -35,10 +36,12 @@ std::optional<UnsafeCharacter> find_unsafe_non_ascii(std::string_view s) {
     switch (state) {
       case State::normal: {
         if (non_ascii(c)) return unsafe("non-ASCII character outside a string or comment");
-        const bool string_may_start = previous == '=' || previous == '[' || previous == ',' || previous == '{' ||
-                                      previous == '\n' || (previous == '.' && !equals_on_line);
-        if (c == '\n') equals_on_line = false;
-        if (c == '=') equals_on_line = true;
+        const bool string_may_start =
+            !in_token && (previous == '=' || previous == '[' || previous == ',' || previous == '{' || previous == '\n');
+        if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == ']' || c == '}' || c == ',' || c == '#' || c == '=')
+          in_token = false;
+        else if (c != '[' && c != '{' && c != '"' && c != '\'')
+          in_token = true;
         if (c != ' ' && c != '\t' && c != '\r') previous = c;
         if (c == '#') state = State::comment;
         if ((c == '"' || c == '\'') && string_may_start) {
@@ -60,7 +63,6 @@ std::optional<UnsafeCharacter> find_unsafe_non_ascii(std::string_view s) {
         if (c == '\n') {
           state = State::normal;
           previous = '\n';
-          equals_on_line = false;
         }
         break;
       case State::basic:
@@ -85,7 +87,6 @@ std::optional<UnsafeCharacter> find_unsafe_non_ascii(std::string_view s) {
         if (state == State::basic && (c == '"' || c == '\n')) {
           state = State::normal;
           previous = c;
-          if (c == '\n') equals_on_line = false;
         }
         if (state == State::multiline_basic && c == '"' && run_of(s, i, '"') >= 3) {
           i += std::min<std::size_t>(run_of(s, i, '"'), 5);  // up to two quotes end the content
@@ -98,7 +99,6 @@ std::optional<UnsafeCharacter> find_unsafe_non_ascii(std::string_view s) {
         if (c == '\'' || c == '\n') {
           state = State::normal;
           previous = c;
-          if (c == '\n') equals_on_line = false;
         }
         break;
       case State::multiline_literal:
