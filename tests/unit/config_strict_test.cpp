@@ -415,17 +415,19 @@ TEST_CASE("config: non-ASCII where toml++ 3.3 would reach undefined behaviour is
     return "";
   };
   const std::string hint = " (write it as a \\uXXXX escape inside a \"string\")";
+  const std::string in_string = "non-ASCII character in a string that is not a key = \"value\"";
   CHECK(error("\xEF\xB3\xBF") == "malformed TOML in u.toml:1: non-ASCII character outside a string or comment" + hint);
   CHECK(error("a = 1\n\xC3\xA9 = 2\n") == "malformed TOML in u.toml:2: non-ASCII character outside a string or comment" + hint);
   CHECK(error("s = \"\"\"\\\n\xC2\xA7\"\"\"\n") ==  // upstream issue #190's example
         "malformed TOML in u.toml:2: non-ASCII character first on a line continued by a backslash" + hint);
   // The fuzzer's second finding: a quote inside a malformed value does not open a string.
-  CHECK(error("# [modulated]\n\nperrE=571'\xD3\x8E\xCD\x94") ==
-        "malformed TOML in u.toml:3: non-ASCII character outside a string or comment" + hint);
+  CHECK(error("# [modulated]\n\nperrE=571'\xD3\x8E\xCD\x94") == "malformed TOML in u.toml:3: " + in_string + hint);
   // The third: quotes after a malformed value's braces ("05{{...{\"\"\"") do not open a string either.
-  CHECK(error("a_= 05{{rho{{8{{{\"\"\"{{\xEF\xB5\xBF{{_f{") ==
-        "malformed TOML in u.toml:1: non-ASCII character outside a string or comment" + hint);
-  CHECK(error("x = 1.\"\xC3\xA9\"\n") == "malformed TOML in u.toml:1: non-ASCII character outside a string or comment" + hint);
+  CHECK(error("a_= 05{{rho{{8{{{\"\"\"{{\xEF\xB5\xBF{{_f{") == "malformed TOML in u.toml:1: " + in_string + hint);
+  CHECK(error("x = 1.\"\xC3\xA9\"\n") == "malformed TOML in u.toml:1: " + in_string + hint);
+  // The fourth: a second '=' ("l=1=\"::<U+FCFF>}").
+  CHECK(error("l=1=\"::\xEF\xB3\xBF}") == "malformed TOML in u.toml:1: " + in_string + hint);
+  CHECK(error("a = [\n  \"\xC3\xA9\",\n]\n") == "malformed TOML in u.toml:2: " + in_string + hint);
   CHECK(error("s = \"a\\\xC3\xA9\"\n") == "malformed TOML in u.toml:1: non-ASCII character right after a backslash" + hint);
   // Inside strings and comments non-ASCII text is fine, and a byte order mark may start the file.
   const Document ok = Document::from_text(

@@ -1,5 +1,8 @@
 // Finding the non-ASCII characters toml++ 3.3 cannot parse safely (unicode_guard.hpp): a small
-// TOML tokenizer that follows comments and the four kinds of strings.
+// TOML tokenizer that follows comments and the four kinds of strings. Non-ASCII text is allowed
+// only in comments and in the string value of a plain `key = "..."` line outside arrays and inline
+// tables: there toml++ is certainly inside a string or comment. Anywhere else a quote may belong to
+// a malformed value that toml++ scans character by character, so non-ASCII there is refused.
 #include "unicode_guard.hpp"
 
 namespace lrchain::config::detail {
@@ -7,6 +10,10 @@ namespace lrchain::config::detail {
 namespace {
 
 bool non_ascii(char c) { return static_cast<unsigned char>(c) >= 0x80; }
+bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool bare_key_char(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+}
 
 // Length of the run of `quote` characters starting at i.
 std::size_t run_of(std::string_view s, std::size_t i, char quote) {
@@ -19,54 +26,77 @@ std::size_t run_of(std::string_view s, std::size_t i, char quote) {
 
 std::optional<UnsafeCharacter> find_unsafe_non_ascii(std::string_view s) {
   enum class State { normal, comment, basic, literal, multiline_basic, multiline_literal };
+  // How much of the current line is `  key = ` (bare key), the only prefix of a trusted string.
+  enum class Prefix { start, key, after_key, equals, broken };
   State state = State::normal;
+  Prefix prefix = Prefix::start;
+  long depth = 0;          // open [ and { (arrays, inline tables, headers) outside strings
+  long depth_at_line = 0;  // depth when the line began
+  bool trusted = false;    // the current string may hold non-ASCII
   long line = 1;
   std::size_t i = 0;
   if (s.substr(0, 3) == "\xEF\xBB\xBF") i = 3;  // byte order mark
-  // A quote opens a string only where TOML allows one: after '=', '[', ',', '{' or at a line's
-  // start, and not inside a token (a run of other characters up to a blank, newline, ']', '}', ','
-  // or '#'). toml++ reads a quote inside a malformed value as part of it and scans on to the next
-  // such terminator, testing each character for whitespace, so that text stays outside strings here.
-  char previous = '\n';
-  bool in_token = false;
   const auto unsafe = [&](const char* what) { return UnsafeCharacter{line, what}; };
+  const auto new_line = [&] {
+    ++line;
+    prefix = Prefix::start;
+    depth_at_line = depth;
+  };
   while (i < s.size()) {
     const char c = s[i];
-    if (c == '\n') ++line;
     switch (state) {
       case State::normal: {
         if (non_ascii(c)) return unsafe("non-ASCII character outside a string or comment");
-        const bool string_may_start =
-            !in_token && (previous == '=' || previous == '[' || previous == ',' || previous == '{' || previous == '\n');
-        if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == ']' || c == '}' || c == ',' || c == '#' || c == '=')
-          in_token = false;
-        else if (c != '[' && c != '{' && c != '"' && c != '\'')
-          in_token = true;
-        if (c != ' ' && c != '\t' && c != '\r') previous = c;
-        if (c == '#') state = State::comment;
-        if ((c == '"' || c == '\'') && string_may_start) {
+        if (c == '\n') {
+          new_line();
+          break;
+        }
+        if (c == '"' || c == '\'') {
+          trusted = (prefix == Prefix::equals) && depth_at_line == 0 && depth == 0;
+          prefix = Prefix::broken;
           const std::size_t n = run_of(s, i, c);
-          const bool multiline = n >= 3;
-          state = c == '"' ? (multiline ? State::multiline_basic : State::basic)
-                           : (multiline ? State::multiline_literal : State::literal);
           if (n == 2) {  // an empty string
-            state = State::normal;
             i += 2;
             continue;
           }
+          const bool multiline = n >= 3;
+          state = c == '"' ? (multiline ? State::multiline_basic : State::basic)
+                           : (multiline ? State::multiline_literal : State::literal);
           i += multiline ? 3 : 1;
           continue;
+        }
+        if (c == '#') state = State::comment;
+        if (c == '[' || c == '{') ++depth;
+        if ((c == ']' || c == '}') && depth > 0) --depth;
+        // Track `  key = ` at the line's start.
+        if (blank(c)) {
+          if (prefix == Prefix::key) prefix = Prefix::after_key;
+        } else if (bare_key_char(c) && (prefix == Prefix::start || prefix == Prefix::key)) {
+          prefix = Prefix::key;
+        } else if (c == '=' && (prefix == Prefix::key || prefix == Prefix::after_key)) {
+          prefix = Prefix::equals;
+        } else {
+          prefix = Prefix::broken;
         }
         break;
       }
       case State::comment:
         if (c == '\n') {
           state = State::normal;
-          previous = '\n';
+          new_line();
         }
         break;
       case State::basic:
       case State::multiline_basic:
+        if (non_ascii(c) && !trusted) return unsafe("non-ASCII character in a string that is not a key = \"value\"");
+        if (c == '\n') {
+          if (state == State::basic) {
+            state = State::normal;
+            new_line();
+            break;
+          }
+          ++line;
+        }
         if (c == '\\') {
           if (i + 1 < s.size() && non_ascii(s[i + 1])) return unsafe("non-ASCII character right after a backslash");
           if (state == State::multiline_basic && i + 1 < s.size() &&
@@ -84,28 +114,28 @@ std::optional<UnsafeCharacter> find_unsafe_non_ascii(std::string_view s) {
           i += 2;
           continue;
         }
-        if (state == State::basic && (c == '"' || c == '\n')) {
-          state = State::normal;
-          previous = c;
-        }
+        if (state == State::basic && c == '"') state = State::normal;
         if (state == State::multiline_basic && c == '"' && run_of(s, i, '"') >= 3) {
           i += std::min<std::size_t>(run_of(s, i, '"'), 5);  // up to two quotes end the content
           state = State::normal;
-          previous = '"';
           continue;
         }
         break;
       case State::literal:
-        if (c == '\'' || c == '\n') {
-          state = State::normal;
-          previous = c;
-        }
-        break;
       case State::multiline_literal:
-        if (c == '\'' && run_of(s, i, '\'') >= 3) {
+        if (non_ascii(c) && !trusted) return unsafe("non-ASCII character in a string that is not a key = \"value\"");
+        if (c == '\n') {
+          if (state == State::literal) {
+            state = State::normal;
+            new_line();
+            break;
+          }
+          ++line;
+        }
+        if (state == State::literal && c == '\'') state = State::normal;
+        if (state == State::multiline_literal && c == '\'' && run_of(s, i, '\'') >= 3) {
           i += std::min<std::size_t>(run_of(s, i, '\''), 5);
           state = State::normal;
-          previous = '\'';
           continue;
         }
         break;
