@@ -24,8 +24,10 @@ status=0
 "$fuzzer" -max_total_time="$seconds" -max_len=4096 -dict="$src/tests/fuzz/config.dict" \
   -artifact_prefix="$work/artifacts/" -print_final_stats=1 "$work/corpus" >"$work/fuzz.log" 2>&1 || status=$?
 grep -v '^#' "$work/fuzz.log" | tail -30
-"$fuzzer" -merge=1 "$work/merged" "$work/corpus" >"$work/merge.log" 2>&1
-rm -f "$src"/tests/fuzz/corpus/*
+# Minimised on edge coverage (-use_counters=0) to keep the committed corpus to a few hundred files;
+# regression-* files (earlier findings) are kept whatever they cover.
+"$fuzzer" -merge=1 -use_counters=0 "$work/merged" "$work/corpus" >"$work/merge.log" 2>&1
+find "$src/tests/fuzz/corpus" -type f ! -name 'regression-*' -delete
 cp "$work"/merged/* "$src/tests/fuzz/corpus/"
 echo "corpus: $(ls "$src/tests/fuzz/corpus" | wc -l) files; findings: $(ls "$work/artifacts" | wc -l); fuzzer exit $status"
 exit "$status"
