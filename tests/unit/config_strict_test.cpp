@@ -325,3 +325,115 @@ TEST_CASE("config: docs/configs.md lists every key of the schema (generated part
   CHECK_MESSAGE(same, "docs/configs.md is out of date with the schema: the expected text is in "
                           "configs.generated.md in the test's working directory");
 }
+
+TEST_CASE("config: a schema with sub-tables, arrays of tables and user-named keys (model files, sweeps)") {
+  using namespace lrchain::config;
+  // A model-file-like schema: [[fields]] entries, and [parameters] whose keys the user names.
+  const auto field = std::make_shared<const TableSchema>(
+      TableSchema{"one field", {string("name", "", "field name").require(), number("mass", NumberRange::positive(), "1", "")},
+                  std::nullopt});
+  const auto parameter = std::make_shared<const TableSchema>(TableSchema{
+      "one parameter", {number("default", NumberRange::any(), "", "").require(), numbers("range", NumberRange::any(), "", "")},
+      std::nullopt});
+  KeySchema any_parameter = table("parameter", parameter);
+  const auto parameters = std::make_shared<const TableSchema>(TableSchema{"the parameters", {}, any_parameter});
+  const TableSchema root{"a model",
+                         {string("model", "", "").require(), strings("tags", "[]", ""), tables("fields", field),
+                          table("parameters", parameters), boolean("on_site", "false", "")},
+                         std::nullopt};
+  const std::string text =
+      "model = \"fpu\"\n"                       // 1
+      "tags = [\"a\", \"b\"]\n"                 // 2
+      "[[fields]]\n"                            // 3
+      "name = \"u\"\n"                          // 4
+      "[[fields]]\n"                            // 5
+      "name = \"v\"\n"                          // 6
+      "mass = \"1/3\"\n"                        // 7
+      "[parameters.beta]\n"                     // 8
+      "default = 0.5\n"                         // 9
+      "range = [0, \"pi\"]\n";                  // 10
+  const Document doc = Document::from_text(text, "fpu.toml");
+  const CheckedTable model = check(doc, root);
+  std::vector<std::string> tags;
+  CHECK(model.read("tags", tags));
+  CHECK(tags == std::vector<std::string>{"a", "b"});
+  const auto fields = model.tables("fields");
+  REQUIRE(fields.size() == 2);
+  std::string name;
+  CHECK(fields[1].read("name", name));
+  CHECK(name == "v");
+  CHECK(fields[1].number("mass").value() == doctest::Approx(1.0 / 3.0).epsilon(1e-15));
+  CHECK_FALSE(fields[0].number("mass").has_value());
+  CHECK(fields[1].path() == "fields[2]");
+  const auto params = model.table("parameters");
+  REQUIRE(params);
+  CHECK(params->keys() == std::vector<std::string>{"beta"});
+  const auto beta = params->table("beta");
+  REQUIRE(beta);
+  CHECK(beta->number("default").value() == 0.5);
+  CHECK(beta->line("default") == 9);
+  std::vector<double> range;
+  CHECK(beta->read("range", range));
+  CHECK(range[1] == doctest::Approx(std::numbers::pi).epsilon(1e-15));
+  bool on_site = true;
+  CHECK_FALSE(model.read("on_site", on_site));  // absent: the default stays
+  CHECK(on_site);
+  // Reading a key the schema does not list is a programming error, not an InputError.
+  CHECK_THROWS_AS(model.read("modle", name), std::logic_error);
+  // Problems inside the nested tables are located the same way.
+  const auto error = [&](const std::string& t) -> std::string {
+    try {
+      check(Document::from_text(t, "fpu.toml"), root);
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK(error("model = \"x\"\n[[fields]]\nname = \"u\"\nmas = 2\n") ==
+        "unknown key 'mas' in [fields[1]] at fpu.toml:4; did you mean 'mass'?");
+  CHECK(error("model = \"x\"\n[[fields]]\nmass = 2\n") ==
+        "missing key 'name' in [fields[1]] at fpu.toml:2: expected a string");
+  CHECK(error("model = \"x\"\n[parameters.beta]\ndefault = inf\n") ==
+        "invalid value for 'default' in [parameters.beta] at fpu.toml:3: expected a finite number; got inf");
+  CHECK(error("model = \"x\"\ntags = [\"a\", 1]\n") ==
+        "wrong type for 'tags' in the top-level table at fpu.toml:2: element 2: expected an array of strings; got "
+        "the integer 1");
+  CHECK(error("model = \"x\"\nfields = 3\n") ==
+        "wrong type for 'fields' in the top-level table at fpu.toml:2: expected an array of tables [[fields]]; got "
+        "the integer 3");
+}
+
+TEST_CASE("config: non-ASCII where toml++ 3.3 would reach undefined behaviour is refused; elsewhere it is kept") {
+  // Found by the config fuzzer: U+FCFF (bytes EF B3 BF) outside a string made toml++ 3.3.0 reach
+  // __builtin_unreachable in is_non_ascii_horizontal_whitespace (upstream issues #190, #295).
+  const auto error = [](const std::string& text) -> std::string {
+    try {
+      Document::from_text(text, "u.toml");
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string hint = " (write it as a \\uXXXX escape inside a \"string\")";
+  const std::string in_string = "non-ASCII character in a string that is not a key = \"value\"";
+  CHECK(error("\xEF\xB3\xBF") == "malformed TOML in u.toml:1: non-ASCII character outside a string or comment" + hint);
+  CHECK(error("a = 1\n\xC3\xA9 = 2\n") == "malformed TOML in u.toml:2: non-ASCII character outside a string or comment" + hint);
+  CHECK(error("s = \"\"\"\\\n\xC2\xA7\"\"\"\n") ==  // upstream issue #190's example
+        "malformed TOML in u.toml:2: non-ASCII character first on a line continued by a backslash" + hint);
+  // The fuzzer's second finding: a quote inside a malformed value does not open a string.
+  CHECK(error("# [modulated]\n\nperrE=571'\xD3\x8E\xCD\x94") == "malformed TOML in u.toml:3: " + in_string + hint);
+  // The third: quotes after a malformed value's braces ("05{{...{\"\"\"") do not open a string either.
+  CHECK(error("a_= 05{{rho{{8{{{\"\"\"{{\xEF\xB5\xBF{{_f{") == "malformed TOML in u.toml:1: " + in_string + hint);
+  CHECK(error("x = 1.\"\xC3\xA9\"\n") == "malformed TOML in u.toml:1: " + in_string + hint);
+  // The fourth: a second '=' ("l=1=\"::<U+FCFF>}").
+  CHECK(error("l=1=\"::\xEF\xB3\xBF}") == "malformed TOML in u.toml:1: " + in_string + hint);
+  CHECK(error("a = [\n  \"\xC3\xA9\",\n]\n") == "malformed TOML in u.toml:2: " + in_string + hint);
+  CHECK(error("s = \"a\\\xC3\xA9\"\n") == "malformed TOML in u.toml:1: non-ASCII character right after a backslash" + hint);
+  // Inside strings and comments non-ASCII text is fine, and a byte order mark may start the file.
+  const Document ok = Document::from_text(
+      "\xEF\xBB\xBF# \xCF\x89 = 2.1 (omega)\nname = \"\xC3\xA9t\xC3\xA9\"\nl = '\xCF\x89'\nm = \"\"\"\n\xCF\x89\"\"\"\"\nn = 1\n",
+      "u.toml");
+  CHECK(ok.root()["name"].value<std::string>().value() == "\xC3\xA9t\xC3\xA9");
+  CHECK(ok.root()["m"].value<std::string>().value() == "\xCF\x89\"");
+  CHECK(ok.root()["n"].value<long>().value() == 1);
+}

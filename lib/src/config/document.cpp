@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "lrchain/config/strict_toml.hpp"
+#include "unicode_guard.hpp"
 
 namespace lrchain::config {
 
@@ -49,6 +50,10 @@ Document Document::from_text(std::string_view text, std::string source) {
   if (const auto nul = text.find('\0'); nul != std::string_view::npos)
     fail(source, "is not a text file (NUL byte at line " +
                      std::to_string(1 + std::count(text.begin(), text.begin() + long(nul), '\n')) + ")");
+  if (const auto bad = detail::find_unsafe_non_ascii(text))
+    throw ConfigError("malformed TOML in " + source + ":" + std::to_string(bad->line) + ": " + bad->what +
+                          " (write it as a \\uXXXX escape inside a \"string\")",
+                      source, bad->line, "", "");
   try {
     return Document(toml::parse(text, source), source);
   } catch (const toml::parse_error& e) {
