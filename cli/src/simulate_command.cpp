@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -19,6 +20,7 @@
 #include "lrchain/sim/bright_outputs.hpp"
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "lrchain/sim/output_lock.hpp"
 #include "lrchain/sim/experiment_config.hpp"
 #include "lrchain/sim/more_experiment_config.hpp"
 #include "options.hpp"
@@ -66,6 +68,8 @@ sim::RunControl make_control(ProgressBar& bar) {
 
 void run_bright_and_report(const sim::BrightRunConfig& cfg, const std::string& out, bool compact) {
   const auto wall0 = std::chrono::steady_clock::now();
+  std::optional<sim::OutputLock> lock;  // one run per --out, taken after the config was validated
+  if (!out.empty()) lock.emplace(out);
   ProgressBar bar;
   sim::BrightRunResult r;
   {
@@ -99,6 +103,8 @@ void finish(bool interrupted, bool blew_up, double t_end) {
 
 void run_drive_and_report(const sim::DriveRunConfig& cfg, const std::string& out, bool compact) {
   const auto wall0 = std::chrono::steady_clock::now();
+  std::optional<sim::OutputLock> lock;  // one run per --out, taken after the config was validated
+  if (!out.empty()) lock.emplace(out);
   ProgressBar bar;
   sim::DriveRunResult r;
   {
@@ -119,6 +125,8 @@ void run_drive_and_report(const sim::DriveRunConfig& cfg, const std::string& out
 // Checkpoints go to --checkpoint, else to OUT/checkpoint.bin when --out is given.
 void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& out, bool compact) {
   const auto wall0 = std::chrono::steady_clock::now();
+  std::optional<sim::OutputLock> lock;  // one run per --out, taken after the config was validated
+  if (!out.empty()) lock.emplace(out);
   if (cfg.checkpoint_file.empty() && !out.empty() && cfg.checkpoint_every > 0) {
     sim::ensure_directory(out);
     cfg.checkpoint_file = (std::filesystem::path(out) / "checkpoint.bin").string();
