@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -115,7 +116,7 @@ TEST_CASE("figures are drawn into a directory whose name is shell syntax, and no
     std::vector<std::string> pngs;
   };
   const std::vector<Job> jobs = {
-      {with_out(small_bright, name + "/bright"), {"snapshots.png", "energy.png"}},
+      {with_out(small_bright, name), {"snapshots.png", "energy.png"}},  // the name itself as --out
       {{"regime", "map", "--nx", "20", "--ny", "20", "--no-curves", "--out", name + "/map"}, {"regime_theta-rho.png"}},
       {{"dark", "solve", "--omega-b", "2.3", "--sites", "41", "--quiet", "--out", name + "/dark"}, {"profile.png"}},
   };
@@ -178,6 +179,25 @@ TEST_CASE("without gnuplot: exit 0, data written, one warning naming the figures
     CHECK(fs::exists(base / "map/regime_theta-rho_optical.csv"));
     CHECK(hidden_files(base / "map").empty());
   }
+  fs::remove_all(base);
+}
+
+TEST_CASE("gnuplot failing: exit 0, one warning naming the figure and why, no temporary file left") {
+  const fs::path base = scratch("gnuplot-fails");
+  // A "gnuplot" that draws nothing and exits 1 (a copy of false(1)), first in PATH.
+  fs::create_directories(base / "bin");
+  fs::copy_file("/bin/false", base / "bin/gnuplot");
+  const char* path = std::getenv("PATH");
+  const auto run = run_lrchain(with_out(small_bright, (base / "bright").string()), {},
+                               {"PATH=" + (base / "bin").string() + ":" + (path ? path : "/usr/bin:/bin")});
+  REQUIRE(run.exit_code == 0);
+  CHECK(count_lines(run.err) == 1);
+  CHECK(run.err.find("snapshots.png (gnuplot failed on snapshots.gp)") != std::string::npos);
+  CHECK(run.err.find("energy.png (gnuplot failed on energy.gp)") != std::string::npos);
+  const auto summary = nlohmann::json::parse(read_file(base / "bright/summary.json"));
+  CHECK(summary["figures"].empty());
+  CHECK(summary["figures_skipped"].size() == 2);
+  CHECK(hidden_files(base / "bright").empty());
   fs::remove_all(base);
 }
 
@@ -261,7 +281,7 @@ TEST_CASE("two runs into one --out: the second exits 2 naming the running one") 
   fs::remove_all(base);
 }
 
-TEST_CASE("reproduce on SIGTERM stops its child runs, leaves nothing and exits 143") {
+TEST_CASE("reproduce holds its --out; on SIGTERM it stops its child runs, leaves nothing and exits 143") {
   const fs::path base = scratch("reproduce-sigterm");
   const fs::path out = base / "report-sigterm-unique";
   lrchain::ProcessOptions quiet;
@@ -271,6 +291,13 @@ TEST_CASE("reproduce on SIGTERM stops its child runs, leaves nothing and exits 1
                                    out.string()}, quiet);
   // dark_optical_bond runs `lrchain dark continue` for about 30 s: wait until it has started.
   REQUIRE(wait_for([&] { return !processes(reproduce.pid(), "").empty(); }, 30));
+  // A second reproduce into the same --out is refused while the first runs, and touches nothing.
+  const auto files_before = contents(out.string() + ".partial");
+  const auto second = run_lrchain({"reproduce", "--quick", "--only", "coefficients", "--out", out.string()});
+  CHECK(second.exit_code == 2);
+  CHECK(second.err.find("pid " + std::to_string(reproduce.pid())) != std::string::npos);
+  CHECK(contents(out.string() + ".partial").size() >= files_before.size());
+  CHECK(fs::exists(fs::path(out.string() + ".partial") / ".lrchain-report"));
   reproduce.send_signal(SIGTERM);
   const auto r = reproduce.wait();
   INFO(read_file(base / "reproduce.log"));

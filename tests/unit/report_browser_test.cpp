@@ -3,6 +3,8 @@
 // tests/validation/report_quick_test.cpp.
 #include <doctest/doctest.h>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include "../support/report_checks.hpp"
@@ -11,7 +13,7 @@ using namespace lrchain::test;
 namespace fs = std::filesystem;
 
 TEST_CASE("reproduce: a partial report renders in headless Chromium with all figures and links") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-report-fast-test";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-report-fast-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const auto run = run_lrchain({"reproduce", "--quick", "--only", "coefficients,regime,dark_solutions", "--out", dir.string()});
   REQUIRE(run.exit_code == 0);
@@ -39,10 +41,11 @@ TEST_CASE("reproduce: a partial report renders in headless Chromium with all fig
   CHECK(r.broken == 0);
   CHECK(r.dom.find("reproduction report") != std::string::npos);
   fs::remove_all(dir.string() + "-chromium-profile");
+  fs::remove_all(dir);
 }
 
 TEST_CASE("reproduce: bad options exit 2 naming the option and leave nothing on disk") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-report-bad";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-report-bad-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   CHECK(run_lrchain({"reproduce", "--only", "no_such_step", "--out", dir.string()}).exit_code == 2);
   CHECK_FALSE(fs::exists(dir));

@@ -3,6 +3,8 @@
 // link. The report's counts are printed for the CI log.
 #include <doctest/doctest.h>
 
+#include <unistd.h>
+
 #include <chrono>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -13,7 +15,7 @@ using namespace lrchain::test;
 namespace fs = std::filesystem;
 
 TEST_CASE("reproduce --quick: complete report, rendered by headless Chromium") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-report-quick-test";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-report-quick-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const auto t0 = std::chrono::steady_clock::now();
   const auto run = run_lrchain({"reproduce", "--quick", "--out", dir.string()});
