@@ -21,6 +21,7 @@
 #include "lrchain/sim/dark/evolution.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
+#include "lrchain/sim/output_lock.hpp"
 #include "options.hpp"
 #include "stop_signals.hpp"
 
@@ -181,12 +182,12 @@ void write_profile(const std::string& dir, const std::string& name, const Eigen:
 }
 
 void write_multipliers(const std::string& dir, const std::string& stem, const FloquetResult& f,
-                       double omega_b) {
+                       double omega_b, sim::Figures& figures) {
   std::ostringstream os;
   os << "re,im,modulus\n";
   for (auto l : f.multipliers) os << fmt::format("{:.17g},{:.17g},{:.17g}\n", l.real(), l.imag(), std::abs(l));
   sim::write_file_atomic(dir, stem + ".csv", os.str());
-  sim::render_gnuplot(dir, stem + ".gp",
+  figures.draw({stem + ".gp",
                       fmt::format("if (!exists(\"outfile\")) outfile = '{0}.png'\n"
                                   "set terminal pngcairo size 700,700\nset output outfile\n"
                                   "set datafile separator ','\nset size square\nset key off\n"
@@ -195,7 +196,7 @@ void write_multipliers(const std::string& dir, const std::string& stem, const Fl
                                   "set parametric\nset trange [0:2*pi]\n"
                                   "plot cos(t),sin(t) lc 'gray', '{0}.csv' skip 1 using 1:2 with points pt 7 ps 0.8\n",
                                   stem, omega_b),
-                      stem + ".png");
+                      stem + ".png"});
 }
 
 void run_solve(const DarkArgs& a, bool floquet) {
@@ -222,11 +223,12 @@ void run_solve(const DarkArgs& a, bool floquet) {
     j["floquet"] = floquet_json(f, true);
   }
   if (!a.out.empty()) {
-    sim::ensure_directory(a.out);
+    const sim::OutputLock lock(a.out);
+    sim::Figures figures(a.out);
     const auto seed = dark_seed(s.ansatz, s.shooting.center(), a.sites);
     auto evo = dark_breather_evolution(a.p, z0, 2 * std::numbers::pi / a.omega_b, 1, s.shooting.integration());
     write_profile(a.out, "profile.csv", z0, seed, evo.back());
-    sim::render_gnuplot(a.out, "profile.gp",
+    figures.draw({"profile.gp",
                         fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
                                     "set terminal pngcairo size 1000,700\nset output outfile\n"
                                     "set datafile separator ','\nset xlabel 'n'\nset key outside\n"
@@ -235,8 +237,9 @@ void run_solve(const DarkArgs& a, bool floquet) {
                                     "'' skip 1 u 1:4 w p pt 6 t 'x seed', '' skip 1 u 1:3 w lp pt 3 t 'y_n(0)', "
                                     "'' skip 1 u 1:7 w p pt 4 ps 1.5 t 'y_n(T_b)', '' skip 1 u 1:5 w p pt 6 t 'y seed'\n",
                                     a.center, a.omega_b),
-                        "profile.png");
-    if (floquet) write_multipliers(a.out, "multipliers", f, a.omega_b);
+                        "profile.png"});
+    if (floquet) write_multipliers(a.out, "multipliers", f, a.omega_b, figures);
+    figures.finish(j);
   }
   std::printf("%s\n", j.dump(2).c_str());
 }
@@ -287,10 +290,11 @@ void run_continue(const DarkArgs& a) {
   const bool failed = br.points.size() < 2 && !br.interrupted;  // the corrector failed at once
   if (failed) j["failure"] = {{"kind", "continuation"}, {"message", "continuation stopped: " + br.stop_reason}};
   if (!a.out.empty()) {
-    sim::ensure_directory(a.out);
+    const sim::OutputLock lock(a.out);
+    sim::Figures figures(a.out);
     sim::write_file_atomic(a.out, "branch.csv", csv.str());
     sim::write_file_atomic(a.out, "floquet_moduli.csv", mult.str());
-    sim::render_gnuplot(a.out, "branch.gp",
+    figures.draw({"branch.gp",
                         fmt::format("if (!exists(\"outfile\")) outfile = 'branch.png'\n"
                                     "set terminal pngcairo size 900,650\nset output outfile\n"
                                     "set datafile separator ','\nset xlabel '{{/Symbol w}}_b'\n"
@@ -300,9 +304,9 @@ void run_continue(const DarkArgs& a) {
                                     "plot 'branch.csv' skip 1 u 1:2 w l lc 'blue' t 'branch', "
                                     "'' skip 1 u 1:(strstrt(strcol(8),'real') > 0 ? $2 : 1/0) w p pt 7 lc 'red' t 'real instability'\n",
                                     s.ansatz.omega, a.edge, a.center, a.p.rho),
-                        "branch.png");
+                        "branch.png"});
     // The line |lambda| = 1 keeps a panel drawable when it has no multiplier off the unit circle.
-    sim::render_gnuplot(a.out, "floquet_moduli.gp",
+    figures.draw({"floquet_moduli.gp",
                         fmt::format("if (!exists(\"outfile\")) outfile = 'floquet_moduli.png'\n"
                                     "set terminal pngcairo size 1000,700\nset output outfile\n"
                                     "set datafile separator ','\nset xlabel '{{/Symbol w}}_b'\nset ylabel '|{{/Symbol l}}|'\n"
@@ -318,7 +322,8 @@ void run_continue(const DarkArgs& a) {
                                     "'' skip 1 u 1:($4>=1 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle, "
                                     "1 lc 'grey' dt 2 notitle\n"
                                     "unset multiplot\n", a.edge, a.center, a.p.rho),
-                        "floquet_moduli.png");
+                        "floquet_moduli.png"});
+    figures.finish(j);
   }
   std::printf("%s\n", j.dump(2).c_str());
   std::fflush(stdout);
@@ -331,10 +336,11 @@ void run_continue(const DarkArgs& a) {
 }
 
 // Space-time files and figures of a direct integration (Figs. 21, 22, 25).
-void write_evolution(const DarkArgs& a, const DarkEvolution& e, const json& summary) {
+void write_evolution(const DarkArgs& a, const DarkEvolution& e, json& summary) {
   const int N = e.sites;
   const std::string& dir = a.out;
-  sim::ensure_directory(dir);
+  const sim::OutputLock lock(dir);
+  sim::Figures figures(dir);
   for (int field = 0; field < 2; ++field) {
     sim::SpaceTime st;
     st.quantity = field == 0 ? "x_n" : "y_n";
@@ -358,13 +364,12 @@ void write_evolution(const DarkArgs& a, const DarkEvolution& e, const json& summ
   for (int i = 0; i < N; ++i)
     sn << fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g}\n", i - (N - 1) / 2, z0(i), z0(N + i), zT(i), zT(N + i));
   sim::write_file_atomic(dir, "snapshots.csv", sn.str());
-  sim::write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
   const double T = e.periods.back().t;
   const double nmin = -(N - 1) / 2 - 0.5, nmax = (N - 1) / 2 + 0.5;
   const std::string title = fmt::format("{} {}-centred dark breather, rho = {:g}, omega_b = {:g}", a.edge,
                                         a.center, a.p.rho, a.omega_b);
-  sim::render_gnuplot(
-      dir, "evolution.gp",
+  figures.draw({
+      "evolution.gp",
       fmt::format("if (!exists(\"outfile\")) outfile = 'evolution.png'\n"
                   "set terminal pngcairo size 1500,900\nset output outfile\n"
                   "set datafile separator ','\n"
@@ -384,9 +389,9 @@ void write_evolution(const DarkArgs& a, const DarkEvolution& e, const json& summ
                   "plot 'y_spacetime.bin' binary matrix with image notitle\n"
                   "unset multiplot\n",
                   title, T, nmin, nmax),
-      "evolution.png");
-  sim::render_gnuplot(
-      dir, "diagnostics.gp",
+      "evolution.png"});
+  figures.draw({
+      "diagnostics.gp",
       fmt::format("if (!exists(\"outfile\")) outfile = 'diagnostics.png'\n"
                   "set terminal pngcairo size 1000,800\nset output outfile\n"
                   "set datafile separator ','\nset xlabel 't'\n"
@@ -399,7 +404,9 @@ void write_evolution(const DarkArgs& a, const DarkEvolution& e, const json& summ
                   "plot 'evolution.csv' skip 1 u 1:5 w l lc 'red' notitle\n"
                   "unset multiplot\n",
                   title),
-      "diagnostics.png");
+      "diagnostics.png"});
+  figures.finish(summary);
+  sim::write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
 }
 
 void run_evolve(const DarkArgs& a) {

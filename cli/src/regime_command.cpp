@@ -2,7 +2,6 @@
 // (Sec. 3.3, Figs. 2, 4, 5). JSON summary on stdout; data, gnuplot scripts and PNGs in --out.
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -23,6 +22,8 @@
 #include "lrchain/regime/regime_events.hpp"
 #include "lrchain/regime/regime_map.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
+#include "lrchain/sim/output_files.hpp"
+#include "lrchain/sim/output_lock.hpp"
 #include "options.hpp"
 
 namespace lrchain::cli {
@@ -46,16 +47,6 @@ void write_file(const fs::path& dir, const std::string& name, const std::string&
     if (!out.flush()) throw std::runtime_error("cannot write " + tmp.string());
   }
   fs::rename(tmp, target);
-}
-
-// Runs gnuplot on dir/script, drawing to a temporary PNG that is renamed to png.
-bool run_gnuplot(const fs::path& dir, const std::string& script, const std::string& png) {
-  const std::string tmp = "." + png + ".tmp" + std::to_string(::getpid());
-  const std::string cmd = "cd '" + dir.string() + "' && gnuplot -e \"outfile='" + tmp + "'\" '" +
-                          script + "' 2>/dev/null";
-  if (std::system(cmd.c_str()) != 0 || !fs::exists(dir / tmp)) return false;
-  fs::rename(dir / tmp, dir / png);
-  return true;
 }
 
 json params_json(const Params& p) {
@@ -190,7 +181,7 @@ std::vector<double> range_or(const std::vector<std::string>& given, std::vector<
   return r;
 }
 
-json map_theta_rho(const MapArgs& a, const fs::path& dir) {
+json map_theta_rho(const MapArgs& a, const fs::path& dir, sim::Figures& figures) {
   json files = json::array(), panels = json::array();
   std::ostringstream gp;
   const auto bs = branches_of(a.branch);
@@ -280,7 +271,7 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir) {
   files.push_back("regime_theta-rho.gp");
   json out = {{"plane", "theta-rho"}, {"params", params_json(a.p)}, {"panels", panels}};
   if (!a.no_png) {
-    const bool ok = run_gnuplot(dir, "regime_theta-rho.gp", "regime_theta-rho.png");
+    const bool ok = figures.draw_written("regime_theta-rho.gp", "regime_theta-rho.png");
     if (ok) files.push_back("regime_theta-rho.png");
     out["png"] = ok;
   }
@@ -288,7 +279,7 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir) {
   return out;
 }
 
-json map_delta0_omega(const MapArgs& a, const fs::path& dir) {
+json map_delta0_omega(const MapArgs& a, const fs::path& dir, sim::Figures& figures) {
   json files = json::array(), panels = json::array();
   const Branch b = parse_branch(a.branch);
   const std::string bn(to_string(b));
@@ -409,7 +400,7 @@ json map_delta0_omega(const MapArgs& a, const fs::path& dir) {
               {"focusing_band_count", transitions},
               {"boundary_polylines", curves_info}};
   if (!a.no_png) {
-    const bool ok = run_gnuplot(dir, "regime_" + tag + ".gp", "regime_" + tag + ".png");
+    const bool ok = figures.draw_written("regime_" + tag + ".gp", "regime_" + tag + ".png");
     if (ok) files.push_back("regime_" + tag + ".png");
     out["png"] = ok;
   }
@@ -449,23 +440,25 @@ void validate_map(const MapArgs& a) {
 void run_map(const MapArgs& a) {
   validate_map(a);
   const fs::path dir(a.out);
-  fs::create_directories(dir);
+  const sim::OutputLock lock(dir);
+  sim::Figures figures(dir);
   json out;
   if (a.plane == "theta-rho")
-    out = map_theta_rho(a, dir);
+    out = map_theta_rho(a, dir, figures);
   else if (a.plane == "delta0-omega") {
     // one figure per branch (Fig. 4 optical, Fig. 5 acoustic)
     json maps = json::array();
     for (Branch b : branches_of(a.branch)) {
       MapArgs one = a;
       one.branch = std::string(to_string(b));
-      maps.push_back(map_delta0_omega(one, dir));
+      maps.push_back(map_delta0_omega(one, dir, figures));
     }
     out = {{"plane", "delta0-omega"}, {"maps", maps}};
   }
   else
     throw InvalidParameter("plane", "must be 'theta-rho' or 'delta0-omega', got '" + a.plane + "'");
   out["out"] = fs::absolute(dir).string();
+  figures.finish(out);
   std::cout << out.dump(2) << '\n';
 }
 

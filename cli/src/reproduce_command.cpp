@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -15,10 +16,14 @@
 #include "commands.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "lrchain/sim/output_lock.hpp"
 #include "report/html_report.hpp"
 #include "report/lrchain_process.hpp"
 #include "report/steps.hpp"
 
+#ifndef LRCHAIN_VERSION
+#define LRCHAIN_VERSION "unknown"
+#endif
 #ifndef LRCHAIN_SOURCE_DIR
 #define LRCHAIN_SOURCE_DIR ""
 #endif
@@ -57,13 +62,65 @@ std::string now_text() {
   return buf;
 }
 
-// The report replaces DIR only if DIR is absent, empty, or an earlier report.
-void check_out_dir(const fs::path& dir) {
-  if (!fs::exists(dir)) return;
-  if (!fs::is_directory(dir)) throw InvalidParameter("out", "'" + dir.string() + "' exists and is not a directory");
-  if (fs::is_empty(dir) || fs::exists(dir / "index.html")) return;
-  throw InvalidParameter("out", "'" + dir.string() + "' exists and is not an lrchain report (no index.html); "
-                                "give a new or empty directory");
+// A report directory is recognised by this marker file, which reproduce writes first; DIR and
+// DIR.partial are removed only when they carry it.
+constexpr const char* report_marker = ".lrchain-report";
+constexpr const char* marker_text = "lrchain report\nversion " LRCHAIN_VERSION "\n";
+
+bool has_report_marker(const fs::path& dir) {
+  std::ifstream in(dir / report_marker);
+  std::string first;
+  return fs::is_regular_file(dir / report_marker) && std::getline(in, first) && first == "lrchain report";
+}
+
+// Empty, or holding only a lock file left by a run that was killed.
+bool holds_nothing(const fs::path& dir) {
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().filename() != ".lrchain-lock") return false;
+  return true;
+}
+
+// Absolute path with symbolic links resolved where they exist, without a trailing separator.
+fs::path resolved(const fs::path& p) {
+  fs::path r = fs::weakly_canonical(fs::absolute(p));
+  if (r.filename().empty() && r.has_parent_path() && r != r.root_path()) r = r.parent_path();
+  return r;
+}
+
+// True when `dir` is `inside` or one of its ancestors.
+bool contains(const fs::path& dir, const fs::path& inside) {
+  auto d = dir.begin(), i = inside.begin();
+  for (; d != dir.end(); ++d, ++i)
+    if (i == inside.end() || *d != *i) return false;
+  return true;
+}
+
+// Refuses (exit 2, before anything is written) an --out that would delete what lrchain did not
+// write: the current directory or a parent of it, a non-empty directory that is not a report,
+// a DIR.partial that reproduce did not create.
+void check_out_dir(const fs::path& out, const fs::path& partial) {
+  const fs::path cwd = resolved(fs::current_path());
+  for (const fs::path& dir : {out, partial})
+    if (contains(resolved(dir), cwd))
+      throw InvalidParameter("out", "'" + dir.string() + "' is the current directory or contains it; give a "
+                                    "new directory for the report");
+  if (fs::exists(out)) {
+    if (!fs::is_directory(out)) throw InvalidParameter("out", "'" + out.string() + "' exists and is not a directory");
+    if (!fs::is_empty(out) && !has_report_marker(out))
+      throw InvalidParameter("out", "'" + out.string() + "' is not empty and is not an lrchain report (no " +
+                                        report_marker + " file); give a new or empty directory");
+  }
+  if (fs::exists(partial)) {
+    if (!fs::is_directory(partial) || !(holds_nothing(partial) || has_report_marker(partial)))
+      throw InvalidParameter("out", "'" + partial.string() + "' exists and was not written by lrchain reproduce; "
+                                    "move it away or give another --out");
+  }
+}
+
+// Empties the locked DIR.partial of an earlier, unfinished report (it carries the marker).
+void clear_partial(const fs::path& partial) {
+  for (const auto& entry : fs::directory_iterator(partial))
+    if (entry.path().filename() != ".lrchain-lock") fs::remove_all(entry.path());
 }
 
 void run_reproduce(const ReproduceArgs& a) {
@@ -82,8 +139,11 @@ void run_reproduce(const ReproduceArgs& a) {
     steps = chosen;
   }
   if (a.jobs < 0 || a.jobs > 64) throw InvalidParameter("jobs", "must be in [1, 64] (0: one per core)");
-  const fs::path out = fs::absolute(a.out);
-  check_out_dir(out);
+  const fs::path out = fs::absolute(a.out).lexically_normal();
+  if (out.filename().empty() || out == out.root_path())
+    throw InvalidParameter("out", "'" + a.out + "' names no directory of its own; give a new directory");
+  const fs::path partial = out.string() + ".partial";
+  check_out_dir(out, partial);
 
   StepContext ctx;
   ctx.exe = current_executable();
@@ -106,9 +166,11 @@ void run_reproduce(const ReproduceArgs& a) {
     info.errata_source = "the source tree and share/lrchain/docs";
   }
 
-  ctx.out = out.string() + ".partial";
-  fs::remove_all(ctx.out);
-  sim::ensure_directory(ctx.out);
+  ctx.out = partial;
+  sim::OutputLock lock(partial);  // refuses a second reproduce into the same --out
+  clear_partial(partial);
+  sim::write_file_atomic(partial, report_marker, marker_text);
+  forward_interrupts_to_children();
 
   // Long steps first so that the two cores stay busy; the report keeps the paper's order.
   std::vector<std::size_t> order(steps.size());
@@ -127,6 +189,7 @@ void run_reproduce(const ReproduceArgs& a) {
     const auto s0 = std::chrono::steady_clock::now();
     Section section;
     try {
+      if (interrupt_signal() != 0) throw std::runtime_error("not run (interrupted)");
       section = step.run(ctx);
     } catch (const std::exception& e) {
       section.failed = true;
@@ -145,10 +208,24 @@ void run_reproduce(const ReproduceArgs& a) {
       sections[order[k]] = std::move(section);
     }
   }
+  if (const int signal_number = interrupt_signal(); signal_number != 0) {
+    // Every child run has ended (each step waits for its own); the unfinished report goes.
+    std::error_code ec;
+    fs::remove_all(partial, ec);
+    throw Interrupted(signal_number, fmt::format("reproduce interrupted by {}: its lrchain runs were stopped and "
+                                                 "'{}' removed", signal_number == SIGINT ? "SIGINT" : "SIGTERM",
+                                                 partial.string()));
+  }
   info.total_seconds = elapsed();
   write_html_report(ctx.out, sections, info);
-  fs::remove_all(out);
-  fs::rename(ctx.out, out);
+  if (fs::exists(out)) {
+    if (!fs::is_empty(out) && !has_report_marker(out))
+      throw std::runtime_error("'" + out.string() + "' was filled by something else during the run; the report "
+                               "is in '" + partial.string() + "'");
+    fs::remove_all(out);
+  }
+  fs::rename(partial, out);
+  lock.moved_to(out);
 
   const Counts c = count(sections);
   int failed = 0;
@@ -184,7 +261,8 @@ void register_reproduce(CLI::App& app) {
                               "smaller lattices and shorter runs where that keeps the conclusion (default; ~2 min on 2 cores)");
   auto* full = sub->add_flag("--full", a->full, "the paper's lattice sizes and run times (tens of minutes)");
   quick->excludes(full);
-  sub->add_option("--out", a->out, "report directory (default lrchain-report; replaced if it holds an earlier report)");
+  sub->add_option("--out", a->out, "report directory (default lrchain-report; must be new, empty or an earlier report, which is replaced; "
+                  "never the current directory or a parent of it)");
   sub->add_option("--jobs", a->jobs, "steps run at the same time (default 0: one per core)");
   sub->add_option("--only", a->only, "run only these steps (ids from --list)")->delimiter(',');
   sub->add_flag("--list", a->list, "list the steps and exit");

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -24,6 +25,7 @@
 #include "lrchain/sim/bright_outputs.hpp"
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "lrchain/sim/output_lock.hpp"
 #include "lrchain/sim/experiment_config.hpp"
 #include "lrchain/sim/more_experiment_config.hpp"
 #include "options.hpp"
@@ -141,6 +143,8 @@ void run_and_report(const Config& cfg, const std::string& out, bool compact, Run
   const auto wall0 = std::chrono::steady_clock::now();
   sim::validate(cfg);  // every option, counts and memory: before anything is created
   check_output(cfg, out);
+  std::optional<sim::OutputLock> lock;  // one run per --out, taken after validation
+  if (!out.empty()) lock.emplace(out);
   StopSignals signals;
   ProgressBar bar;
   const sim::RunControl control = make_control(bar);

@@ -1,15 +1,16 @@
-// Atomic output files (temp name + rename), CSV, gnuplot binary matrices, gnuplot rendering.
+// Atomic output files (temp name + rename), CSV, gnuplot binary matrices, figures drawn by gnuplot.
 #include "lrchain/sim/output_files.hpp"
-
-#include <future>
 
 #include <unistd.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
+#include <future>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+
+#include "lrchain/process.hpp"
 
 namespace lrchain::sim {
 
@@ -97,22 +98,123 @@ void write_record(const fs::path& dir, const RunRecord& r) {
   for (const auto& s : r.snapshots) write_snapshot_csv(dir, "snapshot_" + s.tag + ".csv", s);
 }
 
-bool render_gnuplot(const fs::path& dir, const std::string& script, const std::string& script_text,
-                    const std::string& png) {
-  write_file_atomic(dir, script, script_text);
-  static const bool have_gnuplot = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
-  if (!have_gnuplot) return false;
-  const std::string tmp = "." + png + ".tmp." + std::to_string(::getpid());
-  const std::string cmd = "cd '" + dir.string() + "' && gnuplot -e \"outfile='" + tmp + "'\" '" +
-                          script + "' >'." + script + ".log' 2>&1";
-  if (std::system(cmd.c_str()) != 0) {
-    std::error_code ec;
-    fs::remove(dir / tmp, ec);
-    return false;
+Figures::Figures(fs::path dir) : dir_(std::move(dir)), gnuplot_found_(program_in_path("gnuplot")) {}
+
+namespace {
+// The last non-empty line of gnuplot's messages (its error), trimmed.
+std::string last_line(const std::string& text) {
+  std::string line, last;
+  std::istringstream in(text);
+  while (std::getline(in, line)) {
+    const auto a = line.find_first_not_of(" \t\r"), b = line.find_last_not_of(" \t\r");
+    if (a != std::string::npos) last = line.substr(a, b - a + 1);
   }
-  fs::remove(dir / ("." + script + ".log"));
-  commit(dir / tmp, dir, png);
-  return true;
+  return last;
+}
+}  // namespace
+
+// Runs `gnuplot -e "outfile='<tmp>'" <script>` inside dir_ (argv, no shell), then renames tmp to png.
+Figures::Outcome Figures::render(const std::string& script, const std::string& png) const {
+  Outcome o{png, false, {}};
+  if (!gnuplot_found_) {
+    o.failure = "gnuplot is not installed";
+    return o;
+  }
+  // Names come from the program, never from the user; a quote would end gnuplot's string.
+  if (png.find_first_of("'\\/\n") != std::string::npos)
+    throw std::logic_error("figure name '" + png + "' is not a plain file name");
+  const fs::path tmp = temp_name(dir_, png);
+  ProcessOptions options;
+  options.working_directory = dir_;
+  options.capture_stdout = true;
+  options.capture_stderr = true;
+  std::error_code ec;
+  try {
+    const ProcessResult r =
+        run_program({"gnuplot", "-e", "outfile='" + tmp.filename().string() + "'", script}, options);
+    if (!r.ok()) {
+      const std::string why = last_line(r.error_output);
+      o.failure = r.exited ? "gnuplot failed on " + script + (why.empty() ? "" : ": " + why)
+                           : "gnuplot was killed by signal " + std::to_string(r.signal_number);
+    } else if (!fs::is_regular_file(tmp, ec) || fs::file_size(tmp, ec) == 0) {
+      o.failure = "gnuplot drew nothing from " + script;
+    }
+  } catch (const std::exception& e) {
+    o.failure = e.what();
+  }
+  if (!o.failure.empty()) {
+    fs::remove(tmp, ec);
+    return o;
+  }
+  commit(tmp, dir_, png);
+  o.drawn = true;
+  return o;
+}
+
+void Figures::record(Outcome outcome) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  outcomes_.push_back(std::move(outcome));
+}
+
+bool Figures::draw(const FigureScript& figure) {
+  write_file_atomic(dir_, figure.script, figure.script_text);
+  return draw_written(figure.script, figure.png);
+}
+
+bool Figures::draw_written(const std::string& script, const std::string& png) {
+  Outcome o = render(script, png);
+  const bool drawn = o.drawn;
+  record(std::move(o));
+  return drawn;
+}
+
+void Figures::draw_all(const std::vector<FigureScript>& figures) {
+  for (const auto& f : figures) write_file_atomic(dir_, f.script, f.script_text);
+  std::vector<std::future<Outcome>> pending;
+  for (const auto& f : figures)
+    pending.push_back(std::async(std::launch::async, [this, &f] { return render(f.script, f.png); }));
+  for (auto& p : pending) record(p.get());
+}
+
+std::vector<std::string> Figures::drawn() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<std::string> out;
+  for (const auto& o : outcomes_)
+    if (o.drawn) out.push_back(o.png);
+  return out;
+}
+
+std::vector<std::string> Figures::skipped() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<std::string> out;
+  for (const auto& o : outcomes_)
+    if (!o.drawn) out.push_back(o.png);
+  return out;
+}
+
+std::string Figures::warning() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::string names;
+  for (const auto& o : outcomes_) {
+    if (o.drawn) continue;
+    names += (names.empty() ? "" : ", ") + o.png;
+    if (gnuplot_found_) names += " (" + o.failure + ")";
+  }
+  if (names.empty()) return "";
+  const std::string where = "their .gp scripts and data are in '" + dir_.string() + "'";
+  if (!gnuplot_found_)
+    return "lrchain: warning: figures not drawn because gnuplot is not installed (Debian package "
+           "gnuplot-nox): " + names + "; " + where;
+  return "lrchain: warning: figures not drawn: " + names + "; " + where;
+}
+
+void Figures::finish(nlohmann::json& j) {
+  j["figures"] = drawn();
+  j["figures_skipped"] = skipped();
+  const std::string line = warning();
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!line.empty() && !warned_) std::fprintf(stderr, "%s\n", line.c_str());
+  warned_ = true;
 }
 
 std::vector<std::string> write_run_outputs(const fs::path& dir, const RunRecord& record,
@@ -120,16 +222,12 @@ std::vector<std::string> write_run_outputs(const fs::path& dir, const RunRecord&
                                            const std::vector<FigureScript>& figures) {
   ensure_directory(dir);
   write_record(dir, record);
-  write_file_atomic(dir, "summary.json", summary_json + "\n");
-  std::vector<std::future<bool>> rendered;
-  for (const auto& f : figures)
-    rendered.push_back(std::async(std::launch::async, [&dir, &f] {
-      return render_gnuplot(dir, f.script, f.script_text, f.png);
-    }));
-  std::vector<std::string> pngs;
-  for (std::size_t i = 0; i < figures.size(); ++i)
-    if (rendered[i].get()) pngs.push_back(figures[i].png);
-  return pngs;
+  Figures drawing(dir);
+  drawing.draw_all(figures);
+  nlohmann::json summary = nlohmann::json::parse(summary_json);
+  drawing.finish(summary);
+  write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
+  return drawing.drawn();
 }
 
 }  // namespace lrchain::sim

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/run_lrchain.hpp"
 #include "lrchain/derivation/generate.hpp"
 
 using namespace lrchain::derivation;
@@ -59,8 +60,7 @@ TEST_CASE("the homogeneous chain's coefficients are the known FPU-type ones (Cho
 TEST_CASE("re-running lrchain-derive reproduces the committed generated header byte for byte") {
   const auto tmp = std::filesystem::temp_directory_path() / "lrchain-derive-drift";
   std::filesystem::remove_all(tmp);
-  const std::string cmd = std::string(LRCHAIN_DERIVE) + " --quiet --out " + tmp.string();
-  REQUIRE(std::system(cmd.c_str()) == 0);
+  REQUIRE(lrchain::test::run_command({LRCHAIN_DERIVE, "--quiet", "--out", tmp.string()}).exit_code == 0);
   const auto committed = std::filesystem::path(LRCHAIN_SOURCE_DIR) / "lib/include/lrchain/generated/nls_coefficients.hpp";
   const std::string fresh = slurp(tmp / "nls_coefficients.hpp");
   REQUIRE(!fresh.empty());

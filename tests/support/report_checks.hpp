@@ -2,7 +2,6 @@
 // Checks of a report written by `lrchain reproduce` (used by the fast and validation tests):
 // every linked file exists, every fragment exists in its page, and headless Chromium renders
 // index.html with every image loaded (the report marks each <img> data-load="ok"/"broken").
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -11,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "run_lrchain.hpp"
+
 namespace lrchain::test {
 
 inline std::string slurp(const std::filesystem::path& file) {
@@ -18,21 +19,6 @@ inline std::string slurp(const std::filesystem::path& file) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-// Runs a shell command, returns its stdout and sets exit_code.
-inline std::string run_capture(const std::string& command, int& exit_code) {
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) {
-    exit_code = -1;
-    return out;
-  }
-  char buf[4096];
-  for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-  const int status = pclose(pipe);
-  exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return out;
 }
 
 // Links (href/src) of a page that do not resolve: missing files, or fragments with no such id.
@@ -71,13 +57,17 @@ struct BrowserResult {
 // Renders the page in headless Chromium and counts the images it marked loaded / broken.
 inline BrowserResult render_in_chromium(const std::filesystem::path& page, const std::filesystem::path& profile) {
   BrowserResult r;
-  const std::string cmd =
-      "chromium --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --disable-background-networking "
-      "--no-first-run --user-data-dir='" + profile.string() + "' --virtual-time-budget=15000 --dump-dom 'file://" +
-      std::filesystem::absolute(page).string() + "' 2>/dev/null";
-  int code = 0;
-  r.dom = run_capture(cmd, code);
-  r.ran = code == 0 && !r.dom.empty();
+  CommandResult run;
+  try {
+    run = run_command({"chromium", "--headless", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                       "--disable-background-networking", "--no-first-run", "--user-data-dir=" + profile.string(),
+                       "--virtual-time-budget=15000", "--dump-dom",
+                       "file://" + std::filesystem::absolute(page).string()});
+  } catch (const std::exception&) {  // chromium not installed
+    return r;
+  }
+  r.dom = run.out;
+  r.ran = run.exit_code == 0 && !r.dom.empty();
   auto count = [&](const std::string& what) {
     int n = 0;
     for (std::size_t p = 0; (p = r.dom.find(what, p)) != std::string::npos; p += what.size()) ++n;

@@ -1,25 +1,20 @@
 // `lrchain coeffs` end to end (issue 2, section 4): JSON keys, full precision, exit codes.
 #include <doctest/doctest.h>
 
-#include <array>
-#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <sys/wait.h>
+
+#include "../support/run_lrchain.hpp"
 
 namespace {
 struct Run {
   int code;
   std::string out;
 };
+// `lrchain <words of args>`: exit code and stdout.
 Run run(const std::string& args) {
-  const std::string cmd = std::string(LRCHAIN_CLI) + " " + args + " 2>/tmp/lrchain-cli-test.err";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe)) out += buf.data();
-  const int status = pclose(pipe);
-  return {WEXITSTATUS(status), out};
+  const auto r = lrchain::test::run_lrchain(lrchain::test::words(args));
+  return {r.exit_code, r.out};
 }
 }  // namespace
 

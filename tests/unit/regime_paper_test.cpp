@@ -5,12 +5,11 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <sys/wait.h>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 
+#include "../support/run_lrchain.hpp"
 #include "lrchain/coefficients.hpp"
 #include "lrchain/regime/boundary_curves.hpp"
 #include "lrchain/regime/focusing_intervals.hpp"
@@ -191,19 +190,11 @@ TEST_CASE("boundary curves lie on the zero sets: each point is a root in theta a
 }
 
 TEST_CASE("CLI: regime intervals prints the JSON intervals; bad input exits 2") {
-  const std::string cmd =
-      std::string(LRCHAIN_CLI) + " regime intervals --rho 10 --branch optical --json";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string text;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, pipe)) text.append(buf, n);
-  CHECK(pclose(pipe) == 0);
-  const auto j = nlohmann::json::parse(text);
+  const auto run = lrchain::test::run_lrchain({"regime", "intervals", "--rho", "10", "--branch", "optical", "--json"});
+  CHECK(run.exit_code == 0);
+  const auto j = nlohmann::json::parse(run.out);
   REQUIRE(j["intervals"].size() == 2);
   CHECK(std::abs(j["intervals"][1]["hi"].get<double>() - 2.4389) <= 5e-5);
   CHECK(j["intervals"][1]["hi_cause"] == "nonresonance2");
-  const std::string bad = std::string(LRCHAIN_CLI) + " regime intervals --rho -1 2>/dev/null";
-  const int rc = std::system(bad.c_str());
-  CHECK(WEXITSTATUS(rc) == 2);
+  CHECK(lrchain::test::run_lrchain({"regime", "intervals", "--rho", "-1"}).exit_code == 2);
 }

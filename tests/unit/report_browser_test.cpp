@@ -3,6 +3,8 @@
 // tests/validation/report_quick_test.cpp.
 #include <doctest/doctest.h>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include "../support/report_checks.hpp"
@@ -11,13 +13,11 @@ using namespace lrchain::test;
 namespace fs = std::filesystem;
 
 TEST_CASE("reproduce: a partial report renders in headless Chromium with all figures and links") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-report-fast-test";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-report-fast-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  int code = 0;
-  const std::string out = run_capture(std::string(LRCHAIN_CLI) + " reproduce --quick --only coefficients,regime,dark_solutions "
-                                      "--out '" + dir.string() + "' 2>/dev/null", code);
-  REQUIRE(code == 0);
-  const auto summary = nlohmann::json::parse(out);
+  const auto run = run_lrchain({"reproduce", "--quick", "--only", "coefficients,regime,dark_solutions", "--out", dir.string()});
+  REQUIRE(run.exit_code == 0);
+  const auto summary = nlohmann::json::parse(run.out);
   // 32+ rows from the coefficient library, 16 from the regimes, 2 dark-breather residuals.
   CHECK(summary["pass"].get<int>() + summary["deviates"].get<int>() + summary["errata"].get<int>() >= 45);
   CHECK(summary["failed_steps"].get<int>() == 0);
@@ -41,19 +41,17 @@ TEST_CASE("reproduce: a partial report renders in headless Chromium with all fig
   CHECK(r.broken == 0);
   CHECK(r.dom.find("reproduction report") != std::string::npos);
   fs::remove_all(dir.string() + "-chromium-profile");
+  fs::remove_all(dir);
 }
 
 TEST_CASE("reproduce: bad options exit 2 naming the option and leave nothing on disk") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-report-bad";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-report-bad-" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  int code = 0;
-  run_capture(std::string(LRCHAIN_CLI) + " reproduce --only no_such_step --out '" + dir.string() + "' 2>&1", code);
-  CHECK(code == 2);
+  CHECK(run_lrchain({"reproduce", "--only", "no_such_step", "--out", dir.string()}).exit_code == 2);
   CHECK_FALSE(fs::exists(dir));
   CHECK_FALSE(fs::exists(dir.string() + ".partial"));
-  const std::string msg = run_capture(std::string(LRCHAIN_CLI) + " reproduce --jobs -3 --out '" + dir.string() + "' 2>&1", code);
-  CHECK(code == 2);
-  CHECK(msg.find("jobs") != std::string::npos);
-  const std::string both = run_capture(std::string(LRCHAIN_CLI) + " reproduce --quick --full 2>&1", code);
-  CHECK(code == 2);
+  const auto jobs = run_lrchain({"reproduce", "--jobs", "-3", "--out", dir.string()});
+  CHECK(jobs.exit_code == 2);
+  CHECK(jobs.err.find("jobs") != std::string::npos);
+  CHECK(run_lrchain({"reproduce", "--quick", "--full"}).exit_code == 2);
 }

@@ -3,6 +3,8 @@
 // link. The report's counts are printed for the CI log.
 #include <doctest/doctest.h>
 
+#include <unistd.h>
+
 #include <chrono>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -13,15 +15,17 @@ using namespace lrchain::test;
 namespace fs = std::filesystem;
 
 TEST_CASE("reproduce --quick: complete report, rendered by headless Chromium") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-report-quick-test";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-report-quick-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  int code = 0;
   const auto t0 = std::chrono::steady_clock::now();
-  const std::string out =
-      run_capture(std::string(LRCHAIN_CLI) + " reproduce --quick --out '" + dir.string() + "' 2>&1 >'" +
-                      dir.string() + ".json' | tail -n 25 1>&2; cat '" + dir.string() + ".json'", code);
+  const auto run = run_lrchain({"reproduce", "--quick", "--out", dir.string()});
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const auto summary = nlohmann::json::parse(out);
+  // The last lines of its progress log, for the CI log.
+  const auto& log = run.err;
+  std::size_t from = log.size();
+  for (int lines = 0; from > 0 && lines < 26; --from) lines += log[from - 1] == '\n';
+  std::cerr << log.substr(from);
+  const auto summary = nlohmann::json::parse(run.out);
   std::cerr << "reproduce --quick: " << summary["pass"] << " pass, " << summary["deviates"] << " deviates, "
             << summary["errata"] << " errata, " << summary["failed_steps"] << " failed steps, " << seconds << " s\n";
   CHECK(summary["failed_steps"].get<int>() == 0);

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "../support/run_lrchain.hpp"
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/experiment_config.hpp"
 
@@ -92,15 +93,11 @@ TEST_CASE("exp3: theta=3pi/5 near theta_c keeps moving at c_+ but the error grow
 TEST_CASE("CLI: simulate --config exp1 writes JSON, CSV, space-time data, gnuplot scripts and PNGs" * doctest::test_suite("validation")) {
   const auto dir = std::filesystem::temp_directory_path() / "lrchain_sim_cli_exp1";
   std::filesystem::remove_all(dir);
-  const std::string cmd = std::string(LRCHAIN_CLI) + " simulate --config " + LRCHAIN_SOURCE_DIR +
-                          "/examples/exp1_optical_pi2.toml --out " + dir.string() + " --json";
-  FILE* p = popen(cmd.c_str(), "r");
-  REQUIRE(p);
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  CHECK(pclose(p) == 0);
-  const auto j = nlohmann::json::parse(out);
+  const auto run = lrchain::test::run_lrchain(
+      {"simulate", "--config", std::string(LRCHAIN_SOURCE_DIR) + "/examples/exp1_optical_pi2.toml", "--out",
+       dir.string(), "--json"});
+  CHECK(run.exit_code == 0);
+  const auto j = nlohmann::json::parse(run.out);
   CHECK(j["max_E_x"].get<double>() < 0.035);
   for (const char* f : {"summary.json", "series.csv", "energy_density_spacetime.bin", "snapshots.gp",
                         "energy.gp", "snapshot_t0.csv"})

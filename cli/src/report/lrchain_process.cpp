@@ -1,18 +1,17 @@
 // Subcommand execution for `lrchain reproduce` (see lrchain_process.hpp).
 #include "lrchain_process.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <csignal>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "lrchain/process.hpp"
 #include "lrchain/sim/output_files.hpp"
-
-extern char** environ;
 
 namespace lrchain::report {
 
@@ -56,9 +55,60 @@ std::string display(const StepContext& ctx, const std::string& arg) {
 
 }  // namespace
 
+namespace {
+
+// Child runs that are running (pids), read by the signal handler: a fixed array of atomics, as a
+// handler may only touch lock-free data.
+constexpr int max_children = 128;
+std::atomic<pid_t> running_children[max_children];
+volatile std::sig_atomic_t received_signal = 0;
+
+extern "C" void pass_signal_on(int signal_number) {
+  received_signal = signal_number;
+  for (auto& child : running_children) {
+    const pid_t pid = child.load();
+    if (pid > 0) ::kill(pid, signal_number);
+  }
+}
+
+// Holds a slot of running_children while the child runs; a signal that came before the slot was
+// taken is passed on here.
+class RunningChild {
+ public:
+  explicit RunningChild(const ChildProcess& child) {
+    for (int i = 0; i < max_children && slot_ < 0; ++i) {
+      pid_t free = 0;
+      if (running_children[i].compare_exchange_strong(free, child.pid())) slot_ = i;
+    }
+    if (received_signal != 0) child.send_signal(received_signal);
+  }
+  ~RunningChild() {
+    if (slot_ >= 0) running_children[slot_].store(0);
+  }
+  RunningChild(const RunningChild&) = delete;
+  RunningChild& operator=(const RunningChild&) = delete;
+
+ private:
+  int slot_ = -1;
+};
+
+}  // namespace
+
+void forward_interrupts_to_children() {
+  struct sigaction action {};
+  action.sa_handler = pass_signal_on;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  ::sigaction(SIGINT, &action, nullptr);
+  ::sigaction(SIGTERM, &action, nullptr);
+}
+
+int interrupt_signal() { return received_signal; }
+
 nlohmann::json run_lrchain(const StepContext& ctx, const std::vector<std::string>& args,
                            const fs::path& dir, const std::string& log_stem,
                            std::vector<std::string>& commands) {
+  if (interrupt_signal() != 0) throw std::runtime_error("interrupted before it started");
   sim::ensure_directory(dir);
   std::string shown = "lrchain";
   for (const auto& a : args) {
@@ -68,37 +118,31 @@ nlohmann::json run_lrchain(const StepContext& ctx, const std::vector<std::string
   commands.push_back(shown);
 
   const fs::path out_file = dir / (log_stem + ".json"), err_file = dir / (log_stem + ".log");
-  std::vector<std::string> argv_storage{ctx.exe.string()};
-  argv_storage.insert(argv_storage.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : argv_storage) argv.push_back(a.data());
-  argv.push_back(nullptr);
-
-  std::vector<std::string> env_storage;
-  for (char** e = environ; *e; ++e)
-    if (std::string(*e).rfind("OMP_NUM_THREADS=", 0) != 0) env_storage.emplace_back(*e);
-  env_storage.push_back("OMP_NUM_THREADS=" + std::to_string(ctx.child_threads));
-  std::vector<char*> envp;
-  for (auto& e : env_storage) envp.push_back(e.data());
-  envp.push_back(nullptr);
-
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0) throw std::runtime_error("cannot start " + ctx.exe.string());
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw std::runtime_error("waitpid failed");
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    const std::string why = WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
-                                              : "killed by signal " + std::to_string(WTERMSIG(status));
+  const std::string tmp_suffix = ".tmp." + std::to_string(::getpid());
+  const fs::path out_tmp = dir / ("." + log_stem + ".json" + tmp_suffix);
+  const fs::path err_tmp = dir / ("." + log_stem + ".log" + tmp_suffix);
+  std::vector<std::string> argv{ctx.exe.string()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  ProcessOptions options;
+  options.stdout_file = out_tmp;
+  options.stderr_file = err_tmp;
+  options.environment = {"OMP_NUM_THREADS=" + std::to_string(ctx.child_threads)};
+  ProcessResult result;
+  {
+    ChildProcess child(argv, options);
+    const RunningChild running(child);
+    result = child.wait();
+  }
+  std::error_code ec;
+  fs::rename(err_tmp, err_file, ec);
+  if (!result.ok()) {
+    fs::remove(out_tmp, ec);
+    const std::string why = result.exited ? "exit code " + std::to_string(result.exit_code)
+                                          : "killed by signal " + std::to_string(result.signal_number);
     throw std::runtime_error("`" + shown + "` failed (" + why + "): " + tail_lines(err_file, 4));
   }
+  fs::rename(out_tmp, out_file, ec);
+  if (ec) throw std::runtime_error("cannot write " + out_file.string() + ": " + ec.message());
   return read_json(out_file);
 }
 

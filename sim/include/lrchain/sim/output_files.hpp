@@ -1,10 +1,13 @@
 #pragma once
 // Writing run results into an output directory: every file goes to a temporary name first and is
 // renamed into place, so an interrupted run never leaves a truncated file. Figures are a gnuplot
-// script (.gp) next to its data files, rendered to PNG when gnuplot is installed.
+// script (.gp) next to its data files, drawn to PNG when gnuplot is installed.
 #include <filesystem>
+#include <mutex>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "lrchain/sim/run_record.hpp"
 
@@ -25,22 +28,58 @@ void write_spacetime_binary(const std::filesystem::path& dir, const std::string&
 // Writes all series/fields/snapshots with standard names: series.csv, <quantity>_spacetime.bin,
 // snapshot_<tag>.csv.
 void write_record(const std::filesystem::path& dir, const RunRecord& r);
-// Writes the gnuplot script dir/script (atomically) and renders it to dir/png: gnuplot runs inside
-// dir with `outfile` set to a temporary name that is renamed to png on success. The script must
-// start with `if (!exists("outfile")) outfile = '<png>'` and `set output outfile`.
-// Returns false if gnuplot is missing or fails (the script and data stay for the user).
-bool render_gnuplot(const std::filesystem::path& dir, const std::string& script,
-                    const std::string& script_text, const std::string& png);
 
-// One figure: gnuplot script name, its text, the PNG it renders (see render_gnuplot).
+// One figure: gnuplot script name, its text, the PNG it draws. The script starts with
+// `if (!exists("outfile")) outfile = '<png>'` and `set output outfile`, so that gnuplot can be
+// told a temporary output name and a user can re-run the script as it is.
 struct FigureScript {
   std::string script;
   std::string script_text;
   std::string png;
 };
-// The output directory of a run: the record (write_record), summary.json (`summary_json` + newline)
-// and the figures, rendered concurrently (one gnuplot process each). Returns the PNGs rendered, in
-// the order given.
+
+// The figures of one job in one directory. gnuplot is run with an argument vector (never a shell)
+// inside dir and draws to a temporary name that is renamed to the PNG; its messages are captured,
+// never left in files. A figure gnuplot cannot draw (not installed, or an error in the script) is
+// skipped: its script and data stay for the user. finish() lists both kinds in the job's JSON and
+// prints one warning line naming the skipped figures. draw and draw_all may be called from
+// several threads.
+class Figures {
+ public:
+  explicit Figures(std::filesystem::path dir);
+  // Writes dir/<script> (atomically), then draws it; false if the figure was skipped.
+  bool draw(const FigureScript& figure);
+  // Draws dir/<script>, which the caller has written; false if skipped.
+  bool draw_written(const std::string& script, const std::string& png);
+  // Writes every script, draws them concurrently (one gnuplot each); results in the order given.
+  void draw_all(const std::vector<FigureScript>& figures);
+  std::vector<std::string> drawn() const;    // PNG names, in the order drawn
+  std::vector<std::string> skipped() const;  // PNG names not drawn
+  // j["figures"] = drawn(), j["figures_skipped"] = skipped(); prints warning() on stderr once if
+  // a figure was skipped.
+  void finish(nlohmann::json& j);
+  // The warning line (no newline), or "" when every figure was drawn.
+  std::string warning() const;
+
+ private:
+  struct Outcome {
+    std::string png;
+    bool drawn = false;
+    std::string failure;  // why not drawn
+  };
+  Outcome render(const std::string& script, const std::string& png) const;
+  void record(Outcome outcome);
+
+  std::filesystem::path dir_;
+  bool gnuplot_found_;
+  mutable std::mutex mutex_;
+  std::vector<Outcome> outcomes_;
+  bool warned_ = false;
+};
+
+// The output directory of a run: the record (write_record), the figures (Figures::draw_all) and
+// summary.json (`summary_json`, a JSON object, with "figures" and "figures_skipped" added).
+// Returns the PNGs drawn, in the order given.
 std::vector<std::string> write_run_outputs(const std::filesystem::path& dir, const RunRecord& record,
                                            const std::string& summary_json,
                                            const std::vector<FigureScript>& figures);
