@@ -2,7 +2,7 @@
 // of examples/*.toml, and every file lrchain reads, each with NaN, inf, -inf, -1, 0, 1e308, 1e300pi,
 // an empty string, a word and a wrong type (or a missing, empty, binary, malformed file). Each case
 // must exit 2 with one stderr line naming the option, key or file, leave nothing new on disk and end
-// within the timeout (the rules of bad input in README.md, "Exit codes").
+// within the timeout.
 //
 // Environment: LRCHAIN_CORPUS_TIMEOUT (seconds per case, default 10), LRCHAIN_CORPUS_JOBS (cases
 // at the same time, default 4), LRCHAIN_CORPUS_FILTER (run only cases whose description contains
