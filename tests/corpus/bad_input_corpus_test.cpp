@@ -131,8 +131,9 @@ TEST_CASE("bad-input corpus: every bad option value, config key and file exits 2
     failure_text << failure_line(c, o) << "\n";
     // Grouped by the first rule broken (a wrong exit code also breaks the stderr rules).
     const BrokenRule& first = o.broken.front();
-    by_rule[first.rule == "exit code" || first.rule == "killed by a signal" ? first.rule + ": " + first.detail
-                                                                             : first.rule].push_back("[" + c.category + "] " + c.description + "  ->  " +
+    by_rule[c.category + " / " +
+            (first.rule == "exit code" || first.rule == "killed by a signal" ? first.rule + ": " + first.detail
+                                                                             : first.rule)].push_back("[" + c.category + "] " + c.description + "  ->  " +
                                                      escaped(o.error_output, 160));
   }
   std::ostringstream summary;
