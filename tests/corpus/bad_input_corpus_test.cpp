@@ -60,9 +60,9 @@ void limit_case_memory(RunSettings& s) {
 
 std::string failure_line(const CorpusCase& c, const CaseOutcome& o) {
   std::ostringstream s;
-  s << "FAIL [" << c.category << "] " << c.description << "\n    $ " << o.command_line << "\n    -> "
+  s << "FAIL [" << c.category << "] " << c.description << " | $ " << o.command_line << " | "
     << (o.exit_code >= 0 ? "exit " + std::to_string(o.exit_code) : "signal " + std::to_string(o.signal_number))
-    << " in " << static_cast<int>(o.seconds * 1000) << " ms, stderr: \"" << escaped(o.error_output) << "\"\n    broken:";
+    << " in " << static_cast<int>(o.seconds * 1000) << " ms | stderr: \"" << escaped(o.error_output) << "\" | broken:";
   for (const auto& b : o.broken) s << " [" << b.rule << "] " << b.detail << ";";
   return s.str();
 }
@@ -115,6 +115,7 @@ TEST_CASE("bad-input corpus: every bad option value, config key and file exits 2
   // Counts per category, failures one block each, then the failures grouped by the rule they broke.
   std::map<std::string, std::pair<int, int>> per_category;  // cases, failures
   std::map<std::string, std::vector<std::string>> by_rule;
+  std::map<std::string, int> per_value;  // option and config values by corpus value
   std::size_t bad_cases = 0, failures = 0, control_failures = 0;
   double slowest = 0;
   std::ostringstream failure_text;
@@ -123,6 +124,7 @@ TEST_CASE("bad-input corpus: every bad option value, config key and file exits 2
     const CaseOutcome& o = outcomes[i];
     auto& [n, f] = per_category[c.category];
     ++n;
+    if (!c.value.empty()) ++per_value[c.value];
     bad_cases += c.control ? 0 : 1;
     slowest = std::max(slowest, o.seconds);
     if (o.broken.empty()) continue;
@@ -143,6 +145,9 @@ TEST_CASE("bad-input corpus: every bad option value, config key and file exits 2
           << settings.timeout.count() / 1000.0 << " s)\n";
   for (const auto& [category, nf] : per_category)
     summary << "  " << category << ": " << nf.first << " cases, " << nf.second << " failed\n";
+  summary << "  by value:";
+  for (const auto& [value, n] : per_value) summary << " " << value << " " << n << ";";
+  summary << "\n";
   for (const auto& [category, n] : corpus.skipped_as_valid)
     summary << "  (" << category << ": " << n << " values inside the option's valid range, not run)\n";
   std::cout << failure_text.str() << summary.str();

@@ -180,6 +180,7 @@ void add_option_cases(const std::vector<HelpCommand>& commands, Corpus& corpus) 
         }
         CorpusCase k;
         k.category = "option value";
+        k.value = label(v);
         k.args = base_without(c.joined(), o.name);
         if (auto it = option_context().find(o.name); it != option_context().end())
           k.args.insert(k.args.end(), it->second.begin(), it->second.end());
@@ -257,6 +258,7 @@ void add_config_cases(const std::filesystem::path& examples, const std::vector<H
         }
         CorpusCase k;
         k.category = "config value";
+        k.value = label(v);
         // In a number array the last element is replaced; the wrong type replaces the whole array.
         const toml::node& target = array && !array->empty() && v != BadValue::wrong_type ? array->back() : node;
         k.files = {{base, replace_node(lines, target, toml_text(v))}};
@@ -273,6 +275,7 @@ void add_config_cases(const std::filesystem::path& examples, const std::vector<H
       typo_lines.insert(typo_lines.begin() + (line - 1), typo + " = " + node_text(lines, node));
       CorpusCase k;
       k.category = "config unknown key";
+      k.value = "typo";
       k.files = {{base, join_lines(typo_lines)}};
       k.args = args;
       k.names = {typo, e.key};

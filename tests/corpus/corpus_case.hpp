@@ -14,6 +14,7 @@ namespace lrchain::corpus {
 struct CorpusCase {
   std::string category;     // "option value", "config value", "config unknown key", "file", "output path", "control"
   std::string description;  // what is bad, e.g. "simulate bright --N=nan"
+  std::string value;        // the corpus value (label(BadValue)), or "typo" / "" for other cases
   std::vector<std::string> args;  // after `lrchain`; "@TMP@" = the fresh working directory, "@OUT@" = @TMP@/out
   std::vector<std::pair<std::string, std::string>> files;  // created under @TMP@ before the run: path, bytes
   std::vector<std::string> directories;                    // created under @TMP@ before the run
