@@ -18,6 +18,7 @@
 #include "lrchain/sim/dark/evolution.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "options.hpp"
+#include "stop_signals.hpp"
 
 namespace lrchain::cli {
 
@@ -183,7 +184,9 @@ void run_solve(const DarkArgs& a, bool floquet) {
 
 void run_continue(const DarkArgs& a) {
   Solved s = solve(a);
+  StopSignals signals;  // SIGINT/SIGTERM: stop after the current branch point, write the branch so far
   ContinuationOptions o;
+  o.stop = StopSignals::flag();
   o.max_points = a.points;
   o.ds = a.ds;
   o.omega_min = a.omega_min;
@@ -217,6 +220,7 @@ void run_continue(const DarkArgs& a) {
   j["points"] = br.points.size();
   j["stop_reason"] = br.stop_reason;
   j["turning_points"] = br.turning_points;
+  j["interrupted"] = br.interrupted;
   double worst = 0;
   for (const auto& b : br.points) worst = std::max(worst, b.measures.E_b);
   j["max_E_b"] = worst;
@@ -255,6 +259,12 @@ void run_continue(const DarkArgs& a) {
                         "floquet_moduli.png");
   }
   std::printf("%s\n", j.dump(2).c_str());
+  std::fflush(stdout);
+  if (br.interrupted)
+    throw Interrupted(StopSignals::received(),
+                      fmt::format("interrupted by {} after {} branch points{}",
+                                  StopSignals::name(StopSignals::received()), br.points.size(),
+                                  a.out.empty() ? std::string() : "; the branch so far is in " + a.out));
   if (br.points.size() < 2) throw std::runtime_error("continuation stopped: " + br.stop_reason);
 }
 

@@ -10,8 +10,11 @@
 #include <iostream>
 #include <filesystem>
 #include <memory>
+#include <fstream>
 #include <string>
+#include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
@@ -22,16 +25,68 @@
 #include "lrchain/sim/experiment_config.hpp"
 #include "lrchain/sim/more_experiment_config.hpp"
 #include "options.hpp"
+#include "stop_signals.hpp"
 
 namespace lrchain::cli {
 
 namespace {
 
-std::atomic<bool> g_stop{false};
+// One argument as a POSIX shell reads it back (single quotes when it has anything but
+// [A-Za-z0-9_./=:+-]), for the restart command shown to the user; nothing here is ever executed.
+std::string shell_quoted(const std::string& a) {
+  if (!a.empty() && a.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                        "0123456789_./=:+-,") == std::string::npos)
+    return a;
+  std::string q = "'";
+  for (char ch : a) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return q + "'";
+}
 
-extern "C" void on_sigint(int) {
-  g_stop.store(true);
-  ::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
+// This process's command line with `--restart FILE` (replacing any earlier one): the command that
+// continues an interrupted run. Read from /proc/self/cmdline; empty where that is unavailable.
+std::string restart_command(const std::string& checkpoint) {
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  std::vector<std::string> args;
+  for (std::string a; std::getline(in, a, '\0');) args.push_back(a);
+  if (args.empty()) return {};
+  std::string cmd;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--restart") { ++i; continue; }
+    if (args[i].rfind("--restart=", 0) == 0) continue;
+    cmd += (cmd.empty() ? "" : " ") + shell_quoted(args[i]);
+  }
+  return cmd + " --restart " + shell_quoted(checkpoint);
+}
+
+// After the outputs of a run stopped by a signal are written: exit 128 + signal (via
+// lrchain::Interrupted) with one line saying where the run stopped and how to continue it.
+void throw_if_interrupted(bool interrupted, double t_reached, double checkpoint_time,
+                          const std::string& checkpoint_file) {
+  if (!interrupted) return;
+  const int signal_number = StopSignals::received() != 0 ? StopSignals::received() : SIGINT;
+  const char* name = StopSignals::name(signal_number);
+  if (checkpoint_file.empty() || checkpoint_time < 0)
+    throw Interrupted(signal_number, fmt::format("interrupted by {} at t = {}; no checkpoint written "
+                                                 "(give --out or --checkpoint to make a run restartable)",
+                                                 name, t_reached));
+  const std::string cmd = restart_command(checkpoint_file);
+  throw Interrupted(signal_number,
+                    fmt::format("interrupted by {} at t = {}; checkpoint at t = {} in '{}'; continue with: {}",
+                                name, t_reached, checkpoint_time, checkpoint_file,
+                                cmd.empty() ? "the same command with --restart " + checkpoint_file : cmd));
+}
+
+// Ends a run whose integration blew up (non-finite state): exit 3, after the outputs are written.
+void throw_if_blew_up(bool blew_up, double t_end) {
+  if (blew_up)
+    throw NumericalFailure(fmt::format("the integration blew up (non-finite state) at t = {}", t_end));
+}
+
+// Where checkpoints go: --checkpoint, else OUT/checkpoint.bin when --out is given (else none).
+std::string checkpoint_path(const std::string& checkpoint, const std::string& out) {
+  if (!checkpoint.empty()) return checkpoint;
+  if (!out.empty()) return (std::filesystem::path(out) / "checkpoint.bin").string();
+  return {};
 }
 
 // Progress bar on stderr, only when stderr is a terminal and the run lasts more than ~2 s.
@@ -56,88 +111,58 @@ struct ProgressBar {
 };
 
 sim::RunControl make_control(ProgressBar& bar) {
-  g_stop.store(false);
-  ::signal(SIGINT, on_sigint);
   sim::RunControl c;
-  c.stop = &g_stop;
+  c.stop = StopSignals::flag();
   c.progress = [&bar](double f) { bar.update(f); };
   return c;
 }
 
-void run_bright_and_report(const sim::BrightRunConfig& cfg, const std::string& out, bool compact) {
+// Runs one experiment with SIGINT/SIGTERM handling, writes its JSON summary and outputs (also when
+// interrupted: the outputs so far, consistent with the checkpoint), prints the summary, then ends
+// like an interrupted run (130/143) or a blown-up one (3) where that applies.
+template <class Config, class Run, class Write>
+void run_and_report(const Config& cfg, const std::string& out, bool compact, Run run, Write write) {
   const auto wall0 = std::chrono::steady_clock::now();
+  StopSignals signals;
   ProgressBar bar;
-  sim::BrightRunResult r;
-  {
-    const sim::RunControl control = make_control(bar);
-    r = sim::run_bright(cfg, control);
-  }
-  ::signal(SIGINT, SIG_DFL);
+  const sim::RunControl control = make_control(bar);
+  const auto r = run(cfg, control);
   nlohmann::json j = sim::to_json(cfg, r.summary);
+  j["checkpoint_file"] = cfg.checkpoint_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(cfg.checkpoint_file);
+  j["checkpoints_written"] = r.summary.checkpoints_written;
+  j["t_start"] = r.summary.t_start;
   if (!out.empty()) {
     j["out"] = out;
-    j["figures"] = sim::write_bright_outputs(out, r, j);
+    j["figures"] = write(out, r, j);
   }
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
-  if (r.summary.interrupted) std::exit(130);
-  if (r.summary.blew_up) {
-    std::fprintf(stderr, "lrchain: error: the integration blew up (non-finite state) at t = %g\n",
-                 r.summary.t_end);
-    std::exit(1);
-  }
+  std::fflush(stdout);
+  throw_if_interrupted(r.summary.interrupted, r.summary.t_end, r.summary.last_checkpoint_time,
+                       cfg.checkpoint_file);
+  throw_if_blew_up(r.summary.blew_up, r.summary.t_end);
 }
 
-// Ends the process like run_bright_and_report: exit 130 on Ctrl-C, 1 on blow-up.
-void finish(bool interrupted, bool blew_up, double t_end) {
-  if (interrupted) std::exit(130);
-  if (blew_up) {
-    std::fprintf(stderr, "lrchain: error: the integration blew up (non-finite state) at t = %g\n", t_end);
-    std::exit(1);
-  }
+// Checkpoints go to --checkpoint, else to OUT/checkpoint.bin when --out is given; one is written
+// at the end too when checkpoints were asked for (--checkpoint or --checkpoint-every).
+void run_bright_and_report(sim::BrightRunConfig cfg, const std::string& out, bool compact) {
+  cfg.checkpoint_at_end = !cfg.checkpoint_file.empty() || cfg.checkpoint_every > 0;
+  cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
+  run_and_report(cfg, out, compact, [](const auto& c, const auto& k) { return sim::run_bright(c, k); },
+                 [](const std::string& d, const auto& r, const auto& j) { return sim::write_bright_outputs(d, r, j); });
 }
 
-void run_drive_and_report(const sim::DriveRunConfig& cfg, const std::string& out, bool compact) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  ProgressBar bar;
-  sim::DriveRunResult r;
-  {
-    const sim::RunControl control = make_control(bar);
-    r = sim::run_drive(cfg, control);
-  }
-  ::signal(SIGINT, SIG_DFL);
-  nlohmann::json j = sim::to_json(cfg, r.summary);
-  if (!out.empty()) {
-    j["out"] = out;
-    j["figures"] = sim::write_drive_outputs(out, r, j);
-  }
-  j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
-  finish(r.summary.interrupted, r.summary.blew_up, r.summary.t_end);
+void run_drive_and_report(sim::DriveRunConfig cfg, const std::string& out, bool compact) {
+  cfg.checkpoint_at_end = !cfg.checkpoint_file.empty() || cfg.checkpoint_every > 0;
+  cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
+  run_and_report(cfg, out, compact, [](const auto& c, const auto& k) { return sim::run_drive(c, k); },
+                 [](const std::string& d, const auto& r, const auto& j) { return sim::write_drive_outputs(d, r, j); });
 }
 
-// Checkpoints go to --checkpoint, else to OUT/checkpoint.bin when --out is given.
 void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& out, bool compact) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  if (cfg.checkpoint_file.empty() && !out.empty() && cfg.checkpoint_every > 0) {
-    sim::ensure_directory(out);
-    cfg.checkpoint_file = (std::filesystem::path(out) / "checkpoint.bin").string();
-  }
-  ProgressBar bar;
-  sim::ModulatedRunResult r;
-  {
-    const sim::RunControl control = make_control(bar);
-    r = sim::run_modulated(cfg, control);
-  }
-  ::signal(SIGINT, SIG_DFL);
-  nlohmann::json j = sim::to_json(cfg, r.summary);
-  if (!out.empty()) {
-    j["out"] = out;
-    j["figures"] = sim::write_modulated_outputs(out, r, j);
-  }
-  j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
-  finish(r.summary.interrupted, r.summary.blew_up, r.summary.t_end);
+  cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
+  run_and_report(cfg, out, compact, [](const auto& c, const auto& k) { return sim::run_modulated(c, k); },
+                 [](const std::string& d, const auto& r, const auto& j) { return sim::write_modulated_outputs(d, r, j); });
 }
 
 void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::string& stepper) {
@@ -163,9 +188,12 @@ void register_simulate(CLI::App& app) {
   sim_cmd->add_flag("--json", *compact, "print the JSON summary on one line");
   auto restart = std::make_shared<std::string>();
   auto checkpoint = std::make_shared<std::string>();
-  sim_cmd->add_option("--restart", *restart, "modulated runs: continue from this checkpoint file");
+  sim_cmd->add_option("--restart", *restart,
+                      "continue the run from this checkpoint file (written with the same physics, "
+                      "lattice and stepper; the outputs cover the whole run)");
   sim_cmd->add_option("--checkpoint", *checkpoint,
-                      "modulated runs: checkpoint file (default OUT/checkpoint.bin)");
+                      "checkpoint file, written periodically, at the end and on SIGINT/SIGTERM "
+                      "(default OUT/checkpoint.bin: on SIGINT/SIGTERM, and periodically with --checkpoint-every)");
   sim_cmd->require_subcommand(0, 1);
 
   // simulate bright
@@ -194,11 +222,15 @@ void register_simulate(CLI::App& app) {
   bright->add_option("--snapshots", *snapshots, "snapshot times in T_b (default 0 50.125 200)");
   bright->add_flag("--ansatz-ends", cfg->ansatz_ends,
                    "end beads follow the ansatz (emitting boundary conditions, Sec. 4.2)");
+  add_number(*bright, "--checkpoint-every", cfg->checkpoint_every,
+             "periods T_b between checkpoints (default 0: only on SIGINT/SIGTERM)");
   add_integrator_options(*bright, cfg->integrator, *stepper);
   bright->fallthrough();  // --out, --json may follow the subcommand
   bright->callback([=] {
     cfg->integrator.stepper = sim::parse_stepper(*stepper);
     if (!snapshots->empty()) cfg->snapshot_periods = *snapshots;
+    cfg->restart_file = *restart;
+    cfg->checkpoint_file = *checkpoint;
     run_bright_and_report(*cfg, *out, *compact);
   });
 
@@ -222,11 +254,15 @@ void register_simulate(CLI::App& app) {
              "front = last n with e_n > this * max e_n (default 0.1)");
   add_number(*drive, "--front-fit-start", dcfg->front_fit_start, "front-speed fit from (default 100)");
   add_number(*drive, "--front-fit-end", dcfg->front_fit_end, "front-speed fit to (default 700)");
+  add_number(*drive, "--checkpoint-every", dcfg->checkpoint_every,
+             "time between checkpoints (default 0: only on SIGINT/SIGTERM)");
   dcfg->integrator = sim::DriveRunConfig{}.integrator;
   add_integrator_options(*drive, dcfg->integrator, *dstepper);
   drive->fallthrough();
   drive->callback([=] {
     dcfg->integrator.stepper = sim::parse_stepper(*dstepper);
+    dcfg->restart_file = *restart;
+    dcfg->checkpoint_file = *checkpoint;
     run_drive_and_report(*dcfg, *out, *compact);
   });
 
@@ -266,7 +302,9 @@ void register_simulate(CLI::App& app) {
       throw InvalidParameter("config", "give a subcommand (bright, drive, modulated) or --config FILE.toml");
     const std::string kind = sim::experiment_kind(*config);
     if (kind == "drive") {
-      const auto dc = sim::load_drive_config(*config);
+      auto dc = sim::load_drive_config(*config);
+      dc.run.restart_file = *restart;
+      dc.run.checkpoint_file = *checkpoint;
       run_drive_and_report(dc.run, !out->empty() ? *out : dc.out_dir, *compact);
       return;
     }
@@ -277,8 +315,10 @@ void register_simulate(CLI::App& app) {
       run_modulated_and_report(mc.run, !out->empty() ? *out : mc.out_dir, *compact);
       return;
     }
-    const sim::ExperimentConfig ec = sim::load_experiment_config(*config);
+    sim::ExperimentConfig ec = sim::load_experiment_config(*config);
     const std::string dir = !out->empty() ? *out : ec.out_dir;
+    ec.bright.restart_file = *restart;
+    ec.bright.checkpoint_file = *checkpoint;
     if (ec.experiment == "bright") run_bright_and_report(ec.bright, dir, *compact);
   });
 }

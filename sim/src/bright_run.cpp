@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <initializer_list>
 #include <fmt/format.h>
 
 #include "lrchain/ansatz/bright_breather.hpp"
@@ -12,6 +14,7 @@
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"
+#include "restart.hpp"
 
 namespace lrchain::sim {
 
@@ -24,6 +27,8 @@ void validate(const BrightRunConfig& c) {
   if (!(c.spacetime_every >= c.sample_every))
     throw InvalidParameter("spacetime-every", "must be >= sample-every (units of T_b)");
   if (c.centre_window < 1) throw InvalidParameter("centre-window", "must be >= 1");
+  if (!(c.checkpoint_every == 0 || (c.checkpoint_every >= c.sample_every && std::isfinite(c.checkpoint_every))))
+    throw InvalidParameter("checkpoint-every", "must be 0 (none) or a finite number >= sample-every (units of T_b)");
   validate(c.integrator);
 }
 
@@ -86,17 +91,65 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
 
   auto& rec = result.record;
   rec.series.names = {"t", "E_x", "E_y", "energy", "X"};
-  SpaceTime field;
-  field.quantity = "energy_density";
-  field.first_label = first;
-  field.sites = beads;
+  rec.fields.resize(1);
+  rec.fields[0].quantity = "energy_density";
+  rec.fields[0].first_label = first;
+  rec.fields[0].sites = beads;
+
+  // What defines the trajectory and its record; a restart must match every item.
+  TrajectoryIdentity identity = base_identity("bright", c.params, c.integrator);
+  identity.add("branch", c.branch == Branch::optical ? "optical" : "acoustic");
+  identity.add("theta", c.theta);
+  identity.add("detuning", c.detuning ? fmt::format("{}", *c.detuning) : std::string("default"));
+  identity.add("n0", c.n0);
+  identity.add("N", N);
+  identity.add("ansatz_ends", c.ansatz_ends ? "true" : "false");
+  identity.add("sample_every", c.sample_every);
+  identity.add("spacetime_every", c.spacetime_every);
+  identity.add("centre_window", long(c.centre_window));
+  identity.add("error_window_end", c.error_window_end);
+  identity.add_state_hash("initial_state", s);
 
   std::vector<double> x(strains), y(strains), xa(strains), ya(strains), e(beads), scratch(beads + 1);
-  std::vector<double> centre_t, centre_x;
   double next_st = 0;
-  bool first_sample = true;
+  bool first_sample = true, skip_first = false;
+  double resume_step = 0;
+  CheckpointSink sink;
+  sink.file = c.checkpoint_file;
+  sink.identity = identity.text();
+  sink.t_end = t_end;
+  sink.at_end = c.checkpoint_at_end;
+  if (!c.restart_file.empty()) {
+    Checkpoint ck = read_restart(c.restart_file, identity, L.size(), t_end);
+    if (ck.record.series.names != rec.series.names || ck.record.fields.size() != 1 ||
+        ck.record.fields[0].sites != beads)
+      throw InputError("checkpoint '" + c.restart_file + "' does not hold a bright run's record");
+    s = std::move(ck.state);
+    rec = std::move(ck.record);
+    const std::filesystem::path f(c.restart_file);
+    for (const auto& [name, value] : std::initializer_list<std::pair<const char*, double*>>{
+             {"x0_inf", &S.x0_inf}, {"y0_inf", &S.y0_inf},
+                                {"energy0", &S.energy0}, {"max_Ex", &S.max_Ex}, {"max_Ey", &S.max_Ey},
+                                {"max_Ex_window", &S.max_Ex_window}, {"max_Ey_window", &S.max_Ey_window},
+                                {"final_Ex", &S.final_Ex}, {"final_Ey", &S.final_Ey},
+                                {"max_energy_drift", &S.max_energy_drift}, {"next_spacetime_row", &next_st}})
+      *value = ck.accumulator(f, name);
+    first_sample = false;
+    skip_first = true;  // the checkpoint's record already holds the observation at ck.t
+    resume_step = ck.next_step;
+    sink.base_steps = ck.steps;
+    sink.base_rhs_evaluations = ck.rhs_evaluations;
+    S.t_start = ck.t;
+    times = times_after(times, ck.t);
+  }
+  sink.rhythm = CheckpointRhythm(c.checkpoint_every * Tb, S.t_start);
+  SpaceTime& row_field = rec.fields[0];  // (after a restart, the checkpoint's)
 
   auto observe = [&](const State& st, double t) {
+    if (skip_first) {
+      skip_first = false;
+      return true;
+    }
     const double* u = L.primary(st);
     const double* v = L.secondary(st);
     for (std::size_t i = 0; i < strains; ++i) {
@@ -133,11 +186,9 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
     if (chain.autonomous())
       S.max_energy_drift = std::max(S.max_energy_drift, std::abs(energy - S.energy0) / S.energy0);
     rec.series.data.insert(rec.series.data.end(), {t, ex, ey, energy, X});
-    centre_t.push_back(t);
-    centre_x.push_back(X);
     if (t >= next_st - 1e-9 * t_end) {
-      field.times.push_back(t);
-      for (double val : e) field.values.push_back(float(val));
+      row_field.times.push_back(t);
+      for (double val : e) row_field.values.push_back(float(val));
       next_st += st_every;
     }
     for (double ts : snap_times) {
@@ -153,24 +204,45 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
       break;
     }
     if (control.progress) control.progress(t / t_end);
-    return !control.stop_requested();
+    return true;
+  };
+  // At step boundaries: periodic and final checkpoints; on an interrupt, a checkpoint and stop.
+  auto at_boundary = [&](const State& st, double t, double next_step, const IntegrationStats& work) {
+    const bool stop = control.stop_requested() && t < times.back();  // at the end: just finish
+    if (stop || sink.due(t))
+      sink.write(st, t, next_step, work, rec,
+                 {{"x0_inf", S.x0_inf}, {"y0_inf", S.y0_inf}, {"energy0", S.energy0},
+                  {"max_Ex", S.max_Ex}, {"max_Ey", S.max_Ey}, {"max_Ex_window", S.max_Ex_window},
+                  {"max_Ey_window", S.max_Ey_window}, {"final_Ex", S.final_Ex},
+                  {"final_Ey", S.final_Ey}, {"max_energy_drift", S.max_energy_drift},
+                  {"next_spacetime_row", next_st}});
+    return !stop;
   };
 
   const auto start = std::chrono::steady_clock::now();
-  S.stats = integrate_observed(chain, s, times, observe, c.integrator);
+  S.stats = integrate_observed(chain, s, times, observe, c.integrator, at_boundary, resume_step);
   S.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  S.stats.steps += sink.base_steps;
+  S.stats.rhs_evaluations += sink.base_rhs_evaluations;
+  S.checkpoints_written = sink.written;
+  S.last_checkpoint_time = sink.last_time;
   S.t_end = S.stats.t_reached;
   S.interrupted = S.stats.stopped;
   S.blew_up = S.stats.blew_up;
+  // The energy centre X(t) (eq:ectr) is the series' last column.
+  std::vector<double> centre_t, centre_x;
+  for (std::size_t r = 0; r < rec.series.rows(); ++r) {
+    centre_t.push_back(rec.series.at(r, 0));
+    centre_x.push_back(rec.series.at(r, 4));
+  }
   S.centre_speed = least_squares_slope(centre_t, centre_x);
   if (!centre_x.empty()) {
     S.centre_start = centre_x.front();
     S.centre_end = centre_x.back();
   }
   // x, y hold the strains of the last observation.
-  S.trailing = track_trailing_structure(field, centre_t, centre_x, x.data(), y.data(), -N, strains,
-                                        c.trailing);
-  rec.fields.push_back(std::move(field));
+  S.trailing = track_trailing_structure(rec.fields[0], centre_t, centre_x, x.data(), y.data(), -N,
+                                        strains, c.trailing);
   return result;
 }
 

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <initializer_list>
 #include <fmt/format.h>
 
 #include "lrchain/coefficients.hpp"
@@ -14,6 +16,7 @@
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "restart.hpp"
 #include "run_json.hpp"
 
 namespace lrchain::sim {
@@ -33,6 +36,8 @@ void validate(const DriveRunConfig& c) {
     throw InvalidParameter("front-fraction", "must be in (0, 1)");
   if (!(c.front_fit_end > c.front_fit_start))
     throw InvalidParameter("front-fit", "window end must exceed its start");
+  if (!(c.checkpoint_every == 0 || (c.checkpoint_every >= c.sample_every && std::isfinite(c.checkpoint_every))))
+    throw InvalidParameter("checkpoint-every", "must be 0 (none) or a finite number >= sample-every");
   validate(c.integrator);
   if (is_symplectic(c.integrator.stepper))
     throw InvalidParameter("stepper", "the driven chain is not autonomous: use rkf78 or dopri5");
@@ -111,14 +116,60 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
 
   auto& rec = result.record;
   rec.series.names = {"t", "energy", "front", "participation", "u0"};
-  SpaceTime field;
-  field.quantity = "energy_density";
-  field.first_label = 1;
-  field.sites = beads;
-  std::vector<double> e(beads), scratch(beads + 1), front_t, front_n;
-  double next_st = 0;
+  rec.fields.resize(1);
+  rec.fields[0].quantity = "energy_density";
+  rec.fields[0].first_label = 1;
+  rec.fields[0].sites = beads;
+  std::vector<double> e(beads), scratch(beads + 1);
+  double next_st = 0, final_peaks = 0;
+
+  // What defines the trajectory and its record; a restart must match every item.
+  TrajectoryIdentity identity = base_identity("drive", c.params, c.integrator);
+  identity.add("beads", c.beads);
+  identity.add("amplitude", c.amplitude);
+  identity.add("omega0", c.omega0);
+  identity.add("ramp_rate", c.ramp_rate);
+  identity.add("t_m", c.t_m);
+  identity.add("sample_every", c.sample_every);
+  identity.add("spacetime_every", c.spacetime_every);
+  identity.add("front_fraction", c.front_fraction);
+  identity.add_state_hash("initial_state", s);
+
+  bool skip_first = false;
+  double resume_step = 0;
+  CheckpointSink sink;
+  sink.file = c.checkpoint_file;
+  sink.identity = identity.text();
+  sink.t_end = c.t_end;
+  sink.at_end = c.checkpoint_at_end;
+  if (!c.restart_file.empty()) {
+    Checkpoint ck = read_restart(c.restart_file, identity, L.size(), c.t_end);
+    if (ck.record.series.names != rec.series.names || ck.record.fields.size() != 1 ||
+        ck.record.fields[0].sites != beads)
+      throw InputError("checkpoint '" + c.restart_file + "' does not hold a drive run's record");
+    s = std::move(ck.state);
+    rec = std::move(ck.record);
+    const std::filesystem::path f(c.restart_file);
+    for (const auto& [name, value] : std::initializer_list<std::pair<const char*, double*>>{
+             {"max_energy", &S.max_energy}, {"max_participation", &S.max_participation},
+             {"final_energy", &S.final_energy}, {"final_participation", &S.final_participation},
+             {"final_peaks", &final_peaks}, {"next_spacetime_row", &next_st}})
+      *value = ck.accumulator(f, name);
+    skip_first = true;  // the checkpoint's record already holds the observation at ck.t
+    resume_step = ck.next_step;
+    sink.base_steps = ck.steps;
+    sink.base_rhs_evaluations = ck.rhs_evaluations;
+    S.t_start = ck.t;
+    times = times_after(times, ck.t);
+  }
+  sink.rhythm = CheckpointRhythm(c.checkpoint_every, S.t_start);
+  SpaceTime& field = rec.fields[0];  // (after a restart, the checkpoint's)
 
   auto observe = [&](const State& st, double t) {
+    if (skip_first) {
+      skip_first = false;
+      return true;
+    }
     energy_density(chain, st, t, e.data(), scratch.data());
     const double emax = *std::max_element(e.begin(), e.end());
     long front = 0;
@@ -127,15 +178,11 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
     const double energy = chain.total_energy(st, t), part = participation(e);
     rec.series.data.insert(rec.series.data.end(),
                            {t, energy, double(front), part, boundary.left.motion(t)});
-    if (t >= c.front_fit_start - 1e-9 && t <= c.front_fit_end + 1e-9) {
-      front_t.push_back(t);
-      front_n.push_back(double(front));
-    }
     S.max_energy = std::max(S.max_energy, energy);
     S.max_participation = std::max(S.max_participation, part);
     S.final_energy = energy;
     S.final_participation = part;
-    S.final_peaks = count_peaks(e, 0.1);
+    final_peaks = double(count_peaks(e, 0.1));
     if (t >= next_st - 1e-9 * c.t_end) {
       field.times.push_back(t);
       for (double v : e) field.values.push_back(float(v));
@@ -147,17 +194,40 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
       break;
     }
     if (control.progress) control.progress(t / c.t_end);
-    return !control.stop_requested();
+    return true;
+  };
+  // At step boundaries: periodic and final checkpoints; on an interrupt, a checkpoint and stop.
+  auto at_boundary = [&](const State& st, double t, double next_step, const IntegrationStats& work) {
+    const bool stop = control.stop_requested() && t < times.back();  // at the end: just finish
+    if (stop || sink.due(t))
+      sink.write(st, t, next_step, work, rec,
+                 {{"max_energy", S.max_energy}, {"max_participation", S.max_participation},
+                  {"final_energy", S.final_energy}, {"final_participation", S.final_participation},
+                  {"final_peaks", final_peaks}, {"next_spacetime_row", next_st}});
+    return !stop;
   };
 
   const auto start = std::chrono::steady_clock::now();
-  S.stats = integrate_observed(chain, s, times, observe, c.integrator);
+  S.stats = integrate_observed(chain, s, times, observe, c.integrator, at_boundary, resume_step);
   S.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  S.stats.steps += sink.base_steps;
+  S.stats.rhs_evaluations += sink.base_rhs_evaluations;
+  S.checkpoints_written = sink.written;
+  S.last_checkpoint_time = sink.last_time;
   S.t_end = S.stats.t_reached;
   S.interrupted = S.stats.stopped;
   S.blew_up = S.stats.blew_up;
+  S.final_peaks = long(final_peaks);
+  // The front speed: least-squares slope of the series' front column over the fit window.
+  std::vector<double> front_t, front_n;
+  for (std::size_t r = 0; r < rec.series.rows(); ++r) {
+    const double t = rec.series.at(r, 0);
+    if (t >= c.front_fit_start - 1e-9 && t <= c.front_fit_end + 1e-9) {
+      front_t.push_back(t);
+      front_n.push_back(rec.series.at(r, 2));
+    }
+  }
   S.front_speed = least_squares_slope(front_t, front_n);
-  rec.fields.push_back(std::move(field));
   return result;
 }
 

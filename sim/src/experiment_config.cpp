@@ -1,60 +1,53 @@
-// Reading TOML experiment configs (toml++) into run configurations.
+// Reading a checked "bright" TOML config into its run configuration (experiment_config.hpp).
 #include "lrchain/sim/experiment_config.hpp"
 
-#include "lrchain/errors.hpp"
+#include "lrchain/sim/more_experiment_config.hpp"
 #include "toml_reading.hpp"
 
 namespace lrchain::sim {
 
 namespace {
 
-using config::read_long;
-using config::read_number;
-using config::read_numbers;
-
-void read_bright(const toml::table& t, BrightRunConfig& c) {
-  if (auto s = t["branch"].value<std::string>()) c.branch = parse_branch(*s);
-  if (!read_number(t, "theta", c.theta)) throw InvalidParameter("theta", "[bright] needs theta");
-  double d;
-  if (read_number(t, "detuning", d)) c.detuning = d;
-  read_number(t, "n0", c.n0);
-  read_long(t, "N", c.N);
-  read_number(t, "periods", c.periods);
-  read_number(t, "sample_every", c.sample_every);
-  read_number(t, "spacetime_every", c.spacetime_every);
-  read_number(t, "error_window_end", c.error_window_end);
-  long m = long(c.centre_window);
-  if (read_long(t, "centre_window", m)) {
-    if (m < 1) throw InvalidParameter("centre_window", "must be >= 1");
-    c.centre_window = std::size_t(m);
-  }
-  if (auto b = t["ansatz_ends"].value<bool>()) c.ansatz_ends = *b;
-  read_numbers(t, "snapshot_periods", c.snapshot_periods);
-  read_number(t, "trailing_fit_start", c.trailing.fit_start);
-  read_number(t, "trailing_gap", c.trailing.gap);
+void read_bright(const config::CheckedTable& t, BrightRunConfig& c) {
+  std::string branch;
+  if (t.read("branch", branch)) c.branch = parse_branch(branch);
+  t.read("theta", c.theta);
+  double d = 0;
+  if (t.read("detuning", d)) c.detuning = d;
+  t.read("n0", c.n0);
+  t.read("N", c.N);
+  t.read("periods", c.periods);
+  t.read("sample_every", c.sample_every);
+  t.read("spacetime_every", c.spacetime_every);
+  t.read("error_window_end", c.error_window_end);
+  std::int64_t m = 0;
+  if (t.read("centre_window", m)) c.centre_window = std::size_t(m);
+  t.read("ansatz_ends", c.ansatz_ends);
+  t.read("snapshot_periods", c.snapshot_periods);
+  t.read("trailing_fit_start", c.trailing.fit_start);
+  t.read("trailing_gap", c.trailing.gap);
 }
 
 }  // namespace
 
-ExperimentConfig load_experiment_config(const std::filesystem::path& file) {
-  const toml::table root = config::parse_file(file);
+ExperimentConfig load_experiment_config(const config::Document& doc) {
+  const std::string kind = experiment_kind(doc);
+  if (kind != "bright")
+    throw config::ConfigError("config file '" + doc.source() + "' is a \"" + kind +
+                                  "\" experiment; this reader takes \"bright\" only",
+                              doc.source(), 0, "", "experiment");
+  const config::CheckedTable root = config::check(doc, experiment_schema(kind));
   ExperimentConfig c;
-  c.experiment = root["experiment"].value_or(std::string());
-  c.name = root["name"].value_or(file.stem().string());
-  Params p;
-  IntegratorOptions integ;
-  config::read_common(root, p, integ, c.out_dir);
-  if (c.experiment == "bright") {
-    c.bright.params = p;
-    c.bright.integrator = integ;
-    auto b = root["bright"].as_table();
-    if (!b) throw InvalidParameter("bright", "config needs a [bright] table");
-    read_bright(*b, c.bright);
-    validate(c.bright);
-  } else {
-    throw InvalidParameter("experiment", "must be \"bright\" (got \"" + c.experiment + "\")");
-  }
+  c.experiment = kind;
+  c.name = config::config_name(root);
+  config::read_common(root, c.bright.params, c.bright.integrator, c.out_dir);
+  read_bright(*root.table("bright"), c.bright);  // a required table
+  validate(c.bright);
   return c;
+}
+
+ExperimentConfig load_experiment_config(const std::filesystem::path& file) {
+  return load_experiment_config(config::Document::from_file(file));
 }
 
 }  // namespace lrchain::sim

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <initializer_list>
 #include <fmt/format.h>
 
 #include "lrchain/coefficients.hpp"
@@ -16,6 +18,7 @@
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "restart.hpp"
 #include "run_json.hpp"
 
 namespace lrchain::sim {
@@ -30,9 +33,10 @@ void validate(const ModulatedRunConfig& c) {
   if (!(c.t_end > 0)) throw InvalidParameter("t-end", "must be > 0");
   if (!(c.sample_every > 0 && c.sample_every <= c.t_end))
     throw InvalidParameter("sample-every", "must be in (0, t_end]");
-  if (!(c.checkpoint_every >= 0)) throw InvalidParameter("checkpoint-every", "must be >= 0");
   if (c.dark_window < 1 || c.dark_window >= c.N) throw InvalidParameter("dark-window", "must be in [1, N)");
   if (!(c.contrast_threshold > 0)) throw InvalidParameter("contrast-threshold", "must be > 0");
+  if (!(c.checkpoint_every == 0 || (c.checkpoint_every >= c.sample_every && std::isfinite(c.checkpoint_every))))
+    throw InvalidParameter("checkpoint-every", "must be 0 (none) or a finite number >= sample-every");
   validate(c.integrator);
 }
 
@@ -82,49 +86,73 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
   const DisplacementLattice chain(c.params, N, boundary);
   const auto& L = chain.layout();
   S.energy0 = chain.total_energy(s, 0);  // of eq:cimi, also on restart
-  double t0 = 0;
-  if (!c.restart_file.empty()) {
-    Checkpoint ck = read_checkpoint(c.restart_file);
-    if (ck.state.size() != L.size() || ck.tag != c.name)
-      throw InvalidParameter("restart", fmt::format("checkpoint '{}' is for run '{}' with {} values, "
-                                                    "not '{}' with {}", c.restart_file, ck.tag,
-                                                    ck.state.size(), c.name, L.size()));
-    if (!(ck.t < c.t_end)) throw InvalidParameter("restart", "checkpoint time is not before t_end");
-    s = std::move(ck.state);
-    t0 = ck.t;
-  }
-  S.t_start = t0;
 
-  // Observation times: samples on the grid k*sample_every, checkpoint and snapshot times.
-  std::vector<double> times{t0};
-  for (long k = long(std::floor(t0 / c.sample_every)) + 1; double(k) * c.sample_every < c.t_end; ++k)
-    times.push_back(double(k) * c.sample_every);
-  if (c.checkpoint_every > 0)
-    for (long k = long(std::floor(t0 / c.checkpoint_every)) + 1; double(k) * c.checkpoint_every < c.t_end; ++k)
-      times.push_back(double(k) * c.checkpoint_every);
+  // Observation times: samples on the grid k*sample_every and the snapshot times. Checkpoints are
+  // written at the step boundaries that reach each multiple of checkpoint_every (no extra times).
+  std::vector<double> times{0.0};
+  for (long k = 1; double(k) * c.sample_every < c.t_end; ++k) times.push_back(double(k) * c.sample_every);
   times.push_back(c.t_end);
   std::vector<double> snap_times;
   for (double ts : c.snapshot_times)
-    if (ts >= t0 && ts <= c.t_end) snap_times.push_back(ts);
+    if (ts >= 0 && ts <= c.t_end) snap_times.push_back(ts);
   times = merge_observation_times(std::move(times), snap_times, c.t_end);
 
   auto& rec = result.record;
   rec.series.names = {"t", "energy", "contrast", "dark_centre", "dark_unwrapped"};
-  SpaceTime field;
-  field.quantity = "energy_density";
-  field.first_label = 0;
-  field.sites = N;
-  std::vector<double> e(N), m(N), scratch(N + 1), fit_t, fit_x;
-  double prev_centre = -1, unwrapped = 0, next_row = t0;
-  bool first = true;
+  rec.fields.resize(1);
+  rec.fields[0].quantity = "energy_density";
+  rec.fields[0].first_label = 0;
+  rec.fields[0].sites = N;
+  std::vector<double> e(N), m(N), scratch(N + 1);
+  double prev_centre = -1, unwrapped = 0, next_row = 0, first = 1;
+
+  // What defines the trajectory and its record; a restart must match every item.
+  TrajectoryIdentity identity = base_identity("modulated", c.params, c.integrator);
+  identity.add("N", c.N);
+  identity.add("epsilon", c.epsilon);
+  identity.add("theta_waves", c.theta_waves);
+  identity.add("b", c.b);
+  identity.add("sample_every", c.sample_every);
+  identity.add("dark_window", c.dark_window);
+  identity.add("contrast_threshold", c.contrast_threshold);
+  identity.add_state_hash("initial_state", s);
+
+  bool skip_first = false;
+  double resume_step = 0;
+  CheckpointSink sink;
+  sink.file = c.checkpoint_file;
+  sink.identity = identity.text();
+  sink.t_end = c.t_end;
+  sink.at_end = c.checkpoint_every > 0;
+  if (!c.restart_file.empty()) {
+    Checkpoint ck = read_restart(c.restart_file, identity, L.size(), c.t_end);
+    if (ck.record.series.names != rec.series.names || ck.record.fields.size() != 1 ||
+        ck.record.fields[0].sites != N)
+      throw InputError("checkpoint '" + c.restart_file + "' does not hold a modulated run's record");
+    s = std::move(ck.state);
+    rec = std::move(ck.record);
+    const std::filesystem::path f(c.restart_file);
+    for (const auto& [name, value] : std::initializer_list<std::pair<const char*, double*>>{
+             {"initial_contrast", &S.initial_contrast}, {"max_energy_drift", &S.max_energy_drift},
+             {"instability_time", &S.instability_time}, {"previous_centre", &prev_centre},
+             {"unwrapped_centre", &unwrapped}, {"next_spacetime_row", &next_row}, {"first", &first}})
+      *value = ck.accumulator(f, name);
+    skip_first = true;  // the checkpoint's record already holds the observation at ck.t
+    resume_step = ck.next_step;
+    sink.base_steps = ck.steps;
+    sink.base_rhs_evaluations = ck.rhs_evaluations;
+    S.t_start = ck.t;
+    times = times_after(times, ck.t);
+  }
+  sink.rhythm = CheckpointRhythm(c.checkpoint_every, S.t_start);
+  SpaceTime& field = rec.fields[0];  // (after a restart, the checkpoint's)
   auto near = [&](double a, double b) { return std::abs(a - b) <= 1e-9 * c.t_end; };
-  auto save = [&](const State& st, double t) {
-    if (c.checkpoint_file.empty()) return;
-    write_checkpoint(c.checkpoint_file, Checkpoint{t, st, c.name});
-    ++S.checkpoints_written;
-  };
 
   auto observe = [&](const State& st, double t) {
+    if (skip_first) {
+      skip_first = false;
+      return true;
+    }
     energy_density(chain, st, t, e.data(), scratch.data());
     running_mean(e, c.dark_window, m);
     const auto [mn, mx] = std::minmax_element(m.begin(), m.end());
@@ -143,14 +171,10 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
     }
     prev_centre = centre;
     const double energy = chain.total_energy(st, t);
-    if (first) S.initial_contrast = contrast;
-    first = false;
+    if (first != 0) S.initial_contrast = contrast;
+    first = 0;
     S.max_energy_drift = std::max(S.max_energy_drift, std::abs(energy - S.energy0) / S.energy0);
     if (S.instability_time < 0 && contrast > c.contrast_threshold) S.instability_time = t;
-    if (t >= c.speed_fit_start - 1e-9 && t <= c.speed_fit_end + 1e-9) {
-      fit_t.push_back(t);
-      fit_x.push_back(unwrapped);
-    }
     rec.series.data.insert(rec.series.data.end(), {t, energy, contrast, centre, unwrapped});
     if (t >= next_row - 1e-9 * c.t_end) {
       field.times.push_back(t);
@@ -162,27 +186,41 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
       rec.snapshots.push_back(displacement_snapshot(L, st, e.data(), t, fmt::format("t{:.0f}", t), 0));
       break;
     }
-    if (c.checkpoint_every > 0 && t > t0) {
-      const double k = std::round(t / c.checkpoint_every);
-      if (near(k * c.checkpoint_every, t) || near(t, c.t_end)) save(st, t);
-    }
-    if (control.progress) control.progress((t - t0) / (c.t_end - t0));
-    if (control.stop_requested()) {
-      save(st, t);  // Ctrl-C: keep a restartable state
-      return false;
-    }
+    if (control.progress) control.progress((t - S.t_start) / (c.t_end - S.t_start));
     return true;
+  };
+  // At step boundaries: periodic and final checkpoints; on an interrupt, a checkpoint and stop.
+  auto at_boundary = [&](const State& st, double t, double next_step, const IntegrationStats& work) {
+    const bool stop = control.stop_requested() && t < times.back();  // at the end: just finish
+    if (stop || sink.due(t))
+      sink.write(st, t, next_step, work, rec,
+                 {{"initial_contrast", S.initial_contrast}, {"max_energy_drift", S.max_energy_drift},
+                  {"instability_time", S.instability_time}, {"previous_centre", prev_centre},
+                  {"unwrapped_centre", unwrapped}, {"next_spacetime_row", next_row}, {"first", first}});
+    return !stop;
   };
 
   const auto start = std::chrono::steady_clock::now();
-  S.stats = integrate_observed(chain, s, times, observe, c.integrator);
+  S.stats = integrate_observed(chain, s, times, observe, c.integrator, at_boundary, resume_step);
   S.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  S.stats.steps += sink.base_steps;
+  S.stats.rhs_evaluations += sink.base_rhs_evaluations;
+  S.checkpoints_written = sink.written;
+  S.last_checkpoint_time = sink.last_time;
   S.t_end = S.stats.t_reached;
   S.interrupted = S.stats.stopped;
   S.blew_up = S.stats.blew_up;
+  // Dark-breather speed: slope of the series' unwrapped minimum position over the fit window.
+  std::vector<double> fit_t, fit_x;
+  for (std::size_t r = 0; r < rec.series.rows(); ++r) {
+    const double t = rec.series.at(r, 0);
+    if (t >= c.speed_fit_start - 1e-9 && t <= c.speed_fit_end + 1e-9) {
+      fit_t.push_back(t);
+      fit_x.push_back(rec.series.at(r, 4));
+    }
+  }
   S.dark_samples = long(fit_t.size());
   S.dark_speed = std::abs(least_squares_slope(fit_t, fit_x));
-  rec.fields.push_back(std::move(field));
   return result;
 }
 

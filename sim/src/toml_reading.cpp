@@ -1,64 +1,93 @@
-// Shared TOML readers of the experiment configs (toml_reading.hpp).
+// The tables every simulate config shares, as schemas, and reading them (toml_reading.hpp).
 #include "toml_reading.hpp"
 
 #include <cmath>
-#include <stdexcept>
-
-#include "lrchain/errors.hpp"
-#include "lrchain/numeric_parse.hpp"
+#include <filesystem>
 
 namespace lrchain::sim::config {
 
-toml::table parse_file(const std::filesystem::path& file) {
-  try {
-    return toml::parse_file(file.string());
-  } catch (const toml::parse_error& e) {
-    throw std::runtime_error("cannot read config '" + file.string() + "': " +
-                             std::string(e.description()));
-  }
-}
+namespace {
 
-bool read_number(const toml::table& t, const std::string& key, double& out) {
-  const toml::node* n = t.get(key);
-  if (!n) return false;
-  if (auto v = n->value<double>()) { out = *v; return true; }
-  if (auto s = n->value<std::string>()) { out = parse_number(*s, key); return true; }
-  throw InvalidParameter(key, "must be a number or a number string such as \"1/3\" or \"pi/2\"");
-}
-
-bool read_long(const toml::table& t, const std::string& key, long& out) {
-  double v;
-  if (!read_number(t, key, v)) return false;
-  if (v != std::floor(v)) throw InvalidParameter(key, "must be an integer");
-  out = long(v);
-  return true;
-}
-
-void read_numbers(const toml::table& t, const std::string& key, std::vector<double>& out) {
-  if (auto arr = t[key].as_array()) {
-    out.clear();
-    for (const auto& e : *arr) {
-      auto v = e.value<double>();
-      if (!v) throw InvalidParameter(key, "must be an array of numbers");
-      out.push_back(*v);
+// A default as the examples write it: "1/3", "4/9" for small exact fractions, else the number.
+std::string default_text(double v) {
+  if (v != std::floor(v))
+    for (int q = 2; q <= 12; ++q) {
+      const double p = std::round(v * q);
+      if (p / q == v) return number_text(p) + "/" + std::to_string(q);
     }
-  }
+  return number_text(v);
 }
 
-void read_common(const toml::table& root, Params& p, IntegratorOptions& o, std::string& out_dir) {
-  if (auto m = root["model"].as_table()) {
-    read_number(*m, "rho", p.rho);
-    read_number(*m, "kappa", p.kappa);
-    read_number(*m, "delta0", p.delta0);
-    read_number(*m, "alpha", p.alpha);
+}  // namespace
+
+std::shared_ptr<const TableSchema> model_schema(const Params& d) {
+  return std::make_shared<const TableSchema>(TableSchema{
+      "the resonant chain's parameters (Sec. 2)",
+      {number("rho", NumberRange::positive(), default_text(d.rho), "mass ratio of resonator to bead"),
+       number("kappa", NumberRange::positive(), default_text(d.kappa), "resonator spring constant"),
+       number("delta0", NumberRange::positive(), default_text(d.delta0), "precompression overlap"),
+       number("alpha", NumberRange::above(1), default_text(d.alpha), "Hertz exponent (3/2 for spheres)")},
+      std::nullopt});
+}
+
+std::vector<std::string> all_steppers() { return {"rkf78", "dopri5", "symplectic", "srkn11b", "srkn14a", "ss17"}; }
+
+std::shared_ptr<const TableSchema> integrator_schema(const IntegratorOptions& d, const std::vector<std::string>& steppers) {
+  return std::make_shared<const TableSchema>(TableSchema{
+      "the time integration (Boost.Odeint)",
+      {choice("stepper", steppers, std::string(to_string(d.stepper)),
+              "rkf78, dopri5 (adaptive); symplectic (McLachlan 4), srkn11b, srkn14a (Blanes-Moan 6), ss17 "
+              "(McLachlan 8): fixed step, autonomous systems only"),
+       number("abs_tol", NumberRange::between(0, 1, true, true), number_text(d.abs_tol),
+              "absolute local error tolerance (adaptive steppers)"),
+       number("rel_tol", NumberRange::between(0, 1, false, true), number_text(d.rel_tol),
+              "relative local error tolerance (adaptive steppers)"),
+       number("dt", NumberRange::positive(), number_text(d.dt),
+              "initial step (adaptive) or largest step (fixed-step steppers)")},
+      std::nullopt});
+}
+
+std::shared_ptr<const TableSchema> output_schema() {
+  return std::make_shared<const TableSchema>(TableSchema{
+      "where the data and figures go",
+      {string("dir", "none", "output directory (the command line's --out overrides it)")},
+      std::nullopt});
+}
+
+TableSchema top_level_schema(const std::string& kind, const Params& model_defaults,
+                             const IntegratorOptions& integrator_defaults, const std::vector<std::string>& steppers,
+                             std::shared_ptr<const TableSchema> experiment_table) {
+  return TableSchema{"a \"" + kind + "\" experiment",
+                     {choice("experiment", {kind}, "", "which experiment this file describes").require(),
+                      string("name", "the file name without .toml", "a label for the run, copied to the JSON summary"),
+                      table("model", model_schema(model_defaults)),
+                      table(kind, std::move(experiment_table)).require(),
+                      table("integrator", integrator_schema(integrator_defaults, steppers)),
+                      table("output", output_schema())},
+                     std::nullopt};
+}
+
+void read_common(const CheckedTable& root, Params& p, IntegratorOptions& o, std::string& out_dir) {
+  if (auto m = root.table("model")) {
+    m->read("rho", p.rho);
+    m->read("kappa", p.kappa);
+    m->read("delta0", p.delta0);
+    m->read("alpha", p.alpha);
   }
-  if (auto i = root["integrator"].as_table()) {
-    if (auto s = (*i)["stepper"].value<std::string>()) o.stepper = parse_stepper(*s);
-    read_number(*i, "abs_tol", o.abs_tol);
-    read_number(*i, "rel_tol", o.rel_tol);
-    read_number(*i, "dt", o.dt);
+  if (auto i = root.table("integrator")) {
+    std::string stepper;
+    if (i->read("stepper", stepper)) o.stepper = parse_stepper(stepper);
+    i->read("abs_tol", o.abs_tol);
+    i->read("rel_tol", o.rel_tol);
+    i->read("dt", o.dt);
   }
-  if (auto od = root["output"].as_table()) out_dir = (*od)["dir"].value_or(std::string());
+  if (auto od = root.table("output")) od->read("dir", out_dir);
+}
+
+std::string config_name(const CheckedTable& root) {
+  std::string name = std::filesystem::path(root.source()).stem().string();
+  root.read("name", name);
+  return name;
 }
 
 }  // namespace lrchain::sim::config

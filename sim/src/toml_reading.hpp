@@ -1,25 +1,35 @@
 #pragma once
-// Shared TOML (toml++) readers of the experiment configs (experiment_config.cpp,
-// more_experiment_config.cpp): numbers as TOML numbers or strings in the shared syntax ("1/3",
-// "pi/2"), the [model], [integrator] and [output] tables. Private to sim/src.
-#include <filesystem>
+// The parts every simulate config shares (experiment_config.cpp, more_experiment_config.cpp,
+// experiment_schema.cpp): the schemas of the [model], [integrator] and [output] tables and of the
+// top-level keys, and reading them. Private to sim/src; the checks are lrchain/config/strict_toml.hpp.
+#include <memory>
 #include <string>
 #include <vector>
 
-#include <toml++/toml.h>
-
+#include "lrchain/config/strict_toml.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/integrator.hpp"
 
 namespace lrchain::sim::config {
 
-// Parses a TOML file; std::runtime_error naming the file on a syntax error.
-toml::table parse_file(const std::filesystem::path& file);
-// Reads t[key] if present (number, or number string); InvalidParameter(key) if malformed.
-bool read_number(const toml::table& t, const std::string& key, double& out);
-bool read_long(const toml::table& t, const std::string& key, long& out);  // integer-valued
-void read_numbers(const toml::table& t, const std::string& key, std::vector<double>& out);
-// [model] (rho, kappa, delta0, alpha), [integrator] (stepper, abs_tol, rel_tol, dt), [output] dir.
-void read_common(const toml::table& root, Params& p, IntegratorOptions& o, std::string& out_dir);
+using namespace lrchain::config;
+
+// [model]: rho, kappa, delta0, alpha, with the experiment's defaults.
+std::shared_ptr<const TableSchema> model_schema(const Params& defaults);
+// [integrator]: stepper (one of `steppers`), abs_tol, rel_tol, dt.
+std::shared_ptr<const TableSchema> integrator_schema(const IntegratorOptions& defaults,
+                                                     const std::vector<std::string>& steppers);
+// [output]: dir.
+std::shared_ptr<const TableSchema> output_schema();
+// The top level of an experiment of `kind` whose own table is [kind] = `experiment_table`.
+TableSchema top_level_schema(const std::string& kind, const Params& model_defaults,
+                             const IntegratorOptions& integrator_defaults, const std::vector<std::string>& steppers,
+                             std::shared_ptr<const TableSchema> experiment_table);
+std::vector<std::string> all_steppers();
+
+// Reads [model], [integrator] and [output] dir of a checked config (keeps defaults for absent keys).
+void read_common(const CheckedTable& root, Params& p, IntegratorOptions& o, std::string& out_dir);
+// The `name` key, or the file name without its extension.
+std::string config_name(const CheckedTable& root);
 
 }  // namespace lrchain::sim::config

@@ -66,6 +66,11 @@ BranchResult continue_branch(const DarkShooting& shooting, const Eigen::VectorXd
   accept(r.lpNorm<Eigen::Infinity>());
 
   while (static_cast<int>(out.points.size()) < o.max_points) {
+    if (o.stop && o.stop->load(std::memory_order_relaxed)) {
+      out.interrupted = true;
+      out.stop_reason = fmt::format("interrupted after {} points at omega_b = {:.6f}", out.points.size(), u(k));
+      return out;
+    }
     const Eigen::VectorXd u_prev = u;
     const Eigen::VectorXd t = t_prev;
     // Chord corrector with the Jacobian of the last point, refreshed when it stalls.

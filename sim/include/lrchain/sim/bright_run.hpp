@@ -36,6 +36,10 @@ struct BrightRunConfig {
   bool ansatz_ends = false;
   TrailingStructureOptions trailing;  // secondary structure behind the breather (fit_start > 0)
   IntegratorOptions integrator;
+  double checkpoint_every = 0;  // T_b between checkpoints (0: only at an interrupt)
+  std::string checkpoint_file;  // where checkpoints go (empty: none)
+  bool checkpoint_at_end = false;  // also write one at the end, to extend the run later
+  std::string restart_file;     // continue from this checkpoint (empty: start at t = 0)
 };
 void validate(const BrightRunConfig& c);
 
@@ -50,6 +54,9 @@ struct BrightRunSummary {
   double centre_speed = 0;                // least-squares slope of X(t) (eq:ectr)
   double centre_start = 0, centre_end = 0;
   double t_end = 0;                       // time reached
+  double t_start = 0;                     // 0, or the time of the checkpoint restarted from
+  long checkpoints_written = 0;
+  double last_checkpoint_time = -1;       // of the last checkpoint written (< 0: none)
   bool interrupted = false, blew_up = false;
   TrailingStructure trailing;             // if config.trailing.fit_start > 0
   IntegrationStats stats;

@@ -1,22 +1,80 @@
 #pragma once
-// Checkpoint/restart of long lattice runs: the state vector and its time in one small binary
-// file, written atomically (temporary name + rename), so a crash or Ctrl-C never leaves a torn file.
+// Checkpoint/restart of long lattice runs. A checkpoint knows what it continues: it records the
+// lrchain version and, as readable `key = value` lines, everything that defines the trajectory
+// (run kind, model, every physical parameter, lattice size, stepper and its settings, a hash of the
+// initial state), plus a hash of those lines; then the time, the step size the stepper tries next,
+// the state, the run's accumulated outputs, and a CRC-32 of the file's own bytes. Written under a
+// unique temporary name and renamed, so a crash or a signal never leaves a torn file.
+//
+// Layout (little-endian, as written by this machine):
+//   "LRCKPT\r\n"                      8-byte magic
+//   uint32 format version (2)
+//   uint64 length, text               identity: "key = value\n" lines (lrchain_version first)
+//   uint64 FNV-1a 64 of the identity text
+//   uint64 length, text               progress: "key = value\n" lines (t, next_step, steps,
+//                                     rhs_evaluations, the run's accumulators), doubles in C99
+//                                     hexadecimal (%a), so they round-trip to the last bit
+//   uint64 n, n doubles               the state
+//   record                            series, fields and snapshots observed up to t (doubles and
+//                                     floats bit for bit; strings length-prefixed)
+//   uint32 CRC-32 of every byte before it
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "lrchain/sim/run_record.hpp"
 #include "lrchain/sim/state.hpp"
 
 namespace lrchain::sim {
 
-struct Checkpoint {
-  double t = 0;
-  State state;
-  std::string tag;  // free text identifying the run (e.g. the config name), checked on restart
+// What defines a trajectory, as ordered key = value items; doubles print in the shortest form that
+// reads back to the same bits.
+class TrajectoryIdentity {
+ public:
+  void add(const std::string& key, double value);
+  void add(const std::string& key, long value);
+  void add(const std::string& key, const std::string& value);
+  void add(const std::string& key, const char* value) { add(key, std::string(value)); }
+  void add_state_hash(const std::string& key, const State& state);  // FNV-1a 64 of its bytes
+  const std::vector<std::pair<std::string, std::string>>& items() const { return items_; }
+  std::string text() const;  // "lrchain_version = ...\nkey = value\n..."
+
+ private:
+  std::vector<std::pair<std::string, std::string>> items_;
 };
 
-// Writes `c` to `file` (directory must exist) via file.tmp + rename.
-void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c);
-// Reads a checkpoint; throws std::runtime_error naming the file if it is missing or malformed.
+struct Checkpoint {
+  std::string identity;   // TrajectoryIdentity::text() of the run that wrote it
+  double t = 0;           // time of `state`: a step boundary of the run's step sequence
+  double next_step = 0;   // step size the stepper tries next (adaptive steppers)
+  std::uint64_t steps = 0, rhs_evaluations = 0;  // work done up to t
+  std::vector<std::pair<std::string, double>> accumulators;  // the run's running maxima etc.
+  State state;
+  RunRecord record;       // what was observed up to t (filled by read_checkpoint)
+
+  // The accumulator `name`; throws InputError naming `file` if the checkpoint lacks it.
+  double accumulator(const std::filesystem::path& file, const std::string& name) const;
+};
+
+// FNV-1a 64-bit hash of bytes (identity text, initial state).
+std::uint64_t fnv1a64(const void* data, std::size_t size);
+
+// A temporary name next to `file`, unique to this process: "<dir>/.<name>.tmp.<pid>".
+std::filesystem::path temporary_name(const std::filesystem::path& file);
+
+// Writes `c` with `record` (in place of c.record, which a run need not copy) to `file` (its
+// directory must exist) via a temporary name + rename.
+void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c, const RunRecord& record);
+
+// Reads and verifies a checkpoint (magic, version, sizes against the file's size, CRC-32, identity
+// hash, finite state, time >= 0). Throws InputError naming the file and what is wrong.
 Checkpoint read_checkpoint(const std::filesystem::path& file);
+
+// Throws InvalidParameter("restart", ...) naming the first item that differs, e.g. "checkpoint
+// 'c.bin' was written with rho = 0.3333333333333333, this run has rho = 0.5".
+void check_same_trajectory(const std::filesystem::path& file, const Checkpoint& c,
+                           const TrajectoryIdentity& run);
 
 }  // namespace lrchain::sim

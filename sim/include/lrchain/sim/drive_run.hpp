@@ -29,6 +29,10 @@ struct DriveRunConfig {
   double front_fraction = 0.1;  // front = largest n with e_n > front_fraction * max_n e_n
   double front_fit_start = 100, front_fit_end = 700;  // window of the front-speed fit
   IntegratorOptions integrator{StepperKind::rkf78, 1e-10, 1e-10, 0.05};
+  double checkpoint_every = 0;  // time between checkpoints (0: only at an interrupt)
+  std::string checkpoint_file;  // where checkpoints go (empty: none)
+  bool checkpoint_at_end = false;  // also write one at the end, to extend the run later
+  std::string restart_file;     // continue from this checkpoint (empty: start at t = 0)
 };
 void validate(const DriveRunConfig& c);
 
@@ -45,6 +49,9 @@ struct DriveRunSummary {
   double final_energy = 0;     // total energy at t_end
   double max_energy = 0;
   double t_end = 0;
+  double t_start = 0;          // 0, or the time of the checkpoint restarted from
+  long checkpoints_written = 0;
+  double last_checkpoint_time = -1;  // of the last checkpoint written (< 0: none)
   bool interrupted = false, blew_up = false;
   IntegrationStats stats;
   double solve_seconds = 0;

@@ -8,8 +8,13 @@
 //   ss17       McLachlan's 8th-order symmetric composition SS17 of Stoermer-Verlet steps;
 //              srkn11b, srkn14a, ss17 take, between consecutive observation times, the fewest
 //              equal steps not longer than `dt`
-// The observer is called as obs(state, t) at every requested time; it may return false to stop
-// (e.g. on Ctrl-C), which ends the integration at that observation time.
+// The observer is called as obs(state, t) at every requested time; it may return false to stop,
+// which ends the integration at that observation time. An optional step-boundary hook is called
+// at boundaries of the step sequence with the state, its time and the step size the stepper tries
+// next; there a checkpoint continues the same step sequence to the last bit, and returning false
+// stops the integration (an interrupt). rkf78 and the fixed-step steppers land on every observation
+// time, which is then a boundary; dopri5 (dense output) steps across observation times, and its
+// boundaries are its own step ends, after the observations inside the step.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -48,7 +53,7 @@ struct IntegrationStats {
   std::size_t steps = 0;
   std::size_t rhs_evaluations = 0;
   double t_reached = 0;     // time of the last observation made
-  bool stopped = false;     // the observer asked to stop (interrupt)
+  bool stopped = false;     // the observer or the step-boundary hook asked to stop (interrupt)
   bool blew_up = false;     // the state became non-finite
 };
 
@@ -154,13 +159,99 @@ void integrate_rkn_observed(const System& system, State& state, const std::vecto
 
 struct StopIntegration {};
 
+// Boost.Odeint's integrate_times for a controlled stepper (integrate/detail/integrate_times.hpp,
+// Boost 1.74), step for step, with the step size it carries from one observation interval to the
+// next handed to `boundary`, and started from `dt`: a restart from (state, t, dt) takes the same steps.
+template <class Stepper, class System, class Obs, class Boundary>
+void integrate_times_controlled(Stepper& st, System system, State& x, const std::vector<double>& times,
+                                double dt, Obs& obs, Boundary& boundary, std::size_t& steps) {
+  namespace odeint = boost::numeric::odeint;
+  odeint::failed_step_checker fail_checker;
+  auto it = times.begin();
+  while (true) {
+    double current_time = *it++;
+    obs(x, current_time);
+    boundary(x, current_time, dt);
+    if (it == times.end()) break;
+    while (odeint::detail::less_with_sign(current_time, *it, dt)) {
+      double current_dt = odeint::detail::min_abs(dt, *it - current_time);
+      if (st.try_step(system, x, current_time, current_dt) == odeint::success) {
+        ++steps;
+        fail_checker.reset();
+        dt = odeint::detail::max_abs(dt, current_dt);
+      } else {
+        fail_checker();
+        dt = current_dt;
+      }
+    }
+  }
+}
+
+// Boost.Odeint's integrate_times for a plain stepper (same file), counting steps in place so that
+// a checkpoint written from the observer records the work done so far.
+template <class Stepper, class System, class StateType, class Obs>
+void integrate_times_fixed(Stepper& st, System system, StateType& x, const std::vector<double>& times,
+                           double dt, Obs& obs, std::size_t& steps) {
+  namespace odeint = boost::numeric::odeint;
+  double current_dt = dt;
+  auto it = times.begin();
+  while (true) {
+    double current_time = *it++;
+    obs(x, current_time);
+    if (it == times.end()) break;
+    while (odeint::detail::less_with_sign(current_time, *it, current_dt)) {
+      current_dt = odeint::detail::min_abs(dt, *it - current_time);
+      st.do_step(system, x, current_time, current_dt);
+      current_time += current_dt;
+      ++steps;
+    }
+  }
+}
+
+// Boost.Odeint's integrate_times for a dense-output stepper (same file), with `boundary` called at
+// each step end after the observations inside the step, with the stepper's current state, time and
+// next step: a restart from those (initialize() recomputes the first-same-as-last derivative from the
+// same state and time, the same bits) takes the same steps.
+template <class Dense, class System, class Obs, class Boundary>
+void integrate_times_dense(Dense& st, System system, State& x, const std::vector<double>& times,
+                           double dt, Obs& obs, Boundary& boundary, std::size_t& steps) {
+  namespace odeint = boost::numeric::odeint;
+  const double last = times.back();
+  auto it = times.begin();
+  st.initialize(x, *it, dt);
+  obs(x, *it++);
+  while (it != times.end()) {
+    while (it != times.end() &&
+           odeint::detail::less_eq_with_sign(*it, st.current_time(), st.current_time_step())) {
+      st.calc_state(*it, x);
+      obs(x, *it++);
+    }
+    if (it == times.end()) break;
+    boundary(st.current_state(), st.current_time(), st.current_time_step());
+    if (odeint::detail::less_eq_with_sign(st.current_time() + st.current_time_step(), last,
+                                          st.current_time_step())) {
+      st.do_step(system);
+    } else {
+      st.initialize(st.current_state(), st.current_time(), last - st.current_time());
+      st.do_step(system);
+    }
+    ++steps;
+  }
+}
+
 }  // namespace detail
 
-// Integrates `state` from times.front() through the observation times (increasing).
+// A step-boundary hook: (state, t, next step size, work so far) -> continue?
+using StepBoundaryHook = std::function<bool(const State&, double, double, const IntegrationStats&)>;
+
+// Integrates `state` from times.front() through the observation times (increasing). `boundary`
+// (optional) is the step-boundary hook; `resume_step` > 0 replaces opt.dt as the first step size
+// of the adaptive steppers (the next_step a checkpoint recorded at times.front()).
 template <class System, class Observer>
 IntegrationStats integrate_observed(const System& system, State& state,
                                     const std::vector<double>& times, Observer&& observer,
-                                    const IntegratorOptions& opt) {
+                                    const IntegratorOptions& opt,
+                                    const StepBoundaryHook& boundary = {}, double resume_step = 0) {
   namespace odeint = boost::numeric::odeint;
   validate(opt);
   IntegrationStats stats;
@@ -175,21 +266,32 @@ IntegrationStats integrate_observed(const System& system, State& state,
     if (!detail::all_finite(s.data(), s.size())) { stats.blew_up = true; throw detail::StopIntegration{}; }
     if (!observer(s, t)) { stats.stopped = true; throw detail::StopIntegration{}; }
   };
+  auto at_boundary = [&](const State& s, double t, double next_step) {
+    if (boundary && !boundary(s, t, next_step, stats)) {
+      stats.stopped = true;
+      throw detail::StopIntegration{};
+    }
+  };
+  auto obs_at_boundary = [&](const State& s, double t) {
+    obs(s, t);
+    at_boundary(s, t, opt.dt);
+  };
+  const double first_step = resume_step > 0 ? resume_step : opt.dt;
   detail::Counted<System> rhs{&system, &stats.rhs_evaluations};
   try {
     switch (opt.stepper) {
       case StepperKind::rkf78: {
         auto stepper = odeint::make_controlled(opt.abs_tol, opt.rel_tol,
                                                odeint::runge_kutta_fehlberg78<State>());
-        stats.steps = odeint::integrate_times(stepper, rhs, state, times.begin(), times.end(),
-                                              opt.dt, obs);
+        detail::integrate_times_controlled(stepper, rhs, state, times, first_step, obs, at_boundary,
+                                           stats.steps);
         break;
       }
       case StepperKind::dopri5: {
         auto stepper = odeint::make_dense_output(opt.abs_tol, opt.rel_tol,
                                                  odeint::runge_kutta_dopri5<State>());
-        stats.steps = odeint::integrate_times(stepper, rhs, state, times.begin(), times.end(),
-                                              opt.dt, obs);
+        detail::integrate_times_dense(stepper, rhs, state, times, first_step, obs, at_boundary,
+                                      stats.steps);
         break;
       }
       case StepperKind::symplectic: {
@@ -203,12 +305,11 @@ IntegrationStats integrate_observed(const System& system, State& state,
             const std::vector<double>& pp = qp.second;
             std::copy(qq.begin(), qq.end(), state.begin());
             std::copy(pp.begin(), pp.end(), state.begin() + half);
-            obs(state, t);
+            obs_at_boundary(state, t);
           };
           odeint::symplectic_rkn_sb3a_mclachlan<std::vector<double>> stepper;
-          stats.steps = odeint::integrate_times(stepper, acc,
-                                                std::make_pair(std::ref(q), std::ref(p)),
-                                                times.begin(), times.end(), opt.dt, pair_obs);
+          auto qp = std::make_pair(std::ref(q), std::ref(p));
+          detail::integrate_times_fixed(stepper, acc, qp, times, opt.dt, pair_obs, stats.steps);
         } else {
           throw InvalidParameter("stepper", "symplectic needs a system with acceleration()");
         }
@@ -220,13 +321,13 @@ IntegrationStats integrate_observed(const System& system, State& state,
         if constexpr (requires { system.acceleration(nullptr, nullptr, 0.0); }) {
           if (opt.stepper == StepperKind::srkn11b)
             detail::integrate_rkn_observed<blanes_moan_srkn11b<detail::RknCoor, contiguous_algebra>>(
-                system, state, times, obs, opt.dt, stats.steps, stats.rhs_evaluations);
+                system, state, times, obs_at_boundary, opt.dt, stats.steps, stats.rhs_evaluations);
           else if (opt.stepper == StepperKind::srkn14a)
             detail::integrate_rkn_observed<blanes_moan_srkn14a<detail::RknCoor, contiguous_algebra>>(
-                system, state, times, obs, opt.dt, stats.steps, stats.rhs_evaluations);
+                system, state, times, obs_at_boundary, opt.dt, stats.steps, stats.rhs_evaluations);
           else
             detail::integrate_rkn_observed<mclachlan_ss17<detail::RknCoor, contiguous_algebra>>(
-                system, state, times, obs, opt.dt, stats.steps, stats.rhs_evaluations);
+                system, state, times, obs_at_boundary, opt.dt, stats.steps, stats.rhs_evaluations);
         } else {
           throw InvalidParameter("stepper", "srkn11b/srkn14a/ss17 need a system with acceleration()");
         }

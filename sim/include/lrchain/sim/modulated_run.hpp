@@ -42,7 +42,7 @@ State modulated_initial_state(const ModulatedRunConfig& c, double& omega, double
 struct ModulatedRunSummary {
   double theta0 = 0, omega = 0;     // carrier and omega_-(theta0)
   double group_velocity = 0;        // omega_-'(theta0)
-  double t_start = 0;               // 0 or the restart time
+  double t_start = 0;               // 0, or the time of the checkpoint restarted from
   double initial_contrast = 0;
   double instability_time = -1;     // first t with contrast > threshold (-1: none)
   double dark_speed = 0;            // |slope| of the unwrapped min-e position over the fit window
@@ -50,6 +50,7 @@ struct ModulatedRunSummary {
   double energy0 = 0, max_energy_drift = 0;
   double t_end = 0;
   long checkpoints_written = 0;
+  double last_checkpoint_time = -1;  // of the last checkpoint written (< 0: none)
   bool interrupted = false, blew_up = false;
   IntegrationStats stats;
   double solve_seconds = 0;

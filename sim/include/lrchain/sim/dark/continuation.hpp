@@ -2,6 +2,7 @@
 // Pseudo-arclength continuation of a dark-breather family in omega_b (Sec. 5.3, Figs. 18, 21, 23),
 // through turning points, with Floquet multipliers at every point (Sec. 5.4).
 #include <Eigen/Dense>
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -23,6 +24,7 @@ struct ContinuationOptions {
   bool floquet = true;
   int max_corrector = 12;
   double tolerance = 1e-11;  // max|F| at convergence
+  const std::atomic<bool>* stop = nullptr;  // set (SIGINT/SIGTERM): end after the current point
 };
 
 struct BranchPoint {
@@ -39,6 +41,7 @@ struct BranchResult {
   std::vector<BranchPoint> points;
   std::vector<double> turning_points;  // omega_b where d omega_b/ds changes sign
   std::string stop_reason;
+  bool interrupted = false;  // ended by ContinuationOptions::stop
 };
 
 // Continues from a converged solution q0 at omega0. on_point is called after each point.

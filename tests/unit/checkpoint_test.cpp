@@ -1,0 +1,400 @@
+// Checkpoint format 2 (lrchain/sim/checkpoint.hpp): round trip, every kind of damaged file refused
+// with an InputError naming it, a changed parameter refused naming it, and restarts equal to the
+// uninterrupted run bit for bit (expected value: the uninterrupted run itself, compared exactly).
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <atomic>
+#include <boost/crc.hpp>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/checkpoint.hpp"
+#include "lrchain/sim/drive_run.hpp"
+#include "lrchain/sim/modulated_run.hpp"
+
+using namespace lrchain;
+using namespace lrchain::sim;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("lrchain-checkpoint-test-" + name + "-" +
+                                                  std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+std::string slurp(const fs::path& f) {
+  std::ifstream in(f, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void spit(const fs::path& f, const std::string& bytes) {
+  std::ofstream out(f, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+// Replaces the trailing CRC-32 so that a deliberately edited file passes the checksum and reaches
+// the later checks.
+std::string with_valid_crc(std::string bytes) {
+  boost::crc_32_type crc;
+  crc.process_bytes(bytes.data(), bytes.size() - 4);
+  const std::uint32_t v = crc.checksum();
+  std::memcpy(bytes.data() + bytes.size() - 4, &v, 4);
+  return bytes;
+}
+
+Checkpoint sample_checkpoint(double t, double first_state_value) {
+  TrajectoryIdentity id;
+  id.add("run", "test");
+  id.add("rho", 1.0 / 3.0);
+  id.add("N", 3L);
+  Checkpoint c;
+  c.identity = id.text();
+  c.t = t;
+  c.next_step = 0.0123456789;
+  c.steps = 17;
+  c.rhs_evaluations = 170;
+  c.accumulators = {{"max_Ex", 0.1 + 0.2}, {"first", 1.0}};
+  c.state = {first_state_value, -2.5, std::nextafter(1.0, 2.0), 1e-300};
+  return c;
+}
+
+RunRecord sample_record() {
+  RunRecord r;
+  r.series.names = {"t", "a"};
+  r.series.data = {0, 1.0 / 7, 1, 2.0 / 7};
+  SpaceTime f;
+  f.quantity = "energy_density";
+  f.first_label = -3;
+  f.sites = 2;
+  f.times = {0, 1};
+  f.values = {1.5f, 2.5f, 3.5f, 4.5f};
+  r.fields.push_back(f);
+  Snapshot s;
+  s.t = 1;
+  s.tag = "t1";
+  s.names = {"n", "x"};
+  s.data = {-1, 0.25, 0, 0.5};
+  r.snapshots.push_back(s);
+  return r;
+}
+
+// The state-count field follows magic (8), version (4), identity (8 + len), identity hash (8),
+// progress (8 + len).
+std::size_t state_count_offset(const std::string& bytes) {
+  std::uint64_t len = 0;
+  std::memcpy(&len, bytes.data() + 12, 8);
+  std::size_t pos = 12 + 8 + std::size_t(len) + 8;
+  std::memcpy(&len, bytes.data() + pos, 8);
+  return pos + 8 + std::size_t(len);
+}
+
+void check_refused(const fs::path& f, const std::string& what) {
+  try {
+    read_checkpoint(f);
+    FAIL("accepted a checkpoint with " << what);
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    CHECK_MESSAGE(m.find(f.string()) != std::string::npos, m);
+    CHECK_MESSAGE(m.find('\n') == std::string::npos, m);
+  }
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+// Everything two runs observed, compared bit for bit.
+void check_same_record(const RunRecord& a, const RunRecord& b) {
+  CHECK(a.series.names == b.series.names);
+  CHECK(a.series.rows() == b.series.rows());
+  CHECK(same_bits(a.series.data, b.series.data));
+  REQUIRE(a.fields.size() == b.fields.size());
+  for (std::size_t k = 0; k < a.fields.size(); ++k) {
+    CHECK(same_bits(a.fields[k].times, b.fields[k].times));
+    CHECK(same_bits(a.fields[k].values, b.fields[k].values));
+  }
+  REQUIRE(a.snapshots.size() == b.snapshots.size());
+  for (std::size_t k = 0; k < a.snapshots.size(); ++k) CHECK(same_bits(a.snapshots[k].data, b.snapshots[k].data));
+}
+
+BrightRunConfig small_bright(StepperKind stepper) {
+  BrightRunConfig c;
+  c.branch = Branch::optical;
+  c.theta = M_PI / 2;
+  c.N = 40;
+  c.periods = 4;
+  c.sample_every = 0.25;
+  c.spacetime_every = 0.5;
+  c.snapshot_periods = {0, 1.5, 4};
+  c.centre_window = 10;
+  c.integrator.stepper = stepper;
+  c.integrator.abs_tol = c.integrator.rel_tol = 1e-10;
+  c.integrator.dt = 0.05;
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("checkpoint: write then read gives back every value bit for bit") {
+  const fs::path dir = scratch_dir("roundtrip");
+  const Checkpoint c = sample_checkpoint(2.75, 0.1);
+  const RunRecord rec = sample_record();
+  write_checkpoint(dir / "c.bin", c, rec);
+  const Checkpoint r = read_checkpoint(dir / "c.bin");
+  CHECK(r.identity == c.identity);
+  CHECK(r.identity.rfind("lrchain_version = ", 0) == 0);
+  CHECK(r.identity.find("rho = 0.3333333333333333\n") != std::string::npos);
+  CHECK(r.t == c.t);
+  CHECK(r.next_step == c.next_step);
+  CHECK(r.steps == 17);
+  CHECK(r.rhs_evaluations == 170);
+  CHECK(r.accumulator(dir / "c.bin", "max_Ex") == 0.1 + 0.2);
+  CHECK_THROWS_AS(r.accumulator(dir / "c.bin", "nope"), InputError);
+  CHECK(same_bits(r.state, c.state));
+  check_same_record(r.record, rec);
+  // no temporary file is left, and the temporary name is this process's own
+  for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename() == "c.bin");
+  CHECK(temporary_name(dir / "c.bin").filename().string() ==
+        ".c.bin.tmp." + std::to_string(::getpid()));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("checkpoint: truncated, corrupted, wrong-version, huge-size, NaN and negative-time files are refused") {
+  const fs::path dir = scratch_dir("damaged");
+  write_checkpoint(dir / "good.bin", sample_checkpoint(1.0, 0.5), sample_record());
+  const std::string good = slurp(dir / "good.bin");
+  const fs::path f = dir / "bad.bin";
+
+  for (std::size_t keep : {std::size_t(0), std::size_t(5), std::size_t(12), std::size_t(40), good.size() / 2,
+                           good.size() - 1}) {
+    spit(f, good.substr(0, keep));
+    check_refused(f, "a truncation to " + std::to_string(keep) + " bytes");
+  }
+  for (std::size_t at : {std::size_t(3), std::size_t(30), good.size() / 2, good.size() - 2}) {
+    std::string b = good;
+    b[at] = char(b[at] ^ 0x10);
+    spit(f, b);
+    check_refused(f, "a flipped bit at byte " + std::to_string(at));
+  }
+  {
+    std::string b = good;
+    const std::uint32_t v3 = 3;
+    std::memcpy(b.data() + 8, &v3, 4);
+    spit(f, with_valid_crc(b));
+    check_refused(f, "format version 3");
+  }
+  {  // a state size of 2^60 doubles with a valid CRC: refused before any allocation
+    std::string b = good;
+    const std::uint64_t huge = 1ull << 60;
+    std::memcpy(b.data() + state_count_offset(b), &huge, 8);
+    spit(f, with_valid_crc(b));
+    check_refused(f, "a 2^60-entry state");
+  }
+  write_checkpoint(f, sample_checkpoint(1.0, std::numeric_limits<double>::quiet_NaN()), sample_record());
+  check_refused(f, "a NaN in the state");
+  write_checkpoint(f, sample_checkpoint(-1.0, 0.5), sample_record());
+  check_refused(f, "a negative time");
+  write_checkpoint(f, sample_checkpoint(std::numeric_limits<double>::infinity(), 0.5), sample_record());
+  check_refused(f, "an infinite time");
+  check_refused(dir / "missing.bin", "no file at all");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("checkpoint: a restart with a changed parameter or stepper is refused, naming the item") {
+  const fs::path dir = scratch_dir("identity");
+  BrightRunConfig c = small_bright(StepperKind::rkf78);
+  c.periods = 1;
+  c.checkpoint_file = (dir / "a.bin").string();
+  c.checkpoint_at_end = true;
+  run_bright(c);
+  REQUIRE(fs::exists(dir / "a.bin"));
+  c.checkpoint_file.clear();
+  c.restart_file = (dir / "a.bin").string();
+  c.periods = 2;
+
+  auto expect = [&](BrightRunConfig changed, const std::string& text) {
+    try {
+      run_bright(changed);
+      FAIL("restart accepted with " << text);
+    } catch (const InvalidParameter& e) {
+      CHECK_MESSAGE(std::string(e.what()).find(text) != std::string::npos, e.what());
+      CHECK(std::string(e.what()).find((dir / "a.bin").string()) != std::string::npos);
+    }
+  };
+  BrightRunConfig x = c;
+  x.params.rho = 0.5;
+  expect(x, "was written with rho = 0.3333333333333333, this run has rho = 0.5");
+  x = c;
+  x.params.kappa = 2;
+  expect(x, "kappa = 1, this run has kappa = 2");
+  x = c;
+  x.integrator.stepper = StepperKind::dopri5;
+  expect(x, "stepper = rkf78, this run has stepper = dopri5");
+  x = c;
+  x.integrator.rel_tol = 1e-9;
+  expect(x, "rel_tol");
+  x = c;
+  x.N = 41;
+  expect(x, "N = 40, this run has N = 41");
+  x = c;
+  x.theta = 1.5;
+  expect(x, "theta");
+  x = c;
+  x.periods = 1;  // the checkpoint is at the end of this shorter run already
+  expect(x, "nothing left to integrate");
+  // a drive run cannot continue a bright run's checkpoint
+  DriveRunConfig d;
+  d.beads = 20;
+  d.t_end = 5;
+  d.restart_file = (dir / "a.bin").string();
+  CHECK_THROWS_AS(run_drive(d), InvalidParameter);
+  // the unchanged run continues
+  CHECK(run_bright(c).summary.t_start > 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("restart equals the uninterrupted run to the last bit: bright, to t1 then to t2") {
+  // rkf78 and the fixed-step steppers land on every observation time; a checkpoint there stores
+  // the step size carried to the next interval, so the continued step sequence is the same.
+  for (StepperKind stepper : {StepperKind::rkf78, StepperKind::symplectic, StepperKind::srkn11b}) {
+    CAPTURE(to_string(stepper));
+    const fs::path dir = scratch_dir("bright-t1t2");
+    BrightRunConfig full = small_bright(stepper);
+    full.checkpoint_file = (dir / "full.bin").string();
+    full.checkpoint_at_end = true;
+    const auto uninterrupted = run_bright(full);
+    REQUIRE(!uninterrupted.summary.blew_up);
+
+    BrightRunConfig first = small_bright(stepper);
+    first.periods = 2;
+    first.checkpoint_file = (dir / "t1.bin").string();
+    first.checkpoint_at_end = true;
+    run_bright(first);
+    BrightRunConfig second = small_bright(stepper);
+    second.restart_file = (dir / "t1.bin").string();
+    second.checkpoint_file = (dir / "t2.bin").string();
+    second.checkpoint_at_end = true;
+    const auto restarted = run_bright(second);
+
+    check_same_record(restarted.record, uninterrupted.record);
+    CHECK(same_bits(read_checkpoint(dir / "t2.bin").state, read_checkpoint(dir / "full.bin").state));
+    const auto &a = restarted.summary, &b = uninterrupted.summary;
+    CHECK(a.max_Ex == b.max_Ex);
+    CHECK(a.max_Ey == b.max_Ey);
+    CHECK(a.final_Ex == b.final_Ex);
+    CHECK(a.energy0 == b.energy0);
+    CHECK(a.max_energy_drift == b.max_energy_drift);
+    CHECK(a.centre_speed == b.centre_speed);
+    CHECK(a.t_end == b.t_end);
+    CHECK(a.stats.steps == b.stats.steps);
+    CHECK(a.t_start > 0);
+    fs::remove_all(dir);
+  }
+}
+
+TEST_CASE("restart after an interrupt equals the uninterrupted run to the last bit, every stepper") {
+  // The stop flag is raised from the progress callback (as the CLI's signal handler would): the run
+  // stops at the next step boundary and writes its checkpoint there. For dopri5 (dense output) the
+  // boundary is the end of the stepper's own step, after the observations inside it.
+  for (StepperKind stepper : {StepperKind::rkf78, StepperKind::dopri5, StepperKind::symplectic,
+                              StepperKind::srkn14a, StepperKind::ss17}) {
+    CAPTURE(to_string(stepper));
+    const fs::path dir = scratch_dir("interrupt");
+    const auto uninterrupted = run_bright(small_bright(stepper));
+
+    std::atomic<bool> stop{false};
+    RunControl control;
+    control.stop = &stop;
+    control.progress = [&stop](double f) {
+      if (f > 0.4) stop.store(true);
+    };
+    BrightRunConfig c = small_bright(stepper);
+    c.checkpoint_file = (dir / "i.bin").string();
+    const auto interrupted = run_bright(c, control);
+    REQUIRE(interrupted.summary.interrupted);
+    CHECK(interrupted.summary.t_end < uninterrupted.summary.t_end);
+    CHECK(interrupted.summary.checkpoints_written == 1);
+    // the interrupted record is the first part of the full one
+    const auto& part = interrupted.record.series.data;
+    REQUIRE(part.size() < uninterrupted.record.series.data.size());
+    CHECK(std::memcmp(part.data(), uninterrupted.record.series.data.data(), part.size() * sizeof(double)) == 0);
+
+    c.restart_file = c.checkpoint_file;
+    c.checkpoint_file.clear();
+    const auto restarted = run_bright(c);
+    CHECK(!restarted.summary.interrupted);
+    check_same_record(restarted.record, uninterrupted.record);
+    CHECK(restarted.summary.max_Ex == uninterrupted.summary.max_Ex);
+    CHECK(restarted.summary.centre_speed == uninterrupted.summary.centre_speed);
+    CHECK(restarted.summary.stats.steps == uninterrupted.summary.stats.steps);
+    fs::remove_all(dir);
+  }
+}
+
+TEST_CASE("restart equals the uninterrupted run to the last bit: drive (rkf78) and modulated (symplectic)") {
+  const fs::path dir = scratch_dir("drive-modulated");
+  {
+    DriveRunConfig c;
+    c.beads = 30;
+    c.t_end = 30;
+    c.t_m = 20;
+    c.ramp_rate = 0.3;
+    c.snapshot_times = {15, 30};
+    c.front_fit_start = 2;
+    c.front_fit_end = 25;
+    const auto full = run_drive(c);
+    c.t_end = 12;
+    c.checkpoint_file = (dir / "d.bin").string();
+    c.checkpoint_at_end = true;
+    run_drive(c);
+    c.t_end = 30;
+    c.restart_file = c.checkpoint_file;
+    c.checkpoint_file.clear();
+    const auto restarted = run_drive(c);
+    check_same_record(restarted.record, full.record);
+    CHECK(restarted.summary.front_speed == full.summary.front_speed);
+    CHECK(restarted.summary.max_participation == full.summary.max_participation);
+    CHECK(restarted.summary.final_peaks == full.summary.final_peaks);
+  }
+  {
+    ModulatedRunConfig c;
+    c.N = 32;
+    c.theta_waves = 20;
+    c.t_end = 60;
+    c.sample_every = 2;
+    c.snapshot_times = {0, 30};
+    c.speed_fit_start = 10;
+    c.speed_fit_end = 50;
+    c.checkpoint_every = 0;
+    const auto full = run_modulated(c);
+    c.checkpoint_every = 10;
+    c.t_end = 20;
+    c.checkpoint_file = (dir / "m.bin").string();
+    const auto first = run_modulated(c);
+    CHECK(first.summary.checkpoints_written == 2);  // t = 10 and the end, t = 20
+    c.t_end = 60;
+    c.restart_file = c.checkpoint_file;
+    c.checkpoint_file.clear();
+    const auto restarted = run_modulated(c);
+    check_same_record(restarted.record, full.record);
+    CHECK(restarted.summary.dark_speed == full.summary.dark_speed);
+    CHECK(restarted.summary.max_energy_drift == full.summary.max_energy_drift);
+    CHECK(restarted.summary.t_start == 20);
+  }
+  fs::remove_all(dir);
+}

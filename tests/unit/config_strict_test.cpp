@@ -1,0 +1,327 @@
+// Strict configs (lrchain/config/strict_toml.hpp and the simulate schemas): every problem is one
+// located message with the key, line and suggestion; the shipped examples still load to the values
+// written in them; the CLI exits 2 and writes nothing; docs/configs.md matches the schema.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "lrchain/config/strict_toml.hpp"
+#include "lrchain/process.hpp"
+#include "lrchain/sim/experiment_config.hpp"
+#include "lrchain/sim/more_experiment_config.hpp"
+
+namespace fs = std::filesystem;
+using lrchain::config::ConfigError;
+using lrchain::config::Document;
+
+namespace {
+
+const std::string bright_head =
+    "experiment = \"bright\"\n"  // 1
+    "name = \"t\"\n"             // 2
+    "\n"                         // 3
+    "[model]\n"                  // 4
+    "rho = \"1/3\"\n";           // 5
+
+const std::string drive_head =
+    "experiment = \"drive\"\n"  // 1
+    "\n"                        // 2
+    "[drive]\n";                // 3
+
+const std::string modulated_head =
+    "experiment = \"modulated\"\n"  // 1
+    "\n"                            // 2
+    "[modulated]\n";                // 3
+
+// Loads `text` as the file `source` with the reader of its kind; returns the ConfigError message
+// ("" when it loads).
+std::string load_error(const std::string& text, const std::string& source, ConfigError* error = nullptr) {
+  try {
+    const Document doc = Document::from_text(text, source);
+    const std::string kind = lrchain::sim::experiment_kind(doc);
+    if (kind == "drive") lrchain::sim::load_drive_config(doc);
+    else if (kind == "modulated") lrchain::sim::load_modulated_config(doc);
+    else lrchain::sim::load_experiment_config(doc);
+  } catch (const ConfigError& e) {
+    if (error) *error = e;
+    return e.what();
+  }
+  return "";
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path example(const std::string& name) { return fs::path(LRCHAIN_SOURCE_DIR) / "examples" / name; }
+
+}  // namespace
+
+TEST_CASE("config: an unknown key names file, line, table and the closest valid key") {
+  ConfigError e("", "", 0, "", "");
+  CHECK(load_error(bright_head + "kapa = 5\n[bright]\ntheta = \"pi/2\"\n", "exp1.toml", &e) ==
+        "unknown key 'kapa' in [model] at exp1.toml:6; did you mean 'kappa'?");
+  CHECK(e.line() == 6);
+  CHECK(e.table() == "model");
+  CHECK(e.key() == "kapa");
+  // steper = "dopri5" is an error, not a silent rkf78.
+  CHECK(load_error(bright_head + "[bright]\ntheta = 1\n[integrator]\nsteper = \"dopri5\"\n", "exp1.toml") ==
+        "unknown key 'steper' in [integrator] at exp1.toml:9; did you mean 'stepper'?");
+  // Top level, and a key nowhere near a valid one: the allowed keys are listed.
+  CHECK(load_error("experiment = \"bright\"\nnmae = \"x\"\n[bright]\ntheta = 1\n", "a.toml") ==
+        "unknown key 'nmae' in the top-level table at a.toml:2; did you mean 'name'?");
+  CHECK(load_error(bright_head + "zzz = 1\n[bright]\ntheta = 1\n", "a.toml") ==
+        "unknown key 'zzz' in [model] at a.toml:6; allowed here: 'rho', 'kappa', 'delta0', 'alpha'");
+}
+
+TEST_CASE("config: an unknown table, or another experiment's table, is an error") {
+  CHECK(load_error("experiment = \"bright\"\n[modle]\nrho = 1\n[bright]\ntheta = 1\n", "a.toml") ==
+        "unknown table [modle] at a.toml:2; did you mean [model]?");
+  CHECK(load_error("experiment = \"bright\"\n[bright]\ntheta = 1\n[drive]\nbeads = 10\n", "a.toml") ==
+        "unknown table [drive] at a.toml:4; allowed here: 'experiment', 'name', [model], [bright], [integrator], "
+        "[output]");
+}
+
+TEST_CASE("config: wrong types name the key, the line and the expected type") {
+  CHECK(load_error(bright_head + "[bright]\ntheta = 1\n[integrator]\nstepper = 5\n", "exp1.toml") ==
+        "wrong type for 'stepper' in [integrator] at exp1.toml:9: expected one of \"rkf78\", \"dopri5\", "
+        "\"symplectic\", \"srkn11b\", \"srkn14a\", \"ss17\"; got the integer 5");
+  CHECK(load_error(bright_head + "[bright]\ntheta = 1\nansatz_ends = \"yes\"\n", "exp4c.toml") ==
+        "wrong type for 'ansatz_ends' in [bright] at exp4c.toml:8: expected true or false; got the string \"yes\"");
+  CHECK(load_error(bright_head + "[bright]\ntheta = true\n", "a.toml") ==
+        "wrong type for 'theta' in [bright] at a.toml:7: expected a finite number (a TOML number, or a number "
+        "string such as \"1/3\" or \"3*pi/5\"); got the boolean true");
+  CHECK(load_error(bright_head + "[bright]\ntheta = 1\nsnapshot_periods = 3\n", "a.toml") ==
+        "wrong type for 'snapshot_periods' in [bright] at a.toml:8: expected an array of finite numbers >= 0 (a "
+        "TOML number, or a number string such as \"1/3\" or \"3*pi/5\"); got the integer 3");
+  CHECK(load_error("experiment = \"bright\"\nmodel = 3\n[bright]\ntheta = 1\n", "a.toml") ==
+        "wrong type for 'model' in the top-level table at a.toml:2: expected a table [model]; got the integer 3");
+}
+
+TEST_CASE("config: values out of range, NaN and inf name the key and the allowed range") {
+  CHECK(load_error(drive_head + "amplitude = inf\n", "exp6.toml") ==
+        "invalid value for 'amplitude' in [drive] at exp6.toml:4: expected a finite number > 0; got inf");
+  CHECK(load_error(drive_head + "t_m = nan\n", "exp6.toml") ==
+        "invalid value for 't_m' in [drive] at exp6.toml:4: expected a finite number >= 0; got nan");
+  CHECK(load_error(drive_head + "t_end = \"1e400\"\n", "exp6.toml") ==
+        "invalid value for 't_end' in [drive] at exp6.toml:4: expected a finite number > 0; got \"1e400\"");
+  CHECK(load_error(modulated_head + "epsilon = -inf\n", "exp7.toml") ==
+        "invalid value for 'epsilon' in [modulated] at exp7.toml:4: expected a finite number > 0; got -inf");
+  CHECK(load_error(modulated_head + "b = 1\n", "exp7.toml") ==
+        "invalid value for 'b' in [modulated] at exp7.toml:4: expected a finite number in [0, 1); got 1");
+  CHECK(load_error(drive_head + "snapshot_times = [1, -2]\n", "exp6.toml") ==
+        "invalid value for 'snapshot_times' in [drive] at exp6.toml:4: element 2: expected an array of finite "
+        "numbers >= 0; got -2");
+  CHECK(load_error(bright_head + "[bright]\ntheta = \"pi/\"\n", "a.toml") ==
+        "invalid value for 'theta' in [bright] at a.toml:7: expected a finite number; got \"pi/\"");
+  // The stepper of a driven (non-autonomous) chain: adaptive ones only; a near miss is named.
+  CHECK(load_error(drive_head + "[integrator]\nstepper = \"srkn11b\"\n", "exp6.toml") ==
+        "invalid value for 'stepper' in [integrator] at exp6.toml:5: expected one of \"rkf78\", \"dopri5\"; got "
+        "\"srkn11b\"");
+  CHECK(load_error(bright_head + "[bright]\ntheta = 1\n[integrator]\nstepper = \"dopri\"\n", "a.toml") ==
+        "invalid value for 'stepper' in [integrator] at a.toml:9: expected one of \"rkf78\", \"dopri5\", "
+        "\"symplectic\", \"srkn11b\", \"srkn14a\", \"ss17\"; got \"dopri\"; did you mean \"dopri5\"?");
+}
+
+TEST_CASE("config: integers go through checked_integer (1e3 is 1000; fractions, huge values refused)") {
+  CHECK(load_error(bright_head + "[bright]\ntheta = 1\nN = 1.5\n", "a.toml") ==
+        "invalid value for 'N' in [bright] at a.toml:8: expected an integer in [2, 50000000]; got 1.5");
+  CHECK(load_error(bright_head + "[bright]\ntheta = 1\nN = 1e300\n", "a.toml") ==
+        "invalid value for 'N' in [bright] at a.toml:8: expected an integer in [2, 50000000]; got 1e+300");
+  CHECK(load_error(bright_head + "[bright]\ntheta = 1\nN = 9223372036854775807\n", "a.toml") ==
+        "invalid value for 'N' in [bright] at a.toml:8: expected an integer in [2, 50000000]; got "
+        "9223372036854775807");
+  for (const char* thousand : {"1e3", "1000", "\"1e3\"", "1000.0"}) {
+    const auto c = lrchain::sim::load_experiment_config(
+        Document::from_text(bright_head + "[bright]\ntheta = 1\nN = " + thousand + "\n", "a.toml"));
+    CHECK(c.bright.N == 1000);
+  }
+}
+
+TEST_CASE("config: missing keys and kinds") {
+  CHECK(load_error(bright_head + "[bright]\nN = 10\n", "a.toml") ==
+        "missing key 'theta' in [bright] at a.toml:6: expected a finite number");
+  CHECK(load_error(bright_head, "a.toml") == "missing table [bright] in a.toml");
+  CHECK(load_error("name = \"x\"\n", "a.toml") ==
+        "missing key 'experiment' at the top level of a.toml: expected one of \"bright\", \"drive\", \"modulated\"");
+  CHECK(load_error("experiment = \"brigth\"\n", "a.toml") ==
+        "invalid value for 'experiment' in the top-level table at a.toml:1: expected one of \"bright\", \"drive\", "
+        "\"modulated\"; got \"brigth\"; did you mean \"bright\"?");
+  // A drive file given to the bright reader names the kind instead of failing on a key.
+  CHECK_THROWS_WITH_AS(lrchain::sim::load_experiment_config(Document::from_text(drive_head, "d.toml")),
+                       "config file 'd.toml' is a \"drive\" experiment; this reader takes \"bright\" only", ConfigError);
+}
+
+TEST_CASE("config: every message is one line, whatever the key or value holds") {
+  const std::string message = load_error(bright_head + "\"ka\\npa\" = 1\n[bright]\ntheta = \"a\\u0001b\"\n", "a.toml");
+  CHECK(message == "unknown key 'ka\\x0apa' in [model] at a.toml:6; did you mean 'kappa'?");
+  const std::string value = load_error(bright_head + "[bright]\ntheta = \"a\\nb\"\n", "a.toml");
+  CHECK(value == "invalid value for 'theta' in [bright] at a.toml:7: expected a finite number; got \"a\\x0ab\"");
+}
+
+TEST_CASE("config: missing, directory, empty, binary, malformed files are one located ConfigError") {
+  const fs::path dir = fs::temp_directory_path() / "lrchain-config-strict-test";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "sub.toml");
+  const auto write = [&](const std::string& name, const std::string& bytes) {
+    std::ofstream(dir / name, std::ios::binary) << bytes;
+    return (dir / name).string();
+  };
+  const std::string missing = (dir / "none.toml").string(), sub = (dir / "sub.toml").string();
+  const std::string empty = write("empty.toml", ""), blank = write("blank.toml", " \n\n");
+  const std::string binary = write("binary.toml", std::string("experiment = 1\n\0\x01\x02", 18));
+  const std::string bad = write("bad.toml", "experiment = \"bright\"\n[model\nrho = 1\n");
+  CHECK_THROWS_WITH_AS(Document::from_file(missing), ("config file '" + missing + "' does not exist").c_str(), ConfigError);
+  CHECK_THROWS_WITH_AS(Document::from_file(sub), ("config file '" + sub + "' is a directory, not a TOML file").c_str(),
+                       ConfigError);
+  CHECK_THROWS_WITH_AS(Document::from_file(empty), ("config file '" + empty + "' is empty").c_str(), ConfigError);
+  CHECK_THROWS_WITH_AS(Document::from_file(blank), ("config file '" + blank + "' is empty").c_str(), ConfigError);
+  CHECK_THROWS_WITH_AS(Document::from_file(binary),
+                       ("config file '" + binary + "' is not a text file (NUL byte at line 2)").c_str(), ConfigError);
+  try {
+    Document::from_file(bad);
+    FAIL("malformed TOML accepted");
+  } catch (const ConfigError& e) {
+    const std::string m = e.what();
+    CHECK(m.rfind("malformed TOML in " + bad + ":2: ", 0) == 0);
+    CHECK(m.find('\n') == std::string::npos);
+    CHECK(e.line() == 2);
+  }
+  // The same through the readers used by `simulate --config`.
+  CHECK_THROWS_AS(lrchain::sim::experiment_kind(fs::path(empty)), ConfigError);
+  CHECK_THROWS_AS(lrchain::sim::load_drive_config(fs::path(sub)), ConfigError);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("config: the shipped examples load to the values written in them") {
+  using lrchain::sim::StepperKind;
+  const double pi = std::numbers::pi;
+  // exp1_optical_pi2.toml: rho = "1/3", delta0 = "4/9", theta = "pi/2", N = 500, srkn11b, dt = 0.37.
+  const auto e1 = lrchain::sim::load_experiment_config(example("exp1_optical_pi2.toml"));
+  CHECK(e1.experiment == "bright");
+  CHECK(e1.name == "exp1-optical-theta-pi-2");
+  CHECK(e1.bright.params.rho == doctest::Approx(1.0 / 3.0).epsilon(1e-15));
+  CHECK(e1.bright.params.delta0 == doctest::Approx(4.0 / 9.0).epsilon(1e-15));
+  CHECK(e1.bright.params.alpha == 1.5);
+  CHECK(e1.bright.theta == doctest::Approx(pi / 2).epsilon(1e-15));
+  CHECK(e1.bright.N == 500);
+  CHECK(e1.bright.periods == 200);
+  CHECK(e1.bright.snapshot_periods == std::vector<double>{0.0, 50.125, 200.0});
+  CHECK(e1.bright.integrator.stepper == StepperKind::srkn11b);
+  CHECK(e1.bright.integrator.dt == 0.37);
+  CHECK(e1.out_dir == "out/exp1");
+  // exp2: error_window_end = 150, rkf78 at 1e-12; exp3: theta = "3*pi/5", N = 1000.
+  const auto e2 = lrchain::sim::load_experiment_config(example("exp2_optical_pi8.toml"));
+  CHECK(e2.bright.error_window_end == 150);
+  CHECK(e2.bright.integrator.stepper == StepperKind::rkf78);
+  CHECK(e2.bright.integrator.abs_tol == 1e-12);
+  const auto e3 = lrchain::sim::load_experiment_config(example("exp3_optical_3pi5.toml"));
+  CHECK(e3.bright.theta == doctest::Approx(3 * pi / 5).epsilon(1e-15));
+  CHECK(e3.bright.N == 1000);
+  // exp4: acoustic, theta = 1.948, trailing_fit_start = 500; exp4c: ansatz_ends = true.
+  const auto e4 = lrchain::sim::load_experiment_config(example("exp4_acoustic_1948.toml"));
+  CHECK(e4.bright.branch == lrchain::Branch::acoustic);
+  CHECK(e4.bright.theta == 1.948);
+  CHECK(e4.bright.trailing.fit_start == 500);
+  CHECK(lrchain::sim::load_experiment_config(example("exp4c_acoustic_187_emitting.toml")).bright.ansatz_ends);
+  CHECK(lrchain::sim::load_experiment_config(example("exp5_optical_rho10_123.toml")).bright.params.rho == 10);
+  // exp6: drive, beads = 2000, amplitude = 0.06, t_m = 700, snapshot_times = [779.9, 2400.0], 1e-10.
+  const auto e6 = lrchain::sim::load_drive_config(example("exp6_drive_rho10.toml"));
+  CHECK(e6.name == "exp6-drive-rho10");
+  CHECK(e6.run.beads == 2000);
+  CHECK(e6.run.amplitude == 0.06);
+  CHECK(e6.run.t_m == 700);
+  CHECK(e6.run.snapshot_times == std::vector<double>{779.9, 2400.0});
+  CHECK(e6.run.integrator.abs_tol == 1e-10);
+  CHECK(e6.out_dir == "out/exp6");
+  // exp7: modulated, N = 401, delta0 = 0.27, epsilon = 0.03, checkpoint_every = 1000, symplectic.
+  const auto e7 = lrchain::sim::load_modulated_config(example("exp7_modulated_dark.toml"));
+  CHECK(e7.run.N == 401);
+  CHECK(e7.run.params.delta0 == 0.27);
+  CHECK(e7.run.epsilon == 0.03);
+  CHECK(e7.run.dark_window == 9);
+  CHECK(e7.run.checkpoint_every == 1000);
+  CHECK(e7.run.integrator.stepper == StepperKind::symplectic);
+  // Every shipped config passes its schema.
+  int loaded = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(LRCHAIN_SOURCE_DIR) / "examples")) {
+    if (entry.path().extension() != ".toml") continue;
+    INFO(entry.path().string());
+    CHECK(load_error(slurp(entry.path()), entry.path().filename().string()) == "");
+    ++loaded;
+  }
+  CHECK(loaded == 9);
+}
+
+TEST_CASE("config: closest_match finds typos only") {
+  using lrchain::config::closest_match;
+  const std::vector<std::string> keys{"rho", "kappa", "delta0", "alpha"};
+  CHECK(closest_match("kapa", keys) == "kappa");
+  CHECK(closest_match("KAPPA", keys) == "kappa");
+  CHECK(closest_match("detla0", keys) == "delta0");  // transposition
+  CHECK(closest_match("beta", keys) == "");
+  CHECK(closest_match("x", {"N"}) == "");
+  CHECK(closest_match("n", {"N"}) == "N");
+}
+
+TEST_CASE("config: simulate --config with a bad file exits 2 with one line and writes nothing") {
+  const fs::path dir = fs::temp_directory_path() / "lrchain-config-cli-test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path out = dir / "out";
+  struct Case {
+    std::string file, text, message;
+  };
+  const std::vector<Case> cases{
+      {"kapa.toml", bright_head + "kapa = 5\n[bright]\ntheta = 1\n[output]\ndir = \"" + out.string() + "\"\n",
+       "unknown key 'kapa' in [model] at " + (dir / "kapa.toml").string() + ":6; did you mean 'kappa'?"},
+      {"amp.toml", drive_head + "amplitude = inf\n[output]\ndir = \"" + out.string() + "\"\n",
+       "invalid value for 'amplitude' in [drive] at " + (dir / "amp.toml").string() +
+           ":4: expected a finite number > 0; got inf"},
+      {"eps.toml", modulated_head + "epsilon = nan\n[output]\ndir = \"" + out.string() + "\"\n",
+       "invalid value for 'epsilon' in [modulated] at " + (dir / "eps.toml").string() +
+           ":4: expected a finite number > 0; got nan"},
+      {"empty.toml", "", "config file '" + (dir / "empty.toml").string() + "' is empty"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.file);
+    std::ofstream(dir / c.file) << c.text;
+    lrchain::ProcessOptions o;
+    o.capture_stdout = o.capture_stderr = true;
+    o.working_directory = dir;
+    const auto r = lrchain::run_program({LRCHAIN_CLI, "simulate", "--config", (dir / c.file).string()}, o);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.empty());
+    CHECK(r.error_output.find(c.message) != std::string::npos);
+    CHECK(std::count(r.error_output.begin(), r.error_output.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(out));
+  }
+  for (const auto& missing : {(dir / "none.toml").string(), dir.string()}) {
+    lrchain::ProcessOptions o;
+    o.capture_stderr = true;
+    const auto r = lrchain::run_program({LRCHAIN_CLI, "simulate", "--config", missing}, o);
+    CHECK(r.exit_code == 2);
+    CHECK(r.error_output.find("config file '" + missing + "'") != std::string::npos);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("config: docs/configs.md lists every key of the schema (generated part up to date)") {
+  const std::string doc = slurp(fs::path(LRCHAIN_SOURCE_DIR) / "docs" / "configs.md");
+  const std::string begin = "<!-- generated from the schema: begin -->\n", end = "<!-- generated from the schema: end -->";
+  const auto b = doc.find(begin), e = doc.find(end);
+  REQUIRE(b != std::string::npos);
+  REQUIRE(e != std::string::npos);
+  const std::string generated = lrchain::sim::experiment_configs_markdown();
+  const bool same = doc.substr(b + begin.size(), e - b - begin.size()) == generated;
+  if (!same) std::ofstream("configs.generated.md") << generated;  // in the test's working directory
+  CHECK_MESSAGE(same, "docs/configs.md is out of date with the schema: the expected text is in "
+                          "configs.generated.md in the test's working directory");
+}

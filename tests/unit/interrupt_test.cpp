@@ -1,0 +1,205 @@
+// SIGTERM/SIGINT during `lrchain simulate bright`: exit 143/130 with the restart command on stderr,
+// every file in --out complete, and the restart (exit 0) gives the uninterrupted run's files byte
+// for byte (expected: the uninterrupted run itself). Also: a restart with changed physics or from a
+// damaged checkpoint is exit 2 naming the cause, and writes nothing.
+#include <doctest/doctest.h>
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "lrchain/process.hpp"
+#include "lrchain/sim/checkpoint.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& f) {
+  std::ifstream in(f, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::string> bright_args(const fs::path& out) {
+  return {LRCHAIN_CLI, "simulate", "bright", "--branch", "optical", "--theta", "pi/2", "--N", "200",
+          "--periods", "300", "--snapshots", "0", "150", "300", "--checkpoint-every", "5",
+          "--out", out.string(), "--json"};
+}
+
+// Starts the run, waits for its first periodic checkpoint (it is then running), sends `signal`.
+lrchain::ProcessResult interrupt_run(const fs::path& out, int signal_number) {
+  lrchain::ProcessOptions o;
+  o.capture_stdout = o.capture_stderr = true;
+  lrchain::ChildProcess child(bright_args(out), o);
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(out / "checkpoint.bin") && std::chrono::steady_clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  child.send_signal(signal_number);
+  return child.wait();
+}
+
+// Every file in `dir` is complete: no temporary left, JSON parses, CSV rows have the header's
+// column count, the space-time matrix has whole rows, the checkpoint verifies.
+void check_files_complete(const fs::path& dir) {
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    CAPTURE(name);
+    ++files;
+    CHECK(name[0] != '.');  // temporary names start with a dot
+    const std::string text = slurp(e.path());
+    if (e.path().extension() == ".json") {
+      const auto j = nlohmann::json::parse(text);
+      CHECK(j["interrupted"].get<bool>());
+    } else if (e.path().extension() == ".csv") {
+      REQUIRE(!text.empty());
+      CHECK(text.back() == '\n');
+      std::size_t pos = 0, columns = 0, rows = 0;
+      while (pos < text.size()) {
+        const std::size_t end = text.find('\n', pos);
+        const std::string line = text.substr(pos, end - pos);
+        const std::size_t n = std::size_t(std::count(line.begin(), line.end(), ',')) + 1;
+        if (rows == 0) columns = n;
+        CHECK(n == columns);
+        ++rows;
+        pos = end + 1;
+      }
+      CHECK(rows > 1);
+    } else if (name == "energy_density_spacetime.bin") {
+      float sites = 0;
+      std::memcpy(&sites, text.data(), sizeof sites);
+      CHECK(sites == 402);  // beads -N-1..N
+      CHECK(text.size() % ((std::size_t(sites) + 1) * sizeof(float)) == 0);
+    } else if (name == "checkpoint.bin") {
+      CHECK_NOTHROW(lrchain::sim::read_checkpoint(e.path()));
+    }
+  }
+  CHECK(files >= 5);
+}
+
+std::map<std::string, std::string> listing(const fs::path& dir) {
+  std::map<std::string, std::string> m;
+  for (const auto& e : fs::directory_iterator(dir)) m[e.path().filename().string()] = slurp(e.path());
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("simulate bright: SIGTERM writes a checkpoint and complete outputs, exit 143; the restart equals the uninterrupted run") {
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-interrupt-test-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path out = dir / "interrupted", full = dir / "full";
+
+  const auto r = interrupt_run(out, SIGTERM);
+  REQUIRE(r.exited);
+  CHECK(r.exit_code == 143);
+  // one line on stderr with the exact command that continues the run
+  CHECK(std::count(r.error_output.begin(), r.error_output.end(), '\n') == 1);
+  CHECK(r.error_output.find("SIGTERM") != std::string::npos);
+  CHECK(r.error_output.find("--restart " + (out / "checkpoint.bin").string()) != std::string::npos);
+  const auto summary = nlohmann::json::parse(r.output);
+  CHECK(summary["interrupted"].get<bool>());
+  CHECK(summary["t_end"].get<double>() < 300 * summary["ansatz"]["T_b"].get<double>());
+  check_files_complete(out);
+
+  // The restart (same command + --restart) completes; so does an uninterrupted run.
+  auto restart = bright_args(out);
+  restart.insert(restart.end(), {"--restart", (out / "checkpoint.bin").string()});
+  lrchain::ProcessOptions quiet;
+  quiet.capture_stdout = quiet.capture_stderr = true;
+  const auto rr = lrchain::run_program(restart, quiet);
+  CHECK(rr.exit_code == 0);
+  CHECK(rr.error_output.empty());
+  const auto rf = lrchain::run_program(bright_args(full), quiet);
+  REQUIRE(rf.exit_code == 0);
+  for (const char* f : {"series.csv", "energy_density_spacetime.bin", "snapshot_t0.csv",
+                        "snapshot_t433.csv", "snapshot_t867.csv"}) {
+    CAPTURE(f);
+    REQUIRE(fs::exists(out / f));
+    CHECK(slurp(out / f) == slurp(full / f));
+  }
+  auto a = nlohmann::json::parse(slurp(out / "summary.json"));
+  auto b = nlohmann::json::parse(slurp(full / "summary.json"));
+  CHECK(a["t_start"].get<double>() > 0);
+  for (const char* k : {"wall_seconds", "solve_seconds", "out", "checkpoint_file", "checkpoints_written", "t_start"}) {
+    a.erase(k);
+    b.erase(k);
+  }
+  CHECK(a == b);
+
+  // changed physics: exit 2, one line naming the item, nothing written
+  const auto before = listing(out);
+  auto changed = restart;
+  changed.insert(changed.end(), {"--rho", "0.5"});
+  const auto rc = lrchain::run_program(changed, quiet);
+  CHECK(rc.exit_code == 2);
+  CHECK(rc.error_output.find("this run has rho = 0.5") != std::string::npos);
+  CHECK(std::count(rc.error_output.begin(), rc.error_output.end(), '\n') == 1);
+  CHECK(listing(out) == before);
+  // a truncated checkpoint: exit 2 naming it
+  const std::string bytes = slurp(out / "checkpoint.bin");
+  {
+    std::ofstream t(dir / "truncated.bin", std::ios::binary);
+    t.write(bytes.data(), std::streamsize(bytes.size() / 2));
+  }
+  auto damaged = bright_args(out);
+  damaged.insert(damaged.end(), {"--restart", (dir / "truncated.bin").string()});
+  const auto rd = lrchain::run_program(damaged, quiet);
+  CHECK(rd.exit_code == 2);
+  CHECK(rd.error_output.find((dir / "truncated.bin").string()) != std::string::npos);
+  CHECK(listing(out) == before);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("simulate bright: SIGINT stops the run with exit 130 and a checkpoint") {
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-interrupt-int-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const auto r = interrupt_run(dir / "out", SIGINT);
+  REQUIRE(r.exited);
+  CHECK(r.exit_code == 130);
+  CHECK(r.error_output.find("SIGINT") != std::string::npos);
+  check_files_complete(dir / "out");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("dark continue: SIGTERM stops after the current branch point, writes the branch so far, exit 143") {
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-interrupt-dark-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  lrchain::ProcessOptions o;
+  o.capture_stdout = true;
+  o.stderr_file = dir / "stderr.txt";  // the per-point progress lines, polled below
+  lrchain::ChildProcess child({LRCHAIN_CLI, "dark", "continue", "--omega-b", "2.445", "--rho", "1/3",
+                               "--center", "bond", "--sites", "31", "--points", "1000", "--out",
+                               (dir / "out").string()},
+                              o);
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (slurp(dir / "stderr.txt").find("point   2 ") == std::string::npos &&
+         std::chrono::steady_clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  child.send_signal(SIGTERM);
+  const auto r = child.wait();
+  REQUIRE(r.exited);
+  CHECK(r.exit_code == 143);
+  const std::string err = slurp(dir / "stderr.txt");
+  CHECK(err.find("interrupted by SIGTERM after") != std::string::npos);
+  const auto j = nlohmann::json::parse(r.output);
+  CHECK(j["interrupted"].get<bool>());
+  const std::size_t points = j["points"].get<std::size_t>();
+  CHECK(points >= 3);
+  CHECK(points < 1000);
+  // branch.csv: a header and one complete row per point
+  const std::string csv = slurp(dir / "out" / "branch.csv");
+  CHECK(std::size_t(std::count(csv.begin(), csv.end(), '\n')) == points + 1);
+  for (const auto& e : fs::directory_iterator(dir / "out")) CHECK(e.path().filename().string()[0] != '.');
+  fs::remove_all(dir);
+}
