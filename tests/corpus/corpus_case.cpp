@@ -2,6 +2,7 @@
 #include "corpus_case.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -127,13 +128,36 @@ std::string node_text(const std::vector<std::string>& lines, const toml::node& n
   return lines.at(src.begin.line - 1).substr(src.begin.column - 1, src.end.column - src.begin.column);
 }
 
-// A misspelling of `key` that is no key of `taken`: a letter dropped (kappa -> kapa), or for short
-// keys the last letter doubled (N -> NN).
+// Edit distance ignoring case (a product may suggest the closest key either way).
+std::size_t distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// A misspelling of `key` whose closest key is `key` alone: a letter dropped (kappa -> kapa), the last
+// letter doubled, or a stray letter in front (N -> xN, as NN would be as close to n0 as to N).
 std::string typo_of(const std::string& key, const std::set<std::string>& taken) {
-  std::string t = key;
-  if (key.size() >= 4) t.erase(key.size() / 2, 1);
-  if (key.size() < 4 || taken.count(t)) t = key + key.back();
-  return t;
+  std::vector<std::string> candidates;
+  if (key.size() >= 4) candidates.push_back(std::string(key).erase(key.size() / 2, 1));
+  candidates.push_back(key + key.back());
+  candidates.push_back("x" + key);
+  for (const auto& t : candidates) {
+    bool unique = true;
+    for (const auto& other : taken) unique = unique && (other == key || distance(t, other) > distance(t, key));
+    if (unique) return t;
+  }
+  return candidates.back();
 }
 
 bool is_number_text(const std::string& s) {
@@ -269,7 +293,15 @@ void add_config_cases(const std::filesystem::path& examples, const std::vector<H
         corpus.cases.push_back(std::move(k));
       }
       // The same value under a misspelt key, on the line after the real one.
-      const std::string typo = typo_of(e.key, e.siblings);
+      // Keys the config could hold: the file's and the subcommand's options (n0 is close to N).
+      std::set<std::string> possible = e.siblings;
+      if (command)
+        for (const auto& o : command->options) {
+          std::string k = o.name;
+          std::replace(k.begin(), k.end(), '-', '_');
+          possible.insert(k);
+        }
+      const std::string typo = typo_of(e.key, possible);
       auto typo_lines = lines;
       const int line = static_cast<int>(node.source().begin.line) + 1;
       typo_lines.insert(typo_lines.begin() + (line - 1), typo + " = " + node_text(lines, node));
