@@ -2,7 +2,10 @@
 # Installs the Debian packages lrchain needs (only those missing), then configures and
 # builds in ./build (Release). Run as root on Debian 12. Usage: scripts/setup.sh [build-dir]
 # With LRCHAIN_TEST_TOOLS=1 (scripts/test.sh) it also installs what the tests need: chromium
-# (headless browser test of the `lrchain reproduce` report).
+# (headless browser test of the `lrchain reproduce` report). The sanitizer build of scripts/test.sh
+# needs nothing more: g++'s AddressSanitizer and UndefinedBehaviorSanitizer runtimes (libasan8,
+# libubsan1) come with build-essential (g++-12 -> libgcc-12-dev) and report through their own
+# symbolizer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${1:-build}

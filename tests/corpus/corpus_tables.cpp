@@ -1,0 +1,118 @@
+// The corpus's hand-written data (corpus_tables.hpp): bases, valid-range exceptions, file options.
+#include "corpus_tables.hpp"
+
+namespace lrchain::corpus {
+
+const char* label(BadValue v) {
+  switch (v) {
+    case BadValue::nan: return "nan";
+    case BadValue::inf: return "inf";
+    case BadValue::minus_inf: return "-inf";
+    case BadValue::minus_one: return "-1";
+    case BadValue::zero: return "0";
+    case BadValue::huge: return "1e308";
+    case BadValue::huge_pi: return "1e300pi";
+    case BadValue::empty: return "empty";
+    case BadValue::word: return "word";
+    case BadValue::wrong_type: return "wrong-type";
+  }
+  return "?";
+}
+
+const std::map<std::string, std::vector<std::string>>& base_commands() {
+  static const std::map<std::string, std::vector<std::string>> bases = {
+      {"coeffs", {"--theta", "pi/2", "--branch", "optical", "--json"}},
+      {"regime intervals", {"--samples", "64"}},
+      {"regime map", {"--out", "@OUT@", "--nx", "8", "--ny", "8", "--no-curves", "--no-png"}},
+      {"regime thresholds", {"--scan", "10"}},
+      {"simulate bright",
+       {"--branch", "optical", "--theta", "pi/2", "--N", "50", "--periods", "1", "--sample-every", "0.25",
+        "--spacetime-every", "0.5", "--snapshots", "0", "1", "--out", "@OUT@", "--json"}},
+      {"simulate drive",
+       {"--beads", "50", "--t-end", "2", "--t-m", "1", "--sample-every", "1", "--spacetime-every", "2",
+        "--snapshots", "1", "2", "--front-fit-start", "0", "--front-fit-end", "2", "--out", "@OUT@", "--json"}},
+      {"simulate modulated",
+       {"--N", "21", "--theta-waves", "13", "--t-end", "2", "--sample-every", "1", "--snapshots", "0", "1",
+        "--speed-fit-start", "0", "--speed-fit-end", "2", "--checkpoint-every", "1", "--out", "@OUT@", "--json"}},
+      {"dark solve", {"--omega-b", "2.42", "--sites", "21", "--quiet", "--out", "@OUT@"}},
+      {"dark floquet", {"--omega-b", "2.42", "--sites", "21", "--quiet", "--out", "@OUT@"}},
+      {"dark continue", {"--omega-b", "2.42", "--sites", "21", "--points", "2", "--quiet", "--out", "@OUT@"}},
+      {"dark evolve", {"--omega-b", "2.42", "--sites", "21", "--t-end", "3", "--quiet", "--out", "@OUT@"}},
+      {"reproduce", {"--only", "coefficients", "--jobs", "1", "--out", "@OUT@"}},
+  };
+  return bases;
+}
+
+const std::map<std::string, std::vector<std::string>>& option_context() {
+  static const std::map<std::string, std::vector<std::string>> context = {
+      {"delta0-range", {"--plane", "delta0-omega"}},
+      {"omega-range", {"--plane", "delta0-omega"}},
+  };
+  return context;
+}
+
+const std::map<std::string, std::string>& pair_partner() {
+  static const std::map<std::string, std::string> partner = {
+      {"rho-range", "0.1"}, {"delta0-range", "0.01"}, {"omega-range", "0.5"}};
+  return partner;
+}
+
+const std::set<std::string>& numeric_text_options() {
+  static const std::set<std::string> names = {"rho-range", "delta0-range", "omega-range"};
+  return names;
+}
+
+const std::set<BadValue>& possibly_valid(const std::string& name) {
+  using enum BadValue;
+  static const std::map<std::string, std::set<BadValue>> table = {
+      {"detuning", {minus_one}},             // any nonzero value with the sign of h_tilde (< 0 at the bases)
+      {"n0", {minus_one, zero}},             // the breather centre may be any site
+      {"error-window", {zero}},              // t <= 0: the initial state alone
+      {"snapshots", {zero}},                 // a snapshot at t = 0 is the initial state
+      {"rel-tol", {zero}},                   // pure absolute error control
+      {"t-m", {minus_one, zero}},            // chi(t) is defined for any switch-off time
+      {"front-fit-start", {minus_one, zero}},  // a fit window opening before the run starts at t = 0
+      {"speed-fit-start", {minus_one, zero}},
+      {"b", {zero}},                         // no modulation
+      {"omega-min", {minus_one, zero}},      // lower stop of the continuation (default 0)
+      {"omega-max", {minus_one, zero}},      // <= 0 today means "the band edge"
+      {"ds", {minus_one}},                   // the sign of the first step may pick the direction
+      {"name", {huge_pi, word, empty}},      // a run's name is any text
+      {"dir", {huge_pi, word, empty}},       // an output directory is any path; empty: none
+  };
+  static const std::set<BadValue> none;
+  const auto it = table.find(name);
+  return it == table.end() ? none : it->second;
+}
+
+std::string option_for_config_key(const std::string& key) {
+  if (key == "snapshot_periods" || key == "snapshot_times") return "snapshots";
+  std::string name = key;
+  for (char& c : name)
+    if (c == '_') c = '-';
+  return name;
+}
+
+const std::vector<FileOption>& file_options() {
+  static const std::vector<FileOption> files = {
+      {"simulate", "config", false},
+      {"simulate modulated", "restart", false},
+      {"reproduce", "examples", true},
+      {"reproduce", "errata", false},
+  };
+  return files;
+}
+
+const std::vector<OutputOption>& output_options() {
+  static const std::vector<OutputOption> outputs = {
+      {"regime map", "out", false},        {"simulate bright", "out", false}, {"simulate drive", "out", false},
+      {"simulate modulated", "out", false}, {"simulate modulated", "checkpoint", true},
+      {"dark solve", "out", false},         {"dark floquet", "out", false},    {"dark continue", "out", false},
+      {"dark evolve", "out", false},        {"reproduce", "out", false},
+  };
+  return outputs;
+}
+
+std::string command_for_experiment(const std::string& kind) { return "simulate " + kind; }
+
+}  // namespace lrchain::corpus
