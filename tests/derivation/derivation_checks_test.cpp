@@ -4,13 +4,13 @@
 #include <doctest/doctest.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "lrchain/derivation/generate.hpp"
+#include "lrchain/process.hpp"
 
 using namespace lrchain::derivation;
 
@@ -59,8 +59,7 @@ TEST_CASE("the homogeneous chain's coefficients are the known FPU-type ones (Cho
 TEST_CASE("re-running lrchain-derive reproduces the committed generated header byte for byte") {
   const auto tmp = std::filesystem::temp_directory_path() / "lrchain-derive-drift";
   std::filesystem::remove_all(tmp);
-  const std::string cmd = std::string(LRCHAIN_DERIVE) + " --quiet --out " + tmp.string();
-  REQUIRE(std::system(cmd.c_str()) == 0);
+  REQUIRE(lrchain::run_program({LRCHAIN_DERIVE, "--quiet", "--out", tmp.string()}).ok());
   const auto committed = std::filesystem::path(LRCHAIN_SOURCE_DIR) / "lib/include/lrchain/generated/nls_coefficients.hpp";
   const std::string fresh = slurp(tmp / "nls_coefficients.hpp");
   REQUIRE(!fresh.empty());
