@@ -81,6 +81,26 @@ std::vector<CheckResult> run_model_checks(const ModelDerivation& m, const Symbol
     out.push_back(numeric_check("c, omega'', beta, h, lambda, h_tilde unchanged when the left kernel is rescaled by (3 + D1)/2",
                                 max_difference(m, s, pairs, &scaled), points));
   }
+  // The right kernel rescaled: with the second field first, the amplitude is B = r A (r = the
+  // kernel's second entry, complex and theta-dependent), so c and omega'' are unchanged and
+  // h, h_tilde, beta lambda pick up |r|^2 (i A_tau - h |A|^2 A = 0 with B = r A).
+  if (m.file.model.fields.size() >= 2) {
+    LatticeModel swapped = m.file.model;
+    std::swap(swapped.fields[0], swapped.fields[1]);
+    std::swap(swapped.inertia[0], swapped.inertia[1]);
+    std::swap(swapped.rhs[0], swapped.rhs[1]);
+    std::swap(swapped.shifted[0], swapped.shifted[1]);
+    const DerivedCoefficients b = derive(swapped, s);
+    const ex r2 = d.kernel[1] * d.kernel[1].conjugate();  // |r|^2 (parameters and omega are real symbols)
+    std::vector<std::pair<ex, ex>> pairs{{d.group_velocity, b.group_velocity},
+                                         {d.curvature, b.curvature},
+                                         {d.h, r2 * b.h},
+                                         {d.h_tilde, r2 * b.h_tilde},
+                                         {d.beta * d.lambda, r2 * b.beta * b.lambda}};
+    out.push_back(numeric_check("c, omega'', h/|r|^2, h_tilde/|r|^2, beta lambda/|r|^2 unchanged when the right kernel is "
+                                "rescaled by its second entry r (amplitude carried by field " + swapped.fields[0] + ")",
+                                max_difference(m, s, pairs, &b), points));
+  }
   // Every coefficient real: coefficient - conj(coefficient) = 0, where normal() alone does not show it
   // after D1 = 4t^2/(1+t^2), sigma = 2t/(1+t^2) (t = tan(theta/2), so sigma^2 = D1 - D1^2/4 exactly).
   {
