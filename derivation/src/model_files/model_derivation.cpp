@@ -79,7 +79,8 @@ std::string model_report(const ModelDerivation& m, const Symbols& s, bool latex)
   out << "case: " << (d.mean_flow ? "mean flow (translation-invariant, singular L_0): lambda and h_tilde = h - lambda beta"
                                    : "on-site (regular L_0): mean and second-harmonic terms solved directly, no lambda, h_tilde = h")
       << "\n";
-  for (const auto& i : m.file.intermediates) out << "intermediate " << i.name << " = " << show(i.value) << "\n";
+  for (const auto& i : m.file.intermediates)
+    out << "intermediate " << i.name << " = " << show(i.value) << "  (= " << ex_to<numeric>(evalf(m.values.at(i.symbol))).to_double() << ")\n";
   out << "branches (theta = 0 -> pi):";
   for (const auto& b : m.branches) {
     out << "\n  " << b.name << ": omega " << b.omega_at_zero << " -> " << b.omega_at_pi;

@@ -128,7 +128,7 @@ class Loader {
       p.line = int(node.source().begin.line);
       const std::string where = at(file_, node) + ": parameter " + p.name;
       if (!std::regex_match(p.name, std::regex("[A-Za-z][A-Za-z0-9]*")) || reserved(p.name))
-        throw InputError(where + ": the name must be letters and digits and not one of omega, theta, c, gamma, D1, sigma, eps, E, n, I, Pi");
+        throw InputError(where + ": the name must be letters and digits and not one of omega, theta, c, gamma, D1, sigma, eps, E, n, I, Pi or a function name");
       if (!node.is_table()) throw InputError(where + " must be a table { default = ..., range = \"...\" }");
       const toml::table& t = *node.as_table();
       reject_unknown_keys(t, {"default", "range", "description"}, file_, "parameter " + p.name);
@@ -143,10 +143,13 @@ class Loader {
       p.symbol = realsymbol(p.name);
       out_.parameters.push_back(p);
     }
+    // TOML tables are read sorted by key: keep the file's order instead.
+    std::stable_sort(out_.parameters.begin(), out_.parameters.end(), [](const auto& a, const auto& b) { return a.line < b.line; });
   }
 
   static bool reserved(const std::string& name) {
-    for (const char* r : {"omega", "theta", "c", "gamma", "D1", "sigma", "eps", "E", "n", "I", "Pi"})
+    for (const char* r : {"omega", "theta", "c", "gamma", "D1", "sigma", "eps", "E", "n", "I", "Pi", "sqrt", "exp", "log",
+                          "sin", "cos", "tan", "sinh", "cosh", "tanh", "pow"})
       if (name == r) return true;
     return false;
   }
@@ -162,6 +165,8 @@ class Loader {
       ModelFunction f;
       f.name = std::string(key.str());
       const std::string where = at(file_, node) + ": function " + f.name;
+      if (!std::regex_match(f.name, std::regex("[A-Za-z][A-Za-z0-9]*")) || reserved(f.name) || parameter_table().count(f.name))
+        throw InputError(where + ": the name must be letters and digits, not a parameter and not a reserved name");
       if (!node.is_table()) throw InputError(where + " must be a table { argument = \"r\", expression = \"...\" }");
       const toml::table& t = *node.as_table();
       reject_unknown_keys(t, {"argument", "expression", "taylor", "contact"}, file_, "function " + f.name);
@@ -245,7 +250,10 @@ class Loader {
       const toml::table& t = *f.as_table();
       reject_unknown_keys(t, {"name", "mass", "force"}, file_, "[[field]]");
       const std::string name = text_of(t, "name", file_, "[[field]]");
-      if (!std::regex_match(name, std::regex("[A-Za-z][A-Za-z0-9]*")) || reserved(name) || parameter_table().count(name))
+      bool taken = parameter_table().count(name) > 0;
+      for (const auto& f : out_.functions)
+        taken |= f.name == name || std::find(f.taylor_names.begin(), f.taylor_names.end(), name) != f.taylor_names.end();
+      if (!std::regex_match(name, std::regex("[A-Za-z][A-Za-z0-9]*")) || reserved(name) || taken)
         throw InputError(at(file_, t) + ": field name '" + name + "' must be a new name (letters, digits)");
       for (const auto& other : out_.model.fields)
         if (other == name) throw InputError(at(file_, t) + ": field '" + name + "' is defined twice");
