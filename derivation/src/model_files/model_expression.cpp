@@ -1,6 +1,7 @@
 #include "model_expression.hpp"
 
 #include <cctype>
+#include <cstdlib>
 #include <regex>
 #include <sstream>
 
@@ -173,7 +174,8 @@ bool parse_exact_number(const std::string& text, numeric& value) {
   static const std::regex pattern(R"(\s*([+-]?)([0-9]*)(?:\.([0-9]*))?(?:[eE]([+-]?[0-9]+))?(?:\s*/\s*([0-9]+))?\s*)");
   std::smatch m;
   if (!std::regex_match(text, m, pattern) || (m[2].length() == 0 && m[3].length() == 0)) return false;
-  if (m[4].length() > 6 || m[2].length() + m[3].length() > 400) return false;
+  if (m[2].length() + m[3].length() > 400) return false;
+  if (m[4].matched && (m[4].length() > 5 || std::abs(std::stol(m[4].str())) > 400)) return false;  // |exponent| <= 400
   const std::string digits = m[2].str() + m[3].str();
   numeric mantissa = 0;
   for (char c : digits) mantissa = mantissa * 10 + (c - '0');

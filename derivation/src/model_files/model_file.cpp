@@ -135,11 +135,11 @@ class Loader {
       const toml::node* d = t.get("default");
       if (!d) throw InputError(where + " needs 'default' (a number or a fraction such as \"4/9\")");
       if (!exact_value(*d, p.default_value)) throw InputError(at(file_, *d) + ": parameter " + p.name + ": default must be a number or a fraction such as \"4/9\"");
-      p.range = t.contains("range") ? parse_range(text_of(t, "range", file_, where), at(file_, *t.get("range")) + ": parameter " + p.name)
+      p.range = t.contains("range") ? parse_range(text_of(t, "range", file_, "parameter " + p.name), at(file_, *t.get("range")) + ": parameter " + p.name)
                                     : parse_range("(-inf, inf)", where);
       if (!p.range.contains(p.default_value))
         throw InputError(at(file_, *d) + ": parameter " + p.name + ": default " + show(p.default_value) + " is outside its range " + p.range.text);
-      if (t.contains("description")) p.description = text_of(t, "description", file_, where);
+      if (t.contains("description")) p.description = text_of(t, "description", file_, "parameter " + p.name);
       p.symbol = realsymbol(p.name);
       out_.parameters.push_back(p);
     }
@@ -170,7 +170,7 @@ class Loader {
       if (!node.is_table()) throw InputError(where + " must be a table { argument = \"r\", expression = \"...\" }");
       const toml::table& t = *node.as_table();
       reject_unknown_keys(t, {"argument", "expression", "taylor", "contact"}, file_, "function " + f.name);
-      f.argument = text_of(t, "argument", file_, where);
+      f.argument = text_of(t, "argument", file_, "function " + f.name);
       if (!std::regex_match(f.argument, std::regex("[A-Za-z][A-Za-z0-9]*")))
         throw InputError(where + ": argument '" + f.argument + "' must be a name such as r");
       f.argument_symbol = realsymbol(f.argument);
@@ -178,11 +178,11 @@ class Loader {
       context.symbols = parameter_table();
       context.symbols[f.argument] = f.argument_symbol;
       std::vector<FunctionCall> calls;
-      f.expression_text = text_of(t, "expression", file_, where);
+      f.expression_text = text_of(t, "expression", file_, "function " + f.name);
       context.where = at(file_, *t.get("expression")) + ": function " + f.name;
       f.expression = parse_model_expression(f.expression_text, context, calls);
       if (t.contains("contact")) {
-        f.contact_text = text_of(t, "contact", file_, where);
+        f.contact_text = text_of(t, "contact", file_, "function " + f.name);
         context.where = at(file_, *t.get("contact")) + ": contact of function " + f.name;
         f.contact = parse_model_expression(f.contact_text, context, calls);
       }
@@ -339,7 +339,7 @@ exmap parameter_values(const ModelFile& model, const std::vector<std::pair<std::
                        (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
     }
     numeric v;
-    if (!parse_exact_number(text, v)) throw InvalidParameter(name, "'" + text + "' is not a number or fraction such as 4/9");
+    if (!parse_exact_number(text, v)) throw InvalidParameter(name, "'" + text + "' is not a number (exponent within +-400) or a fraction such as 4/9");
     if (!it->range.contains(v)) throw InvalidParameter(name, show(v) + " is outside its range " + it->range.text);
     values[it->symbol] = v;
   }
