@@ -149,6 +149,76 @@ TEST_CASE("diatomic_chain: linear dispersion = textbook acoustic/optical branche
   }
 }
 
+TEST_CASE("shifts up to +-3 and three fields: long-range chain dispersion, two resonators per bead") {
+  // u'' = F(u[n+1]-u[n]) - F(u[n]-u[n-1]) + sum_{m=2,3} k_m (u[n+m] - 2u[n] + u[n-m]), F(r) = r + b r^3:
+  // omega^2 = sum_{m=1..3} k_m 4 sin^2(m theta/2) with k1 = 1 (direct computation of the linear modes).
+  const Symbols s;
+  ModelFile f = parse_model_text(R"toml(name = "long_range"
+[parameters]
+k2 = { default = "1/4" }
+k3 = { default = "1/9" }
+b = { default = "1/2" }
+[functions.F]
+argument = "r"
+expression = "r + b*r^3"
+[[field]]
+name = "u"
+force = "F(u[n+1]-u[n]) - F(u[n]-u[n-1]) + k2*(u[n+2] - 2*u[n] + u[n-2]) + k3*(u[n+3] - 2*u[n] + u[n-3])"
+)toml", "long_range.toml");
+  const GiNaC::exmap values = parameter_values(f, {});
+  const auto m = derive_model(std::move(f), values, s);
+  CHECK(m->passed());
+  double worst = 0;
+  for (double theta : {0.2, 0.9, 1.7, 2.5, M_PI}) {
+    bool complex_roots = true;
+    const auto w2 = omega_squared_roots(m->coefficients, s, m->values, theta, complex_roots);
+    double expected = 0;
+    for (int k = 1; k <= 3; ++k) expected += 4 * std::pow(std::sin(k * theta / 2), 2) / (k * k);  // k_m = 1/m^2
+    worst = std::max(worst, std::abs(w2.at(0) - expected) / expected);
+  }
+  CHECK(worst < 1e-13);
+
+  // Three fields: a bead u with two resonators v (mass rho, spring kappa) and w (mass s2, spring mu).
+  ModelFile three = parse_model_text(R"toml(name = "two_resonators"
+[parameters]
+kappa = { default = 1 }
+mu = { default = 2 }
+rho = { default = "1/3" }
+s2 = { default = "1/5" }
+[functions.F]
+argument = "r"
+expression = "r - r^2/4 + r^3/2"
+[[field]]
+name = "u"
+force = "F(u[n+1] - u[n]) - F(u[n] - u[n-1]) - kappa*(u - v) - mu*(u - w)"
+[[field]]
+name = "v"
+mass = "rho"
+force = "kappa*(u - v)"
+[[field]]
+name = "w"
+mass = "s2"
+force = "mu*(u - w)"
+)toml", "three.toml");
+  const GiNaC::exmap three_values = parameter_values(three, {});
+  const auto t = derive_model(std::move(three), three_values, s);
+  for (const auto& c : t->checks) {
+    INFO(c.name << " (" << c.detail << ")");
+    CHECK(c.passed);
+  }
+  REQUIRE(t->branches.size() == 3);
+  CHECK(t->branches[0].name == "acoustic");
+  CHECK(t->branches[1].name == "optical1");
+  CHECK(t->branches[2].name == "optical2");
+  // theta = 0, optical branches: the uniform-motion frequencies (hand-derived equation below).
+  for (std::size_t i = 1; i < 3; ++i) {
+    const double w2 = t->branches[i].omega_at_zero * t->branches[i].omega_at_zero;
+    // Uniform motion: -w^2 u = -kappa(u - v) - mu(u - w), v = kappa u/(kappa - rho w^2), w = mu u/(mu - s2 w^2).
+    const double residual = -w2 + 1.0 * (1 - 1.0 / (1 - w2 / 3.0)) + 2.0 * (1 - 1.0 / (1 - w2 / 10.0));
+    CHECK(std::abs(residual) < 1e-9);
+  }
+}
+
 TEST_CASE("the kernel rescaling check can fail: a wrong coefficient is caught") {
   // Perturbed copy of klein_gordon's h: the check against the rescaled derivation must report it.
   const Symbols s;

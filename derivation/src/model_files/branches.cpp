@@ -78,7 +78,7 @@ std::vector<BranchInfo> find_branches(const DerivedCoefficients& d, const Symbol
   for (std::size_t i = 0; i < b.size(); ++i) {
     if (acoustic) b[i].name = i == 0 ? "acoustic" : (b.size() == 2 ? "optical" : "optical" + std::to_string(i));
     else b[i].name = "branch" + std::to_string(i);
-    b[i].omega_at_zero = std::sqrt(std::max(0.0, at_zero[i]));
+    b[i].omega_at_zero = (acoustic && i == 0) ? 0.0 : std::sqrt(std::max(0.0, at_zero[i]));
   }
   const int samples = 64;
   for (int k = 1; k <= samples; ++k) {
