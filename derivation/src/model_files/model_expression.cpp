@@ -170,6 +170,12 @@ ex parse_model_expression(const std::string& text, const ExpressionContext& cont
   return t.parse(t.translate(text));
 }
 
+std::string to_text(const ex& e) {
+  std::ostringstream os;
+  os << e;
+  return os.str();
+}
+
 bool parse_exact_number(const std::string& text, numeric& value) {
   static const std::regex pattern(R"(\s*([+-]?)([0-9]*)(?:\.([0-9]*))?(?:[eE]([+-]?[0-9]+))?(?:\s*/\s*([0-9]+))?\s*)");
   std::smatch m;

@@ -29,6 +29,9 @@ struct FunctionCall {
 GiNaC::ex parse_model_expression(const std::string& text, const ExpressionContext& context,
                                  std::vector<FunctionCall>& calls);
 
+// An expression as GiNaC prints it (plain text).
+std::string to_text(const GiNaC::ex& e);
+
 // A number "0.25", "1e-3" or fraction "4/9" read exactly (doubles as the exact binary value).
 bool parse_exact_number(const std::string& text, GiNaC::numeric& value);
 

@@ -21,12 +21,6 @@ std::string at(const std::string& file, const toml::node& node) {
   return file + ":" + std::to_string(node.source().begin.line);
 }
 
-std::string show(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
-
 // A TOML string value (required).
 std::string text_of(const toml::table& table, const std::string& key, const std::string& file, const std::string& where) {
   const toml::node* node = table.get(key);
@@ -102,7 +96,7 @@ class Loader {
       p.range = t.contains("range") ? parse_range(text_of(t, "range", file_, "parameter " + p.name), at(file_, *t.get("range")) + ": parameter " + p.name)
                                     : parse_range("(-inf, inf)", where);
       if (!p.range.contains(p.default_value))
-        throw InputError(at(file_, *d) + ": parameter " + p.name + ": default " + show(p.default_value) + " is outside its range " + p.range.text);
+        throw InputError(at(file_, *d) + ": parameter " + p.name + ": default " + to_text(p.default_value) + " is outside its range " + p.range.text);
       if (t.contains("description")) p.description = text_of(t, "description", file_, "parameter " + p.name);
       p.symbol = realsymbol(p.name);
       out_.parameters.push_back(p);
@@ -197,7 +191,7 @@ class Loader {
         out_.intermediates.push_back({name, realsymbol(name), c[k]});
         it = out_.intermediates.end() - 1;
       } else if (!normal(it->value - c[k]).is_zero()) {
-        throw InputError(where + ": function " + f.name + " is called about two different equilibria (" + show(r0) +
+        throw InputError(where + ": function " + f.name + " is called about two different equilibria (" + to_text(r0) +
                          "), so its taylor names are ambiguous");
       }
       c[k] = it->symbol;
@@ -259,7 +253,7 @@ class Loader {
                                  "expanded; write a non-polynomial law as a [functions] entry");
       const ex at_rest = normal(force.subs(zero));
       if (!at_rest.is_zero())
-        throw InputError(where + ": the force does not vanish at equilibrium (all fields zero): it is " + show(at_rest));
+        throw InputError(where + ": the force does not vanish at equilibrium (all fields zero): it is " + to_text(at_rest));
       m.inertia.push_back(mass);
       m.rhs.push_back(force);
     }

@@ -14,14 +14,6 @@ namespace lrchain::derivation {
 
 using namespace GiNaC;
 
-namespace {
-std::string show(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
-}  // namespace
-
 bool exact_value(const toml::node& node, numeric& value) {
   if (auto i = node.value_exact<int64_t>()) {
     value = numeric(long(*i));
@@ -76,7 +68,7 @@ exmap parameter_values(const ModelFile& model, const std::vector<std::pair<std::
     }
     numeric v;
     if (!parse_exact_number(text, v)) throw InvalidParameter(name, "'" + text + "' is not a number (exponent within +-400) or a fraction such as 4/9");
-    if (!it->range.contains(v)) throw InvalidParameter(name, show(v) + " is outside its range " + it->range.text);
+    if (!it->range.contains(v)) throw InvalidParameter(name, to_text(v) + " is outside its range " + it->range.text);
     values[it->symbol] = v;
   }
   for (const auto& i : model.intermediates) values[i.symbol] = i.value.subs(values, subs_options::no_pattern);
