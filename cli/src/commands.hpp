@@ -10,5 +10,6 @@ void register_regime(CLI::App& app);    // regime_command.cpp (focusing regimes,
 void register_simulate(CLI::App& app);  // simulate_command.cpp (lattice runs vs NLS ansatz, Sec. 4)
 void register_dark(CLI::App& app);      // dark_command.cpp (exact dark breathers, Sec. 5.3-5.4)
 void register_reproduce(CLI::App& app); // reproduce_command.cpp (the paper's results as an HTML report)
+void register_derive(CLI::App& app);    // derive_command.cpp (a model file through the multiple-scale engine)
 
 }  // namespace lrchain::cli

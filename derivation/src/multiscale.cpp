@@ -29,8 +29,8 @@ ex monomial_coeff(const ex& e, const std::vector<std::pair<ex, int>>& monomial, 
 
 class Solver {
  public:
-  Solver(const LatticeModel& model, const Symbols& s)
-      : model_(model), s_(s), jets_(model.fields), n_(model.fields.size()) {
+  Solver(const LatticeModel& model, const Symbols& s, const ex& left_scale)
+      : model_(model), s_(s), jets_(model.fields), n_(model.fields.size()), left_scale_(left_scale) {
     residual_ = build_residual(model, s, jets_);
   }
 
@@ -90,11 +90,29 @@ class Solver {
     return reduce_trig(s, s_);
   }
   void note(const std::string& line) { report_.push_back(line); }
-
+  // Regular level: every field solved directly, A_{k,j} = L^{-1} rhs.
+  void solve_regular(int k, int j, const matrix& L, const std::vector<ex>& rhs) {
+    const matrix Linv = L.inverse();
+    std::vector<std::pair<int, ex>> values;
+    for (std::size_t f = 0; f < n_; ++f) {
+      ex v = 0;
+      for (std::size_t i = 0; i < n_; ++i) v += Linv(f, i) * rhs[i];
+      values.emplace_back(int(f), normal(v));
+    }
+    assign(k, j, values);
+  }
+  // Left null vector, multiplied by the check's scale factor when one is given.
+  std::vector<ex> left_null_vector(const matrix& L) {
+    std::vector<ex> v = null_vector(L, /*right=*/false);
+    if (!left_scale_.is_equal(1))
+      for (auto& e : v) e = e * left_scale_;
+    return v;
+  }
   const LatticeModel& model_;
   const Symbols& s_;
   Jets jets_;
   std::size_t n_;
+  ex left_scale_;
   Residual residual_;
   exmap known_;
   std::vector<std::string> report_;
@@ -112,31 +130,43 @@ DerivedCoefficients Solver::run() {
     for (const ex& r : level(0, j))
       if (!r.is_zero()) throw std::runtime_error("eps^0 residual does not vanish: " + str(r));
 
-  // eps^1 E^0: L_0 is singular (translation mode); fields follow the kernel.
+  // eps^1 E^0: L_0 singular (translation mode; fields follow the kernel) or regular (on-site: A_{1,0} = 0).
   split(1, 0, level(1, 0), L, rhs);
-  if (!normal(L.determinant()).is_zero()) throw std::runtime_error("L_0 is not singular");
-  const auto kernel0 = null_vector(L, /*right=*/true), left0 = null_vector(L, /*right=*/false);
-  if (!solvability(left0, rhs).is_zero()) throw std::runtime_error("eps E^0 solvability fails");
-  solve_singular(1, 0, L, rhs, kernel0);
-  note("eps^1 E^0: L_0 singular, mean-flow kernel " + str(lst(kernel0.begin(), kernel0.end())));
+  std::vector<ex> kernel0, left0;
+  d.mean_flow = normal(L.determinant()).is_zero();
+  if (d.mean_flow) {
+    kernel0 = null_vector(L, /*right=*/true);
+    left0 = left_null_vector(L);
+    if (!solvability(left0, rhs).is_zero()) throw std::runtime_error("eps E^0 solvability fails");
+    solve_singular(1, 0, L, rhs, kernel0);
+    note("eps^1 E^0: L_0 singular, mean-flow kernel " + str(lst(kernel0.begin(), kernel0.end())));
+  } else {
+    solve_regular(1, 0, L, rhs);
+    note("eps^1 E^0: L_0 regular (on-site model): A_{1,0} = 0, no mean flow");
+  }
 
   // eps^1 E^1: M (eq:M) and the dispersion relation det M = 0 (eq:disp1d).
   split(1, 1, level(1, 1), L, rhs);
   d.dispersion = normal(L.determinant());
   d.kernel = null_vector(L, true);
-  d.left_kernel = null_vector(L, false);
+  d.left_kernel = left_null_vector(L);
   solve_singular(1, 1, L, rhs, d.kernel);
   const matrix L1 = L;
   note("eps^1 E^1: dispersion relation det L_1 = " + str(d.dispersion) + " = 0");
   note("eps^1 E^1: kernel (B_{1,1}/A_{1,1} etc.) " + str(lst(d.kernel.begin(), d.kernel.end())) +
        ", left kernel " + str(lst(d.left_kernel.begin(), d.left_kernel.end())));
 
-  // eps^2 E^0: solvability must hold identically.
+  // eps^2 E^0: solvability must hold identically (mean flow); solved directly (on-site).
   split(2, 0, level(2, 0), L, rhs);
-  const ex s20 = solvability(left0, rhs);
-  if (!normal(s20).is_zero()) throw std::runtime_error("eps^2 E^0 solvability fails: " + str(s20));
-  solve_singular(2, 0, L, rhs, kernel0);
-  note("eps^2 E^0: solvability holds identically");
+  if (d.mean_flow) {
+    const ex s20 = solvability(left0, rhs);
+    if (!normal(s20).is_zero()) throw std::runtime_error("eps^2 E^0 solvability fails: " + str(s20));
+    solve_singular(2, 0, L, rhs, kernel0);
+    note("eps^2 E^0: solvability holds identically");
+  } else {
+    solve_regular(2, 0, L, rhs);
+    note("eps^2 E^0: mean correction A_{2,0} solved directly");
+  }
 
   // eps^2 E^1: solvability fixes the group velocity c (eq:c).
   split(2, 1, level(2, 1), L, rhs);
@@ -151,22 +181,12 @@ DerivedCoefficients Solver::run() {
   // eps^2 E^2: second harmonic, invertible under (eq:nonresonance1).
   split(2, 2, level(2, 2), L, rhs);
   d.nonresonance1 = normal(-L.determinant());
-  {
-    const matrix Linv = L.inverse();
-    std::vector<std::pair<int, ex>> values;
-    for (std::size_t f = 0; f < n_; ++f) {
-      ex v = 0;
-      for (std::size_t i = 0; i < n_; ++i) v += Linv(f, i) * rhs[i];
-      values.emplace_back(int(f), normal(v));
-    }
-    note("eps^2 E^2: A_{2,2} = " + str(values[0].second));
-    assign(2, 2, values);
-  }
+  solve_regular(2, 2, L, rhs);
   note("eps^2 E^2: non-resonance value -det L_2 = " + str(d.nonresonance1));
 
   // eps^3 E^0: mean-flow equation (eq:mod2) -> nonresonance2 and lambda (eq:lambda).
-  split(3, 0, level(3, 0), L, rhs);
-  {
+  if (d.mean_flow) {
+    split(3, 0, level(3, 0), L, rhs);
     const ex s30 = solvability(left0, rhs);
     const ex A10xx = jets_.get(0, 1, 0, 0, 2);
     const ex A11x = jets_.get(0, 1, 1, 0, 1), A1m1x = jets_.get(0, 1, -1, 0, 1);
@@ -179,6 +199,9 @@ DerivedCoefficients Solver::run() {
     d.nonresonance2 = normal(a);
     d.lambda_n2 = normal(-b1);
     note("eps^3 E^0: (" + str(d.nonresonance2) + ") d_xi^2 A_{1,0} = " + str(d.lambda_n2) + " d_xi |A_{1,1}|^2");
+  } else {
+    d.nonresonance2 = 1;
+    d.lambda_n2 = 0;
   }
 
   // eps^3 E^1: solvability gives the NLS (eq:mod1).
@@ -207,8 +230,8 @@ DerivedCoefficients Solver::run() {
   // Real-valuedness of every coefficient (conjugation must leave it unchanged).
   for (const ex& e : {d.gamma, d.curvature_over_gamma, d.beta_over_gamma, d.h_n1_over_gamma,
                       d.nonresonance1, d.nonresonance2, d.lambda_n2, d.group_velocity})
-    if (!normal(e - jets_.conjugate(e)).is_zero()) throw std::runtime_error("coefficient is not real: " + str(e));
-  note("all coefficients are real (invariant under conjugation)");
+    if (!normal(e - jets_.conjugate(e)).is_zero()) d.imaginary_parts.push_back(e - jets_.conjugate(e));
+  note("coefficients invariant under conjugation (modulo sigma^2 = D1 - D1^2/4 where listed in imaginary_parts)");
 
   d.curvature = explicit_form(d, s_, s_.gamma * d.curvature_over_gamma);
   d.beta = explicit_form(d, s_, s_.gamma * d.beta_over_gamma);
@@ -228,6 +251,8 @@ ex explicit_form(const DerivedCoefficients& d, const Symbols& s, const ex& e) {
   return e.subs(lst{s.gamma == d.gamma}).subs(lst{s.c == d.group_velocity});
 }
 
-DerivedCoefficients derive(const LatticeModel& model, const Symbols& s) { return Solver(model, s).run(); }
+DerivedCoefficients derive(const LatticeModel& model, const Symbols& s, const ex& left_kernel_scale) {
+  return Solver(model, s, left_kernel_scale).run();
+}
 
 }  // namespace lrchain::derivation

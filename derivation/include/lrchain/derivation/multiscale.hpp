@@ -32,9 +32,17 @@ struct DerivedCoefficients {
   GiNaC::ex curvature, beta, h, lambda, h_tilde, h_tilde_numerator;  // fully explicit
   std::vector<std::string> report;     // the derivation's own consistency checks, one line each
   std::vector<GiNaC::ex> vanishing_modulo_dispersion;  // coefficients that must be 0 on det L_1 = 0
+  // Translation-invariant model (singular L_0): mean flow A_{1,0}, lambda, h_tilde = h - lambda beta.
+  // Otherwise on-site (regular L_0): A_{1,0} = 0, A_{2,0} solved directly, beta = lambda = 0,
+  // nonresonance2 = 1, h_tilde = h.
+  bool mean_flow = true;
+  // coefficient - conj(coefficient) where normal() alone does not give 0 (complex kernels): zero
+  // only modulo sigma^2 = D1 - D1^2/4; checked by run_model_checks (every coefficient is real).
+  std::vector<GiNaC::ex> imaginary_parts;
 };
 
-DerivedCoefficients derive(const LatticeModel& model, const Symbols& s);
+// left_kernel_scale multiplies every left null vector (a check: the coefficients must not change).
+DerivedCoefficients derive(const LatticeModel& model, const Symbols& s, const GiNaC::ex& left_kernel_scale = 1);
 
 // Substitutes the group velocity and gamma into an expression containing the symbols c, gamma.
 GiNaC::ex explicit_form(const DerivedCoefficients& d, const Symbols& s, const GiNaC::ex& e);

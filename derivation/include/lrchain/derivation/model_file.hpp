@@ -1,0 +1,71 @@
+#pragma once
+// A lattice model read from a TOML file (docs/models.md): parameters with defaults and ranges,
+// named force laws F(r) replaced by their cubic Taylor polynomials about equilibrium, fields with
+// masses and force expressions in shifted fields u[n+m] (|m| <= 3), turned into a LatticeModel.
+#include <ginac/ginac.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lrchain/derivation/model.hpp"
+
+namespace lrchain::derivation {
+
+// An interval such as "(0, inf)" or "[1, 4]"; missing bounds are infinite.
+struct ParameterRange {
+  std::string text;
+  bool has_lower = false, has_upper = false, lower_closed = false, upper_closed = false;
+  GiNaC::numeric lower, upper;
+  bool contains(const GiNaC::numeric& value) const;
+};
+
+struct ModelParameter {
+  std::string name, description;
+  GiNaC::realsymbol symbol;
+  GiNaC::numeric default_value;  // exact (a fraction "4/9" stays 4/9)
+  ParameterRange range;
+  int line = 0;
+};
+
+// A named force law F(argument) = expression; optionally one-sided (zero where `contact` < 0).
+struct ModelFunction {
+  std::string name, argument, expression_text, contact_text;
+  GiNaC::realsymbol argument_symbol;
+  GiNaC::ex expression, contact;   // contact: ex() when the law is not one-sided
+  std::vector<std::string> taylor_names;  // names of F'(r0), F''(r0)/2, F'''(r0)/6, or empty
+};
+
+// A named Taylor coefficient of a force law (e.g. K2 = alpha delta0^(alpha-1)), kept as a symbol.
+struct NamedIntermediate {
+  std::string name;
+  GiNaC::realsymbol symbol;
+  GiNaC::ex value;  // in the parameters
+};
+
+struct ModelFile {
+  std::string path, name, description;
+  std::uint64_t hash = 0;  // FNV-1a 64 of the file's bytes
+  std::vector<ModelParameter> parameters;
+  std::vector<ModelFunction> functions;
+  std::vector<NamedIntermediate> intermediates;
+  std::vector<std::string> mass_text, force_text;  // as written, one per field
+  LatticeModel model;                              // what the engine derives
+};
+
+// Reads and checks a model file; throws lrchain::InputError naming file:line and the problem.
+ModelFile load_model_file(const std::filesystem::path& path);
+
+// The same from text (`path` is used in messages only).
+ModelFile parse_model_text(const std::string& text, const std::string& path);
+
+// Parameter values: defaults overridden by `overrides` (name, number or fraction text), each checked
+// against its range (lrchain::InvalidParameter), plus the named intermediates evaluated at them.
+GiNaC::exmap parameter_values(const ModelFile& model, const std::vector<std::pair<std::string, std::string>>& overrides);
+
+// "0x" + 16 hex digits.
+std::string hash_text(std::uint64_t hash);
+
+}  // namespace lrchain::derivation
