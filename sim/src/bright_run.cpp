@@ -21,38 +21,23 @@ namespace lrchain::sim {
 
 namespace {
 
-constexpr std::int64_t max_samples = 1'000'000'000'000'000;  // far above any memory; no overflow
 constexpr long max_sites = 1'000'000'000'000'000;  // N: 2N + 2 beads stay far from overflow
 
 // Sample intervals floor(periods / sample_every) of the run (validated: no overflow).
-std::int64_t sample_intervals(const BrightRunConfig& c) {
-  return checked_count(std::floor(c.periods / c.sample_every + 1e-9), "periods", 1, max_samples,
-                       "samples (periods / sample-every)");
-}
+std::int64_t sample_intervals(const BrightRunConfig& c) { return sim::sample_intervals(c.periods, c.sample_every, "periods"); }
 
 }  // namespace
 
 std::vector<double> snapshot_periods_in_run(const BrightRunConfig& c) {
-  if (c.snapshot_periods != default_bright_snapshot_periods()) return c.snapshot_periods;
-  std::vector<double> inside;
-  for (double p : c.snapshot_periods)
-    if (p <= c.periods * (1 + 1e-12)) inside.push_back(p);
-  return inside;
+  return times_inside_run(c.snapshot_periods, default_bright_snapshot_periods(), c.periods);
 }
 
 namespace {
 
 // The sizes the run's memory and output grow with.
 LatticeRunSizes run_sizes(const BrightRunConfig& c) {
-  LatticeRunSizes s;
-  s.sites = 2 * double(c.N) + 2;
-  const double snapshots = double(snapshot_periods_in_run(c).size());
-  s.observations = double(sample_intervals(c)) + 2 + snapshots;
-  s.series_columns = 5;
-  s.spacetime_rows = std::floor(c.periods / c.spacetime_every) + 1;
-  s.snapshots = snapshots;
-  s.stepper = c.integrator.stepper;
-  return s;
+  return sampled_run_sizes(2 * double(c.N) + 2, c.periods, c.sample_every, c.spacetime_every,
+                           double(snapshot_periods_in_run(c).size()), c.integrator.stepper, "periods");
 }
 
 }  // namespace

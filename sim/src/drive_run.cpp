@@ -24,37 +24,21 @@ namespace lrchain::sim {
 
 namespace {
 
-constexpr std::int64_t max_samples = 1'000'000'000'000'000;  // far above any memory; no overflow
-
 // Sample intervals floor(t_end / sample_every) of the run (validated: no overflow).
-std::int64_t sample_intervals(const DriveRunConfig& c) {
-  return checked_count(std::floor(c.t_end / c.sample_every + 1e-9), "t-end", 1, max_samples,
-                       "samples (t-end / sample-every)");
-}
+std::int64_t sample_intervals(const DriveRunConfig& c) { return sim::sample_intervals(c.t_end, c.sample_every, "t-end"); }
 
 }  // namespace
 
 std::vector<double> snapshot_times_in_run(const DriveRunConfig& c) {
-  if (c.snapshot_times != default_drive_snapshot_times()) return c.snapshot_times;
-  std::vector<double> inside;
-  for (double t : c.snapshot_times)
-    if (t <= c.t_end * (1 + 1e-12)) inside.push_back(t);
-  return inside;
+  return times_inside_run(c.snapshot_times, default_drive_snapshot_times(), c.t_end);
 }
 
 namespace {
 
 // The sizes the run's memory and output grow with.
 LatticeRunSizes run_sizes(const DriveRunConfig& c) {
-  LatticeRunSizes s;
-  s.sites = double(c.beads);
-  const double snapshots = double(snapshot_times_in_run(c).size());
-  s.observations = double(sample_intervals(c)) + 2 + snapshots;
-  s.series_columns = 5;
-  s.spacetime_rows = std::floor(c.t_end / c.spacetime_every) + 1;
-  s.snapshots = snapshots;
-  s.stepper = c.integrator.stepper;
-  return s;
+  return sampled_run_sizes(double(c.beads), c.t_end, c.sample_every, c.spacetime_every,
+                           double(snapshot_times_in_run(c).size()), c.integrator.stepper, "t-end");
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "lrchain/checked_number.hpp"
 #include "lrchain/errors.hpp"
 
 namespace lrchain::sim {
@@ -185,6 +186,33 @@ void check_output_space(const ResourceEstimate& e, const std::filesystem::path& 
                                                   "of '{}' has {} free; {}",
                                                   format_bytes(e.output_bytes), e.sizes,
                                                   out_dir.string(), format_bytes(free), advice));
+}
+
+std::int64_t sample_intervals(double duration, double sample_every, const std::string& duration_parameter) {
+  constexpr std::int64_t max_samples = 1'000'000'000'000'000;  // far above any memory; no overflow
+  return checked_count(std::floor(duration / sample_every + 1e-9), duration_parameter, 1, max_samples,
+                       "samples (" + duration_parameter + " / sample-every)");
+}
+
+LatticeRunSizes sampled_run_sizes(double sites, double duration, double sample_every, double spacetime_every,
+                                  double snapshots, StepperKind stepper, const std::string& duration_parameter) {
+  LatticeRunSizes s;
+  s.sites = sites;
+  s.observations = double(sample_intervals(duration, sample_every, duration_parameter)) + 2 + snapshots;
+  s.series_columns = 5;
+  s.spacetime_rows = std::floor(duration / spacetime_every) + 1;
+  s.snapshots = snapshots;
+  s.stepper = stepper;
+  return s;
+}
+
+std::vector<double> times_inside_run(const std::vector<double>& given, const std::vector<double>& defaults,
+                                     double end) {
+  if (given != defaults) return given;
+  std::vector<double> inside;
+  for (double t : given)
+    if (t <= end * (1 + 1e-12)) inside.push_back(t);
+  return inside;
 }
 
 }  // namespace lrchain::sim

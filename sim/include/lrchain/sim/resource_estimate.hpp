@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "lrchain/sim/integrator.hpp"
 
@@ -31,6 +32,17 @@ ResourceEstimate estimate_lattice_run(const LatticeRunSizes& s);
 // True when fewer sites save more memory than fewer samples: then a refusal names the lattice
 // size rather than the sampling options.
 bool lattice_dominates(const LatticeRunSizes& s);
+
+// Sample intervals floor(duration / sample_every) of a run sampled on a regular grid, refused
+// (InvalidParameter naming `duration_parameter`) when the count overflows any memory.
+std::int64_t sample_intervals(double duration, double sample_every, const std::string& duration_parameter);
+// The sizes of a run on a regular sample grid with space-time rows every `spacetime_every`.
+LatticeRunSizes sampled_run_sizes(double sites, double duration, double sample_every, double spacetime_every,
+                                  double snapshots, StepperKind stepper, const std::string& duration_parameter);
+// The observation times a run keeps: the user's `given` ones as they are; of the `defaults`, those
+// inside a run of length `end` (later ones are for a longer run).
+std::vector<double> times_inside_run(const std::vector<double>& given, const std::vector<double>& defaults,
+                                     double end);
 
 // Exact dark breathers on `sites` sites: Newton/Floquet matrices, the recorded orbit of one
 // shooting interval of `shooting_time`, and for an evolution `periods` stroboscopic snapshots.
