@@ -2,7 +2,8 @@
 # Installs the Debian packages lrchain needs (only those missing), then configures and
 # builds in ./build (Release). Run as root on Debian 12. Usage: scripts/setup.sh [build-dir]
 # With LRCHAIN_TEST_TOOLS=1 (scripts/test.sh) it also installs what the tests need: chromium
-# (headless browser test of the `lrchain reproduce` report). The sanitizer build of scripts/test.sh
+# (headless browser test of the `lrchain reproduce` report), pytest, h5py and matplotlib (Python tests
+# and examples).
 # needs nothing more: g++'s AddressSanitizer and UndefinedBehaviorSanitizer runtimes (libasan8,
 # libubsan1) come with build-essential (g++-12 -> libgcc-12-dev) and report through their own
 # symbolizer.
@@ -14,9 +15,12 @@ PACKAGES=(build-essential cmake pkg-config git
   libginac-dev libcln-dev ginac-tools
   libeigen3-dev libboost-dev
   doctest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev
-  libomp-dev gnuplot-nox fonts-dejavu-core)
+  libomp-dev gnuplot-nox fonts-dejavu-core
+  libhdf5-dev libopenmpi-dev openmpi-bin
+  python3-dev pybind11-dev python3-pybind11 python3-numpy
+  libcmark-gfm-dev libcmark-gfm-extensions-dev)
 if [[ "${LRCHAIN_TEST_TOOLS:-0}" == 1 ]]; then
-  PACKAGES+=(chromium)
+  PACKAGES+=(chromium python3-pytest python3-h5py python3-matplotlib)
 fi
 
 missing=()
