@@ -4,7 +4,7 @@
 # With LRCHAIN_TEST_TOOLS=1 (scripts/test.sh) it also installs what the tests need: chromium
 # (headless browser test of the `lrchain reproduce` report), pytest, h5py and matplotlib (Python tests
 # and examples).
-# needs nothing more: g++'s AddressSanitizer and UndefinedBehaviorSanitizer runtimes (libasan8,
+# The sanitizer build of scripts/test.sh needs nothing more: g++'s AddressSanitizer and UndefinedBehaviorSanitizer runtimes (libasan8,
 # libubsan1) come with build-essential (g++-12 -> libgcc-12-dev) and report through their own
 # symbolizer.
 set -euo pipefail
