@@ -138,8 +138,14 @@ sim::RunControl make_control(ProgressBar& bar) {
 // Runs one experiment with SIGINT/SIGTERM handling, writes its JSON summary and outputs (also when
 // interrupted: the outputs so far, consistent with the checkpoint), prints the summary, then ends
 // like an interrupted run (130/143) or a blown-up one (3) where that applies.
+// How a run reports: the JSON summary on one line (--json), figures drawn or not (--no-figures).
+struct ReportStyle {
+  bool compact_json = false;
+  bool figures = true;
+};
+
 template <class Config, class Run, class Write>
-void run_and_report(const Config& cfg, const std::string& out, bool compact, Run run, Write write) {
+void run_and_report(const Config& cfg, const std::string& out, const ReportStyle& style, Run run, Write write) {
   const auto wall0 = std::chrono::steady_clock::now();
   sim::validate(cfg);  // every option, counts and memory: before anything is created
   check_output(cfg, out);
@@ -155,10 +161,10 @@ void run_and_report(const Config& cfg, const std::string& out, bool compact, Run
   j["t_start"] = r.summary.t_start;
   if (!out.empty()) {
     j["out"] = out;
-    j["figures"] = write(out, r, j);
+    j["figures"] = write(out, r, j, style.figures);
   }
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  std::cout << (compact ? j.dump() : j.dump(2)) << std::endl;
+  std::cout << (style.compact_json ? j.dump() : j.dump(2)) << std::endl;
   std::fflush(stdout);
   throw_if_interrupted(r.summary.interrupted, r.summary.t_end, r.summary.last_checkpoint_time,
                        cfg.checkpoint_file);
@@ -167,31 +173,37 @@ void run_and_report(const Config& cfg, const std::string& out, bool compact, Run
 
 // Checkpoints go to --checkpoint, else to OUT/checkpoint.bin when --out is given; one is written
 // at the end too when checkpoints were asked for (--checkpoint or --checkpoint-every).
-void run_bright_and_report(sim::BrightRunConfig cfg, const std::string& out, bool compact) {
+void run_bright_and_report(sim::BrightRunConfig cfg, const std::string& out, const ReportStyle& style) {
   cfg.checkpoint_at_end = !cfg.checkpoint_file.empty() || cfg.checkpoint_every > 0;
   cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
-  run_and_report(cfg, out, compact, [](const auto& c, const auto& k) { return sim::run_bright(c, k); },
-                 [](const std::string& d, const auto& r, const auto& j) { return sim::write_bright_outputs(d, r, j); });
+  run_and_report(cfg, out, style, [](const auto& c, const auto& k) { return sim::run_bright(c, k); },
+                 [](const std::string& d, const auto& r, const auto& j, bool f) { return sim::write_bright_outputs(d, r, j, f); });
 }
 
-void run_drive_and_report(sim::DriveRunConfig cfg, const std::string& out, bool compact) {
+void run_drive_and_report(sim::DriveRunConfig cfg, const std::string& out, const ReportStyle& style) {
   cfg.checkpoint_at_end = !cfg.checkpoint_file.empty() || cfg.checkpoint_every > 0;
   cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
-  run_and_report(cfg, out, compact, [](const auto& c, const auto& k) { return sim::run_drive(c, k); },
-                 [](const std::string& d, const auto& r, const auto& j) { return sim::write_drive_outputs(d, r, j); });
+  run_and_report(cfg, out, style, [](const auto& c, const auto& k) { return sim::run_drive(c, k); },
+                 [](const std::string& d, const auto& r, const auto& j, bool f) { return sim::write_drive_outputs(d, r, j, f); });
 }
 
-void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& out, bool compact) {
+void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& out, const ReportStyle& style) {
   cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
-  run_and_report(cfg, out, compact, [](const auto& c, const auto& k) { return sim::run_modulated(c, k); },
-                 [](const std::string& d, const auto& r, const auto& j) { return sim::write_modulated_outputs(d, r, j); });
+  run_and_report(cfg, out, style, [](const auto& c, const auto& k) { return sim::run_modulated(c, k); },
+                 [](const std::string& d, const auto& r, const auto& j, bool f) { return sim::write_modulated_outputs(d, r, j, f); });
 }
 
+// --stepper, --abs-tol, --rel-tol, --dt; with o.automatic_dt the fixed-step steppers choose their
+// step themselves unless --dt is given (the callback clears automatic_dt then).
 void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::string& stepper) {
-  app.add_option("--stepper", stepper, "rkf78, dopri5, symplectic (McLachlan 4), srkn11b, srkn14a (Blanes-Moan 6) or ss17 (McLachlan 8)");
+  app.add_option("--stepper", stepper, "rkf78, dopri5, symplectic (McLachlan 4), srkn11b, srkn14a (Blanes-Moan 6) or ss17 (McLachlan 8); default " + stepper);
   add_number(app, "--abs-tol", o.abs_tol, "absolute local error tolerance (default 1e-12)");
   add_number(app, "--rel-tol", o.rel_tol, "relative local error tolerance (default 1e-12)");
-  add_number(app, "--dt", o.dt, "initial step (adaptive) or fixed/maximal step (symplectic, srkn*), default 0.05");
+  add_number(app, "--dt", o.dt,
+             o.automatic_dt
+                 ? "largest step of the fixed-step steppers (default: chosen by a 2 T_b probe run so that the "
+                   "relative energy error stays below 2e-10), or the initial step of the adaptive ones (default 0.05)"
+                 : "initial step (adaptive) or fixed/maximal step (symplectic, srkn*), default 0.05");
 }
 
 }  // namespace
@@ -204,10 +216,12 @@ void register_simulate(CLI::App& app) {
       "experiment config (examples/*.toml). Times in the units of Sec. 2; data and figures go to --out.");
   auto config = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
-  auto compact = std::make_shared<bool>(false);
+  auto style = std::make_shared<ReportStyle>();
   sim_cmd->add_option("--config", *config, "run the experiment in this TOML file (examples/*.toml)");
   sim_cmd->add_option("--out", *out, "output directory for data and figures");
-  sim_cmd->add_flag("--json", *compact, "print the JSON summary on one line");
+  sim_cmd->add_flag("--json", style->compact_json, "print the JSON summary on one line");
+  sim_cmd->add_flag("--no-figures{false}", style->figures,
+                    "write the data and summary.json to --out but no figures (no gnuplot run)");
   auto restart = std::make_shared<std::string>();
   auto checkpoint = std::make_shared<std::string>();
   sim_cmd->add_option("--restart", *restart,
@@ -222,7 +236,7 @@ void register_simulate(CLI::App& app) {
 
   // simulate bright
   auto cfg = std::make_shared<sim::BrightRunConfig>();
-  auto stepper = std::make_shared<std::string>("rkf78");
+  auto stepper = std::make_shared<std::string>("srkn11b");
   auto snapshots = std::make_shared<std::vector<double>>();
   auto* bright = sim_cmd->add_subcommand(
       "bright", "Lattice run from the NLS bright breather (eq:focus_app, eq:focus_ini), Sec. 4.2");
@@ -252,11 +266,12 @@ void register_simulate(CLI::App& app) {
   bright->fallthrough();  // --out, --json may follow the subcommand
   bright->callback([=] {
     cfg->integrator.stepper = sim::parse_stepper(*stepper);
+    if (bright->count("--dt") > 0) cfg->integrator.automatic_dt = false;
     if (!snapshots->empty()) cfg->snapshot_periods = *snapshots;
     cfg->restart_file = *restart;
     cfg->checkpoint_file = *checkpoint;
     cfg->max_memory = *max_memory;
-    run_bright_and_report(*cfg, *out, *compact);
+    run_bright_and_report(*cfg, *out, *style);
   });
 
   // simulate drive (experiment 6, Sec. 4.3)
@@ -290,7 +305,7 @@ void register_simulate(CLI::App& app) {
     dcfg->restart_file = *restart;
     dcfg->checkpoint_file = *checkpoint;
     dcfg->max_memory = *max_memory;
-    run_drive_and_report(*dcfg, *out, *compact);
+    run_drive_and_report(*dcfg, *out, *style);
   });
 
   // simulate modulated (experiment 7, Sec. 5.1)
@@ -322,7 +337,7 @@ void register_simulate(CLI::App& app) {
     mcfg->restart_file = *restart;
     mcfg->checkpoint_file = *checkpoint;
     mcfg->max_memory = *max_memory;
-    run_modulated_and_report(*mcfg, *out, *compact);
+    run_modulated_and_report(*mcfg, *out, *style);
   });
 
   sim_cmd->callback([=] {
@@ -335,7 +350,7 @@ void register_simulate(CLI::App& app) {
       dc.run.restart_file = *restart;
       dc.run.checkpoint_file = *checkpoint;
       dc.run.max_memory = *max_memory;
-      run_drive_and_report(dc.run, !out->empty() ? *out : dc.out_dir, *compact);
+      run_drive_and_report(dc.run, !out->empty() ? *out : dc.out_dir, *style);
       return;
     }
     if (kind == "modulated") {
@@ -343,7 +358,7 @@ void register_simulate(CLI::App& app) {
       mc.run.restart_file = *restart;
       mc.run.checkpoint_file = *checkpoint;
       mc.run.max_memory = *max_memory;
-      run_modulated_and_report(mc.run, !out->empty() ? *out : mc.out_dir, *compact);
+      run_modulated_and_report(mc.run, !out->empty() ? *out : mc.out_dir, *style);
       return;
     }
     sim::ExperimentConfig ec = sim::load_experiment_config(*config);
@@ -351,7 +366,7 @@ void register_simulate(CLI::App& app) {
     ec.bright.restart_file = *restart;
     ec.bright.checkpoint_file = *checkpoint;
     ec.bright.max_memory = *max_memory;
-    if (ec.experiment == "bright") run_bright_and_report(ec.bright, dir, *compact);
+    if (ec.experiment == "bright") run_bright_and_report(ec.bright, dir, *style);
   });
 }
 

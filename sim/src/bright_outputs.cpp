@@ -18,7 +18,15 @@ nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
   j["N"] = c.N;
   j["periods"] = c.periods;
   j["ansatz_ends"] = c.ansatz_ends;
-  j["integrator"] = integrator_json(c.integrator);
+  j["integrator"] = integrator_json(s.integrator);
+  j["step_choice"] = nullptr;
+  if (s.step_choice)
+    j["step_choice"] = {{"method", "energy-error probe"},
+                        {"steps_per_sample", s.step_choice->steps_per_sample},
+                        {"largest_linear_frequency", s.step_choice->largest_linear_frequency},
+                        {"probe_energy_error", s.step_choice->probe_energy_error},
+                        {"probe_runs", s.step_choice->probe_runs},
+                        {"probe_seconds", s.step_choice->probe_seconds}};
   j["ansatz"] = {{"omega", s.omega},   {"omega_b", s.omega_b},  {"T_b", s.period},
                  {"group_velocity", s.group_velocity},          {"curvature", s.curvature},
                  {"h_tilde", s.h_tilde}, {"M1", s.M1},          {"M2", s.M2},
@@ -117,10 +125,11 @@ unset multiplot
 
 std::vector<std::string> write_bright_outputs(const std::filesystem::path& dir,
                                               const BrightRunResult& r,
-                                              const nlohmann::json& summary) {
+                                              const nlohmann::json& summary, bool draw_figures) {
   return write_run_outputs(dir, r.record, summary.dump(2),
                            {{"snapshots.gp", snapshots_script(r), "snapshots.png"},
-                            {"energy.gp", energy_script(r), "energy.png"}});
+                            {"energy.gp", energy_script(r), "energy.png"}},
+                           draw_figures);
 }
 
 }  // namespace lrchain::sim

@@ -354,11 +354,11 @@ set ylabel "du_n/dt"
 }  // namespace
 
 std::vector<std::string> write_drive_outputs(const std::string& dir, const DriveRunResult& r,
-                                             const nlohmann::json& summary) {
+                                             const nlohmann::json& summary, bool draw_figures) {
   std::vector<FigureScript> figures = {{"energy.gp", drive_energy_script(r), "energy.png"}};
   if (!r.record.snapshots.empty())
     figures.push_back({"snapshots.gp", drive_snapshots_script(r), "snapshots.png"});
-  return write_run_outputs(dir, r.record, summary.dump(2), figures);
+  return write_run_outputs(dir, r.record, summary.dump(2), figures, draw_figures);
 }
 
 }  // namespace lrchain::sim

@@ -363,11 +363,11 @@ set ylabel "du_n/dt"
 }  // namespace
 
 std::vector<std::string> write_modulated_outputs(const std::string& dir, const ModulatedRunResult& r,
-                                                 const nlohmann::json& summary) {
+                                                 const nlohmann::json& summary, bool draw_figures) {
   std::vector<FigureScript> figures = {{"energy.gp", modulated_energy_script(r), "energy.png"}};
   if (!r.record.snapshots.empty())
     figures.push_back({"snapshots.gp", modulated_snapshots_script(r), "snapshots.png"});
-  return write_run_outputs(dir, r.record, summary.dump(2), figures);
+  return write_run_outputs(dir, r.record, summary.dump(2), figures, draw_figures);
 }
 
 }  // namespace lrchain::sim

@@ -219,11 +219,11 @@ void Figures::finish(nlohmann::json& j) {
 
 std::vector<std::string> write_run_outputs(const fs::path& dir, const RunRecord& record,
                                            const std::string& summary_json,
-                                           const std::vector<FigureScript>& figures) {
+                                           const std::vector<FigureScript>& figures, bool draw_figures) {
   ensure_directory(dir);
   write_record(dir, record);
   Figures drawing(dir);
-  drawing.draw_all(figures);
+  if (draw_figures) drawing.draw_all(figures);
   nlohmann::json summary = nlohmann::json::parse(summary_json);
   drawing.finish(summary);
   write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");

@@ -42,7 +42,9 @@ std::shared_ptr<const TableSchema> integrator_schema(const IntegratorOptions& d,
               "absolute local error tolerance (adaptive steppers)"),
        number("rel_tol", NumberRange::between(0, 1, false, true), number_text(d.rel_tol),
               "relative local error tolerance (adaptive steppers)"),
-       number("dt", NumberRange::positive(), number_text(d.dt),
+       number("dt", NumberRange::positive(),
+              d.automatic_dt ? "automatic for fixed-step steppers (energy-error probe), " + number_text(d.dt) + " for adaptive"
+                             : number_text(d.dt),
               "initial step (adaptive) or largest step (fixed-step steppers)")},
       std::nullopt});
 }
@@ -79,7 +81,7 @@ void read_common(const CheckedTable& root, Params& p, IntegratorOptions& o, std:
     if (i->read("stepper", stepper)) o.stepper = parse_stepper(stepper);
     i->read("abs_tol", o.abs_tol);
     i->read("rel_tol", o.rel_tol);
-    i->read("dt", o.dt);
+    if (i->read("dt", o.dt)) o.automatic_dt = false;
   }
   if (auto od = root.table("output")) od->read("dir", out_dir);
 }

@@ -122,7 +122,8 @@ TEST_CASE("the lattice-run estimate bounds what a bright run stores and writes")
   // A real run (N = 100, 4 T_b): the record it keeps in memory and the files it writes must lie
   // below the estimate, and within a factor 4 of it (the estimate is for refusing absurd jobs,
   // not a loose guess).
-  const BrightRunConfig c = small_bright();
+  BrightRunConfig c = small_bright();
+  c.integrator = IntegratorOptions{};  // rkf78: the stepper with the most stage vectors
   const ResourceEstimate e = estimate_resources(c);
   const BrightRunResult r = run_bright(c);
   double stored = double(r.record.series.data.size()) * 8;

@@ -12,9 +12,10 @@ namespace lrchain::sim {
 
 nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s);
 
-// Writes data, summary.json (= `summary`) and figures; returns the list of figure files rendered.
+// Writes data, summary.json (= `summary`) and, with draw_figures, the figures; returns the list of
+// figure files rendered.
 std::vector<std::string> write_bright_outputs(const std::filesystem::path& dir,
                                               const BrightRunResult& r,
-                                              const nlohmann::json& summary);
+                                              const nlohmann::json& summary, bool draw_figures = true);
 
 }  // namespace lrchain::sim

@@ -13,6 +13,7 @@
 
 #include "lrchain/dispersion.hpp"
 #include "lrchain/params.hpp"
+#include "lrchain/sim/automatic_step.hpp"
 #include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/sim/run_control.hpp"
@@ -40,7 +41,9 @@ struct BrightRunConfig {
   double error_window_end = -1;     // also report max E_x, E_y over t <= this (if > 0)
   bool ansatz_ends = false;
   TrailingStructureOptions trailing;  // secondary structure behind the breather (fit_start > 0)
-  IntegratorOptions integrator;
+  // Default: srkn11b with the step chosen by a 2 T_b probe run (automatic_step.hpp).
+  IntegratorOptions integrator{.stepper = StepperKind::srkn11b, .automatic_dt = true};
+  double step_energy_error_target = 2e-10;  // the automatic step's target (5x below 1e-9)
   double max_memory = 0;  // bytes the run may use (--max-memory); 0: the machine's available memory
   double checkpoint_every = 0;  // T_b between checkpoints (0: only at an interrupt)
   std::string checkpoint_file;  // where checkpoints go (empty: none)
@@ -74,6 +77,8 @@ struct BrightRunSummary {
   TrailingStructure trailing;             // if config.trailing.fit_start > 0
   IntegrationStats stats;
   double solve_seconds = 0;
+  IntegratorOptions integrator;           // as used: with the automatic step resolved
+  std::optional<StepChoice> step_choice;  // how the step was chosen, when automatic
 };
 
 struct BrightRunResult {

@@ -82,6 +82,6 @@ nlohmann::json to_json(const DriveRunConfig& c, const DriveRunSummary& s);
 // Writes data, summary.json and figures (energy space-time like Fig. 14 left, velocity snapshots
 // like Fig. 15); returns the figure files rendered.
 std::vector<std::string> write_drive_outputs(const std::string& dir, const DriveRunResult& r,
-                                             const nlohmann::json& summary);
+                                             const nlohmann::json& summary, bool draw_figures = true);
 
 }  // namespace lrchain::sim

@@ -49,6 +49,9 @@ struct IntegratorOptions {
   double abs_tol = 1e-12;  // absolute local error tolerance (adaptive steppers)
   double rel_tol = 1e-12;  // relative local error tolerance (adaptive steppers)
   double dt = 0.05;        // initial step (adaptive) or fixed step (symplectic)
+  // Fixed-step steppers: the run chooses dt itself from a probe of the energy error
+  // (automatic_step.hpp) and `dt` is ignored; set where the user gave no step.
+  bool automatic_dt = false;
 };
 void validate(const IntegratorOptions& o);
 // The fixed-step steppers take about `duration / dt` steps: refuses (InvalidParameter("dt")) a dt

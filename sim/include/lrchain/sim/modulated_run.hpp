@@ -78,6 +78,6 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
 
 nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s);
 std::vector<std::string> write_modulated_outputs(const std::string& dir, const ModulatedRunResult& r,
-                                                 const nlohmann::json& summary);
+                                                 const nlohmann::json& summary, bool draw_figures = true);
 
 }  // namespace lrchain::sim

@@ -79,9 +79,10 @@ class Figures {
 
 // The output directory of a run: the record (write_record), the figures (Figures::draw_all) and
 // summary.json (`summary_json`, a JSON object, with "figures" and "figures_skipped" added).
-// Returns the PNGs drawn, in the order given.
+// Without draw_figures (--no-figures) neither scripts nor PNGs are written. Returns the PNGs
+// drawn, in the order given.
 std::vector<std::string> write_run_outputs(const std::filesystem::path& dir, const RunRecord& record,
                                            const std::string& summary_json,
-                                           const std::vector<FigureScript>& figures);
+                                           const std::vector<FigureScript>& figures, bool draw_figures = true);
 
 }  // namespace lrchain::sim
