@@ -83,9 +83,10 @@ std::string row_html(const Comparison& r, const std::string& id, const std::stri
   if (!r.computed()) note = "not computed" + (note.empty() ? "" : ": " + note);
   if (r.qualitative) note = "qualitative check" + (note.empty() ? "" : ": " + note);
   return fmt::format(
-      "<tr id=\"{}\" class=\"{}\"><td>{}</td><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
+      "<tr id=\"{}\" class=\"{}\"><td>{}</td><td>{}</td><td{}>{}</td><td class=\"num\">{}</td>"
       "<td class=\"num\">{}</td><td class=\"tol\">{}</td><td class=\"status\">{}</td><td>{}</td></tr>\n",
-      id, to_string(s), rich_text(r.quantity), rich_text(r.where), rich_text(r.paper_text), number(r.ours), diff,
+      id, to_string(s), rich_text(r.quantity), rich_text(r.where), r.qualitative ? "" : " class=\"num\"",
+      rich_text(r.paper_text), number(r.ours), diff,
       rich_text(r.tolerance_text()), status, note);
 }
 
