@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "lrchain/provenance_json.hpp"
 #include "lrchain/coefficients.hpp"
 #include "lrchain/errors.hpp"
 #include "options.hpp"
@@ -105,7 +106,11 @@ void register_coeffs(CLI::App& app) {
     if (opts->branch.empty()) throw InvalidParameter("branch", "is required: 'optical' or 'acoustic'");
     const Branch b = parse_branch(opts->branch);
     const NlsCoefficients c = coefficients(opts->params, b, opts->theta);
-    if (opts->json) std::printf("%s\n", to_json(c).dump().c_str());
+    if (opts->json) {
+      nlohmann::json j = to_json(c);
+      j["provenance"] = provenance_json();
+      std::printf("%s\n", j.dump().c_str());
+    }
     else print_text(c, b, opts->params);
   });
 }

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "lrchain/provenance_json.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/checked_number.hpp"
 #include "lrchain/errors.hpp"
@@ -166,7 +167,8 @@ json base_json(const DarkArgs& a, const DarkBreatherAnsatz& ansatz, const Newton
   return {{"rho", a.p.rho}, {"kappa", a.p.kappa}, {"delta0", a.p.delta0}, {"alpha", a.p.alpha},
           {"edge", a.edge}, {"center", a.center}, {"sites", a.sites}, {"mode", a.mode},
           {"omega_b", a.omega_b}, {"omega_edge", ansatz.omega},
-          {"newton_converged", newton.converged}, {"newton_residuals", hist}, {"failure", nullptr}};
+          {"newton_converged", newton.converged}, {"newton_residuals", hist}, {"failure", nullptr},
+          {"provenance", provenance_json()}};
 }
 json base_json(const DarkArgs& a, const Solved& s) { return base_json(a, s.ansatz, s.newton); }
 

@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/exit_codes.hpp"
+#include "lrchain/provenance.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -14,6 +15,7 @@ int main(int argc, char** argv) {
       "All quantities are dimensionless as in Sec. 2 of the paper (time in units of\n"
       "sqrt(m1/(A R^(alpha-1))), lengths in units of R). Numbers accept 0.25, 1e-3, 1/3, 3*pi/5."};
   app.require_subcommand(1);
+  app.set_version_flag("--version", lrchain::version_line(), "print the lrchain version and git commit, and exit");
   app.footer(
       "Exit codes: 0 success; 1 another error (e.g. a file could not be written); 2 bad input or a\n"
       "job too large for the machine (one line on stderr names the option; nothing written);\n"

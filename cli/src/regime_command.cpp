@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "lrchain/provenance_json.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/boundary_curves.hpp"
 #include "lrchain/regime/focusing_intervals.hpp"
@@ -149,6 +150,7 @@ void run_intervals(const IntervalsArgs& a) {
               {"intervals", intervals},
               {"boundaries", roots},
               {"theta_tolerance", 1e-12}};
+  out["provenance"] = provenance_json();
   std::cout << out.dump(2) << '\n';
 }
 
@@ -459,6 +461,7 @@ void run_map(const MapArgs& a) {
     throw InvalidParameter("plane", "must be 'theta-rho' or 'delta0-omega', got '" + a.plane + "'");
   out["out"] = fs::absolute(dir).string();
   figures.finish(out);
+  out["provenance"] = provenance_json();
   std::cout << out.dump(2) << '\n';
 }
 
@@ -492,7 +495,7 @@ void run_thresholds(int scan_points) {
                          {"events", ev},
                          {"seconds", secs}});
   }
-  std::cout << json{{"scenarios", scenarios}}.dump(2) << '\n';
+  std::cout << json{{"scenarios", scenarios}, {"provenance", provenance_json()}}.dump(2) << '\n';
 }
 
 }  // namespace

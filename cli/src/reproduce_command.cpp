@@ -5,7 +5,6 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,15 +14,13 @@
 
 #include "commands.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/output_lock.hpp"
 #include "report/html_report.hpp"
 #include "report/lrchain_process.hpp"
 #include "report/steps.hpp"
 
-#ifndef LRCHAIN_VERSION
-#define LRCHAIN_VERSION "unknown"
-#endif
 #ifndef LRCHAIN_SOURCE_DIR
 #define LRCHAIN_SOURCE_DIR ""
 #endif
@@ -55,17 +52,10 @@ fs::path locate(const std::string& given, const std::string& rel, const std::str
   throw InvalidParameter(option, "cannot find " + rel + " (give " + option + ")");
 }
 
-std::string now_text() {
-  const std::time_t t = std::time(nullptr);
-  char buf[64];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S %Z", std::localtime(&t));
-  return buf;
-}
-
 // A report directory is recognised by this marker file, which reproduce writes first; DIR and
 // DIR.partial are removed only when they carry it.
 constexpr const char* report_marker = ".lrchain-report";
-constexpr const char* marker_text = "lrchain report\nversion " LRCHAIN_VERSION "\n";
+constexpr const char* marker_text = "lrchain report\nversion " LRCHAIN_VERSION_STRING "\n";
 
 bool has_report_marker(const fs::path& dir) {
   std::ifstream in(dir / report_marker);
@@ -153,17 +143,15 @@ void run_reproduce(const ReproduceArgs& a) {
   ctx.child_threads = std::max(1, omp_get_num_procs() / jobs);
   ReportInfo info;
   info.mode = a.full ? "full" : "quick";
-  info.started = now_text();
+  info.provenance = current_provenance();
   try {
     const fs::path errata = locate(a.errata, "docs/paper-errata.md", "errata");
     std::ifstream in(errata);
     std::stringstream text;
     text << in.rdbuf();
     info.errata_markdown = text.str();
-    info.errata_source = errata.string();
   } catch (const InvalidParameter&) {
     if (!a.errata.empty()) throw;
-    info.errata_source = "the source tree and share/lrchain/docs";
   }
 
   ctx.out = partial;
@@ -202,9 +190,10 @@ void run_reproduce(const ReproduceArgs& a) {
 #pragma omp critical(reproduce_progress)
     {
       ++done;
-      std::fprintf(stderr, "[%2d/%zu] %6.1f s  %-20s %s in %.1f s: %d pass, %d deviates, %d errata%s%s\n", done,
-                   steps.size(), elapsed(), step.id.c_str(), section.failed ? "FAILED" : "done", section.seconds,
-                   c.pass, c.deviates, c.errata, section.failed ? " - " : "", section.failed ? section.error.c_str() : "");
+      std::fprintf(stderr, "[%2d/%zu] %6.1f s  %-20s %s in %.1f s: %d pass, %d deviates, %d erratum, %d unresolved%s%s\n",
+                   done, steps.size(), elapsed(), step.id.c_str(), section.failed ? "FAILED" : "done", section.seconds,
+                   c.pass, c.deviates, c.erratum, c.unresolved, section.failed ? " - " : "",
+                   section.failed ? section.error.c_str() : "");
       sections[order[k]] = std::move(section);
     }
   }
@@ -236,15 +225,15 @@ void run_reproduce(const ReproduceArgs& a) {
       if (!fs::exists(out / f.file)) missing.push_back(f.file);
     const Counts sc = count({s});
     steps_json.push_back({{"id", s.id}, {"seconds", s.seconds}, {"failed", s.failed}, {"pass", sc.pass},
-                          {"deviates", sc.deviates}, {"errata", sc.errata}});
+                          {"deviates", sc.deviates}, {"erratum", sc.erratum}, {"unresolved", sc.unresolved}});
   }
   const nlohmann::json summary = {{"report", (out / "index.html").string()}, {"mode", info.mode},
-                                  {"pass", c.pass}, {"deviates", c.deviates}, {"errata", c.errata},
+                                  {"pass", c.pass}, {"deviates", c.deviates}, {"erratum", c.erratum}, {"unresolved", c.unresolved},
                                   {"failed_steps", failed}, {"figures_missing", missing}, {"seconds", info.total_seconds},
-                                  {"steps", steps_json}};
+                                  {"steps", steps_json}, {"provenance", provenance_json(info.provenance)}};
   std::printf("%s\n", summary.dump(2).c_str());
-  std::fprintf(stderr, "report: %s (%d pass, %d deviates, %d errata) in %.1f s\n", (out / "index.html").c_str(), c.pass,
-               c.deviates, c.errata, info.total_seconds);
+  std::fprintf(stderr, "report: %s (%d pass, %d deviates, %d erratum, %d unresolved) in %.1f s\n",
+               (out / "index.html").c_str(), c.pass, c.deviates, c.erratum, c.unresolved, info.total_seconds);
   if (failed > 0) throw std::runtime_error(fmt::format("{} step(s) failed; see the report", failed));
 }
 
@@ -255,7 +244,7 @@ void register_reproduce(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "reproduce",
       "Run every computation of the paper and write a static HTML report DIR/index.html: each number the paper "
-      "quotes next to ours (pass / deviates / errata) and each figure with the paper figure it corresponds to. "
+      "quotes next to ours (pass / deviates / erratum / unresolved) and each figure with the paper figure it corresponds to. "
       "The report is written to DIR.partial and renamed to DIR when complete.");
   auto* quick = sub->add_flag("--quick", a->quick,
                               "smaller lattices and shorter runs where that keeps the conclusion (default; ~2 min on 2 cores)");

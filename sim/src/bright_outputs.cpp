@@ -1,5 +1,6 @@
 // Output files and gnuplot figures of a bright-breather run (Figs. 6-13 style).
 #include "lrchain/sim/bright_outputs.hpp"
+#include "lrchain/provenance_json.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -12,6 +13,7 @@ namespace lrchain::sim {
 nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
   nlohmann::json j;
   j["experiment"] = "bright";
+  j["provenance"] = provenance_json();
   j["params"] = params_json(c.params);
   j["branch"] = std::string(to_string(c.branch));
   j["theta"] = c.theta;

@@ -1,5 +1,6 @@
 // Experiment 6 (Sec. 4.3): boundary-driven chain, clamped far end; outputs like Figs. 14, 15.
 #include "lrchain/sim/drive_run.hpp"
+#include "lrchain/provenance_json.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -276,6 +277,7 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
 nlohmann::json to_json(const DriveRunConfig& c, const DriveRunSummary& s) {
   nlohmann::json j;
   j["experiment"] = "drive";
+  j["provenance"] = provenance_json();
   j["params"] = params_json(c.params);
   j["beads"] = c.beads;
   j["drive"] = {{"amplitude", c.amplitude}, {"omega0", c.omega0}, {"ramp_rate", c.ramp_rate},

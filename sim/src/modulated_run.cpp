@@ -1,6 +1,7 @@
 // Experiment 7 (Sec. 5.1): modulated acoustic wave eq:cimi on the periodic chain, long run with
 // checkpoint/restart; outputs like Fig. 16.
 #include "lrchain/sim/modulated_run.hpp"
+#include "lrchain/provenance_json.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -288,6 +289,7 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
 nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s) {
   nlohmann::json j;
   j["experiment"] = "modulated";
+  j["provenance"] = provenance_json();
   j["name"] = c.name;
   j["params"] = params_json(c.params);
   j["N"] = c.N;

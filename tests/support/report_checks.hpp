@@ -1,7 +1,8 @@
 #pragma once
 // Checks of a report written by `lrchain reproduce` (used by the fast and validation tests):
-// every linked file exists, every fragment exists in its page, and headless Chromium renders
-// index.html with every image loaded (the report marks each <img> data-load="ok"/"broken").
+// every linked file exists, every fragment exists in its page, headless Chromium renders the
+// pages with every image loaded (the report marks each <img> data-load="ok"/"broken"), every
+// table has one column count, and no page names a directory of the build.
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -77,6 +78,51 @@ inline BrowserResult render_in_chromium(const std::filesystem::path& page, const
   r.loaded = count("data-load=\"ok\"");
   r.broken = count("data-load=\"broken\"");
   return r;
+}
+
+// Tables of a rendered page whose rows do not all have the same number of cells (<td>/<th>;
+// the report uses no colspan): "table 3: rows with 3, 12 cells" for each such table.
+inline std::vector<std::string> ragged_tables(const std::string& html) {
+  std::vector<std::string> ragged;
+  const std::regex table(R"(<table[^>]*>([\s\S]*?)</table>)"), row(R"(<tr[^>]*>([\s\S]*?)</tr>)"),
+      cell(R"(<t[dh][\s>])");
+  int index = 0;
+  for (std::sregex_iterator t(html.begin(), html.end(), table), end; t != end; ++t) {
+    ++index;
+    const std::string body = (*t)[1];
+    std::set<long> widths;
+    for (std::sregex_iterator r(body.begin(), body.end(), row); r != end; ++r) {
+      const std::string cells = (*r)[1];
+      widths.insert(std::distance(std::sregex_iterator(cells.begin(), cells.end(), cell), std::sregex_iterator()));
+    }
+    if (widths.size() > 1) {
+      std::string text = "table " + std::to_string(index) + ": rows with";
+      for (long w : widths) text += " " + std::to_string(w);
+      ragged.push_back(text + " cells");
+    }
+  }
+  return ragged;
+}
+
+// The directories of the build that a page must not name: the source tree (which holds the
+// build directory here) and the directory of the lrchain executable under test.
+inline std::vector<std::string> build_paths_in(const std::string& html) {
+  std::vector<std::string> found;
+  std::vector<std::string> paths = {LRCHAIN_SOURCE_DIR};
+#ifdef LRCHAIN_CLI
+  paths.push_back(std::filesystem::path(LRCHAIN_CLI).parent_path().string());
+#endif
+  for (const auto& p : paths)
+    if (!p.empty() && html.find(p) != std::string::npos) found.push_back(p);
+  return found;
+}
+
+// LaTeX labels shown as text (outside the title attribute that keeps them as a tooltip).
+inline std::vector<std::string> visible_latex_labels(const std::string& html) {
+  std::vector<std::string> found;
+  const std::regex label(R"((^|[^"\w])((?:eq|fig):[A-Za-z][\w:]*))");
+  for (std::sregex_iterator it(html.begin(), html.end(), label), end; it != end; ++it) found.push_back((*it)[2]);
+  return found;
 }
 
 }  // namespace lrchain::test

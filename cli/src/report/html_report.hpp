@@ -6,16 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "lrchain/provenance.hpp"
 #include "report.hpp"
 
 namespace lrchain::report {
 
 struct ReportInfo {
   std::string mode;            // "quick" or "full"
-  std::string started;         // local date and time
   double total_seconds = 0;
   std::string errata_markdown; // contents of docs/paper-errata.md ("" if not found)
-  std::string errata_source;   // where it was read from
+  Provenance provenance;       // which lrchain, machine and command line produced the report
 };
 
 // Writes dir/index.html and dir/errata.html (atomically, each via a temporary name).

@@ -1,7 +1,8 @@
 #pragma once
-// The reproduction report of `lrchain reproduce` (issue 6): per paper section, the numbers the
-// paper quotes next to ours (pass / deviates / errata) and the figures with captions naming the
-// paper figure they correspond to. Plain data; html_report.hpp writes it.
+// The reproduction report of `lrchain reproduce`: per paper section, the numbers the paper quotes
+// next to ours (pass / deviates / erratum / unresolved), each with its tolerance and where that
+// tolerance comes from, and the figures with captions naming the paper figure they correspond to.
+// Plain data; html_report.hpp writes it.
 #include <cmath>
 #include <limits>
 #include <string>
@@ -11,8 +12,16 @@ namespace lrchain::report {
 
 inline constexpr double not_computed = std::numeric_limits<double>::quiet_NaN();
 
-enum class Status { pass, deviates, errata };
+// pass: ours agrees within the tolerance (or satisfies the bound).
+// deviates: ours disagrees and the disagreement is not documented (or ours was not computed).
+// erratum: ours disagrees and an independent computation, documented on the errata page, proves
+//   the printed value wrong.
+// unresolved: ours disagrees, the errata page documents what is known, the cause is not proven.
+enum class Status { pass, deviates, erratum, unresolved };
 const char* to_string(Status s);
+
+// How a documented disagreement is classified (see Status).
+enum class Disagreement { erratum, unresolved };
 
 // How the paper states a number: a value (with an absolute tolerance from its rounding or from
 // "approximately"), or a bound (ours must be below / above it).
@@ -25,14 +34,21 @@ struct Comparison {
   double paper = not_computed;
   double ours = not_computed;
   double tolerance = 0;       // absolute, for Claim::equals
+  std::string tolerance_source;  // where the tolerance comes from ("" : inferred from paper_text)
   Claim claim = Claim::equals;
+  // The paper states a quality in words ("optical breather", "set in motion"); `paper` is the
+  // criterion we test it with, and ours - paper is not a difference from the paper.
+  bool qualitative = false;
   std::string errata_anchor;  // start of the errata heading that explains a disagreement
+  Disagreement disagreement = Disagreement::unresolved;
   std::string note;           // how ours was computed, or why it differs
 
   bool computed() const { return std::isfinite(ours); }
   double difference() const { return ours - paper; }
   bool agrees() const;
   Status status() const;
+  // The tolerance as a reader sees it, with its source: "±5e-05 (rounding of 2.4495)".
+  std::string tolerance_text() const;
 };
 
 struct Figure {
@@ -55,7 +71,8 @@ struct Section {
 };
 
 struct Counts {
-  int pass = 0, deviates = 0, errata = 0;
+  int pass = 0, deviates = 0, erratum = 0, unresolved = 0;
+  int rows() const { return pass + deviates + erratum + unresolved; }
 };
 Counts count(const std::vector<Section>& sections);
 
@@ -65,8 +82,7 @@ namespace lrchain::report {
 
 // A row for a value the paper prints: pass when |ours - paper| <= tolerance.
 inline Comparison equals_row(std::string quantity, std::string where, std::string paper_text,
-                             double paper, double ours, double tolerance, std::string note = {},
-                             std::string errata = {}) {
+                             double paper, double ours, double tolerance, std::string note = {}) {
   Comparison c;
   c.quantity = std::move(quantity);
   c.where = std::move(where);
@@ -75,18 +91,52 @@ inline Comparison equals_row(std::string quantity, std::string where, std::strin
   c.ours = ours;
   c.tolerance = tolerance;
   c.note = std::move(note);
-  c.errata_anchor = std::move(errata);
   return c;
 }
 
 // A row for a bound the paper states ("errors remain less than 3.5 %"): pass when ours < bound.
 inline Comparison below_row(std::string quantity, std::string where, std::string paper_text,
-                            double bound, double ours, std::string note = {},
-                            std::string errata = {}) {
+                            double bound, double ours, std::string note = {}) {
   Comparison c = equals_row(std::move(quantity), std::move(where), std::move(paper_text), bound,
-                            ours, 0, std::move(note), std::move(errata));
+                            ours, 0, std::move(note));
   c.claim = Claim::below;
   return c;
 }
+
+// Marks a row whose disagreement is proven wrong in the paper by the errata page's heading
+// starting with `anchor`.
+inline Comparison erratum(Comparison c, std::string anchor) {
+  c.errata_anchor = std::move(anchor);
+  c.disagreement = Disagreement::erratum;
+  return c;
+}
+
+// Marks a row whose disagreement the errata page (heading starting with `anchor`) documents
+// without a proven cause.
+inline Comparison unresolved(Comparison c, std::string anchor) {
+  c.errata_anchor = std::move(anchor);
+  c.disagreement = Disagreement::unresolved;
+  return c;
+}
+
+// A row checking a statement the paper makes in words with the numeric criterion `claim` against
+// `criterion` (e.g. y/x < 0 for "optical breather").
+inline Comparison qualitative_row(std::string quantity, std::string where, std::string paper_text, Claim claim,
+                                  double criterion, double ours, std::string note = {}) {
+  Comparison c = equals_row(std::move(quantity), std::move(where), std::move(paper_text), criterion, ours, 0,
+                            std::move(note));
+  c.claim = claim;
+  c.qualitative = true;
+  return c;
+}
+
+// Sets where the tolerance of a row comes from.
+inline Comparison with_tolerance_source(Comparison c, std::string source) {
+  c.tolerance_source = std::move(source);
+  return c;
+}
+
+// Half a unit in the last printed decimal of a number as printed ("1.892" -> 5e-4, "~ 0.23" -> 5e-3).
+double rounding_of(const std::string& printed);
 
 }  // namespace lrchain::report

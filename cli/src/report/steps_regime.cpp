@@ -27,18 +27,12 @@ double closest_end(const std::vector<FocusingInterval>& iv, double target) {
   return best;
 }
 
-// Half a unit in the last printed decimal of `text` ("1.892" -> 5e-4).
-double rounding_of(const std::string& text) {
-  const auto dot = text.find('.');
-  const int decimals = dot == std::string::npos ? 0 : static_cast<int>(text.size() - dot - 1);
-  return 0.5 * std::pow(10.0, -decimals);
-}
-
 Comparison interval_row(const std::string& quantity, const std::string& where, const std::string& printed,
-                        const std::vector<FocusingInterval>& iv, const std::string& errata = {}) {
+                        const std::vector<FocusingInterval>& iv, bool printed_value_is_wrong = false) {
   const double paper = std::stod(printed);
-  return equals_row(quantity, where, printed, paper, closest_end(iv, paper), rounding_of(printed),
-                    "end of a focusing interval, TOMS 748 to 1e-12", errata);
+  Comparison row = equals_row(quantity, where, printed, paper, closest_end(iv, paper), rounding_of(printed),
+                              "end of a focusing interval, TOMS 748 to 1e-12");
+  return printed_value_is_wrong ? erratum(row, "Regime maps") : row;
 }
 
 Section regime_section(const StepContext& ctx) {
@@ -46,7 +40,7 @@ Section regime_section(const StepContext& ctx) {
   s.id = "regime";
   s.title = "Focusing and defocusing regimes (Sec. 3.3, Figs. 2, 4, 5)";
   s.intro = "Focusing where omega'' h_tilde < 0. Interval ends are zeros of omega'', of the "
-            "numerator of h_tilde or of the non-resonance factors (eq:nonresonance1/2), located "
+            "numerator of h_tilde or of the non-resonance factors (eq:nonresonance1 and eq:nonresonance2), located "
             "by TOMS 748; the special parameter values are codimension-two points of that "
             "structure along the paper's parameter lines (lrchain regime thresholds).";
   const auto opt13 = focusing_intervals(with(1.0 / 3.0), Branch::optical);
@@ -55,13 +49,12 @@ Section regime_section(const StepContext& ctx) {
   const auto ac032 = focusing_intervals(with(0.32, 0.27), Branch::acoustic);
   s.rows.push_back(interval_row("theta_c: omega_+''(theta_c) = 0, rho = 1/3", "Sec. 4.2", "1.892", opt13));
   s.rows.push_back(interval_row("acoustic focusing interval, lower end, rho = 1/3", "Sec. 4.2", "1.7841", ac13));
-  s.rows.push_back(interval_row("acoustic focusing interval, upper end, rho = 1/3", "Secs. 3.3, 4.2", "1.949", ac13,
-                                "Regime maps"));
+  s.rows.push_back(interval_row("acoustic focusing interval, upper end, rho = 1/3", "Secs. 3.3, 4.2", "1.949", ac13, true));
   s.rows.push_back(interval_row("optical focusing interval (0, .), rho = 10", "Sec. 4.3", "0.3681", opt10));
   s.rows.push_back(interval_row("optical focusing interval (., 2.4389), rho = 10, lower end", "Sec. 4.3", "1.2263", opt10));
   s.rows.push_back(interval_row("optical focusing interval, upper end, rho = 10", "Sec. 4.3", "2.4389", opt10));
   s.rows.push_back(interval_row("acoustic focusing interval, lower end, rho = 0.32, delta0 = 0.27", "Sec. 5.1", "1.888",
-                                ac032, "Regime maps"));
+                                ac032, true));
   s.rows.push_back(interval_row("acoustic focusing interval, upper end, rho = 0.32, delta0 = 0.27", "Sec. 5.1", "2.003", ac032));
 
   const std::vector<std::pair<double, std::string>> printed = {
@@ -82,8 +75,9 @@ Section regime_section(const StepContext& ctx) {
         note = fmt::format("{} of {} at theta = {:.5f}; {} -> {} focusing intervals",
                            to_string(m.event.kind), m.event.causes.empty() ? "" : to_string(m.event.causes.front()),
                            m.event.theta, m.event.intervals_before, m.event.intervals_after);
-      s.rows.push_back(equals_row(quantity, "Sec. 3.3", text, m.paper, m.found ? m.event.value : not_computed, tol,
-                                  note, m.paper == 15.335 ? "Regime maps" : ""));
+      const Comparison row =
+          equals_row(quantity, "Sec. 3.3", text, m.paper, m.found ? m.event.value : not_computed, tol, note);
+      s.rows.push_back(m.paper == 15.335 ? erratum(row, "Regime maps") : row);
     }
   }
 
@@ -94,18 +88,18 @@ Section regime_section(const StepContext& ctx) {
     std::vector<std::string> args;
   };
   const std::vector<MapRun> maps = {
-      {"fig2", "Fig. 2 (fig:region)",
+      {"fig2", "fig:region",
        "sign(omega'' h_tilde) over (rho, theta): optical (left), acoustic (right); focusing shaded, "
-       "boundary curves by cause (omega'' = 0, h_tilde = 0, breakdown of eq:nonresonance1/2).",
+       "boundary curves by cause (omega'' = 0, h_tilde = 0, breakdown of eq:nonresonance1 and eq:nonresonance2).",
        "regime_theta-rho.png", {"--plane", "theta-rho", "--branch", "both"}},
-      {"fig4_rho3", "Fig. 4 left (fig:opband)",
+      {"fig4_rho3", "fig:opband, left",
        "Optical focusing frequency bands versus delta0 at rho = 3 (the band splits near delta0 ~ 0.22).",
        "regime_delta0-omega_optical.png", {"--plane", "delta0-omega", "--branch", "optical", "--rho", "3"}},
-      {"fig4_rho17.8", "Fig. 4 right (fig:opband)",
+      {"fig4_rho17.8", "fig:opband, right",
        "Optical focusing frequency bands versus delta0 at rho = 17.8 (1 -> 2 bands near delta0 ~ 0.002).",
        "regime_delta0-omega_optical.png",
        {"--plane", "delta0-omega", "--branch", "optical", "--rho", "17.8", "--delta0-log"}},
-      {"fig5_rho0.32", "Fig. 5 (fig:acband)",
+      {"fig5_rho0.32", "fig:acband",
        "Acoustic focusing frequency band versus delta0 at rho = 0.32 (all acoustic modes defocusing "
        "below delta0 ~ 0.06).",
        "regime_delta0-omega_acoustic.png", {"--plane", "delta0-omega", "--branch", "acoustic", "--rho", "0.32"}}};

@@ -1,0 +1,119 @@
+// ASCII physics names and LaTeX labels -> HTML (rich_text.hpp).
+#include "rich_text.hpp"
+
+#include <cctype>
+#include <map>
+#include <vector>
+
+#include "latex_numbering.hpp"
+#include "markdown_html.hpp"
+
+namespace lrchain::report {
+
+namespace {
+
+const std::map<std::string, std::string>& greek() {
+  static const std::map<std::string, std::string> letters = {
+      {"alpha", "α"}, {"beta", "β"},   {"gamma", "γ"}, {"delta", "δ"},  {"epsilon", "ε"},
+      {"theta", "θ"}, {"kappa", "κ"},  {"lambda", "λ"}, {"rho", "ρ"},   {"omega", "ω"},
+      {"pi", "π"},    {"chi", "χ"},    {"tau", "τ"},   {"xi", "ξ"}};
+  return letters;
+}
+
+bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// A name without subscript: a Greek letter ("rho"), a Greek letter with digits ("delta0" -> δ₀ as
+// a subscript), or the name itself.
+std::string symbol(const std::string& name) {
+  if (const auto g = greek().find(name); g != greek().end()) return g->second;
+  std::size_t digits = name.size();
+  while (digits > 0 && std::isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
+  if (digits < name.size() && digits > 0)
+    if (const auto g = greek().find(name.substr(0, digits)); g != greek().end())
+      return g->second + "<sub>" + name.substr(digits) + "</sub>";
+  return html_escape(name);
+}
+
+bool is_symbol_base(const std::string& name) {
+  return name.size() <= 2 || greek().count(name) > 0;
+}
+
+// "fig:focus3" / "eq:disp1d" at `i` (after a non-word character): its HTML, and `end` past it.
+bool citation(const std::string& text, std::size_t i, std::size_t& end, std::string& html) {
+  const bool figure = text.compare(i, 4, "fig:") == 0, equation = text.compare(i, 3, "eq:") == 0;
+  if (!figure && !equation) return false;
+  std::size_t q = i + (figure ? 4 : 3);
+  while (q < text.size() && (is_word_char(text[q]) || (text[q] == ':' && q + 1 < text.size() && is_word_char(text[q + 1])))) ++q;
+  const std::string label = text.substr(i, q - i);
+  const auto number = paper_number(label);
+  if (!number) return false;
+  const std::string shown = number->kind == PaperNumber::Kind::figure ? "Fig.&nbsp;" + std::to_string(number->number)
+                                                                       : "eq.&nbsp;(" + std::to_string(number->number) + ")";
+  html = "<span class=\"cite\" title=\"" + html_escape(label) + "\">" + shown + "</span>";
+  end = q;
+  return true;
+}
+
+}  // namespace
+
+std::string rich_text(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const bool word_start = i == 0 || !is_word_char(text[i - 1]);
+    if (word_start && std::isalpha(static_cast<unsigned char>(text[i]))) {
+      std::size_t end;
+      std::string html;
+      if (citation(text, i, end, html)) {
+        out += html;
+        i = end;
+        continue;
+      }
+      std::size_t q = i;
+      while (q < text.size() && is_word_char(text[q])) ++q;
+      std::string word = text.substr(i, q - i);
+      // c_+ / omega_- : a '+' or '-' subscript after a trailing underscore.
+      std::string sign;
+      if (word.size() > 1 && word.back() == '_' && q < text.size() && (text[q] == '+' || text[q] == '-')) {
+        sign = text[q] == '+' ? "+" : "&minus;";
+        word.pop_back();
+        ++q;
+      }
+      const auto underscore = word.find('_');
+      if (!sign.empty() && is_symbol_base(word)) {
+        out += symbol(word) + "<sub>" + sign + "</sub>";
+      } else if (word == "h_tilde") {
+        out += "h&#771;";
+      } else if (underscore != std::string::npos && word.find('_', underscore + 1) == std::string::npos &&
+                 is_symbol_base(word.substr(0, underscore)) && word.size() - underscore - 1 <= 4 &&
+                 underscore + 1 < word.size()) {
+        out += symbol(word.substr(0, underscore)) + "<sub>" + symbol(word.substr(underscore + 1)) + "</sub>";
+      } else {
+        out += sign.empty() ? symbol(word) : html_escape(word) + (sign == "+" ? "+" : "-");
+      }
+      i = q;
+      // Primes after a symbol: omega'' -> ω″, omega_-' -> ω₋′.
+      if (text.compare(i, 2, "''") == 0 && i + 2 <= text.size()) {
+        out += "&Prime;";
+        i += 2;
+      } else if (i < text.size() && text[i] == '\'' && (i + 1 >= text.size() || !std::isalpha(static_cast<unsigned char>(text[i + 1])))) {
+        out += "&prime;";
+        i += 1;
+      }
+      continue;
+    }
+    if (text.compare(i, 2, "||") == 0) {  // a norm: ||x||_inf -> ‖x‖∞
+      out += "&#8214;";
+      i += 2;
+      if (text.compare(i, 4, "_inf") == 0) {
+        out += "<sub>&infin;</sub>";
+        i += 4;
+      }
+      continue;
+    }
+    out += html_escape(std::string(1, text[i]));
+    ++i;
+  }
+  return out;
+}
+
+}  // namespace lrchain::report

@@ -1,0 +1,12 @@
+#pragma once
+// The report's prose and table cells as a physicist reads them: ASCII physics names rendered
+// (omega'' -> ω″, h_tilde -> h̃, rho -> ρ, c_+ -> c₊ as a subscript, ||x||_inf -> ‖x‖∞) and LaTeX
+// labels replaced by the numbers of the compiled paper ("fig:focus3" -> "Fig. 7", "eq:disp1d" ->
+// "eq. (7)"), the label kept as a tooltip. Everything else is HTML-escaped.
+#include <string>
+
+namespace lrchain::report {
+
+std::string rich_text(const std::string& text);
+
+}  // namespace lrchain::report
