@@ -15,13 +15,6 @@ namespace {
 
 constexpr const char* kAliases[] = {"--alpha", "--delta0", "--kappa", "--rho"};
 
-// FNV-1a 64 of a file's bytes (the hash the model files are identified by).
-std::uint64_t fnv1a(const std::string& bytes) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
-  return h;
-}
-
 std::vector<std::pair<std::string, double>> set_values(const std::vector<std::string>& set) {
   std::vector<std::pair<std::string, double>> values;
   for (const auto& s : set) {
@@ -58,7 +51,7 @@ Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, 
     if (!in) throw InputError("--model " + selection.file + ": cannot read the model file");
     std::stringstream bytes;
     bytes << in.rdbuf();
-    const std::uint64_t hash = fnv1a(bytes.str());
+    const std::uint64_t hash = fnv1a_64(bytes.str());
     for (const auto& m : shipped_models())
       if (m.file_hash == hash) definition = shipped(&m);
 #ifdef LRCHAIN_WITH_MODEL_COMPILER

@@ -21,11 +21,6 @@ namespace lrchain {
 
 namespace {
 
-std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h = 14695981039346656037ull) {
-  for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
-  return h;
-}
-
 std::string read_bytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string() + ": cannot read the model file");
@@ -148,7 +143,7 @@ bool model_compiler_available() { return program_in_path(LRCHAIN_CXX_COMPILER); 
 
 std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, CompiledModelInfo* info) {
   const std::string bytes = read_bytes(path);
-  const std::uint64_t key = fnv1a(std::string(LRCHAIN_CXX_COMPILER) + "\n" + LRCHAIN_VERSION + "\nevaluators 2\n", fnv1a(bytes));
+  const std::uint64_t key = fnv1a_64(std::string(LRCHAIN_CXX_COMPILER) + "\n" + LRCHAIN_VERSION + "\nevaluators 2\n", fnv1a_64(bytes));
   const fs::path directory = cache_directory();
   const fs::path library = directory / ("model-" + model_hash_text(key).substr(2) + ".so");
   if (info) info->library = library;

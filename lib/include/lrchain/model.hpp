@@ -87,6 +87,9 @@ Model shipped_model(std::string_view name, const std::vector<std::pair<std::stri
 // "0x" + 16 hex digits.
 std::string model_hash_text(std::uint64_t hash);
 
+// FNV-1a 64 of `bytes` (continuing from `hash`): the hash model files are identified by.
+std::uint64_t fnv1a_64(std::string_view bytes, std::uint64_t hash = 14695981039346656037ull);
+
 // NLS coefficients of `model` on branch `branch` (index into branch_names) at theta in (-pi, pi]:
 // omega is the branch's root of det M = 0 in omega^2. lambda is NaN (no mean flow) for on-site
 // models. Throws InvalidParameter for theta out of range or where the branch has no real,

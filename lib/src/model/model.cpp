@@ -24,6 +24,11 @@ std::string model_hash_text(std::uint64_t hash) {
   return buffer;
 }
 
+std::uint64_t fnv1a_64(std::string_view bytes, std::uint64_t hash) {
+  for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
+  return hash;
+}
+
 const ModelDefinition* find_shipped_model(std::string_view name) {
   for (const auto& m : shipped_models())
     if (m.name == name) return &m;
