@@ -12,6 +12,8 @@
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/coefficients.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/model.hpp"
+#include "model_option.hpp"
 #include "options.hpp"
 
 namespace lrchain::cli {
@@ -19,6 +21,7 @@ namespace {
 
 struct CoeffsOptions {
   Params params;
+  ModelSelection model;
   double theta = std::numeric_limits<double>::quiet_NaN();
   std::string branch;
   bool json = false;
@@ -63,6 +66,49 @@ void print_text(const NlsCoefficients& c, Branch b, const Params& p) {
   fmt::print("  {:<15} {:<22} {}\n", "regime", "sign(omega'' h_tilde)", to_string(c.regime));
 }
 
+// One wavenumber of a model other than the resonant chain.
+void print_model_text(const NlsCoefficients& c, const Model& m, std::size_t branch) {
+  std::string parameters;
+  const auto& d = m.definition();
+  for (std::size_t i = 0; i < d.parameters.size(); ++i)
+    parameters += fmt::format("{}{}={:.12g}", i ? ", " : "", d.parameters[i].name, m.inputs()[i]);
+  fmt::print("model {}, {} branch, theta = {:.12g} ({})\n", d.name, d.branch_names[branch], c.theta, parameters);
+  const auto row = [](const char* name, double v) {
+    fmt::print("  {:<15} {}\n", name, std::isfinite(v) ? fmt::format("{:.17g}", v) : "singular");
+  };
+  row("omega", c.omega);
+  row("group_velocity", c.group_velocity);
+  row("curvature", c.curvature);
+  row("gamma", c.gamma);
+  row("beta", c.beta);
+  row("h", c.h);
+  if (d.mean_flow) row("lambda", c.lambda);
+  else fmt::print("  {:<15} {}\n", "lambda", "none (on-site model: no mean flow)");
+  row("h_tilde", c.h_tilde);
+  row("nonresonance1", c.nonresonance1);
+  if (d.mean_flow) row("nonresonance2", c.nonresonance2);
+  fmt::print("  {:<15} {}\n", "regime", to_string(c.regime));
+}
+
+// The table of every branch of a model at the wavenumbers of print_table.
+void print_model_table(const Model& m) {
+  const auto& d = m.definition();
+  fmt::print("NLS coefficients of model {}\n", d.name);
+  const std::vector<std::pair<const char*, double>> thetas = {
+      {"pi/8", std::numbers::pi / 8}, {"pi/4", std::numbers::pi / 4},      {"pi/2", std::numbers::pi / 2},
+      {"3pi/5", 3 * std::numbers::pi / 5}, {"3pi/4", 3 * std::numbers::pi / 4}, {"pi", std::numbers::pi}};
+  for (std::size_t b = d.branch_names.size(); b-- > 0;) {
+    fmt::print("\n{} branch\n{:>7} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}  {}\n", d.branch_names[b], "theta",
+               "omega", "c", "omega''", "beta", "h", "lambda", "h_tilde", "regime");
+    for (const auto& [label, theta] : thetas) {
+      const NlsCoefficients c = coefficients(m, b, theta);
+      fmt::print("{:>7} {}{}{}{}{}{}{}  {}\n", label, cell(c.omega), cell(c.group_velocity), cell(c.curvature),
+                 cell(c.beta), cell(c.h), d.mean_flow ? cell(c.lambda) : fmt::format("{:>12}", "none"), cell(c.h_tilde),
+                 to_string(c.regime));
+    }
+  }
+}
+
 // The main job's table: both branches at theta = pi/8, pi/4, pi/2, 3pi/5, 3pi/4, pi.
 void print_table(const Params& p) {
   fmt::print("NLS coefficients, alpha={:g}, delta0={:.6g}, kappa={:g}, rho={:.6g} (derived by lrchain-derive)\n",
@@ -92,26 +138,54 @@ void register_coeffs(CLI::App& app) {
       "(focusing if omega'' h_tilde < 0). Dimensionless units of Sec. 2.");
   add_number(*cmd, "--theta", opts->theta, "carrier wavenumber in (-pi, pi], e.g. pi/2 (required unless --table)");
   add_model_options(*cmd, opts->params, /*rho_required=*/false);
-  cmd->add_option("--branch", opts->branch, "dispersion branch: optical (omega_+) or acoustic (omega_-)")
-      ->type_name("optical|acoustic");
+  add_model_file_options(*cmd, opts->model);
+  cmd->add_option("--branch", opts->branch,
+                  "dispersion branch: optical (omega_+) or acoustic (omega_-); other models: the names `lrchain "
+                  "derive` lists (acoustic/optical or branch0, branch1, ...)")
+      ->type_name("NAME");
   cmd->add_flag("--json", opts->json, "print one JSON object (singular coefficients as null)");
   cmd->add_flag("--table", opts->table, "print the table of both branches at theta = pi/8 ... pi");
-  cmd->callback([opts] {
+  cmd->callback([opts, cmd] {
+    if (opts->model.file.empty()) validate(opts->params);  // the resonant chain's own messages
+    const Model model = load_selected_model(opts->model, *cmd, opts->params);
+    const bool resonant_chain = model.name() == "resonant_chain";
+    if (resonant_chain)  // the specialised evaluators (and the paper's text) for the resonant chain
+      opts->params = Params{model.parameter("alpha"), model.parameter("delta0"), model.parameter("kappa"), model.parameter("rho")};
     if (opts->table) {
-      validate(opts->params);
-      print_table(opts->params);
+      if (resonant_chain) {
+        validate(opts->params);
+        print_table(opts->params);
+      } else {
+        print_model_table(model);
+      }
       return;
     }
     if (std::isnan(opts->theta)) throw InvalidParameter("theta", "is required: a wavenumber in (-pi, pi]");
-    if (opts->branch.empty()) throw InvalidParameter("branch", "is required: 'optical' or 'acoustic'");
-    const Branch b = parse_branch(opts->branch);
-    const NlsCoefficients c = coefficients(opts->params, b, opts->theta);
+    if (opts->branch.empty()) throw InvalidParameter("branch", "is required: 'optical' or 'acoustic' (or the model's branch names)");
+    if (resonant_chain) {
+      const Branch b = parse_branch(opts->branch);
+      const NlsCoefficients c = coefficients(opts->params, b, opts->theta);
+      if (opts->json) {
+        nlohmann::json j = to_json(c);
+        j["model"] = model_json(model);
+        j["provenance"] = provenance_json();
+        std::printf("%s\n", j.dump().c_str());
+      } else {
+        print_text(c, b, opts->params);
+      }
+      return;
+    }
+    const std::size_t branch = model.branch(opts->branch);
+    const NlsCoefficients c = coefficients(model, branch, opts->theta);
     if (opts->json) {
       nlohmann::json j = to_json(c);
+      j["branch"] = model.definition().branch_names[branch];
+      j["model"] = model_json(model);
       j["provenance"] = provenance_json();
       std::printf("%s\n", j.dump().c_str());
+    } else {
+      print_model_text(c, model, branch);
     }
-    else print_text(c, b, opts->params);
   });
 }
 

@@ -1,6 +1,7 @@
 #include "lrchain/derivation/emit_cpp.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -10,107 +11,194 @@ using namespace GiNaC;
 
 namespace {
 
-// A canonical text of an expression that does not depend on GiNaC's internal term order (which
-// follows hash values that change from run to run): children of sums and products sorted.
-class CanonicalText {
- public:
-  const std::string& of(const ex& e) {
-    if (auto it = memo_.find(e); it != memo_.end()) return it->second;
-    std::string text;
-    if (is_a<numeric>(e)) {
-      std::ostringstream os;
-      os << e;
-      text = os.str();
-    } else if (is_a<symbol>(e)) {
-      text = ex_to<symbol>(e).get_name();
-    } else if (is_a<GiNaC::add>(e) || is_a<mul>(e)) {
-      std::vector<std::string> parts;
-      for (const auto& child : e) parts.push_back(of(child));
-      std::sort(parts.begin(), parts.end());
-      const char* sep = is_a<GiNaC::add>(e) ? "+" : "*";
-      text = "(";
-      for (std::size_t i = 0; i < parts.size(); ++i) text += (i ? sep : "") + parts[i];
-      text += ")";
-    } else if (is_a<power>(e)) {
-      text = of(e.op(0)) + "^" + of(e.op(1));
-    } else {
-      std::ostringstream os;
-      os << e;
-      text = os.str();
-    }
-    return memo_.emplace(e, text).first->second;
-  }
+// The emitter's own expression tree. GiNaC orders the operands of sums and products by hash
+// values that depend on the memory layout of the running binary, and its products re-normalise
+// the sign of a sum factor by whichever term happens to come first. Converting once into this
+// tree, where every sum and product keeps its operands sorted by their printed text and the
+// numeric coefficient of a product is kept apart, makes the emitted C++ depend only on the
+// mathematical expression.
+struct Node;
+using NodePtr = std::shared_ptr<const Node>;
 
- private:
-  std::map<ex, std::string, ex_is_less> memo_;
+struct Node {
+  enum Kind { number, symbol, sum, product, power, call } kind = number;
+  numeric value = 0;               // number; coefficient of a product
+  std::string name;                // symbol: the C++ name; call: the C++ function (std::pow, std::abs, ...)
+  std::vector<NodePtr> children;   // sum terms / product factors (sorted by key); power: {base}; call: arguments
+  int exponent = 0;                // power
+  std::string key;                 // canonical text, a total order on subexpressions
+  std::size_t size = 1;            // number of nodes
 };
 
-// Children of a sum or product in canonical order.
-std::vector<ex> sorted_children(const ex& e, CanonicalText& canon) {
-  std::vector<ex> children(e.begin(), e.end());
-  std::sort(children.begin(), children.end(),
-            [&](const ex& a, const ex& b) { return canon.of(a) < canon.of(b); });
-  return children;
+std::string number_key(const numeric& n) {
+  std::ostringstream os;
+  os << n;
+  return os.str();
 }
 
-// Fixes the sign of each polynomial factor (P or -P, whichever has the smaller canonical text),
-// so that factor()'s hash-dependent choice of leading term does not leak into the output.
-ex canonical_signs(const ex& product, CanonicalText& canon) {
-  std::vector<ex> factors = is_a<mul>(product) ? std::vector<ex>(product.begin(), product.end()) : std::vector<ex>{product};
-  ex result = 1;
-  for (const ex& f : factors) {
-    ex base = f, exponent = 1;
-    if (is_a<power>(f)) {
-      base = f.op(0);
-      exponent = f.op(1);
-    }
-    if (is_a<GiNaC::add>(base) && exponent.info(info_flags::integer)) {
-      base = expand(base);  // a sum of monomials has one structure whatever the term order
-      const numeric content = base.integer_content();  // and one scale: primitive integer coefficients
-      base = expand(base / content);
-      result *= pow(content, exponent);
-      const ex negated = expand(-base);
-      if (canon.of(negated) < canon.of(base)) {
-        result *= pow(-1, exponent);
-        base = negated;
-      }
-    }
-    result *= pow(base, exponent);
+NodePtr make_number(const numeric& n) {
+  auto node = std::make_shared<Node>();
+  node->kind = Node::number;
+  node->value = n;
+  node->key = number_key(n);
+  return node;
+}
+
+NodePtr make_symbol(const std::string& name) {
+  auto node = std::make_shared<Node>();
+  node->kind = Node::symbol;
+  node->name = name;
+  node->key = name;
+  return node;
+}
+
+// A sum or product with operands sorted by key; a product's numeric factors go into its coefficient.
+NodePtr make_nary(Node::Kind kind, std::vector<NodePtr> children, numeric coefficient = 1) {
+  std::vector<NodePtr> flat;
+  for (auto& c : children) {
+    if (kind == Node::product && c->kind == Node::number) coefficient *= c->value;
+    else if (kind == Node::product && c->kind == Node::product) {
+      coefficient *= c->value;
+      flat.insert(flat.end(), c->children.begin(), c->children.end());
+    } else flat.push_back(c);
   }
-  return result;
+  std::sort(flat.begin(), flat.end(), [](const NodePtr& a, const NodePtr& b) { return a->key < b->key; });
+  if (kind == Node::product && coefficient.is_equal(1) && flat.size() == 1) return flat.front();
+  if (kind == Node::product && (coefficient.is_zero() || flat.empty())) return make_number(flat.empty() ? coefficient : 0);
+  auto node = std::make_shared<Node>();
+  node->kind = kind;
+  node->value = coefficient;
+  node->children = std::move(flat);
+  node->key = kind == Node::sum ? "(" : number_key(coefficient) + "*(";
+  for (std::size_t i = 0; i < node->children.size(); ++i) {
+    node->key += (i ? (kind == Node::sum ? "+" : "*") : "") + node->children[i]->key;
+    node->size += node->children[i]->size;
+  }
+  node->key += ")";
+  return node;
 }
 
-}  // namespace
+NodePtr make_power(const NodePtr& base, int exponent) {
+  if (exponent == 1) return base;
+  auto node = std::make_shared<Node>();
+  node->kind = Node::power;
+  node->children = {base};
+  node->exponent = exponent;
+  node->key = "(" + base->key + ")^" + std::to_string(exponent);
+  node->size = base->size + 1;
+  return node;
+}
 
-ex factored(const ex& e) {
-  CanonicalText canon;
+// A call of a C++ function (non-integer powers, exp, log, abs, ...); arguments keep their order.
+NodePtr make_call(const std::string& function_name, std::vector<NodePtr> arguments) {
+  auto node = std::make_shared<Node>();
+  node->kind = Node::call;
+  node->name = function_name;
+  node->key = function_name + "(";
+  for (std::size_t i = 0; i < arguments.size(); ++i) {
+    node->key += (i ? "," : "") + arguments[i]->key;
+    node->size += arguments[i]->size;
+  }
+  node->key += ")";
+  node->children = std::move(arguments);
+  return node;
+}
+
+using Names = std::map<ex, std::string, ex_is_less>;
+
+// GiNaC expression -> canonical tree (symbols renamed through `names`, or their own names).
+NodePtr convert(const ex& e, const Names* names) {
+  if (names) {
+    if (auto it = names->find(e); it != names->end()) return make_symbol(it->second);
+  }
+  if (is_a<numeric>(e)) {
+    if (!ex_to<numeric>(e).is_rational()) throw std::runtime_error("non-rational number in emitted expression");
+    return make_number(ex_to<numeric>(e));
+  }
+  if (is_a<symbol>(e)) {
+    if (names) throw std::runtime_error("unmapped symbol " + ex_to<symbol>(e).get_name());
+    return make_symbol(ex_to<symbol>(e).get_name());
+  }
+  if (is_a<GiNaC::add>(e) || is_a<mul>(e)) {
+    std::vector<NodePtr> children;
+    for (const auto& child : e) children.push_back(convert(child, names));
+    return make_nary(is_a<GiNaC::add>(e) ? Node::sum : Node::product, std::move(children));
+  }
+  if (is_a<GiNaC::power>(e)) {
+    if (e.op(1).info(info_flags::integer)) return make_power(convert(e.op(0), names), ex_to<numeric>(e.op(1)).to_int());
+    return make_call("std::pow", {convert(e.op(0), names), convert(e.op(1), names)});
+  }
+  if (is_a<function>(e)) {
+    std::vector<NodePtr> arguments;
+    for (const auto& argument : e) arguments.push_back(convert(argument, names));
+    return make_call("std::" + ex_to<function>(e).get_name(), std::move(arguments));
+  }
+  throw std::runtime_error("unsupported expression node in emission");
+}
+
+// Adds the factors of factor()'s result (raised to `sign` = +1 numerator, -1 denominator). Each
+// polynomial factor is expanded, made primitive (integer content into `coefficient`) and given the
+// sign whose canonical text is smaller, so GiNaC's choice of leading term does not leak out.
+void collect_factors(const ex& f, int sign, numeric& coefficient, std::vector<NodePtr>& factors, const Names* names) {
+  if (is_a<mul>(f)) {
+    for (const auto& x : f) collect_factors(x, sign, coefficient, factors, names);
+    return;
+  }
+  if (is_a<numeric>(f)) {
+    coefficient *= sign > 0 ? ex_to<numeric>(f) : ex_to<numeric>(f).inverse();
+    return;
+  }
+  ex base = f;
+  int exponent = 1;
+  if (is_a<GiNaC::power>(f) && f.op(1).info(info_flags::integer)) {
+    base = f.op(0);
+    exponent = ex_to<numeric>(f.op(1)).to_int();
+  }
+  exponent *= sign;
+  if (is_a<GiNaC::add>(base)) {
+    ex polynomial = expand(base);
+    const numeric content = polynomial.integer_content();
+    polynomial = expand(polynomial / content);
+    coefficient *= content.power(exponent);
+    NodePtr plus = convert(polynomial, names), minus = convert(expand(-polynomial), names);
+    if (minus->key < plus->key) {
+      plus = minus;
+      if (exponent % 2) coefficient = -coefficient;
+    }
+    factors.push_back(make_power(plus, exponent));
+  } else {
+    factors.push_back(make_power(convert(base, names), exponent));
+  }
+}
+
+// factor(numerator) / factor(denominator) as a canonical tree.
+NodePtr factored_tree(const ex& e, const Names* names) {
   const ex nd = normal(e).numer_denom();
-  return canonical_signs(factor(nd.op(0)), canon) / canonical_signs(factor(nd.op(1)), canon);
+  numeric coefficient = 1;
+  std::vector<NodePtr> factors;
+  collect_factors(factor(nd.op(0)), 1, coefficient, factors, names);
+  collect_factors(factor(nd.op(1)), -1, coefficient, factors, names);
+  return make_nary(Node::product, std::move(factors), coefficient);
 }
 
-namespace {
-
+// C++ text of canonical trees; subexpressions used more than once become `const double tN`.
 class Printer {
  public:
-  Printer(const std::map<ex, std::string, ex_is_less>& names) : names_(names) {}
-  CanonicalText canon;
-
-  void count(const ex& e) {
-    if (names_.count(e) || is_a<numeric>(e) || is_a<symbol>(e)) return;
-    if (++uses_[e] > 1) return;  // children already counted
-    for (const auto& child : e) count(child);
-    if (is_a<power>(e)) count(e.op(0));
+  void count(const NodePtr& e) {
+    if (e->kind == Node::number || e->kind == Node::symbol) return;
+    if (++uses_[e->key] > 1) return;  // children already counted
+    for (const auto& child : e->children) count(child);
   }
 
-  std::string print(const ex& e) {
-    if (auto it = names_.find(e); it != names_.end()) return it->second;
-    if (is_a<numeric>(e)) return number(ex_to<numeric>(e));
-    if (auto it = temps_.find(e); it != temps_.end()) return it->second;
-    std::string text = print_node(e);
-    if (uses_[e] > 1 && !is_a<numeric>(e)) {
+  std::string print(const NodePtr& e) {
+    if (e->kind == Node::symbol) return e->name;
+    if (e->kind == Node::number) return number(e->value);
+    if (auto it = temps_.find(e->key); it != temps_.end()) return it->second;
+    std::string text = print_node(*e);
+    if (uses_[e->key] > 1) {
       const std::string name = "t" + std::to_string(temps_.size());
       body_ << "  const double " << name << " = " << text << ";\n";
-      temps_[e] = name;
+      temps_[e->key] = name;
       return name;
     }
     return text;
@@ -120,54 +208,48 @@ class Printer {
 
  private:
   static std::string number(const numeric& n) {
-    if (!n.is_rational()) throw std::runtime_error("non-rational number in emitted expression");
     std::ostringstream os;
-    if (n.is_integer()) {
-      os << n << ".0";
-    } else {
-      os << "(" << n.numer() << ".0 / " << n.denom() << ".0)";
-    }
+    if (n.is_integer()) os << n << ".0";
+    else os << "(" << n.numer() << ".0 / " << n.denom() << ".0)";
     std::string s = os.str();
     return n.is_negative() ? "(" + s + ")" : s;
   }
 
-  std::string power_text(const ex& base, int n) {
+  std::string power_text(const NodePtr& base, int n) {
     const std::string b = print(base);
-    const bool atomic = is_a<symbol>(base) || temps_.count(base) || names_.count(base);
+    const bool atomic = base->kind == Node::symbol || temps_.count(base->key);
     const std::string bb = atomic ? b : "(" + b + ")";
     std::string s = bb;
     for (int i = 1; i < n; ++i) s += " * " + bb;
     return n > 1 ? "(" + s + ")" : s;
   }
 
-  std::string print_node(const ex& e) {
-    if (is_a<GiNaC::add>(e)) {
+  std::string print_node(const Node& e) {
+    if (e.kind == Node::sum) {
       std::string s;
-      const std::vector<ex> terms = sorted_children(e, canon);
-      for (std::size_t i = 0; i < terms.size(); ++i) {
-        const std::string term = print(terms[i]);
+      for (std::size_t i = 0; i < e.children.size(); ++i) {
+        const std::string term = print(e.children[i]);
         if (i == 0) s = term;
         else if (!term.empty() && term[0] == '-') s += " - " + term.substr(1);
         else s += " + " + term;
       }
       return "(" + s + ")";
     }
-    if (is_a<mul>(e)) {
+    if (e.kind == Node::product) {
       std::vector<std::string> num, den;
-      numeric coeff = 1;
-      for (const auto& f : sorted_children(e, canon)) {
-        if (is_a<numeric>(f)) { coeff *= ex_to<numeric>(f); continue; }
-        if (is_a<power>(f) && f.op(1).info(info_flags::negint)) {
-          const int n = -ex_to<numeric>(f.op(1)).to_int();
-          den.push_back(n == 1 ? wrap(f.op(0)) : power_text(f.op(0), n));
+      for (const auto& f : e.children) {
+        if (f->kind == Node::power && f->exponent < 0) {
+          const int n = -f->exponent;
+          den.push_back(n == 1 ? print(f->children[0]) : power_text(f->children[0], n));
         } else {
-          num.push_back(wrap(f));
+          num.push_back(print(f));
         }
       }
+      numeric coefficient = e.value;
+      const bool negative = coefficient.is_negative();
+      if (negative) coefficient = -coefficient;
+      if (!coefficient.is_equal(1) || num.empty()) num.insert(num.begin(), number(coefficient));
       std::string s;
-      const bool negative = coeff.is_negative();
-      if (negative) coeff = -coeff;
-      if (coeff != 1 || num.empty()) num.insert(num.begin(), number(coeff));
       for (std::size_t i = 0; i < num.size(); ++i) s += (i ? " * " : "") + num[i];
       if (!den.empty()) {
         std::string d;
@@ -176,44 +258,65 @@ class Printer {
       }
       return negative ? "-(" + s + ")" : s;
     }
-    if (is_a<power>(e)) {
-      if (!e.op(1).info(info_flags::integer)) throw std::runtime_error("non-integer exponent in emitted expression");
-      const int n = ex_to<numeric>(e.op(1)).to_int();
-      if (n > 0) return power_text(e.op(0), n);
-      return "(1.0 / " + power_text(e.op(0), -n) + ")";
+    if (e.kind == Node::call) {
+      std::string s = e.name + "(";
+      for (std::size_t i = 0; i < e.children.size(); ++i) s += (i ? ", " : "") + print(e.children[i]);
+      return s + ")";
     }
-    if (is_a<symbol>(e)) throw std::runtime_error("unmapped symbol " + ex_to<symbol>(e).get_name());
-    throw std::runtime_error("unsupported expression node in emission");
+    // power
+    if (e.exponent > 0) return power_text(e.children[0], e.exponent);
+    return "(1.0 / " + power_text(e.children[0], -e.exponent) + ")";
   }
 
-  std::string wrap(const ex& e) {
-    const std::string s = print(e);
-    if (is_a<GiNaC::add>(e) && !temps_.count(e)) return s;  // add prints its own parentheses
-    return s;
-  }
-
-  const std::map<ex, std::string, ex_is_less>& names_;
-  std::map<ex, int, ex_is_less> uses_;
-  std::map<ex, std::string, ex_is_less> temps_;
+  std::map<std::string, int> uses_;
+  std::map<std::string, std::string> temps_;
   std::ostringstream body_;
 };
 
+// Sum of the absolute values of the terms of e's expanded numerator over |denominator|: the size
+// of the terms that cancel in e (a scale for deciding that e vanishes in double precision).
+NodePtr term_scale_tree(const ex& e, const Names* names) {
+  const ex nd = normal(e).numer_denom();
+  const ex numerator = expand(nd.op(0));
+  std::vector<NodePtr> terms;
+  if (is_a<GiNaC::add>(numerator)) {
+    for (const auto& t : numerator) terms.push_back(make_call("std::abs", {convert(t, names)}));
+  } else {
+    terms.push_back(make_call("std::abs", {convert(numerator, names)}));
+  }
+  NodePtr sum = terms.size() == 1 ? terms.front() : make_nary(Node::sum, std::move(terms));
+  if (nd.op(1).is_equal(1)) return sum;
+  return make_nary(Node::product, {sum, make_power(make_call("std::abs", {factored_tree(nd.op(1), names)}), -1)});
+}
+
 }  // namespace
 
+std::size_t emitted_size(const ex& e) { return factored_tree(e, nullptr)->size; }
+
 std::string emit_function(const EmittedFunction& f) {
-  std::map<ex, std::string, ex_is_less> names;
+  // Struct result: outputs are fields r.NAME. Without a result type the outputs are written to the
+  // lvalues named (e.g. out[3]) by a void function.
+  const bool returns_struct = !f.result_type.empty();
+  const auto lvalue = [&](const std::string& name) { return returns_struct ? "r." + name : name; };
+  Names names;
   for (const auto& [sym, name] : f.inputs) names[sym] = name;
-  for (const auto& [name, sym] : f.output_symbols) names[sym] = "r." + name;
-  std::vector<ex> forms;
-  for (const auto& [name, e] : f.outputs) forms.push_back(factored(e));
-  Printer printer(names);
-  for (const ex& e : forms) printer.count(e);
+  for (const auto& [name, sym] : f.output_symbols) names[sym] = lvalue(name);
+  std::vector<NodePtr> forms;
+  for (const auto& [name, e] : f.outputs)
+    forms.push_back(f.term_scales.count(name) ? term_scale_tree(e, &names)
+                    : f.unfactored.count(name) ? convert(expand(e), &names)
+                                               : factored_tree(e, &names));
+  Printer printer;
+  for (const auto& e : forms) printer.count(e);
   std::ostringstream out;
   out << "// " << f.comment << "\n";
-  out << "inline " << f.result_type << " " << f.name << "(";
-  for (std::size_t i = 0; i < f.inputs.size(); ++i) out << (i ? ", " : "") << "double " << f.inputs[i].second;
-  out << ") noexcept {\n  " << f.result_type << " r{};\n";
-  std::ostringstream assignments;
+  out << "inline " << (returns_struct ? f.result_type : "void") << " " << f.name << "(";
+  if (!f.parameter_list.empty()) out << f.parameter_list;
+  else
+    for (std::size_t i = 0; i < f.inputs.size(); ++i) out << (i ? ", " : "") << "double " << f.inputs[i].second;
+  out << ") noexcept {\n";
+  if (returns_struct) out << "  " << f.result_type << " r{};\n";
+  out << f.prologue;
   std::string collected;
   for (std::size_t i = 0; i < forms.size(); ++i) {
     const std::string rhs = printer.print(forms[i]);
@@ -221,9 +324,10 @@ std::string emit_function(const EmittedFunction& f) {
     const std::string body = printer.body();
     out << body.substr(collected.size());
     collected = body;
-    out << "  r." << f.outputs[i].first << " = " << rhs << ";\n";
+    out << "  " << lvalue(f.outputs[i].first) << " = " << rhs << ";\n";
   }
-  out << "  return r;\n}\n";
+  if (returns_struct) out << "  return r;\n";
+  out << "}\n";
   return out.str();
 }
 

@@ -20,13 +20,6 @@ Derivation derive_all() {
 
 namespace {
 
-// Number of nodes of an expression tree (a measure of its size).
-std::size_t term_count(const ex& e) {
-  std::size_t n = 0;
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) ++n;
-  return n;
-}
-
 // One evaluator: inputs D1, sigma, omega, model parameters; outputs in derivation order, each
 // written with the earlier named results (group velocity c, gamma, beta, ...) the way the
 // derivation produces them.
@@ -60,7 +53,7 @@ EmittedFunction evaluator(const DerivedCoefficients& c, const Symbols& s, const 
     ex rewritten = e;
     for (const auto& [pattern, replacement] : m.emission_rewrites)
       rewritten = rewritten.subs(pattern == replacement, subs_options::algebraic);
-    if (term_count(factored(rewritten)) < term_count(factored(e))) e = rewritten;
+    if (emitted_size(rewritten) < emitted_size(e)) e = rewritten;
   }
   return f;
 }

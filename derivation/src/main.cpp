@@ -1,5 +1,7 @@
 // lrchain-derive: performs the multiple-scale derivation, prints the report with its checks and
-// writes lib/include/lrchain/generated/nls_coefficients.hpp (temp file + rename).
+// writes lib/include/lrchain/generated/nls_coefficients.hpp and, with --models, one evaluator
+// header per model file plus shipped_models.hpp (each through a temp file + rename).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -7,11 +9,14 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <utility>
+#include <vector>
 
-#include <sys/personality.h>
 #include <unistd.h>
 
 #include "lrchain/derivation/generate.hpp"
+#include "lrchain/derivation/model_emission.hpp"
+#include "lrchain/errors.hpp"
 
 namespace fs = std::filesystem;
 
@@ -41,25 +46,61 @@ std::string output_directory_problem(const std::string& dir) {
   return {};
 }
 
+// Writes `text` to `target` through a temporary name and a rename.
+bool write_file(const fs::path& target, const std::string& text) {
+  const fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp");
+  std::error_code ec;
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    f << text;
+    if (!f) return false;
+  }
+  fs::rename(tmp, target, ec);
+  if (ec) fs::remove(tmp, ec);
+  return !ec;
+}
+
+// Derives every *.toml model in `dir` at its default parameters and adds its evaluator header
+// and the list header to `files`; false when a model's checks fail.
+bool derive_model_files(const std::string& dir, std::vector<std::pair<std::string, std::string>>& files, bool quiet) {
+  std::vector<fs::path> paths;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".toml") paths.push_back(entry.path());
+  std::sort(paths.begin(), paths.end());
+  const lrchain::derivation::Symbols symbols;
+  std::vector<std::string> names;
+  bool passed = true;
+  for (const auto& path : paths) {
+    auto file = lrchain::derivation::load_model_file(path);
+    const auto values = lrchain::derivation::parameter_values(file, {});
+    const auto m = lrchain::derivation::derive_model(std::move(file), values, symbols);
+    if (!quiet || !m->passed())
+      std::cout << "model " << m->file.name << ": " << (m->passed() ? "checks passed" : "A CHECK FAILED") << " (derivation "
+                << m->derive_seconds << " s, checks " << m->check_seconds << " s)\n";
+    passed &= m->passed();
+    names.push_back(m->file.name);
+    files.emplace_back("model_" + m->file.name + ".hpp", lrchain::derivation::model_header(*m, symbols));
+  }
+  std::sort(names.begin(), names.end());
+  files.emplace_back("shipped_models.hpp", lrchain::derivation::shipped_models_header(names));
+  return passed;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  // GiNaC orders the terms of sums and products by hash values that include the addresses of its
-  // classes' type information, which address-space randomisation changes from run to run. The
-  // emitted text must be byte-for-byte reproducible (no-drift test), so re-execute once with
-  // randomisation disabled for this process.
-  const int persona = personality(0xffffffff);
-  if (persona != -1 && !(persona & ADDR_NO_RANDOMIZE) && personality(persona | ADDR_NO_RANDOMIZE) != -1)
-    execv("/proc/self/exe", argv);  // returns only on failure; then continue as we are
-  std::string out_dir;
+  std::string out_dir, models_dir;
   bool quiet = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--out") && i + 1 < argc) out_dir = argv[++i];
+    else if (!std::strcmp(argv[i], "--models") && i + 1 < argc) models_dir = argv[++i];
     else if (!std::strcmp(argv[i], "--quiet")) quiet = true;
     else {
-      std::cerr << "usage: lrchain-derive [--out DIR] [--quiet]\n"
+      std::cerr << "usage: lrchain-derive [--out DIR] [--models MODELS_DIR] [--quiet]\n"
                    "  Derives the NLS coefficients of the resonant and homogeneous chains, checks them\n"
                    "  against the paper, and writes DIR/nls_coefficients.hpp (default: print report only).\n"
+                   "  With --models, also derives every MODELS_DIR/*.toml (checks must pass) and writes\n"
+                   "  DIR/model_<name>.hpp and DIR/shipped_models.hpp.\n"
                    "  Exit codes: 0 all checks passed, 1 a check failed or a file could not be written,\n"
                    "  2 bad arguments or --out (nothing written).\n";
       return exit_invalid_input;
@@ -80,26 +121,25 @@ int main(int argc, char** argv) {
   if (!quiet) std::cout << lrchain::derivation::report(d, checks);
   bool all_passed = true;
   for (const auto& c : checks) all_passed &= c.passed;
+  std::vector<std::pair<std::string, std::string>> files{{"nls_coefficients.hpp", header}};
+  if (!models_dir.empty()) {
+    try {
+      all_passed &= derive_model_files(models_dir, files, quiet);
+    } catch (const lrchain::InputError& e) {
+      std::cerr << "lrchain-derive: " << e.what() << "\n";
+      return exit_invalid_input;
+    }
+  }
   if (!out_dir.empty()) {
-    const fs::path target = fs::path(out_dir) / "nls_coefficients.hpp";
-    const fs::path tmp = fs::path(out_dir) / ".nls_coefficients.hpp.tmp";
     std::error_code ec;
     fs::create_directories(out_dir, ec);
-    {
-      std::ofstream f(tmp, std::ios::binary);
-      f << header;
-      if (ec || !f) {
-        std::cerr << "lrchain-derive: cannot write " << tmp.string() << "\n";
+    for (const auto& [name, text] : files) {
+      if (!write_file(fs::path(out_dir) / name, text)) {
+        std::cerr << "lrchain-derive: cannot write " << (fs::path(out_dir) / name).string() << "\n";
         return exit_runtime_error;
       }
+      if (!quiet) std::cout << "wrote " << (fs::path(out_dir) / name).string() << "\n";
     }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-      fs::remove(tmp, ec);
-      std::cerr << "lrchain-derive: cannot write " << target.string() << "\n";
-      return exit_runtime_error;
-    }
-    if (!quiet) std::cout << "wrote " << target.string() << "\n";
   }
   if (!quiet) std::printf("derivation + checks + emission: %.2f s\n", seconds);
   return all_passed ? 0 : exit_runtime_error;

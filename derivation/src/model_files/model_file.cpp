@@ -7,6 +7,7 @@
 #include <toml++/toml.h>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/model.hpp"
 #include "model_expression.hpp"
 #include "model_parameters.hpp"
 #include "strict_keys.hpp"
@@ -53,9 +54,7 @@ class Loader {
       throw InputError(file + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
     }
     out_.path = file;
-    std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64
-    for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
-    out_.hash = h;
+    out_.hash = fnv1a_64(text);
   }
 
   ModelFile run() {

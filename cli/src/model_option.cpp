@@ -1,0 +1,87 @@
+#include "model_option.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/numeric_parse.hpp"
+#ifdef LRCHAIN_WITH_MODEL_COMPILER
+#include "lrchain/model_compiler.hpp"
+#endif
+
+namespace lrchain::cli {
+
+namespace {
+
+constexpr const char* kAliases[] = {"--alpha", "--delta0", "--kappa", "--rho"};
+
+std::vector<std::pair<std::string, double>> set_values(const std::vector<std::string>& set) {
+  std::vector<std::pair<std::string, double>> values;
+  for (const auto& s : set) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos || eq == 0) throw InputError("--set " + s + ": expected NAME=VALUE, e.g. --set rho=1/3");
+    const std::string name = s.substr(0, eq);
+    values.emplace_back(name, parse_number(s.substr(eq + 1), name));
+  }
+  return values;
+}
+
+}  // namespace
+
+void add_model_file_options(CLI::App& cmd, ModelSelection& selection) {
+  cmd.add_option("--model", selection.file,
+                 "lattice model file (docs/models.md), e.g. models/klein_gordon.toml (default: the resonant chain)")
+      ->type_name("FILE");
+  cmd.add_option("--set", selection.set, "model parameter, repeatable: --set w0=2 --set b=1/3")->type_name("NAME=VALUE");
+}
+
+Model resonant_chain_model(const Params& p) {
+  return shipped_model("resonant_chain", {{"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}});
+}
+
+Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, const Params& aliases) {
+  std::vector<std::pair<std::string, double>> values;
+  std::shared_ptr<const ModelDefinition> definition;
+  // Shipped definitions live for the whole program: shared without owning.
+  const auto shipped = [](const ModelDefinition* d) { return std::shared_ptr<const ModelDefinition>(std::shared_ptr<const ModelDefinition>(), d); };
+  if (selection.file.empty()) {
+    definition = shipped(find_shipped_model("resonant_chain"));
+  } else {
+    std::ifstream in(selection.file, std::ios::binary);
+    if (!in) throw InputError("--model " + selection.file + ": cannot read the model file");
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    const std::uint64_t hash = fnv1a_64(bytes.str());
+    for (const auto& m : shipped_models())
+      if (m.file_hash == hash) definition = shipped(&m);
+#ifdef LRCHAIN_WITH_MODEL_COMPILER
+    if (!definition) definition = compile_model_file(selection.file);
+#else
+    if (!definition)
+      throw InputError("--model " + selection.file +
+                       ": not a shipped model file, and this build has no model compiler (configure with "
+                       "LRCHAIN_BUILD_DERIVATION=ON)");
+#endif
+  }
+  for (const char* alias : kAliases) {
+    const CLI::Option* option = cmd.get_option_no_throw(alias);
+    if (!option || option->count() == 0) continue;
+    if (definition->name != "resonant_chain")
+      throw InputError(std::string(alias) + " belongs to the resonant chain; model " + definition->name +
+                       " takes --set NAME=VALUE");
+    const std::string name = std::string(alias).substr(2);
+    const double v = name == "alpha" ? aliases.alpha : name == "delta0" ? aliases.delta0 : name == "kappa" ? aliases.kappa : aliases.rho;
+    values.emplace_back(name, v);
+  }
+  for (const auto& v : set_values(selection.set)) values.push_back(v);
+  return Model(definition, values);
+}
+
+nlohmann::json model_json(const Model& model) {
+  nlohmann::json parameters = nlohmann::json::object();
+  const auto& d = model.definition();
+  for (std::size_t i = 0; i < d.parameters.size(); ++i) parameters[d.parameters[i].name] = model.inputs()[i];
+  return {{"name", d.name}, {"file_hash", model_hash_text(d.file_hash)}, {"parameters", parameters}};
+}
+
+}  // namespace lrchain::cli

@@ -1,0 +1,27 @@
+#pragma once
+// Run-time compilation of a user's model file (docs/models.md): derive it, emit its evaluators as
+// C++, compile them with the compiler lrchain was built with into a per-user cache
+// ($XDG_CACHE_HOME/lrchain, default ~/.cache/lrchain) keyed by the file's bytes, the compiler and
+// the lrchain version, and load the shared object. A second call with the same file reuses it.
+#include <filesystem>
+#include <memory>
+
+#include "lrchain/model.hpp"
+
+namespace lrchain {
+
+struct CompiledModelInfo {
+  bool from_cache = false;        // the shared object existed already
+  std::filesystem::path library;  // the cached shared object
+};
+
+// The model of `path` with compiled evaluators. Throws InputError for a bad model file (a failing
+// derivation check included) and std::runtime_error when the compiler cannot be run or fails.
+std::shared_ptr<const ModelDefinition> compile_model_file(const std::filesystem::path& path,
+                                                          CompiledModelInfo* info = nullptr);
+
+// The compiler recorded at configure time and whether it can be run.
+const char* model_compiler_path();
+bool model_compiler_available();
+
+}  // namespace lrchain

@@ -1,0 +1,194 @@
+#include "lrchain/model_compiler.hpp"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+
+#include "lrchain/derivation/model_emission.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/process.hpp"
+
+namespace fs = std::filesystem;
+
+namespace lrchain {
+
+namespace {
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot read the model file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// $XDG_CACHE_HOME/lrchain, else $HOME/.cache/lrchain.
+fs::path cache_directory() {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg && *xdg && fs::path(xdg).is_absolute()) return fs::path(xdg) / "lrchain";
+  const char* home = std::getenv("HOME");
+  if (!home || !*home) throw std::runtime_error("cannot place the model cache: neither XDG_CACHE_HOME nor HOME is set");
+  return fs::path(home) / ".cache" / "lrchain";
+}
+
+std::string number(double v) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  return buffer;
+}
+
+// The model's description, one item per line (read back by parse_metadata).
+std::string metadata(const derivation::ModelDerivation& m) {
+  std::ostringstream out;
+  out << "name " << m.file.name << "\ndescription " << m.file.description << "\nhash " << m.file.hash
+      << "\nmean_flow " << m.coefficients.mean_flow << "\ndegree " << m.branches.size() << "\n";
+  for (const auto& p : m.file.parameters) {
+    const auto& r = p.range;
+    out << "parameter " << p.name << " " << number(p.default_value.to_double()) << " " << r.has_lower << " "
+        << (r.has_lower ? number(r.lower.to_double()) : "0") << " " << r.lower_closed << " " << r.has_upper << " "
+        << (r.has_upper ? number(r.upper.to_double()) : "0") << " " << r.upper_closed << " " << r.text << "\n";
+  }
+  for (const auto& i : m.file.intermediates) out << "intermediate " << i.name << "\n";
+  for (const auto& b : m.branches) out << "branch " << b.name << "\n";
+  return out.str();
+}
+
+ModelDefinition parse_metadata(const std::string& text) {
+  ModelDefinition d;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string key;
+    fields >> key;
+    std::string rest;
+    std::getline(fields >> std::ws, rest);
+    std::istringstream values(rest);
+    if (key == "name") d.name = rest;
+    else if (key == "description") d.description = rest;
+    else if (key == "hash") values >> d.file_hash;
+    else if (key == "mean_flow") values >> d.mean_flow;
+    else if (key == "degree") values >> d.degree;
+    else if (key == "intermediate") d.intermediates.push_back(rest);
+    else if (key == "branch") d.branch_names.push_back(rest);
+    else if (key == "parameter") {
+      ModelParameter p;
+      values >> p.name >> p.default_value >> p.has_lower >> p.lower >> p.lower_closed >> p.has_upper >> p.upper >> p.upper_closed;
+      std::getline(values >> std::ws, p.range_text);
+      d.parameters.push_back(p);
+    }
+  }
+  return d;
+}
+
+// C++ string literal of `text`.
+std::string literal(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '\n') out += "\\n\"\n\"";
+    else if (c == '"' || c == '\\') out += std::string("\\") + c;
+    else out += c;
+  }
+  return out + "\"";
+}
+
+// Self-contained source of the shared object: the evaluators and C entry points.
+std::string shared_object_source(const derivation::ModelDerivation& m, const derivation::Symbols& s) {
+  return "// lrchain model " + m.file.name + ", emitted from " + m.file.path + "\n#include <cmath>\n\nnamespace lrchain_model {\n\n" +
+         derivation::model_evaluator_functions(m, s) +
+         "\n}  // namespace lrchain_model\n\n"
+         "extern \"C\" const char lrchain_model_metadata[] = " + literal(metadata(m)) + ";\n\n"
+         "extern \"C\" {\n"
+         "void lrchain_model_intermediates(const double* p, double* q) { lrchain_model::intermediates(p, q); }\n"
+         "void lrchain_model_dispersion(double D1, double sigma, const double* q, double* w) { lrchain_model::dispersion(D1, sigma, q, w); }\n"
+         "void lrchain_model_nls(double D1, double sigma, double omega, const double* q, double* out) { lrchain_model::nls(D1, sigma, omega, q, out); }\n"
+         "}\n";
+}
+
+template <class Function>
+Function symbol(void* handle, const char* name, const fs::path& library) {
+  void* p = dlsym(handle, name);
+  if (!p) throw std::runtime_error(library.string() + ": missing " + name);
+  return reinterpret_cast<Function>(p);
+}
+
+// Loads a cached shared object as a model definition (the handle lives as long as the definition).
+std::shared_ptr<const ModelDefinition> load_library(const fs::path& library) {
+  void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) throw std::runtime_error("cannot load " + library.string() + ": " + dlerror());
+  std::shared_ptr<void> owner(handle, [](void* h) { dlclose(h); });
+  const auto* text = static_cast<const char*>(dlsym(handle, "lrchain_model_metadata"));
+  if (!text) throw std::runtime_error(library.string() + ": no model description");
+  auto d = std::make_shared<ModelDefinition>(parse_metadata(text));
+  d->evaluators.intermediates = symbol<void (*)(const double*, double*)>(handle, "lrchain_model_intermediates", library);
+  d->evaluators.dispersion = symbol<void (*)(double, double, const double*, double*)>(handle, "lrchain_model_dispersion", library);
+  d->evaluators.nls = symbol<void (*)(double, double, double, const double*, double*)>(handle, "lrchain_model_nls", library);
+  if (d->name.empty() || d->branch_names.empty()) throw std::runtime_error(library.string() + ": no model description");
+  d->keep_alive = owner;
+  return d;
+}
+
+}  // namespace
+
+const char* model_compiler_path() { return LRCHAIN_CXX_COMPILER; }
+
+bool model_compiler_available() { return program_in_path(LRCHAIN_CXX_COMPILER); }
+
+std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, CompiledModelInfo* info) {
+  const std::string bytes = read_bytes(path);
+  const std::uint64_t key = fnv1a_64(std::string(LRCHAIN_CXX_COMPILER) + "\n" + LRCHAIN_VERSION + "\nevaluators 2\n", fnv1a_64(bytes));
+  const fs::path directory = cache_directory();
+  const fs::path library = directory / ("model-" + model_hash_text(key).substr(2) + ".so");
+  if (info) info->library = library;
+  std::error_code ec;
+  if (fs::exists(library, ec)) {
+    if (info) info->from_cache = true;
+    return load_library(library);
+  }
+  // Derive (a bad file or a failing check is the user's input error) before touching the cache.
+  const derivation::Symbols symbols;
+  derivation::ModelFile file = derivation::parse_model_text(bytes, path.string());
+  const auto values = derivation::parameter_values(file, {});
+  const auto m = derivation::derive_model(std::move(file), values, symbols);
+  if (!m->passed())
+    throw InputError(path.string() + ": a derivation check failed for model " + m->file.name +
+                     " (see `lrchain derive --model " + path.string() + "`)");
+  if (!model_compiler_available())
+    throw std::runtime_error(std::string("the C++ compiler lrchain was built with (") + LRCHAIN_CXX_COMPILER +
+                             ") is not available to compile the model's evaluators");
+  fs::create_directories(directory, ec);
+  if (ec) throw std::runtime_error("cannot create the model cache " + directory.string() + ": " + ec.message());
+  // Unique temporary names: concurrent processes each compile their own copy and rename it into place.
+  std::random_device random;
+  const std::string stem = ".model-" + std::to_string(::getpid()) + "-" + std::to_string(random());
+  const fs::path source = directory / (stem + ".cpp"), object = directory / (stem + ".so");
+  {
+    std::ofstream out(source, std::ios::binary);
+    out << shared_object_source(*m, symbols);
+    if (!out) throw std::runtime_error("cannot write " + source.string());
+  }
+  ProcessOptions options;
+  options.capture_stderr = true;
+  const ProcessResult r = run_program({LRCHAIN_CXX_COMPILER, "-std=c++17", "-O2", "-fPIC", "-shared", "-o", object.string(), source.string()}, options);
+  fs::remove(source, ec);
+  if (!r.ok()) {
+    fs::remove(object, ec);
+    throw std::runtime_error("compiling the evaluators of " + path.string() + " failed: " +
+                             r.error_output.substr(0, r.error_output.find('\n')));
+  }
+  fs::rename(object, library, ec);
+  if (ec) {
+    fs::remove(object, ec);
+    throw std::runtime_error("cannot place " + library.string() + " in the model cache");
+  }
+  return load_library(library);
+}
+
+}  // namespace lrchain

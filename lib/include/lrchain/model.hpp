@@ -1,0 +1,103 @@
+#pragma once
+// A lattice model loaded for numerics (docs/models.md): its name, file hash, parameters with their
+// ranges, branch names and the emitted double evaluators (shipped models: compiled into the
+// library from lib/include/lrchain/generated/model_*.hpp; a user's file: compiled at run time and
+// loaded by the model compiler). The library never runs the symbolic derivation itself.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "lrchain/coefficients.hpp"
+
+namespace lrchain {
+
+// Outputs of a model's NLS evaluator, in this order (ModelEvaluators::nls writes out[0..count)).
+enum ModelOutput : int {
+  out_group_velocity, out_gamma, out_curvature, out_beta, out_nonresonance1, out_nonresonance2, out_h, out_lambda,
+  out_h_tilde, out_h_tilde_numerator, out_dispersion, out_nonresonance1_scale, out_nonresonance2_scale,
+  model_output_count
+};
+
+// Highest degree in omega^2 of det M a model may have (number of fields).
+inline constexpr int kMaxModelDegree = 6;
+
+// The evaluator functions emitted for a model. q holds the parameter values followed by the named
+// intermediates (e.g. K2, K3, K4); D1 = 4 sin^2(theta/2), sigma = sin(theta).
+struct ModelEvaluators {
+  void (*intermediates)(const double* parameters, double* q) = nullptr;  // q = parameters, intermediates
+  void (*dispersion)(double D1, double sigma, const double* q, double* coefficients) = nullptr;  // det M, ascending in omega^2
+  void (*nls)(double D1, double sigma, double omega, const double* q, double* out) = nullptr;     // ModelOutput order
+};
+
+// One parameter of a model file: name, default and valid range.
+struct ModelParameter {
+  std::string name, range_text;
+  double default_value = 0;
+  bool has_lower = false, has_upper = false, lower_closed = false, upper_closed = false;
+  double lower = 0, upper = 0;
+  bool contains(double value) const;
+};
+
+// Everything the numerics need about one model.
+struct ModelDefinition {
+  std::string name, description;
+  std::uint64_t file_hash = 0;  // FNV-1a 64 of the model file's bytes
+  std::vector<ModelParameter> parameters;
+  std::vector<std::string> intermediates;  // names of the named Taylor coefficients (q after the parameters)
+  std::vector<std::string> branch_names;   // in increasing frequency
+  bool mean_flow = true;                   // translation-invariant (lambda, h_tilde = h - lambda beta); else on-site
+  int degree = 1;                          // degree of det M in omega^2 (= number of fields)
+  ModelEvaluators evaluators;
+  std::shared_ptr<const void> keep_alive;  // owner of the evaluator code (a loaded shared object), if any
+};
+
+// The shipped models (models/*.toml) with their compiled-in evaluators, sorted by name.
+const std::vector<ModelDefinition>& shipped_models();
+// The shipped model called `name`, or nullptr.
+const ModelDefinition* find_shipped_model(std::string_view name);
+
+// A model with parameter values: the evaluators' input vector q is computed once here.
+class Model {
+ public:
+  // Defaults overridden by `values` (name, value); throws InvalidParameter for an unknown name or a
+  // value outside the parameter's range.
+  explicit Model(std::shared_ptr<const ModelDefinition> definition,
+                 const std::vector<std::pair<std::string, double>>& values = {});
+  const ModelDefinition& definition() const { return *definition_; }
+  const std::string& name() const { return definition_->name; }
+  std::uint64_t file_hash() const { return definition_->file_hash; }
+  // Parameter values in the file's order, then the named intermediates.
+  const std::vector<double>& inputs() const { return q_; }
+  double parameter(std::string_view name) const;
+  // Index of a branch name (throws InvalidParameter("branch", ...) naming the model's branches).
+  std::size_t branch(std::string_view name) const;
+
+ private:
+  std::shared_ptr<const ModelDefinition> definition_;
+  std::vector<double> q_;
+};
+
+// The shipped model `name` (InputError if there is none) with the given parameter values.
+Model shipped_model(std::string_view name, const std::vector<std::pair<std::string, double>>& values = {});
+
+// "0x" + 16 hex digits.
+std::string model_hash_text(std::uint64_t hash);
+
+// FNV-1a 64 of `bytes` (continuing from `hash`): the hash model files are identified by.
+std::uint64_t fnv1a_64(std::string_view bytes, std::uint64_t hash = 14695981039346656037ull);
+
+// NLS coefficients of `model` on branch `branch` (index into branch_names) at theta in (-pi, pi]:
+// omega is the branch's root of det M = 0 in omega^2. lambda is NaN (no mean flow) for on-site
+// models. Throws InvalidParameter for theta out of range or where the branch has no real,
+// positive frequency (theta = 0 on an acoustic branch). Allocation-free.
+NlsCoefficients coefficients(const Model& model, std::size_t branch, double theta);
+
+// Roots in omega^2 of the polynomial sum_k coefficients[k] w^k (degree <= kMaxModelDegree), real
+// parts ascending, into `roots`; returns false when a root is not real. Allocation-free.
+bool omega_squared_roots(const double* coefficients, int degree, double* roots);
+
+}  // namespace lrchain

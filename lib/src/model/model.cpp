@@ -1,0 +1,187 @@
+#include "lrchain/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+
+#include "lrchain/errors.hpp"
+
+namespace lrchain {
+
+bool ModelParameter::contains(double v) const {
+  if (!std::isfinite(v)) return false;
+  if (has_lower && (lower_closed ? v < lower : v <= lower)) return false;
+  if (has_upper && (upper_closed ? v > upper : v >= upper)) return false;
+  return true;
+}
+
+std::string model_hash_text(std::uint64_t hash) {
+  char buffer[19];
+  std::snprintf(buffer, sizeof buffer, "0x%016llx", static_cast<unsigned long long>(hash));
+  return buffer;
+}
+
+std::uint64_t fnv1a_64(std::string_view bytes, std::uint64_t hash) {
+  for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
+  return hash;
+}
+
+const ModelDefinition* find_shipped_model(std::string_view name) {
+  for (const auto& m : shipped_models())
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+Model shipped_model(std::string_view name, const std::vector<std::pair<std::string, double>>& values) {
+  const ModelDefinition* d = find_shipped_model(name);
+  if (!d) {
+    std::string known;
+    for (const auto& m : shipped_models()) known += (known.empty() ? "" : ", ") + m.name;
+    throw InputError("no shipped model '" + std::string(name) + "' (shipped: " + known + ")");
+  }
+  // Shipped definitions live for the whole program: share them without owning.
+  return Model(std::shared_ptr<const ModelDefinition>(std::shared_ptr<const ModelDefinition>(), d), values);
+}
+
+// Defaults, overrides checked against their ranges, then the evaluator's intermediates.
+Model::Model(std::shared_ptr<const ModelDefinition> definition, const std::vector<std::pair<std::string, double>>& values)
+    : definition_(std::move(definition)) {
+  const auto& parameters = definition_->parameters;
+  std::vector<double> p;
+  for (const auto& parameter : parameters) p.push_back(parameter.default_value);
+  for (const auto& [name, value] : values) {
+    auto it = std::find_if(parameters.begin(), parameters.end(), [&](const auto& q) { return q.name == name; });
+    if (it == parameters.end()) {
+      std::string known;
+      for (const auto& q : parameters) known += (known.empty() ? "" : ", ") + q.name;
+      throw InvalidParameter(name, "model " + definition_->name + " has no such parameter (its parameters: " + known + ")");
+    }
+    if (!it->contains(value)) {
+      char buffer[40];
+      std::snprintf(buffer, sizeof buffer, "%.17g", value);
+      throw InvalidParameter(name, std::string(buffer) + " is outside its range " + it->range_text + " (model " +
+                                       definition_->name + ")");
+    }
+    p[std::size_t(it - parameters.begin())] = value;
+  }
+  q_.assign(parameters.size() + definition_->intermediates.size(), 0.0);
+  definition_->evaluators.intermediates(p.data(), q_.data());
+  for (std::size_t i = parameters.size(); i < q_.size(); ++i)
+    if (!std::isfinite(q_[i]))
+      throw InvalidParameter(definition_->intermediates[i - parameters.size()],
+                             "is not finite at these parameter values (model " + definition_->name + ")");
+}
+
+double Model::parameter(std::string_view name) const {
+  const auto& parameters = definition_->parameters;
+  for (std::size_t i = 0; i < parameters.size(); ++i)
+    if (parameters[i].name == name) return q_[i];
+  throw InvalidParameter(std::string(name), "model " + definition_->name + " has no such parameter");
+}
+
+std::size_t Model::branch(std::string_view name) const {
+  const auto& names = definition_->branch_names;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return i;
+  std::string known;
+  for (const auto& n : names) known += (known.empty() ? "'" : ", '") + n + "'";
+  throw InvalidParameter("branch", "model " + definition_->name + " has the branches " + known + ", not '" +
+                                       std::string(name) + "'");
+}
+
+// Linear and quadratic in closed form (the quadratic without cancellation), higher degrees by
+// Durand-Kerner iteration on fixed-size arrays.
+bool omega_squared_roots(const double* c, int degree, double* roots) {
+  if (degree == 1) {
+    roots[0] = -c[0] / c[1];
+    return std::isfinite(roots[0]);
+  }
+  if (degree == 2) {
+    const double a = c[2], b = c[1], c0 = c[0];
+    const double disc = b * b - 4.0 * a * c0;
+    if (disc < -1e-14 * (b * b + std::abs(4.0 * a * c0))) return false;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(std::max(disc, 0.0)), b));
+    const double r1 = q / a, r2 = q != 0.0 ? c0 / q : r1;
+    roots[0] = std::min(r1, r2);
+    roots[1] = std::max(r1, r2);
+    return std::isfinite(roots[0]) && std::isfinite(roots[1]);
+  }
+  if (degree < 1 || degree > kMaxModelDegree) return false;
+  std::complex<double> z[kMaxModelDegree];
+  const std::complex<double> seed(0.4, 0.9);
+  double radius = 0;
+  for (int k = 0; k < degree; ++k) radius = std::max(radius, std::abs(c[k] / c[degree]));
+  z[0] = seed * (1.0 + radius);
+  for (int k = 1; k < degree; ++k) z[k] = z[k - 1] * seed;
+  for (int iteration = 0; iteration < 500; ++iteration) {
+    double change = 0;
+    for (int i = 0; i < degree; ++i) {
+      std::complex<double> p = c[degree];
+      for (int k = degree - 1; k >= 0; --k) p = p * z[i] + c[k];
+      std::complex<double> d = c[degree];
+      for (int j = 0; j < degree; ++j)
+        if (j != i) d *= z[i] - z[j];
+      const std::complex<double> step = p / d;
+      z[i] -= step;
+      change = std::max(change, std::abs(step) / std::max(1.0, std::abs(z[i])));
+    }
+    if (change < 1e-15) break;
+  }
+  for (int i = 0; i < degree; ++i) {
+    if (std::abs(z[i].imag()) > 1e-9 * std::max(1.0, std::abs(z[i]))) return false;
+    roots[i] = z[i].real();
+  }
+  std::sort(roots, roots + degree);
+  return true;
+}
+
+NlsCoefficients coefficients(const Model& model, std::size_t branch, double theta) {
+  const ModelDefinition& d = model.definition();
+  if (!(std::isfinite(theta) && theta > -std::numbers::pi && theta <= std::numbers::pi))
+    throw InvalidParameter("theta", "must be a wavenumber in (-pi, pi]");
+  if (branch >= d.branch_names.size()) throw InvalidParameter("branch", "index out of range for model " + d.name);
+  const double sh = std::sin(0.5 * theta), ch = std::cos(0.5 * theta);
+  const double D1 = 4.0 * sh * sh;  // no cancellation near theta = 0
+  const double sigma = 2.0 * sh * ch;
+  const double* q = model.inputs().data();
+  double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
+  d.evaluators.dispersion(D1, sigma, q, w);
+  if (!omega_squared_roots(w, d.degree, roots))
+    throw InvalidParameter("theta", "model " + d.name + " has no real frequency at this wavenumber");
+  const double w2 = roots[branch];
+  if (!(w2 > 0.0))
+    throw InvalidParameter("theta", "branch " + d.branch_names[branch] + " of model " + d.name +
+                                        " has no positive frequency here (theta = 0 on an acoustic branch is the "
+                                        "zero-frequency mode)");
+  const double omega = std::sqrt(w2);
+  double out[model_output_count];
+  d.evaluators.nls(D1, sigma, omega, q, out);
+  NlsCoefficients c;
+  c.theta = theta;
+  c.omega = omega;
+  c.group_velocity = out[out_group_velocity];
+  c.curvature = out[out_curvature];
+  c.gamma = out[out_gamma];
+  c.beta = out[out_beta];
+  c.nonresonance1 = out[out_nonresonance1];
+  c.nonresonance2 = out[out_nonresonance2];
+  c.h_tilde_numerator = out[out_h_tilde_numerator];
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (std::abs(c.nonresonance1) <= kNonresonanceTolerance * out[out_nonresonance1_scale] ||
+      std::abs(c.nonresonance2) <= kNonresonanceTolerance * out[out_nonresonance2_scale]) {
+    c.h = c.lambda = c.h_tilde = nan;
+    c.regime = Regime::singular;
+    return c;
+  }
+  c.h = out[out_h];
+  c.lambda = d.mean_flow ? out[out_lambda] : nan;
+  c.h_tilde = out[out_h_tilde];
+  const double product = c.curvature * c.h_tilde;
+  c.regime = product < 0 ? Regime::focusing : product > 0 ? Regime::defocusing : Regime::degenerate;
+  return c;
+}
+
+}  // namespace lrchain
