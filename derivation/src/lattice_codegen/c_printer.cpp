@@ -1,0 +1,94 @@
+// Printing GiNaC expressions as C++ double arithmetic for the lattice kernels.
+#include "c_printer.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+#include <sstream>
+#include <string>
+#include <stdexcept>
+
+namespace lrchain::derivation {
+
+using namespace GiNaC;
+
+namespace {
+
+std::string number(const numeric& x) {
+  if (x.is_integer()) {
+    std::ostringstream os;
+    os << x << ".0";
+    return x.is_negative() ? "(" + os.str() + ")" : os.str();
+  }
+  if (x.is_rational()) return "(" + number(x.numer()) + "/" + number(x.denom()) + ")";
+  if (!x.is_real()) throw std::invalid_argument("complex number in lattice code");
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x.to_double());
+  return std::string("(") + buffer + ")";
+}
+
+std::string power_text(const ex& base, const ex& exponent) {
+  const std::string b = c_expression(base);
+  if (is_a<numeric>(exponent)) {
+    const numeric p = ex_to<numeric>(exponent);
+    if (p.is_integer()) {
+      if (p.is_positive()) return "ipow<" + std::to_string(p.to_long()) + ">(" + b + ")";
+      return "(1.0/ipow<" + std::to_string((-p).to_long()) + ">(" + b + "))";
+    }
+    if (p.is_rational() && p.denom() == 2) {
+      const numeric k = (p.numer().is_positive() ? p.numer() - 1 : -p.numer() - 1) / 2;
+      const std::string text = "half_pow<" + std::to_string(k.to_long()) + ">(" + b + ")";
+      return p.is_positive() ? text : "(1.0/" + text + ")";
+    }
+  }
+  return "std::pow(" + b + ", " + c_expression(exponent) + ")";
+}
+
+// The parts sorted and joined (a canonical text for a sum or product).
+std::string joined(std::vector<std::string> parts, const std::string& separator) {
+  std::sort(parts.begin(), parts.end());
+  std::string out;
+  for (std::size_t i = 0; i < parts.size(); ++i) out += (i ? separator : "") + parts[i];
+  return out;
+}
+
+}  // namespace
+
+std::string c_expression(const ex& e) {
+  if (is_a<numeric>(e)) return number(ex_to<numeric>(e));
+  if (is_a<symbol>(e)) return ex_to<symbol>(e).get_name();
+  if (is_a<add>(e)) {
+    std::vector<std::string> terms;  // sorted: the text does not depend on GiNaC's term order
+    for (std::size_t i = 0; i < e.nops(); ++i) terms.push_back(c_expression(e.op(i)));
+    return "(" + joined(terms, " + ") + ")";
+  }
+  if (is_a<mul>(e)) {
+    std::vector<std::string> top, bottom;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      const ex factor = e.op(i);
+      if (is_a<power>(factor) && is_a<numeric>(factor.op(1)) && ex_to<numeric>(factor.op(1)).is_negative())
+        bottom.push_back(c_expression(pow(factor.op(0), -factor.op(1))));
+      else
+        top.push_back(c_expression(factor));
+    }
+    const std::string numerator = top.empty() ? "1.0" : joined(top, "*");
+    const std::string denominator = joined(bottom, "*");
+    return denominator.empty() ? "(" + numerator + ")" : "(" + numerator + "/(" + denominator + "))";
+  }
+  if (is_a<power>(e)) return power_text(e.op(0), e.op(1));
+  if (is_a<function>(e)) {
+    std::string name = ex_to<function>(e).get_name();
+    if (name == "abs") name = "fabs";
+    std::string out = "std::" + name + "(";
+      for (std::size_t i = 0; i < e.nops(); ++i) out += (i ? ", " : "") + c_expression(e.op(i));
+    return out + ")";
+  }
+  if (is_a<constant>(e)) return number(ex_to<numeric>(e.evalf()));
+  throw std::invalid_argument("cannot print " + [&] {
+    std::ostringstream os;
+    os << e;
+    return os.str();
+  }() + " as C++");
+}
+
+}  // namespace lrchain::derivation
