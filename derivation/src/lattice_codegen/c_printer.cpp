@@ -27,8 +27,21 @@ std::string number(const numeric& x) {
   return std::string("(") + buffer + ")";
 }
 
+// -sum, term by term (each term keeps its structure).
+ex negated_sum(const ex& sum) {
+  ex negated = 0;
+  for (std::size_t j = 0; j < sum.nops(); ++j) negated += -sum.op(j);
+  return negated;
+}
+
+// text^k for a positive integer k.
+std::string integer_power_text(const std::string& text, const numeric& k) {
+  return k == 1 ? text : "ipow<" + std::to_string(k.to_long()) + ">(" + text + ")";
+}
+
 std::string power_text(const ex& base, const ex& exponent) {
-  const std::string b = c_expression(base);
+  std::string b = c_expression(base);
+  if (is_a<add>(base) && exponent.info(info_flags::even)) b = std::min(b, c_expression(negated_sum(base)));
   if (is_a<numeric>(exponent)) {
     const numeric p = ex_to<numeric>(exponent);
     if (p.is_integer()) {
@@ -63,14 +76,39 @@ std::string c_expression(const ex& e) {
     return "(" + joined(terms, " + ") + ")";
   }
   if (is_a<mul>(e)) {
+    // A sum (or an integer power of a sum) is printed as whichever of +-sum has the smaller text,
+    // the sign moved to the coefficient: GiNaC's choice between (a - b) c and (b - a) (-c) depends
+    // on its term order. Texts only: GiNaC would re-evaluate a rebuilt power.
     std::vector<std::string> top, bottom;
+    numeric coefficient = 1;
     for (std::size_t i = 0; i < e.nops(); ++i) {
       const ex factor = e.op(i);
+      if (is_a<numeric>(factor)) {
+        coefficient *= ex_to<numeric>(factor);
+        continue;
+      }
+      const bool power_of_sum = is_a<power>(factor) && is_a<add>(factor.op(0)) && is_a<numeric>(factor.op(1)) &&
+                                ex_to<numeric>(factor.op(1)).is_integer();
+      if (is_a<add>(factor) || power_of_sum) {
+        const ex sum = power_of_sum ? factor.op(0) : factor;
+        std::string text = c_expression(sum);
+        const std::string negated = c_expression(negated_sum(sum));
+        const numeric k = power_of_sum ? ex_to<numeric>(factor.op(1)) : numeric(1);
+        if (negated < text) {
+          text = negated;
+          if (k.is_odd()) coefficient = -coefficient;
+        }
+        if (!power_of_sum) top.push_back(text);
+        else if (k.is_positive()) top.push_back(integer_power_text(text, k));
+        else bottom.push_back(integer_power_text(text, -k));
+        continue;
+      }
       if (is_a<power>(factor) && is_a<numeric>(factor.op(1)) && ex_to<numeric>(factor.op(1)).is_negative())
         bottom.push_back(c_expression(pow(factor.op(0), -factor.op(1))));
       else
         top.push_back(c_expression(factor));
     }
+    if (coefficient != 1) top.push_back(number(coefficient));
     const std::string numerator = top.empty() ? "1.0" : joined(top, "*");
     const std::string denominator = joined(bottom, "*");
     return denominator.empty() ? "(" + numerator + ")" : "(" + numerator + "/(" + denominator + "))";

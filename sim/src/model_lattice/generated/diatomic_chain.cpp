@@ -195,7 +195,7 @@ LRCHAIN_KERNEL void displacement_generic_site_forces(const double* P, long lo, l
   double* __restrict a_1 = a[1];
   for (long i = lo; i < hi; ++i) {
     a_0[i] = (((-1.0)*b_1[i-1]) + b_0[i]);
-    a_1[i] = ((((-1.0)*b_1[i]) + b_0[i])*(-1.0)/(p_m));
+    a_1[i] = ((((-1.0)*b_0[i]) + b_1[i])/(p_m));
   }
 }
 
@@ -273,7 +273,7 @@ LRCHAIN_KERNEL void displacement_default_exponents_site_forces(const double* P, 
   double* __restrict a_1 = a[1];
   for (long i = lo; i < hi; ++i) {
     a_0[i] = (((-1.0)*b_1[i-1]) + b_0[i]);
-    a_1[i] = ((((-1.0)*b_1[i]) + b_0[i])*(-1.0)/(p_m));
+    a_1[i] = ((((-1.0)*b_0[i]) + b_1[i])/(p_m));
   }
 }
 
@@ -371,7 +371,7 @@ LRCHAIN_KERNEL void strain_generic_site_forces(const double* P, long lo, long hi
   double* __restrict a_1 = a[1];
   for (long i = lo; i < hi; ++i) {
     a_0[i] = (((-1.0)*b_1[i-1]) + b_0[i]);
-    a_1[i] = ((((-1.0)*b_1[i]) + b_0[i])*(-1.0)/(p_m));
+    a_1[i] = ((((-1.0)*b_0[i]) + b_1[i])/(p_m));
   }
 }
 
@@ -446,7 +446,7 @@ LRCHAIN_KERNEL void strain_default_exponents_site_forces(const double* P, long l
   double* __restrict a_1 = a[1];
   for (long i = lo; i < hi; ++i) {
     a_0[i] = (((-1.0)*b_1[i-1]) + b_0[i]);
-    a_1[i] = ((((-1.0)*b_1[i]) + b_0[i])*(-1.0)/(p_m));
+    a_1[i] = ((((-1.0)*b_0[i]) + b_1[i])/(p_m));
   }
 }
 
@@ -500,7 +500,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_energies(const double* P, long lo,
       const double s_full = (((-1.0)*x_1[i]) + p_delta0 + x_0[i]);
       const double s = s_full > 0.0 ? s_full : 0.0;
       const double s_lost = s_full - s;
-      b_j[i] = (((-1.0)*s*std::pow(p_delta0, p_alpha)) + ((-1.0)*std::pow(p_delta0, (1.0 + p_alpha))/((1.0 + p_alpha))) + (p_delta0*std::pow(p_delta0, p_alpha)) + (std::pow(s, (1.0 + p_alpha))/((1.0 + p_alpha)))) + ((((-1.0)*std::pow(p_delta0, p_alpha)) + std::pow(0.0, p_alpha))) * s_lost;
+      b_j[i] = (((-1.0)*s*std::pow(p_delta0, p_alpha)) + ((-1.0)*std::pow(s, (1.0 + p_alpha))/((((-1.0)*p_alpha) + (-1.0)))) + (p_delta0*std::pow(p_delta0, p_alpha)) + (std::pow(p_delta0, (1.0 + p_alpha))/((((-1.0)*p_alpha) + (-1.0))))) + ((((-1.0)*std::pow(p_delta0, p_alpha)) + std::pow(0.0, p_alpha))) * s_lost;
     }
   }
   { double* __restrict b_j = b[1];
@@ -510,7 +510,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_energies(const double* P, long lo,
       const double s_full = (((-1.0)*x_0[i+1]) + p_delta0 + x_1[i]);
       const double s = s_full > 0.0 ? s_full : 0.0;
       const double s_lost = s_full - s;
-      b_j[i] = (((-1.0)*s*std::pow(p_delta0, p_alpha)) + ((-1.0)*std::pow(p_delta0, (1.0 + p_alpha))/((1.0 + p_alpha))) + (p_delta0*std::pow(p_delta0, p_alpha)) + (std::pow(s, (1.0 + p_alpha))/((1.0 + p_alpha)))) + ((((-1.0)*std::pow(p_delta0, p_alpha)) + std::pow(0.0, p_alpha))) * s_lost;
+      b_j[i] = (((-1.0)*s*std::pow(p_delta0, p_alpha)) + ((-1.0)*std::pow(s, (1.0 + p_alpha))/((((-1.0)*p_alpha) + (-1.0)))) + (p_delta0*std::pow(p_delta0, p_alpha)) + (std::pow(p_delta0, (1.0 + p_alpha))/((((-1.0)*p_alpha) + (-1.0))))) + ((((-1.0)*std::pow(p_delta0, p_alpha)) + std::pow(0.0, p_alpha))) * s_lost;
     }
   }
 }

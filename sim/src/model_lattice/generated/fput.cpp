@@ -141,7 +141,7 @@ LRCHAIN_KERNEL void displacement_generic_bonds(const double* P, long lo, long hi
   { double* __restrict b_j = b[0];
   const double* __restrict x_0 = x[0];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = (((-1.0)*x_0[i]) + (ipow<2>((((-1.0)*x_0[i]) + x_0[i+1]))*p_a) + (ipow<3>((((-1.0)*x_0[i]) + x_0[i+1]))*p_b) + x_0[i+1]);
+      b_j[i] = (((-1.0)*ipow<3>((((-1.0)*x_0[i+1]) + x_0[i]))*p_b) + ((-1.0)*x_0[i]) + (ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))*p_a) + x_0[i+1]);
     }
   }
 }
@@ -153,7 +153,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_derivatives(const double* P, long 
   const double* __restrict x_0 = x[0];
   const double* __restrict dx_0 = dx[0];
     for (long i = lo; i < hi; ++i) {
-      db_j[i] = ((((((-1.0)*x_0[i]) + x_0[i+1])*2.0*p_a) + (3.0*ipow<2>((((-1.0)*x_0[i]) + x_0[i+1]))*p_b) + 1.0)*(((-1.0)*dx_0[i]) + dx_0[i+1]));
+      db_j[i] = ((((((-1.0)*x_0[i+1]) + x_0[i])*(-2.0)*p_a) + (3.0*ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))*p_b) + 1.0)*(((-1.0)*dx_0[i+1]) + dx_0[i])*(-1.0));
     }
   }
 }
@@ -219,7 +219,7 @@ LRCHAIN_KERNEL void strain_generic_bond_derivatives(const double* P, long lo, lo
   const double* __restrict x_0 = x[0];
   const double* __restrict dx_0 = dx[0];
     for (long i = lo; i < hi; ++i) {
-      db_j[i] = (((2.0*p_a*x_0[i]) + (3.0*ipow<2>(x_0[i])*p_b) + 1.0)*dx_0[i]);
+      db_j[i] = ((((-2.0)*p_a*x_0[i]) + ((-3.0)*ipow<2>(x_0[i])*p_b) + (-1.0))*(-1.0)*dx_0[i]);
     }
   }
 }
@@ -275,7 +275,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_energies(const double* P, long lo,
   { double* __restrict b_j = b[0];
   const double* __restrict x_0 = x[0];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = (((1.0/2.0)*ipow<2>((((-1.0)*x_0[i]) + x_0[i+1]))) + ((1.0/3.0)*ipow<3>((((-1.0)*x_0[i]) + x_0[i+1]))*p_a) + ((1.0/4.0)*ipow<4>((((-1.0)*x_0[i]) + x_0[i+1]))*p_b));
+      b_j[i] = ((((-1.0)/3.0)*ipow<3>((((-1.0)*x_0[i+1]) + x_0[i]))*p_a) + ((1.0/2.0)*ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))) + ((1.0/4.0)*ipow<4>((((-1.0)*x_0[i+1]) + x_0[i]))*p_b));
     }
   }
 }

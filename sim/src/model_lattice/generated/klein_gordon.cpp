@@ -170,7 +170,7 @@ LRCHAIN_KERNEL void displacement_generic_site_derivatives(const double* P, long 
   const double* __restrict dx_0 = dx[0];
   double* __restrict a_0 = a[0];
   for (long i = lo; i < hi; ++i) {
-    a_0[i] = ((((2.0*p_C) + (2.0*p_a*x_0[i]) + (3.0*ipow<2>(x_0[i])*p_b) + ipow<2>(p_w0))*(-1.0)*dx_0[i]) + (dx_0[i+1]*p_C) + (dx_0[i-1]*p_C));
+    a_0[i] = (((((-1.0)*ipow<2>(p_w0)) + ((-2.0)*p_C) + ((-2.0)*p_a*x_0[i]) + ((-3.0)*ipow<2>(x_0[i])*p_b))*dx_0[i]) + (dx_0[i+1]*p_C) + (dx_0[i-1]*p_C));
   }
 }
 

@@ -160,7 +160,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_derivatives(const double* P, long 
   const double* __restrict dx_0 = dx[0];
     for (long i = lo; i < hi; ++i) {
       const double s = (((-1.0)*x_0[i+1]) + p_delta0 + x_0[i]);
-      db_j[i] = s > 0.0 ? (((((-1.0)*dx_0[i]) + dx_0[i+1])*p_alpha*std::pow(s, p_alpha)/(s))) : 0.0;
+      db_j[i] = s > 0.0 ? (((((-1.0)*dx_0[i+1]) + dx_0[i])*(-1.0)*p_alpha*std::pow(s, p_alpha)/(s))) : 0.0;
     }
   }
 }
@@ -222,7 +222,7 @@ LRCHAIN_KERNEL void displacement_default_exponents_bond_derivatives(const double
   const double* __restrict dx_0 = dx[0];
     for (long i = lo; i < hi; ++i) {
       const double s = (((-1.0)*x_0[i+1]) + p_delta0 + x_0[i]);
-      db_j[i] = s > 0.0 ? (((((-1.0)*dx_0[i]) + dx_0[i+1])*(3.0/2.0)*half_pow<0>(s))) : 0.0;
+      db_j[i] = s > 0.0 ? (((((-1.0)*dx_0[i+1]) + dx_0[i])*((-3.0)/2.0)*half_pow<0>(s))) : 0.0;
     }
   }
 }
@@ -438,7 +438,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_energies(const double* P, long lo,
       const double s_full = (((-1.0)*x_0[i+1]) + p_delta0 + x_0[i]);
       const double s = s_full > 0.0 ? s_full : 0.0;
       const double s_lost = s_full - s;
-      b_j[i] = (((-1.0)*s*std::pow(p_delta0, p_alpha)) + ((-1.0)*std::pow(p_delta0, (1.0 + p_alpha))/((1.0 + p_alpha))) + (p_delta0*std::pow(p_delta0, p_alpha)) + (std::pow(s, (1.0 + p_alpha))/((1.0 + p_alpha)))) + ((((-1.0)*std::pow(p_delta0, p_alpha)) + std::pow(0.0, p_alpha))) * s_lost;
+      b_j[i] = (((-1.0)*s*std::pow(p_delta0, p_alpha)) + ((-1.0)*std::pow(s, (1.0 + p_alpha))/((((-1.0)*p_alpha) + (-1.0)))) + (p_delta0*std::pow(p_delta0, p_alpha)) + (std::pow(p_delta0, (1.0 + p_alpha))/((((-1.0)*p_alpha) + (-1.0))))) + ((((-1.0)*std::pow(p_delta0, p_alpha)) + std::pow(0.0, p_alpha))) * s_lost;
     }
   }
 }

@@ -146,7 +146,7 @@ LRCHAIN_KERNEL void displacement_generic_bonds(const double* P, long lo, long hi
   { double* __restrict b_j = b[0];
   const double* __restrict x_0 = x[0];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = (((((-1.0)*x_0[i]) + x_0[i+1])*p_k1) + (ipow<2>((((-1.0)*x_0[i]) + x_0[i+1]))*p_b1) + (ipow<3>((((-1.0)*x_0[i]) + x_0[i+1]))*p_g1));
+      b_j[i] = (((((-1.0)*x_0[i+1]) + x_0[i])*(-1.0)*p_k1) + ((-1.0)*ipow<3>((((-1.0)*x_0[i+1]) + x_0[i]))*p_g1) + (ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))*p_b1));
     }
   }
   { double* __restrict b_j = b[1];
@@ -170,7 +170,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_derivatives(const double* P, long 
   const double* __restrict x_0 = x[0];
   const double* __restrict dx_0 = dx[0];
     for (long i = lo; i < hi; ++i) {
-      db_j[i] = ((((((-1.0)*x_0[i]) + x_0[i+1])*2.0*p_b1) + (3.0*ipow<2>((((-1.0)*x_0[i]) + x_0[i+1]))*p_g1) + p_k1)*(((-1.0)*dx_0[i]) + dx_0[i+1]));
+      db_j[i] = ((((((-1.0)*x_0[i+1]) + x_0[i])*(-2.0)*p_b1) + (3.0*ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))*p_g1) + p_k1)*(((-1.0)*dx_0[i+1]) + dx_0[i])*(-1.0));
     }
   }
   { double* __restrict db_j = db[1];
@@ -277,14 +277,14 @@ LRCHAIN_KERNEL void strain_generic_bond_derivatives(const double* P, long lo, lo
   const double* __restrict x_0 = x[0];
   const double* __restrict dx_0 = dx[0];
     for (long i = lo; i < hi; ++i) {
-      db_j[i] = (((2.0*p_b1*x_0[i]) + (3.0*ipow<2>(x_0[i])*p_g1) + p_k1)*dx_0[i]);
+      db_j[i] = ((((-1.0)*p_k1) + ((-2.0)*p_b1*x_0[i]) + ((-3.0)*ipow<2>(x_0[i])*p_g1))*(-1.0)*dx_0[i]);
     }
   }
   { double* __restrict db_j = db[1];
   const double* __restrict x_1 = x[1];
   const double* __restrict dx_1 = dx[1];
     for (long i = lo; i < hi; ++i) {
-      db_j[i] = ((((-2.0)*p_b2*x_1[i]) + (3.0*ipow<2>(x_1[i])*p_g2) + p_k2)*(-1.0)*dx_1[i]);
+      db_j[i] = ((((-1.0)*p_k2) + ((-3.0)*ipow<2>(x_1[i])*p_g2) + (2.0*p_b2*x_1[i]))*dx_1[i]);
     }
   }
 }
@@ -361,7 +361,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_energies(const double* P, long lo,
   { double* __restrict b_j = b[0];
   const double* __restrict x_0 = x[0];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = (((1.0/2.0)*ipow<2>((((-1.0)*x_0[i]) + x_0[i+1]))*p_k1) + ((1.0/3.0)*ipow<3>((((-1.0)*x_0[i]) + x_0[i+1]))*p_b1) + ((1.0/4.0)*ipow<4>((((-1.0)*x_0[i]) + x_0[i+1]))*p_g1));
+      b_j[i] = ((((-1.0)/3.0)*ipow<3>((((-1.0)*x_0[i+1]) + x_0[i]))*p_b1) + ((1.0/2.0)*ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))*p_k1) + ((1.0/4.0)*ipow<4>((((-1.0)*x_0[i+1]) + x_0[i]))*p_g1));
     }
   }
   { double* __restrict b_j = b[1];
