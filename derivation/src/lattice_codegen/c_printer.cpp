@@ -35,8 +35,19 @@ ex negated_sum(const ex& sum) {
 }
 
 // text^k for a positive integer k.
+// Written out as products (no helper call: GCC does not inline across the kernels' target clones).
 std::string integer_power_text(const std::string& text, const numeric& k) {
-  return k == 1 ? text : "ipow<" + std::to_string(k.to_long()) + ">(" + text + ")";
+  if (k == 1) return text;
+  if (k > 4) return "std::pow(" + text + ", " + std::to_string(k.to_long()) + ".0)";
+  std::string out = "(" + text;
+  for (long i = 1; i < k.to_long(); ++i) out += "*" + text;
+  return out + ")";
+}
+
+// text^(k + 1/2), k >= 0.
+std::string half_power_text(const std::string& text, const numeric& k) {
+  const std::string root = "__builtin_sqrt(" + text + ")";
+  return k.is_zero() ? root : "(" + integer_power_text(text, k) + "*" + root + ")";
 }
 
 std::string power_text(const ex& base, const ex& exponent) {
@@ -45,12 +56,12 @@ std::string power_text(const ex& base, const ex& exponent) {
   if (is_a<numeric>(exponent)) {
     const numeric p = ex_to<numeric>(exponent);
     if (p.is_integer()) {
-      if (p.is_positive()) return "ipow<" + std::to_string(p.to_long()) + ">(" + b + ")";
-      return "(1.0/ipow<" + std::to_string((-p).to_long()) + ">(" + b + "))";
+      if (p.is_positive()) return integer_power_text(b, p);
+      return "(1.0/" + integer_power_text(b, -p) + ")";
     }
     if (p.is_rational() && p.denom() == 2) {
       const numeric k = (p.numer().is_positive() ? p.numer() - 1 : -p.numer() - 1) / 2;
-      const std::string text = "half_pow<" + std::to_string(k.to_long()) + ">(" + b + ")";
+      const std::string text = half_power_text(b, k);
       return p.is_positive() ? text : "(1.0/" + text + ")";
     }
   }

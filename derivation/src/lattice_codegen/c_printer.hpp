@@ -1,7 +1,7 @@
 #pragma once
-// C++ text of a GiNaC expression for the lattice kernels: rationals as double quotients, integer
-// powers through ipow<N>, half-integer powers through half_pow<K> (x^K sqrt(x)), other powers
-// through std::pow; symbols print their names (array accesses such as x_0[i+1]).
+// C++ text of a GiNaC expression for the lattice kernels: rationals as double quotients, small
+// integer powers as products, half-integer powers as x^K sqrt(x), other powers through std::pow;
+// sums and products in a canonical order; symbols print their names (array accesses x_0[i+1]).
 #include <ginac/ginac.h>
 
 #include <string>

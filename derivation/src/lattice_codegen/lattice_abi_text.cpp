@@ -59,21 +59,6 @@ std::string helpers_text() {
 #define LRCHAIN_KERNEL [[maybe_unused]] static
 #endif
 
-namespace {
-
-template <int N>
-inline double ipow(double x) {
-  if constexpr (N == 0) return 1.0;
-  else if constexpr (N == 1) return x;
-  else return ipow<N - 1>(x) * x;
-}
-
-// x^(K + 1/2)
-template <int K>
-inline double half_pow(double x) { return ipow<K>(x) * __builtin_sqrt(x); }
-
-}  // namespace
-
 )text";
 }
 

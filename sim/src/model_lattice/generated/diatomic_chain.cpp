@@ -56,21 +56,6 @@ struct lrchain_lattice_kernels {
 
 namespace {
 
-template <int N>
-inline double ipow(double x) {
-  if constexpr (N == 0) return 1.0;
-  else if constexpr (N == 1) return x;
-  else return ipow<N - 1>(x) * x;
-}
-
-// x^(K + 1/2)
-template <int K>
-inline double half_pow(double x) { return ipow<K>(x) * __builtin_sqrt(x); }
-
-}  // namespace
-
-namespace {
-
 constexpr long kPad = 4;
 constexpr int kVariables = 2;
 constexpr int kBonds = 2;
@@ -223,7 +208,7 @@ LRCHAIN_KERNEL void displacement_default_exponents_bonds(const double* P, long l
     for (long i = lo; i < hi; ++i) {
       double s = (((-1.0)*x_1[i]) + p_delta0 + x_0[i]);
       s = s > 0.0 ? s : 0.0;
-      b_j[i] = (((-1.0)*half_pow<1>(s)) + half_pow<1>(p_delta0));
+      b_j[i] = (((-1.0)*(s*__builtin_sqrt(s))) + (p_delta0*__builtin_sqrt(p_delta0)));
     }
   }
   { double* __restrict b_j = b[1];
@@ -232,7 +217,7 @@ LRCHAIN_KERNEL void displacement_default_exponents_bonds(const double* P, long l
     for (long i = lo; i < hi; ++i) {
       double s = (((-1.0)*x_0[i+1]) + p_delta0 + x_1[i]);
       s = s > 0.0 ? s : 0.0;
-      b_j[i] = (((-1.0)*half_pow<1>(s)) + half_pow<1>(p_delta0));
+      b_j[i] = (((-1.0)*(s*__builtin_sqrt(s))) + (p_delta0*__builtin_sqrt(p_delta0)));
     }
   }
 }
@@ -248,7 +233,7 @@ LRCHAIN_KERNEL void displacement_default_exponents_bond_derivatives(const double
   const double* __restrict dx_1 = dx[1];
     for (long i = lo; i < hi; ++i) {
       const double s = (((-1.0)*x_1[i]) + p_delta0 + x_0[i]);
-      db_j[i] = s > 0.0 ? (((((-1.0)*dx_0[i]) + dx_1[i])*(3.0/2.0)*half_pow<0>(s))) : 0.0;
+      db_j[i] = s > 0.0 ? (((((-1.0)*dx_0[i]) + dx_1[i])*(3.0/2.0)*__builtin_sqrt(s))) : 0.0;
     }
   }
   { double* __restrict db_j = db[1];
@@ -258,7 +243,7 @@ LRCHAIN_KERNEL void displacement_default_exponents_bond_derivatives(const double
   const double* __restrict dx_1 = dx[1];
     for (long i = lo; i < hi; ++i) {
       const double s = (((-1.0)*x_0[i+1]) + p_delta0 + x_1[i]);
-      db_j[i] = s > 0.0 ? (((((-1.0)*dx_0[i+1]) + dx_1[i])*((-3.0)/2.0)*half_pow<0>(s))) : 0.0;
+      db_j[i] = s > 0.0 ? (((((-1.0)*dx_0[i+1]) + dx_1[i])*((-3.0)/2.0)*__builtin_sqrt(s))) : 0.0;
     }
   }
 }
@@ -398,7 +383,7 @@ LRCHAIN_KERNEL void strain_default_exponents_bonds(const double* P, long lo, lon
     for (long i = lo; i < hi; ++i) {
       double s = (((-1.0)*x_1[i]) + p_delta0);
       s = s > 0.0 ? s : 0.0;
-      b_j[i] = (((-1.0)*half_pow<1>(s)) + half_pow<1>(p_delta0));
+      b_j[i] = (((-1.0)*(s*__builtin_sqrt(s))) + (p_delta0*__builtin_sqrt(p_delta0)));
     }
   }
   { double* __restrict b_j = b[1];
@@ -407,7 +392,7 @@ LRCHAIN_KERNEL void strain_default_exponents_bonds(const double* P, long lo, lon
     for (long i = lo; i < hi; ++i) {
       double s = (((-1.0)*x_0[i+1]) + p_delta0 + x_1[i]);
       s = s > 0.0 ? s : 0.0;
-      b_j[i] = (((-1.0)*half_pow<1>(s)) + half_pow<1>(p_delta0));
+      b_j[i] = (((-1.0)*(s*__builtin_sqrt(s))) + (p_delta0*__builtin_sqrt(p_delta0)));
     }
   }
 }
@@ -421,7 +406,7 @@ LRCHAIN_KERNEL void strain_default_exponents_bond_derivatives(const double* P, l
   const double* __restrict dx_1 = dx[1];
     for (long i = lo; i < hi; ++i) {
       const double s = (((-1.0)*x_1[i]) + p_delta0);
-      db_j[i] = s > 0.0 ? (((3.0/2.0)*dx_1[i]*half_pow<0>(s))) : 0.0;
+      db_j[i] = s > 0.0 ? (((3.0/2.0)*__builtin_sqrt(s)*dx_1[i])) : 0.0;
     }
   }
   { double* __restrict db_j = db[1];
@@ -431,7 +416,7 @@ LRCHAIN_KERNEL void strain_default_exponents_bond_derivatives(const double* P, l
   const double* __restrict dx_1 = dx[1];
     for (long i = lo; i < hi; ++i) {
       const double s = (((-1.0)*x_0[i+1]) + p_delta0 + x_1[i]);
-      db_j[i] = s > 0.0 ? (((((-1.0)*dx_0[i+1]) + dx_1[i])*((-3.0)/2.0)*half_pow<0>(s))) : 0.0;
+      db_j[i] = s > 0.0 ? (((((-1.0)*dx_0[i+1]) + dx_1[i])*((-3.0)/2.0)*__builtin_sqrt(s))) : 0.0;
     }
   }
 }
@@ -521,7 +506,7 @@ LRCHAIN_KERNEL void displacement_polynomial_energy(const double* P, long lo, lon
   [[maybe_unused]] const double p_m = P[2];
   const double* __restrict v_0 = v[0];
   const double* __restrict v_1 = v[1];
-  for (long i = lo; i < hi; ++i) e[i] = (((1.0/2.0)*ipow<2>(v_0[i])) + ((1.0/2.0)*ipow<2>(v_1[i])*p_m));
+  for (long i = lo; i < hi; ++i) e[i] = (((1.0/2.0)*(v_0[i]*v_0[i])) + ((1.0/2.0)*(v_1[i]*v_1[i])*p_m));
 }
 
 LRCHAIN_KERNEL void displacement_default_exponents_bond_energies(const double* P, long lo, long hi, const double* const* x, double* const* b) {
@@ -535,7 +520,7 @@ LRCHAIN_KERNEL void displacement_default_exponents_bond_energies(const double* P
       const double s_full = (((-1.0)*x_1[i]) + p_delta0 + x_0[i]);
       const double s = s_full > 0.0 ? s_full : 0.0;
       const double s_lost = s_full - s;
-      b_j[i] = (((-1.0)*half_pow<1>(p_delta0)*s) + ((2.0/5.0)*half_pow<2>(s)) + ((3.0/5.0)*half_pow<2>(p_delta0))) + (((-1.0)*half_pow<1>(p_delta0))) * s_lost;
+      b_j[i] = ((((p_delta0*p_delta0)*__builtin_sqrt(p_delta0))*(3.0/5.0)) + (((s*s)*__builtin_sqrt(s))*(2.0/5.0)) + ((-1.0)*(p_delta0*__builtin_sqrt(p_delta0))*s)) + (((-1.0)*(p_delta0*__builtin_sqrt(p_delta0)))) * s_lost;
     }
   }
   { double* __restrict b_j = b[1];
@@ -545,7 +530,7 @@ LRCHAIN_KERNEL void displacement_default_exponents_bond_energies(const double* P
       const double s_full = (((-1.0)*x_0[i+1]) + p_delta0 + x_1[i]);
       const double s = s_full > 0.0 ? s_full : 0.0;
       const double s_lost = s_full - s;
-      b_j[i] = (((-1.0)*half_pow<1>(p_delta0)*s) + ((2.0/5.0)*half_pow<2>(s)) + ((3.0/5.0)*half_pow<2>(p_delta0))) + (((-1.0)*half_pow<1>(p_delta0))) * s_lost;
+      b_j[i] = ((((p_delta0*p_delta0)*__builtin_sqrt(p_delta0))*(3.0/5.0)) + (((s*s)*__builtin_sqrt(s))*(2.0/5.0)) + ((-1.0)*(p_delta0*__builtin_sqrt(p_delta0))*s)) + (((-1.0)*(p_delta0*__builtin_sqrt(p_delta0)))) * s_lost;
     }
   }
 }

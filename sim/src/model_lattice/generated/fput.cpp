@@ -56,21 +56,6 @@ struct lrchain_lattice_kernels {
 
 namespace {
 
-template <int N>
-inline double ipow(double x) {
-  if constexpr (N == 0) return 1.0;
-  else if constexpr (N == 1) return x;
-  else return ipow<N - 1>(x) * x;
-}
-
-// x^(K + 1/2)
-template <int K>
-inline double half_pow(double x) { return ipow<K>(x) * __builtin_sqrt(x); }
-
-}  // namespace
-
-namespace {
-
 constexpr long kPad = 4;
 constexpr int kVariables = 1;
 constexpr int kBonds = 1;
@@ -141,7 +126,7 @@ LRCHAIN_KERNEL void displacement_generic_bonds(const double* P, long lo, long hi
   { double* __restrict b_j = b[0];
   const double* __restrict x_0 = x[0];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = (((-1.0)*ipow<3>((((-1.0)*x_0[i+1]) + x_0[i]))*p_b) + ((-1.0)*x_0[i]) + (ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))*p_a) + x_0[i+1]);
+      b_j[i] = ((((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*p_a) + (((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*(-1.0)*p_b) + ((-1.0)*x_0[i]) + x_0[i+1]);
     }
   }
 }
@@ -153,7 +138,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_derivatives(const double* P, long 
   const double* __restrict x_0 = x[0];
   const double* __restrict dx_0 = dx[0];
     for (long i = lo; i < hi; ++i) {
-      db_j[i] = ((((((-1.0)*x_0[i+1]) + x_0[i])*(-2.0)*p_a) + (3.0*ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))*p_b) + 1.0)*(((-1.0)*dx_0[i+1]) + dx_0[i])*(-1.0));
+      db_j[i] = (((((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*(-3.0)*p_b) + ((((-1.0)*x_0[i+1]) + x_0[i])*2.0*p_a) + (-1.0))*(((-1.0)*dx_0[i+1]) + dx_0[i]));
     }
   }
 }
@@ -207,7 +192,7 @@ LRCHAIN_KERNEL void strain_generic_bonds(const double* P, long lo, long hi, cons
   { double* __restrict b_j = b[0];
   const double* __restrict x_0 = x[0];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = ((ipow<2>(x_0[i])*p_a) + (ipow<3>(x_0[i])*p_b) + x_0[i]);
+      b_j[i] = (((x_0[i]*x_0[i])*p_a) + ((x_0[i]*x_0[i]*x_0[i])*p_b) + x_0[i]);
     }
   }
 }
@@ -219,7 +204,7 @@ LRCHAIN_KERNEL void strain_generic_bond_derivatives(const double* P, long lo, lo
   const double* __restrict x_0 = x[0];
   const double* __restrict dx_0 = dx[0];
     for (long i = lo; i < hi; ++i) {
-      db_j[i] = ((((-2.0)*p_a*x_0[i]) + ((-3.0)*ipow<2>(x_0[i])*p_b) + (-1.0))*(-1.0)*dx_0[i]);
+      db_j[i] = ((((-2.0)*p_a*x_0[i]) + ((-3.0)*(x_0[i]*x_0[i])*p_b) + (-1.0))*(-1.0)*dx_0[i]);
     }
   }
 }
@@ -275,7 +260,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_energies(const double* P, long lo,
   { double* __restrict b_j = b[0];
   const double* __restrict x_0 = x[0];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = ((((-1.0)/3.0)*ipow<3>((((-1.0)*x_0[i+1]) + x_0[i]))*p_a) + ((1.0/2.0)*ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))) + ((1.0/4.0)*ipow<4>((((-1.0)*x_0[i+1]) + x_0[i]))*p_b));
+      b_j[i] = ((((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*(1.0/2.0)) + (((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*((-1.0)/3.0)*p_a) + (((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*(1.0/4.0)*p_b));
     }
   }
 }
@@ -284,7 +269,7 @@ LRCHAIN_KERNEL void displacement_polynomial_energy(const double* P, long lo, lon
   [[maybe_unused]] const double p_a = P[0];
   [[maybe_unused]] const double p_b = P[1];
   const double* __restrict v_0 = v[0];
-  for (long i = lo; i < hi; ++i) e[i] = ((1.0/2.0)*ipow<2>(v_0[i]));
+  for (long i = lo; i < hi; ++i) e[i] = ((1.0/2.0)*(v_0[i]*v_0[i]));
 }
 
 void energy_density(const double* P, long n, int periodic, const double* u, const double* velocity, double* e, double* work) {

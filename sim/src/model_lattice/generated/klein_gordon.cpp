@@ -56,21 +56,6 @@ struct lrchain_lattice_kernels {
 
 namespace {
 
-template <int N>
-inline double ipow(double x) {
-  if constexpr (N == 0) return 1.0;
-  else if constexpr (N == 1) return x;
-  else return ipow<N - 1>(x) * x;
-}
-
-// x^(K + 1/2)
-template <int K>
-inline double half_pow(double x) { return ipow<K>(x) * __builtin_sqrt(x); }
-
-}  // namespace
-
-namespace {
-
 constexpr long kPad = 4;
 constexpr int kVariables = 1;
 constexpr int kBonds = 1;
@@ -157,7 +142,7 @@ LRCHAIN_KERNEL void displacement_generic_site_forces(const double* P, long lo, l
   const double* __restrict x_0 = x[0];
   double* __restrict a_0 = a[0];
   for (long i = lo; i < hi; ++i) {
-    a_0[i] = (((((-1.0)*x_0[i+1]) + ((-1.0)*x_0[i-1]) + (2.0*x_0[i]))*(-1.0)*p_C) + ((-1.0)*ipow<2>(p_w0)*x_0[i]) + ((-1.0)*ipow<2>(x_0[i])*p_a) + ((-1.0)*ipow<3>(x_0[i])*p_b));
+    a_0[i] = (((((-1.0)*x_0[i+1]) + ((-1.0)*x_0[i-1]) + (2.0*x_0[i]))*(-1.0)*p_C) + ((-1.0)*(p_w0*p_w0)*x_0[i]) + ((-1.0)*(x_0[i]*x_0[i])*p_a) + ((-1.0)*(x_0[i]*x_0[i]*x_0[i])*p_b));
   }
 }
 
@@ -170,7 +155,7 @@ LRCHAIN_KERNEL void displacement_generic_site_derivatives(const double* P, long 
   const double* __restrict dx_0 = dx[0];
   double* __restrict a_0 = a[0];
   for (long i = lo; i < hi; ++i) {
-    a_0[i] = (((((-1.0)*ipow<2>(p_w0)) + ((-2.0)*p_C) + ((-2.0)*p_a*x_0[i]) + ((-3.0)*ipow<2>(x_0[i])*p_b))*dx_0[i]) + (dx_0[i+1]*p_C) + (dx_0[i-1]*p_C));
+    a_0[i] = (((((-1.0)*(p_w0*p_w0)) + ((-2.0)*p_C) + ((-2.0)*p_a*x_0[i]) + ((-3.0)*(x_0[i]*x_0[i])*p_b))*dx_0[i]) + (dx_0[i+1]*p_C) + (dx_0[i-1]*p_C));
   }
 }
 
@@ -211,7 +196,7 @@ LRCHAIN_KERNEL void displacement_polynomial_energy(const double* P, long lo, lon
   [[maybe_unused]] const double p_b = P[3];
   const double* __restrict x_0 = x[0];
   const double* __restrict v_0 = v[0];
-  for (long i = lo; i < hi; ++i) e[i] = (((((-12.0)*p_C*x_0[i]) + ((-3.0)*ipow<3>(x_0[i])*p_b) + ((-4.0)*ipow<2>(x_0[i])*p_a) + ((-6.0)*ipow<2>(p_w0)*x_0[i]) + (6.0*p_C*x_0[i+1]) + (6.0*p_C*x_0[i-1]))*((-1.0)/12.0)*x_0[i]) + ((1.0/2.0)*ipow<2>(v_0[i])));
+  for (long i = lo; i < hi; ++i) e[i] = (((((-12.0)*p_C*x_0[i]) + ((-3.0)*(x_0[i]*x_0[i]*x_0[i])*p_b) + ((-4.0)*(x_0[i]*x_0[i])*p_a) + ((-6.0)*(p_w0*p_w0)*x_0[i]) + (6.0*p_C*x_0[i+1]) + (6.0*p_C*x_0[i-1]))*((-1.0)/12.0)*x_0[i]) + ((1.0/2.0)*(v_0[i]*v_0[i])));
 }
 
 void energy_density(const double* P, long n, int periodic, const double* u, const double* velocity, double* e, double* work) {

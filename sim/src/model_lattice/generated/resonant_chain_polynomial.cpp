@@ -56,21 +56,6 @@ struct lrchain_lattice_kernels {
 
 namespace {
 
-template <int N>
-inline double ipow(double x) {
-  if constexpr (N == 0) return 1.0;
-  else if constexpr (N == 1) return x;
-  else return ipow<N - 1>(x) * x;
-}
-
-// x^(K + 1/2)
-template <int K>
-inline double half_pow(double x) { return ipow<K>(x) * __builtin_sqrt(x); }
-
-}  // namespace
-
-namespace {
-
 constexpr long kPad = 4;
 constexpr int kVariables = 2;
 constexpr int kBonds = 2;
@@ -146,14 +131,14 @@ LRCHAIN_KERNEL void displacement_generic_bonds(const double* P, long lo, long hi
   { double* __restrict b_j = b[0];
   const double* __restrict x_0 = x[0];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = (((((-1.0)*x_0[i+1]) + x_0[i])*(-1.0)*p_k1) + ((-1.0)*ipow<3>((((-1.0)*x_0[i+1]) + x_0[i]))*p_g1) + (ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))*p_b1));
+      b_j[i] = ((((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*p_b1) + (((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*(-1.0)*p_g1) + ((((-1.0)*x_0[i+1]) + x_0[i])*(-1.0)*p_k1));
     }
   }
   { double* __restrict b_j = b[1];
   const double* __restrict x_0 = x[0];
   const double* __restrict x_1 = x[1];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = (((((-1.0)*x_0[i]) + x_1[i])*(-1.0)*p_k2) + ((-1.0)*ipow<3>((((-1.0)*x_0[i]) + x_1[i]))*p_g2) + (ipow<2>((((-1.0)*x_0[i]) + x_1[i]))*p_b2));
+      b_j[i] = ((((((-1.0)*x_0[i]) + x_1[i])*(((-1.0)*x_0[i]) + x_1[i]))*p_b2) + (((((-1.0)*x_0[i]) + x_1[i])*(((-1.0)*x_0[i]) + x_1[i])*(((-1.0)*x_0[i]) + x_1[i]))*(-1.0)*p_g2) + ((((-1.0)*x_0[i]) + x_1[i])*(-1.0)*p_k2));
     }
   }
 }
@@ -170,7 +155,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_derivatives(const double* P, long 
   const double* __restrict x_0 = x[0];
   const double* __restrict dx_0 = dx[0];
     for (long i = lo; i < hi; ++i) {
-      db_j[i] = ((((((-1.0)*x_0[i+1]) + x_0[i])*(-2.0)*p_b1) + (3.0*ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))*p_g1) + p_k1)*(((-1.0)*dx_0[i+1]) + dx_0[i])*(-1.0));
+      db_j[i] = (((((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*(-3.0)*p_g1) + ((((-1.0)*x_0[i+1]) + x_0[i])*2.0*p_b1) + ((-1.0)*p_k1))*(((-1.0)*dx_0[i+1]) + dx_0[i]));
     }
   }
   { double* __restrict db_j = db[1];
@@ -179,7 +164,7 @@ LRCHAIN_KERNEL void displacement_generic_bond_derivatives(const double* P, long 
   const double* __restrict dx_0 = dx[0];
   const double* __restrict dx_1 = dx[1];
     for (long i = lo; i < hi; ++i) {
-      db_j[i] = ((((((-1.0)*x_0[i]) + x_1[i])*(-2.0)*p_b2) + (3.0*ipow<2>((((-1.0)*x_0[i]) + x_1[i]))*p_g2) + p_k2)*(((-1.0)*dx_0[i]) + dx_1[i])*(-1.0));
+      db_j[i] = (((((((-1.0)*x_0[i]) + x_1[i])*(((-1.0)*x_0[i]) + x_1[i]))*(-3.0)*p_g2) + ((((-1.0)*x_0[i]) + x_1[i])*2.0*p_b2) + ((-1.0)*p_k2))*(((-1.0)*dx_0[i]) + dx_1[i]));
     }
   }
 }
@@ -254,13 +239,13 @@ LRCHAIN_KERNEL void strain_generic_bonds(const double* P, long lo, long hi, cons
   { double* __restrict b_j = b[0];
   const double* __restrict x_0 = x[0];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = ((ipow<2>(x_0[i])*p_b1) + (ipow<3>(x_0[i])*p_g1) + (p_k1*x_0[i]));
+      b_j[i] = (((x_0[i]*x_0[i])*p_b1) + ((x_0[i]*x_0[i]*x_0[i])*p_g1) + (p_k1*x_0[i]));
     }
   }
   { double* __restrict b_j = b[1];
   const double* __restrict x_1 = x[1];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = (((-1.0)*ipow<3>(x_1[i])*p_g2) + ((-1.0)*p_k2*x_1[i]) + (ipow<2>(x_1[i])*p_b2));
+      b_j[i] = (((-1.0)*(x_1[i]*x_1[i]*x_1[i])*p_g2) + ((-1.0)*p_k2*x_1[i]) + ((x_1[i]*x_1[i])*p_b2));
     }
   }
 }
@@ -277,14 +262,14 @@ LRCHAIN_KERNEL void strain_generic_bond_derivatives(const double* P, long lo, lo
   const double* __restrict x_0 = x[0];
   const double* __restrict dx_0 = dx[0];
     for (long i = lo; i < hi; ++i) {
-      db_j[i] = ((((-1.0)*p_k1) + ((-2.0)*p_b1*x_0[i]) + ((-3.0)*ipow<2>(x_0[i])*p_g1))*(-1.0)*dx_0[i]);
+      db_j[i] = ((((-1.0)*p_k1) + ((-2.0)*p_b1*x_0[i]) + ((-3.0)*(x_0[i]*x_0[i])*p_g1))*(-1.0)*dx_0[i]);
     }
   }
   { double* __restrict db_j = db[1];
   const double* __restrict x_1 = x[1];
   const double* __restrict dx_1 = dx[1];
     for (long i = lo; i < hi; ++i) {
-      db_j[i] = ((((-1.0)*p_k2) + ((-3.0)*ipow<2>(x_1[i])*p_g2) + (2.0*p_b2*x_1[i]))*dx_1[i]);
+      db_j[i] = ((((-1.0)*p_k2) + ((-3.0)*(x_1[i]*x_1[i])*p_g2) + (2.0*p_b2*x_1[i]))*dx_1[i]);
     }
   }
 }
@@ -361,14 +346,14 @@ LRCHAIN_KERNEL void displacement_generic_bond_energies(const double* P, long lo,
   { double* __restrict b_j = b[0];
   const double* __restrict x_0 = x[0];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = ((((-1.0)/3.0)*ipow<3>((((-1.0)*x_0[i+1]) + x_0[i]))*p_b1) + ((1.0/2.0)*ipow<2>((((-1.0)*x_0[i+1]) + x_0[i]))*p_k1) + ((1.0/4.0)*ipow<4>((((-1.0)*x_0[i+1]) + x_0[i]))*p_g1));
+      b_j[i] = ((((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*(1.0/2.0)*p_k1) + (((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*((-1.0)/3.0)*p_b1) + (((((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i])*(((-1.0)*x_0[i+1]) + x_0[i]))*(1.0/4.0)*p_g1));
     }
   }
   { double* __restrict b_j = b[1];
   const double* __restrict x_0 = x[0];
   const double* __restrict x_1 = x[1];
     for (long i = lo; i < hi; ++i) {
-      b_j[i] = ((((-1.0)/3.0)*ipow<3>((((-1.0)*x_0[i]) + x_1[i]))*p_b2) + ((1.0/2.0)*ipow<2>((((-1.0)*x_0[i]) + x_1[i]))*p_k2) + ((1.0/4.0)*ipow<4>((((-1.0)*x_0[i]) + x_1[i]))*p_g2));
+      b_j[i] = ((((((-1.0)*x_0[i]) + x_1[i])*(((-1.0)*x_0[i]) + x_1[i]))*(1.0/2.0)*p_k2) + (((((-1.0)*x_0[i]) + x_1[i])*(((-1.0)*x_0[i]) + x_1[i])*(((-1.0)*x_0[i]) + x_1[i]))*((-1.0)/3.0)*p_b2) + (((((-1.0)*x_0[i]) + x_1[i])*(((-1.0)*x_0[i]) + x_1[i])*(((-1.0)*x_0[i]) + x_1[i])*(((-1.0)*x_0[i]) + x_1[i]))*(1.0/4.0)*p_g2));
     }
   }
 }
@@ -383,7 +368,7 @@ LRCHAIN_KERNEL void displacement_polynomial_energy(const double* P, long lo, lon
   [[maybe_unused]] const double p_rho = P[6];
   const double* __restrict v_0 = v[0];
   const double* __restrict v_1 = v[1];
-  for (long i = lo; i < hi; ++i) e[i] = (((1.0/2.0)*ipow<2>(v_0[i])) + ((1.0/2.0)*ipow<2>(v_1[i])*p_rho));
+  for (long i = lo; i < hi; ++i) e[i] = (((1.0/2.0)*(v_0[i]*v_0[i])) + ((1.0/2.0)*(v_1[i]*v_1[i])*p_rho));
 }
 
 void energy_density(const double* P, long n, int periodic, const double* u, const double* velocity, double* e, double* work) {
