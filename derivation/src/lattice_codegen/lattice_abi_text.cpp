@@ -1,0 +1,128 @@
+// The fixed parts of generated lattice sources (see lattice_abi_text.hpp).
+#include "lattice_abi_text.hpp"
+
+namespace lrchain::derivation {
+
+// Byte-identical to sim/include/lrchain/sim/model_lattice_abi.h (a unit test compares them).
+std::string lattice_abi_text() {
+  return R"abi(/* The table of lattice kernels that generated model code exports (lrchain-lattice-codegen):
+ * `const struct lrchain_lattice_kernels* lrchain_lattice_<model>(void)`. Plain C so that a model
+ * compiled at run time can be loaded with dlopen. Generated sources repeat this definition.
+ *
+ * State layout: field-major arrays of `sites` entries per variable. Displacement form: variable f
+ * is field f's displacement u_f[n]. Strain form (translation-invariant models): variable 0 is
+ * r[n] = u_0[n] - u_0[n-1], variable f >= 1 is w_f[n] = u_f[n] - u_0[n].
+ * Ends: periodic != 0 wraps the sites; otherwise every variable is 0 outside the chain (fixed
+ * walls in displacement form, zero-strain ends in strain form).
+ * `work` holds workspace_size(sites) doubles; nothing allocates. */
+#ifndef LRCHAIN_MODEL_LATTICE_ABI_H
+#define LRCHAIN_MODEL_LATTICE_ABI_H
+
+#define LRCHAIN_LATTICE_ABI_VERSION 1
+
+typedef void (*lrchain_lattice_accelerations)(const double* parameters, long sites, int periodic,
+                                              const double* q, double* a, double* work);
+typedef void (*lrchain_lattice_jacobian_action)(const double* parameters, long sites, int periodic,
+                                                const double* q, const double* dq, double* da,
+                                                double* work);
+typedef void (*lrchain_lattice_energy_density)(const double* parameters, long sites, int periodic,
+                                               const double* u, const double* velocity, double* e,
+                                               double* work);
+
+struct lrchain_lattice_kernels {
+  int abi_version;
+  const char* model_name;
+  int fields;
+  int parameter_count;
+  const char* const* parameter_names; /* in the model file's order: the `parameters` argument */
+  void (*masses)(const double* parameters, double* mass); /* mass of each field */
+  long (*workspace_size)(long sites);
+  lrchain_lattice_accelerations displacement_accelerations;
+  lrchain_lattice_jacobian_action displacement_jacobian_action;
+  lrchain_lattice_accelerations strain_accelerations;     /* null for on-site models */
+  lrchain_lattice_jacobian_action strain_jacobian_action; /* null for on-site models */
+  lrchain_lattice_energy_density energy_density;          /* displacement form; null if no potential */
+};
+
+#endif
+)abi";
+}
+
+std::string helpers_text() {
+  return R"text(#pragma GCC diagnostic ignored "-Wunused-parameter"
+
+// Vectorised loops: target clones, no errno (packed sqrt), no reassociation (all clones agree).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define LRCHAIN_KERNEL [[maybe_unused]] static __attribute__((target_clones("avx512f", "avx2", "default"), \
+    optimize("fast-math", "no-associative-math", "no-reciprocal-math", "fp-contract=off")))
+#else
+#define LRCHAIN_KERNEL [[maybe_unused]] static
+#endif
+
+)text";
+}
+
+std::string workspace_text() {
+  return R"text(// Padded copies of the variables (kPad ghost sites each side), bond arrays (kBondPad ghosts)
+// and site forces of the strain form (one ghost site on the left), all in the caller's memory.
+struct Workspace {
+  static long variable_stride(long n) { return n + 2 * kPad; }
+  static long bond_stride(long n) { return n + 2 * kBondPad; }
+  static long size(long n) { return 2 * kVariables * variable_stride(n) + 2 * kBonds * bond_stride(n) + kVariables * (n + 1); }
+
+  Workspace(double* work, long n) {
+    for (int g = 0; g < kVariables; ++g) {
+      x[g] = work + g * variable_stride(n) + kPad;
+      dx[g] = work + (kVariables + g) * variable_stride(n) + kPad;
+    }
+    double* bonds = work + 2 * kVariables * variable_stride(n);
+    for (int j = 0; j < kBonds; ++j) {
+      b[j] = bonds + j * bond_stride(n) + kBondPad;
+      db[j] = bonds + (kBonds + j) * bond_stride(n) + kBondPad;
+    }
+    double* sites = bonds + 2 * kBonds * bond_stride(n);
+    for (int g = 0; g < kVariables; ++g) a[g] = sites + g * (n + 1) + 1;
+  }
+
+  // Copies q (kVariables arrays of n) into padded arrays: periodic images or zeros outside.
+  static void pad(double* const* padded, const double* q, long n, int periodic) {
+    for (int g = 0; g < kVariables; ++g) {
+      double* p = padded[g];
+      const double* source = q + g * n;
+      std::memcpy(p, source, std::size_t(n) * sizeof(double));
+      for (long i = 1; i <= kPad; ++i) {
+        p[-i] = periodic ? source[((-i) % n + n) % n] : 0.0;
+        p[n - 1 + i] = periodic ? source[(n - 1 + i) % n] : 0.0;
+      }
+    }
+  }
+
+  double* const* out(double* o, long n) {
+    for (int g = 0; g < kVariables; ++g) output[g] = o + g * n;
+    return output;
+  }
+
+  double* x[kVariables];
+  double* dx[kVariables];
+  double* b[kBonds];
+  double* db[kBonds];
+  double* a[kVariables];
+  double* output[kVariables];
+};
+
+// Strain form: r'' = a_0[n] - a_0[n-1], w_f'' = a_f[n] - a_0[n].
+LRCHAIN_KERNEL void strain_differences(double* const* a, double* out, long n) {
+  const double* __restrict a0 = a[0];
+  double* __restrict r = out;
+  for (long i = 0; i < n; ++i) r[i] = a0[i] - a0[i - 1];
+  for (int g = 1; g < kVariables; ++g) {
+    const double* __restrict ag = a[g];
+    double* __restrict w = out + g * n;
+    for (long i = 0; i < n; ++i) w[i] = ag[i] - a0[i];
+  }
+}
+
+)text";
+}
+
+}  // namespace lrchain::derivation

@@ -1,0 +1,12 @@
+#pragma once
+// Fixed text of every generated lattice source: the kernel table (a copy of
+// sim/include/lrchain/sim/model_lattice_abi.h), the power helpers and the padded workspace.
+#include <string>
+
+namespace lrchain::derivation {
+
+std::string lattice_abi_text();
+std::string helpers_text();
+std::string workspace_text();  // needs kPad, kVariables, kBonds, kBondPad defined before it
+
+}  // namespace lrchain::derivation

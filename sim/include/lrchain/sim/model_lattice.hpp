@@ -1,0 +1,66 @@
+#pragma once
+// A lattice of any model file, run through its generated kernels (model_lattice_abi.h): periodic
+// or fixed ends, displacement form or (translation-invariant models) strain form, with the
+// first-order RHS for Boost.Odeint, the accelerations for the symplectic steppers, the Jacobian
+// action for variational equations and the energy density. Nothing allocates after construction.
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/sim/state.hpp"
+
+namespace lrchain::sim {
+
+enum class LatticeForm { displacement, strain };
+
+// The kernels compiled into lrchain for a shipped model (resonant_chain, fput, ...), or nullptr.
+const lrchain_lattice_kernels* shipped_lattice_kernels(std::string_view model_name);
+// Names of the shipped models with compiled-in kernels.
+std::vector<std::string> shipped_lattice_models();
+
+class ModelLattice {
+ public:
+  // `parameters` in the model file's order (kernels.parameter_names). Throws InvalidParameter for
+  // fewer than 2 sites, a wrong parameter count, or the strain form of an on-site model.
+  ModelLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, std::size_t sites,
+               bool periodic, LatticeForm form);
+
+  std::size_t sites() const { return sites_; }
+  std::size_t fields() const { return std::size_t(kernels_->fields); }
+  std::size_t positions() const { return fields() * sites_; }  // entries of q (and of a)
+  bool periodic() const { return periodic_; }
+  LatticeForm form() const { return form_; }
+  const std::vector<double>& masses() const { return masses_; }
+  const lrchain_lattice_kernels& kernels() const { return *kernels_; }
+
+  // First-order system for Odeint: state [q q'] -> [q' q''].
+  void operator()(const State& s, State& ds, double t) const;
+  // Accelerations q -> q'' (fields() arrays of sites() entries each); autonomous (t unused).
+  void acceleration(const double* q, double* a, double t = 0.0) const;
+  bool autonomous() const { return true; }
+  // Directional derivative of the accelerations at q along dq.
+  void jacobian_action(const double* q, const double* dq, double* da) const;
+  // Energy density e[n] (sites() entries) of the displacement form at positions u and velocities
+  // v; InvalidParameter when the model's forces have no potential. Strain-form states are
+  // converted first (u_0 summed from the left end, u_0[-1] = 0).
+  void energy_density(const double* q, const double* velocity, double* e) const;
+  double energy(const State& s) const;
+  bool has_energy() const { return kernels_->energy_density != nullptr; }
+
+  // Displacements and velocities (displacement form) of a strain-form state, for diagnostics.
+  void displacements_of(const double* q, double* u) const;
+
+ private:
+  const lrchain_lattice_kernels* kernels_;
+  std::vector<double> parameters_, masses_;
+  std::size_t sites_;
+  bool periodic_;
+  LatticeForm form_;
+  lrchain_lattice_accelerations accelerations_;
+  lrchain_lattice_jacobian_action jacobian_;
+  mutable std::vector<double> work_, u_, v_, e_;
+};
+
+}  // namespace lrchain::sim

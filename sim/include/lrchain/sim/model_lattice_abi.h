@@ -1,0 +1,40 @@
+/* The table of lattice kernels that generated model code exports (lrchain-lattice-codegen):
+ * `const struct lrchain_lattice_kernels* lrchain_lattice_<model>(void)`. Plain C so that a model
+ * compiled at run time can be loaded with dlopen. Generated sources repeat this definition.
+ *
+ * State layout: field-major arrays of `sites` entries per variable. Displacement form: variable f
+ * is field f's displacement u_f[n]. Strain form (translation-invariant models): variable 0 is
+ * r[n] = u_0[n] - u_0[n-1], variable f >= 1 is w_f[n] = u_f[n] - u_0[n].
+ * Ends: periodic != 0 wraps the sites; otherwise every variable is 0 outside the chain (fixed
+ * walls in displacement form, zero-strain ends in strain form).
+ * `work` holds workspace_size(sites) doubles; nothing allocates. */
+#ifndef LRCHAIN_MODEL_LATTICE_ABI_H
+#define LRCHAIN_MODEL_LATTICE_ABI_H
+
+#define LRCHAIN_LATTICE_ABI_VERSION 1
+
+typedef void (*lrchain_lattice_accelerations)(const double* parameters, long sites, int periodic,
+                                              const double* q, double* a, double* work);
+typedef void (*lrchain_lattice_jacobian_action)(const double* parameters, long sites, int periodic,
+                                                const double* q, const double* dq, double* da,
+                                                double* work);
+typedef void (*lrchain_lattice_energy_density)(const double* parameters, long sites, int periodic,
+                                               const double* u, const double* velocity, double* e,
+                                               double* work);
+
+struct lrchain_lattice_kernels {
+  int abi_version;
+  const char* model_name;
+  int fields;
+  int parameter_count;
+  const char* const* parameter_names; /* in the model file's order: the `parameters` argument */
+  void (*masses)(const double* parameters, double* mass); /* mass of each field */
+  long (*workspace_size)(long sites);
+  lrchain_lattice_accelerations displacement_accelerations;
+  lrchain_lattice_jacobian_action displacement_jacobian_action;
+  lrchain_lattice_accelerations strain_accelerations;     /* null for on-site models */
+  lrchain_lattice_jacobian_action strain_jacobian_action; /* null for on-site models */
+  lrchain_lattice_energy_density energy_density;          /* displacement form; null if no potential */
+};
+
+#endif
