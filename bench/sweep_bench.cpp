@@ -3,7 +3,7 @@
 // [0, 1): the same cost per point, distinct runs), on T threads. Prints one JSON line: points,
 // threads, seconds, points per second, and the process's peak resident memory (for "memory flat in
 // the number of points": compare P = 100 with P = 1000).
-//   sweep_bench [points=1000] [threads=all]
+//   sweep_bench [points=1000] [threads=all] [exp1 config=examples/exp1_optical_pi2.toml]
 // Parallel efficiency: t(1 thread) / (2 t(2 threads)). Across MPI ranks, run the sweep file it
 // leaves in the temporary directory with `mpirun -n 2 lrchain sweep --config ... --threads 1`.
 #include <sys/resource.h>
@@ -27,8 +27,7 @@ using namespace lrchain::sim::sweep;
 int main(int argc, char** argv) {
   const long points = argc > 1 ? std::atol(argv[1]) : 1000;
   const int threads = argc > 2 ? std::atoi(argv[2]) : 0;
-  // CMake compiles this file by its absolute path: the examples are next to bench/.
-  const fs::path exp1 = fs::path(__FILE__).parent_path().parent_path() / "examples" / "exp1_optical_pi2.toml";
+  const fs::path exp1 = fs::absolute(argc > 3 ? argv[3] : "examples/exp1_optical_pi2.toml");
   const fs::path dir = fs::temp_directory_path() / fmt::format("lrchain-sweep-bench-{}", ::getpid());
   fs::create_directories(dir);
   std::string n0 = "[";

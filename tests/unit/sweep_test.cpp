@@ -248,3 +248,22 @@ TEST_CASE("sweep: docs/sweeps.md lists every key of the sweep schema (generated 
   CHECK_MESSAGE(same, "docs/sweeps.md is out of date with the sweep schema: the expected text is in "
                       "sweeps-md-expected.txt of the test's working directory");
 }
+
+TEST_CASE("sweep: the shipped sweep files load; the optical atlas is 38 theta x 9 detunings") {
+  int loaded = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(LRCHAIN_SOURCE_DIR) / "examples" / "sweeps")) {
+    if (e.path().extension() != ".toml") continue;
+    CAPTURE(e.path().string());
+    CHECK_NOTHROW(load_sweep_config(e.path()));
+    ++loaded;
+  }
+  CHECK(loaded >= 1);
+  const SweepConfig atlas = load_sweep_config(fs::path(LRCHAIN_SOURCE_DIR) / "examples" / "sweeps" / "atlas_bright_optical.toml");
+  CHECK(atlas.shape() == std::vector<std::size_t>{38, 9});
+  // theta in steps of 0.05 from 0.15; |detuning| from 1e-4 to 1e-2, a quarter decade apart.
+  CHECK(atlas.axes[0].values[1] == doctest::Approx(0.2).epsilon(1e-15));
+  CHECK(atlas.axes[1].values.front() == -1e-4);
+  CHECK(atlas.axes[1].values[4] == doctest::Approx(-1e-3).epsilon(1e-14));
+  CHECK(atlas.axes[1].values.back() == -1e-2);
+  CHECK(atlas.figure == "max_Ex");
+}
