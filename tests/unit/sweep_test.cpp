@@ -119,8 +119,11 @@ TEST_CASE("sweep: a failing point is recorded with its reason and the sweep fini
   // the ansatz refuses it.
   write(d / "s.toml", "job = \"bright\"\nbase = \"base.toml\"\noutput = \"" + (d / "s.h5").string() +
                           "\"\nlayout = \"list\"\n[[axis]]\nparameter = \"bright.theta\"\nvalues = [1.5, 2.5, 1.7]\n");
-  const auto r = lrchain::test::run_lrchain({"sweep", "--config", (d / "s.toml").string(), "--json", "--quiet"});
+  const auto r = lrchain::test::run_lrchain({"sweep", "--config", (d / "s.toml").string(), "--json"});
   REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  // stderr is not a terminal here: plain progress lines, the last one with every point done.
+  CHECK(r.err.find("sweep: 3/3 points (100.0%)") != std::string::npos);
+  CHECK(r.err.find('\r') == std::string::npos);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["finished"] == 3);
   CHECK(j["failed"] == 1);
