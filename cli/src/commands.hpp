@@ -11,5 +11,6 @@ void register_simulate(CLI::App& app);  // simulate_command.cpp (lattice runs vs
 void register_dark(CLI::App& app);      // dark_command.cpp (exact dark breathers, Sec. 5.3-5.4)
 void register_reproduce(CLI::App& app); // reproduce_command.cpp (the paper's results as an HTML report)
 void register_derive(CLI::App& app);    // derive_command.cpp (a model file through the multiple-scale engine)
+void register_sweep(CLI::App& app);     // sweep_command.cpp (one job over a grid of parameter points)
 
 }  // namespace lrchain::cli

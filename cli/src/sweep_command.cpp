@@ -1,0 +1,105 @@
+// `lrchain sweep --config sweep.toml`: one job over a grid or list of parameter points, in-process,
+// on threads and (in builds with MPI, under mpirun or srun) over ranks; results in one HDF5 file.
+#include <string>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/sweep/sweep_config.hpp"
+#include "lrchain/sim/sweep/sweep_figure.hpp"
+#include "lrchain/sim/sweep/sweep_run.hpp"
+#include "options.hpp"
+#include "stop_signals.hpp"
+#ifdef LRCHAIN_WITH_MPI
+#include "lrchain/sim/sweep/mpi_sweep.hpp"
+#endif
+
+namespace lrchain::cli {
+
+namespace {
+
+struct SweepArguments {
+  std::string config, output;
+  int threads = 0;
+  bool retry_failed = false, quiet = false, compact = false;
+};
+
+// Loads and checks everything, runs the sweep (resuming from its results file), prints a JSON
+// summary; an interrupted sweep ends with exit 130/143 after its results so far are written.
+void run_sweep_command(const SweepArguments& a) {
+  sim::sweep::SweepConfig c = sim::sweep::load_sweep_config(a.config);
+  if (!a.output.empty()) c.output = a.output;
+  const sim::sweep::Job job = sim::sweep::make_job(c);
+  sim::sweep::SweepRunOptions o;
+  o.threads = a.threads;
+  o.retry_failed = a.retry_failed;
+  o.progress = !a.quiet;
+  StopSignals signals;
+  o.stop = StopSignals::flag();
+  sim::sweep::SweepOutcome r;
+  int rank = 0, ranks = 1;
+#ifdef LRCHAIN_WITH_MPI
+  std::unique_ptr<sim::sweep::MpiSession> mpi;
+  if (sim::sweep::started_by_mpi_launcher()) mpi = std::make_unique<sim::sweep::MpiSession>();
+  if (mpi) {
+    rank = mpi->rank();
+    ranks = mpi->size();
+    o.progress = o.progress && rank == 0;
+    r = sim::sweep::run_sweep_mpi(*mpi, c, job, o);
+  } else {
+    r = sim::sweep::run_sweep(c, job, o);
+  }
+#else
+  r = sim::sweep::run_sweep(c, job, o);
+#endif
+  if (rank != 0) return;
+  nlohmann::json j;
+  j["figures"] = nlohmann::json::array();
+  if (!c.figure.empty() && !r.interrupted)
+    j["figures"] = sim::sweep::write_sweep_figures(c, job, sim::sweep::read_results(c.output, c, job.scalar_names()), c.figure);
+  j["name"] = c.name;
+  j["job"] = c.job;
+  j["output"] = c.output.string();
+  auto csv = c.output;
+  j["csv"] = c.points() <= c.csv_max_points ? nlohmann::json(csv.replace_extension(".csv").string()) : nlohmann::json(nullptr);
+  j["points"] = r.points;
+  j["finished"] = r.finished;
+  j["failed"] = r.failed;
+  j["ran"] = r.ran;
+  j["resumed"] = r.resumed;
+  j["ranks"] = ranks;
+  j["interrupted"] = r.interrupted;
+  j["seconds"] = r.seconds;
+  std::cout << (a.compact ? j.dump() : j.dump(2)) << std::endl;
+  if (r.interrupted) {
+    const int signal_number = StopSignals::received();
+    throw Interrupted(signal_number, fmt::format("interrupted by {} after {} of {} points; the results so far are in '{}'; "
+                                                 "run the same command again to continue",
+                                                 StopSignals::name(signal_number), r.finished, r.points, c.output.string()));
+  }
+}
+
+}  // namespace
+
+void register_sweep(CLI::App& app) {
+  auto a = std::make_shared<SweepArguments>();
+  auto* cmd = app.add_subcommand(
+      "sweep",
+      "Run one job (bright, drive, modulated) over a grid or list of parameter points described in a TOML "
+      "file, in-process on threads (and over MPI ranks under mpirun or srun); results in one HDF5 file "
+      "(and a CSV view for small sweeps). A stopped sweep continues from its results file.");
+  cmd->add_option("--config", a->config, "the sweep file (docs/sweeps.md)")->required();
+  cmd->add_option("--output", a->output, "results file (overrides the sweep file's `output`)");
+  add_integer(*cmd, "--threads", a->threads, 1, 4096, "threads per process (default: all cores, shared among the ranks of a node)");
+  cmd->add_flag("--retry-failed", a->retry_failed, "when resuming, run the points recorded as failed again");
+  cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
+  cmd->add_flag("--json", a->compact, "print the JSON summary on one line");
+  cmd->callback([a] { run_sweep_command(*a); });
+}
+
+}  // namespace lrchain::cli

@@ -1,0 +1,57 @@
+#pragma once
+// One point of a parameter study, run in-process: a simulate job ("bright", "drive", "modulated")
+// described by a base experiment config (examples/*.toml) and parameter overrides ("bright.theta",
+// "model.rho", "integrator.dt", ... any number or integer key of the job's schema). No process is
+// spawned and nothing is written: the run yields the job's summary scalars and a status.
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lrchain/config/strict_toml.hpp"
+#include "lrchain/sim/run_control.hpp"
+
+namespace lrchain::sim::sweep {
+
+// What became of one point. `missing` (not run yet) is what a results file holds before the run.
+enum class PointStatus : std::int8_t { missing = 0, ok = 1, blew_up = 2, numerical_failure = 3, invalid = 4 };
+const char* to_string(PointStatus s);
+// "0 missing, 1 ok, 2 blew_up, 3 numerical_failure, 4 invalid" (the results file's legend).
+std::string status_legend();
+
+struct JobResult {
+  PointStatus status = PointStatus::missing;  // missing: interrupted before the end
+  std::string reason;                         // why it failed (empty when ok)
+  std::vector<double> scalars;                // in the order of Job::scalar_names(); NaN: none
+  double wall_seconds = 0;
+};
+
+// (parameter, value) pairs set on top of the base config for one point.
+using Overrides = std::vector<std::pair<std::string, double>>;
+
+class Job {
+ public:
+  // The job of a base experiment config (its `experiment` key). The document is checked against
+  // its kind's schema here (ConfigError naming file, line and key).
+  explicit Job(config::Document base);
+
+  const std::string& kind() const noexcept { return kind_; }
+  const config::Document& base() const noexcept { return base_; }
+  // The summary scalars each point yields (max_Ex, centre_speed, blew_up, ...).
+  const std::vector<std::string>& scalar_names() const noexcept { return scalar_names_; }
+  // The parameters a point may override: "table.key" for every number or integer key.
+  std::vector<std::string> parameters() const;
+  bool has_parameter(const std::string& parameter) const;
+
+  // Runs one point. Never throws for a bad point: a value the config layer or the run's checks
+  // refuse gives status `invalid`, a blow-up `blew_up`; `control.stop` ends the run early with
+  // status `missing`.
+  JobResult run(const Overrides& overrides, const RunControl& control = {}) const;
+
+ private:
+  config::Document base_;
+  std::string kind_;
+  std::vector<std::string> scalar_names_;
+};
+
+}  // namespace lrchain::sim::sweep
