@@ -43,8 +43,14 @@ class Coefficients:
     h_tilde: object
     nonresonance1: object
     nonresonance2: object
-    regime: object
     regime_code: object
+
+    @property
+    def regime(self):
+        """Regime names ("focusing", ...) from ``regime_code``: a str, or an array of str."""
+        if np.ndim(self.regime_code) == 0:
+            return str(REGIME_NAMES[self.regime_code])
+        return REGIME_NAMES[self.regime_code]
 
     def __getitem__(self, name):
         """``c["lambda"]`` (the field ``lambda_``) or any other field by name."""
@@ -52,7 +58,9 @@ class Coefficients:
 
     def as_dict(self):
         """{name: value} with the key "lambda" for lambda_."""
-        return {("lambda" if f.name == "lambda_" else f.name): getattr(self, f.name) for f in fields(self)}
+        d = {("lambda" if f.name == "lambda_" else f.name): getattr(self, f.name) for f in fields(self)}
+        d["regime"] = self.regime
+        return d
 
     def __repr__(self):
         if np.ndim(self.theta) == 0:
@@ -79,11 +87,7 @@ def coefficients(params, branch, theta):
     theta_array = np.asarray(theta, dtype=np.float64)
     values = _lrchain.coefficients_array(params, branch, theta_array)
     codes = values.pop("regime")
-    regime = REGIME_NAMES[codes]
     if scalar:
         values = {k: float(v) for k, v in values.items()}
-        return Coefficients(
-            theta=float(theta_array), lambda_=values.pop("lambda"), regime=str(regime), regime_code=int(codes),
-            **values
-        )
-    return Coefficients(theta=theta_array, lambda_=values.pop("lambda"), regime=regime, regime_code=codes, **values)
+        return Coefficients(theta=float(theta_array), lambda_=values.pop("lambda"), regime_code=int(codes), **values)
+    return Coefficients(theta=theta_array, lambda_=values.pop("lambda"), regime_code=codes, **values)
