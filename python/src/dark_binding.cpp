@@ -2,6 +2,7 @@
 // seed, pseudo-arclength continuation in omega_b, Floquet multipliers, direct evolution; the sim
 // library's dark/ functions, run without the GIL, results as numpy arrays.
 #include <complex>
+#include <fmt/format.h>
 #include <numbers>
 #include <pybind11/complex.h>
 #include <pybind11/eigen.h>
@@ -14,6 +15,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
 #include "lrchain/sim/dark/evolution.hpp"
+#include "lrchain/sim/resource_estimate.hpp"
 
 namespace py = pybind11;
 
@@ -46,6 +48,18 @@ DarkJob make_job(const Params& p, double omega_b, const std::string& edge, const
   if (!(tolerance > 0 && tolerance < 1)) throw InvalidParameter("tolerance", "must be in (0, 1)");
   if (max_iterations < 1) throw InvalidParameter("max_iterations", "must be an integer >= 1");
   return j;
+}
+
+// Refuses a job whose Newton/Floquet matrices, recorded orbit and snapshots exceed the available
+// memory (as the CLI does), naming what to change.
+void check_job_memory(const DarkJob& j, bool floquet, double periods) {
+  const double period = 2 * std::numbers::pi / j.omega_b;
+  const double shooting_time = j.mode == ShootingMode::full || floquet
+                                   ? period : (j.center == DarkCenter::site ? period / 2 : period / 4);
+  const sim::ResourceEstimate e = sim::estimate_dark_breather(j.sites, floquet, shooting_time, periods);
+  if (e.dominant == "period") sim::check_memory(e, 0, "omega_b", "raise omega_b (a shorter period T_b)");
+  else if (e.dominant == "periods") sim::check_memory(e, 0, "t_end", "lower t_end");
+  else sim::check_memory(e, 0, "sites", "lower sites");
 }
 
 struct Solved {
@@ -109,9 +123,9 @@ py::dict floquet_dict(const FloquetResult& f) {
 void require_converged(const DarkJob& j, const NewtonResult& r) {
   if (r.converged) return;
   std::string history;
-  for (const auto& rec : r.history) history += " " + std::to_string(rec.residual);
-  throw NumericalFailure("Newton did not converge at omega_b = " + std::to_string(j.omega_b) + " (" + r.failure +
-                         "); residual history:" + history);
+  for (const auto& rec : r.history) history += fmt::format(" {:.3e}", rec.residual);
+  throw NumericalFailure(fmt::format("Newton did not converge at omega_b = {} ({}); residual history:{}", j.omega_b,
+                                     r.failure, history));
 }
 
 // The solution as a dict: profile x_n(0), y_n(0), the seed, Newton's history, the measures (Sec. 5.3).
@@ -135,6 +149,7 @@ py::dict solution_dict(const DarkJob& j, const Solved& s, const DarkMeasures& m)
 py::dict solve_job(const Params& p, double omega_b, const std::string& edge, const std::string& center, int sites,
                    const std::string& mode, double tolerance, int max_iterations, bool floquet, bool full_monodromy) {
   const DarkJob j = make_job(p, omega_b, edge, center, sites, mode, tolerance, max_iterations);
+  check_job_memory(j, floquet, 0);
   InterruptGuard guard;
   auto [s, m, f] = guard.run([&] {
     Solved s = solve(j, guard.flag());
@@ -169,6 +184,7 @@ py::dict continue_job(const Params& p, double omega_b, const std::string& edge, 
   if (!(ds > 0 && std::isfinite(ds))) throw InvalidParameter("ds", "must be a finite number > 0");
   if (!std::isfinite(omega_min)) throw InvalidParameter("omega_min", "must be a finite number");
   if (omega_max && !std::isfinite(*omega_max)) throw InvalidParameter("omega_max", "must be a finite number or None");
+  check_job_memory(j, floquet, 0);
   InterruptGuard guard;
   BranchResult br = guard.run([&] {
     Solved s = solve(j, guard.flag());
@@ -219,15 +235,17 @@ py::dict evolve_job(const Params& p, double omega_b, const std::string& edge, co
                     const std::string& mode, double tolerance, int max_iterations, double t_end, int samples) {
   const DarkJob j = make_job(p, omega_b, edge, center, sites, mode, tolerance, max_iterations);
   const double period = 2 * std::numbers::pi / omega_b;
-  if (!(std::isfinite(t_end) && t_end >= period && t_end / period < 1e7))
-    throw InvalidParameter("t_end", "must be a finite time >= one period T_b = 2 pi/omega_b and < 1e7 T_b");
+  if (!(std::isfinite(t_end) && t_end >= period && t_end / period < 2e9))
+    throw InvalidParameter("t_end", "must be a finite time of at least one period T_b = 2 pi/omega_b (dimensionless "
+                                    "time of Sec. 2)");
   if (samples < 4) throw InvalidParameter("samples", "must be an integer >= 4");
+  check_job_memory(j, false, std::floor(t_end / period));
   InterruptGuard guard;
   DarkEvolution e = guard.run([&] {
     Solved s = solve(j, guard.flag());
     require_converged(j, s.newton);
     const Eigen::VectorXd z0 = s.shooting.z_from_unknowns(s.newton.q);
-    return evolve_dark_breather(j.params, z0, j.omega_b, t_end, samples, s.shooting.integration());
+    return evolve_dark_breather(j.params, z0, j.omega_b, t_end, samples, s.shooting.integration(), guard.flag());
   });
   const py::ssize_t M = static_cast<py::ssize_t>(e.periods.size()), N = e.sites;
   py::array_t<double> t(M), E_b(M), C_x(M), K_x(M), position(M), depth(M);

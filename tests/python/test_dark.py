@@ -44,3 +44,9 @@ def test_evolve_stays_on_the_orbit():
     e = lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, t_end=3 * 2 * np.pi / 2.42 + 1e-9)
     assert len(e.t) == 3 and e.x.shape == (4, 101)
     assert e.E_b.max() < 1e-8
+
+
+def test_newton_failure_raises_numerical_failure():
+    # From the seed Newton needs 4 steps at omega_b = 2.42 (the CLI's residual history above).
+    with pytest.raises(lrchain.NumericalFailure, match="Newton did not converge at omega_b = 2.42"):
+        lrchain.dark.solve(lrchain.Params(), omega_b=2.42, max_iterations=1)

@@ -74,6 +74,13 @@ def test_dark_options():
     with pytest.raises(lrchain.InvalidParameterError) as err:
         lrchain.dark.solve(omega_b=2.5)
     assert err.value.parameter == "omega-b"
+    # Too large for the machine: refused before Newton starts, naming what to lower.
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.dark.solve(sites=2_000_001)
+    assert err.value.parameter == "sites"
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.dark.evolve(t_end=1e12)
+    assert err.value.parameter == "t_end"
 
 
 def test_regime_options():
