@@ -269,6 +269,8 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
       rec.snapshots.push_back(std::move(snap));
       break;
     }
+    if (control.on_sample)
+      control.on_sample({t, -N, {x.data(), strains}, {y.data(), strains}, first, {e.data(), beads}});
     if (control.progress) control.progress(t / t_end);
     return true;
   };

@@ -234,6 +234,8 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
       rec.snapshots.push_back(displacement_snapshot(L, st, e.data(), t, fmt::format("t{:.1f}", t), 1));
       break;
     }
+    if (control.on_sample)
+      control.on_sample({t, 1, {L.primary(st), beads}, {L.secondary(st), beads}, 1, {e.data(), beads}});
     if (control.progress) control.progress(t / c.t_end);
     return true;
   };

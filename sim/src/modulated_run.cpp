@@ -246,6 +246,9 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
       rec.snapshots.push_back(displacement_snapshot(L, st, e.data(), t, fmt::format("t{:.0f}", t), 0));
       break;
     }
+    if (control.on_sample)
+      control.on_sample({t, 0, {L.primary(st), std::size_t(N)}, {L.secondary(st), std::size_t(N)}, 0,
+                         {e.data(), std::size_t(N)}});
     if (control.progress) control.progress((t - S.t_start) / (c.t_end - S.t_start));
     return true;
   };

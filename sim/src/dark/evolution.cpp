@@ -31,7 +31,8 @@ double dark_dip_position(const Eigen::VectorXd& amplitude) {
 // Direct integration of eq:Hertzd0S from (Z(0), 0) with per-period measures (eq:relerr, eq:center).
 DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
                                    double t_end, int samples_per_period,
-                                   const ContactIntegrationOptions& integration) {
+                                   const ContactIntegrationOptions& integration,
+                                   const std::atomic<bool>* stop) {
   if (!(omega_b > 0)) throw InvalidParameter("omega-b", "must be > 0");
   if (samples_per_period < 4) throw InvalidParameter("samples", "at least 4 samples per period");
   const int N = static_cast<int>(z0.size() / 2);
@@ -56,6 +57,7 @@ DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, d
   Eigen::VectorXd lo(N), hi(N);
   double previous = 0;
   for (int m = 1; m <= M; ++m) {
+    if (stop && stop->load(std::memory_order_relaxed)) break;
     for (int n = 0; n < N; ++n) lo(n) = hi(n) = s[static_cast<std::size_t>(n)];
     for (int k = 1; k <= samples_per_period; ++k) {
       const double t0 = period * ((m - 1) + static_cast<double>(k - 1) / samples_per_period);

@@ -2,12 +2,24 @@
 // Interrupt and progress hooks a caller (the CLI) passes into a long run. No global state.
 #include <atomic>
 #include <functional>
+#include <span>
 
 namespace lrchain::sim {
+
+// The lattice at one sample time of a run, for a caller's own measures (RunControl::on_sample).
+struct SampleView {
+  double t = 0;
+  long first_label = 0;               // site label n of primary[0] and secondary[0]
+  std::span<const double> primary;    // bright: strains x_n; drive, modulated: displacements u_n
+  std::span<const double> secondary;  // bright: strains y_n; drive, modulated: displacements v_n
+  long energy_first_label = 0;        // bead label n of energy_density[0]
+  std::span<const double> energy_density;  // e_n (eq:edensity)
+};
 
 struct RunControl {
   const std::atomic<bool>* stop = nullptr;        // set (e.g. by SIGINT) to end at the next sample
   std::function<void(double fraction)> progress;  // called at samples with t / t_end in [0, 1]
+  std::function<void(const SampleView&)> on_sample;  // called at every sample (also the first)
   bool stop_requested() const { return stop && stop->load(std::memory_order_relaxed); }
 };
 

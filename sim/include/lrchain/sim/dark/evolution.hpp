@@ -5,6 +5,7 @@
 // far site i = 0, over [(m-1) T_b, m T_b]) and the position of the breather (the dip of the
 // oscillation amplitude; our measure, the paper gives none - see docs/dark-breathers.md).
 #include <Eigen/Dense>
+#include <atomic>
 #include <vector>
 
 #include "lrchain/params.hpp"
@@ -35,8 +36,10 @@ double dark_dip_position(const Eigen::VectorXd& amplitude);
 
 // Integrates from Z(0) over floor(t_end / T_b) periods, sampling every site `samples_per_period`
 // times per period for the amplitudes A_n = (sup - inf)/2 of x_n(t) (the position measure).
+// When *stop is set (e.g. by SIGINT) the integration ends after the current period.
 DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
                                    double t_end, int samples_per_period = 24,
-                                   const ContactIntegrationOptions& integration = {});
+                                   const ContactIntegrationOptions& integration = {},
+                                   const std::atomic<bool>* stop = nullptr);
 
 }  // namespace lrchain::sim::dark

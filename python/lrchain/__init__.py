@@ -1,0 +1,31 @@
+"""lrchain: nonlinear waves in the locally resonant granular chain, from Python.
+
+The C++ library behind the ``lrchain`` command, with numpy arrays in and out::
+
+    import lrchain
+    p = lrchain.Params(rho=1/3)                      # alpha=3/2, delta0=4/9, kappa=1 by default
+    c = lrchain.coefficients(p, "optical", theta)    # theta: a number or any numpy array
+
+Submodules: :mod:`lrchain.regime` (focusing intervals, the regime maps of Figs. 2, 4, 5 and their
+boundary curves), :mod:`lrchain.simulate` (bright-breather, driven-chain and modulated-wave runs),
+:mod:`lrchain.dark` (exact dark breathers: Newton, continuation, Floquet multipliers, evolution).
+Invalid input raises :class:`lrchain.InvalidParameterError` (a ``ValueError``) naming the parameter;
+Ctrl-C interrupts a long computation with ``KeyboardInterrupt``.
+"""
+
+from .errors import InputError, InvalidParameterError, NumericalFailure
+from ._lrchain import Params
+from .coefficients import Coefficients, coefficients
+from . import dark, regime, simulate
+
+__all__ = [
+    "Params",
+    "Coefficients",
+    "coefficients",
+    "regime",
+    "simulate",
+    "dark",
+    "InputError",
+    "InvalidParameterError",
+    "NumericalFailure",
+]

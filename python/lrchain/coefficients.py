@@ -1,0 +1,93 @@
+"""NLS coefficients of the modulation equations, vectorised over the carrier wavenumber."""
+
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from . import _lrchain
+
+REGIME_NAMES = np.array(_lrchain.regime_names)
+
+
+@dataclass(frozen=True, repr=False)
+class Coefficients:
+    """NLS coefficients of one branch (Sec. 3 of the paper), with the shape of ``theta``.
+
+    Every field is a float (scalar ``theta``) or a numpy array of the shape of ``theta``:
+
+    - ``omega``: carrier frequency omega(theta) (dispersion relation);
+    - ``group_velocity``: c = omega'(theta);
+    - ``curvature``: omega''(theta);
+    - ``gamma``, ``beta``: factors of the modulation equations;
+    - ``h``: cubic coefficient before the mean flow is eliminated;
+    - ``lambda_``: mean-flow factor lambda (``c["lambda"]`` also works);
+    - ``h_tilde``: h - lambda * beta, the NLS nonlinearity;
+    - ``nonresonance1``, ``nonresonance2``: the non-resonance values, nonzero away from resonances;
+    - ``regime``: ``"focusing"`` (omega'' h_tilde < 0), ``"defocusing"`` (> 0), ``"degenerate"`` (= 0,
+      e.g. theta = 0 on the optical branch) or ``"singular"``;
+    - ``regime_code``: the same as int8 codes 0, 1, 2, 3 (indices into ``REGIME_NAMES``).
+
+    NaN policy: ``h``, ``lambda_`` and ``h_tilde`` are NaN exactly where ``regime == "singular"``
+    (a non-resonance value vanishes to within 1e-12 of its terms: h_tilde has a pole there). All other
+    fields are finite everywhere.
+    """
+
+    theta: object
+    omega: object
+    group_velocity: object
+    curvature: object
+    gamma: object
+    beta: object
+    h: object
+    lambda_: object
+    h_tilde: object
+    nonresonance1: object
+    nonresonance2: object
+    regime_code: object
+
+    @property
+    def regime(self):
+        """Regime names ("focusing", ...) from ``regime_code``: a str, or an array of str."""
+        if np.ndim(self.regime_code) == 0:
+            return str(REGIME_NAMES[self.regime_code])
+        return REGIME_NAMES[self.regime_code]
+
+    def __getitem__(self, name):
+        """``c["lambda"]`` (the field ``lambda_``) or any other field by name."""
+        return getattr(self, "lambda_" if name == "lambda" else name)
+
+    def as_dict(self):
+        """{name: value} with the key "lambda" for lambda_."""
+        d = {("lambda" if f.name == "lambda_" else f.name): getattr(self, f.name) for f in fields(self)}
+        d["regime"] = self.regime
+        return d
+
+    def __repr__(self):
+        if np.ndim(self.theta) == 0:
+            body = ", ".join(
+                f"{k}={v!r}" if isinstance(v, str) else f"{k}={float(v)!r}"
+                for k, v in self.as_dict().items()
+                if k != "regime_code"
+            )
+            return f"Coefficients({body})"
+        counts = {name: int(np.count_nonzero(self.regime_code == i)) for i, name in enumerate(REGIME_NAMES)}
+        summary = ", ".join(f"{n} {k}" for k, n in counts.items() if n)
+        return f"Coefficients(shape={np.shape(self.theta)}, {summary})"
+
+
+def coefficients(params, branch, theta):
+    """NLS coefficients of ``branch`` ("optical" or "acoustic") at every wavenumber of ``theta``.
+
+    ``theta`` is a number or an array-like of any shape with values in (-pi, pi] (nonzero on the
+    acoustic branch); the evaluation is one C++ loop over the array. Returns :class:`Coefficients`.
+    Raises :class:`lrchain.InvalidParameterError` naming ``theta`` (and the first bad index) or
+    ``branch`` for invalid input.
+    """
+    scalar = np.ndim(theta) == 0
+    theta_array = np.asarray(theta, dtype=np.float64)
+    values = _lrchain.coefficients_array(params, branch, theta_array)
+    codes = values.pop("regime")
+    if scalar:
+        values = {k: float(v) for k, v in values.items()}
+        return Coefficients(theta=float(theta_array), lambda_=values.pop("lambda"), regime_code=int(codes), **values)
+    return Coefficients(theta=theta_array, lambda_=values.pop("lambda"), regime_code=codes, **values)

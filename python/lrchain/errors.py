@@ -1,0 +1,23 @@
+"""Exceptions raised by lrchain.
+
+Invalid input raises :class:`InvalidParameterError` (a :class:`ValueError`) whose message names the
+parameter and its valid range; ``err.parameter`` holds the name. A computation that fails for
+numerical reasons (an integration blowing up, Newton not converging) raises
+:class:`NumericalFailure`. Ctrl-C (SIGINT) during a long computation raises ``KeyboardInterrupt``.
+"""
+
+
+class InputError(ValueError):
+    """Bad input (an option, a file): the message says what is allowed."""
+
+
+class InvalidParameterError(InputError):
+    """Invalid value of a named parameter; ``parameter`` is its name."""
+
+    def __init__(self, message, parameter=None):
+        super().__init__(message)
+        self.parameter = parameter
+
+
+class NumericalFailure(RuntimeError):
+    """A computation that failed for numerical reasons (blow-up, Newton not converging)."""

@@ -1,0 +1,211 @@
+"""Lattice simulations (Sec. 4 and 5.1 of the paper) with their records as numpy arrays.
+
+- :func:`bright`: the chain started from the NLS bright breather, compared with the ansatz
+  (experiments 1-5: E_x(t), E_y(t), energy, energy centre, energy density e_n(t));
+- :func:`drive`: a chain at rest driven at its first bead (experiment 6);
+- :func:`modulated`: a periodic chain started from a modulated acoustic wave (experiment 7).
+
+Each run integrates in C++ without holding the GIL; Ctrl-C stops it at the next step and raises
+``KeyboardInterrupt``. Keyword arguments left out (or None) take the library's defaults, the same as
+the ``lrchain simulate`` command's. An ``observer(t, q1, q2, e)`` is called at every sample with
+copies of the lattice fields (bright: strains x_n, y_n; drive, modulated: displacements u_n, v_n)
+and the energy density e_n.
+"""
+
+import json
+from dataclasses import dataclass, field
+from math import pi
+
+import numpy as np
+
+from . import _lrchain
+from ._lrchain import Params
+
+
+@dataclass(frozen=True)
+class SpaceTime:
+    """A field f(n, t): ``values[k, i]`` at time ``t[k]`` and site ``n[i]`` (float32)."""
+
+    quantity: str
+    n: np.ndarray
+    t: np.ndarray
+    values: np.ndarray
+
+    def __repr__(self):
+        return f"SpaceTime({self.quantity}, {len(self.t)} times x {len(self.n)} sites)"
+
+
+@dataclass(frozen=True)
+class Snapshot:
+    """Lattice profiles at time ``t``: ``columns`` {name: array}, the first one ``n``."""
+
+    t: float
+    tag: str
+    columns: dict
+
+    def __repr__(self):
+        return f"Snapshot(t={self.t:g}, columns={list(self.columns)})"
+
+
+def _options(**kwargs):
+    return {k: v for k, v in kwargs.items() if v is not None}
+
+
+def _fields(d, first, second):
+    if d is None:
+        return None
+    return SpaceTime(first, d["n"], d["t"], d["primary"]), SpaceTime(second, d["n"], d["t"], d["secondary"])
+
+
+def _spacetime(record):
+    f = record["fields"][0]
+    return SpaceTime(f["quantity"], f["n"], f["t"], f["values"])
+
+
+def _snapshots(record):
+    return [Snapshot(s["t"], s["tag"], s["columns"]) for s in record["snapshots"]]
+
+
+@dataclass(frozen=True, repr=False)
+class BrightResult:
+    """A bright-breather run (Sec. 4.1-4.3).
+
+    ``t``, ``E_x``, ``E_y`` (max-norm distance of the strains from the ansatz relative to the initial
+    max-norm), ``energy`` and ``centre`` (energy centre X(t)) at every sample; ``energy_density``
+    e_n(t) (a :class:`SpaceTime` on the beads); ``snapshots``; ``x``, ``y``: the strains x_n(t),
+    y_n(t) at every sample when asked for (``record_strains=True``), else None; ``summary``: the
+    same numbers as the JSON of ``lrchain simulate`` (omega_b, period, max_Ex, max_Ey, ...).
+    """
+
+    t: np.ndarray
+    E_x: np.ndarray
+    E_y: np.ndarray
+    energy: np.ndarray
+    centre: np.ndarray
+    energy_density: SpaceTime
+    snapshots: list
+    summary: dict
+    x: SpaceTime = None
+    y: SpaceTime = None
+
+    def __repr__(self):
+        return (f"BrightResult({len(self.t)} samples to t = {self.t[-1]:g}, "
+                f"max E_x = {self.summary['max_E_x']:.4g}, max E_y = {self.summary['max_E_y']:.4g})")
+
+
+def bright(params=None, branch="optical", theta=pi / 2, *, detuning=None, n0=None, N=None, periods=None,
+           sample_every=None, spacetime_every=None, snapshot_periods=None, centre_window=None,
+           error_window_end=None, ansatz_ends=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
+           max_memory=None, record_strains=False, observer=None):
+    """Bright-breather run: the strain lattice on n = -N..N started from the NLS bright breather of
+    ``branch`` at carrier ``theta`` and integrated for ``periods`` breather periods T_b.
+
+    Library defaults: N=500, periods=200, sample_every=0.25 and spacetime_every=1 (units of T_b),
+    snapshot_periods=(0, 50.125, 200) (those inside the run), centre_window=100, stepper "rkf78"
+    with abs_tol = rel_tol = 1e-12, dt=0.05 (other steppers: dopri5, symplectic, srkn11b, srkn14a,
+    ss17; dt is the fixed/maximal step of the symplectic ones). ``detuning`` = omega_b - omega
+    (default sign(h_tilde) 1e-4). ``record_strains`` keeps x_n(t), y_n(t) at every sample.
+    Returns :class:`BrightResult`.
+    """
+    options = _options(params=params, branch=branch, theta=theta, n0=n0, N=N, periods=periods,
+                       sample_every=sample_every, spacetime_every=spacetime_every,
+                       snapshot_periods=None if snapshot_periods is None else list(snapshot_periods),
+                       centre_window=centre_window, error_window_end=error_window_end, ansatz_ends=ansatz_ends,
+                       stepper=stepper, abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
+    if detuning is not None:
+        options["detuning"] = detuning
+    out = _lrchain.simulate_bright(options, record_strains, observer)
+    record, series = out["record"], out["record"]["series"]
+    fields = _fields(out["fields"], "x_n", "y_n")
+    return BrightResult(t=series["t"], E_x=series["E_x"], E_y=series["E_y"], energy=series["energy"],
+                        centre=series["X"], energy_density=_spacetime(record), snapshots=_snapshots(record),
+                        summary=json.loads(out["summary_json"]), x=fields[0] if fields else None,
+                        y=fields[1] if fields else None)
+
+
+@dataclass(frozen=True, repr=False)
+class DriveResult:
+    """A driven-chain run (Sec. 4.3, experiment 6): ``t``, ``energy``, ``front`` (largest bead with
+    e_n above a fraction of the maximum), ``participation`` and ``u0`` (the driven boundary) at every
+    sample; ``energy_density`` e_n(t); ``snapshots``; ``u``, ``v`` (displacements at every sample)
+    when asked for; ``summary`` as in the JSON of ``lrchain simulate drive``."""
+
+    t: np.ndarray
+    energy: np.ndarray
+    front: np.ndarray
+    participation: np.ndarray
+    u0: np.ndarray
+    energy_density: SpaceTime
+    snapshots: list
+    summary: dict
+    u: SpaceTime = None
+    v: SpaceTime = None
+
+    def __repr__(self):
+        return f"DriveResult({len(self.t)} samples to t = {self.t[-1]:g}, final energy {self.energy[-1]:.6g})"
+
+
+def drive(params=None, *, beads=None, amplitude=None, omega0=None, ramp_rate=None, t_m=None, t_end=None,
+          sample_every=None, spacetime_every=None, snapshot_times=None, front_fraction=None,
+          front_fit_start=None, front_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
+          max_memory=None, record_displacements=False, observer=None):
+    """Driven chain: beads 1..beads at rest, clamped far end, first bead driven by
+    A0 sin(omega0 t) chi(t). Library defaults: params rho=10 (alpha=3/2, delta0=4/9, kappa=1),
+    beads=2000, amplitude=0.06, omega0=2.1, ramp_rate=0.046, t_m=700, t_end=2400, sample_every=1,
+    spacetime_every=2, stepper rkf78 at 1e-10. Returns :class:`DriveResult`."""
+    options = _options(params=params, beads=beads, amplitude=amplitude, omega0=omega0, ramp_rate=ramp_rate, t_m=t_m,
+                       t_end=t_end, sample_every=sample_every, spacetime_every=spacetime_every,
+                       snapshot_times=None if snapshot_times is None else list(snapshot_times),
+                       front_fraction=front_fraction, front_fit_start=front_fit_start, front_fit_end=front_fit_end,
+                       stepper=stepper, abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
+    out = _lrchain.simulate_drive(options, record_displacements, observer)
+    record, series = out["record"], out["record"]["series"]
+    fields = _fields(out["fields"], "u_n", "v_n")
+    return DriveResult(t=series["t"], energy=series["energy"], front=series["front"],
+                       participation=series["participation"], u0=series["u0"], energy_density=_spacetime(record),
+                       snapshots=_snapshots(record), summary=json.loads(out["summary_json"]),
+                       u=fields[0] if fields else None, v=fields[1] if fields else None)
+
+
+@dataclass(frozen=True, repr=False)
+class ModulatedResult:
+    """A modulated-wave run (Sec. 5.1, experiment 7): ``t``, ``energy``, ``contrast`` of e_n,
+    ``dark_centre`` and ``dark_unwrapped`` (position of the minimum of the smoothed e_n) at every
+    sample; ``energy_density``; ``snapshots``; ``u``, ``v`` when asked for; ``summary``."""
+
+    t: np.ndarray
+    energy: np.ndarray
+    contrast: np.ndarray
+    dark_centre: np.ndarray
+    dark_unwrapped: np.ndarray
+    energy_density: SpaceTime
+    snapshots: list
+    summary: dict
+    u: SpaceTime = None
+    v: SpaceTime = None
+
+    def __repr__(self):
+        return f"ModulatedResult({len(self.t)} samples to t = {self.t[-1]:g})"
+
+
+def modulated(params=None, *, N=None, epsilon=None, theta_waves=None, b=None, t_end=None, sample_every=None,
+              snapshot_times=None, contrast_threshold=None, dark_window=None, speed_fit_start=None,
+              speed_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None, max_memory=None,
+              record_displacements=False, observer=None):
+    """Periodic chain of N sites started from the modulated acoustic wave (eq. cimi). Library
+    defaults: params delta0=0.27, rho=0.32, N=401, epsilon=0.03, theta_waves=252, b=0.01,
+    t_end=45000, sample_every=10, symplectic stepper with dt=0.05. Returns :class:`ModulatedResult`."""
+    options = _options(params=params, N=N, epsilon=epsilon, theta_waves=theta_waves, b=b, t_end=t_end,
+                       sample_every=sample_every,
+                       snapshot_times=None if snapshot_times is None else list(snapshot_times),
+                       contrast_threshold=contrast_threshold, dark_window=dark_window,
+                       speed_fit_start=speed_fit_start, speed_fit_end=speed_fit_end, stepper=stepper,
+                       abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
+    out = _lrchain.simulate_modulated(options, record_displacements, observer)
+    record, series = out["record"], out["record"]["series"]
+    fields = _fields(out["fields"], "u_n", "v_n")
+    return ModulatedResult(t=series["t"], energy=series["energy"], contrast=series["contrast"],
+                           dark_centre=series["dark_centre"], dark_unwrapped=series["dark_unwrapped"],
+                           energy_density=_spacetime(record), snapshots=_snapshots(record),
+                           summary=json.loads(out["summary_json"]), u=fields[0] if fields else None,
+                           v=fields[1] if fields else None)

@@ -1,0 +1,12 @@
+// The compiled module lrchain._lrchain; the package lrchain (python/lrchain) wraps it.
+#include "bindings.hpp"
+
+PYBIND11_MODULE(_lrchain, m) {
+  m.doc() = "Compiled part of lrchain (pybind11); use the package lrchain.";
+  lrchain::python::register_errors(m);
+  lrchain::python::register_params(m);
+  lrchain::python::register_coefficients(m);
+  lrchain::python::register_regime(m);
+  lrchain::python::register_simulate(m);
+  lrchain::python::register_dark(m);
+}

@@ -1,0 +1,92 @@
+"""Invalid input raises InvalidParameterError (a ValueError) naming the parameter and its range."""
+
+import math
+
+import numpy as np
+import pytest
+
+import lrchain
+
+
+@pytest.mark.parametrize("name, value, range_text", [
+    ("alpha", 1.0, "> 1"),
+    ("delta0", 0.0, "> 0"),
+    ("kappa", -1.0, "> 0"),
+    ("rho", math.nan, "> 0"),
+    ("rho", math.inf, "> 0"),
+])
+def test_params(name, value, range_text):
+    with pytest.raises(ValueError) as err:
+        lrchain.Params(**{name: value})
+    assert isinstance(err.value, lrchain.InvalidParameterError)
+    assert err.value.parameter == name
+    assert name in str(err.value) and range_text in str(err.value)
+
+
+def test_params_replace_validates():
+    with pytest.raises(lrchain.InvalidParameterError, match="rho"):
+        lrchain.Params().replace(rho=-2)
+    with pytest.raises(TypeError, match="unknown parameter 'beta'"):
+        lrchain.Params().replace(beta=1)
+    assert lrchain.Params().replace(rho=3).rho == 3
+
+
+def test_theta_out_of_range_names_theta_and_index():
+    p = lrchain.Params()
+    with pytest.raises(lrchain.InvalidParameterError, match=r"theta.*\(-pi, pi\]") as err:
+        lrchain.coefficients(p, "optical", 4.0)
+    assert err.value.parameter == "theta"
+    with pytest.raises(lrchain.InvalidParameterError, match=r"theta\[2\] = nan"):
+        lrchain.coefficients(p, "optical", np.array([0.1, 0.2, np.nan]))
+    with pytest.raises(lrchain.InvalidParameterError, match="nonzero on the acoustic branch"):
+        lrchain.coefficients(p, "acoustic", 0.0)
+
+
+def test_branch_names_branch():
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.coefficients(lrchain.Params(), "optic", 1.0)
+    assert err.value.parameter == "branch" and "optical" in str(err.value)
+
+
+def test_simulation_options():
+    with pytest.raises(lrchain.InvalidParameterError, match="N") as err:
+        lrchain.simulate.bright(N=1)
+    assert err.value.parameter == "N"
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.simulate.bright(periods=-1)
+    assert err.value.parameter == "periods"
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.simulate.bright(stepper="euler")
+    assert err.value.parameter == "stepper"
+    with pytest.raises(lrchain.InvalidParameterError, match="must be an integer, not float") as err:
+        lrchain.simulate.bright(N=10.5)
+    assert err.value.parameter == "N"
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.simulate.drive(beads=3)
+    assert err.value.parameter == "beads"
+
+
+def test_dark_options():
+    with pytest.raises(lrchain.InvalidParameterError, match="odd") as err:
+        lrchain.dark.solve(sites=100)
+    assert err.value.parameter == "sites"
+    # Above the optical edge omega_+(pi) = sqrt(6) there is no dark breather (the gap side is below).
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.dark.solve(omega_b=2.5)
+    assert err.value.parameter == "omega-b"
+    # Too large for the machine: refused before Newton starts, naming what to lower.
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.dark.solve(sites=2_000_001)
+    assert err.value.parameter == "sites"
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.dark.evolve(t_end=1e12)
+    assert err.value.parameter == "t_end"
+
+
+def test_regime_options():
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.regime.theta_rho_map(lrchain.Params(), "optical", rho=(0.0, 1.0, 10))
+    assert err.value.parameter == "rho"
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.regime.boundary_curves(lrchain.Params(), "optical", axis="kappa")
+    assert err.value.parameter == "axis"

@@ -1,0 +1,61 @@
+"""Ctrl-C (SIGINT) interrupts a long computation with KeyboardInterrupt and leaves lrchain usable."""
+
+import os
+import signal
+import threading
+import time
+
+import pytest
+
+import lrchain
+
+
+def interrupt_after(seconds):
+    timer = threading.Timer(seconds, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    return timer
+
+
+def test_bright_run_interrupted():
+    handler = signal.getsignal(signal.SIGINT)
+    start = time.monotonic()
+    timer = interrupt_after(1.0)
+    # About 1e5 breather periods on 4001 sites: hours of work without the interrupt.
+    with pytest.raises(KeyboardInterrupt):
+        lrchain.simulate.bright(lrchain.Params(), N=2000, periods=1e5, sample_every=10, spacetime_every=1000,
+                                snapshot_periods=[0])
+    timer.join()
+    assert time.monotonic() - start < 60
+    assert signal.getsignal(signal.SIGINT) is handler  # Python's handler is back
+    # The library still works: a short run completes and starts on the ansatz.
+    r = lrchain.simulate.bright(lrchain.Params(), N=40, periods=2)
+    assert r.E_x[0] == 0 and len(r.t) == 9
+
+
+def test_dark_continuation_interrupted():
+    start = time.monotonic()
+    timer = interrupt_after(1.0)
+    with pytest.raises(KeyboardInterrupt):
+        lrchain.dark.continue_branch(lrchain.Params(), omega_b=2.42, points=100000, ds=1e-4, floquet=True)
+    timer.join()
+    assert time.monotonic() - start < 120
+    assert lrchain.coefficients(lrchain.Params(), "optical", 1.0).regime == "focusing"
+
+
+def test_custom_python_handler_is_called():
+    # A user's SIGINT handler runs (chained), and what it raises is what the run raises.
+    class Stop(Exception):
+        pass
+
+    def handler(signum, frame):
+        raise Stop()
+
+    previous = signal.signal(signal.SIGINT, handler)
+    try:
+        timer = interrupt_after(0.5)
+        with pytest.raises(Stop):
+            lrchain.simulate.bright(lrchain.Params(), N=2000, periods=1e5, sample_every=10, spacetime_every=1000,
+                                    snapshot_periods=[0])
+        timer.join()
+    finally:
+        signal.signal(signal.SIGINT, previous)
