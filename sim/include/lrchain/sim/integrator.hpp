@@ -51,6 +51,8 @@ struct IntegratorOptions {
   double dt = 0.05;        // initial step (adaptive) or fixed step (symplectic)
 };
 void validate(const IntegratorOptions& o);
+// Refuses (InvalidParameter("dt")) a first or largest step dt longer than the whole run (t_end).
+void validate_step_within_run(const IntegratorOptions& o, double run_length);
 // The fixed-step steppers take about `duration / dt` steps: refuses (InvalidParameter("dt")) a dt
 // that gives more than 1e12 steps (years of work) or a step count that overflows an integer.
 void validate_step_count(const IntegratorOptions& o, double duration);
