@@ -6,8 +6,9 @@
 #   3. build-sanitize/: a second build with AddressSanitizer, UndefinedBehaviorSanitizer and
 #      float-cast-overflow (-DLRCHAIN_SANITIZE=ON, -O1 -g, no benchmarks) running the fast tests again
 #      (LRCHAIN_SANITIZER=0 skips this stage).
-# The generated bad-input corpus (ctest -L corpus) is not a stage yet: it still finds inputs that are
-# not refused (1e308 for a physical parameter, among others); run it by hand.
+# The generated bad-input corpus (ctest -L corpus) is not a stage yet: a few huge values of run
+# windows and intervals (checkpoint-every, t-m, fit windows, omega-max, omega-range 1e308) are still
+# accepted; run it by hand.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)

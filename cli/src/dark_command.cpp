@@ -62,9 +62,14 @@ void validate_job(const DarkArgs& a, DarkJob job) {
       a.mode == "full" || job == DarkJob::floquet ? period : (a.center == "site" ? period / 2 : period / 4);
   double periods = 0;
   if (job == DarkJob::branch) {
-    if (!(a.ds > 0 && std::isfinite(a.ds))) throw InvalidParameter("ds", "must be a finite number > 0");
-    checked_finite(a.omega_min, "omega-min");
+    // The continuation adapts its step between 1e-5 and 1; it starts at omega_b, which must lie
+    // inside the window [omega-min, omega-max] it stops outside of.
+    if (!(a.ds > 0 && a.ds <= 1)) throw InvalidParameter("ds", "must be in (0, 1] (the step adapts within [1e-5, 1])");
+    if (!(std::isfinite(a.omega_min) && a.omega_min < a.omega_b))
+      throw InvalidParameter("omega-min", fmt::format("must be a finite number below omega-b = {:g}", a.omega_b));
     checked_finite(a.omega_max, "omega-max");
+    if (a.omega_max > 0 && !(a.omega_max > a.omega_b))
+      throw InvalidParameter("omega-max", fmt::format("must be 0 (the band edge) or above omega-b = {:g}", a.omega_b));
   }
   if (job == DarkJob::evolve) {
     if (!(std::isfinite(a.t_end) && a.t_end >= period))

@@ -62,16 +62,33 @@ inline std::string default_text(double v) {
   return buf;
 }
 
-// The model parameters every subcommand shares: --rho, --kappa, --delta0, --alpha. The help shows
-// the values in `p` at registration as the defaults (the paper's: alpha=3/2, delta0=4/9, kappa=1,
-// rho=1/3, unless the subcommand's experiment uses others), so set them before calling this.
+// Adds --name for the physical parameter `range` (lrchain/params.hpp): parsed like add_number and
+// refused at once when outside its range. The help shows the range and `default_note`.
+inline CLI::Option* add_parameter(CLI::App& app, const std::string& name, double& target, const PhysicalRange& range,
+                                  const std::string& default_note) {
+  const std::string param = name.substr(name.find_first_not_of('-'));
+  auto* opt = app.add_option_function<std::string>(
+      name,
+      [&target, param, range](const std::string& text) {
+        const double v = parse_number(text, param);
+        check_in_range(v, range, param);
+        target = v;
+      },
+      std::string(range.meaning) + ", in " + range.interval() + " (" + default_note + ")");
+  opt->type_name("NUM");
+  return opt;
+}
+
+// The model parameters every subcommand shares: --rho, --kappa, --delta0, --alpha, each refused
+// outside its range (lrchain/params.hpp). The help shows the values in `p` at registration as the
+// defaults (the paper's: alpha=3/2, delta0=4/9, kappa=1, rho=1/3, unless the subcommand's
+// experiment uses others), so set them before calling this.
 inline void add_model_options(CLI::App& app, Params& p, bool rho_required) {
-  auto* r = add_number(app, "--rho", p.rho,
-                       "mass ratio m2/m1 > 0 (" + (rho_required ? std::string("required") : "default " + default_text(p.rho)) + ")");
+  auto* r = add_parameter(app, "--rho", p.rho, rho_range, rho_required ? "required" : "default " + default_text(p.rho));
   if (rho_required) r->required();
-  add_number(app, "--kappa", p.kappa, "resonator spring constant > 0, dimensionless (default " + default_text(p.kappa) + ")");
-  add_number(app, "--delta0", p.delta0, "precompression overlap > 0, dimensionless (default " + default_text(p.delta0) + ")");
-  add_number(app, "--alpha", p.alpha, "Hertz exponent > 1 (default " + default_text(p.alpha) + ")");
+  add_parameter(app, "--kappa", p.kappa, kappa_range, "default " + default_text(p.kappa));
+  add_parameter(app, "--delta0", p.delta0, delta0_range, "default " + default_text(p.delta0));
+  add_parameter(app, "--alpha", p.alpha, alpha_range, "default " + default_text(p.alpha));
 }
 
 }  // namespace lrchain::cli

@@ -418,13 +418,13 @@ void validate_map(const MapArgs& a) {
   const auto branches = branches_of(a.branch);
   if (a.plane == "theta-rho") {
     for (const double r : range_or(a.rho_range, {0.01, 30.0}, "rho-range")) {
-      if (!(r > 0)) throw InvalidParameter("rho-range", "rho must be > 0");
+      check_in_range(r, rho_range, "rho-range");  // each end inside rho's range (lrchain/params.hpp)
       validate(with_parameter(a.p, ParameterAxis::rho, r));
     }
   } else {
     const auto dr = range_or(a.delta0_range, {0.001, 1.0}, "delta0-range");
     for (const double d : dr) {
-      if (!(d > 0)) throw InvalidParameter("delta0-range", "delta0 must be > 0");
+      check_in_range(d, delta0_range, "delta0-range");
       validate(with_parameter(a.p, ParameterAxis::delta0, d));
     }
     validate(GridAxis{dr[0], dr[1], a.res_x, a.delta0_log}, "delta0");

@@ -40,10 +40,15 @@ struct ReproduceArgs {
   std::vector<std::string> only;
 };
 
-// First existing path among: the option, the source tree, <prefix>/share/lrchain/<rel>.
-fs::path locate(const std::string& given, const std::string& rel, const std::string& option) {
+// First existing path among: the option, the source tree, <prefix>/share/lrchain/<rel>; a given
+// path must be a directory (`directory`) or a regular file (otherwise).
+fs::path locate(const std::string& given, const std::string& rel, const std::string& option, bool directory) {
   if (!given.empty()) {
     if (!fs::exists(given)) throw InvalidParameter(option, "'" + given + "' does not exist");
+    if (directory && !fs::is_directory(given))
+      throw InvalidParameter(option, "'" + given + "' is not a directory");
+    if (!directory && !fs::is_regular_file(given))
+      throw InvalidParameter(option, "'" + given + "' is not a regular file");
     return fs::absolute(given);
   }
   const fs::path exe = current_executable();
@@ -137,7 +142,7 @@ void run_reproduce(const ReproduceArgs& a) {
 
   StepContext ctx;
   ctx.exe = current_executable();
-  ctx.examples = locate(a.examples, "examples", "examples");
+  ctx.examples = locate(a.examples, "examples", "examples", true);
   ctx.full = a.full;
   const int jobs = a.jobs > 0 ? a.jobs : std::max(1, omp_get_num_procs());
   ctx.child_threads = std::max(1, omp_get_num_procs() / jobs);
@@ -145,7 +150,7 @@ void run_reproduce(const ReproduceArgs& a) {
   info.mode = a.full ? "full" : "quick";
   info.provenance = current_provenance();
   try {
-    const fs::path errata = locate(a.errata, "docs/paper-errata.md", "errata");
+    const fs::path errata = locate(a.errata, "docs/paper-errata.md", "errata", false);
     std::ifstream in(errata);
     std::stringstream text;
     text << in.rdbuf();

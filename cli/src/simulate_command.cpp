@@ -88,12 +88,26 @@ void throw_if_blew_up(const std::optional<sim::BlowUp>& blow_up, const std::stri
                            (out.empty() ? std::string() : "; the outputs up to then are in " + out));
 }
 
-// Refuses (exit 2) an --out that is not a directory or where the run's output would not fit,
-// before anything is written.
+// Refuses (exit 2) to start a new run (no --restart) whose checkpoint file already exists: it holds
+// an earlier run's state, which would be overwritten, or left beside the new outputs as if it
+// belonged to them.
+template <class Config>
+void refuse_earlier_checkpoint(const Config& cfg) {
+  std::error_code ec;
+  if (cfg.restart_file.empty() && !cfg.checkpoint_file.empty() && std::filesystem::exists(cfg.checkpoint_file, ec))
+    throw InvalidParameter("checkpoint", "'" + cfg.checkpoint_file +
+                                             "' holds the checkpoint of an earlier run: continue it with --restart " +
+                                             cfg.checkpoint_file + ", or move it away, or choose another --out");
+}
+
+// Refuses (exit 2) a checkpoint path that is a directory, an --out that is not a directory or
+// where the run's output would not fit, before anything is written.
 template <class Config>
 void check_output(const Config& cfg, const std::string& out) {
-  if (out.empty()) return;
   std::error_code ec;
+  if (!cfg.checkpoint_file.empty() && std::filesystem::is_directory(cfg.checkpoint_file, ec))
+    throw InvalidParameter("checkpoint", "'" + cfg.checkpoint_file + "' is a directory; give a file name");
+  if (out.empty()) return;
   if (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
     throw InputError("--out '" + out + "' exists and is not a directory");
   sim::check_output_space(sim::estimate_resources(cfg), out, "out",
@@ -151,6 +165,7 @@ void run_and_report(const Config& cfg, const std::string& out, const ReportStyle
   check_output(cfg, out);
   std::optional<sim::OutputLock> lock;  // one run per --out, taken after validation
   if (!out.empty()) lock.emplace(out);
+  refuse_earlier_checkpoint(cfg);  // (after the lock: a run still writing it is named by the lock)
   StopSignals signals;
   ProgressBar bar;
   const sim::RunControl control = make_control(bar);
@@ -279,11 +294,11 @@ void register_simulate(CLI::App& app) {
   auto dstepper = std::make_shared<std::string>("rkf78");
   auto* drive = sim_cmd->add_subcommand(
       "drive", "Chain at rest driven at u_0(t) = A0 sin(omega0 t) chi(t), clamped far end (Sec. 4.3)");
+  dcfg->params.rho = 10;  // before add_model_options: its help shows the defaults
   add_model_options(*drive, dcfg->params, false);
-  dcfg->params.rho = 10;
   add_integer(*drive, "--beads", dcfg->beads, 10, std::numeric_limits<std::int64_t>::max(),
               "beads n = 1..beads (default 2000)");
-  add_number(*drive, "--amplitude", dcfg->amplitude, "A0 (default 0.06)");
+  add_number(*drive, "--amplitude", dcfg->amplitude, "A0, in (0, delta0] (default 0.06)");
   add_number(*drive, "--omega0", dcfg->omega0, "driving frequency, in the optical band (default 2.1)");
   add_number(*drive, "--ramp-rate", dcfg->ramp_rate, "r of chi(t) (default 0.046)");
   add_number(*drive, "--t-m", dcfg->t_m, "switch-off time t_m of chi(t) (default 700)");
@@ -313,12 +328,12 @@ void register_simulate(CLI::App& app) {
   auto mstepper = std::make_shared<std::string>("symplectic");
   auto* mod = sim_cmd->add_subcommand(
       "modulated", "Periodic chain from the modulated acoustic wave eq:cimi, checkpoint/restart (Sec. 5.1)");
-  add_model_options(*mod, mcfg->params, false);
-  mcfg->params.rho = 0.32;
+  mcfg->params.rho = 0.32;  // before add_model_options: its help shows the defaults
   mcfg->params.delta0 = 0.27;
+  add_model_options(*mod, mcfg->params, false);
   add_integer(*mod, "--N", mcfg->N, 8, std::numeric_limits<std::int64_t>::max(),
               "periodic chain length (default 401)");
-  add_number(*mod, "--epsilon", mcfg->epsilon, "amplitude of eq:cimi (default 0.03)");
+  add_parameter(*mod, "--epsilon", mcfg->epsilon, modulation_amplitude_range, "default 0.03");
   add_number(*mod, "--theta-waves", mcfg->theta_waves, "theta0 = this * pi / N (default 252)");
   add_number(*mod, "--b", mcfg->b, "modulation depth (default 0.01)");
   add_number(*mod, "--t-end", mcfg->t_end, "final time (default 45000)");

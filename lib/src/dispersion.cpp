@@ -8,10 +8,16 @@ namespace lrchain {
 
 std::string_view to_string(Branch b) { return b == Branch::optical ? "optical" : "acoustic"; }
 
+const std::vector<std::string>& branch_spellings() {
+  static const std::vector<std::string> names = {"optical", "opt", "+", "acoustic", "acs", "-"};
+  return names;
+}
+
 Branch parse_branch(std::string_view text) {
   if (text == "optical" || text == "+" || text == "opt") return Branch::optical;
   if (text == "acoustic" || text == "-" || text == "acs") return Branch::acoustic;
-  throw InvalidParameter("branch", "must be 'optical' or 'acoustic', got '" + std::string(text) + "'");
+  throw InvalidParameter("branch", "must be 'optical' (or 'opt', '+') or 'acoustic' (or 'acs', '-'), got '" +
+                                       std::string(text) + "'");
 }
 
 // eq:disp1d: omega^2 = (S +- sqrt(S^2 - 4 D kappa/rho))/2, S = D + kappa + kappa/rho,

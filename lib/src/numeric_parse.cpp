@@ -34,7 +34,7 @@ bool parse_numerator(std::string_view s, double& out) {
     if (factor.empty() || factor == "+") f = 1.0;
     else if (factor == "-") f = -1.0;
     else if (!parse_decimal(factor, f)) return false;
-    out = f * std::numbers::pi;
+    out = f * std::numbers::pi;  // may overflow (1e308pi): parse_number refuses it
     return true;
   }
   return parse_decimal(s, out);
@@ -48,18 +48,22 @@ double parse_number(std::string_view text, const std::string& parameter) {
     throw InvalidParameter(parameter, "expected a number such as 0.25, 1e-3, 1/3 or 3*pi/5, got '" +
                                           std::string(text) + "'");
   };
+  const auto finite = [&](double value) -> double {
+    if (!std::isfinite(value))
+      throw InvalidParameter(parameter, "'" + std::string(text) +
+                                            "' is out of range: a number must be finite (|x| < 1.8e308)");
+    return value;
+  };
   const auto slash = s.find('/');
   double value = 0.0;
   if (slash == std::string::npos) {
     if (!parse_numerator(s, value)) return fail();
-    return value;
+    return finite(value);
   }
   double num = 0.0, den = 0.0;
   if (!parse_numerator(std::string_view(s).substr(0, slash), num)) return fail();
   if (!parse_decimal(std::string_view(s).substr(slash + 1), den) || den == 0.0) return fail();
-  value = num / den;
-  if (!std::isfinite(value)) return fail();
-  return value;
+  return finite(num / den);
 }
 
 }  // namespace lrchain

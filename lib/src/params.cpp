@@ -1,20 +1,57 @@
 #include "lrchain/params.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "lrchain/errors.hpp"
 
 namespace lrchain {
 
+namespace {
+
+// A bound or a value as messages show it: %g ("10000", "1e+308", "0.444444").
+std::string shown(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", v);
+  return buffer;
+}
+
+}  // namespace
+
+bool PhysicalRange::contains(double value) const {
+  if (!std::isfinite(value)) return false;
+  if (min_open ? !(value > min) : !(value >= min)) return false;
+  return max_open ? value < max : value <= max;
+}
+
+std::string PhysicalRange::interval() const {
+  return std::string(min_open ? "(" : "[") + shown(min) + ", " + shown(max) + (max_open ? ")" : "]");
+}
+
+const std::vector<PhysicalRange>& model_parameter_ranges() {
+  static const std::vector<PhysicalRange> ranges = {alpha_range, delta0_range, kappa_range, rho_range};
+  return ranges;
+}
+
+void check_in_range(double value, const PhysicalRange& range, const std::string& name) {
+  if (range.contains(value)) return;
+  throw InvalidParameter(name.empty() ? std::string(range.name) : name,
+                         "must be a finite number in " + range.interval() + " (" + range.meaning + "); got " +
+                             shown(value));
+}
+
 void validate(const Params& p) {
-  if (!(std::isfinite(p.alpha) && p.alpha > 1.0))
-    throw InvalidParameter("alpha", "must be a finite number > 1 (Hertz exponent; 3/2 for spheres)");
-  if (!(std::isfinite(p.delta0) && p.delta0 > 0.0))
-    throw InvalidParameter("delta0", "must be a finite number > 0 (precompression overlap)");
-  if (!(std::isfinite(p.kappa) && p.kappa > 0.0))
-    throw InvalidParameter("kappa", "must be a finite number > 0 (resonator spring constant)");
-  if (!(std::isfinite(p.rho) && p.rho > 0.0))
-    throw InvalidParameter("rho", "must be a finite number > 0 (mass ratio m2/m1)");
+  check_in_range(p.alpha, alpha_range);
+  check_in_range(p.delta0, delta0_range);
+  check_in_range(p.kappa, kappa_range);
+  check_in_range(p.rho, rho_range);
+}
+
+void check_drive_amplitude(double amplitude, double delta0) {
+  if (std::isfinite(amplitude) && amplitude > 0 && amplitude <= delta0) return;
+  throw InvalidParameter("amplitude", "must be a finite number in (0, delta0] = (0, " + shown(delta0) +
+                                          "] (the driver's stroke may not exceed the precompression overlap); got " +
+                                          shown(amplitude));
 }
 
 TaylorCoefficients taylor_coefficients(const Params& p) {

@@ -100,7 +100,12 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv_in, const Proces
   sigemptyset(&none);
   posix_spawnattr_setsigdefault(&attr, &all);
   posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  short flags = POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK;
+  if (o.own_process_group) {
+    posix_spawnattr_setpgroup(&attr, 0);  // a new group whose id is the child's pid
+    flags |= POSIX_SPAWN_SETPGROUP;
+  }
+  posix_spawnattr_setflags(&attr, flags);
 
   pid_t pid = -1;
   const int rc = ::posix_spawnp(&pid, argv[0], &fa, &attr, argv.data(), envp.data());
@@ -114,19 +119,20 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv_in, const Proces
     throw std::runtime_error("cannot start '" + argv_in[0] + "': " + std::strerror(rc));
   }
   pid_ = pid;
+  own_group_ = o.own_process_group;
   out_fd_ = out_pipe[0];
   err_fd_ = err_pipe[0];
 }
 
 ChildProcess::~ChildProcess() {
   if (!waited_ && pid_ > 0) {
-    ::kill(pid_, SIGTERM);
+    send_signal(SIGTERM);
     wait();
   }
 }
 
 void ChildProcess::send_signal(int signal_number) const {
-  if (!waited_ && pid_ > 0) ::kill(pid_, signal_number);
+  if (!waited_ && pid_ > 0) ::kill(own_group_ ? -pid_ : pid_, signal_number);
 }
 
 ProcessResult ChildProcess::wait() {

@@ -16,6 +16,7 @@
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"
 #include "restart.hpp"
+#include "sampling_checks.hpp"
 
 namespace lrchain::sim {
 
@@ -49,25 +50,28 @@ void validate(const BrightRunConfig& c) {
   if (c.N < 2 || c.N > max_sites) throw InvalidParameter("N", "must be an integer in [2, 1e15]");
   if (!(c.periods > 0 && std::isfinite(c.periods)))
     throw InvalidParameter("periods", "must be a finite number > 0 (units of T_b)");
-  if (!(c.sample_every > 0 && c.sample_every <= c.periods))
-    throw InvalidParameter("sample-every", "must be in (0, periods] (units of T_b)");
-  if (!(c.spacetime_every >= c.sample_every && std::isfinite(c.spacetime_every)))
-    throw InvalidParameter("spacetime-every", "must be a finite number >= sample-every (units of T_b)");
-  checked_finite(c.theta, "theta");
-  checked_finite(c.n0, "n0");
+  validate_sampling({c.periods, "periods", true, c.sample_every, c.spacetime_every, c.checkpoint_every,
+                     snapshot_periods_in_run(c),
+                     (c.checkpoint_at_end && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
+                     "snapshot_periods"});
+  if (!(c.theta > 0 && c.theta <= M_PI)) throw InvalidParameter("theta", "the carrier wavenumber must be in (0, pi]");
+  if (!(std::isfinite(c.n0) && std::abs(c.n0) <= double(c.N)))
+    throw InvalidParameter("n0", fmt::format("the initial centre must be a site of the lattice, in [-N, N] = [{}, {}]",
+                                             -c.N, c.N));
   if (c.detuning) checked_finite(*c.detuning, "detuning");
   checked_finite(c.error_window_end, "error-window");
   if (c.centre_window < 1) throw InvalidParameter("centre-window", "must be >= 1");
-  // Times beyond the end belong to a longer run made of restarts (they are part of the
-  // checkpoint's identity): allowed when this run continues a checkpoint or writes one at its end.
-  const bool continued_later = (c.checkpoint_at_end && !c.checkpoint_file.empty()) || !c.restart_file.empty();
-  for (double p : snapshot_periods_in_run(c))
-    if (!(p >= 0 && std::isfinite(p) && (continued_later || p <= c.periods * (1 + 1e-12))))
-      throw InvalidParameter("snapshots", fmt::format("snapshot time {} T_b lies outside the run [0, {}] T_b",
-                                                      p, c.periods));
-  if (!(c.checkpoint_every == 0 || (c.checkpoint_every >= c.sample_every && std::isfinite(c.checkpoint_every))))
-    throw InvalidParameter("checkpoint-every", "must be 0 (none) or a finite number >= sample-every (units of T_b)");
   validate(c.integrator);
+  // The ansatz checks theta, detuning and n0 and gives T_b: dt may not exceed the run periods * T_b.
+  const BrightBreatherAnsatz ansatz(c.params, c.branch, c.theta, c.detuning, c.n0);
+  const double run_length = c.periods * ansatz.period();
+  validate_step_within_run(c.integrator, run_length);
+  if (!(c.error_window_end <= run_length))
+    throw InvalidParameter("error-window", fmt::format("the end of the error window (error_window_end) must be at "
+                                                       "most {:.6g}, the run's time span (<= 0: none)", run_length));
+  if (!(c.trailing.fit_start >= 0 && c.trailing.fit_start <= run_length))
+    throw InvalidParameter("trailing-fit-start", fmt::format("must be in [0, {:.6g}], the run's time span (0: off)",
+                                                             run_length));
   const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
   const bool lattice = lattice_dominates(sizes);
   check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "N" : "periods",
@@ -186,27 +190,17 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
   sink.t_end = t_end;
   sink.at_end = c.checkpoint_at_end;
   if (!c.restart_file.empty()) {
-    Checkpoint ck = read_restart(c.restart_file, identity, L.size(), t_end);
-    if (ck.record.series.names != rec.series.names || ck.record.fields.size() != 1 ||
-        ck.record.fields[0].sites != beads)
-      throw InputError("checkpoint '" + c.restart_file + "' does not hold a bright run's record");
-    s = std::move(ck.state);
-    rec = std::move(ck.record);
-    const std::filesystem::path f(c.restart_file);
-    for (const auto& [name, value] : std::initializer_list<std::pair<const char*, double*>>{
-             {"x0_inf", &S.x0_inf}, {"y0_inf", &S.y0_inf},
-                                {"energy0", &S.energy0}, {"max_Ex", &S.max_Ex}, {"max_Ey", &S.max_Ey},
-                                {"max_Ex_window", &S.max_Ex_window}, {"max_Ey_window", &S.max_Ey_window},
-                                {"final_Ex", &S.final_Ex}, {"final_Ey", &S.final_Ey},
-                                {"max_energy_drift", &S.max_energy_drift}, {"next_spacetime_row", &next_st}})
-      *value = ck.accumulator(f, name);
+    const Resumption r = resume_from_checkpoint(
+        c.restart_file, identity, "bright", beads, t_end, s, rec,
+        {{"x0_inf", &S.x0_inf}, {"y0_inf", &S.y0_inf}, {"energy0", &S.energy0}, {"max_Ex", &S.max_Ex},
+         {"max_Ey", &S.max_Ey}, {"max_Ex_window", &S.max_Ex_window}, {"max_Ey_window", &S.max_Ey_window},
+         {"final_Ex", &S.final_Ex}, {"final_Ey", &S.final_Ey}, {"max_energy_drift", &S.max_energy_drift},
+         {"next_spacetime_row", &next_st}},
+        sink, times);
     first_sample = false;
-    skip_first = true;  // the checkpoint's record already holds the observation at ck.t
-    resume_step = ck.next_step;
-    sink.base_steps = ck.steps;
-    sink.base_rhs_evaluations = ck.rhs_evaluations;
-    S.t_start = ck.t;
-    times = times_after(times, ck.t);
+    skip_first = true;  // the checkpoint's record already holds the observation at its time
+    resume_step = r.next_step;
+    S.t_start = r.t;
   }
   sink.rhythm = CheckpointRhythm(c.checkpoint_every * Tb, S.t_start);
   SpaceTime& row_field = rec.fields[0];  // (after a restart, the checkpoint's)

@@ -19,6 +19,7 @@
 #include "lrchain/sim/observation.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "restart.hpp"
+#include "sampling_checks.hpp"
 #include "run_json.hpp"
 
 namespace lrchain::sim {
@@ -49,32 +50,25 @@ ResourceEstimate estimate_resources(const DriveRunConfig& c) { return estimate_l
 void validate(const DriveRunConfig& c) {
   validate(c.params);
   if (c.beads < 10) throw InvalidParameter("beads", "must be an integer >= 10");
-  if (!(c.amplitude > 0 && std::isfinite(c.amplitude)))
-    throw InvalidParameter("amplitude", "must be a finite number > 0");
+  check_drive_amplitude(c.amplitude, c.params.delta0);
   if (!(c.omega0 > 0 && std::isfinite(c.omega0))) throw InvalidParameter("omega0", "must be a finite number > 0");
-  if (!(c.ramp_rate > 0 && std::isfinite(c.ramp_rate)))
-    throw InvalidParameter("ramp-rate", "must be a finite number > 0");
-  checked_finite(c.t_m, "t-m");
+  if (!(c.ramp_rate > 0 && c.ramp_rate <= c.omega0))
+    throw InvalidParameter("ramp-rate", "must be in (0, omega0]: the envelope chi(t) varies slowly against the carrier");
   if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t-end", "must be a finite number > 0");
-  if (!(c.sample_every > 0 && c.sample_every <= c.t_end))
-    throw InvalidParameter("sample-every", "must be in (0, t_end]");
-  if (!(c.spacetime_every >= c.sample_every && std::isfinite(c.spacetime_every)))
-    throw InvalidParameter("spacetime-every", "must be a finite number >= sample-every");
+  validate_sampling({c.t_end, "t_end", false, c.sample_every, c.spacetime_every, c.checkpoint_every,
+                     snapshot_times_in_run(c),
+                     (c.checkpoint_at_end && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
+                     "snapshot_times"});
   if (!(c.front_fraction > 0 && c.front_fraction < 1))
     throw InvalidParameter("front-fraction", "must be in (0, 1)");
+  checked_finite(c.t_m, "t-m");
   checked_finite(c.front_fit_start, "front-fit-start");
   checked_finite(c.front_fit_end, "front-fit-end");
   if (!(c.front_fit_end > c.front_fit_start))
-    throw InvalidParameter("front-fit", "window end must exceed its start");
-  // Times beyond the end belong to a longer run made of restarts (they are part of the
-  // checkpoint's identity): allowed when this run continues a checkpoint or writes one at its end.
-  const bool continued_later = (c.checkpoint_at_end && !c.checkpoint_file.empty()) || !c.restart_file.empty();
-  for (double t : snapshot_times_in_run(c))
-    if (!(t >= 0 && std::isfinite(t) && (continued_later || t <= c.t_end * (1 + 1e-12))))
-      throw InvalidParameter("snapshots", fmt::format("snapshot time {} lies outside the run [0, {}]", t, c.t_end));
-  if (!(c.checkpoint_every == 0 || (c.checkpoint_every >= c.sample_every && std::isfinite(c.checkpoint_every))))
-    throw InvalidParameter("checkpoint-every", "must be 0 (none) or a finite number >= sample-every");
+    throw InvalidParameter("front-fit-end", "must exceed front-fit-start (the front-speed fit window "
+                                            "[front_fit_start, front_fit_end])");
   validate(c.integrator);
+  validate_step_within_run(c.integrator, c.t_end);
   if (is_symplectic(c.integrator.stepper))
     throw InvalidParameter("stepper", "the driven chain is not autonomous: use rkf78 or dopri5");
   const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
@@ -184,24 +178,15 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   sink.t_end = c.t_end;
   sink.at_end = c.checkpoint_at_end;
   if (!c.restart_file.empty()) {
-    Checkpoint ck = read_restart(c.restart_file, identity, L.size(), c.t_end);
-    if (ck.record.series.names != rec.series.names || ck.record.fields.size() != 1 ||
-        ck.record.fields[0].sites != beads)
-      throw InputError("checkpoint '" + c.restart_file + "' does not hold a drive run's record");
-    s = std::move(ck.state);
-    rec = std::move(ck.record);
-    const std::filesystem::path f(c.restart_file);
-    for (const auto& [name, value] : std::initializer_list<std::pair<const char*, double*>>{
-             {"max_energy", &S.max_energy}, {"max_participation", &S.max_participation},
-             {"final_energy", &S.final_energy}, {"final_participation", &S.final_participation},
-             {"final_peaks", &final_peaks}, {"next_spacetime_row", &next_st}})
-      *value = ck.accumulator(f, name);
-    skip_first = true;  // the checkpoint's record already holds the observation at ck.t
-    resume_step = ck.next_step;
-    sink.base_steps = ck.steps;
-    sink.base_rhs_evaluations = ck.rhs_evaluations;
-    S.t_start = ck.t;
-    times = times_after(times, ck.t);
+    const Resumption r = resume_from_checkpoint(
+        c.restart_file, identity, "drive", beads, c.t_end, s, rec,
+        {{"max_energy", &S.max_energy}, {"max_participation", &S.max_participation},
+         {"final_energy", &S.final_energy}, {"final_participation", &S.final_participation},
+         {"final_peaks", &final_peaks}, {"next_spacetime_row", &next_st}},
+        sink, times);
+    skip_first = true;  // the checkpoint's record already holds the observation at its time
+    resume_step = r.next_step;
+    S.t_start = r.t;
   }
   sink.rhythm = CheckpointRhythm(c.checkpoint_every, S.t_start);
   SpaceTime& field = rec.fields[0];  // (after a restart, the checkpoint's)

@@ -26,6 +26,7 @@ void read_bright(const config::CheckedTable& t, BrightRunConfig& c) {
   t.read("snapshot_periods", c.snapshot_periods);
   t.read("trailing_fit_start", c.trailing.fit_start);
   t.read("trailing_gap", c.trailing.gap);
+  t.read("checkpoint_every", c.checkpoint_every);
 }
 
 }  // namespace

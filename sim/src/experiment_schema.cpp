@@ -26,10 +26,12 @@ std::shared_ptr<const TableSchema> bright_table() {
   const auto positive = NumberRange::positive(), non_negative = NumberRange::non_negative();
   return std::make_shared<const TableSchema>(TableSchema{
       "a bright breather started from the NLS ansatz (Sec. 4.1-4.3)",
-      {choice("branch", {"optical", "acoustic"}, std::string(to_string(d.branch)), "dispersion branch of the carrier"),
+      {choice("branch", branch_spellings(), std::string(to_string(d.branch)),
+              "dispersion branch of the carrier (opt and + mean optical, acs and - acoustic)"),
        number("theta", NumberRange::any(), "", "carrier wavenumber theta").require(),
        number("detuning", NumberRange::any(), "sign(h_tilde) 1e-4", "omega_b - omega"),
-       number("n0", NumberRange::any(), number_text(d.n0), "initial centre (site)"),
+       number("n0", NumberRange::between(-double(max_sites), double(max_sites), false, false), number_text(d.n0),
+              "initial centre (site), in [-N, N]"),
        integer("N", 2, max_sites, std::to_string(d.N), "strain sites n = -N..N"),
        number("periods", positive, number_text(d.periods), "run length in breather periods T_b"),
        number("sample_every", positive, number_text(d.sample_every), "E_x, E_y, energy, centre sampled every this many T_b"),
@@ -42,7 +44,9 @@ std::shared_ptr<const TableSchema> bright_table() {
        number("trailing_fit_start", non_negative, "0 (off)",
               "track a structure behind the breather from this time on (> 0 to enable)"),
        number("trailing_gap", non_negative, number_text(d.trailing.gap),
-              "sites between the breather's centre and the searched region")},
+              "sites between the breather's centre and the searched region"),
+       number("checkpoint_every", non_negative, number_text(d.checkpoint_every),
+              "T_b between checkpoints (0: only on SIGINT/SIGTERM; > 0 also writes one at the end)")},
       std::nullopt});
 }
 
@@ -53,7 +57,8 @@ std::shared_ptr<const TableSchema> drive_table() {
   return std::make_shared<const TableSchema>(TableSchema{
       "a chain at rest driven at its first bead (Sec. 4.3)",
       {integer("beads", 10, max_sites, std::to_string(d.beads), "beads n = 1..beads, far end clamped"),
-       number("amplitude", positive, number_text(d.amplitude), "driving amplitude A0"),
+       number("amplitude", config::range_of(delta0_range), number_text(d.amplitude),
+              "driving amplitude A0, at most the precompression overlap delta0"),
        number("omega0", positive, number_text(d.omega0), "driving frequency"),
        number("ramp_rate", positive, number_text(d.ramp_rate), "r of the envelope chi(t)"),
        number("t_m", non_negative, number_text(d.t_m), "switch-off time of chi(t)"),
@@ -64,7 +69,9 @@ std::shared_ptr<const TableSchema> drive_table() {
        number("front_fraction", NumberRange::between(0, 1, true, true), number_text(d.front_fraction),
               "front = last site with e_n above this fraction of max e_n"),
        number("front_fit_start", non_negative, number_text(d.front_fit_start), "start of the front-speed fit"),
-       number("front_fit_end", positive, number_text(d.front_fit_end), "end of the front-speed fit")},
+       number("front_fit_end", positive, number_text(d.front_fit_end), "end of the front-speed fit"),
+       number("checkpoint_every", non_negative, number_text(d.checkpoint_every),
+              "time between checkpoints (0: only on SIGINT/SIGTERM; > 0 also writes one at the end)")},
       std::nullopt});
 }
 
@@ -75,7 +82,8 @@ std::shared_ptr<const TableSchema> modulated_table() {
   return std::make_shared<const TableSchema>(TableSchema{
       "a periodic chain started from a modulated acoustic wave (Sec. 5.1)",
       {integer("N", 8, max_sites, std::to_string(d.N), "sites of the periodic chain"),
-       number("epsilon", positive, number_text(d.epsilon), "wave amplitude (eq. cimi)"),
+       number("epsilon", config::range_of(modulation_amplitude_range), number_text(d.epsilon),
+              modulation_amplitude_range.meaning),
        number("theta_waves", positive, number_text(d.theta_waves), "carrier theta0 = theta_waves pi / N"),
        number("b", NumberRange::between(0, 1, false, true), number_text(d.b), "modulation depth"),
        number("t_end", positive, number_text(d.t_end), "run length"),

@@ -81,6 +81,11 @@ void validate(const IntegratorOptions& o) {
   if (!(o.dt > 0 && std::isfinite(o.dt))) throw InvalidParameter("dt", "must be a finite number > 0");
 }
 
+void validate_step_within_run(const IntegratorOptions& o, double run_length) {
+  if (!(o.dt <= run_length))
+    throw InvalidParameter("dt", fmt::format("must be in (0, {:.6g}]: a step may not exceed the run's length", run_length));
+}
+
 void validate_step_count(const IntegratorOptions& o, double duration) {
   if (!is_symplectic(o.stepper)) return;  // adaptive steppers grow their first step
   checked_count(duration / o.dt, "dt", 0, detail::max_fixed_steps,

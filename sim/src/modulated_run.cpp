@@ -21,6 +21,7 @@
 #include "lrchain/sim/observation.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "restart.hpp"
+#include "sampling_checks.hpp"
 #include "run_json.hpp"
 
 namespace lrchain::sim {
@@ -68,28 +69,26 @@ ResourceEstimate estimate_resources(const ModulatedRunConfig& c) { return estima
 void validate(const ModulatedRunConfig& c) {
   validate(c.params);
   if (c.N < 8) throw InvalidParameter("N", "must be an integer >= 8");
-  if (!(c.epsilon > 0 && std::isfinite(c.epsilon))) throw InvalidParameter("epsilon", "must be a finite number > 0");
+  check_in_range(c.epsilon, modulation_amplitude_range);
   if (!(c.theta_waves > 0 && c.theta_waves < double(c.N)))
     throw InvalidParameter("theta-waves", "theta0 = theta_waves*pi/N must lie in (0, pi)");
   if (!(c.b >= 0 && c.b < 1)) throw InvalidParameter("b", "must be in [0, 1)");
   if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t-end", "must be a finite number > 0");
-  if (!(c.sample_every > 0 && c.sample_every <= c.t_end))
-    throw InvalidParameter("sample-every", "must be in (0, t_end]");
-  if (!(c.checkpoint_every == 0 || (c.checkpoint_every >= c.sample_every && std::isfinite(c.checkpoint_every))))
-    throw InvalidParameter("checkpoint-every", "must be 0 (none) or a finite number >= sample-every");
+  validate_sampling({c.t_end, "t_end", false, c.sample_every, std::nullopt, c.checkpoint_every,
+                     snapshot_times_in_run(c),
+                     (c.checkpoint_every > 0 && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
+                     "snapshot_times"});
   if (c.dark_window < 1 || c.dark_window >= c.N) throw InvalidParameter("dark-window", "must be in [1, N)");
-  if (!(c.contrast_threshold > 0 && std::isfinite(c.contrast_threshold)))
-    throw InvalidParameter("contrast-threshold", "must be a finite number > 0");
+  // (max e - min e)/mean e <= N for any energy density e >= 0 on N sites.
+  if (!(c.contrast_threshold > 0 && c.contrast_threshold <= double(c.N)))
+    throw InvalidParameter("contrast-threshold", "must be in (0, N]: the contrast (max e - min e)/mean e never exceeds N");
   checked_finite(c.speed_fit_start, "speed-fit-start");
   checked_finite(c.speed_fit_end, "speed-fit-end");
-  // Times beyond the end belong to a longer run made of restarts (they are part of the
-  // checkpoint's identity): allowed when this run continues a checkpoint or writes one at its end.
-  const bool continued_later = (c.checkpoint_every > 0 && !c.checkpoint_file.empty()) || !c.restart_file.empty();
-  for (double t : snapshot_times_in_run(c))
-    if (!(t >= 0 && std::isfinite(t) && (continued_later || t <= c.t_end)))
-      throw InvalidParameter("snapshots", fmt::format("snapshot time {} lies outside the run [0, {}]", t, c.t_end));
+  if (!(c.speed_fit_end > c.speed_fit_start))
+    throw InvalidParameter("speed-fit-end", "must exceed speed-fit-start (the fit window [speed_fit_start, speed_fit_end])");
   validate(c.integrator);
   const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
+  validate_step_within_run(c.integrator, c.t_end);
   validate_step_count(c.integrator, c.t_end);
   const bool lattice = lattice_dominates(sizes);
   check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "N" : "sample-every",
@@ -182,27 +181,18 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
   sink.t_end = c.t_end;
   sink.at_end = c.checkpoint_every > 0;
   if (!c.restart_file.empty()) {
-    Checkpoint ck = read_restart(c.restart_file, identity, L.size(), c.t_end);
-    if (ck.record.series.names != rec.series.names || ck.record.fields.size() != 1 ||
-        ck.record.fields[0].sites != N)
-      throw InputError("checkpoint '" + c.restart_file + "' does not hold a modulated run's record");
-    s = std::move(ck.state);
-    rec = std::move(ck.record);
-    const std::filesystem::path f(c.restart_file);
     double instability_found = 0, instability_time = 0;  // the optional, as two numbers
-    for (const auto& [name, value] : std::initializer_list<std::pair<const char*, double*>>{
-             {"initial_contrast", &S.initial_contrast}, {"max_energy_drift", &S.max_energy_drift},
-             {"instability_found", &instability_found}, {"instability_time", &instability_time},
-             {"previous_centre", &prev_centre}, {"unwrapped_centre", &unwrapped},
-             {"next_spacetime_row", &next_row}, {"first", &first}})
-      *value = ck.accumulator(f, name);
+    const Resumption r = resume_from_checkpoint(
+        c.restart_file, identity, "modulated", N, c.t_end, s, rec,
+        {{"initial_contrast", &S.initial_contrast}, {"max_energy_drift", &S.max_energy_drift},
+         {"instability_found", &instability_found}, {"instability_time", &instability_time},
+         {"previous_centre", &prev_centre}, {"unwrapped_centre", &unwrapped},
+         {"next_spacetime_row", &next_row}, {"first", &first}},
+        sink, times);
     if (instability_found != 0) S.instability_time = instability_time;
-    skip_first = true;  // the checkpoint's record already holds the observation at ck.t
-    resume_step = ck.next_step;
-    sink.base_steps = ck.steps;
-    sink.base_rhs_evaluations = ck.rhs_evaluations;
-    S.t_start = ck.t;
-    times = times_after(times, ck.t);
+    skip_first = true;  // the checkpoint's record already holds the observation at its time
+    resume_step = r.next_step;
+    S.t_start = r.t;
   }
   sink.rhythm = CheckpointRhythm(c.checkpoint_every, S.t_start);
   SpaceTime& field = rec.fields[0];  // (after a restart, the checkpoint's)

@@ -40,6 +40,7 @@ DriveExperiment load_drive_config(const config::Document& doc) {
     d->read("front_fraction", x.run.front_fraction);
     d->read("front_fit_start", x.run.front_fit_start);
     d->read("front_fit_end", x.run.front_fit_end);
+    d->read("checkpoint_every", x.run.checkpoint_every);
   }
   validate(x.run);
   return x;

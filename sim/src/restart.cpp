@@ -40,6 +40,24 @@ Checkpoint read_restart(const std::string& file, const TrajectoryIdentity& ident
   return c;
 }
 
+Resumption resume_from_checkpoint(const std::string& file, const TrajectoryIdentity& identity, const std::string& kind,
+                                  std::size_t sites, double t_end, State& state, RunRecord& record,
+                                  std::initializer_list<std::pair<const char*, double*>> accumulators,
+                                  CheckpointSink& sink, std::vector<double>& times) {
+  Checkpoint ck = read_restart(file, identity, state.size(), t_end);
+  if (ck.record.series.names != record.series.names || ck.record.fields.size() != 1 ||
+      ck.record.fields[0].sites != sites)
+    throw InputError("checkpoint '" + file + "' does not hold a " + kind + " run's record");
+  state = std::move(ck.state);
+  record = std::move(ck.record);
+  const std::filesystem::path f(file);
+  for (const auto& [name, value] : accumulators) *value = ck.accumulator(f, name);
+  sink.base_steps = ck.steps;
+  sink.base_rhs_evaluations = ck.rhs_evaluations;
+  times = times_after(times, ck.t);
+  return {ck.t, ck.next_step};
+}
+
 std::vector<double> times_after(const std::vector<double>& times, double t0) {
   std::vector<double> out{t0};
   for (double t : times)

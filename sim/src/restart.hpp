@@ -2,7 +2,9 @@
 // Pieces the long runs (bright, drive, modulated) share for checkpoint/restart: the identity items
 // every run has, reading a checkpoint for a restart, the observation times left after it, and the
 // rhythm of periodic checkpoints. Private to sim/src.
+#include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lrchain/params.hpp"
@@ -19,6 +21,23 @@ TrajectoryIdentity base_identity(const std::string& run, const Params& p, const 
 // does not match.
 Checkpoint read_restart(const std::string& file, const TrajectoryIdentity& identity,
                         std::size_t state_size, double t_end);
+
+struct CheckpointSink;
+
+// Where a restarted run resumes: the checkpoint's time and the step its stepper tries next.
+struct Resumption {
+  double t = 0;
+  double next_step = 0;
+};
+
+// Continues a `kind` run ("bright", "drive", "modulated") from the checkpoint `file`: checks it
+// (read_restart) and that its record has the run's series names and one field of `sites` sites,
+// then moves its state and record into `state` and `record`, reads each named accumulator into
+// its slot, carries the work done into `sink` and keeps the observation times from its time on.
+Resumption resume_from_checkpoint(const std::string& file, const TrajectoryIdentity& identity, const std::string& kind,
+                                  std::size_t sites, double t_end, State& state, RunRecord& record,
+                                  std::initializer_list<std::pair<const char*, double*>> accumulators,
+                                  CheckpointSink& sink, std::vector<double>& times);
 
 // The observation times of a run continued from a checkpoint at t0: t0, then those after it.
 std::vector<double> times_after(const std::vector<double>& times, double t0);

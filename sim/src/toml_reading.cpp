@@ -20,13 +20,15 @@ std::string default_text(double v) {
 
 }  // namespace
 
+NumberRange range_of(const PhysicalRange& r) { return NumberRange::between(r.min, r.max, r.min_open, r.max_open); }
+
 std::shared_ptr<const TableSchema> model_schema(const Params& d) {
+  const auto key = [](const PhysicalRange& r, double default_value) {
+    return number(r.name, range_of(r), default_text(default_value), r.meaning);
+  };
   return std::make_shared<const TableSchema>(TableSchema{
       "the resonant chain's parameters (Sec. 2)",
-      {number("rho", NumberRange::positive(), default_text(d.rho), "mass ratio of resonator to bead"),
-       number("kappa", NumberRange::positive(), default_text(d.kappa), "resonator spring constant"),
-       number("delta0", NumberRange::positive(), default_text(d.delta0), "precompression overlap"),
-       number("alpha", NumberRange::above(1), default_text(d.alpha), "Hertz exponent (3/2 for spheres)")},
+      {key(rho_range, d.rho), key(kappa_range, d.kappa), key(delta0_range, d.delta0), key(alpha_range, d.alpha)},
       std::nullopt});
 }
 

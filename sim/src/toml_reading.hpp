@@ -14,6 +14,8 @@ namespace lrchain::sim::config {
 
 using namespace lrchain::config;
 
+// The schema range of a physical parameter (lrchain/params.hpp).
+NumberRange range_of(const PhysicalRange& r);
 // [model]: rho, kappa, delta0, alpha, with the experiment's defaults.
 std::shared_ptr<const TableSchema> model_schema(const Params& defaults);
 // [integrator]: stepper (one of `steppers`), abs_tol, rel_tol, dt.

@@ -67,7 +67,9 @@ const std::set<BadValue>& possibly_valid(const std::string& name) {
   static const std::map<std::string, std::set<BadValue>> table = {
       {"detuning", {minus_one}},             // any nonzero value with the sign of h_tilde (< 0 at the bases)
       {"n0", {minus_one, zero}},             // the breather centre may be any site
-      {"error-window", {zero}},              // t <= 0: the initial state alone
+      {"error-window", {minus_one, zero}},   // t <= 0: no error window (the default is -1)
+      {"error-window-end", {minus_one, zero}},  // the config key of --error-window
+      {"trailing-fit-start", {zero}},        // 0: no trailing-structure fit (the default)
       {"snapshots", {zero}},                 // a snapshot at t = 0 is the initial state
       {"rel-tol", {zero}},                   // pure absolute error control
       {"t-m", {minus_one, zero}},            // chi(t) is defined for any switch-off time

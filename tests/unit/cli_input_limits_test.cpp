@@ -206,3 +206,98 @@ TEST_CASE("--help lists the exit codes") {
   for (const char* code : {"Exit codes", "0 success", "2 bad input", "3 numerical failure", "130/143"})
     CHECK(j.out.find(code) != std::string::npos);
 }
+
+namespace {
+
+// Exit 2 with one stderr line naming `parameter` and showing its allowed range `range_text`.
+void check_out_of_range(const std::vector<std::string>& args, const std::string& parameter,
+                        const std::string& range_text,
+                        const std::vector<std::pair<std::string, std::string>>& files = {}) {
+  check_refused(args, parameter, files);
+  const Job j = run_lrchain(args, files);
+  INFO("stderr: " << j.err);
+  CHECK(j.err.find(range_text) != std::string::npos);
+}
+
+// An example config with `from` replaced by `to` (one occurrence, which must exist).
+std::string example_with(const std::string& file, const std::string& from, const std::string& to) {
+  std::ifstream in(std::string(LRCHAIN_SOURCE_DIR) + "/examples/" + file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST_CASE("physical parameters outside their declared ranges are exit 2 naming the parameter and the range") {
+  // The ranges are lrchain/params.hpp's: alpha (1, 5], delta0 (0, 10], kappa and rho (0, 10000],
+  // epsilon (0, 1], the drive amplitude (0, delta0], dt at most the run's length. Before, each of
+  // these ran (exit 0), blew up (exit 3) or ran past the corpus's 10 s.
+  check_out_of_range(with(bright, {"--rho", "1e308", "--out", "o"}), "rho", "(0, 10000]");
+  check_out_of_range(with(bright, {"--kappa", "1e300pi", "--out", "o"}), "kappa", "(0, 10000]");
+  check_out_of_range(with(bright, {"--delta0", "10.5", "--out", "o"}), "delta0", "(0, 10]");
+  check_out_of_range(with(bright, {"--alpha", "5.01", "--out", "o"}), "alpha", "(1, 5]");
+  check_out_of_range(with(bright, {"--n0", "1e308", "--out", "o"}), "n0", "[-N, N]");
+  check_out_of_range({"dark", "solve", "--omega-b", "2.42", "--rho", "1e308", "--out", "o"}, "rho", "(0, 10000]");
+  check_out_of_range({"regime", "intervals", "--alpha", "1e308"}, "alpha", "(1, 5]");
+  check_out_of_range({"simulate", "drive", "--amplitude", "0.5", "--out", "o"}, "amplitude", "(0, 0.444444]");
+  check_out_of_range({"simulate", "drive", "--delta0", "0.05", "--out", "o"}, "amplitude", "(0, 0.05]");
+  check_out_of_range({"simulate", "modulated", "--epsilon", "1.5", "--out", "o"}, "epsilon", "(0, 1]");
+  check_out_of_range({"simulate", "modulated", "--t-end", "100", "--dt", "1e308", "--out", "o"}, "dt", "(0, 100]");
+  check_out_of_range({"simulate", "drive", "--t-end", "100", "--dt", "200", "--out", "o"}, "dt", "(0, 100]");
+  // The same ranges for the config keys, with the file and line.
+  check_out_of_range({"simulate", "--config", "x.toml", "--out", "o"}, "amplitude", "x.toml:",
+                     {{"x.toml", example_with("exp6_drive_rho10.toml", "amplitude = 0.06", "amplitude = 1e308")}});
+  check_out_of_range({"simulate", "--config", "x.toml", "--out", "o"}, "epsilon", "(0, 1]",
+                     {{"x.toml", example_with("exp7_modulated_dark.toml", "epsilon = 0.03", "epsilon = 1e308")}});
+  check_out_of_range({"simulate", "--config", "x.toml", "--out", "o"}, "alpha", "x.toml:13",
+                     {{"x.toml", example_with("exp7_modulated_dark.toml", "alpha = \"3/2\"", "alpha = 1e308")}});
+  check_out_of_range({"simulate", "--config", "x.toml", "--out", "o"}, "amplitude", "(0, 0.444444]",
+                     {{"x.toml", example_with("exp6_drive_rho10.toml", "amplitude = 0.06", "amplitude = 0.5")}});
+}
+
+TEST_CASE("the largest value of each physical parameter's range is accepted") {
+  for (const auto& [option, value] : std::vector<std::pair<std::string, std::string>>{
+           {"--rho", "10000"}, {"--kappa", "10000"}, {"--delta0", "10"}, {"--alpha", "5"}}) {
+    const Job j = run_lrchain({"coeffs", "--theta", "pi/2", "--branch", "optical", option, value, "--json"});
+    INFO(option << " " << value << ": " << j.err);
+    CHECK(j.exit_code == 0);
+  }
+}
+
+TEST_CASE("file options of the wrong kind are exit 2 naming the option, nothing written") {
+  check_refused({"reproduce", "--only", "coefficients", "--examples", "f", "--out", "o"}, "examples", {{"f", "x"}});
+  check_refused({"reproduce", "--only", "coefficients", "--errata", ".", "--out", "o"}, "errata");
+  check_refused({"simulate", "modulated", "--t-end", "2", "--sample-every", "1", "--checkpoint", ".", "--out", "o"},
+                "checkpoint");
+}
+
+TEST_CASE("a new run refuses an --out holding an earlier run's checkpoint; a restart from it continues") {
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-stale-checkpoint-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  lrchain::ProcessOptions o;
+  o.working_directory = dir;
+  o.capture_stdout = o.capture_stderr = true;
+  const std::vector<std::string> first = {LRCHAIN_CLI, "simulate", "modulated", "--N", "16", "--theta-waves", "8",
+                                          "--t-end", "2", "--sample-every", "1", "--checkpoint-every", "1",
+                                          "--out", "o", "--json"};
+  REQUIRE(lrchain::run_program(first, o).exit_code == 0);
+  REQUIRE(fs::exists(dir / "o" / "checkpoint.bin"));
+  const auto before = listing(dir);
+  const auto again = lrchain::run_program(first, o);
+  CHECK(again.exit_code == 2);
+  CHECK(again.error_output.find("invalid checkpoint: 'o/checkpoint.bin' holds the checkpoint of an earlier run") !=
+        std::string::npos);
+  CHECK(std::count(again.error_output.begin(), again.error_output.end(), '\n') == 1);
+  CHECK(listing(dir) == before);
+  auto restart = first;
+  restart[8] = "4";  // --t-end 4
+  restart.insert(restart.end(), {"--restart", "o/checkpoint.bin"});
+  const auto continued = lrchain::run_program(restart, o);
+  INFO(continued.error_output);
+  CHECK(continued.exit_code == 0);
+  CHECK(nlohmann::json::parse(continued.output)["t_start"].get<double>() == doctest::Approx(2));
+  fs::remove_all(dir);
+}

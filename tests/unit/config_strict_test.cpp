@@ -107,13 +107,13 @@ TEST_CASE("config: wrong types name the key, the line and the expected type") {
 
 TEST_CASE("config: values out of range, NaN and inf name the key and the allowed range") {
   CHECK(load_error(drive_head + "amplitude = inf\n", "exp6.toml") ==
-        "invalid value for 'amplitude' in [drive] at exp6.toml:4: expected a finite number > 0; got inf");
+        "invalid value for 'amplitude' in [drive] at exp6.toml:4: expected a finite number in (0, 10]; got inf");
   CHECK(load_error(drive_head + "t_m = nan\n", "exp6.toml") ==
         "invalid value for 't_m' in [drive] at exp6.toml:4: expected a finite number >= 0; got nan");
   CHECK(load_error(drive_head + "t_end = \"1e400\"\n", "exp6.toml") ==
         "invalid value for 't_end' in [drive] at exp6.toml:4: expected a finite number > 0; got \"1e400\"");
   CHECK(load_error(modulated_head + "epsilon = -inf\n", "exp7.toml") ==
-        "invalid value for 'epsilon' in [modulated] at exp7.toml:4: expected a finite number > 0; got -inf");
+        "invalid value for 'epsilon' in [modulated] at exp7.toml:4: expected a finite number in (0, 1]; got -inf");
   CHECK(load_error(modulated_head + "b = 1\n", "exp7.toml") ==
         "invalid value for 'b' in [modulated] at exp7.toml:4: expected a finite number in [0, 1); got 1");
   CHECK(load_error(drive_head + "snapshot_times = [1, -2]\n", "exp6.toml") ==
@@ -284,10 +284,10 @@ TEST_CASE("config: simulate --config with a bad file exits 2 with one line and w
        "unknown key 'kapa' in [model] at " + (dir / "kapa.toml").string() + ":6; did you mean 'kappa'?"},
       {"amp.toml", drive_head + "amplitude = inf\n[output]\ndir = \"" + out.string() + "\"\n",
        "invalid value for 'amplitude' in [drive] at " + (dir / "amp.toml").string() +
-           ":4: expected a finite number > 0; got inf"},
+           ":4: expected a finite number in (0, 10]; got inf"},
       {"eps.toml", modulated_head + "epsilon = nan\n[output]\ndir = \"" + out.string() + "\"\n",
        "invalid value for 'epsilon' in [modulated] at " + (dir / "eps.toml").string() +
-           ":4: expected a finite number > 0; got nan"},
+           ":4: expected a finite number in (0, 1]; got nan"},
       {"empty.toml", "", "config file '" + (dir / "empty.toml").string() + "' is empty"},
   };
   for (const auto& c : cases) {

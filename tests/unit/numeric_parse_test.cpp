@@ -27,3 +27,11 @@ TEST_CASE("rejected forms name the parameter") {
   for (const char* bad : {"", "abc", "nan", "NaN", "inf", "1/0", "1/", "/2", "pi*2", "1+1", "2**pi", "sqrt(2)", "1/3/4"})
     CHECK_THROWS_WITH_AS(parse_number(bad, "theta"), doctest::Contains("theta"), lrchain::InvalidParameter);
 }
+
+TEST_CASE("a multiple of pi or a fraction beyond the largest double is refused as out of range") {
+  // 1e308 * pi and 1e308 / 1e-10 overflow to inf; the parser must not hand inf on.
+  for (const char* big : {"1e308pi", "-1e308*pi", "1e308pi/2", "1e308/1e-10"})
+    CHECK_THROWS_WITH_AS(parse_number(big, "rho"), doctest::Contains("rho: '"), lrchain::InvalidParameter);
+  CHECK_THROWS_WITH_AS(parse_number("1e308pi", "rho"), doctest::Contains("out of range"), lrchain::InvalidParameter);
+  CHECK(parse_number("1e300pi", "x") == 1e300 * pi);  // large but finite: the parameter's range decides
+}

@@ -275,7 +275,9 @@ TEST_CASE("two runs into one --out: the second exits 2 naming the running one") 
   first.send_signal(SIGTERM);
   const auto r = first.wait();
   CHECK((r.exit_code == 143 || r.signal_number == SIGTERM));
-  // Once the first has ended the directory is free again.
+  // Once the first has ended the directory is free again (once its checkpoint is moved away: a
+  // new run refuses an earlier run's checkpoint, cli_input_limits_test.cpp).
+  fs::remove(out / "checkpoint.bin");
   CHECK(run_lrchain(with_out(small_bright, out.string())).exit_code == 0);
   CHECK_FALSE(fs::exists(out / ".lrchain-lock"));
   fs::remove_all(base);

@@ -1,5 +1,7 @@
 // run_program (lrchain/process.hpp): argv passed as data, never through a shell.
 #include <doctest/doctest.h>
+#include <signal.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -43,4 +45,23 @@ TEST_CASE("run_program sets and removes environment variables") {
   const auto r = lrchain::run_program({"env"}, o);
   CHECK(r.output.find("LRCHAIN_PROCESS_TEST=42\n") != std::string::npos);
   CHECK(r.output.find("\nHOME=") == std::string::npos);
+}
+
+TEST_CASE("process: a child in its own process group leads it, and send_signal reaches the group") {
+  // reproduce starts each child run this way, so that SIGINT/SIGTERM passed on reaches the child's
+  // own children (gnuplot) too, and the terminal's Ctrl-C reaches reproduce alone.
+  lrchain::ProcessOptions o;
+  o.own_process_group = true;
+  lrchain::ChildProcess child({"sleep", "30"}, o);
+  CHECK(::getpgid(child.pid()) == child.pid());
+  CHECK(::getpgid(child.pid()) != ::getpgrp());
+  child.send_signal(SIGTERM);
+  const auto r = child.wait();
+  CHECK_FALSE(r.exited);
+  CHECK(r.signal_number == SIGTERM);
+  // Without the option the child stays in the caller's group.
+  lrchain::ChildProcess same({"sleep", "30"});
+  CHECK(::getpgid(same.pid()) == ::getpgrp());
+  same.send_signal(SIGTERM);
+  CHECK(same.wait().signal_number == SIGTERM);
 }

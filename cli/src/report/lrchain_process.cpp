@@ -67,7 +67,7 @@ extern "C" void pass_signal_on(int signal_number) {
   received_signal = signal_number;
   for (auto& child : running_children) {
     const pid_t pid = child.load();
-    if (pid > 0) ::kill(pid, signal_number);
+    if (pid > 0) ::kill(-pid, signal_number);  // the child's own process group: it and its gnuplot
   }
 }
 
@@ -127,6 +127,7 @@ nlohmann::json run_lrchain(const StepContext& ctx, const std::vector<std::string
   options.stdout_file = out_tmp;
   options.stderr_file = err_tmp;
   options.environment = {"OMP_NUM_THREADS=" + std::to_string(ctx.child_threads)};
+  options.own_process_group = true;  // a signal passed on reaches everything the child started
   ProcessResult result;
   {
     ChildProcess child(argv, options);

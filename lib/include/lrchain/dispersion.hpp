@@ -1,6 +1,8 @@
 #pragma once
 // Linear dispersion relation of the resonant chain (eq:M, eq:disp1d).
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "lrchain/params.hpp"
 
@@ -9,8 +11,11 @@ namespace lrchain {
 enum class Branch { optical, acoustic };
 
 std::string_view to_string(Branch b);
-// Parses "optical"/"acoustic" (also "+"/"-"); throws InvalidParameter("branch", ...).
+// Parses one of branch_spellings(); throws InvalidParameter("branch", ...) naming them.
 Branch parse_branch(std::string_view text);
+// Every accepted spelling of a branch, for options and config keys alike:
+// "optical", "opt", "+", "acoustic", "acs", "-".
+const std::vector<std::string>& branch_spellings();
 
 // omega_+(theta) (optical) or omega_-(theta) (acoustic), eq:disp1d, with K2 given.
 // Evaluated without cancellation: the discriminant is written as a sum of squares and

@@ -15,6 +15,10 @@ struct ProcessOptions {
   bool capture_stdout = false;                    // collect stdout into ProcessResult::output
   bool capture_stderr = false;                    // collect stderr into ProcessResult::error_output
   bool stdin_null = true;                         // child's stdin from /dev/null
+  // The child leads a process group of its own: send_signal() then reaches it and everything it
+  // started (e.g. a child lrchain run and its gnuplot), and the terminal's Ctrl-C reaches only the
+  // caller, which decides what to pass on.
+  bool own_process_group = false;
   // Extra environment entries "NAME=value" (replace the caller's of the same name); variables
   // named in unset_environment are removed from the child's environment.
   std::vector<std::string> environment;
@@ -38,6 +42,7 @@ class ChildProcess {
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;
   int pid() const { return pid_; }
+  // Sends the signal to the child, or to its whole process group when it has one of its own.
   void send_signal(int signal_number) const;
   ProcessResult wait();  // reads the captured pipes to the end, then waits for the child
 
@@ -45,6 +50,7 @@ class ChildProcess {
   int pid_ = -1;
   int out_fd_ = -1, err_fd_ = -1;
   bool waited_ = false;
+  bool own_group_ = false;
 };
 
 // Runs argv[0] (looked up in PATH when it has no '/') with argv, waits for it.

@@ -54,6 +54,8 @@ struct IntegratorOptions {
   bool automatic_dt = false;
 };
 void validate(const IntegratorOptions& o);
+// Refuses (InvalidParameter("dt")) a first or largest step dt longer than the whole run (t_end).
+void validate_step_within_run(const IntegratorOptions& o, double run_length);
 // The fixed-step steppers take about `duration / dt` steps: refuses (InvalidParameter("dt")) a dt
 // that gives more than 1e12 steps (years of work) or a step count that overflows an integer.
 void validate_step_count(const IntegratorOptions& o, double duration);
