@@ -9,11 +9,13 @@ import lrchain
 
 
 @pytest.mark.parametrize("name, value, range_text", [
-    ("alpha", 1.0, "> 1"),
-    ("delta0", 0.0, "> 0"),
-    ("kappa", -1.0, "> 0"),
-    ("rho", math.nan, "> 0"),
-    ("rho", math.inf, "> 0"),
+    # the ranges of lib/include/lrchain/params.hpp
+    ("alpha", 1.0, "(1, 5]"),
+    ("delta0", 0.0, "(0, 10]"),
+    ("kappa", -1.0, "(0, 10000]"),
+    ("rho", math.nan, "(0, 10000]"),
+    ("rho", math.inf, "(0, 10000]"),
+    ("rho", 1e308, "(0, 10000]"),
 ])
 def test_params(name, value, range_text):
     with pytest.raises(ValueError) as err:

@@ -1,5 +1,5 @@
 // GENERATED FILE - DO NOT EDIT.
-// Written by lrchain-derive from models/resonant_chain.toml (FNV-1a 64 0xcb695d889b9ca955): the double evaluators of
+// Written by lrchain-derive from models/resonant_chain.toml (FNV-1a 64 0x505810b6d7d1235f): the double evaluators of
 // the model's dispersion relation and NLS coefficients (docs/models.md).
 // Regenerate with `cmake --build build --target regenerate`.
 #pragma once
@@ -71,11 +71,11 @@ inline lrchain::ModelDefinition definition() {
   lrchain::ModelDefinition d;
   d.name = "resonant_chain";
   d.description = "locally resonant granular chain with precompression (Hertz contacts, linear resonators)";
-  d.file_hash = 0xcb695d889b9ca955ull;
-  d.parameters.push_back({"alpha", "(1, inf)", 1.5, true, false, false, false, 1, 0});
-  d.parameters.push_back({"delta0", "(0, inf)", 0.44444444444444442, true, false, false, false, 0, 0});
-  d.parameters.push_back({"kappa", "(0, inf)", 1, true, false, false, false, 0, 0});
-  d.parameters.push_back({"rho", "(0, inf)", 0.33333333333333331, true, false, false, false, 0, 0});
+  d.file_hash = 0x505810b6d7d1235full;
+  d.parameters.push_back({"alpha", "(1, 5]", 1.5, true, true, false, true, 1, 5});
+  d.parameters.push_back({"delta0", "(0, 10]", 0.44444444444444442, true, true, false, true, 0, 10});
+  d.parameters.push_back({"kappa", "(0, 10000]", 1, true, true, false, true, 0, 10000});
+  d.parameters.push_back({"rho", "(0, 10000]", 0.33333333333333331, true, true, false, true, 0, 10000});
   d.intermediates.push_back("K2");
   d.intermediates.push_back("K3");
   d.intermediates.push_back("K4");
