@@ -21,9 +21,6 @@
 #include "report/lrchain_process.hpp"
 #include "report/steps.hpp"
 
-#ifndef LRCHAIN_SOURCE_DIR
-#define LRCHAIN_SOURCE_DIR ""
-#endif
 
 namespace lrchain::cli {
 
@@ -51,9 +48,17 @@ fs::path locate(const std::string& given, const std::string& rel, const std::str
       throw InvalidParameter(option, "'" + given + "' is not a regular file");
     return fs::absolute(given);
   }
-  const fs::path exe = current_executable();
-  for (const fs::path& p : {fs::path(LRCHAIN_SOURCE_DIR) / rel, exe.parent_path().parent_path() / "share/lrchain" / rel})
-    if (!p.empty() && fs::exists(p)) return p;
+  // Next to a build tree's lrchain, the file lrchain-source-tree names the source tree (written by
+  // cli/CMakeLists.txt, not installed); an installed lrchain uses <prefix>/share/lrchain.
+  const fs::path exe_dir = current_executable().parent_path();
+  std::vector<fs::path> candidates;
+  if (std::ifstream tree{exe_dir / "lrchain-source-tree"}; tree) {
+    std::string source_dir;
+    if (std::getline(tree, source_dir) && !source_dir.empty()) candidates.push_back(fs::path(source_dir) / rel);
+  }
+  candidates.push_back(exe_dir.parent_path() / "share/lrchain" / rel);
+  for (const fs::path& p : candidates)
+    if (fs::exists(p)) return p;
   throw InvalidParameter(option, "cannot find " + rel + " (give " + option + ")");
 }
 

@@ -14,6 +14,7 @@
 #include "lrchain/dispersion.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/displacement_lattice.hpp"
+#include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"

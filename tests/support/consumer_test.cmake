@@ -1,6 +1,13 @@
-# Installs the built project into WORK_DIR/prefix, then configures, builds and runs
-# examples/consumer against it with find_package(lrchain). Expected numbers: c = omega'(pi/2) =
-# 0.2298504217 and theta_c = 1.891589 (tests/unit/coefficients_paper_test.cpp, regime tests).
+# The installed package as another project uses it. Installs the built project into
+# WORK_DIR/prefix, then:
+#  1. examples/consumer (component `coefficients` only): c = omega'(pi/2) = 0.2298504217 and
+#     theta_c = 1.891589 (tests/unit/coefficients_paper_test.cpp, regime tests);
+#  2. examples/consumer_sim (component `sim`): the bond-centred dark breather at omega_b = 2.42
+#     converges with E_b <= 1e-10 and K_x = 0.4734 (tests/unit/dark_breather_test.cpp), and a
+#     20 T_b bright run stays within E_x < 0.05 with energy drift < 1e-9 (exp1: 0.0245 over 200 T_b);
+#  3. every installed header compiles on its own (the public headers include no private one);
+#  4. the exported targets name no absolute include path, and the installed lrchain binary holds
+#     no path of the source or build tree.
 file(REMOVE_RECURSE ${WORK_DIR})
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -9,15 +16,74 @@ function(run)
   endif()
   set(out "${out}" PARENT_SCOPE)
 endfunction()
-run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix)
+function(expect_in text)
+  foreach(expected ${ARGN})
+    string(FIND "${text}" "${expected}" pos)
+    if(pos EQUAL -1)
+      message(FATAL_ERROR "output lacks '${expected}':\n${text}")
+    endif()
+  endforeach()
+endfunction()
+set(prefix ${WORK_DIR}/prefix)
+run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+
+# 1. coefficients only
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/build
-    -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release)
+    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/nls_coefficients)
 message(STATUS "consumer output:\n${out}")
-foreach(expected "c = 0.2298504217" "focusing = yes" "focusing interval: (0.000000, 1.891589)")
-  string(FIND "${out}" "${expected}" pos)
-  if(pos EQUAL -1)
-    message(FATAL_ERROR "consumer output lacks '${expected}'")
-  endif()
+expect_in("${out}" "c = 0.2298504217" "focusing = yes" "focusing interval: (0.000000, 1.891589)")
+
+# 2. the simulator
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer_sim -B ${WORK_DIR}/build-sim
+    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/build-sim)
+run(${WORK_DIR}/build-sim/breathers)
+message(STATUS "consumer_sim output:\n${out}")
+expect_in("${out}" "dark: converged = yes" "K_x = 0.473")
+string(REGEX MATCH "E_b = ([0-9.e+-]+)" _ "${out}")
+if(NOT CMAKE_MATCH_1 OR CMAKE_MATCH_1 GREATER 1e-10)
+  message(FATAL_ERROR "dark breather E_b = '${CMAKE_MATCH_1}', expected <= 1e-10")
+endif()
+string(REGEX MATCH "max E_x = ([0-9.]+) .* drift = ([0-9.e+-]+)" _ "${out}")
+if(NOT CMAKE_MATCH_1 OR CMAKE_MATCH_1 GREATER 0.05 OR CMAKE_MATCH_2 GREATER 1e-9)
+  message(FATAL_ERROR "bright run: max E_x = '${CMAKE_MATCH_1}' (expected < 0.05), drift = '${CMAKE_MATCH_2}' (expected < 1e-9)")
+endif()
+
+# 3. every installed header on its own
+file(GLOB_RECURSE headers RELATIVE ${prefix}/include ${prefix}/include/lrchain/*)
+set(sources)
+set(index 0)
+foreach(h ${headers})
+  math(EXPR index "${index} + 1")
+  file(WRITE ${WORK_DIR}/headers/h${index}.cpp "#include \"${h}\"\n")
+  list(APPEND sources h${index}.cpp)
 endforeach()
+list(LENGTH headers count)
+message(STATUS "${count} installed headers")
+file(WRITE ${WORK_DIR}/headers/CMakeLists.txt "cmake_minimum_required(VERSION 3.20)
+project(lrchain_headers LANGUAGES CXX)
+find_package(lrchain REQUIRED)
+add_library(each_header OBJECT ${sources})
+target_compile_features(each_header PRIVATE cxx_std_20)
+target_link_libraries(each_header PRIVATE lrchain::lrchain lrchain::sim)
+")
+run(${CMAKE_COMMAND} -S ${WORK_DIR}/headers -B ${WORK_DIR}/headers/build -DCMAKE_PREFIX_PATH=${prefix})
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/headers/build -j 2)
+
+# 4. no absolute include paths in the exported targets, no build path in the binary
+file(GLOB exports ${prefix}/lib*/cmake/lrchain/lrchain*Targets*.cmake)
+foreach(f ${exports})
+  file(READ ${f} text)
+  foreach(bad /usr/include ${SOURCE_DIR} ${BUILD_DIR})
+    string(FIND "${text}" "${bad}" pos)
+    if(NOT pos EQUAL -1)
+      message(FATAL_ERROR "${f} names the absolute path ${bad}")
+    endif()
+  endforeach()
+endforeach()
+file(STRINGS ${prefix}/bin/lrchain strings REGEX "${SOURCE_DIR}")
+if(strings)
+  message(FATAL_ERROR "the installed lrchain holds the source tree's path: ${strings}")
+endif()

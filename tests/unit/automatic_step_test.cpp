@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "lrchain/sim/automatic_step.hpp"
 #include "lrchain/sim/bright_run.hpp"
 
 using namespace lrchain;

@@ -11,22 +11,9 @@
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/state.hpp"
+#include "lrchain/sim/step_choice.hpp"
 
 namespace lrchain::sim {
-
-struct AutomaticStepOptions {
-  double energy_error_target = 2e-10;  // max |H(t) - H(0)| / H(0) the step aims at (5x below 1e-9)
-  double probe_time = 0;               // length of the probe run (the caller: 2 breather periods)
-};
-
-struct StepChoice {
-  double dt = 0;                        // the chosen step (sample interval / steps_per_sample)
-  std::int64_t steps_per_sample = 0;
-  double largest_linear_frequency = 0;  // max over branches and theta of omega(theta)
-  double probe_energy_error = 0;        // measured with the chosen step over the probe run
-  int probe_runs = 0;
-  double probe_seconds = 0;             // wall time of the probe runs
-};
 
 // Order of accuracy of a fixed-step symplectic stepper (symplectic 4, srkn11b/srkn14a 6, ss17 8).
 int symplectic_order(StepperKind k);

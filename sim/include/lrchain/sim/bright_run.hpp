@@ -13,11 +13,11 @@
 
 #include "lrchain/dispersion.hpp"
 #include "lrchain/params.hpp"
-#include "lrchain/sim/automatic_step.hpp"
-#include "lrchain/sim/integrator.hpp"
+#include "lrchain/sim/integrator_options.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/sim/run_control.hpp"
 #include "lrchain/sim/run_record.hpp"
+#include "lrchain/sim/step_choice.hpp"
 #include "lrchain/sim/trailing_structure.hpp"
 
 namespace lrchain::sim {

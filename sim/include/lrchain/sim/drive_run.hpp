@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/params.hpp"
-#include "lrchain/sim/integrator.hpp"
+#include "lrchain/sim/integrator_options.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/sim/run_control.hpp"
 #include "lrchain/sim/run_record.hpp"

@@ -20,6 +20,8 @@ const lrchain_lattice_kernels* shipped_lattice_kernels(std::string_view model_na
 // Names of the shipped models with compiled-in kernels.
 std::vector<std::string> shipped_lattice_models();
 
+// Not thread-safe: the const methods write scratch buffers of the object (no allocation per call);
+// give each thread its own ModelLattice (copies are cheap next to a run).
 class ModelLattice {
  public:
   // `parameters` in the model file's order (kernels.parameter_names). Throws InvalidParameter for

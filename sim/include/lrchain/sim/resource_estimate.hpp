@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "lrchain/sim/integrator.hpp"
+#include "lrchain/sim/integrator_options.hpp"
 
 namespace lrchain::sim {
 

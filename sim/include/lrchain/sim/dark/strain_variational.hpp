@@ -14,6 +14,7 @@
 
 namespace lrchain::sim::dark {
 
+// Not thread-safe: rhs() writes a scratch buffer of the object; give each thread its own orbit.
 class StrainLatticeOrbit {
  public:
   // Throws InvalidParameter for invalid params or sites < 3.

@@ -1,0 +1,53 @@
+#pragma once
+// The choices and statistics of a lattice time integration (the public part of integrator.hpp):
+// which stepper, its tolerances or step, the step and right-hand-side counts, and where a run that
+// blew up first became non-finite.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace lrchain::sim {
+
+enum class StepperKind { rkf78, dopri5, symplectic, srkn11b, srkn14a, ss17 };
+StepperKind parse_stepper(std::string_view text);  // throws InvalidParameter("stepper", ...)
+std::string_view to_string(StepperKind k);
+// The symplectic steppers (symplectic, srkn11b, srkn14a, ss17) integrate autonomous systems only.
+bool is_symplectic(StepperKind k);
+
+struct IntegratorOptions {
+  StepperKind stepper = StepperKind::rkf78;
+  double abs_tol = 1e-12;  // absolute local error tolerance (adaptive steppers)
+  double rel_tol = 1e-12;  // relative local error tolerance (adaptive steppers)
+  double dt = 0.05;        // initial step (adaptive) or fixed step (symplectic)
+  // Fixed-step steppers: the run chooses dt itself from a probe of the energy error
+  // (automatic_step.hpp) and `dt` is ignored; set where the user gave no step.
+  bool automatic_dt = false;
+};
+void validate(const IntegratorOptions& o);
+// Refuses (InvalidParameter("dt")) a first or largest step dt longer than the whole run (t_end).
+void validate_step_within_run(const IntegratorOptions& o, double run_length);
+// The fixed-step steppers take about `duration / dt` steps: refuses (InvalidParameter("dt")) a dt
+// that gives more than 1e12 steps (years of work) or a step count that overflows an integer.
+void validate_step_count(const IntegratorOptions& o, double duration);
+
+struct IntegrationStats {
+  std::size_t steps = 0;
+  std::size_t rhs_evaluations = 0;
+  double t_reached = 0;     // time of the last observation made
+  bool stopped = false;     // the observer or the step-boundary hook asked to stop (interrupt)
+  bool blew_up = false;     // the state became non-finite
+  std::size_t blow_up_index = 0;  // when blew_up: first non-finite entry of the state vector
+};
+
+// Where a blown-up integration of a displacement-form state (state.hpp) first became non-finite.
+struct BlowUp {
+  double t = 0;       // observation time at which the state was found non-finite
+  long site = 0;      // label of the first site with a non-finite entry
+  std::string field;  // "u", "v", "du/dt" or "dv/dt"
+  std::string message() const;  // "the integration blew up (non-finite state) at t = ..., ..."
+};
+// The blow-up recorded in `stats`, if any, on `sites` sites labelled first_label, first_label + 1, ...
+std::optional<BlowUp> locate_blow_up(const IntegrationStats& stats, std::size_t sites, long first_label);
+
+}  // namespace lrchain::sim
