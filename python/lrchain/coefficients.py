@@ -76,16 +76,23 @@ class Coefficients:
 
 
 def coefficients(params, branch, theta):
-    """NLS coefficients of ``branch`` ("optical" or "acoustic") at every wavenumber of ``theta``.
+    """NLS coefficients of ``branch`` at every wavenumber of ``theta``.
 
-    ``theta`` is a number or an array-like of any shape with values in (-pi, pi] (nonzero on the
-    acoustic branch); the evaluation is one C++ loop over the array. Returns :class:`Coefficients`.
-    Raises :class:`lrchain.InvalidParameterError` naming ``theta`` (and the first bad index) or
-    ``branch`` for invalid input.
+    ``params`` is a :class:`lrchain.Params` (the resonant chain; ``branch`` "optical" or
+    "acoustic") or a :class:`lrchain.Model` from :func:`lrchain.load_model` (``branch`` one of
+    ``model.branches``). ``theta`` is a number or an array-like of any shape with values in
+    (-pi, pi] (nonzero on an acoustic branch); the evaluation is one C++ loop over the array.
+    Returns :class:`Coefficients`; for a model without mean flow (``model.mean_flow`` False, e.g.
+    klein_gordon) ``lambda_`` is NaN everywhere and ``h_tilde`` equals ``h``. Raises
+    :class:`lrchain.InvalidParameterError` naming ``theta`` (and the first bad index) or ``branch``
+    for invalid input.
     """
     scalar = np.ndim(theta) == 0
     theta_array = np.asarray(theta, dtype=np.float64)
-    values = _lrchain.coefficients_array(params, branch, theta_array)
+    if isinstance(params, _lrchain.Model):
+        values = _lrchain.model_coefficients_array(params, branch, theta_array)
+    else:
+        values = _lrchain.coefficients_array(params, branch, theta_array)
     codes = values.pop("regime")
     if scalar:
         values = {k: float(v) for k, v in values.items()}
