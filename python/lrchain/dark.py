@@ -5,8 +5,9 @@ continued in the frequency omega_b, with their Floquet multipliers and direct ev
 Every function starts from ``solve``'s arguments: ``params``, ``omega_b`` (on the gap side of the
 theta = pi band edge ``edge``, "optical" or "acoustic"), ``center`` ("bond" or "site"), ``sites``
 (odd, >= 9), ``mode`` ("reversible" or "full" shooting), Newton's ``tolerance`` (max |F|) and
-``max_iterations``. Newton failing raises :class:`lrchain.NumericalFailure`; Ctrl-C during Newton
-or between branch points raises ``KeyboardInterrupt``.
+``max_iterations``. Newton failing raises :class:`lrchain.NumericalFailure`; Ctrl-C during any of
+these computations (Newton, the Floquet multipliers' monodromy matrix, continuation, evolution)
+stops it within one integration step and raises ``KeyboardInterrupt``.
 """
 
 from dataclasses import dataclass
@@ -181,7 +182,7 @@ def evolve(params=None, omega_b=2.42, edge="optical", center="bond", sites=101, 
            tolerance=1e-11, max_iterations=20, t_end=None, samples=24):
     """Solve, then integrate from Z(0) over floor(t_end / T_b) periods (default: 10 periods),
     sampling every site ``samples`` times per period for the position measure; returns
-    :class:`Evolution`. The integration itself runs to its end once started."""
+    :class:`Evolution`. Ctrl-C interrupts it with ``KeyboardInterrupt``."""
     params = Params() if params is None else params
     if t_end is None:
         t_end = 10 * 2 * np.pi / omega_b

@@ -34,6 +34,16 @@ void register_coefficients(py::module_& m) {
         py::arg("theta"),
         "NLS coefficients of one branch at every wavenumber of theta: {name: array}; regime as int8 codes "
         "(regime_names).");
+  m.def(
+      "coefficients_scalar",
+      [](const Params& p, const std::string& branch, double theta) {
+        const NlsCoefficients c = coefficients(p, parse_branch(branch), theta);
+        return py::make_tuple(c.omega, c.group_velocity, c.curvature, c.gamma, c.beta, c.h, c.lambda, c.h_tilde,
+                              c.nonresonance1, c.nonresonance2, static_cast<int>(c.regime));
+      },
+      py::arg("params"), py::arg("branch"), py::arg("theta"),
+      "The library's scalar coefficients() at one wavenumber (fields in coefficients_array order, regime code "
+      "last): the reference the batch loop is tested against.");
   py::list names;
   for (Regime r : {Regime::focusing, Regime::defocusing, Regime::degenerate, Regime::singular})
     names.append(std::string(to_string(r)));
