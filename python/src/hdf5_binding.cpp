@@ -25,7 +25,7 @@ Hdf5Element element_of(const py::array& a, const std::string& path) {
   if (t.is(py::dtype::of<std::int32_t>())) return Hdf5Element::int32;
   if (t.is(py::dtype::of<std::int8_t>())) return Hdf5Element::int8;
   if (t.is(py::dtype::of<std::complex<double>>())) return Hdf5Element::complex128;
-  throw py::type_error("to_hdf5: dataset " + path + " has dtype " + std::string(py::str(t)) +
+  throw py::type_error("to_hdf5: dataset " + path + " has dtype " + std::string(py::str(py::handle(t))) +
                        " (float64, float32, int64, int32, int8 or complex128 are written)");
 }
 
