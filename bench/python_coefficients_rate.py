@@ -4,8 +4,9 @@
 Usage: PYTHONPATH=<build>/python python3 bench/python_coefficients_rate.py [--size N] [--repeats R]
 
 Prints, per branch, the best of R calls on N random wavenumbers in (-pi, pi], as wall-clock and
-as this thread's CPU time (the CPU-time rate is the per-core rate when the machine is loaded), and
-the rate of numpy's sin+cos of theta/2 on the same array for scale.
+as this thread's CPU time (the CPU-time rate is the per-core rate when the machine is loaded), with
+new output arrays (their page faults included) and with out= reusing an earlier result's arrays,
+and the rate of numpy's sin+cos of theta/2 on the same array for scale.
 """
 
 import argparse
@@ -39,7 +40,11 @@ def main():
         lrchain.coefficients(params, branch, theta)  # warm-up: the output arrays' memory
         wall, cpu = best_rate(lambda: lrchain.coefficients(params, branch, theta), args.size, args.repeats)
         print(f"lrchain.coefficients {branch:8s}: {wall / 1e6:6.1f} M sets/s wall, {cpu / 1e6:6.1f} M sets/s CPU "
-              f"({args.size} wavenumbers, best of {args.repeats})")
+              f"({args.size} wavenumbers, best of {args.repeats}, new arrays)")
+        out = lrchain.coefficients(params, branch, theta)
+        wall, cpu = best_rate(lambda: lrchain.coefficients(params, branch, theta, out=out), args.size, args.repeats)
+        print(f"lrchain.coefficients {branch:8s}: {wall / 1e6:6.1f} M sets/s wall, {cpu / 1e6:6.1f} M sets/s CPU "
+              f"({args.size} wavenumbers, best of {args.repeats}, out= reused)")
     half = 0.5 * theta
     wall, cpu = best_rate(lambda: (np.sin(half), np.cos(half)), args.size, args.repeats)
     print(f"numpy sin + cos of theta/2 : {wall / 1e6:6.1f} M/s wall, {cpu / 1e6:6.1f} M/s CPU (for scale)")

@@ -22,7 +22,10 @@ inline constexpr int kCoefficientFieldCount = 10;  // = size of CoefficientColum
 
 class CoefficientArrays {
  public:
-  explicit CoefficientArrays(const std::vector<pybind11::ssize_t>& shape);  // with the GIL
+  // New arrays of `shape`, or those of `out` ({name: array} of an earlier result, None for new ones)
+  // after checking that each is a writable C-contiguous array of `shape` and the right dtype
+  // (InvalidParameter("out") otherwise). With the GIL.
+  CoefficientArrays(const std::vector<pybind11::ssize_t>& shape, const pybind11::object& out);
   // Writable data of each field (kCoefficientFields order) and of the regime codes.
   CoefficientColumns columns;
   // Stores c at flat index i (no GIL needed).
@@ -58,6 +61,7 @@ void validate_wavenumbers(const Thetas& theta);
 std::string wavenumber_position(const Thetas& theta, pybind11::ssize_t i);
 
 // The resonant chain's coefficients at every wavenumber of theta (coefficients_binding.cpp).
-pybind11::dict resonant_chain_coefficient_arrays(const Params& p, const std::string& branch, const Thetas& theta);
+pybind11::dict resonant_chain_coefficient_arrays(const Params& p, const std::string& branch, const Thetas& theta,
+                                                 const pybind11::object& out);
 
 }  // namespace lrchain::python

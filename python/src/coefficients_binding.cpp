@@ -12,7 +12,8 @@ namespace py = pybind11;
 namespace lrchain::python {
 
 // {name: array} with the shape of theta; "regime" holds the Regime codes (int8).
-py::dict resonant_chain_coefficient_arrays(const Params& p, const std::string& branch, const Thetas& theta) {
+py::dict resonant_chain_coefficient_arrays(const Params& p, const std::string& branch, const Thetas& theta,
+                                           const py::object& out_arrays) {
   validate(p);
   const Branch b = parse_branch(branch);
   validate_wavenumbers(theta);
@@ -21,7 +22,7 @@ py::dict resonant_chain_coefficient_arrays(const Params& p, const std::string& b
       if (theta.data()[i] == 0.0)
         throw InvalidParameter("theta", "must be nonzero on the acoustic branch (theta = 0 is the zero-frequency "
                                         "mode); valid range (-pi, 0) U (0, pi]" + wavenumber_position(theta, i));
-  CoefficientArrays out(shape_of(theta));
+  CoefficientArrays out(shape_of(theta), out_arrays);
   {
     py::gil_scoped_release release;
     evaluate_resonant_chain(p, b, theta.data(), theta.size(), out.columns);
@@ -31,7 +32,7 @@ py::dict resonant_chain_coefficient_arrays(const Params& p, const std::string& b
 
 void register_coefficients(py::module_& m) {
   m.def("coefficients_array", &resonant_chain_coefficient_arrays, py::arg("params"), py::arg("branch"),
-        py::arg("theta"),
+        py::arg("theta"), py::arg("out") = py::none(),
         "NLS coefficients of one branch at every wavenumber of theta: {name: array}; regime as int8 codes "
         "(regime_names).");
   m.def(

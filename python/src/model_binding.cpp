@@ -105,13 +105,14 @@ Params resonant_chain_params(const Model& m) {
 
 // The coefficients of every wavenumber of theta on the named branch. The shipped resonant chain
 // goes through its specialised evaluators (bit-identical to Params), as `lrchain coeffs --model` does.
-py::dict model_coefficient_arrays(const LoadedModel& loaded, const std::string& branch, const Thetas& theta) {
+py::dict model_coefficient_arrays(const LoadedModel& loaded, const std::string& branch, const Thetas& theta,
+                                  const py::object& out_arrays) {
   const Model& model = loaded.model;
   if (is_resonant_chain(model.definition()))
-    return resonant_chain_coefficient_arrays(resonant_chain_params(model), branch, theta);
+    return resonant_chain_coefficient_arrays(resonant_chain_params(model), branch, theta, out_arrays);
   const std::size_t b = model.branch(branch);
   validate_wavenumbers(theta);
-  CoefficientArrays out(shape_of(theta));
+  CoefficientArrays out(shape_of(theta), out_arrays);
   const double* t = theta.data();
   const py::ssize_t n = theta.size();
   py::ssize_t failed = -1;
@@ -186,6 +187,7 @@ replace(...) for a copy with other parameter values.)doc")
   m.def("load_model", &load_model, py::arg("source"),
         "The model of a file (or a shipped model's name) with parameters overriding its defaults.");
   m.def("model_coefficients_array", &model_coefficient_arrays, py::arg("model"), py::arg("branch"), py::arg("theta"),
+        py::arg("out") = py::none(),
         "NLS coefficients of a model's branch at every wavenumber of theta: {name: array}; regime as int8 codes.");
   py::list names;
   for (const auto& d : shipped_models()) names.append(d.name);

@@ -106,3 +106,19 @@ def test_scalar_result_types_and_repr():
     assert text.startswith("Coefficients(theta=1.5707963267948966, omega=") and "regime='focusing'" in text
     arr = lrchain.coefficients(lrchain.Params(), "acoustic", np.array([0.5, 1.0]))
     assert "shape=(2,)" in repr(arr)
+
+
+def test_out_reuses_the_arrays():
+    # out=: the arrays of an earlier result are overwritten in place with the new values, which are
+    # those of a fresh evaluation; a result of another shape is refused, naming out.
+    theta = np.linspace(0.01, np.pi, 1000)
+    first = lrchain.coefficients(lrchain.Params(), "optical", theta)
+    expected = lrchain.coefficients(lrchain.Params(rho=3.0), "acoustic", theta)
+    again = lrchain.coefficients(lrchain.Params(rho=3.0), "acoustic", theta, out=first)
+    assert again.omega is first.omega and again.regime_code is first.regime_code
+    for name in FIELDS:
+        assert np.array_equal(again[name], expected[name], equal_nan=True)
+    assert np.array_equal(again.regime, expected.regime)
+    with pytest.raises(lrchain.InvalidParameterError, match="out") as err:
+        lrchain.coefficients(lrchain.Params(), "optical", theta[:10], out=first)
+    assert err.value.parameter == "out"
