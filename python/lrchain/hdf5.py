@@ -16,8 +16,6 @@ import os
 
 import numpy as np
 
-from . import _lrchain
-
 
 def _array(values):
     a = np.ascontiguousarray(values)
@@ -47,10 +45,12 @@ def _tree(value):
 
 def write(path, result):
     """Writes ``result`` (a result object of lrchain) to the HDF5 file ``path``."""
+    from . import _hdf5  # links libhdf5: loaded on first use only
+
     tree = _tree(result)
     tree["lrchain_result"] = type(result).__name__
-    tree["lrchain_version"] = _lrchain.version
-    _lrchain.write_hdf5(os.fspath(path), tree)
+    tree["lrchain_version"] = _hdf5.version
+    _hdf5.write_hdf5(os.fspath(path), tree)
 
 
 class HDF5Mixin:

@@ -11,6 +11,5 @@ void register_model(pybind11::module_& m);         // model_binding.cpp: load_mo
 void register_regime(pybind11::module_& m);        // regime_binding.cpp: intervals, maps, curves
 void register_simulate(pybind11::module_& m);      // simulate_binding.cpp: bright, drive, modulated
 void register_dark(pybind11::module_& m);          // dark_binding.cpp: exact dark breathers
-void register_hdf5(pybind11::module_& m);          // hdf5_binding.cpp: results to HDF5 files
 
 }  // namespace lrchain::python

@@ -10,5 +10,4 @@ PYBIND11_MODULE(_lrchain, m) {
   lrchain::python::register_regime(m);
   lrchain::python::register_simulate(m);
   lrchain::python::register_dark(m);
-  lrchain::python::register_hdf5(m);
 }

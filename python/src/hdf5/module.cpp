@@ -1,9 +1,10 @@
-// lrchain's results to HDF5: a nested dict {name: dict (group) | numpy array (dataset) | number or str
-// (attribute of the enclosing group)} written by sim::Hdf5TreeFile (temporary name + rename).
+// lrchain._hdf5: lrchain's results to HDF5, a nested dict {name: dict (group) | numpy array (dataset) |
+// number or str (attribute of the enclosing group)} written by sim::Hdf5TreeFile (temporary name +
+// rename). A module of its own, imported by result.to_hdf5(): `import lrchain` does not load libhdf5.
 #include <complex>
 #include <pybind11/numpy.h>
 
-#include "bindings.hpp"
+#include <pybind11/pybind11.h>
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/hdf5_tree.hpp"
 #include "lrchain/version.hpp"
@@ -65,10 +66,12 @@ void write_hdf5(const std::string& path, const py::dict& tree) {
 
 }  // namespace
 
-void register_hdf5(py::module_& m) {
+}  // namespace lrchain::python
+
+PYBIND11_MODULE(_hdf5, m) {
+  using namespace lrchain::python;
+  m.doc() = "HDF5 writer of lrchain's results (the HDF5 C library).";
   m.def("write_hdf5", &write_hdf5, py::arg("path"), py::arg("tree"),
         "Writes {name: dict | array | number | str} as HDF5 groups, datasets and attributes.");
   m.attr("version") = LRCHAIN_VERSION_STRING;
 }
-
-}  // namespace lrchain::python
