@@ -143,3 +143,22 @@ def test_bad_sources_and_branches(tmp_path, monkeypatch):
 def test_repr():
     assert repr(lrchain.load_model("klein_gordon", w0=2)) == "Model('klein_gordon', C=0.1, w0=2, a=0.25, b=0.5)"
     assert "klein_gordon" in lrchain.SHIPPED_MODELS and "resonant_chain" in lrchain.SHIPPED_MODELS
+
+
+def test_loaded_model_equals_cli_json_to_the_last_bit(cli, source_dir):
+    # Expected: `lrchain coeffs --model FILE --set ... --json` (the same library path, printed with
+    # round-trip precision) for models other than the resonant chain.
+    for name, values, theta in [("klein_gordon", {"C": 0.3, "w0": 1.2}, 1.1), ("fput", {"a": 0.1}, -2.0),
+                                ("diatomic_chain", {"m": 3.0}, 0.7)]:
+        model = lrchain.load_model(name, **values)
+        sets = [arg for k, v in values.items() for arg in ("--set", f"{k}={v!r}")]
+        for branch in model.branches:
+            expected = cli("coeffs", "--model", source_dir / "models" / f"{name}.toml", *sets, "--branch", branch,
+                           "--theta", repr(theta), "--json")
+            got = lrchain.coefficients(model, branch, theta)
+            for field in FIELDS:
+                if expected[field] is None:
+                    assert np.isnan(got[field]), (name, branch, field)
+                else:
+                    assert got[field] == expected[field], (name, branch, field)
+            assert got.regime == expected["regime"]
