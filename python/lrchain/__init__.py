@@ -5,6 +5,7 @@ The C++ library behind the ``lrchain`` command, with numpy arrays in and out::
     import lrchain
     p = lrchain.Params(rho=1/3)                      # alpha=3/2, delta0=4/9, kappa=1 by default
     c = lrchain.coefficients(p, "optical", theta)    # theta: a number or any numpy array
+    kg = lrchain.load_model("klein_gordon", w0=1.2)  # a model file (or a shipped model's name)
 
 Submodules: :mod:`lrchain.regime` (focusing intervals, the regime maps of Figs. 2, 4, 5 and their
 boundary curves), :mod:`lrchain.simulate` (bright-breather, driven-chain and modulated-wave runs),
@@ -16,10 +17,14 @@ Ctrl-C interrupts a long computation with ``KeyboardInterrupt``.
 from .errors import InputError, InvalidParameterError, NumericalFailure
 from ._lrchain import Params
 from .coefficients import Coefficients, coefficients
+from .model import SHIPPED_MODELS, Model, load_model
 from . import dark, regime, simulate
 
 __all__ = [
     "Params",
+    "Model",
+    "load_model",
+    "SHIPPED_MODELS",
     "Coefficients",
     "coefficients",
     "regime",

@@ -5,6 +5,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from . import _lrchain
+from .errors import InvalidParameterError
 
 REGIME_NAMES = np.array(_lrchain.regime_names)
 
@@ -75,17 +76,34 @@ class Coefficients:
         return f"Coefficients(shape={np.shape(self.theta)}, {summary})"
 
 
-def coefficients(params, branch, theta):
-    """NLS coefficients of ``branch`` ("optical" or "acoustic") at every wavenumber of ``theta``.
+def coefficients(params, branch, theta, out=None):
+    """NLS coefficients of ``branch`` at every wavenumber of ``theta``.
 
-    ``theta`` is a number or an array-like of any shape with values in (-pi, pi] (nonzero on the
-    acoustic branch); the evaluation is one C++ loop over the array. Returns :class:`Coefficients`.
-    Raises :class:`lrchain.InvalidParameterError` naming ``theta`` (and the first bad index) or
-    ``branch`` for invalid input.
+    ``params`` is a :class:`lrchain.Params` (the resonant chain; ``branch`` "optical" or
+    "acoustic") or a :class:`lrchain.Model` from :func:`lrchain.load_model` (``branch`` one of
+    ``model.branches``). ``theta`` is a number or an array-like of any shape with values in
+    (-pi, pi] (nonzero on an acoustic branch); the evaluation is one C++ loop over the array.
+    Returns :class:`Coefficients`; for a model without mean flow (``model.mean_flow`` False, e.g.
+    klein_gordon) ``lambda_`` is NaN everywhere and ``h_tilde`` equals ``h``. Raises
+    :class:`lrchain.InvalidParameterError` naming ``theta`` (and the first bad index) or ``branch``
+    for invalid input.
+
+    ``out``: an earlier :class:`Coefficients` of an array of the same shape, whose arrays are
+    overwritten and returned in a new :class:`Coefficients` instead of allocating new ones (for
+    repeated large evaluations: fresh arrays cost page faults comparable to the evaluation itself).
     """
     scalar = np.ndim(theta) == 0
     theta_array = np.asarray(theta, dtype=np.float64)
-    values = _lrchain.coefficients_array(params, branch, theta_array)
+    arrays = None
+    if out is not None:
+        if scalar or not isinstance(out, Coefficients) or np.ndim(out.omega) == 0:
+            raise InvalidParameterError("out must be an earlier Coefficients of an array theta", "out")
+        arrays = {f.name.rstrip("_"): getattr(out, f.name) for f in fields(out) if f.name not in ("theta", "regime_code")}
+        arrays["regime"] = out.regime_code
+    if isinstance(params, _lrchain.Model):
+        values = _lrchain.model_coefficients_array(params, branch, theta_array, arrays)
+    else:
+        values = _lrchain.coefficients_array(params, branch, theta_array, arrays)
     codes = values.pop("regime")
     if scalar:
         values = {k: float(v) for k, v in values.items()}

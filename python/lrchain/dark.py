@@ -5,8 +5,9 @@ continued in the frequency omega_b, with their Floquet multipliers and direct ev
 Every function starts from ``solve``'s arguments: ``params``, ``omega_b`` (on the gap side of the
 theta = pi band edge ``edge``, "optical" or "acoustic"), ``center`` ("bond" or "site"), ``sites``
 (odd, >= 9), ``mode`` ("reversible" or "full" shooting), Newton's ``tolerance`` (max |F|) and
-``max_iterations``. Newton failing raises :class:`lrchain.NumericalFailure`; Ctrl-C during Newton
-or between branch points raises ``KeyboardInterrupt``.
+``max_iterations``. Newton failing raises :class:`lrchain.NumericalFailure`; Ctrl-C during any of
+these computations (Newton, the Floquet multipliers' monodromy matrix, continuation, evolution)
+stops it within one integration step and raises ``KeyboardInterrupt``.
 """
 
 from dataclasses import dataclass
@@ -15,6 +16,7 @@ import numpy as np
 
 from . import _lrchain
 from ._lrchain import Params
+from .hdf5 import HDF5Mixin, _tree
 
 
 @dataclass(frozen=True)
@@ -41,7 +43,7 @@ class Floquet:
 
 
 @dataclass(frozen=True, repr=False)
-class DarkSolution:
+class DarkSolution(HDF5Mixin):
     """A converged dark breather: profile ``x``, ``y`` = Z(0) on sites ``n`` (centred), the NLS seed
     ``x_seed``, ``y_seed``, Newton's residual history, the band-edge frequency ``omega_edge``,
     ``measures`` (norm_squared, K_x, K_y, C_x, C_y, E_b = relative error after one period,
@@ -93,11 +95,12 @@ def floquet(params=None, omega_b=2.42, edge="optical", center="bond", sites=101,
 
 
 @dataclass(frozen=True, repr=False)
-class Branch:
+class Branch(HDF5Mixin):
     """A branch of dark breathers from pseudo-arclength continuation in omega_b: per point
     ``omega_b``, profiles ``x``, ``y`` (points, sites), ``norm_squared`` and the other ``measures``
     (list of dicts), ``floquet`` (list of :class:`Floquet` or None), ``max_modulus``, ``kind``;
-    ``turning_points`` (omega_b where d omega_b/ds changes sign) and ``stop_reason``."""
+    ``turning_points`` (omega_b where d omega_b/ds changes sign) and ``stop_reason``. ``to_hdf5(path)``
+    writes the profiles, measures and Floquet spectra (multipliers as a complex (points, 4N) array)."""
 
     omega_b: np.ndarray
     tangent_omega: np.ndarray
@@ -109,6 +112,19 @@ class Branch:
     floquet: list
     turning_points: list
     stop_reason: str
+
+    def _hdf5_tree(self):
+        # Per-point measures and Floquet spectra as arrays over the branch points.
+        tree = {name: _tree(getattr(self, name)) for name in
+                ("omega_b", "tangent_omega", "residual", "iterations", "x", "y", "turning_points", "stop_reason")}
+        tree["measures"] = {k: np.array([m[k] for m in self.measures]) for k in (self.measures[0] if self.measures else {})}
+        if self.floquet and all(f is not None for f in self.floquet):
+            tree["floquet"] = {"multipliers": np.stack([f.multipliers for f in self.floquet]),
+                               "kind": _tree([f.kind for f in self.floquet])}
+            for name in ("max_modulus", "max_real", "max_period_doubling", "max_oscillatory", "near_one",
+                         "pairing_defect", "conjugation_defect", "log_det"):
+                tree["floquet"][name] = np.array([getattr(f, name) for f in self.floquet])
+        return tree
 
     @property
     def norm_squared(self):
@@ -141,7 +157,7 @@ def continue_branch(params=None, omega_b=2.42, edge="optical", center="bond", si
 
 
 @dataclass(frozen=True, repr=False)
-class Evolution:
+class Evolution(HDF5Mixin):
     """Direct integration from an exact dark breather: per period m = 1..M the time ``t`` = m T_b, the
     relative error ``E_b``, vertical centre ``C_x`` and amplitude ``K_x`` at the far site, breather
     ``position`` and ``depth``; stroboscopic strains ``x``, ``y`` (M+1, sites) at t = m T_b, m = 0..M;
@@ -166,7 +182,7 @@ def evolve(params=None, omega_b=2.42, edge="optical", center="bond", sites=101, 
            tolerance=1e-11, max_iterations=20, t_end=None, samples=24):
     """Solve, then integrate from Z(0) over floor(t_end / T_b) periods (default: 10 periods),
     sampling every site ``samples`` times per period for the position measure; returns
-    :class:`Evolution`. The integration itself runs to its end once started."""
+    :class:`Evolution`. Ctrl-C interrupts it with ``KeyboardInterrupt``."""
     params = Params() if params is None else params
     if t_end is None:
         t_end = 10 * 2 * np.pi / omega_b

@@ -20,6 +20,7 @@ import numpy as np
 
 from . import _lrchain
 from ._lrchain import Params
+from .hdf5 import HDF5Mixin
 
 
 @dataclass(frozen=True)
@@ -67,7 +68,7 @@ def _snapshots(record):
 
 
 @dataclass(frozen=True, repr=False)
-class BrightResult:
+class BrightResult(HDF5Mixin):
     """A bright-breather run (Sec. 4.1-4.3).
 
     ``t``, ``E_x``, ``E_y`` (max-norm distance of the strains from the ansatz relative to the initial
@@ -75,6 +76,7 @@ class BrightResult:
     e_n(t) (a :class:`SpaceTime` on the beads); ``snapshots``; ``x``, ``y``: the strains x_n(t),
     y_n(t) at every sample when asked for (``record_strains=True``), else None; ``summary``: the
     same numbers as the JSON of ``lrchain simulate`` (omega_b, period, max_Ex, max_Ey, ...).
+    ``to_hdf5(path)`` writes it all to an HDF5 file (:mod:`lrchain.hdf5`).
     """
 
     t: np.ndarray
@@ -124,7 +126,7 @@ def bright(params=None, branch="optical", theta=pi / 2, *, detuning=None, n0=Non
 
 
 @dataclass(frozen=True, repr=False)
-class DriveResult:
+class DriveResult(HDF5Mixin):
     """A driven-chain run (Sec. 4.3, experiment 6): ``t``, ``energy``, ``front`` (largest bead with
     e_n above a fraction of the maximum), ``participation`` and ``u0`` (the driven boundary) at every
     sample; ``energy_density`` e_n(t); ``snapshots``; ``u``, ``v`` (displacements at every sample)
@@ -168,7 +170,7 @@ def drive(params=None, *, beads=None, amplitude=None, omega0=None, ramp_rate=Non
 
 
 @dataclass(frozen=True, repr=False)
-class ModulatedResult:
+class ModulatedResult(HDF5Mixin):
     """A modulated-wave run (Sec. 5.1, experiment 7): ``t``, ``energy``, ``contrast`` of e_n,
     ``dark_centre`` and ``dark_unwrapped`` (position of the minimum of the smoothed e_n) at every
     sample; ``energy_density``; ``snapshots``; ``u``, ``v`` when asked for; ``summary``."""

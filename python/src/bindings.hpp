@@ -7,6 +7,7 @@ namespace lrchain::python {
 void register_errors(pybind11::module_& m);        // errors.cpp: C++ exceptions -> Python
 void register_params(pybind11::module_& m);        // params_binding.cpp: Params
 void register_coefficients(pybind11::module_& m);  // coefficients_binding.cpp: batch NLS coefficients
+void register_model(pybind11::module_& m);         // model_binding.cpp: load_model, Model
 void register_regime(pybind11::module_& m);        // regime_binding.cpp: intervals, maps, curves
 void register_simulate(pybind11::module_& m);      // simulate_binding.cpp: bright, drive, modulated
 void register_dark(pybind11::module_& m);          // dark_binding.cpp: exact dark breathers

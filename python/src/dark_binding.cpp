@@ -69,10 +69,14 @@ struct Solved {
   Eigen::VectorXd seed;
 };
 
-// Newton from the eq:xy_app seed (called without the GIL); stops with Interrupted on SIGINT.
+// Newton from the eq:xy_app seed (called without the GIL); stops with Interrupted on SIGINT, also
+// inside an integration (the shooting's integration options carry the stop flag, and so do the
+// Floquet and evolution runs that reuse them).
 Solved solve(const DarkJob& j, const std::atomic<bool>* stop) {
   const DarkBreatherAnsatz ansatz = make_dark_breather_ansatz(j.params, j.edge, j.omega_b);
-  DarkShooting shooting(j.params, j.sites, j.center, j.mode);
+  ContactIntegrationOptions integration;
+  integration.stop = stop;
+  DarkShooting shooting(j.params, j.sites, j.center, j.mode, integration);
   const Eigen::VectorXd seed = dark_seed(ansatz, j.center, j.sites);
   NewtonOptions o;
   o.tolerance = j.tolerance;
@@ -161,7 +165,7 @@ py::dict solve_job(const Params& p, double omega_b, const std::string& edge, con
       Eigen::VectorXd r;
       Eigen::MatrixXd J, A;
       if (full_monodromy || j.mode == ShootingMode::full) {
-        DarkShooting full(j.params, j.sites, j.center, ShootingMode::full);
+        DarkShooting full(j.params, j.sites, j.center, ShootingMode::full, s.shooting.integration());
         full.evaluate(full.unknowns_from_z(z0), j.omega_b, r, &J, &A);
         f = floquet_from_monodromy(A);
       } else {

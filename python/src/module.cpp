@@ -6,6 +6,7 @@ PYBIND11_MODULE(_lrchain, m) {
   lrchain::python::register_errors(m);
   lrchain::python::register_params(m);
   lrchain::python::register_coefficients(m);
+  lrchain::python::register_model(m);
   lrchain::python::register_regime(m);
   lrchain::python::register_simulate(m);
   lrchain::python::register_dark(m);

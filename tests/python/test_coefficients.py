@@ -52,6 +52,23 @@ def test_vectorised_equals_scalar_loop():
             assert batch.regime[index] == one.regime
 
 
+def test_vectorised_loop_equals_scalar_cpp_path_bit_for_bit():
+    # The batch loop (vectorised, the CPU's AVX-512/AVX2/baseline variant) against the library's scalar
+    # coefficients() called once per wavenumber: identical bits, including wavenumbers next to the
+    # resonances of rho = 10 where h_tilde has poles and the singular test decides.
+    rng = np.random.default_rng(11)
+    for params in (lrchain.Params(), lrchain.Params(rho=10.0), lrchain.Params(alpha=2.5, delta0=1.3, kappa=3.0, rho=0.05)):
+        theta = np.concatenate([rng.uniform(-np.pi, np.pi, 3000), np.linspace(1e-3, np.pi, 3001)])
+        for branch in ("optical", "acoustic"):
+            batch = lrchain.coefficients(params, branch, theta)
+            columns = [batch[name] for name in FIELDS]
+            for i, t in enumerate(theta):
+                one = lrchain._lrchain.coefficients_scalar(params, branch, float(t))
+                got = tuple(float(column[i]) for column in columns)
+                assert np.array_equal(np.array(got).view(np.int64), np.array(one[:-1]).view(np.int64)), (params, branch, t)
+                assert batch.regime_code[i] == one[-1]
+
+
 def test_paper_values_at_theta_pi_over_2():
     # Sec. 4.2 (exp1): optical branch at theta = pi/2 with the paper's parameters has T_b = 2.8885,
     # i.e. omega close to 2.1752 (the breather frequency differs by the 1e-4 detuning only), and
@@ -89,3 +106,19 @@ def test_scalar_result_types_and_repr():
     assert text.startswith("Coefficients(theta=1.5707963267948966, omega=") and "regime='focusing'" in text
     arr = lrchain.coefficients(lrchain.Params(), "acoustic", np.array([0.5, 1.0]))
     assert "shape=(2,)" in repr(arr)
+
+
+def test_out_reuses_the_arrays():
+    # out=: the arrays of an earlier result are overwritten in place with the new values, which are
+    # those of a fresh evaluation; a result of another shape is refused, naming out.
+    theta = np.linspace(0.01, np.pi, 1000)
+    first = lrchain.coefficients(lrchain.Params(), "optical", theta)
+    expected = lrchain.coefficients(lrchain.Params(rho=3.0), "acoustic", theta)
+    again = lrchain.coefficients(lrchain.Params(rho=3.0), "acoustic", theta, out=first)
+    assert again.omega is first.omega and again.regime_code is first.regime_code
+    for name in FIELDS:
+        assert np.array_equal(again[name], expected[name], equal_nan=True)
+    assert np.array_equal(again.regime, expected.regime)
+    with pytest.raises(lrchain.InvalidParameterError, match="out") as err:
+        lrchain.coefficients(lrchain.Params(), "optical", theta[:10], out=first)
+    assert err.value.parameter == "out"

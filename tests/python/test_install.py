@@ -20,6 +20,10 @@ def test_installed_package_imports(tmp_path):
     assert done.returncode == 0, done.stderr
     package = tmp_path / site / "lrchain"
     assert (package / "__init__.py").is_file()
+    # The run-time model compiler's module is installed next to the main one when the build has it.
+    built = sorted(p.name for p in (build / "python" / "lrchain").glob("_*.so"))
+    assert sorted(p.name for p in package.glob("_*.so")) == built
+    assert (package / "model.py").is_file() and (package / "hdf5.py").is_file()
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     env["PYTHONPATH"] = str(tmp_path / site)
     code = ("import lrchain; c = lrchain.coefficients(lrchain.Params(rho=1/3), 'optical', 1.5707963267948966); "

@@ -59,3 +59,16 @@ def test_custom_python_handler_is_called():
         timer.join()
     finally:
         signal.signal(signal.SIGINT, previous)
+
+
+def test_floquet_interrupted():
+    # The Floquet multipliers of an 801-site dark breather from the monodromy matrix over a full
+    # period (3204 tangent columns): minutes of work. The loose Newton tolerance accepts the seed, so
+    # the SIGINT at 1 s lands in the monodromy integration, which checks the stop flag every step.
+    start = time.monotonic()
+    timer = interrupt_after(1.0)
+    with pytest.raises(KeyboardInterrupt):
+        lrchain.dark.floquet(lrchain.Params(), omega_b=2.42, sites=801, tolerance=0.5, full_monodromy=True)
+    timer.join()
+    assert time.monotonic() - start < 60
+    assert lrchain.dark.solve(lrchain.Params(), omega_b=2.42, sites=41).newton_residuals[-1] <= 1e-11

@@ -4,6 +4,7 @@
 #include <boost/math/tools/roots.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 #include <cmath>
+#include <csignal>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -156,6 +157,7 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
   double target = continued ? target_ : -1.0;
   double contact_step = continued ? contact_step_ : options_.contact_step;
   while (t < t1) {
+    if (options_.stop && options_.stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
     const double remaining = t1 - t;
     double step = std::min(h, cap);
     bool landing = false;

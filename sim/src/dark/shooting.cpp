@@ -96,7 +96,7 @@ void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::Vec
   auto advance = [&](double ta, double tb) {
     record.clear();
     integrator.integrate(state, ta, tb, jac ? &record : nullptr);
-    if (jac) propagate_tangents(orbit, record, phi);
+    if (jac) propagate_tangents(orbit, record, phi, 8, integration_.stop);
   };
   std::vector<double> rhs(static_cast<std::size_t>(n4));
 

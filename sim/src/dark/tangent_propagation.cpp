@@ -1,14 +1,17 @@
 #include "lrchain/sim/dark/tangent_propagation.hpp"
 
 #include <algorithm>
+#include <csignal>
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 #include <stdexcept>
 #include <vector>
 
+#include "lrchain/errors.hpp"
+
 namespace lrchain::sim::dark {
 
 void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& record,
-                        Eigen::MatrixXd& phi, int block) {
+                        Eigen::MatrixXd& phi, int block, const std::atomic<bool>* stop) {
   using State = std::vector<double>;
   const int N = orbit.sites();
   const Eigen::Index rows = 4 * N;
@@ -19,6 +22,7 @@ void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& reco
   const double kappa = orbit.params().kappa;
   const double kor = orbit.params().kappa / orbit.params().rho;
   bool stage_mismatch = false;
+  std::atomic<bool> interrupted{false};
 
 #pragma omp parallel
   {
@@ -40,6 +44,10 @@ void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& reco
         tangent_block_rhs(N, b, kappa, kor, g, x.data(), dx.data());
       };
       for (step = 0; step < record.steps(); ++step) {
+        if (stop && stop->load(std::memory_order_relaxed)) {
+          interrupted = true;
+          break;
+        }
         call = 0;
         stepper.do_step(sys, s, record.t[step], record.dt[step]);
         if (call != OrbitRecord::stages) stage_mismatch = true;
@@ -48,6 +56,7 @@ void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& reco
         for (Eigen::Index r = 0; r < rows; ++r) phi(r, c0 + j) = s[static_cast<std::size_t>(r * b + j)];
     }
   }
+  if (interrupted) throw Interrupted(SIGINT, "interrupted by SIGINT");
   if (stage_mismatch) throw std::logic_error("propagate_tangents: stage count mismatch in replay");
 }
 

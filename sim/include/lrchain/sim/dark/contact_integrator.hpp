@@ -12,6 +12,7 @@
 // Optionally records, for every accepted step, (t, dt) and V''(x) at each of the 13 stages, so
 // that the variational equations can be integrated afterwards with exactly the same steps
 // (tangent_propagation.hpp): the Jacobian is then the exact derivative of the discrete flow.
+#include <atomic>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -30,6 +31,8 @@ struct ContactIntegrationOptions {
   double grading = 3.0;        // growth factor of steps away from a contact change
   double group_window = 1e-7;  // contact changes closer than this are crossed in one step
   bool locate_contacts = true; // false: plain adaptive stepping across kinks (for comparison)
+  // Set (SIGINT from Python): integrate() and propagate_tangents() throw Interrupted at their next step.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct ContactIntegrationStats {

@@ -1,0 +1,61 @@
+"""Results to HDF5 files (read them with h5py): ``result.to_hdf5(path)`` on every result object.
+
+The layout follows the result's fields: a numpy array is a dataset, a nested result (e.g. a
+:class:`lrchain.simulate.SpaceTime`, :class:`lrchain.dark.Floquet`) or a dict is a group, and numbers
+and strings are attributes of the enclosing group. Lists of results become groups "0", "1", ...;
+lists of numbers become datasets, lists of strings a JSON attribute. Complex arrays (Floquet
+multipliers) are stored as h5py's complex compound. The root's attributes ``lrchain_result`` (the
+result's class) and ``lrchain_version`` say what wrote the file. The file is written under a
+temporary name and renamed into place.
+"""
+
+import dataclasses
+import json
+import numbers
+import os
+
+import numpy as np
+
+
+def _array(values):
+    a = np.ascontiguousarray(values)
+    return a.astype(np.int8) if a.dtype == np.bool_ else a
+
+
+def _tree(value):
+    """The dict/array/scalar tree of a result value (see the module's docstring)."""
+    if hasattr(value, "_hdf5_tree"):
+        return value._hdf5_tree()
+    if dataclasses.is_dataclass(value):
+        return {f.name: _tree(getattr(value, f.name)) for f in dataclasses.fields(value)}
+    if isinstance(value, dict):
+        return {str(k): _tree(v) for k, v in value.items()}
+    if isinstance(value, np.ndarray):
+        return _array(value)
+    if isinstance(value, (list, tuple)):
+        if all(isinstance(v, numbers.Number) and not isinstance(v, bool) for v in value) and value:
+            return _array(value)
+        if all(isinstance(v, str) for v in value):
+            return json.dumps(list(value))
+        return {str(i): _tree(v) for i, v in enumerate(value)}
+    if isinstance(value, (np.generic,)):
+        return value.item()
+    return value
+
+
+def write(path, result):
+    """Writes ``result`` (a result object of lrchain) to the HDF5 file ``path``."""
+    from . import _hdf5  # links libhdf5: loaded on first use only
+
+    tree = _tree(result)
+    tree["lrchain_result"] = type(result).__name__
+    tree["lrchain_version"] = _hdf5.version
+    _hdf5.write_hdf5(os.fspath(path), tree)
+
+
+class HDF5Mixin:
+    """Adds ``to_hdf5(path)`` to a result class."""
+
+    def to_hdf5(self, path):
+        """Writes this result to the HDF5 file ``path`` (layout: :mod:`lrchain.hdf5`)."""
+        write(path, self)

@@ -1,0 +1,197 @@
+// lrchain.load_model and lrchain.Model: a lattice model file (docs/models.md) with parameter values,
+// and the batch NLS coefficients of its branches. A shipped model is found by name or by the bytes
+// of its file; any other file is derived and compiled at run time by the model compiler (as
+// `lrchain coeffs --model FILE` does), cached per user.
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "coefficient_arrays.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/model.hpp"
+#include "model_capsule.hpp"
+
+namespace py = pybind11;
+namespace fs = std::filesystem;
+
+namespace lrchain::python {
+
+namespace {
+
+// A model with its parameter values and the definition it was made from (for replace()).
+struct LoadedModel {
+  std::shared_ptr<const ModelDefinition> definition;
+  Model model;
+};
+
+// Shipped definitions live for the whole program: shared without owning.
+std::shared_ptr<const ModelDefinition> shipped(const ModelDefinition* d) {
+  return std::shared_ptr<const ModelDefinition>(std::shared_ptr<const ModelDefinition>(), d);
+}
+
+std::string shipped_names() {
+  std::string names;
+  for (const auto& m : shipped_models()) names += (names.empty() ? "" : ", ") + m.name;
+  return names;
+}
+
+// The shipped definition of `source`: a shipped model's name or a file whose bytes are a shipped
+// model file's; nullptr for any other readable file (called without the GIL).
+std::shared_ptr<const ModelDefinition> find_shipped_definition(const std::string& source) {
+  const fs::path path(source);
+  const bool bare_name = !source.empty() && !path.has_parent_path() && !path.has_extension();
+  if (bare_name && !fs::exists(path)) {
+    if (const ModelDefinition* d = find_shipped_model(source)) return shipped(d);
+    throw InputError("load_model: no shipped model '" + source + "' (shipped: " + shipped_names() +
+                     ") and no such file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in || fs::is_directory(path)) throw InputError("load_model: " + source + ": cannot read the model file");
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  const std::uint64_t hash = fnv1a_64(bytes.str());
+  for (const auto& m : shipped_models())
+    if (m.file_hash == hash) return shipped(&m);
+  return nullptr;
+}
+
+// A user's model file derived and compiled at run time by lrchain._model_compiler (with the GIL;
+// the compiler releases it).
+std::shared_ptr<const ModelDefinition> compile_user_model(const std::string& source) {
+#ifdef LRCHAIN_WITH_MODEL_COMPILER
+  const py::object capsule = py::module_::import("lrchain._model_compiler").attr("compile")(source);
+  return *static_cast<ModelDefinitionHandle*>(PyCapsule_GetPointer(capsule.ptr(), kModelCapsuleName));
+#else
+  throw InputError("load_model: " + source + ": not a shipped model file, and this build has no model compiler "
+                   "(configure with LRCHAIN_BUILD_DERIVATION=ON)");
+#endif
+}
+
+std::vector<std::pair<std::string, double>> parameter_values(const py::kwargs& parameters) {
+  std::vector<std::pair<std::string, double>> values;
+  for (auto [key, value] : parameters) {
+    const std::string name = py::str(key);
+    if (!py::isinstance<py::float_>(value) && !py::isinstance<py::int_>(value) &&
+        !py::hasattr(value, "__float__"))
+      throw InvalidParameter(name, "must be a number");
+    values.emplace_back(name, value.cast<double>());
+  }
+  return values;
+}
+
+LoadedModel load_model(const std::string& source, const py::kwargs& parameters) {
+  const auto values = parameter_values(parameters);
+  std::shared_ptr<const ModelDefinition> definition;
+  {
+    py::gil_scoped_release release;
+    definition = find_shipped_definition(source);
+  }
+  if (!definition) definition = compile_user_model(source);
+  return LoadedModel{definition, Model(definition, values)};
+}
+
+bool is_resonant_chain(const ModelDefinition& d) {
+  const ModelDefinition* shipped = find_shipped_model("resonant_chain");
+  return shipped && d.file_hash == shipped->file_hash;
+}
+
+Params resonant_chain_params(const Model& m) {
+  return Params{m.parameter("alpha"), m.parameter("delta0"), m.parameter("kappa"), m.parameter("rho")};
+}
+
+// The coefficients of every wavenumber of theta on the named branch. The shipped resonant chain
+// goes through its specialised evaluators (bit-identical to Params), as `lrchain coeffs --model` does.
+py::dict model_coefficient_arrays(const LoadedModel& loaded, const std::string& branch, const Thetas& theta,
+                                  const py::object& out_arrays) {
+  const Model& model = loaded.model;
+  if (is_resonant_chain(model.definition()))
+    return resonant_chain_coefficient_arrays(resonant_chain_params(model), branch, theta, out_arrays);
+  const std::size_t b = model.branch(branch);
+  validate_wavenumbers(theta);
+  CoefficientArrays out(shape_of(theta), out_arrays);
+  const double* t = theta.data();
+  const py::ssize_t n = theta.size();
+  py::ssize_t failed = -1;
+  std::string failure;
+  {
+    py::gil_scoped_release release;
+    for (py::ssize_t i = 0; i < n && failed < 0; ++i) {
+      try {
+        out.store(i, coefficients(model, b, t[i]));
+      } catch (const InvalidParameter& e) {
+        failed = i;
+        failure = e.what();
+      }
+    }
+  }
+  if (failed >= 0) throw InvalidParameter("theta", failure.substr(failure.find(": ") + 2) + wavenumber_position(theta, failed));
+  return out.to_dict();
+}
+
+py::dict parameter_dict(const Model& m) {
+  py::dict d;
+  const auto& parameters = m.definition().parameters;
+  for (std::size_t i = 0; i < parameters.size(); ++i) d[py::str(parameters[i].name)] = m.inputs()[i];
+  return d;
+}
+
+}  // namespace
+
+void register_model(py::module_& m) {
+  py::class_<LoadedModel>(m, "Model", R"doc(
+A lattice model (a model file, docs/models.md) with parameter values; made by lrchain.load_model.
+name, description, parameters ({name: value}), ranges ({name: range text}), branches (names in
+increasing frequency), mean_flow (False for on-site models: no lambda), file_hash. Immutable; use
+replace(...) for a copy with other parameter values.)doc")
+      .def_property_readonly("name", [](const LoadedModel& l) { return l.model.name(); })
+      .def_property_readonly("description", [](const LoadedModel& l) { return l.definition->description; })
+      .def_property_readonly("file_hash", [](const LoadedModel& l) { return model_hash_text(l.model.file_hash()); },
+                             "FNV-1a 64 of the model file's bytes, as 0x + 16 hex digits")
+      .def_property_readonly("parameters", [](const LoadedModel& l) { return parameter_dict(l.model); })
+      .def_property_readonly("ranges",
+                             [](const LoadedModel& l) {
+                               py::dict d;
+                               for (const auto& q : l.definition->parameters) d[py::str(q.name)] = q.range_text;
+                               return d;
+                             })
+      .def_property_readonly("branches", [](const LoadedModel& l) { return py::tuple(py::cast(l.definition->branch_names)); })
+      .def_property_readonly("mean_flow", [](const LoadedModel& l) { return l.definition->mean_flow; })
+      .def_property_readonly(
+          "params",
+          [](const LoadedModel& l) -> py::object {
+            if (!is_resonant_chain(*l.definition)) return py::none();
+            return py::cast(resonant_chain_params(l.model));
+          },
+          "lrchain.Params of the resonant chain (for lrchain.simulate and lrchain.dark), None for other models")
+      .def(
+          "replace",
+          [](const LoadedModel& l, const py::kwargs& changes) {
+            auto values = parameter_values(changes);
+            const auto& parameters = l.definition->parameters;
+            std::vector<std::pair<std::string, double>> all;
+            for (std::size_t i = 0; i < parameters.size(); ++i) all.emplace_back(parameters[i].name, l.model.inputs()[i]);
+            for (auto& v : values) all.push_back(std::move(v));
+            return LoadedModel{l.definition, Model(l.definition, all)};
+          },
+          "A copy with the given parameters changed, e.g. m.replace(w0=2).")
+      .def("__repr__", [](const LoadedModel& l) {
+        std::string text;
+        for (auto [name, value] : parameter_dict(l.model))
+          text += fmt::format(", {}={}", std::string(py::str(name)), value.cast<double>());
+        return fmt::format("Model('{}'{})", l.model.name(), text);
+      });
+  m.def("load_model", &load_model, py::arg("source"),
+        "The model of a file (or a shipped model's name) with parameters overriding its defaults.");
+  m.def("model_coefficients_array", &model_coefficient_arrays, py::arg("model"), py::arg("branch"), py::arg("theta"),
+        py::arg("out") = py::none(),
+        "NLS coefficients of a model's branch at every wavenumber of theta: {name: array}; regime as int8 codes.");
+  py::list names;
+  for (const auto& d : shipped_models()) names.append(d.name);
+  m.attr("shipped_models") = py::tuple(names);
+}
+
+}  // namespace lrchain::python

@@ -1,0 +1,40 @@
+// lrchain._model_compiler: the run-time model compiler (derivation with GiNaC, the C++ compiler,
+// the per-user cache) as its own extension module, so that `import lrchain` does not load GiNaC;
+// lrchain.load_model imports it for a model file that is not a shipped one.
+#include <pybind11/pybind11.h>
+
+#include "../model_capsule.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/model_compiler.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+// The compiled definition of the model file at `path` as a capsule (model_capsule.hpp). A bad model
+// file raises lrchain.InputError (a ValueError); a missing or failing compiler RuntimeError.
+py::capsule compile(const std::string& path) {
+  lrchain::python::ModelDefinitionHandle definition;
+  try {
+    py::gil_scoped_release release;  // deriving and compiling takes seconds
+    definition = lrchain::compile_model_file(path);
+  } catch (const lrchain::InputError& e) {
+    const py::object input_error = py::module_::import("lrchain.errors").attr("InputError");
+    PyErr_SetString(input_error.ptr(), e.what());
+    throw py::error_already_set();
+  }
+  return py::capsule(new lrchain::python::ModelDefinitionHandle(std::move(definition)),
+                     lrchain::python::kModelCapsuleName, [](PyObject* capsule) {
+                       delete static_cast<lrchain::python::ModelDefinitionHandle*>(
+                           PyCapsule_GetPointer(capsule, lrchain::python::kModelCapsuleName));
+                     });
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_model_compiler, m) {
+  m.doc() = "Run-time compiler of lattice model files for lrchain.load_model (GiNaC, the C++ compiler).";
+  m.def("compile", &compile, py::arg("path"),
+        "The model file at path derived, compiled into the per-user cache and loaded: a capsule for lrchain.");
+  m.attr("compiler") = lrchain::model_compiler_path();
+}
