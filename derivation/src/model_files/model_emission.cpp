@@ -45,7 +45,14 @@ ex on_dispersion_relation(const ex& e, const ex& dispersion_W, const symbol& W, 
     if (!x.has(s.omega)) return x;
     ex even = 0, odd = 0;
     for (int k = 0; k <= x.degree(s.omega); ++k) (k % 2 ? odd : even) += x.coeff(s.omega, k) * pow(W, k / 2);
-    const ex reduced = normal(rem(expand(even), dispersion_W, W)) + s.omega * normal(rem(expand(odd), dispersion_W, W));
+    // The remainder by pseudo-division (the leading coefficient of det M is not a number in general).
+    const auto remainder = [&](const ex& a) -> ex {
+      const ex e = expand(a);
+      const int excess = e.degree(W) - dispersion_W.degree(W);
+      if (excess < 0) return e;
+      return normal(prem(e, dispersion_W, W) / pow(dispersion_W.lcoeff(W), excess + 1));
+    };
+    const ex reduced = remainder(even) + s.omega * remainder(odd);
     return reduced.subs(W == pow(s.omega, 2));
   };
   return reduce(nd.op(0)) / reduce(nd.op(1));

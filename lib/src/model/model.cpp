@@ -138,9 +138,12 @@ bool omega_squared_roots(const double* c, int degree, double* roots) {
   return true;
 }
 
-// Roots of det M in omega^2, the branch's omega, the emitted NLS evaluator, the singular test.
-bool coefficients_at(const ModelDefinition& d, const double* q, std::size_t branch, double theta,
-                     NlsCoefficients& c) noexcept {
+namespace {
+
+// Roots of det M in omega^2, the branch's omega, the emitted NLS evaluator, the singular test
+// (inlined into both entry points: this is the hot path of every map and scan).
+[[gnu::always_inline]] inline bool evaluate_coefficients(const ModelDefinition& d, const double* q, std::size_t branch,
+                                                         double theta, NlsCoefficients& c) noexcept {
   const double sh = std::sin(0.5 * theta), ch = std::cos(0.5 * theta);
   const double D1 = 4.0 * sh * sh;  // no cancellation near theta = 0
   const double sigma = 2.0 * sh * ch;
@@ -176,13 +179,20 @@ bool coefficients_at(const ModelDefinition& d, const double* q, std::size_t bran
   return true;
 }
 
+}  // namespace
+
+bool coefficients_at(const ModelDefinition& d, const double* q, std::size_t branch, double theta,
+                     NlsCoefficients& c) noexcept {
+  return evaluate_coefficients(d, q, branch, theta, c);
+}
+
 NlsCoefficients coefficients(const Model& model, std::size_t branch, double theta) {
   const ModelDefinition& d = model.definition();
   if (!(std::isfinite(theta) && theta > -std::numbers::pi && theta <= std::numbers::pi))
     throw InvalidParameter("theta", "must be a wavenumber in (-pi, pi]");
   if (branch >= d.branch_names.size()) throw InvalidParameter("branch", "index out of range for model " + d.name);
   NlsCoefficients c;
-  if (coefficients_at(d, model.inputs().data(), branch, theta, c)) return c;
+  if (evaluate_coefficients(d, model.inputs().data(), branch, theta, c)) [[likely]] return c;
   double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
   const double sh = std::sin(0.5 * theta), ch = std::cos(0.5 * theta);
   d.evaluators.evaluate_dispersion(4.0 * sh * sh, 2.0 * sh * ch, model.inputs().data(), w);
