@@ -26,38 +26,6 @@ ex real_form(const ex& e, const Symbols& s) {
   return reduced(numerator.real_part()) / reduced(denominator.real_part());
 }
 
-// det M = 0 as a real polynomial in W = omega^2.
-ex dispersion_in_omega_squared(const ModelDerivation& m, const Symbols& s, const symbol& W) {
-  const ex polynomial = expand(numer(normal(m.coefficients.dispersion)));
-  ex in_W = 0;
-  for (int k = 0; k <= polynomial.degree(s.omega); k += 2) in_W += real_form(polynomial.coeff(s.omega, k), s) * pow(W, k / 2);
-  return expand(in_W);
-}
-
-// e on the dispersion relation: numerator and denominator, polynomials in omega, reduced modulo
-// det M = 0 to A + omega B with A, B of degree < deg det M in omega^2. Equal to e wherever omega is
-// a root; without the high powers of omega whose terms cancel there (the diatomic chain's h had
-// omega^12 and lost 8 digits to that cancellation in double precision).
-ex on_dispersion_relation(const ex& e, const ex& dispersion_W, const symbol& W, const Symbols& s) {
-  const ex nd = normal(e).numer_denom();
-  const auto reduce = [&](const ex& p) {
-    const ex x = expand(p);
-    if (!x.has(s.omega)) return x;
-    ex even = 0, odd = 0;
-    for (int k = 0; k <= x.degree(s.omega); ++k) (k % 2 ? odd : even) += x.coeff(s.omega, k) * pow(W, k / 2);
-    // The remainder by pseudo-division (the leading coefficient of det M is not a number in general).
-    const auto remainder = [&](const ex& a) -> ex {
-      const ex e = expand(a);
-      const int excess = e.degree(W) - dispersion_W.degree(W);
-      if (excess < 0) return e;
-      return normal(prem(e, dispersion_W, W) / pow(dispersion_W.lcoeff(W), excess + 1));
-    };
-    const ex reduced = remainder(even) + s.omega * remainder(odd);
-    return reduced.subs(W == pow(s.omega, 2));
-  };
-  return reduce(nd.op(0)) / reduce(nd.op(1));
-}
-
 // q[i] for every parameter, then every named intermediate (the order of LatticeModel::parameters).
 std::vector<std::pair<ex, std::string>> q_inputs(const ModelDerivation& m) {
   std::vector<std::pair<ex, std::string>> inputs;
@@ -134,12 +102,7 @@ EmittedFunction nls_function(const ModelDerivation& m, const Symbols& s) {
       {"out[11]", c.nonresonance1},
       {"out[12]", c.nonresonance2},
   };
-  const symbol W("W");
-  const ex dispersion_W = dispersion_in_omega_squared(m, s, W);
-  for (auto& [name, e] : f.outputs) {
-    e = real_form(e, s);
-    if (name != "out[10]" && name != "out[11]" && name != "out[12]") e = on_dispersion_relation(e, dispersion_W, W, s);
-  }
+  for (auto& [name, e] : f.outputs) e = real_form(e, s);
   f.term_scales = {"out[11]", "out[12]"};
   f.prologue = "  (void)sigma;\n  (void)q;\n";
   return f;
