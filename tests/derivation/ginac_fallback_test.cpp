@@ -1,8 +1,9 @@
 // The GiNaC double-precision fallback of a user model (no C++ compiler): found through the real
 // detection path ($LRCHAIN_MODEL_CXX naming a program that does not exist) and checked against the
-// compiled evaluators of the same file to 1e-12 relative.
+// compiled evaluators of the same file (1e-12 relative where those are accurate to that).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -24,6 +25,17 @@ struct ScopedEnvironment {
   ~ScopedEnvironment() { ::unsetenv(name.c_str()); }
 };
 
+// The agreement required: 1e-12 where the compiled evaluators are accurate to that (klein_gordon,
+// 6e-15 measured); elsewhere both paths are double evaluations of the same ill-conditioned
+// expressions in different forms, so they can differ by the compiled path's own error against
+// 50 digits (model_evaluators_vs_50digit_test.cpp: diatomic_chain 1.5e-5, resonant_chain_polynomial
+// 1.2e-9; measured here 2.0e-5 and 1.7e-12).
+double agreement_bound(const std::string& model) {
+  if (model == "diatomic_chain") return 1e-4;
+  if (model == "resonant_chain_polynomial") return 1e-8;
+  return 1e-12;
+}
+
 double relative(double a, double b) {
   if (std::isnan(a) && std::isnan(b)) return 0;
   return std::abs(a - b) / std::max({std::abs(a), std::abs(b), 1e-300});
@@ -35,9 +47,9 @@ TEST_CASE("without a C++ compiler a model file is evaluated through GiNaC and ag
   const fs::path cache = fs::temp_directory_path() / "lrchain-ginac-fallback-test";
   fs::remove_all(cache);
   ScopedEnvironment xdg("XDG_CACHE_HOME", cache.string());
-  for (const char* name : {"diatomic_chain", "klein_gordon", "resonant_chain_polynomial"}) {
+  for (const std::string name : {"diatomic_chain", "klein_gordon", "resonant_chain_polynomial"}) {
     INFO(name);
-    const fs::path file = fs::path(LRCHAIN_SOURCE_DIR) / "models" / (std::string(name) + ".toml");
+    const fs::path file = fs::path(LRCHAIN_SOURCE_DIR) / "models" / (name + ".toml");
     CompiledModelInfo compiled_info, fallback_info;
     const auto compiled = compile_model_file(file, &compiled_info);
     REQUIRE(compiled_info.fallback_reason.empty());
@@ -48,7 +60,7 @@ TEST_CASE("without a C++ compiler a model file is evaluated through GiNaC and ag
       fallback = compile_model_file(file, &fallback_info);
     }
     CHECK(fallback_info.fallback_reason.find("/nonexistent/lrchain-no-such-compiler") != std::string::npos);
-    CHECK(fallback->evaluators.nls == nullptr);
+    CHECK(!fallback->evaluators.nls);
     REQUIRE(fallback->evaluators.object != nullptr);
     CHECK(fallback->name == compiled->name);
     CHECK(fallback->branch_names == compiled->branch_names);
@@ -73,7 +85,7 @@ TEST_CASE("without a C++ compiler a model file is evaluated through GiNaC and ag
       }
     MESSAGE(name << ": GiNaC double fallback vs compiled, " << points << " points, largest relative difference "
                  << worst);
-    CHECK(worst <= 1e-12);
+    CHECK(worst <= agreement_bound(name));
   }
   fs::remove_all(cache);
 }
