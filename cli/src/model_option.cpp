@@ -1,6 +1,7 @@
 #include "model_option.hpp"
 
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "lrchain/errors.hpp"
@@ -55,7 +56,14 @@ Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, 
     for (const auto& m : shipped_models())
       if (m.file_hash == hash) definition = shipped(&m);
 #ifdef LRCHAIN_WITH_MODEL_COMPILER
-    if (!definition) definition = compile_model_file(selection.file);
+    if (!definition) {
+      CompiledModelInfo info;
+      definition = compile_model_file(selection.file, &info);
+      if (!info.fallback_reason.empty())
+        std::cerr << "lrchain: warning: model " << definition->name << " is evaluated through GiNaC in double "
+                  << "precision, far slower than compiled code, because " << info.fallback_reason
+                  << "; install it (Debian: apt install g++) to compile the model once into the cache\n";
+    }
 #else
     if (!definition)
       throw InputError("--model " + selection.file +

@@ -21,10 +21,12 @@
 #include "lrchain/regime/frequency_band.hpp"
 #include "lrchain/regime/paper_thresholds.hpp"
 #include "lrchain/regime/regime_events.hpp"
+#include "lrchain/regime/model_regime.hpp"
 #include "lrchain/regime/regime_map.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/output_lock.hpp"
+#include "model_option.hpp"
 #include "options.hpp"
 
 namespace lrchain::cli {
@@ -132,24 +134,48 @@ const char* kPalette =
 
 struct IntervalsArgs {
   Params p;
-  std::string branch = "optical";
+  ModelSelection model;
+  std::string branch;  // empty: optical (or a model's only branch)
   int samples = 2048;
   bool json_flag = false;
 };
 
-void run_intervals(const IntervalsArgs& a) {
-  const Branch b = parse_branch(a.branch);
-  validate(a.p);
-  const auto s = regime_structure(regime_functions(a.p, b), {a.samples, 1e-12});
+// The resonant chain's parameters of a loaded resonant_chain model.
+Params resonant_params(const Model& m) {
+  return Params{m.parameter("alpha"), m.parameter("delta0"), m.parameter("kappa"), m.parameter("rho")};
+}
+
+// A branch of a model by name; empty: "optical" if the model has it, else its only branch.
+std::size_t model_branch(const Model& m, const std::string& name) {
+  if (!name.empty()) return m.branch(name);
+  const auto& names = m.definition().branch_names;
+  if (names.size() == 1) return 0;
+  return m.branch("optical");
+}
+
+void run_intervals(const IntervalsArgs& a, const CLI::App& cmd) {
+  if (a.model.file.empty()) validate(a.p);  // the resonant chain's own messages
+  const Model model = load_selected_model(a.model, cmd, a.p);
+  RegimeStructure s;
+  json out;
+  if (a.model.file.empty()) {  // the resonant chain's specialised evaluators (default)
+    const Params p = resonant_params(model);
+    const Branch b = parse_branch(a.branch.empty() ? "optical" : a.branch);
+    s = regime_structure(regime_functions(p, b), {a.samples, 1e-12});
+    out = {{"branch", std::string(to_string(b))}, {"params", params_json(p)}};
+  } else {
+    const std::size_t b = model_branch(model, a.branch);
+    s = regime_structure(regime_functions(model, b), {a.samples, 1e-12});
+    out = {{"branch", model.definition().branch_names[b]}};
+  }
   json intervals = json::array(), roots = json::array();
   for (const auto& i : s.intervals) intervals.push_back(interval_json(i));
   for (const auto& r : s.roots)
     roots.push_back({{"theta", r.theta}, {"cause", std::string(to_string(r.cause))}});
-  json out = {{"branch", std::string(to_string(b))},
-              {"params", params_json(a.p)},
-              {"intervals", intervals},
-              {"boundaries", roots},
-              {"theta_tolerance", 1e-12}};
+  out["model"] = model_json(model);
+  out["intervals"] = intervals;
+  out["boundaries"] = roots;
+  out["theta_tolerance"] = 1e-12;
   out["provenance"] = provenance_json();
   std::cout << out.dump(2) << '\n';
 }
@@ -158,6 +184,9 @@ void run_intervals(const IntervalsArgs& a) {
 
 struct MapArgs {
   Params p;
+  ModelSelection model;
+  std::string axis;                    // --model: the parameter on x (default rho / the first)
+  std::vector<std::string> axis_range;  // --model: lo hi
   std::string plane = "theta-rho";
   std::string branch = "both";
   std::string out;
@@ -410,6 +439,130 @@ json map_delta0_omega(const MapArgs& a, const fs::path& dir, sim::Figures& figur
   return out;
 }
 
+// ---- regime map of a model file (--model) ---------------------------------------------------
+
+// The axis, its range per branch and the branches of a model's (parameter, theta) map.
+struct ModelMapPlan {
+  std::string axis;
+  std::vector<std::size_t> branches;
+  std::vector<std::vector<double>> ranges;  // per branch: lo hi
+};
+
+// Default axis range: the resonant chain's rho as in Fig. 2, else the parameter's declared range
+// when it is bounded (open ends moved inwards by 1e-3 of its width).
+std::vector<double> default_axis_range(const Model& m, const ParameterLine& line, std::size_t branch) {
+  if (m.name() == "resonant_chain" && line.parameter().name == "rho")
+    return m.definition().branch_names[branch] == "optical" ? std::vector<double>{0.01, 30.0}
+                                                           : std::vector<double>{0.01, 2.5};
+  const ModelParameter& p = line.parameter();
+  if (!(p.has_lower && p.has_upper))
+    throw InvalidParameter("axis-range", "is required for " + p.name + " (its range " + p.range_text +
+                                             " is unbounded), e.g. --axis-range 0.5 2");
+  const double width = p.upper - p.lower;
+  return {p.lower_closed ? p.lower : p.lower + 1e-3 * width, p.upper_closed ? p.upper : p.upper - 1e-3 * width};
+}
+
+ModelMapPlan plan_model_map(const MapArgs& a, const Model& m) {
+  ModelMapPlan plan;
+  plan.axis = !a.axis.empty() ? a.axis : m.name() == "resonant_chain" ? "rho" : m.definition().parameters.at(0).name;
+  const ParameterLine line(m, plan.axis);
+  if (a.branch == "both" || a.branch == "all") {
+    for (std::size_t b = m.definition().branch_names.size(); b-- > 0;) plan.branches.push_back(b);  // optical first
+  } else {
+    plan.branches.push_back(m.branch(a.branch));
+  }
+  for (std::size_t b : plan.branches) {
+    const auto r = range_or(a.axis_range, {0.0, 1.0}, "axis-range");
+    plan.ranges.push_back(a.axis_range.empty() ? default_axis_range(m, line, b) : r);
+    line.check_range(plan.ranges.back()[0], plan.ranges.back()[1], "axis-range");
+  }
+  return plan;
+}
+
+// sign(omega'' h_tilde) over (parameter, theta) for each branch of the plan, with the boundary
+// curves, a gnuplot script and its PNG (the model-file counterpart of map_theta_rho).
+json map_model(const MapArgs& a, const Model& m, const ModelMapPlan& plan, const fs::path& dir,
+               sim::Figures& figures) {
+  json files = json::array(), panels = json::array();
+  const std::string plane = "theta-" + plan.axis;
+  std::ostringstream gp;
+  gp << "# Regime map sign(omega'' h_tilde) of model " << m.name() << " over (" << plan.axis
+     << ", theta).\n# Pink: focusing (omega'' h_tilde < 0), white: defocusing, grey: no frequency. Re-run: gnuplot "
+     << "regime_" << plane << ".gp\n"
+     << "if (!exists('outfile')) outfile = 'regime_" << plane << ".png'\n"
+     << "set terminal pngcairo size " << 700 * plan.branches.size() << ",620 font 'DejaVu Sans,11'\n"
+     << "set output outfile\nset datafile separator ','\n" << kPalette
+     << "set multiplot\nset xlabel '" << plan.axis << "'\nset ylabel '{/Symbol q}'\n"
+     << "set key top right opaque box font ',9'\n";
+  const double panel_w = 1.0 / static_cast<double>(plan.branches.size());
+  for (std::size_t k = 0; k < plan.branches.size(); ++k) {
+    const std::size_t b = plan.branches[k];
+    const std::string bn = m.definition().branch_names[b];
+    const auto& rr = plan.ranges[k];
+    const GridAxis x{rr[0], rr[1], a.res_x}, theta{std::numbers::pi / a.res_y, std::numbers::pi, a.res_y};
+    const auto t0 = std::chrono::steady_clock::now();
+    const ModelRegimeMap map = parameter_theta_map(m, b, plan.axis, x, theta);
+    const double map_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const std::string mapfile = "regime_" + plane + "_" + bn + ".csv";
+    RegimeMap pixels{Branch::optical, map.x, map.y, map.values};
+    write_file(dir, mapfile, map_csv(pixels, plan.axis.c_str(), "theta"));
+    files.push_back(mapfile);
+    gp << "set origin " << k * panel_w << ",0\nset size " << panel_w << ",1\n"
+       << "set title '" << m.name() << ", " << bn << " branch'\n"
+       << "set xrange [" << rr[0] << ":" << rr[1] << "]\nset yrange [0:pi]\n";
+    std::ostringstream plot;
+    plot << "plot '" << mapfile << "' using 1:2:3 with image notitle";
+    json curves_info = json::object();
+    if (!a.no_curves) {
+      const auto t1 = std::chrono::steady_clock::now();
+      const auto curves = boundary_curves(m, b, plan.axis, rr[0], rr[1]);
+      curves_info["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+      for (BoundaryCause c : kSmoothCauses) {
+        int n = 0;
+        const std::string csv = curves_csv(curves, c, plan.axis.c_str(), "theta", n);
+        curves_info[std::string(to_string(c))] = n;
+        if (n == 0) continue;
+        const std::string f = "boundary_" + plane + "_" + bn + "_" + std::string(to_string(c)) + ".csv";
+        write_file(dir, f, csv);
+        files.push_back(f);
+        plot << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title \"" << to_string(c)
+             << "\"";
+      }
+    }
+    gp << plot.str() << "\n";
+    int focusing = 0;
+    for (auto v : map.values) focusing += v == PixelRegime::focusing;
+    panels.push_back({{"branch", bn},
+                      {"axis_range", rr},
+                      {"resolution", {a.res_x, a.res_y}},
+                      {"map_seconds", map_s},
+                      {"focusing_fraction", double(focusing) / map.values.size()},
+                      {"boundary_polylines", curves_info}});
+  }
+  gp << "unset multiplot\n";
+  const std::string script = "regime_" + plane + ".gp";
+  write_file(dir, script, gp.str());
+  files.push_back(script);
+  json out = {{"plane", plane}, {"axis", plan.axis}, {"model", model_json(m)}, {"panels", panels}};
+  if (!a.no_png) {
+    const bool ok = figures.draw_written(script, "regime_" + plane + ".png");
+    if (ok) files.push_back("regime_" + plane + ".png");
+    out["png"] = ok;
+  }
+  out["files"] = files;
+  return out;
+}
+
+// Memory, output space and --out of a map, checked before anything is written.
+void validate_map_output(const MapArgs& a, double panels) {
+  const sim::ResourceEstimate e = sim::estimate_regime_map(double(a.res_x) * double(a.res_y), panels);
+  sim::check_memory(e, a.max_memory, "nx", "lower nx and ny");
+  std::error_code ec;
+  if (fs::exists(a.out, ec) && !fs::is_directory(a.out, ec))
+    throw InputError("--out '" + a.out + "' exists and is not a directory");
+  sim::check_output_space(e, a.out, "out", "choose another --out or lower nx and ny");
+}
+
 // Checks every option of a map, its memory and output size and --out before anything is written.
 void validate_map(const MapArgs& a) {
   validate(a.p);
@@ -430,13 +583,35 @@ void validate_map(const MapArgs& a) {
     validate(GridAxis{dr[0], dr[1], a.res_x, a.delta0_log}, "delta0");
     range_or(a.omega_range, {0.0, 1.0}, "omega-range");
   }
-  const sim::ResourceEstimate e =
-      sim::estimate_regime_map(double(a.res_x) * double(a.res_y), double(branches.size()));
-  sim::check_memory(e, a.max_memory, "nx", "lower nx and ny");
-  std::error_code ec;
-  if (fs::exists(a.out, ec) && !fs::is_directory(a.out, ec))
-    throw InputError("--out '" + a.out + "' exists and is not a directory");
-  sim::check_output_space(e, a.out, "out", "choose another --out or lower nx and ny");
+  validate_map_output(a, double(branches.size()));
+}
+
+void run_map(const MapArgs& a);
+
+// A model file's (parameter, theta) map; the resonant chain's delta0-omega plane through Params.
+void run_model_map(const MapArgs& a, const Model& m) {
+  if (a.plane == "delta0-omega" && m.name() == "resonant_chain") {
+    MapArgs resonant = a;
+    resonant.p = resonant_params(m);
+    resonant.model = {};
+    return run_map(resonant);
+  }
+  if (a.plane != "theta-rho" && a.plane != "theta-parameter")
+    throw InvalidParameter("plane", "with --model: 'theta-parameter' (the default; choose the parameter with --axis)" +
+                                        std::string(m.name() == "resonant_chain" ? " or 'delta0-omega'" : "") +
+                                        ", got '" + a.plane + "'");
+  if (!a.rho_range.empty() || !a.delta0_range.empty() || !a.omega_range.empty())
+    throw InvalidParameter("axis-range", "with --model the range of the x axis is --axis-range lo hi");
+  const ModelMapPlan plan = plan_model_map(a, m);
+  validate_map_output(a, double(plan.branches.size()));
+  const fs::path dir(a.out);
+  const sim::OutputLock lock(dir);
+  sim::Figures figures(dir);
+  json out = map_model(a, m, plan, dir, figures);
+  out["out"] = fs::absolute(dir).string();
+  figures.finish(out);
+  out["provenance"] = provenance_json();
+  std::cout << out.dump(2) << '\n';
 }
 
 void run_map(const MapArgs& a) {
@@ -460,12 +635,58 @@ void run_map(const MapArgs& a) {
   else
     throw InvalidParameter("plane", "must be 'theta-rho' or 'delta0-omega', got '" + a.plane + "'");
   out["out"] = fs::absolute(dir).string();
+  out["model"] = model_json(resonant_chain_model(a.p));
   figures.finish(out);
   out["provenance"] = provenance_json();
   std::cout << out.dump(2) << '\n';
 }
 
+// `regime map`: a model file's map, or the resonant chain's (with --set as alias of --rho etc.).
+void run_map_command(const MapArgs& a, const CLI::App& cmd) {
+  if (a.model.file.empty()) validate(a.p);  // the resonant chain's own messages
+  if (a.model.file.empty() && (!a.axis.empty() || !a.axis_range.empty()))
+    throw InvalidParameter("axis", "--axis and --axis-range need --model FILE (the default map is theta-rho: --rho-range)");
+  const Model m = load_selected_model(a.model, cmd, a.p);
+  if (!a.model.file.empty()) return run_model_map(a, m);
+  MapArgs resonant = a;
+  resonant.p = resonant_params(m);
+  run_map(resonant);
+}
+
 // ---- regime thresholds ----------------------------------------------------------------------
+
+struct ThresholdsArgs {
+  int scan = 0;
+  bool json_flag = false;
+  ModelSelection model;
+  std::string branch, axis;
+  std::vector<std::string> axis_range;
+};
+
+// Structure changes along one parameter of a model file (no paper values to match).
+void run_model_thresholds(const ThresholdsArgs& a, const Model& m) {
+  MapArgs map_like;
+  map_like.branch = a.branch.empty() ? "both" : a.branch;
+  map_like.axis = a.axis;
+  map_like.axis_range = a.axis_range;
+  const ModelMapPlan plan = plan_model_map(map_like, m);
+  json scans = json::array();
+  for (std::size_t k = 0; k < plan.branches.size(); ++k) {
+    const std::size_t b = plan.branches[k];
+    const GridAxis scan{plan.ranges[k][0], plan.ranges[k][1], a.scan > 0 ? a.scan : 300};
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto events = regime_events(m, b, plan.axis, scan);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    json ev = json::array();
+    for (const auto& e : events) ev.push_back(event_json(e));
+    scans.push_back({{"branch", m.definition().branch_names[b]},
+                     {"axis", plan.axis},
+                     {"scan", {{"lo", scan.lo}, {"hi", scan.hi}, {"points", scan.n}}},
+                     {"events", ev},
+                     {"seconds", secs}});
+  }
+  std::cout << json{{"model", model_json(m)}, {"scans", scans}, {"provenance", provenance_json()}}.dump(2) << '\n';
+}
 
 void run_thresholds(int scan_points) {
   json scenarios = json::array();
@@ -516,11 +737,14 @@ void register_regime(CLI::App& app) {
       "theta and labelled curvature_zero, h_tilde_zero, nonresonance1, nonresonance2 or band_edge. "
       "theta is the dimensionless carrier wavenumber (radians per site).");
   add_model_options(*in, ia->p, false);
-  in->add_option("--branch", ia->branch, "optical or acoustic (default optical)");
+  add_model_file_options(*in, ia->model);
+  in->add_option("--branch", ia->branch,
+                 "optical or acoustic (default optical); with --model: the model's branch names (default optical, or "
+                 "its only branch)");
   add_integer(*in, "--samples", ia->samples, 8, 10'000'000,
               "theta samples used to bracket the zeros (default 2048)");
   in->add_flag("--json", ia->json_flag, "print JSON (the default and only format)");
-  in->callback([ia] { run_intervals(*ia); });
+  in->callback([ia, in] { run_intervals(*ia, *in); });
 
   // map
   auto ma = std::make_shared<MapArgs>();
@@ -531,10 +755,20 @@ void register_regime(CLI::App& app) {
       "continuation), a gnuplot script and its PNG. theta-rho: Fig. 2 (rho on x, theta on y; "
       "default rho range 0.01..30 optical, 0.01..2.5 acoustic; branch both draws two panels). "
       "delta0-omega: Figs. 4-5 (kappa as given, paper: 1; default delta0 0.001..1; hatched "
-      "focusing frequency bands from root-found intervals, and their number versus delta0).");
+      "focusing frequency bands from root-found intervals, and their number versus delta0). "
+      "With --model FILE: the (parameter, theta) plane of any model parameter (--axis NAME, "
+      "--axis-range lo hi), files regime_theta-NAME_BRANCH.csv.");
   add_model_options(*mp, ma->p, false);
+  add_model_file_options(*mp, ma->model);
+  mp->add_option("--axis", ma->axis,
+                 "with --model: the parameter on x (default rho for the resonant chain, else the model's first)")
+      ->type_name("NAME");
+  mp->add_option("--axis-range", ma->axis_range,
+                 "with --model: lo hi of the --axis parameter (default: its declared range when bounded)")
+      ->expected(2);
   mp->add_option("--plane", ma->plane, "theta-rho (default) or delta0-omega");
-  mp->add_option("--branch", ma->branch, "optical, acoustic or both (default both; theta-rho only)");
+  mp->add_option("--branch", ma->branch,
+                 "optical, acoustic or both (default both; theta-rho only); with --model: a branch name or both/all");
   mp->add_option("--out", ma->out, "output directory (created)")->required();
   mp->add_option("--rho-range", ma->rho_range, "theta-rho: rho lo hi")->expected(2);
   mp->add_option("--delta0-range", ma->delta0_range, "delta0-omega: delta0 lo hi")->expected(2);
@@ -547,21 +781,36 @@ void register_regime(CLI::App& app) {
   add_max_memory(*mp, ma->max_memory);
   mp->add_flag("--no-curves", ma->no_curves, "skip tracing the boundary curves");
   mp->add_flag("--no-png", ma->no_png, "write the .gp script but do not run gnuplot");
-  mp->callback([ma] { run_map(*ma); });
+  mp->callback([ma, mp] { run_map_command(*ma, *mp); });
 
   // thresholds
-  auto scan = std::make_shared<int>(0);
-  auto json_flag = std::make_shared<bool>(false);
+  auto ta = std::make_shared<ThresholdsArgs>();
   auto* th = regime->add_subcommand(
       "thresholds",
       "The paper's special mass ratios and precompressions (Sec. 3.3) computed as codimension-two "
       "points: scans of rho (delta0 = 4/9) or delta0 (rho = 3, 17.8, 0.32), kappa = 1, "
       "alpha = 3/2; every change of the boundary structure is located by TOMS 748 (crossing of "
       "two boundary curves, fold = birth/death of a pair of boundaries, entry through theta = pi) "
-      "with the number of focusing intervals before and after, and matched to the printed values.");
-  add_integer(*th, "--scan", *scan, 10, 100'000, "scan points per scenario (default: built-in 300-400)");
-  th->add_flag("--json", *json_flag, "print JSON (the default and only format)");
-  th->callback([scan] { run_thresholds(*scan); });
+      "with the number of focusing intervals before and after, and matched to the printed values. "
+      "With --model FILE: the same events along one parameter of that model (--axis, --axis-range, --branch).");
+  add_integer(*th, "--scan", ta->scan, 10, 100'000,
+              "scan points per scenario (default: built-in 300-400; with --model 300)");
+  th->add_flag("--json", ta->json_flag, "print JSON (the default and only format)");
+  add_model_file_options(*th, ta->model);
+  th->add_option("--axis", ta->axis, "with --model: the scanned parameter (default rho / the model's first)")
+      ->type_name("NAME");
+  th->add_option("--axis-range", ta->axis_range, "with --model: lo hi of the scan (default: its declared range when bounded)")
+      ->expected(2);
+  th->add_option("--branch", ta->branch, "with --model: a branch name (default: every branch)");
+  th->callback([ta, th] {
+    if (ta->model.file.empty()) {
+      if (!ta->model.set.empty() || !ta->axis.empty() || !ta->axis_range.empty() || !ta->branch.empty())
+        throw InvalidParameter("model", "--set, --axis, --axis-range and --branch need --model FILE (without it "
+                                        "the paper's scenarios run)");
+      return run_thresholds(ta->scan);
+    }
+    run_model_thresholds(*ta, load_selected_model(ta->model, *th, Params{}));
+  });
 }
 
 }  // namespace lrchain::cli

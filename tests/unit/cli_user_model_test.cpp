@@ -76,3 +76,37 @@ TEST_CASE("a bad user model file exits 2 with one line naming the file and line"
   CHECK(!fs::exists(dir / "cache"));  // nothing written
   fs::remove_all(dir);
 }
+
+TEST_CASE("without the C++ compiler a user model is evaluated through GiNaC with one warning line") {
+  const fs::path dir = fs::temp_directory_path() / "lrchain-user-model-no-compiler";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "cache");
+  {
+    std::ofstream f(dir / "cubic_chain.toml");
+    f << "name = \"cubic_chain\"\n[parameters]\nK = { default = \"1/5\", range = \"(0, inf)\" }\n"
+         "a = { default = \"1/4\" }\n[[field]]\nname = \"u\"\nforce = \"K*(u[n+1] - 2*u[n] + u[n-1]) - u[n] - a*u[n]^2\"\n";
+  }
+  const std::vector<std::string> args{"coeffs", "--model", (dir / "cubic_chain.toml").string(), "--branch", "branch0",
+                                      "--theta", "2.1", "--json"};
+  const std::string cache = "XDG_CACHE_HOME=" + (dir / "cache").string();
+  const auto compiled = lrchain::test::run_lrchain(args, {}, {cache});
+  // The real detection path: the compiler named by LRCHAIN_MODEL_CXX does not exist.
+  const auto fallback =
+      lrchain::test::run_lrchain(args, {}, {cache, "LRCHAIN_MODEL_CXX=/nonexistent/lrchain-no-such-c++"});
+  INFO(fallback.err);
+  REQUIRE(compiled.exit_code == 0);
+  REQUIRE(fallback.exit_code == 0);
+  CHECK(compiled.err.empty());
+  CHECK(std::count(fallback.err.begin(), fallback.err.end(), '\n') == 1);
+  CHECK(fallback.err.find("warning") != std::string::npos);
+  CHECK(fallback.err.find("/nonexistent/lrchain-no-such-c++") != std::string::npos);
+  CHECK(fallback.err.find("apt install g++") != std::string::npos);
+  const auto x = nlohmann::json::parse(compiled.out), y = nlohmann::json::parse(fallback.out);
+  for (const char* key : {"omega", "group_velocity", "curvature", "gamma", "h", "h_tilde", "nonresonance1"}) {
+    INFO(key);
+    const double u = x[key].get<double>(), v = y[key].get<double>();
+    CHECK(std::abs(u - v) <= 1e-12 * std::abs(u));
+  }
+  CHECK(y["regime"] == x["regime"]);
+  fs::remove_all(dir);
+}

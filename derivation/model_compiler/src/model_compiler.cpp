@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "ginac_evaluators.hpp"
 #include "lrchain/derivation/model_emission.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/process.hpp"
@@ -137,13 +138,17 @@ std::shared_ptr<const ModelDefinition> load_library(const fs::path& library) {
 
 }  // namespace
 
-const char* model_compiler_path() { return LRCHAIN_CXX_COMPILER; }
+std::string model_compiler_path() {
+  const char* chosen = std::getenv("LRCHAIN_MODEL_CXX");
+  return chosen && *chosen ? chosen : LRCHAIN_CXX_COMPILER;
+}
 
-bool model_compiler_available() { return program_in_path(LRCHAIN_CXX_COMPILER); }
+bool model_compiler_available() { return program_in_path(model_compiler_path()); }
 
 std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, CompiledModelInfo* info) {
   const std::string bytes = read_bytes(path);
-  const std::uint64_t key = fnv1a_64(std::string(LRCHAIN_CXX_COMPILER) + "\n" + LRCHAIN_VERSION + "\nevaluators 2\n", fnv1a_64(bytes));
+  const std::string compiler = model_compiler_path();
+  const std::uint64_t key = fnv1a_64(compiler + "\n" + LRCHAIN_VERSION + "\nevaluators 2\n", fnv1a_64(bytes));
   const fs::path directory = cache_directory();
   const fs::path library = directory / ("model-" + model_hash_text(key).substr(2) + ".so");
   if (info) info->library = library;
@@ -160,9 +165,16 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, 
   if (!m->passed())
     throw InputError(path.string() + ": a derivation check failed for model " + m->file.name +
                      " (see `lrchain derive --model " + path.string() + "`)");
-  if (!model_compiler_available())
-    throw std::runtime_error(std::string("the C++ compiler lrchain was built with (") + LRCHAIN_CXX_COMPILER +
-                             ") is not available to compile the model's evaluators");
+  if (!program_in_path(compiler)) {
+    // No compiler: the derived expressions evaluated by GiNaC in double precision instead.
+    auto d = std::make_shared<ModelDefinition>(parse_metadata(metadata(*m)));
+    d->evaluators.object = std::make_shared<GinacModelEvaluators>(*m, symbols);
+    if (info) {
+      info->library.clear();
+      info->fallback_reason = "the C++ compiler " + compiler + " is not installed";
+    }
+    return d;
+  }
   fs::create_directories(directory, ec);
   if (ec) throw std::runtime_error("cannot create the model cache " + directory.string() + ": " + ec.message());
   // Unique temporary names: concurrent processes each compile their own copy and rename it into place.
@@ -176,7 +188,7 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, 
   }
   ProcessOptions options;
   options.capture_stderr = true;
-  const ProcessResult r = run_program({LRCHAIN_CXX_COMPILER, "-std=c++17", "-O2", "-fPIC", "-shared", "-o", object.string(), source.string()}, options);
+  const ProcessResult r = run_program({compiler, "-std=c++17", "-O2", "-fPIC", "-shared", "-o", object.string(), source.string()}, options);
   fs::remove(source, ec);
   if (!r.ok()) {
     fs::remove(object, ec);

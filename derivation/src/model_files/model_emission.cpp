@@ -125,6 +125,10 @@ std::string quoted(const std::string& s) {
 
 }  // namespace
 
+std::vector<EmittedFunction> model_evaluator_definitions(const ModelDerivation& m, const Symbols& s) {
+  return {intermediates_function(m), dispersion_function(m, s), nls_function(m, s)};
+}
+
 std::string model_evaluator_functions(const ModelDerivation& m, const Symbols& s) {
   return emit_function(intermediates_function(m)) + "\n" + emit_function(dispersion_function(m, s)) + "\n" +
          emit_function(nls_function(m, s));

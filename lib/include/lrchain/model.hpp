@@ -25,12 +25,37 @@ enum ModelOutput : int {
 // Highest degree in omega^2 of det M a model may have (number of fields).
 inline constexpr int kMaxModelDegree = 6;
 
+// The same three evaluators held by an object: a user model evaluated through GiNaC in double
+// precision when no C++ compiler is available (lrchain_model_compiler). Safe to call concurrently.
+class ModelEvaluatorObject {
+ public:
+  virtual ~ModelEvaluatorObject() = default;
+  virtual void intermediates(const double* parameters, double* q) const = 0;
+  virtual void dispersion(double D1, double sigma, const double* q, double* coefficients) const = 0;
+  virtual void nls(double D1, double sigma, double omega, const double* q, double* out) const = 0;
+};
+
 // The evaluator functions emitted for a model. q holds the parameter values followed by the named
 // intermediates (e.g. K2, K3, K4); D1 = 4 sin^2(theta/2), sigma = sin(theta).
 struct ModelEvaluators {
   void (*intermediates)(const double* parameters, double* q) = nullptr;  // q = parameters, intermediates
   void (*dispersion)(double D1, double sigma, const double* q, double* coefficients) = nullptr;  // det M, ascending in omega^2
   void (*nls)(double D1, double sigma, double omega, const double* q, double* out) = nullptr;     // ModelOutput order
+  std::shared_ptr<const ModelEvaluatorObject> object;  // used instead when the functions are null
+
+  // The functions when emitted and compiled, else the object.
+  void evaluate_intermediates(const double* parameters, double* q) const {
+    if (intermediates) intermediates(parameters, q);
+    else object->intermediates(parameters, q);
+  }
+  void evaluate_dispersion(double D1, double sigma, const double* q, double* coefficients) const {
+    if (dispersion) dispersion(D1, sigma, q, coefficients);
+    else object->dispersion(D1, sigma, q, coefficients);
+  }
+  void evaluate_nls(double D1, double sigma, double omega, const double* q, double* out) const {
+    if (nls) nls(D1, sigma, omega, q, out);
+    else object->nls(D1, sigma, omega, q, out);
+  }
 };
 
 // One parameter of a model file: name, default and valid range.
@@ -95,6 +120,12 @@ std::uint64_t fnv1a_64(std::string_view bytes, std::uint64_t hash = 146959810393
 // models. Throws InvalidParameter for theta out of range or where the branch has no real,
 // positive frequency (theta = 0 on an acoustic branch). Allocation-free.
 NlsCoefficients coefficients(const Model& model, std::size_t branch, double theta);
+
+// The same from the evaluator input vector q (parameters, then intermediates) without any check
+// of theta or branch: false (and `out` untouched) where det M has no real root or the branch's
+// omega^2 is not positive. For loops over theta or a parameter (regime maps). Allocation-free.
+bool coefficients_at(const ModelDefinition& definition, const double* q, std::size_t branch, double theta,
+                     NlsCoefficients& out) noexcept;
 
 // Roots in omega^2 of the polynomial sum_k coefficients[k] w^k (degree <= kMaxModelDegree), real
 // parts ascending, into `roots`; returns false when a root is not real. Allocation-free.

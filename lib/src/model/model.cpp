@@ -68,7 +68,7 @@ Model::Model(std::shared_ptr<const ModelDefinition> definition, const std::vecto
     p[std::size_t(it - parameters.begin())] = value;
   }
   q_.assign(parameters.size() + definition_->intermediates.size(), 0.0);
-  definition_->evaluators.intermediates(p.data(), q_.data());
+  definition_->evaluators.evaluate_intermediates(p.data(), q_.data());
   for (std::size_t i = parameters.size(); i < q_.size(); ++i)
     if (!std::isfinite(q_[i]))
       throw InvalidParameter(definition_->intermediates[i - parameters.size()],
@@ -138,28 +138,23 @@ bool omega_squared_roots(const double* c, int degree, double* roots) {
   return true;
 }
 
-NlsCoefficients coefficients(const Model& model, std::size_t branch, double theta) {
-  const ModelDefinition& d = model.definition();
-  if (!(std::isfinite(theta) && theta > -std::numbers::pi && theta <= std::numbers::pi))
-    throw InvalidParameter("theta", "must be a wavenumber in (-pi, pi]");
-  if (branch >= d.branch_names.size()) throw InvalidParameter("branch", "index out of range for model " + d.name);
+namespace {
+
+// Roots of det M in omega^2, the branch's omega, the emitted NLS evaluator, the singular test
+// (inlined into both entry points: this is the hot path of every map and scan).
+[[gnu::always_inline]] inline bool evaluate_coefficients(const ModelDefinition& d, const double* q, std::size_t branch,
+                                                         double theta, NlsCoefficients& c) noexcept {
   const double sh = std::sin(0.5 * theta), ch = std::cos(0.5 * theta);
   const double D1 = 4.0 * sh * sh;  // no cancellation near theta = 0
   const double sigma = 2.0 * sh * ch;
-  const double* q = model.inputs().data();
   double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
-  d.evaluators.dispersion(D1, sigma, q, w);
-  if (!omega_squared_roots(w, d.degree, roots))
-    throw InvalidParameter("theta", "model " + d.name + " has no real frequency at this wavenumber");
+  d.evaluators.evaluate_dispersion(D1, sigma, q, w);
+  if (!omega_squared_roots(w, d.degree, roots)) return false;
   const double w2 = roots[branch];
-  if (!(w2 > 0.0))
-    throw InvalidParameter("theta", "branch " + d.branch_names[branch] + " of model " + d.name +
-                                        " has no positive frequency here (theta = 0 on an acoustic branch is the "
-                                        "zero-frequency mode)");
+  if (!(w2 > 0.0)) return false;
   const double omega = std::sqrt(w2);
   double out[model_output_count];
-  d.evaluators.nls(D1, sigma, omega, q, out);
-  NlsCoefficients c;
+  d.evaluators.evaluate_nls(D1, sigma, omega, q, out);
   c.theta = theta;
   c.omega = omega;
   c.group_velocity = out[out_group_velocity];
@@ -174,14 +169,38 @@ NlsCoefficients coefficients(const Model& model, std::size_t branch, double thet
       std::abs(c.nonresonance2) <= kNonresonanceTolerance * out[out_nonresonance2_scale]) {
     c.h = c.lambda = c.h_tilde = nan;
     c.regime = Regime::singular;
-    return c;
+    return true;
   }
   c.h = out[out_h];
   c.lambda = d.mean_flow ? out[out_lambda] : nan;
   c.h_tilde = out[out_h_tilde];
   const double product = c.curvature * c.h_tilde;
   c.regime = product < 0 ? Regime::focusing : product > 0 ? Regime::defocusing : Regime::degenerate;
-  return c;
+  return true;
+}
+
+}  // namespace
+
+bool coefficients_at(const ModelDefinition& d, const double* q, std::size_t branch, double theta,
+                     NlsCoefficients& c) noexcept {
+  return evaluate_coefficients(d, q, branch, theta, c);
+}
+
+NlsCoefficients coefficients(const Model& model, std::size_t branch, double theta) {
+  const ModelDefinition& d = model.definition();
+  if (!(std::isfinite(theta) && theta > -std::numbers::pi && theta <= std::numbers::pi))
+    throw InvalidParameter("theta", "must be a wavenumber in (-pi, pi]");
+  if (branch >= d.branch_names.size()) throw InvalidParameter("branch", "index out of range for model " + d.name);
+  NlsCoefficients c;
+  if (evaluate_coefficients(d, model.inputs().data(), branch, theta, c)) [[likely]] return c;
+  double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
+  const double sh = std::sin(0.5 * theta), ch = std::cos(0.5 * theta);
+  d.evaluators.evaluate_dispersion(4.0 * sh * sh, 2.0 * sh * ch, model.inputs().data(), w);
+  if (!omega_squared_roots(w, d.degree, roots))
+    throw InvalidParameter("theta", "model " + d.name + " has no real frequency at this wavenumber");
+  throw InvalidParameter("theta", "branch " + d.branch_names[branch] + " of model " + d.name +
+                                      " has no positive frequency here (theta = 0 on an acoustic branch is the "
+                                      "zero-frequency mode)");
 }
 
 }  // namespace lrchain

@@ -57,12 +57,9 @@ struct EventFunction {
 
 class EventFinder {
  public:
-  EventFinder(const Params& base, Branch b, ParameterAxis axis, const EventOptions& o)
-      : base_(base), branch_(b), axis_(axis), o_(o) {}
+  EventFinder(const RegimeFamily& family, const EventOptions& o) : family_(family), o_(o) {}
 
-  RegimeFunctions functions(double value) const {
-    return regime_functions(with_parameter(base_, axis_, value), branch_);
-  }
+  RegimeFunctions functions(double value) const { return family_(value); }
   RegimeStructure structure(double value) const {
     return regime_structure(functions(value), o_.intervals);
   }
@@ -190,9 +187,7 @@ class EventFinder {
   }
 
  private:
-  Params base_;
-  Branch branch_;
-  ParameterAxis axis_;
+  const RegimeFamily& family_;
   EventOptions o_;
   double lo_value_ = 0, hi_value_ = 0;
 };
@@ -204,7 +199,16 @@ std::vector<RegimeEvent> regime_events(const Params& base, Branch b, ParameterAx
   validate(base);
   validate(scan, to_string(axis).data());
   if (!(scan.lo > 0.0)) throw InvalidParameter(std::string(to_string(axis)), "scan must lie in > 0");
-  EventFinder finder(base, b, axis, options);
+  const RegimeFamily family = [&base, b, axis](double value) {
+    return regime_functions(with_parameter(base, axis, value), b);
+  };
+  return regime_events(family, scan, options);
+}
+
+// Structures on the scan grid, then every neighbouring pair that differs isolated to its events.
+std::vector<RegimeEvent> regime_events(const RegimeFamily& family, const GridAxis& scan,
+                                       const EventOptions& options) {
+  EventFinder finder(family, options);
   std::vector<RegimeStructure> s(scan.n);
 #pragma omp parallel for schedule(dynamic)
   for (int i = 0; i < scan.n; ++i) s[i] = finder.structure(scan.at(i));

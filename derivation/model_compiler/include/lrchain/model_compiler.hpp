@@ -5,6 +5,7 @@
 // the lrchain version, and load the shared object. A second call with the same file reuses it.
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "lrchain/model.hpp"
 
@@ -12,16 +13,20 @@ namespace lrchain {
 
 struct CompiledModelInfo {
   bool from_cache = false;        // the shared object existed already
-  std::filesystem::path library;  // the cached shared object
+  std::filesystem::path library;  // the cached shared object (empty for the GiNaC fallback)
+  std::string fallback_reason;    // non-empty: no compiler, evaluated through GiNaC in double precision
 };
 
-// The model of `path` with compiled evaluators. Throws InputError for a bad model file (a failing
-// derivation check included) and std::runtime_error when the compiler cannot be run or fails.
+// The model of `path` with compiled evaluators; when the compiler is not installed, with the derived
+// expressions evaluated by GiNaC in double precision instead (info->fallback_reason says so).
+// Throws InputError for a bad model file (a failing derivation check included) and
+// std::runtime_error when the compiler fails.
 std::shared_ptr<const ModelDefinition> compile_model_file(const std::filesystem::path& path,
                                                           CompiledModelInfo* info = nullptr);
 
-// The compiler recorded at configure time and whether it can be run.
-const char* model_compiler_path();
+// The compiler: $LRCHAIN_MODEL_CXX if set, else the one recorded at configure time; and whether it
+// can be run.
+std::string model_compiler_path();
 bool model_compiler_available();
 
 }  // namespace lrchain

@@ -3,6 +3,7 @@
 // rho or delta0 where two boundary curves cross, where a pair of boundaries is born or dies
 // (fold), or where a boundary enters through theta = pi; each located by TOMS 748 on a smooth
 // event function, with the number of focusing intervals before and after.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,12 @@ struct EventOptions {
 // All structure changes for the parameter on the scan grid (refined between grid points).
 std::vector<RegimeEvent> regime_events(const Params& base, Branch b, ParameterAxis axis,
                                        const GridAxis& scan, const EventOptions& options = {});
+
+// The regime functions at each value of a scanned parameter (called concurrently).
+using RegimeFamily = std::function<RegimeFunctions(double value)>;
+
+// The same for any family of regime functions (any model, any parameter).
+std::vector<RegimeEvent> regime_events(const RegimeFamily& family, const GridAxis& scan,
+                                       const EventOptions& options = {});
 
 }  // namespace lrchain::regime

@@ -1,0 +1,142 @@
+#include "ginac_evaluators.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "lrchain/derivation/model_emission.hpp"
+
+namespace lrchain {
+
+using namespace GiNaC;
+
+namespace {
+
+// "q[12]" -> {'q', 12}; "out[3]" -> {'o', 3}; "D1", "sigma", "omega" -> scalars.
+GinacModelEvaluators::Slot parse_slot(const std::string& name) {
+  if (name == "D1") return {'D', 0};
+  if (name == "sigma") return {'s', 0};
+  if (name == "omega") return {'m', 0};
+  const auto open = name.find('[');
+  if (open == std::string::npos || name.back() != ']') throw std::logic_error("unknown evaluator slot " + name);
+  const std::string array = name.substr(0, open);
+  const int index = std::stoi(name.substr(open + 1));
+  if (array == "p") return {'p', index};
+  if (array == "q") return {'q', index};
+  if (array == "w") return {'w', index};
+  if (array == "out") return {'o', index};
+  throw std::logic_error("unknown evaluator slot " + name);
+}
+
+// The emitter's description of one function, prepared for substitution.
+GinacModelEvaluators::Function prepare(const derivation::EmittedFunction& f) {
+  GinacModelEvaluators::Function out;
+  for (const auto& [symbol, name] : f.inputs) out.inputs.emplace_back(symbol, parse_slot(name));
+  for (const auto& [name, e] : f.outputs) {
+    GinacModelEvaluators::Output o;
+    o.slot = parse_slot(name);
+    o.value = e;
+    const auto s = f.output_symbols.find(name);
+    o.symbol = s == f.output_symbols.end() ? ex(0) : s->second;
+    if (f.term_scales.count(name)) {  // as emit_cpp's term_scale_tree
+      o.term_scale = true;
+      const ex nd = normal(e).numer_denom();
+      const ex numerator = expand(nd.op(0));
+      if (is_a<add>(numerator))
+        for (const auto& t : numerator) o.terms.push_back(t);
+      else
+        o.terms.push_back(numerator);
+      o.denominator = nd.op(1);
+    }
+    out.outputs.push_back(std::move(o));
+  }
+  return out;
+}
+
+// A real double from an evaluated expression; NaN if it did not evaluate to a number.
+double to_double(const ex& e) {
+  const ex v = e.evalf();
+  if (!is_a<numeric>(v)) return std::numeric_limits<double>::quiet_NaN();
+  return ex_to<numeric>(v).real().to_double();
+}
+
+double read(const GinacModelEvaluators::Slot& s, const GinacModelEvaluators::Arrays& a) {
+  switch (s.array) {
+    case 'p': return a.p[s.index];
+    case 'q': return a.q_in[s.index];
+    case 'D': return a.D1;
+    case 's': return a.sigma;
+    case 'm': return a.omega;
+  }
+  throw std::logic_error("not an input slot");
+}
+
+double& write(const GinacModelEvaluators::Slot& s, const GinacModelEvaluators::Arrays& a) {
+  switch (s.array) {
+    case 'q': return a.q_out[s.index];
+    case 'w': return a.w[s.index];
+    case 'o': return a.out[s.index];
+  }
+  throw std::logic_error("not an output slot");
+}
+
+}  // namespace
+
+GinacModelEvaluators::GinacModelEvaluators(const derivation::ModelDerivation& m, const derivation::Symbols& s)
+    : parameter_count_(m.file.parameters.size()) {
+  const auto functions = derivation::model_evaluator_definitions(m, s);
+  intermediates_ = prepare(functions.at(0));
+  dispersion_ = prepare(functions.at(1));
+  nls_ = prepare(functions.at(2));
+}
+
+// Inputs and earlier outputs substituted as double-precision numbers, each output evaluated by evalf.
+void GinacModelEvaluators::run(const Function& f, const Arrays& a) const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  exmap values;
+  for (const auto& [symbol, slot] : f.inputs) values[symbol] = numeric(read(slot, a));
+  for (const auto& o : f.outputs) {
+    double v = 0;
+    try {
+      if (o.term_scale) {
+        for (const auto& t : o.terms) v += std::abs(to_double(t.subs(values)));
+        if (!o.denominator.is_equal(1)) v /= std::abs(to_double(o.denominator.subs(values)));
+      } else {
+        v = to_double(o.value.subs(values));
+      }
+    } catch (const std::exception&) {  // division by zero, pole of a function
+      v = std::numeric_limits<double>::quiet_NaN();
+    }
+    write(o.slot, a) = v;
+    if (!o.symbol.is_zero()) values[o.symbol] = numeric(v);
+  }
+}
+
+void GinacModelEvaluators::intermediates(const double* parameters, double* q) const {
+  for (std::size_t i = 0; i < parameter_count_; ++i) q[i] = parameters[i];
+  Arrays a;
+  a.p = parameters;
+  a.q_out = q;
+  run(intermediates_, a);
+}
+
+void GinacModelEvaluators::dispersion(double D1, double sigma, const double* q, double* coefficients) const {
+  Arrays a;
+  a.q_in = q;
+  a.D1 = D1;
+  a.sigma = sigma;
+  a.w = coefficients;
+  run(dispersion_, a);
+}
+
+void GinacModelEvaluators::nls(double D1, double sigma, double omega, const double* q, double* out) const {
+  Arrays a;
+  a.q_in = q;
+  a.D1 = D1;
+  a.sigma = sigma;
+  a.omega = omega;
+  a.out = out;
+  run(nls_, a);
+}
+
+}  // namespace lrchain
