@@ -288,7 +288,7 @@ std::vector<std::string> study_row_names(std::string_view kind) {
 std::string study_rows_legend(std::string_view kind) {
   if (kind == "dark continue")
     return "one row per branch point in continuation order; stability: 0 stable, +1 real, +2 period doubling, "
-           "+4 oscillatory instability; part: 1 before the first turning point, +1 after each; max_real, "
+           "+4 oscillatory instability; part: 0 before the first turning point, +1 after each; max_real, "
            "max_period_doubling, max_oscillatory: 1 when there is none";
   return "one row per focusing interval; branch: 0 optical, 1 acoustic; causes: 0 curvature_zero, 1 h_tilde_zero, "
          "2 nonresonance1, 3 nonresonance2, 4 band_edge";

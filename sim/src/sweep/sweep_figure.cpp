@@ -167,7 +167,7 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
       const int code = int(r.rows[p][i + stability]);
       const int kind = code & 1 ? 1 : (code ? 2 : 0);
       const double which = r.rows[p][i + part];
-      points << fmt::format("{} {} {} {} {}\n", shifted(v, which <= 1 ? -1 : 1), r.rows[p][i + omega], kind, which, v);
+      points << fmt::format("{} {} {} {} {}\n", shifted(v, which == 0 ? -1 : 1), r.rows[p][i + omega], kind, which, v);
     }
     const double t = r.scalars[turning * r.points + p], e = r.scalars[edge * r.points + p];
     marks << fmt::format("{} {} {}\n", v, std::isfinite(t) ? fmt::format("{}", t) : "NaN", std::isfinite(e) ? fmt::format("{}", e) : "NaN");
