@@ -2,8 +2,8 @@
 """Whole-process comparison of experiment 1 (examples/exp1_optical_pi2.toml: optical bright
 breather, theta = pi/2, N = 500, 200 T_b) between lrchain and SciPy, start to finish, each process
 timed from spawn to exit (median of REPEATS runs, interleaved):
-  * lrchain simulate bright --config examples/exp1_optical_pi2.toml --no-figures
-  * lrchain simulate bright with default options (no config: automatic srkn11b step) --no-figures
+  * lrchain simulate --config examples/exp1_optical_pi2.toml --no-figures
+  * lrchain simulate --no-figures bright --branch optical --theta pi/2 (default options: automatic srkn11b step)
   * /usr/bin/python3 bench/scipy_exp1.py: solve_ivp DOP853 at rtol 1e-10, E_x/E_y at every T_b/4
 The ansatz constants of the SciPy run come from lrchain's summary JSON (not timed). Prints a JSON
 report with the load average before and after each run. Run from the source directory:
@@ -21,7 +21,7 @@ lrchain = os.path.abspath(sys.argv[1])
 repeats = int(sys.argv[2]) if len(sys.argv) > 2 else 3
 here = os.path.dirname(os.path.abspath(__file__))
 out = tempfile.mkdtemp(prefix="lrchain-scipy-compare-")
-default_args = ["simulate", "bright", "--branch", "optical", "--theta", "pi/2"]  # rho 1/3, N 500, 200 T_b: defaults
+default_args = ["bright", "--branch", "optical", "--theta", "pi/2"]  # rho 1/3, N 500, 200 T_b: the defaults
 
 
 def timed(argv):
@@ -40,9 +40,9 @@ def summary_of(stdout):
 
 
 runs = {
-    "lrchain_exp1_config": [lrchain, "simulate", "bright", "--config", "examples/exp1_optical_pi2.toml", "--no-figures",
+    "lrchain_exp1_config": [lrchain, "simulate", "--config", "examples/exp1_optical_pi2.toml", "--no-figures",
                             "--out", os.path.join(out, "config")],
-    "lrchain_default_options": [lrchain] + default_args + ["--no-figures", "--out", os.path.join(out, "default")],
+    "lrchain_default_options": [lrchain, "simulate", "--no-figures", "--out", os.path.join(out, "default")] + default_args,
 }
 ansatz = summary_of(timed(runs["lrchain_exp1_config"])[1])["ansatz"]
 constants = [ansatz[k] for k in ("M1", "M2", "inverse_width", "group_velocity", "omega", "omega_b")]

@@ -181,10 +181,11 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
      << ". Re-run: gnuplot " << stem << ".gp\n"
      << "if (!exists(\"outfile\")) outfile = '" << stem << ".png'\n"
      << "set terminal pngcairo size 1000,700 noenhanced\nset output outfile\n"
-     << "set xlabel '" << x.parameter << "'\nset ylabel 'omega_b'\nset key outside right top\nset grid\n"
+     << "set xlabel '" << x.parameter << " (points left of each value: before the first turning point; right: after)'\n"
+     << "set ylabel 'omega_b'\nset key outside right top\nset grid\n"
      << (x_log ? "set logscale x\n" : "")
      << fmt::format("set xrange [{}:{}]\n", shifted(*lo, -3), shifted(*hi, 3))
-     << "set title '" << c.name << ": dark-breather branches (left of each value: before the first turning point; right: after)'\n"
+     << "set title '" << c.name << ": dark-breather branches and their Floquet stability'\n"
      << "plot '" << stem << ".dat' using 1:($3 == 0 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#009900' title 'stable', \\\n"
      << "     '' using 1:($3 == 1 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#dd0000' title 'real-unstable', \\\n"
      << "     '' using 1:($3 == 2 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#0000dd' title 'oscillatory-unstable', \\\n"
