@@ -51,12 +51,13 @@ std::shared_ptr<const TableSchema> regime_table() {
       std::nullopt});
 }
 
-TableSchema study_top(const std::string& kind, const std::string& table_name, std::shared_ptr<const TableSchema> t) {
+TableSchema study_top(const std::string& kind, const std::string& table_name, std::shared_ptr<const TableSchema> t,
+                      bool table_required) {
   return TableSchema{"a \"" + kind + "\" sweep base",
                      {choice("experiment", {kind}, "", "which job this file describes").require(),
                       string("name", "the file name without .toml", "a label"),
                       table("model", sim::config::model_schema(Params{})),
-                      table(table_name, std::move(t)).require()},
+                      table_required ? table(table_name, t).require() : table(table_name, t)},
                      std::nullopt};
 }
 
@@ -230,7 +231,7 @@ JobResult run_regime(const Document& doc) {
   const CheckedTable root = check(doc, study_schema("regime intervals"));
   const Params p = read_model(root);
   std::int64_t samples = 2048;
-  root.table("regime")->read("samples", samples);
+  if (auto r = root.table("regime")) r->read("samples", samples);
   JobResult r;
   for (Branch b : both_branches) {
     const auto s = regime::regime_structure(regime::regime_functions(p, b), {int(samples), 1e-12});
@@ -262,8 +263,8 @@ bool is_study_kind(std::string_view kind) {
 
 const TableSchema& study_schema(std::string_view kind) {
   static const std::map<std::string, TableSchema, std::less<>> schemas{
-      {"dark continue", study_top("dark continue", "dark", dark_table())},
-      {"regime intervals", study_top("regime intervals", "regime", regime_table())}};
+      {"dark continue", study_top("dark continue", "dark", dark_table(), true)},
+      {"regime intervals", study_top("regime intervals", "regime", regime_table(), false)}};
   const auto it = schemas.find(kind);
   if (it == schemas.end()) throw InvalidParameter("experiment", "must be \"dark continue\" or \"regime intervals\"");
   return it->second;
