@@ -60,13 +60,19 @@ void run_sweep_command(const SweepArguments& a) {
   if (rank != 0) return;
   nlohmann::json j;
   j["figures"] = nlohmann::json::array();
-  if (!c.figure.empty() && !r.interrupted)
-    j["figures"] = sim::sweep::write_sweep_figures(c, job, sim::sweep::read_results(c.output, c, job.scalar_names()), c.figure);
+  if (!c.figure.empty() && !r.interrupted) {
+    const auto results = sim::sweep::read_results(c.output, c, job);
+    j["figures"] = c.figure == "stability" && c.job == "dark continue" ? sim::sweep::write_stability_figure(c, results)
+                                                                        : sim::sweep::write_sweep_figures(c, job, results, c.figure);
+  }
   j["name"] = c.name;
   j["job"] = c.job;
   j["output"] = c.output.string();
   auto csv = c.output;
-  j["csv"] = c.points() <= c.csv_max_points ? nlohmann::json(csv.replace_extension(".csv").string()) : nlohmann::json(nullptr);
+  const bool small = c.points() <= c.csv_max_points;
+  j["csv"] = small ? nlohmann::json(csv.replace_extension(".csv").string()) : nlohmann::json(nullptr);
+  j["rows_csv"] = small && !job.row_names().empty() ? nlohmann::json(csv.replace_extension(".rows.csv").string())
+                                                    : nlohmann::json(nullptr);
   j["points"] = r.points;
   j["finished"] = r.finished;
   j["failed"] = r.failed;
@@ -90,7 +96,7 @@ void register_sweep(CLI::App& app) {
   auto a = std::make_shared<SweepArguments>();
   auto* cmd = app.add_subcommand(
       "sweep",
-      "Run one job (bright, drive, modulated) over a grid or list of parameter points described in a TOML "
+      "Run one job (bright, drive, modulated, dark continue, regime intervals) over a grid or list of parameter points described in a TOML "
       "file, in-process on threads (and over MPI ranks under mpirun or srun); results in one HDF5 file "
       "(and a CSV view for small sweeps). A stopped sweep continues from its results file.");
   cmd->add_option("--config", a->config, "the sweep file (docs/sweeps.md)")->required();

@@ -13,6 +13,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/experiment_config.hpp"
 #include "lrchain/sim/more_experiment_config.hpp"
+#include "lrchain/sim/sweep/study_jobs.hpp"
 
 namespace lrchain::sim::sweep {
 
@@ -135,8 +136,28 @@ const char* to_string(PointStatus s) {
 
 std::string status_legend() { return "0 missing, 1 ok, 2 blew_up, 3 numerical_failure, 4 invalid"; }
 
-Job::Job(config::Document base) : base_(std::move(base)), kind_(experiment_kind(base_)) {
-  if (kind_ == "bright") {
+std::vector<std::string> job_kinds() {
+  std::vector<std::string> k = experiment_kinds();
+  k.insert(k.end(), study_kinds().begin(), study_kinds().end());
+  return k;
+}
+
+std::string job_kind(const config::Document& doc) {
+  static const config::TableSchema first_look{
+      "", {config::choice("experiment", job_kinds(), "", "").require()}, config::anything("")};
+  std::string kind;
+  config::check(doc, first_look).read("experiment", kind);
+  return kind;
+}
+
+std::string Job::rows_legend() const { return is_study_kind(kind_) ? study_rows_legend(kind_) : std::string(); }
+
+Job::Job(config::Document base) : base_(std::move(base)), kind_(job_kind(base_)) {
+  if (is_study_kind(kind_)) {
+    check_study_config(kind_, base_);
+    scalar_names_ = study_scalar_names(kind_);
+    row_names_ = study_row_names(kind_);
+  } else if (kind_ == "bright") {
     load_experiment_config(base_);
     scalar_names_ = names_of(bright_scalars());
   } else if (kind_ == "drive") {
@@ -150,7 +171,8 @@ Job::Job(config::Document base) : base_(std::move(base)), kind_(experiment_kind(
 
 std::vector<std::string> Job::parameters() const {
   std::vector<std::string> p;
-  for (const auto& table : experiment_schema(kind_).keys) {
+  const auto& schema = is_study_kind(kind_) ? study_schema(kind_) : experiment_schema(kind_);
+  for (const auto& table : schema.keys) {
     if (table.type != config::ValueType::table) continue;
     for (const auto& key : table.table->keys)
       if (key.type == config::ValueType::number || key.type == config::ValueType::integer)
@@ -170,16 +192,18 @@ JobResult Job::run(const Overrides& overrides, const RunControl& control) const 
   JobResult r;
   try {
     const config::Document doc = with_overrides(base_, overrides);
-    if (kind_ == "bright")
+    if (is_study_kind(kind_))
+      r = run_study(kind_, doc, control);
+    else if (kind_ == "bright")
       reduce(run_bright(load_experiment_config(doc).bright, control).summary, bright_scalars(), r);
     else if (kind_ == "drive")
       reduce(run_drive(load_drive_config(doc).run, control).summary, drive_scalars(), r);
     else
       reduce(run_modulated(load_modulated_config(doc).run, control).summary, modulated_scalars(), r);
   } catch (const InputError& e) {
-    r = JobResult{PointStatus::invalid, e.what(), {}, 0};
+    r = JobResult{PointStatus::invalid, e.what(), {}, 0, {}};
   } catch (const NumericalFailure& e) {
-    r = JobResult{PointStatus::numerical_failure, e.what(), {}, 0};
+    r = JobResult{PointStatus::numerical_failure, e.what(), {}, 0, {}};
   }
   if (r.scalars.empty()) r.scalars.assign(scalar_names_.size(), none);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <stdexcept>
 
@@ -14,6 +13,7 @@
 #include <hdf5.h>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/provenance.hpp"
 
 namespace lrchain::sim::sweep {
 
@@ -86,15 +86,6 @@ bool read_dataset(hid_t where, const std::string& name, hid_t type, std::size_t 
   return H5Dread(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0;
 }
 
-std::string utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
 std::string joined(const std::vector<std::string>& items) {
   std::string s;
   for (const auto& i : items) s += (s.empty() ? "" : ",") + i;
@@ -111,21 +102,67 @@ std::filesystem::path temporary_name(const std::filesystem::path& file) {
   return file.string() + ".partial-" + std::to_string(::getpid());
 }
 
+// /rows: the rows of every point in point order, with the point each belongs to.
+void write_rows(hid_t f, const SweepResults& r) {
+  const std::size_t columns = r.row_names.size();
+  std::vector<std::uint64_t> point;
+  for (std::size_t p = 0; p < r.points; ++p) point.insert(point.end(), r.rows[p].size() / columns, p);
+  const Handle g(H5Gcreate2(f, "rows", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create group rows");
+  write_attribute(g, "legend", r.rows_legend);
+  write_dataset(g, "point", H5T_NATIVE_UINT64, {hsize_t(point.size())}, point.data());
+  std::vector<double> column(point.size());
+  for (std::size_t k = 0; k < columns; ++k) {
+    std::size_t at = 0;
+    for (std::size_t p = 0; p < r.points; ++p)
+      for (std::size_t i = k; i < r.rows[p].size(); i += columns) column[at++] = r.rows[p][i];
+    write_dataset(g, r.row_names[k], H5T_NATIVE_DOUBLE, {hsize_t(column.size())}, column.data());
+  }
+}
+
+// Reads /rows back into r.rows; false when it is absent or inconsistent.
+bool read_rows(hid_t f, SweepResults& r) {
+  if (H5Lexists(f, "rows", H5P_DEFAULT) <= 0) return false;
+  const Handle d(H5Dopen2(f, "rows/point", H5P_DEFAULT), H5Dclose, "open dataset rows/point");
+  const Handle space(H5Dget_space(d), H5Sclose, "get a data space");
+  const auto count = std::size_t(H5Sget_simple_extent_npoints(space));
+  std::vector<std::uint64_t> point(count);
+  if (!read_dataset(f, "rows/point", H5T_NATIVE_UINT64, count, point.data())) return false;
+  const std::size_t columns = r.row_names.size();
+  std::vector<double> values(count * columns);
+  for (std::size_t k = 0; k < columns; ++k)
+    if (!read_dataset(f, "rows/" + r.row_names[k], H5T_NATIVE_DOUBLE, count, values.data() + k * count)) return false;
+  for (auto& rows : r.rows) rows.clear();
+  for (std::size_t i = 0; i < count; ++i) {
+    if (point[i] >= r.points) return false;
+    auto& rows = r.rows[point[i]];
+    for (std::size_t k = 0; k < columns; ++k) rows.push_back(values[k * count + i]);
+  }
+  return true;
+}
+
 }  // namespace
 
-SweepResults::SweepResults(std::vector<std::string> names, std::size_t n)
+SweepResults::SweepResults(std::vector<std::string> names, std::size_t n, std::vector<std::string> row_columns,
+                           std::string legend)
     : scalar_names(std::move(names)),
       points(n),
       scalars(scalar_names.size() * n, std::nan("")),
       status(n, std::int8_t(PointStatus::missing)),
       wall_seconds(n, 0.0),
-      reasons(n) {}
+      reasons(n),
+      row_names(std::move(row_columns)),
+      rows_legend(std::move(legend)),
+      rows(row_names.empty() ? 0 : n) {}
+
+SweepResults::SweepResults(const Job& job, std::size_t n)
+    : SweepResults(job.scalar_names(), n, job.row_names(), job.rows_legend()) {}
 
 void SweepResults::set(std::size_t point, const JobResult& r) {
   for (std::size_t s = 0; s < scalar_names.size(); ++s) scalars[s * points + point] = r.scalars.at(s);
   status[point] = std::int8_t(r.status);
   wall_seconds[point] = r.wall_seconds;
   reasons[point] = r.reason;
+  if (!row_names.empty()) rows[point] = r.rows;
 }
 
 std::size_t SweepResults::finished() const {
@@ -141,16 +178,17 @@ std::size_t SweepResults::failed() const {
 }
 
 std::vector<std::pair<std::string, std::string>> sweep_provenance() {
-#ifdef LRCHAIN_GIT_COMMIT
-  const std::string commit = LRCHAIN_GIT_COMMIT;
-#else
-  const std::string commit = "unknown";
-#endif
-  return {{"lrchain_version", LRCHAIN_VERSION}, {"git_commit", commit}, {"date", utc_now()}};
+  const Provenance p = current_provenance();
+  return {{"lrchain_version", p.build.version},
+          {"git_commit", p.build.commit.empty() ? "unknown" : p.build.commit},
+          {"compiler", p.build.compiler},
+          {"build_type", p.build.build_type},
+          {"date", p.date}};
 }
 
 std::vector<std::pair<std::string, std::string>> sweep_identity(const SweepConfig& c,
-                                                                const std::vector<std::string>& scalar_names) {
+                                                                const std::vector<std::string>& scalar_names,
+                                                                const std::vector<std::string>& row_names) {
   std::vector<std::pair<std::string, std::string>> id{
       {"job", c.job}, {"base config", c.base_text}, {"layout", c.grid ? "grid" : "list"}};
   std::vector<std::string> parameters;
@@ -162,6 +200,7 @@ std::vector<std::pair<std::string, std::string>> sweep_identity(const SweepConfi
     id.emplace_back("values of axis " + a.parameter, v);
   }
   id.emplace_back("scalars", joined(scalar_names));
+  if (!row_names.empty()) id.emplace_back("rows", joined(row_names));
   return id;
 }
 
@@ -204,15 +243,19 @@ void write_results(const std::filesystem::path& file, const SweepConfig& c, cons
     std::vector<const char*> reasons;
     for (const auto& s : r.reasons) reasons.push_back(s.c_str());
     write_dataset(f, "reason", utf8_string_type(), dims, reasons.data());
+    if (!r.row_names.empty()) write_rows(f, r);
     const Handle id(H5Gcreate2(f, "identity", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create group identity");
-    for (const auto& [k, v] : sweep_identity(c, r.scalar_names)) write_attribute(id, k, v);
+    for (const auto& [k, v] : sweep_identity(c, r.scalar_names, r.row_names)) write_attribute(id, k, v);
     check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flush '" + tmp.string() + "'");
   }
   replace_file(tmp, file);
 }
 
-SweepResults read_results(const std::filesystem::path& file, const SweepConfig& c,
-                          const std::vector<std::string>& scalar_names) {
+namespace {
+
+// Fills the empty results `r` of the sweep from its file (read_results).
+SweepResults read_into(const std::filesystem::path& file, const SweepConfig& c, SweepResults r) {
+  const auto& scalar_names = r.scalar_names;
   quiet_hdf5();
   const std::string name = file.string();
   if (H5Fis_hdf5(name.c_str()) <= 0)
@@ -222,14 +265,13 @@ SweepResults read_results(const std::filesystem::path& file, const SweepConfig& 
     throw InputError("'" + name + "' is not a sweep results file; remove it or choose another output");
   {
     const Handle id(H5Gopen2(f, "identity", H5P_DEFAULT), H5Gclose, "open group identity");
-    for (const auto& [item, text] : sweep_identity(c, scalar_names)) {
+    for (const auto& [item, text] : sweep_identity(c, scalar_names, r.row_names)) {
       bool found = false;
       if (read_attribute(id, item, found) != text)
         throw InputError("cannot resume the sweep from '" + name + "': its " + item +
                          " changed since the file was written; remove the file or choose another output to start over");
     }
   }
-  SweepResults r(scalar_names, c.points());
   bool ok = read_dataset(f, "status", H5T_NATIVE_INT8, r.points, r.status.data()) &&
             read_dataset(f, "wall_seconds", H5T_NATIVE_DOUBLE, r.points, r.wall_seconds.data());
   for (std::size_t s = 0; ok && s < scalar_names.size(); ++s)
@@ -241,8 +283,20 @@ SweepResults read_results(const std::filesystem::path& file, const SweepConfig& 
     if (reasons[p]) r.reasons[p] = reasons[p];
     H5free_memory(reasons[p]);
   }
+  ok = ok && (r.row_names.empty() || read_rows(f, r));
   if (!ok) throw InputError("'" + name + "' is an incomplete sweep results file; remove it or choose another output");
   return r;
+}
+
+}  // namespace
+
+SweepResults read_results(const std::filesystem::path& file, const SweepConfig& c,
+                          const std::vector<std::string>& scalar_names) {
+  return read_into(file, c, SweepResults(scalar_names, c.points()));
+}
+
+SweepResults read_results(const std::filesystem::path& file, const SweepConfig& c, const Job& job) {
+  return read_into(file, c, SweepResults(job, c.points()));
 }
 
 void write_results_csv(const std::filesystem::path& file, const SweepConfig& c, const SweepResults& r) {
@@ -262,6 +316,32 @@ void write_results_csv(const std::filesystem::path& file, const SweepConfig& c, 
         out << ',' << (std::isnan(v) ? std::string() : fmt::format("{}", v));
       }
       out << fmt::format(",{}\n", r.wall_seconds[p]);
+    }
+    out.flush();
+    if (!out) throw std::runtime_error("cannot write '" + tmp.string() + "'");
+  }
+  replace_file(tmp, file);
+}
+
+
+void write_rows_csv(const std::filesystem::path& file, const SweepConfig& c, const SweepResults& r) {
+  const auto tmp = temporary_name(file);
+  {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error("cannot write '" + tmp.string() + "'");
+    out << "point";
+    for (const auto& a : c.axes) out << ',' << a.parameter;
+    for (const auto& n : r.row_names) out << ',' << n;
+    out << '\n';
+    const std::size_t columns = r.row_names.size();
+    for (std::size_t p = 0; p < r.points; ++p) {
+      const auto overrides = c.overrides(p);
+      for (std::size_t i = 0; i < r.rows[p].size(); i += columns) {
+        out << p;
+        for (const auto& [parameter, value] : overrides) out << fmt::format(",{}", value);
+        for (std::size_t k = 0; k < columns; ++k) out << fmt::format(",{}", r.rows[p][i + k]);
+        out << '\n';
+      }
     }
     out.flush();
     if (!out) throw std::runtime_error("cannot write '" + tmp.string() + "'");

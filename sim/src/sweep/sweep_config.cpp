@@ -88,15 +88,17 @@ std::vector<double> axis_values(const CheckedTable& a) {
 const TableSchema& sweep_schema() {
   static const TableSchema s{
       "a sweep",
-      {choice("job", {"bright", "drive", "modulated"}, "", "the job run at every point").require(),
+      {choice("job", job_kinds(), "", "the job run at every point").require(),
        string("name", "the file name without .toml", "a label recorded in the results"),
-       string("base", "", "the job's base experiment config (path relative to this file)").require(),
+       string("base", "", "the job's base config (path relative to this file)").require(),
        string("output", "", "the results file (HDF5; path relative to the working directory)").require(),
        choice("layout", {"grid", "list"}, "grid",
               "grid: every combination of the axes' values; list: the i-th values of all axes together"),
        integer("csv_max_points", 0, max_points, "10000", "also write a CSV view (output with .csv) up to this many points"),
        number("checkpoint_seconds", NumberRange::positive(), "30", "the results file is rewritten at least this often"),
-       string("figure", "none", "draw log10 of this scalar over a two-axis grid (PNG next to the output)"),
+       string("figure", "none",
+              "draw log10 of this scalar over a two-axis grid, or for \"dark continue\" over one axis "
+              "\"stability\": the branches in the (axis, omega_b) plane (PNG next to the output)"),
        tables("axis", axis_schema()).require()},
       std::nullopt};
   return s;
@@ -187,7 +189,9 @@ SweepConfig load_sweep_config(const std::filesystem::path& file) {
       throw error_at(a, "[[axis]]", "parameter", "the grid has more than 1e9 points");
     c.axes.push_back(std::move(axis));
   }
-  if (root.read("figure", c.figure)) {
+  if (root.read("figure", c.figure) && c.job == "dark continue" && c.figure == "stability") {
+    if (c.axes.size() != 1) throw error_at(root, "the top level", "figure", "the stability figure needs exactly one axis");
+  } else if (!c.figure.empty()) {
     const auto& names = job.scalar_names();
     if (std::find(names.begin(), names.end(), c.figure) == names.end()) {
       const std::string near = closest_match(c.figure, names);

@@ -46,6 +46,25 @@ std::vector<double> fitted_exponents(const Axis& x, const Axis& y, const SweepRe
   return p;
 }
 
+// Draws `figures` into dir; the files written, scripts and PNGs, appended to `files`.
+void draw_figures(const std::filesystem::path& dir, const std::vector<FigureScript>& figures, std::vector<std::string>& files) {
+  Figures drawn(dir);
+  drawn.draw_all(figures);
+  for (const auto& f : figures) files.push_back(f.script);
+  for (const auto& png : drawn.drawn()) files.push_back(png);
+  if (!drawn.warning().empty()) fmt::print(stderr, "{}\n", drawn.warning());
+}
+
+std::filesystem::path directory_of(const std::filesystem::path& output) {
+  return output.has_parent_path() ? output.parent_path() : std::filesystem::path(".");
+}
+
+std::size_t index_of(const std::vector<std::string>& names, const std::string& name) {
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) throw std::logic_error("no column " + name);
+  return std::size_t(it - names.begin());
+}
+
 }  // namespace
 
 std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& job, const SweepResults& r,
@@ -62,7 +81,7 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
                      std::abs(y.values.back() / y.values.front()) >= 10;
   const double sign = y_negative ? -1.0 : 1.0;  // of the values drawn
   const std::string stem = c.output.stem().string() + "_" + scalar;
-  const std::filesystem::path dir = c.output.has_parent_path() ? c.output.parent_path() : std::filesystem::path(".");
+  const std::filesystem::path dir = directory_of(c.output);
 
   std::ostringstream data;
   data << "# " << x.parameter << ' ' << (y_negative ? "-" : "") << y.parameter << " log10(" << scalar << ")\n";
@@ -113,11 +132,66 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
        << "plot '" << stem << "_exponent.csv' using 1:2 every ::1 with linespoints pointtype 7 notitle\n";
     figures.push_back({stem + "_exponent.gp", g2.str(), stem + "_exponent.png"});
   }
-  Figures drawn(dir);
-  drawn.draw_all(figures);
-  for (const auto& f : figures) files.push_back(f.script);
-  for (const auto& png : drawn.drawn()) files.push_back(png);
-  if (!drawn.warning().empty()) fmt::print(stderr, "{}\n", drawn.warning());
+  draw_figures(dir, figures, files);
+  return files;
+}
+
+std::vector<std::string> write_stability_figure(const SweepConfig& c, const SweepResults& r) {
+  if (c.axes.size() != 1 || r.row_names.empty()) throw InvalidParameter("figure", "needs a one-axis \"dark continue\" sweep");
+  const Axis& x = c.axes[0];
+  const bool x_log = std::all_of(x.values.begin(), x.values.end(), [](double v) { return v > 0; }) &&
+                     *std::max_element(x.values.begin(), x.values.end()) >= 10 * *std::min_element(x.values.begin(), x.values.end());
+  // Half the distance to the nearest other axis value (on the log scale when drawn so), for
+  // drawing the two parts of a branch side by side.
+  std::vector<double> drawn_x(x.values.size());
+  for (std::size_t i = 0; i < x.values.size(); ++i) drawn_x[i] = x_log ? std::log(x.values[i]) : x.values[i];
+  double gap = 0;
+  for (std::size_t i = 0; i < drawn_x.size(); ++i)
+    for (std::size_t j = 0; j < drawn_x.size(); ++j)
+      if (drawn_x[i] != drawn_x[j]) gap = gap == 0 ? std::abs(drawn_x[i] - drawn_x[j]) : std::min(gap, std::abs(drawn_x[i] - drawn_x[j]));
+  const double shift = gap > 0 ? 0.15 * gap : (x_log ? 0.02 : 0.02 * std::max(1.0, std::abs(x.values[0])));
+  auto shifted = [&](double v, double side) { return x_log ? v * std::exp(side * shift) : v + side * shift; };
+
+  const std::size_t columns = r.row_names.size(), omega = index_of(r.row_names, "omega_b"),
+                    stability = index_of(r.row_names, "stability"), part = index_of(r.row_names, "part");
+  const std::size_t turning = index_of(r.scalar_names, "first_turning_point"), edge = index_of(r.scalar_names, "omega_edge");
+  const std::string stem = c.output.stem().string() + "_stability";
+  const std::filesystem::path dir = directory_of(c.output);
+  std::ostringstream points, marks;
+  points << "# drawn " << x.parameter << ", omega_b, class (0 stable, 1 real-unstable, 2 oscillatory-unstable), part, "
+         << x.parameter << "\n";
+  marks << "# " << x.parameter << ", first turning point omega_b, band edge omega(pi)\n";
+  for (std::size_t p = 0; p < r.points; ++p) {
+    const double v = x.values[p];
+    for (std::size_t i = 0; i + columns <= r.rows[p].size(); i += columns) {
+      const int code = int(r.rows[p][i + stability]);
+      const int kind = code & 1 ? 1 : (code ? 2 : 0);
+      const double which = r.rows[p][i + part];
+      points << fmt::format("{} {} {} {} {}\n", shifted(v, which == 0 ? -1 : 1), r.rows[p][i + omega], kind, which, v);
+    }
+    const double t = r.scalars[turning * r.points + p], e = r.scalars[edge * r.points + p];
+    marks << fmt::format("{} {} {}\n", v, std::isfinite(t) ? fmt::format("{}", t) : "NaN", std::isfinite(e) ? fmt::format("{}", e) : "NaN");
+  }
+  write_file_atomic(dir, stem + ".dat", points.str());
+  write_file_atomic(dir, stem + "_marks.dat", marks.str());
+  std::vector<std::string> files{stem + ".dat", stem + "_marks.dat"};
+  const auto [lo, hi] = std::minmax_element(x.values.begin(), x.values.end());
+  std::ostringstream gp;
+  gp << "# Dark-breather branches in the (" << x.parameter << ", omega_b) plane from " << c.output.filename().string()
+     << ". Re-run: gnuplot " << stem << ".gp\n"
+     << "if (!exists(\"outfile\")) outfile = '" << stem << ".png'\n"
+     << "set terminal pngcairo size 1000,700 noenhanced\nset output outfile\n"
+     << "set xlabel '" << x.parameter << " (points left of each value: before the first turning point; right: after)'\n"
+     << "set ylabel 'omega_b'\nset key outside right top\nset grid\n"
+     << (x_log ? "set logscale x\n" : "")
+     << fmt::format("set xrange [{}:{}]\n", shifted(*lo, -3), shifted(*hi, 3))
+     << "set title '" << c.name << ": dark-breather branches and their Floquet stability'\n"
+     << "plot '" << stem << ".dat' using 1:($3 == 0 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#009900' title 'stable', \\\n"
+     << "     '' using 1:($3 == 1 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#dd0000' title 'real-unstable', \\\n"
+     << "     '' using 1:($3 == 2 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#0000dd' title 'oscillatory-unstable', \\\n"
+     << "     '" << stem << "_marks.dat' using 1:2 with points pointtype 2 pointsize 2 lw 2 lc rgb 'black' title 'turning point', \\\n"
+     << "     '' using 1:3 with lines dashtype 2 lc rgb 'gray40' title 'band edge omega(pi)'\n";
+  draw_figures(dir, {{stem + ".gp", gp.str(), stem + ".png"}}, files);
   return files;
 }
 

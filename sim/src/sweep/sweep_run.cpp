@@ -52,14 +52,14 @@ void run_points(const Job& job, const SweepConfig& c, PointQueue& queue, int thr
 
 ResultsKeeper::ResultsKeeper(const SweepConfig& c, const Job& job, const SweepRunOptions& o)
     : config_(c),
-      results_(job.scalar_names(), c.points()),
+      results_(job, c.points()),
       last_write_(std::chrono::steady_clock::now()),
       progress_(0, 0, false) {
   std::error_code ec;
   if (std::filesystem::exists(c.output, ec)) {
     if (std::filesystem::is_directory(c.output, ec))
       throw InputError("output '" + c.output.string() + "' is a directory; give a file name");
-    results_ = read_results(c.output, c, job.scalar_names());
+    results_ = read_results(c.output, c, job);
   } else if (c.output.has_parent_path()) {
     std::filesystem::create_directories(c.output.parent_path(), ec);
     if (ec) throw InputError("cannot create the directory of output '" + c.output.string() + "': " + ec.message());
@@ -69,7 +69,7 @@ ResultsKeeper::ResultsKeeper(const SweepConfig& c, const Job& job, const SweepRu
     const bool rerun = s == PointStatus::missing || (o.retry_failed && s != PointStatus::ok);
     if (rerun) {
       todo_.push_back(p);
-      if (s != PointStatus::missing) results_.set(p, JobResult{PointStatus::missing, "", std::vector<double>(results_.scalar_names.size(), std::nan("")), 0});
+      if (s != PointStatus::missing) results_.set(p, JobResult{PointStatus::missing, "", std::vector<double>(results_.scalar_names.size(), std::nan("")), 0, {}});
     }
   }
   resumed_ = results_.finished();
@@ -93,10 +93,18 @@ std::filesystem::path ResultsKeeper::csv_path() const {
   return p.replace_extension(".csv");
 }
 
+std::filesystem::path ResultsKeeper::rows_csv_path() const {
+  auto p = config_.output;
+  return p.replace_extension(".rows.csv");
+}
+
 void ResultsKeeper::write_final() {
   std::lock_guard<std::mutex> lock(mutex_);
   write_results(config_.output, config_, results_);
-  if (results_.points <= config_.csv_max_points) write_results_csv(csv_path(), config_, results_);
+  if (results_.points <= config_.csv_max_points) {
+    write_results_csv(csv_path(), config_, results_);
+    if (!results_.row_names.empty()) write_rows_csv(rows_csv_path(), config_, results_);
+  }
   progress_.finish(results_.finished());
 }
 

@@ -39,7 +39,7 @@ T take(const std::vector<char>& b, std::size_t& at) {
   return v;
 }
 
-// A request: want-more flag, then (point, status, wall time, scalars, reason) per finished point.
+// A request: want-more flag, then (point, status, wall time, scalars, reason, rows) per finished point.
 std::vector<char> pack_request(bool want_more, const std::vector<std::pair<std::size_t, JobResult>>& done) {
   std::vector<char> b;
   put<std::uint8_t>(b, want_more ? 1 : 0);
@@ -52,6 +52,8 @@ std::vector<char> pack_request(bool want_more, const std::vector<std::pair<std::
     for (double v : r.scalars) put<double>(b, v);
     put<std::uint64_t>(b, r.reason.size());
     b.insert(b.end(), r.reason.begin(), r.reason.end());
+    put<std::uint64_t>(b, r.rows.size());
+    for (double v : r.rows) put<double>(b, v);
   }
   return b;
 }
@@ -121,6 +123,8 @@ class Coordinator final : public PointQueue {
         const auto length = take<std::uint64_t>(b, at);
         r.reason.assign(b.data() + at, length);
         at += length;
+        r.rows.resize(take<std::uint64_t>(b, at));
+        for (double& v : r.rows) v = take<double>(b, at);
         keeper_.record(point, r);
         ++ran_;
       }

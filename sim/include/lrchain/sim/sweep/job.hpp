@@ -1,8 +1,10 @@
 #pragma once
 // One point of a parameter study, run in-process: a simulate job ("bright", "drive", "modulated")
-// described by a base experiment config (examples/*.toml) and parameter overrides ("bright.theta",
-// "model.rho", "integrator.dt", ... any number or integer key of the job's schema). No process is
-// spawned and nothing is written: the run yields the job's summary scalars and a status.
+// described by a base experiment config (examples/*.toml), or a study job ("dark continue",
+// "regime intervals"; sweep/study_jobs.hpp) described by its own base config, and parameter
+// overrides ("bright.theta", "model.rho", "dark.edge_offset", ... any number or integer key of the
+// job's schema). No process is spawned and nothing is written: the run yields the job's summary
+// scalars, for some jobs a table of rows (one per branch point, per interval), and a status.
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -24,6 +26,7 @@ struct JobResult {
   std::string reason;                         // why it failed (empty when ok)
   std::vector<double> scalars;                // in the order of Job::scalar_names(); NaN: none
   double wall_seconds = 0;
+  std::vector<double> rows;                   // jobs with rows (Job::row_names()): row-major, in order
 };
 
 // (parameter, value) pairs set on top of the base config for one point.
@@ -39,6 +42,9 @@ class Job {
   const config::Document& base() const noexcept { return base_; }
   // The summary scalars each point yields (max_Ex, centre_speed, blew_up, ...).
   const std::vector<std::string>& scalar_names() const noexcept { return scalar_names_; }
+  // The columns of the job's rows (empty: the job has none), and what their codes mean.
+  const std::vector<std::string>& row_names() const noexcept { return row_names_; }
+  std::string rows_legend() const;
   // The parameters a point may override: "table.key" for every number or integer key.
   std::vector<std::string> parameters() const;
   bool has_parameter(const std::string& parameter) const;
@@ -51,7 +57,13 @@ class Job {
  private:
   config::Document base_;
   std::string kind_;
-  std::vector<std::string> scalar_names_;
+  std::vector<std::string> scalar_names_, row_names_;
 };
+
+// The kind of a base config: its `experiment` key, one of the simulate kinds or the study kinds
+// (ConfigError naming the file and line otherwise).
+std::string job_kind(const config::Document& doc);
+// The jobs a sweep can run.
+std::vector<std::string> job_kinds();
 
 }  // namespace lrchain::sim::sweep

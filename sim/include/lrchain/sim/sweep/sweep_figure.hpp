@@ -18,4 +18,11 @@ namespace lrchain::sim::sweep {
 std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& job, const SweepResults& r,
                                              const std::string& scalar);
 
+// The figure of a one-axis "dark continue" sweep (figure = "stability"): every branch point in the
+// (axis, omega_b) plane, coloured stable / real-unstable / oscillatory-unstable (oscillatory or
+// period doubling, no real multiplier > 1), the weakly nonlinear part (before the first turning
+// point) left of the axis value and the rest right of it, the first turning point and the band
+// edge omega(pi) of each point. Returns the files written, as write_sweep_figures.
+std::vector<std::string> write_stability_figure(const SweepConfig& c, const SweepResults& r);
+
 }  // namespace lrchain::sim::sweep

@@ -53,6 +53,7 @@ class ResultsKeeper {
   void write_final();
   const SweepResults& results() const noexcept { return results_; }
   std::filesystem::path csv_path() const;
+  std::filesystem::path rows_csv_path() const;  // the rows' CSV view (jobs with rows)
 
  private:
   const SweepConfig& config_;
