@@ -75,7 +75,7 @@ namespace {
 double largest_linear_frequency(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters) {
   double largest = 0;
   for (int k = 1; k <= 16; ++k)
-    for (const auto& m : bloch_modes(kernels, parameters, std::numbers::pi * k / 16)) largest = std::max(largest, m.omega);
+    for (double omega : branch_frequencies(kernels, parameters, std::numbers::pi * k / 16)) largest = std::max(largest, omega);
   return largest;
 }
 

@@ -13,11 +13,19 @@
 
 namespace lrchain::sim {
 
+namespace {
+
 // D(theta)_{gf} = sum_m d_{gf,m} e^{i m theta} from the Jacobian at rest applied to cos(n theta)
 // and sin(n theta) on one field, read at a middle site n0 of a fixed-end chain (shifts are <= 3):
-// (J cos)_g[n0] + i (J sin)_g[n0] = e^{i n0 theta} D_{gf}. Then D K = -omega^2 K.
-std::vector<BlochMode> bloch_modes(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
-                                   double theta) {
+// (J cos)_g[n0] + i (J sin)_g[n0] = e^{i n0 theta} D_{gf}. Then D K = -omega^2 K. The
+// eigen-decomposition, with its eigenvalue order by increasing omega^2.
+struct BlochProblem {
+  Eigen::ComplexEigenSolver<Eigen::MatrixXcd> solver;
+  std::vector<std::size_t> order;
+  double scale = 0;
+};
+
+BlochProblem bloch_problem(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters, double theta) {
   constexpr std::size_t sites = 16, n0 = 8;
   const ModelLattice chain(kernels, parameters, sites, false, LatticeForm::displacement);
   const std::size_t fields = chain.fields(), size = chain.positions();
@@ -35,26 +43,48 @@ std::vector<BlochMode> bloch_modes(const lrchain_lattice_kernels& kernels, const
       D(Eigen::Index(g), Eigen::Index(f)) =
           back * std::complex<double>(response_cos[g * sites + n0], response_sin[g * sites + n0]);
   }
-  const Eigen::ComplexEigenSolver<Eigen::MatrixXcd> solver(D);
-  std::vector<std::size_t> order(fields);
-  std::iota(order.begin(), order.end(), 0);
-  const auto omega2 = [&](std::size_t i) { return -solver.eigenvalues()(Eigen::Index(i)).real(); };
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return omega2(a) < omega2(b); });
-  const double scale = D.cwiseAbs().maxCoeff();
+  BlochProblem p;
+  p.solver.compute(D);
+  p.order.resize(fields);
+  std::iota(p.order.begin(), p.order.end(), 0);
+  const auto omega2 = [&](std::size_t i) { return -p.solver.eigenvalues()(Eigen::Index(i)).real(); };
+  std::sort(p.order.begin(), p.order.end(), [&](std::size_t a, std::size_t b) { return omega2(a) < omega2(b); });
+  p.scale = D.cwiseAbs().maxCoeff();
+  return p;
+}
+
+// omega of eigenvalue i, or InvalidParameter("theta") where it is not real and positive.
+double branch_frequency(const lrchain_lattice_kernels& kernels, const BlochProblem& p, std::size_t i, double theta) {
+  const std::complex<double> lambda = p.solver.eigenvalues()(Eigen::Index(i));
+  if (!(-lambda.real() > 1e-12 * p.scale) || std::abs(lambda.imag()) > 1e-9 * p.scale)
+    throw InvalidParameter("theta", fmt::format("{}: a branch has no real positive frequency at theta = {} "
+                                                "(omega^2 = {})", kernels.model_name, theta, -lambda.real()));
+  return std::sqrt(-lambda.real());
+}
+
+}  // namespace
+
+std::vector<double> branch_frequencies(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                                       double theta) {
+  const BlochProblem p = bloch_problem(kernels, parameters, theta);
+  std::vector<double> omegas;
+  for (std::size_t i : p.order) omegas.push_back(branch_frequency(kernels, p, i, theta));
+  return omegas;
+}
+
+std::vector<BlochMode> bloch_modes(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                                   double theta) {
+  const BlochProblem p = bloch_problem(kernels, parameters, theta);
   std::vector<BlochMode> modes;
-  for (std::size_t i : order) {
-    const std::complex<double> lambda = solver.eigenvalues()(Eigen::Index(i));
-    if (!(-lambda.real() > 1e-12 * scale) || std::abs(lambda.imag()) > 1e-9 * scale)
-      throw InvalidParameter("theta", fmt::format("{}: a branch has no real positive frequency at theta = {} "
-                                                  "(omega^2 = {})", kernels.model_name, theta, -lambda.real()));
+  for (std::size_t i : p.order) {
     BlochMode mode;
-    mode.omega = std::sqrt(-lambda.real());
-    const auto v = solver.eigenvectors().col(Eigen::Index(i));
+    mode.omega = branch_frequency(kernels, p, i, theta);
+    const auto v = p.solver.eigenvectors().col(Eigen::Index(i));
     if (std::abs(v(0)) <= 1e-10 * v.cwiseAbs().maxCoeff())
       throw InvalidParameter("theta", fmt::format("{}: the first field is at rest in a Bloch mode at theta = {}, so "
                                                   "the NLS amplitude is undefined there; choose another theta",
                                                   kernels.model_name, theta));
-    for (std::size_t f = 0; f < fields; ++f) mode.kernel.push_back(v(Eigen::Index(f)) / v(0));
+    for (Eigen::Index f = 0; f < v.size(); ++f) mode.kernel.push_back(v(f) / v(0));
     modes.push_back(std::move(mode));
   }
   return modes;

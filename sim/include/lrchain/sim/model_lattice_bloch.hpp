@@ -22,6 +22,10 @@ struct BlochMode {
 std::vector<BlochMode> bloch_modes(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
                                    double theta);
 
+// The branch frequencies alone (increasing), with no condition on the kernel.
+std::vector<double> branch_frequencies(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                                       double theta);
+
 // Branch `branch` of bloch_modes, checked against the model's own dispersion relation: throws
 // NumericalFailure when the lattice kernels and the coefficient evaluators disagree on omega by
 // more than 1e-9 (relative): they would not describe the same lattice.
