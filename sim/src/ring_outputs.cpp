@@ -1,4 +1,6 @@
 // JSON summary, data files and gnuplot figures of a ring run (ring_run.hpp).
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
@@ -48,6 +50,12 @@ nlohmann::json to_json(const Model& model, const RingRunConfig& c, const RingRun
 
 namespace {
 
+double largest_amplitude(const RingRunResult& r) {
+  double largest = 0;
+  for (const auto& a : r.amplitudes) largest = std::max(largest, a.amplitude);
+  return largest;
+}
+
 std::string frequency_script(const RingRunResult& r) {
   return fmt::format(R"GP(# Plane-wave frequency on the ring vs amplitude U: measured (points) and omega + h U^2/4 (line).
 if (!exists("outfile")) outfile = 'frequency.png'
@@ -59,11 +67,11 @@ h = {:.17g}
 set xlabel "U (amplitude of the first field)"
 set ylabel "frequency"
 set key top left
-set xrange [0:*]
+set xrange [0:{:.17g}]
 plot omega + h*x**2/4 with lines lw 2 lc rgb "blue" title "omega + h U^2/4 (derived)", \
      'ring_frequency.csv' using 1:2 skip 1 with points pt 7 ps 1.4 lc rgb "red" title "lattice"
 )GP",
-                     r.omega, r.h);
+                     r.omega, r.h, 1.1 * largest_amplitude(r));
 }
 
 std::string packet_script(const RingRunResult& r) {
