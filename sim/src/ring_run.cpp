@@ -77,12 +77,13 @@ void validate(const RingRunConfig& c) {
   if (c.amplitudes.empty() || c.amplitudes.size() > 64)
     throw InvalidParameter("amplitudes", "give 1 to 64 plane-wave amplitudes");
   for (double a : c.amplitudes)
-    if (!(a > 0 && std::isfinite(a))) throw InvalidParameter("amplitudes", "each amplitude must be a finite number > 0");
+    if (!(a > 0 && a <= 10))
+      throw InvalidParameter("amplitudes", "each amplitude must be in (0, 10]: the check is of small amplitudes");
   if (!(c.periods >= 10 && c.periods <= 1e5)) throw InvalidParameter("periods", "must be in [10, 1e5] carrier periods");
   if (!(c.steps_per_period >= 8 && c.steps_per_period <= 1e4))
     throw InvalidParameter("steps-per-period", "must be in [8, 1e4]");
-  if (!(c.packet_amplitude >= 0 && std::isfinite(c.packet_amplitude)))
-    throw InvalidParameter("packet-amplitude", "must be a finite number >= 0 (0: a tenth of the smallest amplitude)");
+  if (!(c.packet_amplitude >= 0 && c.packet_amplitude <= 10))
+    throw InvalidParameter("packet-amplitude", "must be in [0, 10] (0: a tenth of the smallest amplitude)");
   if (!(c.packet_width >= 4 && c.packet_width <= 1000)) throw InvalidParameter("packet-width", "must be in [4, 1000] sites");
 }
 

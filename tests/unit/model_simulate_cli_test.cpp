@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/sim/model_experiment_config.hpp"
-#include "support/run_lrchain.hpp"
+#include "../support/run_lrchain.hpp"
 
 namespace fs = std::filesystem;
 using lrchain::test::run_lrchain;
