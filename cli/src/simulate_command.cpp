@@ -29,6 +29,7 @@
 #include "lrchain/sim/experiment_config.hpp"
 #include "lrchain/sim/more_experiment_config.hpp"
 #include "options.hpp"
+#include "simulate_model_commands.hpp"
 #include "stop_signals.hpp"
 
 namespace lrchain::cli {
@@ -248,6 +249,12 @@ void register_simulate(CLI::App& app) {
   auto max_memory = std::make_shared<double>(0.0);
   add_max_memory(*sim_cmd, *max_memory);
   sim_cmd->require_subcommand(0, 1);
+  {
+    // `simulate ring` (simulate_ring.cpp) reports through --out, --json and --no-figures too.
+    auto compact = std::shared_ptr<bool>(style, &style->compact_json);
+    auto figures = std::shared_ptr<bool>(style, &style->figures);
+    register_simulate_ring(*sim_cmd, {out, compact, figures});
+  }
 
   // simulate bright
   auto cfg = std::make_shared<sim::BrightRunConfig>();
@@ -255,12 +262,13 @@ void register_simulate(CLI::App& app) {
   auto snapshots = std::make_shared<std::vector<double>>();
   auto* bright = sim_cmd->add_subcommand(
       "bright", "Lattice run from the NLS bright breather (eq:focus_app, eq:focus_ini), Sec. 4.2");
-  bright->add_option("--branch", [cfg](const std::vector<std::string>& v) {
-    cfg->branch = parse_branch(v.at(0));
-    return true;
-  }, "optical or acoustic")->required()->type_name("B");
+  auto bright_branch = std::make_shared<std::string>();
+  bright->add_option("--branch", *bright_branch, "optical or acoustic (with --model: a branch of the model)")
+      ->required()->type_name("B");
   add_number(*bright, "--theta", cfg->theta, "carrier wavenumber in (0, pi]")->required();
   add_model_options(*bright, cfg->params, false);
+  auto bright_model = std::make_shared<ModelSelection>();
+  add_model_file_options(*bright, *bright_model);
   bright->add_option_function<std::string>("--detuning", [cfg](const std::string& s) {
     cfg->detuning = parse_number(s, "detuning");
   }, "omega_b - omega (default sign(h_tilde)*1e-4)")->type_name("NUM");
@@ -280,6 +288,14 @@ void register_simulate(CLI::App& app) {
   add_integrator_options(*bright, cfg->integrator, *stepper);
   bright->fallthrough();  // --out, --json may follow the subcommand
   bright->callback([=] {
+    if (!bright_model->file.empty()) {  // any model file: simulate_model_bright.cpp
+      run_model_bright_command(*bright_model, *bright_branch, *cfg, *bright, *sim_cmd,
+                               {out, std::shared_ptr<bool>(style, &style->compact_json),
+                                std::shared_ptr<bool>(style, &style->figures)});
+      return;
+    }
+    if (!bright_model->set.empty()) throw InputError("--set needs --model FILE (the resonant chain takes --rho, --kappa, ...)");
+    cfg->branch = parse_branch(*bright_branch);
     cfg->integrator.stepper = sim::parse_stepper(*stepper);
     if (bright->count("--dt") > 0) cfg->integrator.automatic_dt = false;
     if (!snapshots->empty()) cfg->snapshot_periods = *snapshots;
@@ -358,7 +374,10 @@ void register_simulate(CLI::App& app) {
   sim_cmd->callback([=] {
     if (!sim_cmd->get_subcommands().empty()) return;
     if (config->empty())
-      throw InvalidParameter("config", "give a subcommand (bright, drive, modulated) or --config FILE.toml");
+      throw InvalidParameter("config", "give a subcommand (bright, drive, modulated, ring) or --config FILE.toml");
+    if (run_model_bright_config(*config, *sim_cmd, {out, std::shared_ptr<bool>(style, &style->compact_json),
+                                                    std::shared_ptr<bool>(style, &style->figures)}))
+      return;  // a model file's bright config (simulate_model_bright.cpp)
     const std::string kind = sim::experiment_kind(*config);
     if (kind == "drive") {
       auto dc = sim::load_drive_config(*config);

@@ -28,6 +28,9 @@ const std::map<std::string, std::vector<std::string>>& base_commands() {
       {"simulate bright",
        {"--branch", "optical", "--theta", "pi/2", "--N", "50", "--periods", "1", "--sample-every", "0.25",
         "--spacetime-every", "0.5", "--snapshots", "0", "1", "--out", "@OUT@", "--json"}},
+      {"simulate ring",
+       {"--model", LRCHAIN_SOURCE_DIR "/models/fput.toml", "--branch", "acoustic", "--theta", "pi/2", "--periods",
+        "10", "--packet-width", "4", "--out", "@OUT@", "--json"}},
       {"simulate drive",
        {"--beads", "50", "--t-end", "2", "--t-m", "1", "--sample-every", "1", "--spacetime-every", "2",
         "--snapshots", "1", "2", "--front-fit-start", "0", "--front-fit-end", "2", "--out", "@OUT@", "--json"}},
@@ -108,6 +111,7 @@ const std::vector<FileOption>& file_options() {
 const std::vector<OutputOption>& output_options() {
   static const std::vector<OutputOption> outputs = {
       {"regime map", "out", false},        {"simulate bright", "out", false}, {"simulate drive", "out", false},
+      {"simulate ring", "out", false},
       {"simulate modulated", "out", false}, {"simulate modulated", "checkpoint", true},
       {"dark solve", "out", false},         {"dark floquet", "out", false},    {"dark continue", "out", false},
       {"dark evolve", "out", false},        {"reproduce", "out", false},

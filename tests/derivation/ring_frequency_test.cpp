@@ -12,8 +12,9 @@
 
 #include "lrchain/derivation/branches.hpp"
 #include "lrchain/derivation/model_derivation.hpp"
-#include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/model_lattice.hpp"
+#include "lrchain/sim/model_lattice_bloch.hpp"
+#include "lrchain/sim/ring_run.hpp"
 
 using namespace lrchain::derivation;
 using namespace lrchain::sim;
@@ -41,60 +42,25 @@ RingPrediction predict(const std::string& model, double theta, std::size_t branc
   return p;
 }
 
-// Frequency of the plane wave from the slope of the phase of its mode amplitude
-// z(t) = sum_n u_0[n] e^{-i n theta} (least squares over `periods` carrier periods).
-double measured_frequency(const lrchain_lattice_kernels& kernels, const RingPrediction& p, std::size_t sites,
-                          std::size_t mode, double amplitude, int periods) {
-  const double theta = 2 * std::numbers::pi * double(mode) / double(sites);
-  ModelLattice ring(kernels, p.parameters, sites, true, LatticeForm::displacement);
-  const std::size_t fields = ring.fields();
-  State s(2 * fields * sites, 0.0);
-  for (std::size_t f = 0; f < fields; ++f)
-    for (std::size_t n = 0; n < sites; ++n) {
-      const std::complex<double> z = p.kernel[f] * std::polar(1.0, theta * double(n));
-      s[f * sites + n] = amplitude * z.real();                        // U Re(K e^{i n theta})
-      s[(fields + f) * sites + n] = amplitude * p.omega * z.imag();  // d/dt of U Re(K e^{i(n theta - omega t)})
-    }
-  const double period = 2 * std::numbers::pi / p.omega;
-  std::vector<double> times;
-  for (int i = 0; i <= 40 * periods; ++i) times.push_back(period * i / 40.0);
-  IntegratorOptions opt;
-  opt.stepper = StepperKind::srkn11b;
-  opt.dt = period / 80;
-  double previous = 0, unwrapped = 0, st = 0, sp = 0, stt = 0, stp = 0;
-  bool first = true;
-  integrate_observed(ring, s, times, [&](const State& x, double t) {
-    std::complex<double> z = 0;
-    for (std::size_t n = 0; n < sites; ++n) z += x[n] * std::polar(1.0, -theta * double(n));
-    const double phase = std::arg(z);
-    if (!first) {
-      double step = phase - previous;
-      while (step > std::numbers::pi) step -= 2 * std::numbers::pi;
-      while (step < -std::numbers::pi) step += 2 * std::numbers::pi;
-      unwrapped += step;
-    }
-    first = false;
-    previous = phase;
-    st += t;
-    sp += unwrapped;
-    stt += t * t;
-    stp += t * unwrapped;
-    return true;
-  }, opt);
-  const double count = double(times.size());
-  return -(count * stp - st * sp) / (count * stt - st * st);
-}
-
 void check_ring(const std::string& model, std::size_t branch, double amplitude) {
-  const std::size_t sites = 16, mode = 4;  // theta = pi/2
-  const double theta = 2 * std::numbers::pi * double(mode) / double(sites);
+  const std::size_t sites = 16, mode_number = 4;  // theta = pi/2
+  const double theta = 2 * std::numbers::pi * double(mode_number) / double(sites);
   const RingPrediction p = predict(model, theta, branch);
   const lrchain_lattice_kernels* kernels = shipped_lattice_kernels(model);
   REQUIRE(kernels != nullptr);
+  // The derivation's kernel and omega (not the lattice code's Bloch mode) set up the plane wave.
+  BlochMode mode;
+  mode.omega = p.omega;
+  mode.kernel = p.kernel;
+  const std::vector<BlochMode> lattice_modes = bloch_modes(*kernels, p.parameters, theta);
+  REQUIRE(branch < lattice_modes.size());
+  CHECK(lattice_modes[branch].omega == doctest::Approx(p.omega).epsilon(1e-12));
+  for (std::size_t f = 0; f < p.kernel.size(); ++f)
+    CHECK(std::abs(lattice_modes[branch].kernel[f] - p.kernel[f]) < 1e-10 * (1 + std::abs(p.kernel[f])));
   double error[2];
   for (int halving = 0; halving < 2; ++halving) {
     const double U = amplitude / (1 << halving);
-    const double shift = measured_frequency(*kernels, p, sites, mode, U, 400) - p.omega;
+    const double shift = measure_ring_frequency(*kernels, p.parameters, mode, long(sites), long(mode_number), U, 400, 80) - p.omega;
     const double predicted = p.h * U * U / 4;
     error[halving] = std::abs(shift - predicted) / std::abs(predicted);
     std::printf("ring %s branch %zu theta pi/2: omega %.10f h %.6g U %.4g shift measured %.6e predicted %.6e (rel. diff %.2e)\n",

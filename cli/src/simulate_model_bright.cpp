@@ -1,0 +1,88 @@
+// `lrchain simulate bright --model FILE ...` and `simulate --config` with `model = "FILE"`: the NLS
+// bright breather of any model file on its generated lattice (sim/model_bright_run.hpp).
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/model_experiment_config.hpp"
+#include "lrchain/sim/output_lock.hpp"
+#include "model_option.hpp"
+#include "simulate_model_commands.hpp"
+
+namespace lrchain::cli {
+
+namespace {
+
+// Checks the run (branch, options, focusing, detuning, --out) before anything is written, then
+// runs it, writes --out and prints the JSON summary.
+void run_and_report_model_bright(const Model& model, sim::ModelBrightConfig c, const std::string& branch,
+                                 const std::string& out, const ModelRunOutput& output, const std::string& name) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const lrchain_lattice_kernels& kernels = sim::lattice_kernels_of(model);
+  c.branch = model.branch(branch);
+  sim::validate(c);
+  const sim::ModelBrightAnsatz check(model, kernels, c.branch, c.theta, c.detuning, c.n0);  // focusing, detuning
+  std::error_code ec;
+  if (!out.empty() && std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
+    throw InputError("--out '" + out + "' exists and is not a directory");
+  std::optional<sim::OutputLock> lock;
+  if (!out.empty()) lock.emplace(out);
+  const sim::ModelBrightResult r = sim::run_model_bright(model, kernels, c);
+  nlohmann::json j = sim::to_json(model, c, r);
+  if (!name.empty()) j["name"] = name;
+  j["model"] = model_json(model);
+  if (!out.empty()) {
+    j["out"] = out;
+    j["figures"] = sim::write_model_bright_outputs(out, r, j, *output.figures);
+  }
+  j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  std::cout << (*output.compact_json ? j.dump() : j.dump(2)) << std::endl;
+}
+
+}  // namespace
+
+void run_model_bright_command(const ModelSelection& selection, const std::string& branch,
+                              const sim::BrightRunConfig& bright, const CLI::App& cmd, const CLI::App& simulate,
+                              const ModelRunOutput& output) {
+  // Options of the resonant chain's run that the model run does not have.
+  for (const char* name : {"--ansatz-ends", "--snapshots", "--spacetime-every", "--error-window", "--checkpoint-every",
+                           "--stepper", "--abs-tol", "--rel-tol"})
+    if (cmd.count(name) > 0)
+      throw InputError(std::string(name) + " is not available with --model (model bright runs use srkn11b; see "
+                                           "lrchain simulate bright --help)");
+  for (const char* name : {"--restart", "--checkpoint"})
+    if (simulate.count(name) > 0) throw InputError(std::string(name) + " is not available with simulate bright --model");
+  const Model model = load_selected_model(selection, cmd, bright.params);
+  sim::ModelBrightConfig c;
+  c.theta = bright.theta;
+  c.detuning = bright.detuning;
+  c.n0 = bright.n0;
+  c.N = bright.N;
+  c.periods = bright.periods;
+  c.sample_every = bright.sample_every;
+  if (cmd.count("--dt") > 0) c.dt = bright.integrator.dt;
+  run_and_report_model_bright(model, c, branch, *output.out, output, "");
+}
+
+bool run_model_bright_config(const std::string& file, const CLI::App& simulate, const ModelRunOutput& output) {
+  const config::Document doc = config::Document::from_file(file);
+  if (!sim::is_model_experiment(doc)) return false;
+  for (const char* name : {"--restart", "--checkpoint"})
+    if (simulate.count(name) > 0) throw InputError(std::string(name) + " is not available with a model-file config");
+  const sim::ModelExperimentConfig mc = sim::load_model_experiment_config(doc);
+  ModelSelection selection;
+  selection.file = mc.model_file;
+  for (const auto& [name, value] : mc.parameters) selection.set.push_back(fmt::format("{}={:.17g}", name, value));
+  const Model model = load_selected_model(selection, simulate, Params{});
+  run_and_report_model_bright(model, mc.bright, mc.branch, !output.out->empty() ? *output.out : mc.out_dir, output,
+                              mc.name);
+  return true;
+}
+
+}  // namespace lrchain::cli

@@ -1,0 +1,32 @@
+#pragma once
+// `lrchain simulate ring` (and the model-file runs of `simulate`): subcommands registered on the
+// `simulate` command by simulate_command.cpp.
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+
+#include "lrchain/sim/bright_run.hpp"
+#include "model_option.hpp"
+
+namespace lrchain::cli {
+
+// How a model run reports: --out directory, one-line JSON, figures drawn or not.
+struct ModelRunOutput {
+  std::shared_ptr<std::string> out;
+  std::shared_ptr<bool> compact_json, figures;
+};
+
+// Adds `ring` to `simulate`.
+void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output);
+
+// `simulate bright --model FILE`: the run of simulate_model_bright.cpp with the bright options
+// (`bright`, given on `cmd`); options the model run lacks are refused (exit 2).
+void run_model_bright_command(const ModelSelection& selection, const std::string& branch,
+                              const sim::BrightRunConfig& bright, const CLI::App& cmd, const CLI::App& simulate,
+                              const ModelRunOutput& output);
+
+// `simulate --config FILE` where FILE names a model file (`model = "models/x.toml"`): runs it and
+// returns true; false (nothing done) for the resonant chain's configs.
+bool run_model_bright_config(const std::string& file, const CLI::App& simulate, const ModelRunOutput& output);
+
+}  // namespace lrchain::cli

@@ -1,0 +1,82 @@
+// `lrchain simulate ring --model FILE ...`: plane waves on a periodic ring and a small wave packet,
+// measured against the derived h and c (sim/ring_run.hpp).
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/output_lock.hpp"
+#include "lrchain/sim/ring_run.hpp"
+#include "model_option.hpp"
+#include "options.hpp"
+#include "simulate_model_commands.hpp"
+
+namespace lrchain::cli {
+
+namespace {
+
+struct RingOptions {
+  ModelSelection model;
+  std::string branch;
+  sim::RingRunConfig run;
+  std::vector<std::string> amplitudes;
+};
+
+// Validates everything (model, branch, theta, ring, amplitudes, --out), then runs and reports.
+void run_ring_command(const RingOptions& o, const CLI::App& cmd, const ModelRunOutput& output) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const Model model = load_selected_model(o.model, cmd, Params{});
+  const lrchain_lattice_kernels& kernels = sim::lattice_kernels_of(model);
+  sim::RingRunConfig run = o.run;
+  run.branch = model.branch(o.branch);
+  if (!o.amplitudes.empty()) {
+    run.amplitudes.clear();
+    for (const auto& a : o.amplitudes) run.amplitudes.push_back(parse_number(a, "amplitudes"));
+  }
+  sim::validate(run);
+  coefficients(model, run.branch, run.theta);  // theta on the branch (InvalidParameter otherwise)
+  sim::bloch_mode(model, kernels, run.branch, run.theta);
+  const std::string& out = *output.out;
+  std::error_code ec;
+  if (!out.empty() && std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
+    throw InputError("--out '" + out + "' exists and is not a directory");
+  std::optional<sim::OutputLock> lock;
+  if (!out.empty()) lock.emplace(out);
+  const sim::RingRunResult r = sim::run_ring(model, kernels, run);
+  nlohmann::json j = sim::to_json(model, run, r);
+  j["model"] = model_json(model);
+  if (!out.empty()) {
+    j["out"] = out;
+    j["figures"] = sim::write_ring_outputs(out, r, j, *output.figures);
+  }
+  j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  std::cout << (*output.compact_json ? j.dump() : j.dump(2)) << std::endl;
+}
+
+}  // namespace
+
+void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output) {
+  auto o = std::make_shared<RingOptions>();
+  auto* ring = simulate.add_subcommand(
+      "ring", "Plane waves of a model on a periodic ring: frequency vs amplitude against omega + h U^2/4, and a "
+              "small wave packet's speed against c (the derived coefficients checked by the lattice itself)");
+  add_model_file_options(*ring, o->model);
+  ring->add_option("--branch", o->branch, "branch name of the model (acoustic, optical, branch0, ...)")->required()->type_name("B");
+  add_number(*ring, "--theta", o->run.theta, "carrier wavenumber 2 pi k / N in (0, pi], e.g. pi/2")->required();
+  ring->add_option("--amplitudes", o->amplitudes, "plane-wave amplitudes U of the first field (default 0.02 0.01)")
+      ->type_name("U ...");
+  add_integer(*ring, "--sites", o->run.sites, 8, 1'000'000,
+              "ring size N (default: the smallest N >= 8 with theta N / (2 pi) whole)");
+  add_number(*ring, "--periods", o->run.periods, "carrier periods per frequency measurement (default 400)");
+  add_number(*ring, "--steps-per-period", o->run.steps_per_period, "srkn11b steps per carrier period (default 80)");
+  add_number(*ring, "--packet-amplitude", o->run.packet_amplitude,
+             "wave-packet amplitude (default: a tenth of the smallest --amplitudes)");
+  add_number(*ring, "--packet-width", o->run.packet_width, "Gaussian width of the packet in sites (default 24)");
+  ring->fallthrough();
+  ring->callback([o, ring, output] { run_ring_command(*o, *ring, output); });
+}
+
+}  // namespace lrchain::cli

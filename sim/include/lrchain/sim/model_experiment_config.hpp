@@ -1,0 +1,34 @@
+#pragma once
+// Bright-breather configs of any model file: `model = "models/x.toml"` (a path, relative to the
+// directory lrchain runs in), a `[parameters]` table (values of the model's parameters; the
+// model's defaults otherwise), `[bright]` and `[output]`. Checked by the strict schema layer
+// (lrchain/config/strict_toml.hpp): unknown keys, wrong types and ranges are errors naming the
+// file, line and key; parameter names are checked against the model when it is loaded.
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lrchain/config/strict_toml.hpp"
+#include "lrchain/sim/model_bright_run.hpp"
+
+namespace lrchain::sim {
+
+struct ModelExperimentConfig {
+  std::string name;
+  std::string model_file;
+  std::vector<std::pair<std::string, double>> parameters;  // [parameters], sorted by name
+  std::string branch;
+  ModelBrightConfig bright;  // branch index left at 0: resolved once the model is loaded
+  std::string out_dir;
+};
+
+// True when the config's top-level `model` is a string (a model file), not the resonant chain's
+// [model] table.
+bool is_model_experiment(const config::Document& doc);
+// The schema of a model bright config (its [bright] table included).
+const config::TableSchema& model_experiment_schema();
+// Reads a checked model bright config (ConfigError naming file, line and key otherwise).
+ModelExperimentConfig load_model_experiment_config(const config::Document& doc);
+
+}  // namespace lrchain::sim

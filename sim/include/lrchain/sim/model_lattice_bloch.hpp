@@ -1,0 +1,41 @@
+#pragma once
+// The linear Bloch modes of a model lattice at a carrier wavenumber, read from its generated
+// Jacobian at rest: the ansatz u_f[n] = Re(K_f e^{i(n theta - omega t)}) of every plane wave, ring
+// and breather run, with no symbolic derivation in between.
+#include <complex>
+#include <cstddef>
+#include <vector>
+
+#include "lrchain/model.hpp"
+#include "lrchain/sim/model_lattice_abi.h"
+
+namespace lrchain::sim {
+
+struct BlochMode {
+  double omega = 0;                             // frequency of the branch
+  std::vector<std::complex<double>> kernel;     // Bloch vector per field, kernel[0] = 1
+};
+
+// Every branch's mode at theta, in increasing frequency (the branch order of the model file).
+// Throws InvalidParameter("theta", ...) where a branch frequency is not real and positive or the
+// first field does not move (kernel[0] = 0: the NLS amplitude is undefined there).
+std::vector<BlochMode> bloch_modes(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                                   double theta);
+
+// The branch frequencies alone (increasing), with no condition on the kernel.
+std::vector<double> branch_frequencies(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                                       double theta);
+
+// Branch `branch` of bloch_modes, checked against the model's own dispersion relation: throws
+// NumericalFailure when the lattice kernels and the coefficient evaluators disagree on omega by
+// more than 1e-9 (relative): they would not describe the same lattice.
+BlochMode bloch_mode(const Model& model, const lrchain_lattice_kernels& kernels, std::size_t branch, double theta);
+
+// The lattice parameters of `model` (its first parameter_count inputs, in the file's order).
+std::vector<double> lattice_parameters(const Model& model);
+
+// The compiled-in lattice kernels of `model`, or InputError naming the model when there are none
+// (a model file outside the shipped ones: no lattice code is compiled at run time yet).
+const lrchain_lattice_kernels& lattice_kernels_of(const Model& model);
+
+}  // namespace lrchain::sim

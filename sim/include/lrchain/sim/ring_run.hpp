@@ -1,0 +1,81 @@
+#pragma once
+// The numerical check of the NLS coefficient h and of the group velocity c of any model, with no
+// derivation in between: a plane wave of amplitude U on a periodic ring (theta = 2 pi k / N)
+// oscillates at omega + h U^2 / 4 + O(U^4) (NLS i A_tau = h |A|^2 A for a uniform envelope with
+// u_0 = eps (A E + c.c.), so U = 2 eps |A|; a ring carries no mean flow), and a small-amplitude
+// Gaussian wave packet's centre moves at c.
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "lrchain/model.hpp"
+#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/sim/model_lattice_bloch.hpp"
+#include "lrchain/sim/run_record.hpp"
+
+namespace lrchain::sim {
+
+struct RingRunConfig {
+  std::size_t branch = 0;
+  double theta = 0;                           // carrier wavenumber in (0, pi], a mode of the ring
+  std::vector<double> amplitudes{0.02, 0.01};  // U: first-field amplitude of the plane wave
+  long sites = 0;                             // ring size N; 0: the smallest N >= 8 with theta N / (2 pi) whole
+  double periods = 400;                       // carrier periods per frequency measurement
+  double steps_per_period = 80;               // srkn11b steps per carrier period
+  double packet_amplitude = 0;                // 0: a tenth of the smallest amplitude
+  double packet_width = 24;                   // standard deviation of the packet's Gaussian envelope, in sites
+};
+
+// Throws InvalidParameter naming the option (theta, sites, amplitudes, periods, ...).
+void validate(const RingRunConfig& c);
+// The ring size the run uses (c.sites or the smallest ring >= 8 with theta on it).
+long ring_sites(const RingRunConfig& c);
+
+struct RingAmplitude {
+  double amplitude = 0;
+  double measured_frequency = 0, predicted_frequency = 0;  // predicted: omega + h U^2 / 4
+  double measured_shift = 0, predicted_shift = 0;           // frequency - omega
+  std::optional<double> relative_disagreement;              // |measured - predicted shift| / |predicted|; none where h vanishes (|h| <= 1e-12 max(1, omega))
+};
+
+struct RingRunResult {
+  std::string model;
+  double omega = 0, h = 0, group_velocity = 0;  // from the model's coefficient evaluators
+  BlochMode mode;                               // from the lattice code (omega agrees to 1e-9)
+  long sites = 0, mode_number = 0;
+  std::vector<RingAmplitude> amplitudes;
+  long packet_sites = 0;
+  double packet_amplitude = 0, packet_width = 0, packet_duration = 0;
+  double packet_speed = 0;                      // least-squares slope of the packet centre
+  std::optional<double> packet_relative_disagreement;  // |speed - c| / |c|; none if c = 0
+  RunRecord record;                             // series: t, packet centre
+};
+
+// Frequency of the plane wave U Re(K e^{i(n theta - omega t)}) on a periodic ring from the slope of
+// the phase of the first field's mode amplitude sum_n u_0[n] e^{-i n theta} (least squares over
+// `periods` carrier periods).
+double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                              const BlochMode& mode, long sites, long mode_number, double amplitude,
+                              double periods, double steps_per_period);
+
+// Centre speed of a Gaussian packet U exp(-(n-n0)^2/(2 w^2)) Re(K e^{i(n theta - omega t)}) moving
+// at c, from the centroid of sum_f m_f (u_f'^2 + omega^2 u_f^2) (the squared envelope); the
+// centre track (t, X) goes to `track`.
+double measure_packet_speed(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                            const BlochMode& mode, double group_velocity, long sites, long mode_number,
+                            double amplitude, double width, double duration, double steps_per_period,
+                            TimeSeries& track);
+
+RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernels, const RingRunConfig& c);
+
+// JSON summary (model, file hash, parameters, per amplitude, packet) and the output directory
+// (ring_frequency.csv, series.csv, frequency.gp/png, packet.gp/png, summary.json).
+nlohmann::json to_json(const Model& model, const RingRunConfig& c, const RingRunResult& r);
+std::vector<std::string> write_ring_outputs(const std::filesystem::path& dir, const RingRunResult& r,
+                                            const nlohmann::json& summary, bool draw_figures);
+
+}  // namespace lrchain::sim

@@ -1,0 +1,77 @@
+// JSON summary, data files and gnuplot figures of a model bright-breather run (model_bright_run.hpp).
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "lrchain/provenance_json.hpp"
+#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/output_files.hpp"
+
+namespace lrchain::sim {
+
+nlohmann::json to_json(const Model& model, const ModelBrightConfig& c, const ModelBrightResult& r) {
+  nlohmann::json j;
+  j["experiment"] = "bright";
+  j["provenance"] = provenance_json();
+  j["branch"] = model.definition().branch_names.at(c.branch);
+  j["theta"] = c.theta;
+  j["N"] = c.N;
+  j["periods"] = c.periods;
+  j["form"] = r.mean_flow ? "strain" : "displacement";
+  j["integrator"] = {{"stepper", "srkn11b"}, {"dt", r.dt}};
+  j["ansatz"] = {{"omega", r.omega},         {"omega_b", r.omega_b},     {"T_b", r.period},
+                 {"group_velocity", r.group_velocity}, {"curvature", r.curvature}, {"h_tilde", r.h_tilde},
+                 {"lambda", r.mean_flow ? nlohmann::json(r.lambda) : nlohmann::json(nullptr)},
+                 {"M1", r.M1},               {"M2", r.M2},               {"inverse_width", r.inverse_width}};
+  j["compared"] = r.mean_flow ? "strains u_f[n] - u_f[n-1]" : "displacements u_f[n]";
+  j["max_E"] = r.max_error;
+  j["final_E"] = r.final_error;
+  j["max_E_x"] = r.max_error.at(0);
+  j["energy0"] = r.energy0;
+  j["max_relative_energy_drift"] = r.max_energy_drift;
+  j["centre_speed"] = r.centre_speed ? nlohmann::json(*r.centre_speed) : nlohmann::json(nullptr);
+  j["centre_speed_vs_c"] =
+      r.centre_speed && r.group_velocity != 0 ? nlohmann::json(*r.centre_speed / r.group_velocity) : nlohmann::json(nullptr);
+  j["t_end"] = r.stats.t_reached;
+  j["steps"] = r.stats.steps;
+  j["rhs_evaluations"] = r.stats.rhs_evaluations;
+  j["solve_seconds"] = r.solve_seconds;
+  return j;
+}
+
+namespace {
+
+std::string errors_script(const ModelBrightResult& r) {
+  const std::size_t fields = r.max_error.size();
+  std::string plots, profile;
+  for (std::size_t f = 0; f < fields; ++f) {
+    plots += fmt::format("{}'series.csv' using 1:{} skip 1 with lines lw 1.5 title \"E_{}\"", f ? ", \\\n     " : "", f + 2, f);
+    profile += fmt::format("{}'snapshot_final.csv' using 1:{} skip 1 with lines lw 1.5 title \"lattice x_{}\", \\\n     "
+                           "'snapshot_final.csv' using 1:{} skip 1 every 2 with points pt 3 ps 0.6 title \"ansatz x_{}\"",
+                           f ? ", \\\n     " : "", 2 * f + 2, f, 2 * f + 3, f);
+  }
+  return fmt::format(R"GP(# Relative error of the lattice against the NLS bright-breather ansatz per field, and the final profiles.
+if (!exists("outfile")) outfile = 'errors.png'
+set terminal pngcairo size 1200,900 font ",11"
+set output outfile
+set datafile separator ","
+set multiplot layout 2,1
+set xlabel "t"
+set ylabel "relative error"
+plot {}
+set xlabel "n"
+set ylabel "field"
+plot {}
+unset multiplot
+)GP",
+                     plots, profile);
+}
+
+}  // namespace
+
+std::vector<std::string> write_model_bright_outputs(const std::filesystem::path& dir, const ModelBrightResult& r,
+                                                    const nlohmann::json& summary, bool draw_figures) {
+  return write_run_outputs(dir, r.record, summary.dump(2), {{"errors.gp", errors_script(r), "errors.png"}}, draw_figures);
+}
+
+}  // namespace lrchain::sim

@@ -1,0 +1,93 @@
+// `lrchain simulate ring|bright --model` and model-file bright configs: bad input exits 2 with one
+// line naming the option and writes nothing; the shipped model configs load to their values; a
+// short ring run prints its JSON (the numerical checks are validation tests).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "lrchain/sim/model_experiment_config.hpp"
+#include "../support/run_lrchain.hpp"
+
+namespace fs = std::filesystem;
+using lrchain::test::run_lrchain;
+
+namespace {
+
+const fs::path source_dir = LRCHAIN_SOURCE_DIR;
+
+void check_refused(const std::vector<std::string>& args, const std::string& needle) {
+  const fs::path out = fs::temp_directory_path() / "lrchain-model-simulate-refused";
+  fs::remove_all(out);
+  std::vector<std::string> argv = args;
+  argv.insert(argv.end(), {"--out", out.string()});
+  const auto r = run_lrchain(argv, source_dir);
+  INFO(r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find(needle) != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(!fs::exists(out));
+}
+
+}  // namespace
+
+TEST_CASE("model simulate: bad options exit 2 naming the option, before anything is written" * doctest::test_suite("fast")) {
+  check_refused({"simulate", "ring", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "1"}, "theta");
+  check_refused({"simulate", "ring", "--model", "models/fput.toml", "--branch", "optical", "--theta", "pi/2"}, "branch");
+  check_refused({"simulate", "ring", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
+                 "--amplitudes", "0.02", "-1"}, "amplitudes");
+  check_refused({"simulate", "ring", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
+                 "--set", "c=1"}, "c");
+  check_refused({"simulate", "bright", "--model", "models/homogeneous_chain.toml", "--branch", "acoustic", "--theta",
+                 "pi/2"}, "not focusing");
+  check_refused({"simulate", "bright", "--model", "models/klein_gordon.toml", "--branch", "branch0", "--theta",
+                 "3*pi/4", "--detuning", "-1e-4"}, "detuning");
+  check_refused({"simulate", "bright", "--model", "models/klein_gordon.toml", "--branch", "branch0", "--theta",
+                 "3*pi/4", "--ansatz-ends"}, "--ansatz-ends");
+  check_refused({"simulate", "bright", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
+                 "--rho", "1"}, "--rho");
+}
+
+TEST_CASE("model simulate: a short ring run reports omega, h and both amplitudes" * doctest::test_suite("fast")) {
+  const auto r = run_lrchain({"simulate", "ring", "--model", "models/klein_gordon.toml", "--branch", "branch0",
+                              "--theta", "pi/2", "--periods", "50", "--json"},
+                             source_dir);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["model"]["name"] == "klein_gordon");
+  CHECK(j["sites"] == 8);
+  // omega^2 = w0^2 + 4 C sin^2(theta/2) = 1 + 0.2 at the defaults (C = 1/10, w0 = 1).
+  CHECK(j["prediction"]["omega"].get<double>() == doctest::Approx(std::sqrt(1.2)).epsilon(1e-12));
+  REQUIRE(j["amplitudes"].size() == 2);
+  CHECK(j["amplitudes"][0]["relative_disagreement"].get<double>() < 0.01);
+}
+
+TEST_CASE("model simulate: the shipped model configs pass their schema; unknown keys are errors" * doctest::test_suite("fast")) {
+  int loaded = 0;
+  for (const auto& entry : fs::directory_iterator(source_dir / "examples" / "models")) {
+    if (entry.path().extension() != ".toml") continue;
+    INFO(entry.path().string());
+    const auto doc = lrchain::config::Document::from_file(entry.path());
+    REQUIRE(lrchain::sim::is_model_experiment(doc));
+    const auto c = lrchain::sim::load_model_experiment_config(doc);
+    CHECK(fs::exists(source_dir / c.model_file));
+    CHECK(c.bright.periods == 200);
+    ++loaded;
+  }
+  CHECK(loaded == 4);
+  const auto fput = lrchain::sim::load_model_experiment_config(
+      lrchain::config::Document::from_file(source_dir / "examples" / "models" / "fput_bright.toml"));
+  CHECK(fput.parameters.size() == 2);
+  CHECK(fput.parameters[0].first == "a");
+  CHECK(fput.parameters[0].second == 0.25);
+  CHECK(fput.bright.N == 2000);
+  const std::string bad = "experiment = \"bright\"\nmodel = \"models/fput.toml\"\n[bright]\nbranch = \"acoustic\"\n"
+                          "theta = \"pi/2\"\nstepper = \"rkf78\"\n";
+  const auto doc = lrchain::config::Document::from_text(bad, "bad.toml");
+  CHECK_THROWS_WITH_AS(lrchain::sim::load_model_experiment_config(doc), doctest::Contains("stepper"),
+                       lrchain::config::ConfigError);
+}
