@@ -125,12 +125,15 @@ set logscale cb
 set cbrange [{:.3e}:{:.3e}]
 {}
 set cblabel "energy density e_n, eq. (40)" noenhanced
+set rmargin at screen 0.40
 set format cb "%.0e"
 set autoscale fix
 plot 'energy_density_spacetime.bin' binary matrix {}using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle
 unset logscale cb
 set datafile separator ","
 unset cblabel
+set lmargin at screen 0.57
+set rmargin at screen 0.97
 set xlabel "t (dimensionless)"
 set ylabel "energy centre X, eq. (41) (sites)" noenhanced
 plot 'series.csv' using 1:5 skip 1 with lines lw 1.5 notitle

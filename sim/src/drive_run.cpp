@@ -303,6 +303,7 @@ set logscale cb
 set cbrange [{:.3e}:{:.3e}]
 {}
 set cblabel "energy density e_n, eq. (40)" noenhanced
+set rmargin at screen 0.40
 set format cb "%.0e"
 set xrange [1:{:.1f}]
 set yrange [0:{:.1f}]
@@ -310,6 +311,8 @@ plot 'energy_density_spacetime.bin' binary matrix {}using 1:2:($3 > {:.3e} ? $3 
      (x/{:.6f}) with lines dt 2 lw 2 lc rgb "white" title "n = c_+ t"
 unset logscale cb
 unset cblabel
+set lmargin at screen 0.57
+set rmargin at screen 0.97
 set autoscale
 set datafile separator ","
 set xlabel "t (dimensionless)"

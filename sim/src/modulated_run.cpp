@@ -330,10 +330,13 @@ set xlabel "site n"
 set ylabel "t (dimensionless)"
 {}
 set cblabel "energy density e_n, eq. (40)" noenhanced
+set rmargin at screen 0.40
 set cbrange [0:{:.3e}]
 set autoscale fix
 plot 'energy_density_spacetime.bin' binary matrix {}with image notitle
 unset cblabel
+set lmargin at screen 0.57
+set rmargin at screen 0.92
 set autoscale
 set datafile separator ","
 set xlabel "t (dimensionless)"
