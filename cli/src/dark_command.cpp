@@ -395,7 +395,7 @@ void write_evolution(const DarkArgs& a, const DarkEvolution& e, json& summary) {
   sim::write_file_atomic(dir, "snapshots.csv", sn.str());
   const double T = e.periods.back().t;
   const double nmin = -(N - 1) / 2 - 0.5, nmax = (N - 1) / 2 + 0.5;
-  const std::string title = fmt::format("{} {}-centred dark breather, rho = {:g}, omega_b = {:g}", a.edge,
+  const std::string title = fmt::format("{} {}-centred dark breather, ρ = {:g}, ω_b = {:g}", a.edge,
                                         a.center, a.p.rho, a.omega_b);
   figures.draw({
       "evolution.gp",
