@@ -75,15 +75,20 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
       "set output outfile\nset datafile separator ','\nset multiplot layout 1,2\n"
       "set xlabel 'wavenumber θ/π'\nset ylabel 'c, ω″, h̃ (dimensionless)'\nset yrange [-3:3]\n"
       "set key bottom left font ',8'\nset grid\n"
-      // h̃ has poles (breakdown of the non-resonance conditions): values beyond the frame are left
-      // out, which breaks the line there instead of drawing a vertical spike through the pole.
-      "clip(v) = abs(v) < 3 ? v : NaN\n";
+      // h̃ has poles (breakdown of the non-resonance conditions): values beyond the frame, and a
+      // sample where h̃ changes sign between values not both near 0 (a pole narrower than the
+      // sampling, rho = 10 near theta/pi = 0.12), are left out of the line, which breaks it there
+      // instead of drawing a spike through the pole; the CSV keeps every value.
+      "pole(v, p) = v * p < 0 && (abs(v) < abs(p) ? abs(v) : abs(p)) > 0.1\n"
+      "h8(v) = (p8 = last8, last8 = v, abs(v) >= 3 || pole(v, p8) ? NaN : v)\n"
+      "h9(v) = (p9 = last9, last9 = v, abs(v) >= 3 || pole(v, p9) ? NaN : v)\n";
   for (const auto& [tag, label] : {std::pair{"rho_1_3", "ρ = 1/3"}, std::pair{"rho_10", "ρ = 10"}}) {
     gp += fmt::format(
         "set title \"c (green), ω″ (red), h̃ (blue): {}; optical solid, acoustic dashed\"\n"
+        "last8 = NaN; last9 = NaN\n"
         "plot '{f}' u 1:4 w l lc rgb '#1a9850' lw 2 t 'c+', '{f}' u 1:5 w l lc rgb '#1a9850' dt 2 lw 2 t 'c−', "
         "'{f}' u 1:6 w l lc rgb '#d73027' lw 2 t 'ω″+', '{f}' u 1:7 w l lc rgb '#d73027' dt 2 lw 2 t 'ω″−', "
-        "'{f}' u 1:(clip($8)) w l lc rgb '#4575b4' lw 2 t 'h̃+', '{f}' u 1:(clip($9)) w l lc rgb '#4575b4' dt 2 lw 2 t 'h̃−'\n",
+        "'{f}' u 1:(h8($8)) w l lc rgb '#4575b4' lw 2 t 'h̃+', '{f}' u 1:(h9($9)) w l lc rgb '#4575b4' dt 2 lw 2 t 'h̃−'\n",
         label, fmt::arg("f", std::string("coefficients_") + tag + ".csv"));
   }
   gp += "unset multiplot\n";
