@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "figure_format_option.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/checked_number.hpp"
@@ -107,6 +108,7 @@ void add_common(CLI::App& sub, DarkArgs& a) {
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr");
   sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures");
   add_max_memory(sub, a.max_memory);
+  add_figure_format(sub);
 }
 
 json floquet_json(const FloquetResult& f, bool with_multipliers) {
@@ -194,15 +196,19 @@ void write_multipliers(const std::string& dir, const std::string& stem, const Fl
   os << "re,im,modulus\n";
   for (auto l : f.multipliers) os << fmt::format("{:.17g},{:.17g},{:.17g}\n", l.real(), l.imag(), std::abs(l));
   sim::write_file_atomic(dir, stem + ".csv", os.str());
+  // Equal scales on both axes (the unit circle drawn as a circle), a square frame around all multipliers.
+  double reach = 1.0;
+  for (auto l : f.multipliers) reach = std::max(reach, std::abs(l));
   figures.draw({stem + ".gp",
                       fmt::format("if (!exists(\"outfile\")) outfile = '{0}.png'\n"
-                                  "set terminal pngcairo size 700,700\nset output outfile\n"
-                                  "set datafile separator ','\nset size square\nset key off\n"
-                                  "set xlabel 'Re {{/Symbol l}}'\nset ylabel 'Im {{/Symbol l}}'\n"
-                                  "set title 'Floquet multipliers, omega_b = {1:.5f}' noenhanced\n"
+                                  "set terminal pngcairo size 700,700 noenhanced\nset output outfile\n"
+                                  "set datafile separator ','\nset size ratio -1\nset key off\n"
+                                  "set xrange [-{2:.6g}:{2:.6g}]\nset yrange [-{2:.6g}:{2:.6g}]\n"
+                                  "set xlabel 'Re λ'\nset ylabel 'Im λ'\n"
+                                  "set title 'Floquet multipliers λ, ω_b = {1:.5f} (grey: unit circle)'\n"
                                   "set parametric\nset trange [0:2*pi]\n"
                                   "plot cos(t),sin(t) lc 'gray', '{0}.csv' skip 1 using 1:2 with points pt 7 ps 0.8\n",
-                                  stem, omega_b),
+                                  stem, omega_b, 1.08 * reach),
                       stem + ".png"});
 }
 
@@ -237,9 +243,10 @@ void run_solve(const DarkArgs& a, bool floquet) {
     write_profile(a.out, "profile.csv", z0, seed, evo.back());
     figures.draw({"profile.gp",
                         fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
-                                    "set terminal pngcairo size 1000,700\nset output outfile\n"
-                                    "set datafile separator ','\nset xlabel 'n'\nset key outside\n"
-                                    "set title 'dark breather ({} centred), omega_b = {:.5f}: Z(0), Z(T_b), eq:xy_app seed' noenhanced\n"
+                                    "set terminal pngcairo size 1000,700 noenhanced\nset output outfile\n"
+                                    "set datafile separator ','\nset xlabel 'site n'\n"
+                                    "set ylabel 'strains x_n, y_n (dimensionless)'\nset key outside\n"
+                                    "set title 'dark breather ({} centred), ω_b = {:.5f}: Z(0), Z(T_b), seed eq. (48)'\n"
                                     "plot 'profile.csv' skip 1 u 1:2 w lp pt 3 t 'x_n(0)', '' skip 1 u 1:6 w p pt 4 ps 1.5 t 'x_n(T_b)', "
                                     "'' skip 1 u 1:4 w p pt 6 t 'x seed', '' skip 1 u 1:3 w lp pt 3 t 'y_n(0)', "
                                     "'' skip 1 u 1:7 w p pt 4 ps 1.5 t 'y_n(T_b)', '' skip 1 u 1:5 w p pt 6 t 'y seed'\n",
@@ -267,6 +274,7 @@ void run_continue(const DarkArgs& a) {
   std::ostringstream mult;  // omega_b, |lambda|, type (0 complex, 1 real>0, 2 real<0)
   mult << "omega_b,modulus,type,branch_part\n";
   int part = 0, count = 0;
+  bool unstable_in[2] = {false, false};  // a modulus > 1 before / after the first turning point
   double last_tangent = -1;
   auto on_point = [&](const BranchPoint& b) {
     if (!a.quiet)
@@ -283,6 +291,7 @@ void run_continue(const DarkArgs& a) {
       if (std::abs(l) < 1.0 + 1e-6) continue;
       const bool real = std::abs(l.imag()) <= 1e-7 * std::abs(l);
       mult << fmt::format("{:.12g},{:.12g},{},{}\n", b.omega_b, std::abs(l), real ? (l.real() > 0 ? 1 : 2) : 0, part);
+      unstable_in[part >= 1] = true;
     }
   };
   const BranchResult br = continue_branch(s.shooting, s.newton.q, a.omega_b, o, on_point);
@@ -301,35 +310,48 @@ void run_continue(const DarkArgs& a) {
     sim::Figures figures(a.out);
     sim::write_file_atomic(a.out, "branch.csv", csv.str());
     sim::write_file_atomic(a.out, "floquet_moduli.csv", mult.str());
+    // The x range reaches the band edge, so that its line (omega_opt or omega_acs) is inside the frame.
+    double lowest = s.ansatz.omega;
+    for (const auto& b : br.points) lowest = std::min(lowest, b.omega_b);
+    const double margin = 0.03 * std::max(s.ansatz.omega - lowest, 1e-3);
     figures.draw({"branch.gp",
                         fmt::format("if (!exists(\"outfile\")) outfile = 'branch.png'\n"
-                                    "set terminal pngcairo size 900,650\nset output outfile\n"
-                                    "set datafile separator ','\nset xlabel '{{/Symbol w}}_b'\n"
-                                    "set ylabel 'renormalised l2 norm squared (eq:l2norm)' noenhanced\n"
+                                    "set terminal pngcairo size 900,650 noenhanced\nset output outfile\n"
+                                    "set datafile separator ','\nset xlabel 'breather frequency ω_b'\n"
+                                    "set ylabel 'renormalised l2 norm squared, eq. (51)'\n"
+                                    "set xrange [{4:.8g}:{5:.8g}]\nset key top left\n"
                                     "set arrow from {0},graph 0 to {0},graph 1 nohead lc 'black'\n"
-                                    "set title '{1} {2}-centred dark breathers, rho = {3:g} (red: real instability)' noenhanced\n"
+                                    "set label 'band edge {0:.4f}' at {0},graph 0.96 right offset -0.5,0\n"
+                                    "set title '{1} {2}-centred dark breathers, ρ = {3:g} (red: real instability)'\n"
                                     "plot 'branch.csv' skip 1 u 1:2 w l lc 'blue' t 'branch', "
                                     "'' skip 1 u 1:(strstrt(strcol(8),'real') > 0 ? $2 : 1/0) w p pt 7 lc 'red' t 'real instability'\n",
-                                    s.ansatz.omega, a.edge, a.center, a.p.rho),
+                                    s.ansatz.omega, a.edge, a.center, a.p.rho, lowest - margin, s.ansatz.omega + margin),
                         "branch.png"});
-    // The line |lambda| = 1 keeps a panel drawable when it has no multiplier off the unit circle.
-    figures.draw({"floquet_moduli.gp",
-                        fmt::format("if (!exists(\"outfile\")) outfile = 'floquet_moduli.png'\n"
-                                    "set terminal pngcairo size 1000,700\nset output outfile\n"
-                                    "set datafile separator ','\nset xlabel '{{/Symbol w}}_b'\nset ylabel '|{{/Symbol l}}|'\n"
-                                    "set multiplot layout 2,1 title '{0} {1}-centred, rho = {2:g}: Floquet moduli > 1 (blue: complex, red: real > 0, green: real < 0)' noenhanced\n"
-                                    "set title 'weakly nonlinear (before the turning point)'\n"
-                                    "plot 'floquet_moduli.csv' skip 1 u 1:($4==0 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
-                                    "'' skip 1 u 1:($4==0 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
-                                    "'' skip 1 u 1:($4==0 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle, "
-                                    "1 lc 'grey' dt 2 notitle\n"
-                                    "set title 'strongly nonlinear (after the turning point)'\n"
-                                    "plot 'floquet_moduli.csv' skip 1 u 1:($4>=1 && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue' notitle, "
-                                    "'' skip 1 u 1:($4>=1 && $3==1 ? $2 : 1/0) w p pt 13 lc 'red' notitle, "
-                                    "'' skip 1 u 1:($4>=1 && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green' notitle, "
-                                    "1 lc 'grey' dt 2 notitle\n"
-                                    "unset multiplot\n", a.edge, a.center, a.p.rho),
-                        "floquet_moduli.png"});
+    // One panel per part of the branch that was computed (before / after the first turning point);
+    // a part without multipliers off the unit circle says so instead of showing an empty frame.
+    const bool turned = part >= 1;
+    std::string moduli = fmt::format(
+        "if (!exists(\"outfile\")) outfile = 'floquet_moduli.png'\n"
+        "set terminal pngcairo size 1000,{3} noenhanced\nset output outfile\n"
+        "set datafile separator ','\nset xlabel 'breather frequency ω_b'\nset ylabel 'Floquet modulus |λ|'\n"
+        "set offsets 0, 0, graph 0.1, 0\nset key off\n"
+        "set multiplot layout {4},1 title '{0} {1}-centred, ρ = {2:g}: Floquet moduli |λ| > 1 (blue: complex, red: real > 0, green: real < 0)'\n",
+        a.edge, a.center, a.p.rho, turned ? 700 : 400, turned ? 2 : 1);
+    for (int p = 0; p < (turned ? 2 : 1); ++p) {
+      const std::string select = p == 0 ? "$4==0" : "$4>=1";
+      moduli += fmt::format("set title '{}'\n", p == 0 ? "weakly nonlinear (before the turning point)"
+                                                       : "strongly nonlinear (after the turning point)");
+      if (!unstable_in[p]) {
+        moduli += "set yrange [0.9:1.1]\nset label 1 'all multipliers on the unit circle: linearly stable' at graph 0.5, graph 0.7 center\n"
+                  "plot 'branch.csv' skip 1 u 1:(1) w l lc 'grey' dt 2\nunset label 1\nset autoscale y\n";
+        continue;
+      }
+      moduli += fmt::format("plot 'floquet_moduli.csv' skip 1 u 1:({0} && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue', "
+                            "'' skip 1 u 1:({0} && $3==1 ? $2 : 1/0) w p pt 13 lc 'red', "
+                            "'' skip 1 u 1:({0} && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green'\n", select);
+    }
+    moduli += "unset multiplot\n";
+    figures.draw({"floquet_moduli.gp", moduli, "floquet_moduli.png"});
     figures.finish(j);
   }
   std::printf("%s\n", j.dump(2).c_str());
@@ -373,7 +395,7 @@ void write_evolution(const DarkArgs& a, const DarkEvolution& e, json& summary) {
   sim::write_file_atomic(dir, "snapshots.csv", sn.str());
   const double T = e.periods.back().t;
   const double nmin = -(N - 1) / 2 - 0.5, nmax = (N - 1) / 2 + 0.5;
-  const std::string title = fmt::format("{} {}-centred dark breather, rho = {:g}, omega_b = {:g}", a.edge,
+  const std::string title = fmt::format("{} {}-centred dark breather, ρ = {:g}, ω_b = {:g}", a.edge,
                                         a.center, a.p.rho, a.omega_b);
   figures.draw({
       "evolution.gp",
@@ -381,29 +403,29 @@ void write_evolution(const DarkArgs& a, const DarkEvolution& e, json& summary) {
                   "set terminal pngcairo size 1500,900\nset output outfile\n"
                   "set datafile separator ','\n"
                   "set multiplot title '{0}: snapshots at t = 0 and t = {1:.1f} (left), space-time x_n(m T_b), y_n(m T_b) (right)' noenhanced\n"
-                  "set key outside below horizontal\nset xrange [{2}:{3}]\nset xlabel 'n'\n"
-                  "set size 0.36,0.47\nset origin 0.0,0.47\nset ylabel 'x_n' noenhanced\n"
+                  "set key outside below horizontal\nset xrange [{2}:{3}]\nset xlabel 'site n'\n"
+                  "set size 0.36,0.47\nset origin 0.0,0.47\nset ylabel 'strain x_n' noenhanced\n"
                   "set title 'x_n' noenhanced\n"
                   "plot 'snapshots.csv' skip 1 u 1:2 w lp pt 3 lc 'red' t 't = 0', '' skip 1 u 1:4 w lp pt 4 lc 'blue' t 't = {1:.1f}'\n"
-                  "set origin 0.0,0.0\nset ylabel 'y_n' noenhanced\nset title 'y_n' noenhanced\n"
+                  "set origin 0.0,0.0\nset ylabel 'strain y_n' noenhanced\nset title 'y_n' noenhanced\n"
                   "plot 'snapshots.csv' skip 1 u 1:3 w lp pt 3 lc 'red' t 't = 0', '' skip 1 u 1:5 w lp pt 4 lc 'blue' t 't = {1:.1f}'\n"
                   "set datafile separator whitespace\n"
-                  "set size 0.64,0.47\nset origin 0.36,0.47\nset ylabel 't'\nset yrange [0:{1}]\n"
-                  "set palette rgbformulae 22,13,-31\nset colorbox\n"
+                  "set size 0.64,0.47\nset origin 0.36,0.47\nset ylabel 't (dimensionless)'\nset yrange [0:{1}]\n"
+                  "{4}\nset colorbox\nset cblabel 'strain x_n' noenhanced\n"
                   "set title 'x_n(t), t = m T_b' noenhanced\n"
                   "plot 'x_spacetime.bin' binary matrix with image notitle\n"
-                  "set origin 0.36,0.0\nset title 'y_n(t), t = m T_b' noenhanced\n"
+                  "set origin 0.36,0.0\nset title 'y_n(t), t = m T_b' noenhanced\nset cblabel 'strain y_n' noenhanced\n"
                   "plot 'y_spacetime.bin' binary matrix with image notitle\n"
                   "unset multiplot\n",
-                  title, T, nmin, nmax),
+                  title, T, nmin, nmax, sim::viridis_palette),
       "evolution.png"});
   figures.draw({
       "diagnostics.gp",
       fmt::format("if (!exists(\"outfile\")) outfile = 'diagnostics.png'\n"
                   "set terminal pngcairo size 1000,800\nset output outfile\n"
-                  "set datafile separator ','\nset xlabel 't'\n"
+                  "set datafile separator ','\nset xlabel 't (dimensionless)'\n"
                   "set multiplot layout 2,1 title '{0}' noenhanced\n"
-                  "set logscale y\nset format y '%.0e'\nset ylabel 'E_b(t) (eq:relerr)' noenhanced\n"
+                  "set logscale y\nset format y '%.0e'\nset ylabel 'E_b(t), eq. (52)' noenhanced\n"
                   "set title 'relative error E_b(m T_b)' noenhanced\n"
                   "plot 'evolution.csv' skip 1 u 1:($2 > 1e-16 ? $2 : 1e-16) w l lc 'blue' notitle\n"
                   "unset logscale y\nset format y '%g'\nset ylabel 'site n'\n"

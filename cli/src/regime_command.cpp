@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "figure_format_option.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/boundary_curves.hpp"
@@ -303,7 +304,7 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir, sim::Figures& figures)
   json out = {{"plane", "theta-rho"}, {"params", params_json(a.p)}, {"panels", panels}};
   if (!a.no_png) {
     const bool ok = figures.draw_written("regime_theta-rho.gp", "regime_theta-rho.png");
-    if (ok) files.push_back("regime_theta-rho.png");
+    if (ok) files.push_back(sim::figure_file_name("regime_theta-rho.png"));
     out["png"] = ok;
   }
   out["files"] = files;
@@ -432,7 +433,7 @@ json map_delta0_omega(const MapArgs& a, const fs::path& dir, sim::Figures& figur
               {"boundary_polylines", curves_info}};
   if (!a.no_png) {
     const bool ok = figures.draw_written("regime_" + tag + ".gp", "regime_" + tag + ".png");
-    if (ok) files.push_back("regime_" + tag + ".png");
+    if (ok) files.push_back(sim::figure_file_name("regime_" + tag + ".png"));
     out["png"] = ok;
   }
   out["files"] = files;
@@ -779,6 +780,7 @@ void register_regime(CLI::App& app) {
   add_integer(*mp, "--nx", ma->res_x, 2, 20000, "pixels along x (rho or delta0), default 600");
   add_integer(*mp, "--ny", ma->res_y, 2, 20000, "pixels along y (theta or omega), default 600");
   add_max_memory(*mp, ma->max_memory);
+  add_figure_format(*mp);
   mp->add_flag("--no-curves", ma->no_curves, "skip tracing the boundary curves");
   mp->add_flag("--no-png", ma->no_png, "write the .gp script but do not run gnuplot");
   mp->callback([ma, mp] { run_map_command(*ma, *mp); });

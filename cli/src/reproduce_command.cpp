@@ -13,8 +13,10 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "figure_format_option.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/provenance_json.hpp"
+#include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/output_lock.hpp"
 #include "report/html_report.hpp"
@@ -215,6 +217,9 @@ void run_reproduce(const ReproduceArgs& a) {
                                                  "'{}' removed", signal_number == SIGINT ? "SIGINT" : "SIGTERM",
                                                  partial.string()));
   }
+  // The steps name their figures as PNG; with --figure-format they were drawn as SVG or PDF.
+  for (auto& section : sections)
+    for (auto& figure : section.figures) figure.file = sim::figure_file_name(figure.file);
   info.total_seconds = elapsed();
   write_html_report(ctx.out, sections, info);
   if (fs::exists(out)) {
@@ -267,6 +272,7 @@ void register_reproduce(CLI::App& app) {
   sub->add_flag("--list", a->list, "list the steps and exit");
   sub->add_option("--examples", a->examples, "directory of the experiment configs (default: the source tree's examples/)");
   sub->add_option("--errata", a->errata, "docs/paper-errata.md to include (default: the source tree's)");
+  add_figure_format(*sub);
   sub->callback([a] { run_reproduce(*a); });
 }
 

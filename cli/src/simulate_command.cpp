@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "figure_format_option.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/bright_outputs.hpp"
 #include "lrchain/sim/bright_run.hpp"
@@ -248,6 +249,7 @@ void register_simulate(CLI::App& app) {
                       "(default OUT/checkpoint.bin: on SIGINT/SIGTERM, and periodically with --checkpoint-every)");
   auto max_memory = std::make_shared<double>(0.0);
   add_max_memory(*sim_cmd, *max_memory);
+  add_figure_format(*sim_cmd);
   sim_cmd->require_subcommand(0, 1);
   {
     // `simulate ring` (simulate_ring.cpp) reports through --out, --json and --no-figures too.

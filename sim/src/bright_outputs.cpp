@@ -3,8 +3,10 @@
 #include "lrchain/provenance_json.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 
+#include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "run_json.hpp"
 
@@ -70,7 +72,28 @@ std::string snapshots_script(const BrightRunResult& r) {
     files += "snapshot_" + s.tag + ".csv ";
     titles += fmt::format("t={:.1f} ", s.t);
   }
-  return fmt::format(R"GP(# Snapshots of x_n, y_n (lattice, lines) vs the NLS ansatz eq:focus_app (stars), and E_x, E_y.
+  const auto& series = r.record.series;
+  const std::size_t rows = series.rows();
+  const double t_end = rows > 0 ? series.at(rows - 1, 0) : 0.0;
+  // Early times on their own scale (Fig. 8's inset: the error stays below 3 % for t <= 150). It
+  // goes top left when E_x stays below half its maximum over the first half of the run (the
+  // error grows late, as in exp2), else bottom right (below an error that grows steadily).
+  double max_all = 0, max_first_half = 0;
+  for (std::size_t k = 0; k < rows; ++k) {
+    const double e = series.at(k, 1);
+    if (!std::isfinite(e)) continue;
+    max_all = std::max(max_all, e);
+    if (series.at(k, 0) <= t_end / 2) max_first_half = std::max(max_first_half, e);
+  }
+  const std::string origin = max_first_half < 0.5 * max_all ? "0.1,0.17" : "0.5,0.06";
+  const std::string inset =
+      t_end > 400 ? "set origin " + origin + "\nset size 0.32,0.15\nunset key\nset xrange [0:200]\nset yrange [0:*]\n"
+                    "unset xlabel\nset ylabel ''\nset ytics 0.05\n"
+                    "set label 1 't <= 200 (dotted: 3 %)' at graph 0.02, graph 0.85 front\n"
+                    "plot 'series.csv' using 1:2 skip 1 with lines lw 1.5 lc rgb 'red', "
+                    "'series.csv' using 1:3 skip 1 with lines dt 2 lw 1.5 lc rgb 'blue', 0.03 with lines dt 3 lc rgb 'black'\n"
+                  : "";
+  return fmt::format(R"GP(# Snapshots of x_n, y_n (lattice, solid lines) vs the NLS ansatz eq:focus_app (black dashed), and E_x, E_y.
 if (!exists("outfile")) outfile = 'snapshots.png'
 set terminal pngcairo size 1400,1100 font ",11"
 set output outfile
@@ -78,21 +101,25 @@ set datafile separator ","
 files = "{}"
 titles = "{}"
 set key outside right
-set multiplot layout 3,1
-set xlabel "n"
-set ylabel "x_n"
-plot for [i=1:words(files)] word(files,i) using 1:2 with lines lw 1.5 title "lattice ".word(titles,i), \
-     for [i=1:words(files)] word(files,i) using 1:4 every 2 with points pt 3 ps 0.6 lc rgb "blue" title (i==1 ? "ansatz" : "")
-set ylabel "y_n"
-plot for [i=1:words(files)] word(files,i) using 1:3 with lines lw 1.5 title "lattice ".word(titles,i), \
-     for [i=1:words(files)] word(files,i) using 1:5 every 2 with points pt 3 ps 0.6 lc rgb "blue" title (i==1 ? "ansatz" : "")
-set xlabel "t"
-set ylabel "relative error"
+set multiplot
+set size 1,0.333
+set origin 0,0.667
+set xlabel "site n"
+set ylabel "x_n (dimensionless)"
+plot for [i=1:words(files)] word(files,i) using 1:2 with lines lw 2 title "lattice ".word(titles,i), \
+     for [i=1:words(files)] word(files,i) using 1:4 with lines dt 2 lw 0.8 lc rgb "black" title (i==1 ? "ansatz" : "")
+set origin 0,0.333
+set ylabel "y_n (dimensionless)"
+plot for [i=1:words(files)] word(files,i) using 1:3 with lines lw 2 title "lattice ".word(titles,i), \
+     for [i=1:words(files)] word(files,i) using 1:5 with lines dt 2 lw 0.8 lc rgb "black" title (i==1 ? "ansatz" : "")
+set origin 0,0
+set xlabel "t (dimensionless)"
+set ylabel "relative error E_x, E_y"
 plot 'series.csv' using 1:2 skip 1 with lines lw 1.5 lc rgb "red" title "E_x", \
      'series.csv' using 1:3 skip 1 with lines dt 2 lw 1.5 lc rgb "blue" title "E_y"
-unset multiplot
+{}unset multiplot
 )GP",
-                     files, titles);
+                     files, titles, inset);
 }
 
 std::string energy_script(const BrightRunResult& r) {
@@ -100,27 +127,33 @@ std::string energy_script(const BrightRunResult& r) {
   for (const auto& f : r.record.fields)
     for (float v : f.values) emax = std::max(emax, v);
   if (!(emax > 0)) emax = 1;
+  const std::string every = r.record.fields.empty() ? "" : image_every(r.record.fields.front());
   return fmt::format(R"GP(# Left: energy density e_n(t) (eq:edensity), log colour scale. Right: energy centre X(t) (eq:ectr).
 if (!exists("outfile")) outfile = 'energy.png'
 set terminal pngcairo size 1400,600 font ",11"
 set output outfile
 set multiplot layout 1,2
-set xlabel "n"
-set ylabel "t"
+set xlabel "site n"
+set ylabel "t (dimensionless)"
 set logscale cb
 set cbrange [{:.3e}:{:.3e}]
-set palette rgbformulae 33,13,10
+{}
+set cblabel "energy density e_n, eq. (40)" noenhanced
+set rmargin at screen 0.40
 set format cb "%.0e"
 set autoscale fix
-plot 'energy_density_spacetime.bin' binary matrix using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle
+plot 'energy_density_spacetime.bin' binary matrix {}using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle
 unset logscale cb
 set datafile separator ","
-set xlabel "t"
-set ylabel "X (energy centre)"
+unset cblabel
+set lmargin at screen 0.57
+set rmargin at screen 0.97
+set xlabel "t (dimensionless)"
+set ylabel "energy centre X, eq. (41) (sites)" noenhanced
 plot 'series.csv' using 1:5 skip 1 with lines lw 1.5 notitle
 unset multiplot
 )GP",
-                     emax * 1e-6, emax, emax * 1e-6, emax * 1e-6);
+                     emax * 1e-6, emax, viridis_palette, every, emax * 1e-6, emax * 1e-6);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"
+#include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "restart.hpp"
 #include "sampling_checks.hpp"
@@ -297,29 +298,34 @@ if (!exists("outfile")) outfile = 'energy.png'
 set terminal pngcairo size 1400,650 font ",11"
 set output outfile
 set multiplot layout 1,2
-set xlabel "n"
-set ylabel "t"
+set xlabel "site n"
+set ylabel "t (dimensionless)"
 set logscale cb
 set cbrange [{:.3e}:{:.3e}]
-set palette rgbformulae 33,13,10
+{}
+set cblabel "energy density e_n, eq. (40)" noenhanced
+set rmargin at screen 0.40
 set format cb "%.0e"
 set xrange [1:{:.1f}]
 set yrange [0:{:.1f}]
-plot 'energy_density_spacetime.bin' binary matrix using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle, \
+plot 'energy_density_spacetime.bin' binary matrix {}using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle, \
      (x/{:.6f}) with lines dt 2 lw 2 lc rgb "white" title "n = c_+ t"
 unset logscale cb
+unset cblabel
+set lmargin at screen 0.57
+set rmargin at screen 0.97
 set autoscale
 set datafile separator ","
-set xlabel "t"
-set ylabel "front n, participation"
+set xlabel "t (dimensionless)"
+set ylabel "front site n, participation number"
 plot 'series.csv' using 1:3 skip 1 with lines lw 1.5 title "front", \
      'series.csv' using 1:4 skip 1 with lines lw 1.5 title "participation (sum e)^2/sum e^2", \
      {:.6f}*x with lines dt 2 lc rgb "black" title "c_+ t"
 unset multiplot
 )GP",
-                     emax * 1e-5, emax,
+                     emax * 1e-5, emax, viridis_palette,
                      double(r.record.fields.empty() ? 1 : r.record.fields[0].sites), r.summary.t_end,
-                     emax * 1e-5, emax * 1e-5, r.summary.group_velocity, r.summary.group_velocity);
+                     r.record.fields.empty() ? "" : image_every(r.record.fields.front()), emax * 1e-5, emax * 1e-5, r.summary.group_velocity, r.summary.group_velocity);
 }
 
 std::string drive_snapshots_script(const DriveRunResult& r) {
@@ -333,8 +339,8 @@ set terminal pngcairo size 1400,{} font ",11"
 set output outfile
 set datafile separator ","
 set multiplot layout {},1
-set xlabel "n"
-set ylabel "du_n/dt"
+set xlabel "site n"
+set ylabel "bead velocity du_n/dt"
 {}unset multiplot
 )GP",
                      350 * std::max<std::size_t>(1, r.record.snapshots.size()),

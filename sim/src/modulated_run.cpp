@@ -20,6 +20,7 @@
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"
+#include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "restart.hpp"
 #include "sampling_checks.hpp"
@@ -307,34 +308,53 @@ nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s
 
 namespace {
 
-std::string modulated_energy_script(const ModulatedRunResult& r) {
+std::string modulated_energy_script(const ModulatedRunResult& r, const nlohmann::json& summary) {
   double sum = 0, count = 0;
   for (const auto& f : r.record.fields)
     for (float v : f.values) { sum += v; count += 1; }
   const double emean = count > 0 && sum > 0 ? sum / count : 1;
+  const double threshold = summary.value("contrast_threshold", 0.2);
+  // The onset of the modulational instability: the first time the contrast exceeds the threshold.
+  std::string onset;
+  if (summary.contains("instability_time") && summary["instability_time"].is_number())
+    onset = fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dt 3 lw 1.5 lc rgb 'dark-green' front\n"
+                        "set label 'onset t = {0:.0f}' at {0}, graph 0.93 offset 0.5,0 tc rgb 'dark-green' front\n",
+                        summary["instability_time"].get<double>());
   return fmt::format(R"GP(# Energy density e_n(t) (eq:edensity) on the periodic chain (Fig. 16 bottom right), and the
-# contrast (max-min)/mean of the running-mean e_n with the position of its minimum (dark-breather centre).
+# contrast (max-min)/mean of the running-mean e_n with the position of its minimum (dark-breather centre);
+# dashed: the contrast threshold, dotted: the onset time (first contrast above it).
 if (!exists("outfile")) outfile = 'energy.png'
 set terminal pngcairo size 1400,700 font ",11"
 set output outfile
 set multiplot layout 1,2
-set xlabel "n"
-set ylabel "t"
-set palette gray negative
+set xlabel "site n"
+set ylabel "t (dimensionless)"
+{}
+set cblabel "energy density e_n, eq. (40)" noenhanced
+set rmargin at screen 0.40
 set cbrange [0:{:.3e}]
 set autoscale fix
-plot 'energy_density_spacetime.bin' binary matrix with image notitle
+plot 'energy_density_spacetime.bin' binary matrix {}with image notitle
+unset cblabel
+set lmargin at screen 0.57
+set rmargin at screen 0.92
+set autoscale
 set datafile separator ","
-set xlabel "t"
-set ylabel "contrast of e_n"
-set y2label "min-e site"
+set xlabel "t (dimensionless)"
+set ylabel "contrast (max e - min e)/mean e"
+set y2label "site of the minimum of e_n" noenhanced
 set y2tics
 set ytics nomirror
-plot 'series.csv' using 1:3 skip 1 with lines lw 1.2 title "contrast", \
+set yrange [0:*]
+set offsets 0, 0, graph 0.12, 0
+set key top left opaque box
+{}plot 'series.csv' using 1:3 skip 1 with lines lw 1.2 title "contrast", \
+     {:g} with lines dt 2 lw 1.5 lc rgb "black" title "threshold {:g}", \
      'series.csv' using 1:4 skip 1 axes x1y2 with dots lc rgb "red" title "min-e site"
 unset multiplot
 )GP",
-                     2 * emean);
+                     viridis_palette, 2 * emean,
+                     r.record.fields.empty() ? "" : image_every(r.record.fields.front()), onset, threshold, threshold);
 }
 
 std::string modulated_snapshots_script(const ModulatedRunResult& r) {
@@ -349,8 +369,8 @@ set terminal pngcairo size 1400,{} font ",11"
 set output outfile
 set datafile separator ","
 set multiplot layout {},1
-set xlabel "n"
-set ylabel "du_n/dt"
+set xlabel "site n"
+set ylabel "bead velocity du_n/dt"
 {}unset multiplot
 )GP",
                      330 * k, k, body);
@@ -360,7 +380,7 @@ set ylabel "du_n/dt"
 
 std::vector<std::string> write_modulated_outputs(const std::string& dir, const ModulatedRunResult& r,
                                                  const nlohmann::json& summary, bool draw_figures) {
-  std::vector<FigureScript> figures = {{"energy.gp", modulated_energy_script(r), "energy.png"}};
+  std::vector<FigureScript> figures = {{"energy.gp", modulated_energy_script(r, summary), "energy.png"}};
   if (!r.record.snapshots.empty())
     figures.push_back({"snapshots.gp", modulated_snapshots_script(r), "snapshots.png"});
   return write_run_outputs(dir, r.record, summary.dump(2), figures, draw_figures);

@@ -3,13 +3,19 @@
 
 #include <unistd.h>
 
+#include <atomic>
+#include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <future>
+
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/figure_format.hpp"
 #include "lrchain/process.hpp"
 
 namespace lrchain::sim {
@@ -98,6 +104,69 @@ void write_record(const fs::path& dir, const RunRecord& r) {
   for (const auto& s : r.snapshots) write_snapshot_csv(dir, "snapshot_" + s.tag + ".csv", s);
 }
 
+namespace {
+std::atomic<FigureFormat> current_format{FigureFormat::png};
+
+const char* extension(FigureFormat f) { return f == FigureFormat::svg ? ".svg" : f == FigureFormat::pdf ? ".pdf" : ".png"; }
+
+// `set terminal pngcairo size W,H<rest>` for the current format (the line without its newline).
+std::string terminal_line(const std::string& line) {
+  const std::string head = "set terminal pngcairo size ";
+  if (line.rfind(head, 0) != 0) return line;
+  const char* p = line.data() + head.size();
+  const char* end = line.data() + line.size();
+  int width = 0, height = 0;
+  auto [after_w, ew] = std::from_chars(p, end, width);
+  if (ew != std::errc() || after_w == end || *after_w != ',') return line;
+  auto [after_h, eh] = std::from_chars(after_w + 1, end, height);
+  if (eh != std::errc()) return line;
+  const std::string rest(after_h, end);
+  switch (current_format.load()) {
+    case FigureFormat::svg:
+      return fmt::format("set terminal svg size {},{} dynamic background rgb 'white'{}", width, height, rest);
+    case FigureFormat::pdf:
+      return fmt::format("set terminal pdfcairo size {:.3f}in,{:.3f}in{}", width / 72.0, height / 72.0, rest);
+    case FigureFormat::png: break;
+  }
+  return line;
+}
+}  // namespace
+
+FigureFormat parse_figure_format(const std::string& text) {
+  if (text == "png") return FigureFormat::png;
+  if (text == "svg") return FigureFormat::svg;
+  if (text == "pdf") return FigureFormat::pdf;
+  throw InvalidParameter("figure-format", "must be png, svg or pdf, got '" + text + "'");
+}
+
+void set_figure_format(FigureFormat format) { current_format = format; }
+
+FigureFormat figure_format() { return current_format.load(); }
+
+std::string figure_format_name() { return std::string(extension(current_format.load()) + 1); }
+
+std::string figure_file_name(const std::string& png_name) {
+  const std::string png = ".png";
+  if (png_name.size() < png.size() || png_name.compare(png_name.size() - png.size(), png.size(), png) != 0)
+    return png_name;
+  return png_name.substr(0, png_name.size() - png.size()) + extension(current_format.load());
+}
+
+std::string script_for_format(const std::string& script_text) {
+  if (current_format.load() == FigureFormat::png) return script_text;
+  std::string out;
+  std::istringstream in(script_text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("outfile = '") != std::string::npos) {
+      const auto dot = line.rfind(".png'");
+      if (dot != std::string::npos) line.replace(dot, 4, extension(current_format.load()));
+    }
+    out += terminal_line(line);
+    out += '\n';
+  }
+  return out;
+}
+
 Figures::Figures(fs::path dir) : dir_(std::move(dir)), gnuplot_found_(program_in_path("gnuplot")) {}
 
 namespace {
@@ -157,22 +226,38 @@ void Figures::record(Outcome outcome) {
 }
 
 bool Figures::draw(const FigureScript& figure) {
-  write_file_atomic(dir_, figure.script, figure.script_text);
-  return draw_written(figure.script, figure.png);
+  write_file_atomic(dir_, figure.script, script_for_format(figure.script_text));
+  Outcome o = render(figure.script, figure_file_name(figure.png));
+  const bool drawn = o.drawn;
+  record(std::move(o));
+  return drawn;
 }
 
+namespace {
+// Rewrites dir/script for the current figure format (nothing to do for png).
+void convert_script(const fs::path& dir, const std::string& script) {
+  if (figure_format() == FigureFormat::png) return;
+  std::ifstream in(dir / script);
+  std::stringstream text;
+  text << in.rdbuf();
+  write_file_atomic(dir, script, script_for_format(text.str()));
+}
+}  // namespace
+
 bool Figures::draw_written(const std::string& script, const std::string& png) {
-  Outcome o = render(script, png);
+  convert_script(dir_, script);
+  Outcome o = render(script, figure_file_name(png));
   const bool drawn = o.drawn;
   record(std::move(o));
   return drawn;
 }
 
 void Figures::draw_all(const std::vector<FigureScript>& figures) {
-  for (const auto& f : figures) write_file_atomic(dir_, f.script, f.script_text);
+  for (const auto& f : figures) write_file_atomic(dir_, f.script, script_for_format(f.script_text));
   std::vector<std::future<Outcome>> pending;
   for (const auto& f : figures)
-    pending.push_back(std::async(std::launch::async, [this, &f] { return render(f.script, f.png); }));
+    pending.push_back(
+        std::async(std::launch::async, [this, &f] { return render(f.script, figure_file_name(f.png)); }));
   for (auto& p : pending) record(p.get());
 }
 

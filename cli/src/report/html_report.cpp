@@ -106,9 +106,12 @@ std::string section_html(const fs::path& dir, const Section& s, const std::strin
                        "next to where it should be).</p>\n", rich_text(f.paper_figure), html_escape(f.file));
       continue;
     }
+    // A browser shows PNG and SVG inline; a PDF figure (--figure-format pdf) is linked.
+    const bool pdf = f.file.size() > 4 && f.file.compare(f.file.size() - 4, 4, ".pdf") == 0;
     h += fmt::format(
-        "<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a><figcaption><b>{2}.</b> {3}"
-        "</figcaption></figure>\n",
+        fmt::runtime(pdf ? "<figure><a href=\"{0}\">{0} (PDF)</a><figcaption><b>{2}.</b> {3}</figcaption></figure>\n"
+                         : "<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a><figcaption><b>{2}.</b> {3}"
+                           "</figcaption></figure>\n"),
         html_escape(f.file), plain_text(rich_text(f.paper_figure)), rich_text(f.paper_figure), rich_text(f.caption));
   }
   std::vector<std::string> links;

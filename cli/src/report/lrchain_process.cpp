@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "lrchain/process.hpp"
+#include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/output_files.hpp"
 
 namespace lrchain::report {
@@ -110,8 +111,14 @@ nlohmann::json run_lrchain(const StepContext& ctx, const std::vector<std::string
                            std::vector<std::string>& commands) {
   if (interrupt_signal() != 0) throw std::runtime_error("interrupted before it started");
   sim::ensure_directory(dir);
+  std::vector<std::string> format_args;  // the report's --figure-format, passed to every child
+  if (sim::figure_format() != sim::FigureFormat::png) format_args = {"--figure-format", sim::figure_format_name()};
   std::string shown = "lrchain";
   for (const auto& a : args) {
+    shown += ' ';
+    shown += display(ctx, a);
+  }
+  for (const auto& a : format_args) {
     shown += ' ';
     shown += display(ctx, a);
   }
@@ -123,6 +130,7 @@ nlohmann::json run_lrchain(const StepContext& ctx, const std::vector<std::string
   const fs::path err_tmp = dir / ("." + log_stem + ".log" + tmp_suffix);
   std::vector<std::string> argv{ctx.exe.string()};
   argv.insert(argv.end(), args.begin(), args.end());
+  argv.insert(argv.end(), format_args.begin(), format_args.end());
   ProcessOptions options;
   options.stdout_file = out_tmp;
   options.stderr_file = err_tmp;

@@ -64,22 +64,31 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
                       "if (!exists(\"outfile\")) outfile = 'dispersion.png'\n"
                       "set terminal pngcairo size 700,500 font 'DejaVu Sans,11' noenhanced\n"
                       "set output outfile\nset datafile separator ','\n"
-                      "set xlabel 'theta/pi'\nset ylabel 'omega'\nset key bottom right\n"
-                      "set title 'Dispersion relation (eq:disp1d), rho = 1/3, delta0 = 4/9, kappa = 1'\n"
-                      "plot 'coefficients_rho_1_3.csv' u 1:2 w l lw 2 t 'optical omega_+', "
-                      "'' u 1:3 w l lw 2 dt 2 t 'acoustic omega_-'\n",
+                      "set xlabel 'wavenumber θ/π'\nset ylabel 'frequency ω (dimensionless)'\nset key bottom right\n"
+                      "set title 'Dispersion relation, eq. (7): ρ = 1/3, δ0 = 4/9, κ = 1'\n"
+                      "plot 'coefficients_rho_1_3.csv' u 1:2 w l lw 2 t 'optical ω+', "
+                      "'' u 1:3 w l lw 2 dt 2 t 'acoustic ω−'\n",
                       "dispersion.png"});
   std::string gp =
       "if (!exists(\"outfile\")) outfile = 'coefficients.png'\n"
       "set terminal pngcairo size 1100,500 font 'DejaVu Sans,10' noenhanced\n"
       "set output outfile\nset datafile separator ','\nset multiplot layout 1,2\n"
-      "set xlabel 'theta/pi'\nset yrange [-3:3]\nset key bottom left font ',8'\nset grid\n";
-  for (const auto& [tag, label] : {std::pair{"rho_1_3", "rho = 1/3"}, std::pair{"rho_10", "rho = 10"}}) {
+      "set xlabel 'wavenumber θ/π'\nset ylabel 'c, ω″, h̃ (dimensionless)'\nset yrange [-3:3]\n"
+      "set key bottom left font ',8'\nset grid\n"
+      // h̃ has poles (breakdown of the non-resonance conditions): values beyond the frame, and a
+      // sample where h̃ changes sign between values not both near 0 (a pole narrower than the
+      // sampling, rho = 10 near theta/pi = 0.12), are left out of the line, which breaks it there
+      // instead of drawing a spike through the pole; the CSV keeps every value.
+      "pole(v, p) = v * p < 0 && (abs(v) < abs(p) ? abs(v) : abs(p)) > 0.1\n"
+      "h8(v) = (p8 = last8, last8 = v, abs(v) >= 3 || pole(v, p8) ? NaN : v)\n"
+      "h9(v) = (p9 = last9, last9 = v, abs(v) >= 3 || pole(v, p9) ? NaN : v)\n";
+  for (const auto& [tag, label] : {std::pair{"rho_1_3", "ρ = 1/3"}, std::pair{"rho_10", "ρ = 10"}}) {
     gp += fmt::format(
-        "set title \"c (green), omega'' (red), h_tilde (blue): {}; optical solid, acoustic dashed\"\n"
-        "plot '{f}' u 1:4 w l lc rgb '#1a9850' lw 2 t 'c+', '{f}' u 1:5 w l lc rgb '#1a9850' dt 2 lw 2 t 'c-', "
-        "'{f}' u 1:6 w l lc rgb '#d73027' lw 2 t \"omega''+\", '{f}' u 1:7 w l lc rgb '#d73027' dt 2 lw 2 t \"omega''-\", "
-        "'{f}' u 1:8 w l lc rgb '#4575b4' lw 2 t 'h_tilde+', '{f}' u 1:9 w l lc rgb '#4575b4' dt 2 lw 2 t 'h_tilde-'\n",
+        "set title \"c (green), ω″ (red), h̃ (blue): {}; optical solid, acoustic dashed\"\n"
+        "last8 = NaN; last9 = NaN\n"
+        "plot '{f}' u 1:4 w l lc rgb '#1a9850' lw 2 t 'c+', '{f}' u 1:5 w l lc rgb '#1a9850' dt 2 lw 2 t 'c−', "
+        "'{f}' u 1:6 w l lc rgb '#d73027' lw 2 t 'ω″+', '{f}' u 1:7 w l lc rgb '#d73027' dt 2 lw 2 t 'ω″−', "
+        "'{f}' u 1:(h8($8)) w l lc rgb '#4575b4' lw 2 t 'h̃+', '{f}' u 1:(h9($9)) w l lc rgb '#4575b4' dt 2 lw 2 t 'h̃−'\n",
         label, fmt::arg("f", std::string("coefficients_") + tag + ".csv"));
   }
   gp += "unset multiplot\n";

@@ -29,7 +29,8 @@ void write_spacetime_binary(const std::filesystem::path& dir, const std::string&
 // snapshot_<tag>.csv.
 void write_record(const std::filesystem::path& dir, const RunRecord& r);
 
-// One figure: gnuplot script name, its text, the PNG it draws. The script starts with
+// One figure: gnuplot script name, its text, the PNG it draws (the file of another format when
+// set_figure_format, lrchain/sim/figure_format.hpp, chose one). The script starts with
 // `if (!exists("outfile")) outfile = '<png>'` and `set output outfile`, so that gnuplot can be
 // told a temporary output name and a user can re-run the script as it is.
 struct FigureScript {
