@@ -11,6 +11,7 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/energy.hpp"
+#include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/model_lattice.hpp"
 

@@ -18,7 +18,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "lrchain/model.hpp"
-#include "lrchain/sim/integrator.hpp"
+#include "lrchain/sim/integrator_options.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 #include "lrchain/sim/run_record.hpp"
