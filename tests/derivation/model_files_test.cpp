@@ -79,7 +79,7 @@ TEST_CASE("every shipped model derives and passes all its checks (times printed,
   }
 }
 
-TEST_CASE("resonant_chain.toml runs the reference and all paper checks; branches acoustic/optical") {
+TEST_CASE("resonant_chain.toml runs the reference and all paper checks — branches acoustic/optical") {
   const Symbols s;
   const auto m = derive_shipped("resonant_chain", s);
   int paper = 0;

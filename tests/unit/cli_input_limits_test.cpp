@@ -273,7 +273,7 @@ TEST_CASE("file options of the wrong kind are exit 2 naming the option, nothing 
                 "checkpoint");
 }
 
-TEST_CASE("a new run refuses an --out holding an earlier run's checkpoint; a restart from it continues") {
+TEST_CASE("a new run refuses an --out holding an earlier run's checkpoint — a restart from it continues") {
   const fs::path dir = fs::temp_directory_path() / ("lrchain-stale-checkpoint-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);

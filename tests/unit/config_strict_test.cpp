@@ -130,7 +130,7 @@ TEST_CASE("config: values out of range, NaN and inf name the key and the allowed
         "\"symplectic\", \"srkn11b\", \"srkn14a\", \"ss17\"; got \"dopri\"; did you mean \"dopri5\"?");
 }
 
-TEST_CASE("config: integers go through checked_integer (1e3 is 1000; fractions, huge values refused)") {
+TEST_CASE("config: integers go through checked_integer (1e3 is 1000 — fractions, huge values refused)") {
   CHECK(load_error(bright_head + "[bright]\ntheta = 1\nN = 1.5\n", "a.toml") ==
         "invalid value for 'N' in [bright] at a.toml:8: expected an integer in [2, 50000000]; got 1.5");
   CHECK(load_error(bright_head + "[bright]\ntheta = 1\nN = 1e300\n", "a.toml") ==
@@ -403,7 +403,7 @@ TEST_CASE("config: a schema with sub-tables, arrays of tables and user-named key
         "the integer 3");
 }
 
-TEST_CASE("config: non-ASCII where toml++ 3.3 would reach undefined behaviour is refused; elsewhere it is kept") {
+TEST_CASE("config: non-ASCII where toml++ 3.3 would reach undefined behaviour is refused — elsewhere it is kept") {
   // Found by the config fuzzer: U+FCFF (bytes EF B3 BF) outside a string made toml++ 3.3.0 reach
   // __builtin_unreachable in is_non_ascii_horizontal_whitespace (upstream issues #190, #295).
   const auto error = [](const std::string& text) -> std::string {

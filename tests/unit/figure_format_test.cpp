@@ -57,7 +57,7 @@ TEST_CASE("figure format: scripts and file names for png, svg and pdf") {
   sim::set_figure_format(sim::FigureFormat::png);
 }
 
-TEST_CASE("dark solve --figure-format svg and pdf draw SVG and PDF files; a bad format exits 2") {
+TEST_CASE("dark solve --figure-format svg and pdf draw SVG and PDF files — a bad format exits 2") {
   REQUIRE_MESSAGE(lrchain::program_in_path("gnuplot"), "gnuplot (Debian gnuplot-nox) is needed by this test");
   const fs::path base = fs::temp_directory_path() / ("lrchain-figure-format-" + std::to_string(::getpid()));
   fs::remove_all(base);

@@ -93,7 +93,7 @@ std::map<std::string, std::string> listing(const fs::path& dir) {
 
 }  // namespace
 
-TEST_CASE("simulate bright: SIGTERM writes a checkpoint and complete outputs, exit 143; the restart equals the uninterrupted run") {
+TEST_CASE("simulate bright: SIGTERM writes a checkpoint and complete outputs, exit 143 — the restart equals the uninterrupted run") {
   const fs::path dir = fs::temp_directory_path() / ("lrchain-interrupt-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);

@@ -66,7 +66,7 @@ TEST_CASE("model simulate: a short ring run reports omega, h and both amplitudes
   CHECK(j["amplitudes"][0]["relative_disagreement"].get<double>() < 0.01);
 }
 
-TEST_CASE("model simulate: the shipped model configs pass their schema; unknown keys are errors" * doctest::test_suite("fast")) {
+TEST_CASE("model simulate: the shipped model configs pass their schema — unknown keys are errors" * doctest::test_suite("fast")) {
   int loaded = 0;
   for (const auto& entry : fs::directory_iterator(source_dir / "examples" / "models")) {
     if (entry.path().extension() != ".toml") continue;

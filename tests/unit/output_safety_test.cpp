@@ -283,7 +283,7 @@ TEST_CASE("two runs into one --out: the second exits 2 naming the running one") 
   fs::remove_all(base);
 }
 
-TEST_CASE("reproduce holds its --out; on SIGTERM it stops its child runs, leaves nothing and exits 143") {
+TEST_CASE("reproduce holds its --out — on SIGTERM it stops its child runs, leaves nothing and exits 143") {
   const fs::path base = scratch("reproduce-sigterm");
   const fs::path out = base / "report-sigterm-unique";
   lrchain::ProcessOptions quiet;

@@ -51,7 +51,7 @@ TEST_CASE("provenance: unknown values are null in JSON, never a sentinel") {
   CHECK(j["command_line"].is_null());
 }
 
-TEST_CASE("provenance: `lrchain --version` prints the version and commit; summaries carry provenance") {
+TEST_CASE("provenance: `lrchain --version` prints the version and commit — summaries carry provenance") {
   const auto v = run_lrchain({"--version"});
   CHECK(v.exit_code == 0);
   CHECK(v.out == version_line() + "\n");

@@ -189,7 +189,7 @@ TEST_CASE("boundary curves lie on the zero sets: each point is a root in theta a
   CHECK(n_num >= 1);
 }
 
-TEST_CASE("CLI: regime intervals prints the JSON intervals; bad input exits 2") {
+TEST_CASE("CLI: regime intervals prints the JSON intervals — bad input exits 2") {
   const auto run = lrchain::test::run_lrchain({"regime", "intervals", "--rho", "10", "--branch", "optical", "--json"});
   CHECK(run.exit_code == 0);
   const auto j = nlohmann::json::parse(run.out);

@@ -109,7 +109,7 @@ TEST_CASE("report rows: four statuses and the tolerance with its source") {
   CHECK(rounding_of("c_db ~ 0.3") == doctest::Approx(0.05));
 }
 
-TEST_CASE("markdown: GitHub tables keep their columns with escaped pipes; headings get anchors") {
+TEST_CASE("markdown: GitHub tables keep their columns with escaped pipes — headings get anchors") {
   const std::string md = "# Title\n\n## Lattice simulator (Sec. 4.2)\n\n| where | paper | ours |\n|---|---|---|\n"
                          "| \\|\\|x_n(0)\\|\\|_inf | ~0.208 | 0.2127 |\n| max\\|x\\| | a | b |\n";
   const std::string html = markdown_to_html(md);

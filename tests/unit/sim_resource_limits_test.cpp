@@ -50,7 +50,7 @@ BrightRunConfig small_bright() {
 
 }  // namespace
 
-TEST_CASE("srkn11b takes the fewest equal steps not longer than dt; a dt of 1e-300 is refused") {
+TEST_CASE("srkn11b takes the fewest equal steps not longer than dt — a dt of 1e-300 is refused") {
   Params p;
   p.rho = 1.0 / 3;
   const DisplacementLattice chain(p, 20, DisplacementBoundary{});

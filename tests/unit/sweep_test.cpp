@@ -89,7 +89,7 @@ void check_same(const SweepResults& a, const SweepResults& b) {
 
 }  // namespace
 
-TEST_CASE("sweep: 1 thread and 2 threads give the same results bit for bit; a point equals its single run") {
+TEST_CASE("sweep: 1 thread and 2 threads give the same results bit for bit — a point equals its single run") {
   const fs::path d = scratch("threads");
   write(d / "base.toml", base_config);
   write(d / "one.toml", grid_sweep((d / "one.h5").string()));
@@ -137,7 +137,7 @@ TEST_CASE("sweep: a failing point is recorded with its reason and the sweep fini
   fs::remove_all(d);
 }
 
-TEST_CASE("sweep: stopped by SIGINT and run again, it gives the uninterrupted results; a changed config refuses to resume") {
+TEST_CASE("sweep: stopped by SIGINT and run again, it gives the uninterrupted results — a changed config refuses to resume") {
   const fs::path d = scratch("resume");
   // Longer runs (N = 200, 100 T_b: tens of ms each) so that the signal comes mid-way.
   std::string longer = base_config;
@@ -252,7 +252,7 @@ TEST_CASE("sweep: docs/sweeps.md lists every key of the sweep schema (generated 
                       "sweeps-md-expected.txt of the test's working directory");
 }
 
-TEST_CASE("sweep: the shipped sweep files load; the optical atlas is 38 theta x 9 detunings") {
+TEST_CASE("sweep: the shipped sweep files load — the optical atlas is 38 theta x 9 detunings") {
   int loaded = 0;
   for (const auto& e : fs::directory_iterator(fs::path(LRCHAIN_SOURCE_DIR) / "examples" / "sweeps")) {
     if (e.path().extension() != ".toml") continue;
