@@ -1,6 +1,7 @@
 // Sampling option checks shared by the lattice runs (sampling_checks.hpp).
 #include "sampling_checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -37,7 +38,9 @@ struct Reach {
       const double mid = hi > 4 * lo ? std::exp((std::log(lo) + std::log(hi)) / 2) : (lo + hi) / 2;
       (run_fits(o, mid, memory_limit) ? lo : hi) = mid;
     }
-    return lo;
+    // Rounded down to the 4 significant digits the messages show, so the value shown is allowed.
+    const double digit = std::pow(10.0, std::floor(std::log10(lo)) - 3);
+    return std::max(o.length, std::floor(lo / digit) * digit);
   }
   // Why a time beyond the run's end is bounded: "(beyond the run's end, periods = 1, only ...)".
   std::string reason() const {
