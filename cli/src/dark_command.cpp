@@ -19,6 +19,7 @@
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/checked_number.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/regime/frequency_band.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
 #include "lrchain/sim/dark/evolution.hpp"
 #include "lrchain/sim/output_files.hpp"
@@ -69,8 +70,12 @@ void validate_job(const DarkArgs& a, DarkJob job) {
     if (!(std::isfinite(a.omega_min) && a.omega_min < a.omega_b))
       throw InvalidParameter("omega-min", fmt::format("must be a finite number below omega-b = {:g}", a.omega_b));
     checked_finite(a.omega_max, "omega-max");
-    if (a.omega_max > 0 && !(a.omega_max > a.omega_b))
-      throw InvalidParameter("omega-max", fmt::format("must be 0 (the band edge) or above omega-b = {:g}", a.omega_b));
+    const double top = regime::frequency_band(a.p, Branch::optical).hi;  // of the linear spectrum
+    const double highest = regime::max_frequency_over_spectrum_top * top;
+    if (a.omega_max > 0 && !(a.omega_max > a.omega_b && a.omega_max <= highest))
+      throw InvalidParameter("omega-max", fmt::format("must be 0 (the band edge) or in (omega-b, {:g} omega_top] = "
+                                                      "({:g}, {:.6g}], omega_top = {:.6g} the top of the optical band",
+                                                      regime::max_frequency_over_spectrum_top, a.omega_b, highest, top));
   }
   if (job == DarkJob::evolve) {
     if (!(std::isfinite(a.t_end) && a.t_end >= period))
@@ -492,7 +497,7 @@ void register_dark(CLI::App& app) {
   add_integer(*cont, "--points", args->points, 1, 1'000'000, "maximum number of branch points, the first included (default 100; e.g. --points 10 for a quick run)");
   add_number(*cont, "--ds", args->ds, "initial pseudo-arclength step in (Z(0), omega_b), dimensionless, adapted between 1e-5 and 1 (default 0.1)");
   add_number(*cont, "--omega-min", args->omega_min, "stop when omega_b falls below this (dimensionless frequency; default 0)");
-  add_number(*cont, "--omega-max", args->omega_max, "stop when omega_b rises above this (dimensionless frequency; default: the band edge omega(pi))");
+  add_number(*cont, "--omega-max", args->omega_max, "stop when omega_b rises above this (dimensionless frequency, at most twice the top of the optical band; default: the band edge omega(pi))");
   cont->callback([args] { run_continue(*args); });
   auto* evo = dark->add_subcommand(
       "evolve", "Solve, then integrate eq:Hertzd0S from the solution: space-time x_n, y_n, E_b(t), breather position (Figs. 21, 22, 25)");

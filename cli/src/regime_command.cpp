@@ -1,10 +1,12 @@
 // `lrchain regime intervals|map|thresholds`: focusing/defocusing regimes of the NLS limit
 // (Sec. 3.3, Figs. 2, 4, 5). JSON summary on stdout; data, gnuplot scripts and PNGs in --out.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
@@ -582,7 +584,16 @@ void validate_map(const MapArgs& a) {
       validate(with_parameter(a.p, ParameterAxis::delta0, d));
     }
     validate(GridAxis{dr[0], dr[1], a.res_x, a.delta0_log}, "delta0");
-    range_or(a.omega_range, {0.0, 1.0}, "omega-range");
+    // Each end in [0, 2 omega_top], omega_top the top of the optical band over the delta0 range.
+    double top = 0;
+    for (const double d : dr)
+      top = std::max(top, frequency_band(with_parameter(a.p, ParameterAxis::delta0, d), Branch::optical).hi);
+    for (const double w : range_or(a.omega_range, {0.0, top}, "omega-range"))
+      if (!(w >= 0 && w <= max_frequency_over_spectrum_top * top))
+        throw InvalidParameter("omega-range", fmt::format("each end must be in [0, {:.6g}] ({:g} times {:.6g}, the "
+                                                          "top of the optical band over the delta0 range); got {:g}",
+                                                          max_frequency_over_spectrum_top * top,
+                                                          max_frequency_over_spectrum_top, top, w));
   }
   validate_map_output(a, double(branches.size()));
 }
@@ -774,7 +785,7 @@ void register_regime(CLI::App& app) {
   mp->add_option("--rho-range", ma->rho_range, "theta-rho: rho lo hi")->expected(2);
   mp->add_option("--delta0-range", ma->delta0_range, "delta0-omega: delta0 lo hi")->expected(2);
   mp->add_option("--omega-range", ma->omega_range,
-                 "delta0-omega: omega lo hi (default: the band over the delta0 range)")
+                 "delta0-omega: omega lo hi, each in [0, twice the top of the optical band] (default: the band over the delta0 range)")
       ->expected(2);
   mp->add_flag("--delta0-log", ma->delta0_log, "delta0-omega: logarithmic delta0 axis");
   add_integer(*mp, "--nx", ma->res_x, 2, 20000, "pixels along x (rho or delta0), default 600");

@@ -55,7 +55,11 @@ void validate(const BrightRunConfig& c) {
   validate_sampling({c.periods, "periods", true, c.sample_every, c.spacetime_every, c.checkpoint_every,
                      snapshot_periods_in_run(c),
                      (c.checkpoint_at_end && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
-                     "snapshot_periods"});
+                     "snapshot_periods", {}, [&c](double periods) {
+                       BrightRunConfig longer = c;
+                       longer.periods = periods;
+                       return run_sizes(longer);
+                     }, c.max_memory});
   if (!(c.theta > 0 && c.theta <= M_PI)) throw InvalidParameter("theta", "the carrier wavenumber must be in (0, pi]");
   if (!(std::isfinite(c.n0) && std::abs(c.n0) <= double(c.N)))
     throw InvalidParameter("n0", fmt::format("the initial centre must be a site of the lattice, in [-N, N] = [{}, {}]",

@@ -60,7 +60,13 @@ void validate(const DriveRunConfig& c) {
   validate_sampling({c.t_end, "t_end", false, c.sample_every, c.spacetime_every, c.checkpoint_every,
                      snapshot_times_in_run(c),
                      (c.checkpoint_at_end && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
-                     "snapshot_times"});
+                     "snapshot_times",
+                     {{"t-m", c.t_m}, {"front-fit-start", c.front_fit_start}, {"front-fit-end", c.front_fit_end}},
+                     [&c](double t_end) {
+                       DriveRunConfig longer = c;
+                       longer.t_end = t_end;
+                       return run_sizes(longer);
+                     }, c.max_memory});
   if (!(c.front_fraction > 0 && c.front_fraction < 1))
     throw InvalidParameter("front-fraction", "must be in (0, 1)");
   checked_finite(c.t_m, "t-m");

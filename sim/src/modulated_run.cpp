@@ -79,7 +79,12 @@ void validate(const ModulatedRunConfig& c) {
   validate_sampling({c.t_end, "t_end", false, c.sample_every, std::nullopt, c.checkpoint_every,
                      snapshot_times_in_run(c),
                      (c.checkpoint_every > 0 && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
-                     "snapshot_times"});
+                     "snapshot_times", {{"speed-fit-start", c.speed_fit_start}, {"speed-fit-end", c.speed_fit_end}},
+                     [&c](double t_end) {
+                       ModulatedRunConfig longer = c;
+                       longer.t_end = t_end;
+                       return run_sizes(longer);
+                     }, c.max_memory});
   if (c.dark_window < 1 || c.dark_window >= c.N) throw InvalidParameter("dark-window", "must be in [1, N)");
   // (max e - min e)/mean e <= N for any energy density e >= 0 on N sites.
   if (!(c.contrast_threshold > 0 && c.contrast_threshold <= double(c.N)))

@@ -42,6 +42,9 @@ const std::map<std::string, std::vector<std::string>>& base_commands() {
       {"dark continue", {"--omega-b", "2.42", "--sites", "21", "--points", "2", "--quiet", "--out", "@OUT@"}},
       {"dark evolve", {"--omega-b", "2.42", "--sites", "21", "--t-end", "3", "--quiet", "--out", "@OUT@"}},
       {"reproduce", {"--only", "coefficients", "--jobs", "1", "--out", "@OUT@"}},
+      {"sweep",
+       {"--config", LRCHAIN_SOURCE_DIR "/tests/corpus/sweep_small.toml", "--output", "@TMP@/sweep.h5", "--threads", "1",
+        "--quiet"}},
   };
   return bases;
 }
