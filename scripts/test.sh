@@ -43,7 +43,7 @@ if [[ "${LRCHAIN_SANITIZER:-1}" == 1 ]]; then
 fi
 
 if ((${#failed[@]})); then
-  printf 'test.sh: FAILED: %s\n' "${failed[@]}" >&2
+  (IFS=','; echo "test.sh: FAILED stages: ${failed[*]}" >&2)  # one line: CI shows the tail
   exit 1
 fi
 echo "test.sh: all stages passed" >&2

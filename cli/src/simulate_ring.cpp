@@ -72,8 +72,10 @@ void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output) {
               "ring size N (default: the smallest N >= 8 with theta N / (2 pi) whole)");
   add_number(*ring, "--periods", o->run.periods, "carrier periods per frequency measurement (default 400)");
   add_number(*ring, "--steps-per-period", o->run.steps_per_period, "srkn11b steps per carrier period (default 80)");
-  add_number(*ring, "--packet-amplitude", o->run.packet_amplitude,
-             "wave-packet amplitude (default: a tenth of the smallest --amplitudes)");
+  ring->add_option_function<std::string>(
+          "--packet-amplitude", [o](const std::string& text) { o->run.packet_amplitude = parse_number(text, "packet-amplitude"); },
+          "wave-packet amplitude in (0, 10] (default: a tenth of the smallest --amplitudes)")
+      ->type_name("A");
   add_number(*ring, "--packet-width", o->run.packet_width, "Gaussian width of the packet in sites (default 24)");
   ring->fallthrough();
   ring->callback([o, ring, output] { run_ring_command(*o, *ring, output); });

@@ -82,8 +82,8 @@ void validate(const RingRunConfig& c) {
   if (!(c.periods >= 10 && c.periods <= 1e5)) throw InvalidParameter("periods", "must be in [10, 1e5] carrier periods");
   if (!(c.steps_per_period >= 8 && c.steps_per_period <= 1e4))
     throw InvalidParameter("steps-per-period", "must be in [8, 1e4]");
-  if (!(c.packet_amplitude >= 0 && c.packet_amplitude <= 10))
-    throw InvalidParameter("packet-amplitude", "must be in [0, 10] (0: a tenth of the smallest amplitude)");
+  if (c.packet_amplitude && !(*c.packet_amplitude > 0 && *c.packet_amplitude <= 10))
+    throw InvalidParameter("packet-amplitude", "must be in (0, 10] (default: a tenth of the smallest amplitude)");
   if (!(c.packet_width >= 4 && c.packet_width <= 1000)) throw InvalidParameter("packet-width", "must be in [4, 1000] sites");
 }
 
@@ -194,7 +194,7 @@ RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernel
   r.packet_width = c.packet_width;
   double smallest = c.amplitudes.front();
   for (double U : c.amplitudes) smallest = std::min(smallest, U);
-  r.packet_amplitude = c.packet_amplitude > 0 ? c.packet_amplitude : smallest / 10;
+  r.packet_amplitude = c.packet_amplitude.value_or(smallest / 10);
   const long multiple = std::max(1L, long(std::ceil(40 * c.packet_width / double(r.sites))));
   r.packet_sites = multiple * r.sites;
   const double period = 2 * std::numbers::pi / r.omega;

@@ -79,7 +79,7 @@ TEST_CASE("drive: t_m and the fit window beyond t_end are accepted up to the rea
   }
 }
 
-TEST_CASE("checkpoint-every beyond the run is accepted up to the reach; 1e308 is refused with the range") {
+TEST_CASE("checkpoint-every beyond the run is accepted up to the reach — 1e308 is refused with the range") {
   DriveRunConfig d = short_drive();
   d.checkpoint_every = 100;  // the first periodic checkpoint in a continuation
   CHECK_NOTHROW(validate(d));

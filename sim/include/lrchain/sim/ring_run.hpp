@@ -26,7 +26,7 @@ struct RingRunConfig {
   long sites = 0;                             // ring size N; 0: the smallest N >= 8 with theta N / (2 pi) whole
   double periods = 400;                       // carrier periods per frequency measurement
   double steps_per_period = 80;               // srkn11b steps per carrier period
-  double packet_amplitude = 0;                // 0: a tenth of the smallest amplitude
+  std::optional<double> packet_amplitude;     // default: a tenth of the smallest amplitude
   double packet_width = 24;                   // standard deviation of the packet's Gaussian envelope, in sites
 };
 
