@@ -1,6 +1,7 @@
 // lrchain.dark: exact stationary dark breathers (Sec. 5.3-5.4): shooting Newton from the eq:xy_app
 // seed, pseudo-arclength continuation in omega_b, Floquet multipliers, direct evolution; the sim
 // library's dark/ functions, run without the GIL, results as numpy arrays.
+#include <algorithm>
 #include <complex>
 #include <fmt/format.h>
 #include <numbers>
@@ -185,9 +186,13 @@ py::dict continue_job(const Params& p, double omega_b, const std::string& edge, 
                       double omega_min, std::optional<double> omega_max, bool floquet) {
   const DarkJob j = make_job(p, omega_b, edge, center, sites, mode, tolerance, max_iterations);
   if (points < 1) throw InvalidParameter("points", "must be an integer >= 1");
-  if (!(ds > 0 && std::isfinite(ds))) throw InvalidParameter("ds", "must be a finite number > 0");
-  if (!std::isfinite(omega_min)) throw InvalidParameter("omega_min", "must be a finite number");
-  if (omega_max && !std::isfinite(*omega_max)) throw InvalidParameter("omega_max", "must be a finite number or None");
+  try {
+    validate_continuation_window(p, omega_b, ds, omega_min, omega_max);
+  } catch (const InvalidParameter& e) {  // the library names CLI options: omega-max -> omega_max
+    std::string name = e.parameter(), text = e.what();
+    std::replace(name.begin(), name.end(), '-', '_');
+    throw InvalidParameter(name, text.substr(text.find(": ") + 2));
+  }
   check_job_memory(j, floquet, 0);
   InterruptGuard guard;
   BranchResult br = guard.run([&] {

@@ -92,3 +92,17 @@ def test_regime_options():
     with pytest.raises(lrchain.InvalidParameterError) as err:
         lrchain.regime.boundary_curves(lrchain.Params(), "optical", axis="kappa")
     assert err.value.parameter == "axis"
+
+
+@pytest.mark.parametrize("option, value", [
+    # the same window as `lrchain dark continue` (sim/src/dark/continuation_window.cpp): omega_max in
+    # (omega_b, 2 omega_top], omega_top = 2.4495 the top of the optical band at the paper's parameters
+    ("omega_max", 1e308),
+    ("omega_max", 2.40),
+    ("omega_min", 2.43),
+    ("ds", 5.0),
+])
+def test_continuation_window(option, value):
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.dark.continue_branch(lrchain.Params(), omega_b=2.42, points=3, **{option: value})
+    assert err.value.parameter == option

@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 #include <atomic>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,5 +49,11 @@ struct BranchResult {
 BranchResult continue_branch(const DarkShooting& shooting, const Eigen::VectorXd& q0, double omega0,
                              const ContinuationOptions& options,
                              const std::function<void(const BranchPoint&)>& on_point = {});
+
+// Checks the window of a continuation started at omega_b (InvalidParameter naming the option): the
+// step ds in (0, 1] (it adapts within [1e-5, 1]), a finite omega_min below omega_b, and omega_max
+// (none: the band edge) in (omega_b, 2 omega_top] with omega_top the top of the optical band.
+void validate_continuation_window(const Params& p, double omega_b, double ds, double omega_min,
+                                  std::optional<double> omega_max);
 
 }  // namespace lrchain::sim::dark
