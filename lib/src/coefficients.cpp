@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/half_angle.hpp"
 #include "lrchain/coefficients_kernel.hpp"
 
 namespace lrchain {
@@ -20,7 +21,8 @@ std::string_view to_string(Regime r) {
 
 // The shared straight-line evaluation (coefficients_kernel.hpp) at sin(theta/2), cos(theta/2).
 NlsCoefficients coefficients_unchecked(const Params& p, const TaylorCoefficients& K, Branch b, double theta) {
-  const double sh = std::sin(0.5 * theta), ch = std::cos(0.5 * theta);
+  double sh, ch;
+  detail::half_angle_sincos(0.5 * theta, sh, ch);
   return b == Branch::optical ? detail::coefficients_from_half_angle<Branch::optical>(p, K, theta, sh, ch)
                               : detail::coefficients_from_half_angle<Branch::acoustic>(p, K, theta, sh, ch);
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/half_angle.hpp"
 
 namespace lrchain {
 
@@ -23,7 +24,8 @@ Branch parse_branch(std::string_view text) {
 // eq:disp1d: omega^2 = (S +- sqrt(S^2 - 4 D kappa/rho))/2, S = D + kappa + kappa/rho,
 // with S^2 - 4 D kappa/rho = (D + kappa - kappa/rho)^2 + 4 kappa^2/rho.
 double dispersion_omega(double K2, double kappa, double rho, Branch b, double theta) {
-  const double sh = std::sin(0.5 * theta);
+  double sh, ch;
+  detail::half_angle_sincos(0.5 * theta, sh, ch);
   const double D = 4.0 * K2 * sh * sh;
   const double kr = kappa / rho;
   const double S = D + kappa + kr;

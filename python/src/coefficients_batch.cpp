@@ -1,11 +1,12 @@
 // The resonant chain's NLS coefficients over a contiguous array of wavenumbers, structure of arrays
-// out. Blocks of kBlock wavenumbers: first sin and cos of theta/2 (glibc's scalar sincos, the same
-// calls as coefficients_unchecked), then the straight-line kernel (coefficients_kernel.hpp) over the
-// block, which the compiler vectorises; built for AVX-512, AVX2 and baseline x86-64, the variant
-// chosen at load time by the CPU (target_clones). Only correctly rounded operations and selects
+// out. Blocks of kBlock wavenumbers: first sin and cos of theta/2 (half_angle.hpp, the same
+// function as coefficients_unchecked), then the straight-line kernel (coefficients_kernel.hpp) over
+// the block; the compiler vectorises both loops. Built for AVX-512, AVX2 and baseline x86-64, the
+// variant chosen at load time by the CPU (target_clones). Only correctly rounded operations and selects
 // are vectorised, so every variant is bit-identical to the scalar path.
 #include "coefficients_batch.hpp"
 #include "lrchain/coefficients_kernel.hpp"
+#include "lrchain/half_angle.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -58,10 +59,7 @@ template <Branch branch>
   double sh[kBlock], ch[kBlock];
   for (std::ptrdiff_t start = 0; start < n; start += kBlock) {
     const std::ptrdiff_t count = std::min(kBlock, n - start);
-    for (std::ptrdiff_t i = 0; i < count; ++i) {
-      sh[i] = std::sin(0.5 * theta[start + i]);
-      ch[i] = std::cos(0.5 * theta[start + i]);
-    }
+    for (std::ptrdiff_t i = 0; i < count; ++i) detail::half_angle_sincos(0.5 * theta[start + i], sh[i], ch[i]);
     double* const* f = out.field;
     evaluate_block<branch>(p, K, theta + start, sh, ch, count, f[0] + start, f[1] + start, f[2] + start,
                            f[3] + start, f[4] + start, f[5] + start, f[6] + start, f[7] + start, f[8] + start,

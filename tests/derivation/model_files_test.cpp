@@ -244,6 +244,10 @@ TEST_CASE("bad model files: exit-2 errors name the file, the line and the proble
   CHECK(error_of(replaced(good, "w0^2*u[n]", "G(u[n])")).find("undefined function 'G'") != std::string::npos);
   // A force that does not vanish at equilibrium.
   CHECK(error_of(replaced(good, "- u[n]^3", "- u[n]^3 + C")) == "bad.toml:8: force of field u: the force does not vanish at equilibrium (all fields zero): it is C");
+  // A force law with a pole at its equilibrium (found by fuzzing: GiNaC's division by zero was exit 1).
+  const std::string singular = replaced(replaced(good, "[[field]]", "[functions.F]\nargument = \"r\"\nexpression = \"1/r\"\n[[field]]"),
+                                        "- u[n]^3", "- F(u[n])");
+  CHECK(error_of(singular).find("bad.toml:11: force of field u: function F has no Taylor expansion about its equilibrium r = 0") == 0);
   // No real branch: u'' = C (...) + w0^2 u has omega^2 = C D1 - w0^2 < 0 for C = 1/10, w0 = 1.
   CHECK(error_of(replaced(good, "- w0^2*u[n]", "+ w0^2*u[n]")).find("bad.toml: model kg has no real branch") == 0);
   // A default outside its declared range; a --set value outside it.

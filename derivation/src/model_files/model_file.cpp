@@ -167,7 +167,13 @@ class Loader {
       for (const auto& row : out_.model.shifted)
         for (const auto& s : row) zero[s] = 0;
       const ex r0 = normal(call.argument.subs(zero));
-      std::vector<ex> c = taylor_coefficients(f, r0);
+      std::vector<ex> c;
+      try {
+        c = taylor_coefficients(f, r0);
+      } catch (const std::exception& e) {  // GiNaC: a pole or an undefined value at the equilibrium
+        throw InputError(where + ": function " + f.name + " has no Taylor expansion about its equilibrium " +
+                         f.argument + " = " + to_text(r0) + " (" + e.what() + ")");
+      }
       if (!f.taylor_names.empty()) name_intermediates(f, r0, c, where);
       const ex x = call.argument - r0;
       replacement[call.placeholder] = c[0] + c[1] * x + c[2] * pow(x, 2) + c[3] * pow(x, 3);
@@ -267,7 +273,16 @@ class Loader {
 
 }  // namespace
 
-ModelFile parse_model_text(const std::string& text, const std::string& path) { return Loader(text, path).run(); }
+// Any other failure of GiNaC on the file's expressions is the file's fault too: exit 2 naming it.
+ModelFile parse_model_text(const std::string& text, const std::string& path) {
+  try {
+    return Loader(text, path).run();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(path + ": the model's expressions cannot be evaluated: " + e.what());
+  }
+}
 
 ModelFile load_model_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -58,7 +58,8 @@ exmap parameter_values(const ModelFile& model, const std::vector<std::pair<std::
   exmap values;
   for (const auto& p : model.parameters) values[p.symbol] = p.default_value;
   for (const auto& [name, text] : overrides) {
-    auto it = std::find_if(model.parameters.begin(), model.parameters.end(), [&](const auto& p) { return p.name == name; });
+    const std::string_view wanted = name;  // a lambda may not capture a structured binding (clang 14)
+    auto it = std::find_if(model.parameters.begin(), model.parameters.end(), [&](const auto& p) { return p.name == wanted; });
     if (it == model.parameters.end()) {
       std::vector<std::string> names;
       for (const auto& p : model.parameters) names.push_back(p.name);

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/half_angle.hpp"
 
 namespace lrchain {
 
@@ -53,7 +54,8 @@ Model::Model(std::shared_ptr<const ModelDefinition> definition, const std::vecto
   std::vector<double> p;
   for (const auto& parameter : parameters) p.push_back(parameter.default_value);
   for (const auto& [name, value] : values) {
-    auto it = std::find_if(parameters.begin(), parameters.end(), [&](const auto& q) { return q.name == name; });
+    const std::string_view wanted = name;  // a lambda may not capture a structured binding (clang 14)
+    auto it = std::find_if(parameters.begin(), parameters.end(), [&](const auto& q) { return q.name == wanted; });
     if (it == parameters.end()) {
       std::string known;
       for (const auto& q : parameters) known += (known.empty() ? "" : ", ") + q.name;
@@ -144,7 +146,8 @@ namespace {
 // (inlined into both entry points: this is the hot path of every map and scan).
 [[gnu::always_inline]] inline bool evaluate_coefficients(const ModelDefinition& d, const double* q, std::size_t branch,
                                                          double theta, NlsCoefficients& c) noexcept {
-  const double sh = std::sin(0.5 * theta), ch = std::cos(0.5 * theta);
+  double sh, ch;
+  detail::half_angle_sincos(0.5 * theta, sh, ch);
   const double D1 = 4.0 * sh * sh;  // no cancellation near theta = 0
   const double sigma = 2.0 * sh * ch;
   double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
@@ -194,7 +197,8 @@ NlsCoefficients coefficients(const Model& model, std::size_t branch, double thet
   NlsCoefficients c;
   if (evaluate_coefficients(d, model.inputs().data(), branch, theta, c)) [[likely]] return c;
   double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
-  const double sh = std::sin(0.5 * theta), ch = std::cos(0.5 * theta);
+  double sh, ch;
+  detail::half_angle_sincos(0.5 * theta, sh, ch);
   d.evaluators.evaluate_dispersion(4.0 * sh * sh, 2.0 * sh * ch, model.inputs().data(), w);
   if (!omega_squared_roots(w, d.degree, roots))
     throw InvalidParameter("theta", "model " + d.name + " has no real frequency at this wavenumber");
