@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/hdf5_tree.hpp"
+#include "lrchain/sim/result_hdf5.hpp"
 #include "lrchain/version.hpp"
 
 namespace py = pybind11;
@@ -64,6 +65,67 @@ void write_hdf5(const std::string& path, const py::dict& tree) {
   file.commit();
 }
 
+template <class T>
+std::vector<T> vector_of(const py::handle& a) {
+  const auto c = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
+  if (!c) throw py::type_error("to_hdf5: expected a numeric array");
+  return std::vector<T>(c.data(), c.data() + c.size());
+}
+
+// The run's record from a Python result's arrays: `series` {record column: array}, `field`
+// (quantity, n, t, values) of the energy density, `snapshots` [(t, tag, {column: array})]; the same
+// numbers as the C++ record the result was made from (float32 space-time values stay float32).
+sim::RunRecord record_of(const py::dict& series, const py::tuple& field, const py::list& snapshots) {
+  sim::RunRecord record;
+  std::vector<std::vector<double>> columns;
+  for (auto [name, values] : series) {
+    record.series.names.push_back(py::str(name));
+    columns.push_back(vector_of<double>(values));
+  }
+  const std::size_t rows = columns.empty() ? 0 : columns[0].size();
+  for (std::size_t r = 0; r < rows; ++r)
+    for (const auto& c : columns) record.series.data.push_back(c.at(r));
+  sim::SpaceTime f;
+  f.quantity = field[0].cast<std::string>();
+  const std::vector<double> n = vector_of<double>(field[1]);
+  f.first_label = n.empty() ? 0 : long(n[0]);
+  f.sites = n.size();
+  f.times = vector_of<double>(field[2]);
+  f.values = vector_of<float>(field[3]);
+  record.fields.push_back(std::move(f));
+  for (const auto& item : snapshots) {
+    const auto s = item.cast<py::tuple>();
+    sim::Snapshot snap;
+    snap.t = s[0].cast<double>();
+    snap.tag = s[1].cast<std::string>();
+    std::vector<std::vector<double>> cols;
+    for (auto [name, values] : s[2].cast<py::dict>()) {
+      snap.names.push_back(py::str(name));
+      cols.push_back(vector_of<double>(values));
+    }
+    const std::size_t length = cols.empty() ? 0 : cols[0].size();
+    for (std::size_t r = 0; r < length; ++r)
+      for (const auto& c : cols) snap.data.push_back(c.at(r));
+    record.snapshots.push_back(std::move(snap));
+  }
+  return record;
+}
+
+// A simulation result through the sim library's writer (the file `lrchain simulate --format hdf5`
+// writes); `extra` [(name, quantity, n, t, values)] are the fields recorded at every sample.
+void write_simulation(const std::string& path, const std::string& kind, const py::dict& series, const py::tuple& field,
+                      const py::list& snapshots, const std::string& summary_json, const py::list& extra) {
+  const sim::SimulationKind k = sim::simulation_kind(kind);
+  const sim::RunRecord record = record_of(series, field, snapshots);
+  std::vector<sim::SampledField> fields;
+  for (const auto& item : extra) {
+    const auto e = item.cast<py::tuple>();
+    fields.push_back({e[0].cast<std::string>(), e[1].cast<std::string>(), vector_of<double>(e[2]),
+                      vector_of<double>(e[3]), vector_of<double>(e[4])});
+  }
+  sim::write_simulation_hdf5(path, k, record, nlohmann::json::parse(summary_json), fields);
+}
+
 }  // namespace
 
 }  // namespace lrchain::python
@@ -73,5 +135,8 @@ PYBIND11_MODULE(_hdf5, m) {
   m.doc() = "HDF5 writer of lrchain's results (the HDF5 C library).";
   m.def("write_hdf5", &write_hdf5, py::arg("path"), py::arg("tree"),
         "Writes {name: dict | array | number | str} as HDF5 groups, datasets and attributes.");
+  m.def("write_simulation", &write_simulation, py::arg("path"), py::arg("kind"), py::arg("series"), py::arg("field"),
+        py::arg("snapshots"), py::arg("summary_json"), py::arg("extra"),
+        "Writes a bright/drive/modulated run with the sim library's writer (the CLI's --format hdf5 file).");
   m.attr("version") = LRCHAIN_VERSION_STRING;
 }
