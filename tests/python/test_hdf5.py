@@ -143,3 +143,22 @@ def test_cli_hdf5_equals_python_to_hdf5(tmp_path, cli, kind, cli_args, python_ru
         assert f.attrs["model"] == "locally_resonant_granular_chain"
         assert json.loads(f.attrs["parameters"])["rho"] == f["summary/params"].attrs["rho"]
         assert f["energy_density/values"].dtype == np.float32
+
+
+@pytest.mark.parametrize("command, python_run", [
+    (["dark", "solve"], lambda: lrchain.dark.solve(lrchain.Params(), omega_b=2.42, sites=21)),
+    (["dark", "floquet"], lambda: lrchain.dark.floquet(lrchain.Params(), omega_b=2.42, sites=21)),
+    (["dark", "continue", "--points", "2", "--ds", "0.05"],
+     lambda: lrchain.dark.continue_branch(lrchain.Params(), omega_b=2.42, sites=21, points=2, ds=0.05)),
+])
+def test_cli_dark_hdf5_equals_python_to_hdf5(tmp_path, cli, command, python_run):
+    """`lrchain dark solve|floquet|continue --format hdf5` and Python's to_hdf5() of the same
+    computation write the same datasets and attributes with the same values (one writer in C++)."""
+    cli(*command, "--omega-b", "2.42", "--sites", "21", "--quiet", "--out", tmp_path / "cli", "--format", "hdf5")
+    python_run().to_hdf5(tmp_path / "python.h5")
+    compared = _assert_same_file(tmp_path / "cli" / "result.h5", tmp_path / "python.h5")
+    assert compared >= 12
+    with h5py.File(tmp_path / "cli" / "result.h5", "r") as f:
+        assert json.loads(f.attrs["parameters"]) == {"alpha": 1.5, "delta0": 4 / 9, "kappa": 1.0, "rho": 1 / 3}
+        if "floquet" in f:
+            assert f["floquet/multipliers"].dtype == np.complex128

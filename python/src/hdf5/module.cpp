@@ -5,8 +5,10 @@
 #include <pybind11/numpy.h>
 
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/hdf5_tree.hpp"
+#include "lrchain/sim/dark/dark_hdf5.hpp"
 #include "lrchain/sim/result_hdf5.hpp"
 #include "lrchain/version.hpp"
 
@@ -126,6 +128,75 @@ void write_simulation(const std::string& path, const std::string& kind, const py
   sim::write_simulation_hdf5(path, k, record, nlohmann::json::parse(summary_json), fields);
 }
 
+Params params_of(const py::tuple& p) {
+  return Params{p[0].cast<double>(), p[1].cast<double>(), p[2].cast<double>(), p[3].cast<double>()};
+}
+
+sim::dark::DarkMeasures measures_of(const py::dict& m) {
+  sim::dark::DarkMeasures r;
+  r.norm_squared = m["norm_squared"].cast<double>();
+  r.K_x = m["K_x"].cast<double>();
+  r.K_y = m["K_y"].cast<double>();
+  r.C_x = m["C_x"].cast<double>();
+  r.C_y = m["C_y"].cast<double>();
+  r.E_b = m["E_b"].cast<double>();
+  r.max_strain = m["max_strain"].cast<double>();
+  return r;
+}
+
+sim::dark::FloquetRecord floquet_of(const py::dict& f) {
+  sim::dark::FloquetRecord r;
+  r.multipliers = vector_of<std::complex<double>>(f["multipliers"]);
+  r.kind = f["kind"].cast<std::string>();
+  r.max_modulus = f["max_modulus"].cast<double>();
+  r.max_real = f["max_real"].cast<double>();
+  r.max_period_doubling = f["max_period_doubling"].cast<double>();
+  r.max_oscillatory = f["max_oscillatory"].cast<double>();
+  r.near_one = f["near_one"].cast<std::int64_t>();
+  r.pairing_defect = f["pairing_defect"].cast<double>();
+  r.conjugation_defect = f["conjugation_defect"].cast<double>();
+  r.log_det = f["log_det"].cast<double>();
+  return r;
+}
+
+// A dark breather through the sim library's writer (the file `lrchain dark solve|floquet --format hdf5`
+// writes): `d` holds the DarkSolution's fields (floquet: a dict or None), `params` (alpha, delta0, kappa, rho).
+void write_dark_solution(const std::string& path, const py::tuple& params, const py::dict& d) {
+  sim::dark::DarkSolutionRecord r;
+  r.params = params_of(params);
+  r.omega_b = d["omega_b"].cast<double>();
+  r.omega_edge = d["omega_edge"].cast<double>();
+  r.x = vector_of<double>(d["x"]);
+  r.y = vector_of<double>(d["y"]);
+  r.x_seed = vector_of<double>(d["x_seed"]);
+  r.y_seed = vector_of<double>(d["y_seed"]);
+  r.newton_residuals = vector_of<double>(d["newton_residuals"]);
+  r.measures = measures_of(d["measures"].cast<py::dict>());
+  if (!d["floquet"].is_none()) r.floquet = floquet_of(d["floquet"].cast<py::dict>());
+  sim::dark::write_dark_solution_hdf5(path, r);
+}
+
+// A branch through the sim library's writer (`lrchain dark continue --format hdf5`): `d` holds the
+// Branch's fields (measures: list of dicts; floquet: list of dicts, or None when not computed).
+void write_dark_branch(const std::string& path, const py::tuple& params, const py::dict& d) {
+  sim::dark::DarkBranchRecord r;
+  r.params = params_of(params);
+  r.omega_b = vector_of<double>(d["omega_b"]);
+  r.tangent_omega = vector_of<double>(d["tangent_omega"]);
+  r.residual = vector_of<double>(d["residual"]);
+  r.iterations = vector_of<std::int32_t>(d["iterations"]);
+  const auto x = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(d["x"]);
+  r.sites = x.ndim() == 2 ? std::size_t(x.shape(1)) : 0;
+  r.x = vector_of<double>(d["x"]);
+  r.y = vector_of<double>(d["y"]);
+  for (const auto& m : d["measures"].cast<py::list>()) r.measures.push_back(measures_of(m.cast<py::dict>()));
+  if (!d["floquet"].is_none())
+    for (const auto& f : d["floquet"].cast<py::list>()) r.floquet.push_back(floquet_of(f.cast<py::dict>()));
+  r.turning_points = d["turning_points"].cast<std::vector<double>>();
+  r.stop_reason = d["stop_reason"].cast<std::string>();
+  sim::dark::write_dark_branch_hdf5(path, r);
+}
+
 }  // namespace
 
 }  // namespace lrchain::python
@@ -138,5 +209,9 @@ PYBIND11_MODULE(_hdf5, m) {
   m.def("write_simulation", &write_simulation, py::arg("path"), py::arg("kind"), py::arg("series"), py::arg("field"),
         py::arg("snapshots"), py::arg("summary_json"), py::arg("extra"),
         "Writes a bright/drive/modulated run with the sim library's writer (the CLI's --format hdf5 file).");
+  m.def("write_dark_solution", &write_dark_solution, py::arg("path"), py::arg("params"), py::arg("solution"),
+        "Writes a dark breather with the sim library's writer (the CLI's dark solve|floquet --format hdf5 file).");
+  m.def("write_dark_branch", &write_dark_branch, py::arg("path"), py::arg("params"), py::arg("branch"),
+        "Writes a dark-breather branch with the sim library's writer (the CLI's dark continue --format hdf5 file).");
   m.attr("version") = LRCHAIN_VERSION_STRING;
 }
