@@ -89,9 +89,10 @@ def _hdf5_items(path):
 
 
 # Entries that differ between two runs of the same physics: timings, the date, the command line,
+# the commit each binary was built at (the CLI and the module may be rebuilt at different times),
 # the checkpoints (the CLI writes them to --out), and the CLI's own report keys (where the files
 # went), which a Python run does not have.
-_RUN_DEPENDENT = ("solve_seconds", "probe_seconds", "@date", "@command_line", "@cores", "checkpoint")
+_RUN_DEPENDENT = ("solve_seconds", "probe_seconds", "@date", "@command_line", "@cores", "checkpoint", "@git_commit")
 _CLI_ONLY = ("/summary@out", "/summary@checkpoint_file", "/summary@checkpoints_written", "/summary@t_start",
              "/summary@figures")
 
