@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "lrchain/sim/dark/dark_hdf5.hpp"
 #include "figure_format_option.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
@@ -46,6 +47,7 @@ struct DarkArgs {
   double t_end = 0;
   int samples = 24;
   double max_memory = 0;  // bytes (--max-memory); 0: the machine's available memory
+  std::string format = "csv";  // --format hdf5: also OUT/result.h5 (solve, floquet, continue)
 };
 
 enum class DarkJob { solve, floquet, branch, evolve };
@@ -253,6 +255,9 @@ void run_solve(const DarkArgs& a, bool floquet) {
                                     a.center, a.omega_b),
                         "profile.png"});
     if (floquet) write_multipliers(a.out, "multipliers", f, a.omega_b, figures);
+    if (a.format == "hdf5")
+      sim::dark::write_dark_solution_hdf5(std::filesystem::path(a.out) / "result.h5",
+                                          sim::dark::dark_solution_record(a.p, a.omega_b, s.ansatz.omega, z0, seed, s.newton, m, floquet ? &f : nullptr));
     figures.finish(j);
   }
   std::printf("%s\n", j.dump(2).c_str());
@@ -310,6 +315,8 @@ void run_continue(const DarkArgs& a) {
     sim::Figures figures(a.out);
     sim::write_file_atomic(a.out, "branch.csv", csv.str());
     sim::write_file_atomic(a.out, "floquet_moduli.csv", mult.str());
+    if (a.format == "hdf5")
+      sim::dark::write_dark_branch_hdf5(std::filesystem::path(a.out) / "result.h5", sim::dark::dark_branch_record(a.p, br, std::size_t(a.sites), o.floquet));
     // The x range reaches the band edge, so that its line (omega_opt or omega_acs) is inside the frame.
     double lowest = s.ansatz.omega;
     for (const auto& b : br.points) lowest = std::min(lowest, b.omega_b);
@@ -501,6 +508,11 @@ void register_dark(CLI::App& app) {
   add_integer(*evo, "--samples", args->samples, 4, 1'000'000,
               "samples of x_n(t) per period for the amplitudes of the position measure (default 24, >= 4)");
   evo->callback([args] { run_evolve(*args); });
+  for (auto* sub : {solve_cmd, floq, cont})
+    sub->add_option("--format", args->format,
+                    "data files in --out: csv (CSV and figures; default) or hdf5 (also result.h5: profiles or the "
+                    "branch, Floquet multipliers as complex numbers)")
+        ->check(CLI::IsMember({"csv", "hdf5"}));
 }
 
 }  // namespace lrchain::cli

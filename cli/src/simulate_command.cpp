@@ -22,6 +22,7 @@
 
 #include "commands.hpp"
 #include "figure_format_option.hpp"
+#include "lrchain/sim/result_hdf5.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/bright_outputs.hpp"
 #include "lrchain/sim/bright_run.hpp"
@@ -158,6 +159,7 @@ sim::RunControl make_control(ProgressBar& bar) {
 struct ReportStyle {
   bool compact_json = false;
   bool figures = true;
+  std::string format = "csv";  // --format: csv (data files and figures) or hdf5 (result.h5)
 };
 
 template <class Config, class Run, class Write>
@@ -178,7 +180,7 @@ void run_and_report(const Config& cfg, const std::string& out, const ReportStyle
   j["t_start"] = r.summary.t_start;
   if (!out.empty()) {
     j["out"] = out;
-    j["figures"] = write(out, r, j, style.figures);
+    j["figures"] = style.format == "hdf5" ? sim::write_hdf5_outputs(out, r, j) : write(out, r, j, style.figures);
   }
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::cout << (style.compact_json ? j.dump() : j.dump(2)) << std::endl;
@@ -250,6 +252,10 @@ void register_simulate(CLI::App& app) {
   auto max_memory = std::make_shared<double>(0.0);
   add_max_memory(*sim_cmd, *max_memory);
   add_figure_format(*sim_cmd);
+  sim_cmd->add_option("--format", style->format,
+                      "data files in --out: csv (CSV, float32 space-time files and figures; default) or hdf5 "
+                      "(result.h5 with the series, fields, snapshots and summary; no figures)")
+      ->check(CLI::IsMember({"csv", "hdf5"}));
   sim_cmd->require_subcommand(0, 1);
   {
     // `simulate ring` (simulate_ring.cpp) reports through --out, --json and --no-figures too.

@@ -10,13 +10,14 @@ these computations (Newton, the Floquet multipliers' monodromy matrix, continuat
 stops it within one integration step and raises ``KeyboardInterrupt``.
 """
 
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass, fields
+import os
 
 import numpy as np
 
 from . import _lrchain
 from ._lrchain import Params
-from .hdf5 import HDF5Mixin, _tree
+from .hdf5 import HDF5Mixin
 
 
 @dataclass(frozen=True)
@@ -42,6 +43,22 @@ class Floquet:
         return f"Floquet({self.kind}, {len(self.multipliers)} multipliers, max |lambda| = {self.max_modulus:.6g})"
 
 
+def _params_tuple(params):
+    p = Params() if params is None else params
+    return (p.alpha, p.delta0, p.kappa, p.rho)
+
+
+def _plain(result):
+    """The result's fields as a dict, Floquet results as dicts (the C++ writer's input)."""
+    d = {f.name: getattr(result, f.name) for f in fields(result)}
+    floquet = d.get("floquet")
+    if isinstance(floquet, Floquet):
+        d["floquet"] = asdict(floquet)
+    elif isinstance(floquet, list):
+        d["floquet"] = [asdict(f) for f in floquet] if floquet and all(f is not None for f in floquet) else None
+    return d
+
+
 @dataclass(frozen=True, repr=False)
 class DarkSolution(HDF5Mixin):
     """A converged dark breather: profile ``x``, ``y`` = Z(0) on sites ``n`` (centred), the NLS seed
@@ -59,6 +76,14 @@ class DarkSolution(HDF5Mixin):
     omega_edge: float
     measures: dict
     floquet: Floquet = None
+    params: Params = None
+
+    def to_hdf5(self, path):
+        """Writes this solution with the C++ library's writer, the file ``lrchain dark solve|floquet
+        --format hdf5`` writes (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        _hdf5.write_dark_solution(os.fspath(path), _params_tuple(self.params), _plain(self))
 
     def __repr__(self):
         f = f", {self.floquet!r}" if self.floquet else ""
@@ -71,8 +96,8 @@ def _floquet(d):
     return None if d is None else Floquet(**d)
 
 
-def _solution(omega_b, d):
-    return DarkSolution(omega_b=omega_b, floquet=_floquet(d.pop("floquet", None)), **d)
+def _solution(params, omega_b, d):
+    return DarkSolution(omega_b=omega_b, floquet=_floquet(d.pop("floquet", None)), params=params, **d)
 
 
 def solve(params=None, omega_b=2.42, edge="optical", center="bond", sites=101, mode="reversible",
@@ -80,7 +105,7 @@ def solve(params=None, omega_b=2.42, edge="optical", center="bond", sites=101, m
     """Newton (least squares) from the eq. xy_app seed; returns :class:`DarkSolution`."""
     params = Params() if params is None else params
     d = _lrchain.dark_solve(params, omega_b, edge, center, sites, mode, tolerance, max_iterations, False, False)
-    return _solution(omega_b, d)
+    return _solution(params, omega_b, d)
 
 
 def floquet(params=None, omega_b=2.42, edge="optical", center="bond", sites=101, mode="reversible",
@@ -91,7 +116,7 @@ def floquet(params=None, omega_b=2.42, edge="optical", center="bond", sites=101,
     params = Params() if params is None else params
     d = _lrchain.dark_solve(params, omega_b, edge, center, sites, mode, tolerance, max_iterations, True,
                             full_monodromy)
-    return _solution(omega_b, d)
+    return _solution(params, omega_b, d)
 
 
 @dataclass(frozen=True, repr=False)
@@ -112,19 +137,15 @@ class Branch(HDF5Mixin):
     floquet: list
     turning_points: list
     stop_reason: str
+    params: Params = None
 
-    def _hdf5_tree(self):
-        # Per-point measures and Floquet spectra as arrays over the branch points.
-        tree = {name: _tree(getattr(self, name)) for name in
-                ("omega_b", "tangent_omega", "residual", "iterations", "x", "y", "turning_points", "stop_reason")}
-        tree["measures"] = {k: np.array([m[k] for m in self.measures]) for k in (self.measures[0] if self.measures else {})}
-        if self.floquet and all(f is not None for f in self.floquet):
-            tree["floquet"] = {"multipliers": np.stack([f.multipliers for f in self.floquet]),
-                               "kind": _tree([f.kind for f in self.floquet])}
-            for name in ("max_modulus", "max_real", "max_period_doubling", "max_oscillatory", "near_one",
-                         "pairing_defect", "conjugation_defect", "log_det"):
-                tree["floquet"][name] = np.array([getattr(f, name) for f in self.floquet])
-        return tree
+    def to_hdf5(self, path):
+        """Writes the branch with the C++ library's writer, the file ``lrchain dark continue --format
+        hdf5`` writes: profiles, measures and Floquet spectra (multipliers as a complex (points, 4N)
+        array; layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        _hdf5.write_dark_branch(os.fspath(path), _params_tuple(self.params), _plain(self))
 
     @property
     def norm_squared(self):
@@ -153,7 +174,7 @@ def continue_branch(params=None, omega_b=2.42, edge="optical", center="bond", si
     d = _lrchain.dark_continue(params, omega_b, edge, center, sites, mode, tolerance, max_iterations, points, ds,
                                omega_min, omega_max, floquet)
     d["floquet"] = [_floquet(f) for f in d["floquet"]]
-    return Branch(**d)
+    return Branch(params=params, **d)
 
 
 @dataclass(frozen=True, repr=False)

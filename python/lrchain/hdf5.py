@@ -1,6 +1,13 @@
 """Results to HDF5 files (read them with h5py): ``result.to_hdf5(path)`` on every result object.
 
-The layout follows the result's fields: a numpy array is a dataset, a nested result (e.g. a
+Simulation results (bright, drive, modulated) are written by the C++ library's writer, the same file
+``lrchain simulate ... --format hdf5`` writes: root attributes ``lrchain_result``, ``lrchain_version``,
+``git_commit``, ``model``, ``parameters`` (JSON); the series as datasets (``t``, ``E_x``, ...,
+``centre``), the ``energy_density`` group (``n``, ``t``, float32 ``values``), ``snapshots/<k>`` (attributes
+``t``, ``tag``; group ``columns``), the ``summary`` tree and the optional per-sample fields (``x``, ``y``
+or ``u``, ``v``).
+
+For the other results the layout follows the result's fields: a numpy array is a dataset, a nested result (e.g. a
 :class:`lrchain.simulate.SpaceTime`, :class:`lrchain.dark.Floquet`) or a dict is a group, and numbers
 and strings are attributes of the enclosing group. Lists of results become groups "0", "1", ...;
 lists of numbers become datasets, lists of strings a JSON attribute. Complex arrays (Floquet
@@ -51,6 +58,18 @@ def write(path, result):
     tree["lrchain_result"] = type(result).__name__
     tree["lrchain_version"] = _hdf5.version
     _hdf5.write_hdf5(os.fspath(path), tree)
+
+
+def write_simulation(path, kind, series, energy_density, snapshots, summary, fields):
+    """Writes a simulation run through the sim library's writer (``lrchain simulate --format hdf5``
+    writes the same file): ``series`` {record column: array}, the energy density and snapshots of
+    :mod:`lrchain.simulate`, the summary dict and [(name, SpaceTime)] fields recorded at every sample."""
+    from . import _hdf5
+
+    e = energy_density
+    _hdf5.write_simulation(os.fspath(path), kind, series, (e.quantity, e.n, e.t, e.values),
+                           [(s.t, s.tag, s.columns) for s in snapshots], json.dumps(summary),
+                           [(name, f.quantity, f.n, f.t, f.values) for name, f in fields])
 
 
 class HDF5Mixin:

@@ -20,7 +20,7 @@ import numpy as np
 
 from . import _lrchain
 from ._lrchain import Params
-from .hdf5 import HDF5Mixin
+from .hdf5 import write_simulation
 
 
 @dataclass(frozen=True)
@@ -48,6 +48,21 @@ class Snapshot:
         return f"Snapshot(t={self.t:g}, columns={list(self.columns)})"
 
 
+class _SimulationHDF5:
+    """``to_hdf5(path)`` of the simulation results: the sim library's writer, the same file as
+    ``lrchain simulate ... --format hdf5`` (layout: :mod:`lrchain.hdf5`)."""
+
+    _kind = None
+    _series = ()  # (record column, attribute) pairs
+    _fields = ()  # attributes holding the fields recorded at every sample
+
+    def to_hdf5(self, path):
+        """Writes this result to the HDF5 file ``path`` (layout: :mod:`lrchain.hdf5`)."""
+        write_simulation(path, self._kind, {column: getattr(self, name) for column, name in self._series},
+                         self.energy_density, self.snapshots, self.summary,
+                         [(name, getattr(self, name)) for name in self._fields if getattr(self, name) is not None])
+
+
 def _options(**kwargs):
     return {k: v for k, v in kwargs.items() if v is not None}
 
@@ -68,7 +83,7 @@ def _snapshots(record):
 
 
 @dataclass(frozen=True, repr=False)
-class BrightResult(HDF5Mixin):
+class BrightResult(_SimulationHDF5):
     """A bright-breather run (Sec. 4.1-4.3).
 
     ``t``, ``E_x``, ``E_y`` (max-norm distance of the strains from the ansatz relative to the initial
@@ -89,6 +104,10 @@ class BrightResult(HDF5Mixin):
     summary: dict
     x: SpaceTime = None
     y: SpaceTime = None
+
+    _kind = "bright"
+    _series = (("t", "t"), ("E_x", "E_x"), ("E_y", "E_y"), ("energy", "energy"), ("X", "centre"))
+    _fields = ("x", "y")
 
     def __repr__(self):
         return (f"BrightResult({len(self.t)} samples to t = {self.t[-1]:g}, "
@@ -126,7 +145,7 @@ def bright(params=None, branch="optical", theta=pi / 2, *, detuning=None, n0=Non
 
 
 @dataclass(frozen=True, repr=False)
-class DriveResult(HDF5Mixin):
+class DriveResult(_SimulationHDF5):
     """A driven-chain run (Sec. 4.3, experiment 6): ``t``, ``energy``, ``front`` (largest bead with
     e_n above a fraction of the maximum), ``participation`` and ``u0`` (the driven boundary) at every
     sample; ``energy_density`` e_n(t); ``snapshots``; ``u``, ``v`` (displacements at every sample)
@@ -142,6 +161,11 @@ class DriveResult(HDF5Mixin):
     summary: dict
     u: SpaceTime = None
     v: SpaceTime = None
+
+    _kind = "drive"
+    _series = (("t", "t"), ("energy", "energy"), ("front", "front"), ("participation", "participation"),
+               ("u0", "u0"))
+    _fields = ("u", "v")
 
     def __repr__(self):
         return f"DriveResult({len(self.t)} samples to t = {self.t[-1]:g}, final energy {self.energy[-1]:.6g})"
@@ -170,7 +194,7 @@ def drive(params=None, *, beads=None, amplitude=None, omega0=None, ramp_rate=Non
 
 
 @dataclass(frozen=True, repr=False)
-class ModulatedResult(HDF5Mixin):
+class ModulatedResult(_SimulationHDF5):
     """A modulated-wave run (Sec. 5.1, experiment 7): ``t``, ``energy``, ``contrast`` of e_n,
     ``dark_centre`` and ``dark_unwrapped`` (position of the minimum of the smoothed e_n) at every
     sample; ``energy_density``; ``snapshots``; ``u``, ``v`` when asked for; ``summary``."""
@@ -185,6 +209,11 @@ class ModulatedResult(HDF5Mixin):
     summary: dict
     u: SpaceTime = None
     v: SpaceTime = None
+
+    _kind = "modulated"
+    _series = (("t", "t"), ("energy", "energy"), ("contrast", "contrast"), ("dark_centre", "dark_centre"),
+               ("dark_unwrapped", "dark_unwrapped"))
+    _fields = ("u", "v")
 
     def __repr__(self):
         return f"ModulatedResult({len(self.t)} samples to t = {self.t[-1]:g})"

@@ -106,7 +106,59 @@ IntegratorOptions resolved_integrator(const BrightRunConfig& c, const Displaceme
 
 }  // namespace
 
+namespace {
+
+// The workspace's lattice for this run: kept when the parameters, the bead count and the ends are
+// those of the previous run (prescribed ends follow workspace.ansatz), else built anew.
+const DisplacementLattice& workspace_lattice(const BrightRunConfig& c, BrightWorkspace& w, std::size_t beads, long N) {
+  const Params& p = c.params;
+  const Params& q = w.chain_params;
+  if (w.chain && w.chain_beads == beads && w.chain_ansatz_ends == c.ansatz_ends && p.alpha == q.alpha &&
+      p.delta0 == q.delta0 && p.kappa == q.kappa && p.rho == q.rho)
+    return *w.chain;
+  const long first = -N - 1;
+  DisplacementBoundary boundary;
+  if (c.ansatz_ends) {
+    boundary.left.kind = boundary.right.kind = EndKind::prescribed;
+    boundary.left.motion = [&w, first](double t) {
+      double u, v;
+      w.ansatz->displacements(double(first - 1), t, u, v);
+      return u;
+    };
+    boundary.right.motion = [&w, N](double t) {
+      double u, v;
+      w.ansatz->displacements(double(N + 1), t, u, v);
+      return u;
+    };
+  }
+  w.chain.reset();
+  w.chain.emplace(c.params, beads, boundary);
+  w.chain_params = c.params;
+  w.chain_beads = beads;
+  w.chain_ansatz_ends = c.ansatz_ends;
+  return *w.chain;
+}
+
+// Empties the record, keeping the capacity of its series and space-time rows.
+void clear_record(RunRecord& rec) {
+  rec.series.data.clear();
+  rec.fields.resize(1);
+  rec.fields[0].times.clear();
+  rec.fields[0].values.clear();
+  rec.snapshots.clear();
+}
+
+}  // namespace
+
 BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) {
+  BrightWorkspace workspace;
+  BrightRunResult result;
+  result.summary = run_bright(c, workspace, control);
+  result.record = std::move(workspace.record);
+  return result;
+}
+
+BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const RunControl& control) {
   validate(c);
   const BrightBreatherAnsatz ansatz(c.params, c.branch, c.theta, c.detuning, c.n0);
   const long N = c.N;
@@ -114,32 +166,19 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
   const long first = -N - 1;
   const std::size_t strains = beads - 1;             // labels -N .. N
 
-  DisplacementBoundary boundary;
-  if (c.ansatz_ends) {
-    boundary.left.kind = boundary.right.kind = EndKind::prescribed;
-    boundary.left.motion = [&ansatz, first](double t) {
-      double u, v;
-      ansatz.displacements(double(first - 1), t, u, v);
-      return u;
-    };
-    boundary.right.motion = [&ansatz, N](double t) {
-      double u, v;
-      ansatz.displacements(double(N + 1), t, u, v);
-      return u;
-    };
-  }
-  const DisplacementLattice chain(c.params, beads, boundary);
+  w.ansatz = &ansatz;
+  const DisplacementLattice& chain = workspace_lattice(c, w, beads, N);
   const auto& L = chain.layout();
 
-  State s(L.size());
+  State& s = w.state;
+  s.assign(L.size(), 0.0);
   for (std::size_t i = 0; i < beads; ++i) {
     const double n = double(first + long(i));
     ansatz.displacements(n, 0.0, L.primary(s)[i], L.secondary(s)[i]);
     ansatz.velocities(n, 0.0, L.primary_rate(s)[i], L.secondary_rate(s)[i]);
   }
 
-  BrightRunResult result;
-  auto& S = result.summary;
+  BrightRunSummary S;
   S.omega = ansatz.omega();
   S.omega_b = ansatz.omega_b();
   S.period = ansatz.period();
@@ -153,19 +192,21 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
   // Observation times: regular samples, plus the snapshot times.
   const double Tb = ansatz.period(), t_end = c.periods * Tb, h = c.sample_every * Tb;
   const std::int64_t samples = sample_intervals(c);
-  std::vector<double> times;
+  std::vector<double>& times = w.times;
+  times.clear();
   times.reserve(static_cast<std::size_t>(samples) + 2);
   for (std::int64_t k = 0; k <= samples; ++k) times.push_back(double(k) * h);
   if (t_end - times.back() > 1e-9 * t_end) times.push_back(t_end);
-  std::vector<double> snap_times;
+  std::vector<double>& snap_times = w.snapshot_times;
+  snap_times.clear();
   for (double p : snapshot_periods_in_run(c))  // later ones belong to a continuation
     if (p <= c.periods * (1 + 1e-12)) snap_times.push_back(std::min(p * Tb, t_end));
   times = merge_observation_times(std::move(times), snap_times, t_end);
   const double st_every = c.spacetime_every * Tb;
 
-  auto& rec = result.record;
+  auto& rec = w.record;
+  clear_record(rec);
   rec.series.names = {"t", "E_x", "E_y", "energy", "X"};
-  rec.fields.resize(1);
   rec.fields[0].quantity = "energy_density";
   rec.fields[0].first_label = first;
   rec.fields[0].sites = beads;
@@ -186,7 +227,10 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
   identity.add("error_window_end", c.error_window_end);
   identity.add_state_hash("initial_state", s);
 
-  std::vector<double> x(strains), y(strains), xa(strains), ya(strains), e(beads), scratch(beads + 1);
+  std::vector<double>&x = w.x, &y = w.y, &xa = w.x_ansatz, &ya = w.y_ansatz, &e = w.energy_density, &scratch = w.scratch;
+  for (std::vector<double>* v : {&x, &y, &xa, &ya}) v->assign(strains, 0.0);
+  e.assign(beads, 0.0);
+  scratch.assign(beads + 1, 0.0);
   double next_st = 0;
   bool first_sample = true, skip_first = false;
   double resume_step = 0;
@@ -300,7 +344,9 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
   S.blew_up = S.stats.blew_up;
   S.blow_up = locate_blow_up(S.stats, beads, first);
   // The energy centre X(t) (eq:ectr) is the series' last column.
-  std::vector<double> centre_t, centre_x;
+  std::vector<double>&centre_t = w.centre_t, &centre_x = w.centre_x;
+  centre_t.clear();
+  centre_x.clear();
   for (std::size_t r = 0; r < rec.series.rows(); ++r) {
     centre_t.push_back(rec.series.at(r, 0));
     centre_x.push_back(rec.series.at(r, 4));
@@ -313,7 +359,8 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
   // x, y hold the strains of the last observation.
   S.trailing = track_trailing_structure(rec.fields[0], centre_t, centre_x, x.data(), y.data(), -N,
                                         strains, c.trailing);
-  return result;
+  w.ansatz = nullptr;
+  return S;
 }
 
 }  // namespace lrchain::sim

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <tuple>
 #include <toml++/toml.h>
 
 #include "corpus_tables.hpp"
@@ -370,6 +371,136 @@ void add_file_cases(const std::vector<HelpCommand>& commands, Corpus& corpus) {
     k.args.insert(k.args.end(), {"--" + o.option, "@TMP@/" + path});
     k.any_name = {o.option, path};
     k.description = o.command + " --" + o.option + " is an existing " + (o.is_file ? "directory" : "file");
+    corpus.cases.push_back(std::move(k));
+  }
+}
+
+namespace {
+
+// The TOML text of a corpus value for a sweep key whose file value is `node` (a string key gets
+// the numbers as numbers: a wrong type; a number key gets the empty string).
+std::vector<BadValue> sweep_values() {
+  using enum BadValue;
+  return {wrong_type, nan, inf, minus_one, zero, huge, empty};
+}
+
+}  // namespace
+
+void add_sweep_config_cases(const std::filesystem::path& corpus_dir, Corpus& corpus) {
+  const std::string base_name = "sweep_base_bright.toml";
+  const std::string base_text = read_file(corpus_dir / base_name);
+  if (base_text.empty()) corpus.errors.push_back("no " + base_name + " in " + corpus_dir.string());
+  std::set<std::string> seen;  // table/key covered by an earlier file
+  for (const std::string file : sweep_config_files()) {
+    const std::string text = read_file(corpus_dir / file);
+    const auto lines = lines_of(text);
+    toml::table root;
+    try {
+      root = toml::parse(text, file);
+    } catch (const toml::parse_error& e) {
+      corpus.errors.push_back("corpus sweep file " + file + " does not parse: " + std::string(e.description()));
+      continue;
+    }
+    const std::vector<std::string> args = {"sweep", "--config", "@TMP@/" + file, "--threads", "1", "--quiet"};
+    CorpusCase control;
+    control.category = "control";
+    control.description = "valid sweep file " + file;
+    control.args = args;
+    control.files = {{file, text}, {base_name, base_text}};
+    control.control = true;
+    corpus.cases.push_back(control);
+    // Every (table, key, node): top-level keys, and the keys of each [[axis]].
+    struct Entry { std::string table, key; const toml::node* node; std::set<std::string> siblings; };
+    std::vector<Entry> entries;
+    std::set<std::string> top_keys;
+    for (const auto& [k, n] : root) top_keys.insert(std::string(k.str()));
+    for (const auto& [k, n] : root) {
+      if (const auto* tables = n.as_array(); tables && tables->is_array_of_tables()) {
+        for (const auto& t : *tables) {
+          std::set<std::string> keys;
+          for (const auto& [k2, n2] : *t.as_table()) keys.insert(std::string(k2.str()));
+          for (const auto& [k2, n2] : *t.as_table()) entries.push_back({std::string(k.str()), std::string(k2.str()), &n2, keys});
+        }
+      } else {
+        entries.push_back({"", std::string(k.str()), &n, top_keys});
+      }
+    }
+    for (const auto& e : entries) {
+      if (!seen.insert(e.table + "/" + e.key).second) continue;
+      const std::string where = file + (e.table.empty() ? "" : " [[" + e.table + "]]") + " " + e.key;
+      const toml::node& node = *e.node;
+      const auto* array = node.as_array();
+      for (BadValue v : sweep_values()) {
+        if (may_be_valid(v, nullptr, option_for_config_key(e.key))) {
+          ++corpus.skipped_as_valid["sweep config value"];
+          continue;
+        }
+        CorpusCase k;
+        k.category = "sweep config value";
+        k.value = label(v);
+        const toml::node& target = array && !array->empty() && v != BadValue::wrong_type ? array->back() : node;
+        k.files = {{file, replace_node(lines, target, toml_text(v))}, {base_name, base_text}};
+        k.args = args;
+        k.names = {e.key};
+        k.description = where + (&target == &node ? " = " : " [last element] = ") + toml_text(v) + " (" + label(v) + ")";
+        corpus.cases.push_back(std::move(k));
+      }
+      const std::string typo = typo_of(e.key, e.siblings);
+      auto typo_lines = lines;
+      const int line = static_cast<int>(node.source().begin.line) + 1;
+      typo_lines.insert(typo_lines.begin() + (line - 1), typo + " = " + node_text(lines, node));
+      CorpusCase k;
+      k.category = "sweep config unknown key";
+      k.value = "typo";
+      k.files = {{file, join_lines(typo_lines)}, {base_name, base_text}};
+      k.args = args;
+      k.names = {typo};
+      k.substrings = {file + ":" + std::to_string(line)};
+      k.description = where + ": unknown key '" + typo + "' at line " + std::to_string(line);
+      corpus.cases.push_back(std::move(k));
+    }
+  }
+  // --output at a file that is not a results file (left as it is), or below a file.
+  const std::string file = sweep_config_files().front();
+  const std::string text = read_file(corpus_dir / file);
+  for (const auto& [what, output, user_file] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"an existing file that is not a sweep's results", "corpus-user.h5", "corpus-user.h5"},
+           {"an empty existing file", "corpus-empty.h5", "corpus-empty.h5"},
+           {"below an existing file", "corpus-file/results.h5", "corpus-file"}}) {
+    CorpusCase k;
+    k.category = "output path";
+    k.files = {{file, text}, {base_name, base_text}, {user_file, what.find("empty") != std::string::npos ? "" : "a user's file\n"}};
+    k.args = {"sweep", "--config", "@TMP@/" + file, "--threads", "1", "--quiet", "--output", "@TMP@/" + output};
+    k.any_name = {"output", user_file};
+    k.description = "sweep --output is " + what;
+    corpus.cases.push_back(std::move(k));
+  }
+  // The base config a sweep file names: missing, a directory, empty, binary, malformed.
+  const std::string binary("\x00\xff\xfe\x7f\x01lrchain\x00\x80\x90\n\x00", 17);
+  struct Kind { std::string what, path; bool create_file, create_dir; std::string bytes; };
+  const std::vector<Kind> kinds = {
+      {"missing file", "corpus-base-missing.toml", false, false, ""},
+      {"a directory, not a file", "corpus-base-dir.toml", false, true, ""},
+      {"empty file", "corpus-base-empty.toml", true, false, ""},
+      {"binary file", "corpus-base-binary.toml", true, false, binary},
+      {"malformed file", "corpus-base-malformed.toml", true, false, "experiment = \"bright\"\n[model\nrho = = 1/3\n"}};
+  for (const auto& kind : kinds) {
+    CorpusCase k;
+    k.category = "file";
+    std::string changed = text;
+    const auto at = changed.find(base_name);
+    if (at == std::string::npos) {
+      corpus.errors.push_back(file + " does not name " + base_name);
+      break;
+    }
+    changed.replace(at, base_name.size(), kind.path);
+    k.files = {{file, changed}};
+    if (kind.create_file) k.files.push_back({kind.path, kind.bytes});
+    if (kind.create_dir) k.directories = {kind.path};
+    k.args = {"sweep", "--config", "@TMP@/" + file, "--threads", "1", "--quiet"};
+    k.any_name = {kind.path, "base"};
+    k.description = "sweep base config: " + kind.what;
     corpus.cases.push_back(std::move(k));
   }
 }

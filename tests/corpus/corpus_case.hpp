@@ -39,5 +39,9 @@ void add_config_cases(const std::filesystem::path& examples, const std::vector<H
 // Missing, empty, binary, malformed files and directories where a file is read; outputs pointing
 // at an existing path of the wrong kind.
 void add_file_cases(const std::vector<HelpCommand>& commands, Corpus& corpus);
+// Every key of the corpus's sweep files (tests/corpus/sweep_*.toml) with a wrong type, NaN, inf,
+// -1, 0, 1e308 and the empty string, and misspelt; the base config they name missing, empty,
+// binary, malformed or a directory.
+void add_sweep_config_cases(const std::filesystem::path& corpus_dir, Corpus& corpus);
 
 }  // namespace lrchain::corpus

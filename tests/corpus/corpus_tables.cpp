@@ -87,6 +87,11 @@ const std::set<BadValue>& possibly_valid(const std::string& name) {
       {"ds", {minus_one}},                   // the sign of the first step may pick the direction
       {"name", {huge_pi, word, empty}},      // a run's name is any text
       {"dir", {huge_pi, word, empty}},       // an output directory is any path; empty: none
+      {"values", {minus_one, zero, huge}},   // a sweep axis may hold any number: a point outside the
+      {"from", {minus_one, zero, huge}},     // job's range is recorded as an invalid point
+      {"to", {minus_one, zero, huge}},
+      {"checkpoint-seconds", {huge}},        // any positive time between rewrites of the results file
+      {"csv-max-points", {zero}},            // 0: no CSV view
   };
   static const std::set<BadValue> none;
   const auto it = table.find(name);
@@ -104,6 +109,7 @@ std::string option_for_config_key(const std::string& key) {
 const std::vector<FileOption>& file_options() {
   static const std::vector<FileOption> files = {
       {"simulate", "config", false},
+      {"sweep", "config", false},
       {"simulate modulated", "restart", false},
       {"reproduce", "examples", true},
       {"reproduce", "errata", false},
@@ -118,8 +124,14 @@ const std::vector<OutputOption>& output_options() {
       {"simulate modulated", "out", false}, {"simulate modulated", "checkpoint", true},
       {"dark solve", "out", false},         {"dark floquet", "out", false},    {"dark continue", "out", false},
       {"dark evolve", "out", false},        {"reproduce", "out", false},
+      {"sweep", "output", true},
   };
   return outputs;
+}
+
+const std::vector<std::string>& sweep_config_files() {
+  static const std::vector<std::string> files = {"sweep_small.toml", "sweep_range.toml"};
+  return files;
 }
 
 std::string command_for_experiment(const std::string& kind) { return "simulate " + kind; }

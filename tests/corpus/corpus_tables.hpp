@@ -55,6 +55,9 @@ struct OutputOption {
 };
 const std::vector<OutputOption>& output_options();
 
+// The corpus's valid sweep files (in tests/corpus), which hold every key of a sweep file.
+const std::vector<std::string>& sweep_config_files();
+
 // examples/*.toml "experiment" kind -> the subcommand whose options share the keys' ranges.
 std::string command_for_experiment(const std::string& kind);
 

@@ -5,8 +5,11 @@
 #include <pybind11/numpy.h>
 
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/hdf5_tree.hpp"
+#include "lrchain/sim/dark/dark_hdf5.hpp"
+#include "lrchain/sim/result_hdf5.hpp"
 #include "lrchain/version.hpp"
 
 namespace py = pybind11;
@@ -64,6 +67,136 @@ void write_hdf5(const std::string& path, const py::dict& tree) {
   file.commit();
 }
 
+template <class T>
+std::vector<T> vector_of(const py::handle& a) {
+  const auto c = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
+  if (!c) throw py::type_error("to_hdf5: expected a numeric array");
+  return std::vector<T>(c.data(), c.data() + c.size());
+}
+
+// The run's record from a Python result's arrays: `series` {record column: array}, `field`
+// (quantity, n, t, values) of the energy density, `snapshots` [(t, tag, {column: array})]; the same
+// numbers as the C++ record the result was made from (float32 space-time values stay float32).
+sim::RunRecord record_of(const py::dict& series, const py::tuple& field, const py::list& snapshots) {
+  sim::RunRecord record;
+  std::vector<std::vector<double>> columns;
+  for (auto [name, values] : series) {
+    record.series.names.push_back(py::str(name));
+    columns.push_back(vector_of<double>(values));
+  }
+  const std::size_t rows = columns.empty() ? 0 : columns[0].size();
+  for (std::size_t r = 0; r < rows; ++r)
+    for (const auto& c : columns) record.series.data.push_back(c.at(r));
+  sim::SpaceTime f;
+  f.quantity = field[0].cast<std::string>();
+  const std::vector<double> n = vector_of<double>(field[1]);
+  f.first_label = n.empty() ? 0 : long(n[0]);
+  f.sites = n.size();
+  f.times = vector_of<double>(field[2]);
+  f.values = vector_of<float>(field[3]);
+  record.fields.push_back(std::move(f));
+  for (const auto& item : snapshots) {
+    const auto s = item.cast<py::tuple>();
+    sim::Snapshot snap;
+    snap.t = s[0].cast<double>();
+    snap.tag = s[1].cast<std::string>();
+    std::vector<std::vector<double>> cols;
+    for (auto [name, values] : s[2].cast<py::dict>()) {
+      snap.names.push_back(py::str(name));
+      cols.push_back(vector_of<double>(values));
+    }
+    const std::size_t length = cols.empty() ? 0 : cols[0].size();
+    for (std::size_t r = 0; r < length; ++r)
+      for (const auto& c : cols) snap.data.push_back(c.at(r));
+    record.snapshots.push_back(std::move(snap));
+  }
+  return record;
+}
+
+// A simulation result through the sim library's writer (the file `lrchain simulate --format hdf5`
+// writes); `extra` [(name, quantity, n, t, values)] are the fields recorded at every sample.
+void write_simulation(const std::string& path, const std::string& kind, const py::dict& series, const py::tuple& field,
+                      const py::list& snapshots, const std::string& summary_json, const py::list& extra) {
+  const sim::SimulationKind k = sim::simulation_kind(kind);
+  const sim::RunRecord record = record_of(series, field, snapshots);
+  std::vector<sim::SampledField> fields;
+  for (const auto& item : extra) {
+    const auto e = item.cast<py::tuple>();
+    fields.push_back({e[0].cast<std::string>(), e[1].cast<std::string>(), vector_of<double>(e[2]),
+                      vector_of<double>(e[3]), vector_of<double>(e[4])});
+  }
+  sim::write_simulation_hdf5(path, k, record, nlohmann::json::parse(summary_json), fields);
+}
+
+Params params_of(const py::tuple& p) {
+  return Params{p[0].cast<double>(), p[1].cast<double>(), p[2].cast<double>(), p[3].cast<double>()};
+}
+
+sim::dark::DarkMeasures measures_of(const py::dict& m) {
+  sim::dark::DarkMeasures r;
+  r.norm_squared = m["norm_squared"].cast<double>();
+  r.K_x = m["K_x"].cast<double>();
+  r.K_y = m["K_y"].cast<double>();
+  r.C_x = m["C_x"].cast<double>();
+  r.C_y = m["C_y"].cast<double>();
+  r.E_b = m["E_b"].cast<double>();
+  r.max_strain = m["max_strain"].cast<double>();
+  return r;
+}
+
+sim::dark::FloquetRecord floquet_of(const py::dict& f) {
+  sim::dark::FloquetRecord r;
+  r.multipliers = vector_of<std::complex<double>>(f["multipliers"]);
+  r.kind = f["kind"].cast<std::string>();
+  r.max_modulus = f["max_modulus"].cast<double>();
+  r.max_real = f["max_real"].cast<double>();
+  r.max_period_doubling = f["max_period_doubling"].cast<double>();
+  r.max_oscillatory = f["max_oscillatory"].cast<double>();
+  r.near_one = f["near_one"].cast<std::int64_t>();
+  r.pairing_defect = f["pairing_defect"].cast<double>();
+  r.conjugation_defect = f["conjugation_defect"].cast<double>();
+  r.log_det = f["log_det"].cast<double>();
+  return r;
+}
+
+// A dark breather through the sim library's writer (the file `lrchain dark solve|floquet --format hdf5`
+// writes): `d` holds the DarkSolution's fields (floquet: a dict or None), `params` (alpha, delta0, kappa, rho).
+void write_dark_solution(const std::string& path, const py::tuple& params, const py::dict& d) {
+  sim::dark::DarkSolutionRecord r;
+  r.params = params_of(params);
+  r.omega_b = d["omega_b"].cast<double>();
+  r.omega_edge = d["omega_edge"].cast<double>();
+  r.x = vector_of<double>(d["x"]);
+  r.y = vector_of<double>(d["y"]);
+  r.x_seed = vector_of<double>(d["x_seed"]);
+  r.y_seed = vector_of<double>(d["y_seed"]);
+  r.newton_residuals = vector_of<double>(d["newton_residuals"]);
+  r.measures = measures_of(d["measures"].cast<py::dict>());
+  if (!d["floquet"].is_none()) r.floquet = floquet_of(d["floquet"].cast<py::dict>());
+  sim::dark::write_dark_solution_hdf5(path, r);
+}
+
+// A branch through the sim library's writer (`lrchain dark continue --format hdf5`): `d` holds the
+// Branch's fields (measures: list of dicts; floquet: list of dicts, or None when not computed).
+void write_dark_branch(const std::string& path, const py::tuple& params, const py::dict& d) {
+  sim::dark::DarkBranchRecord r;
+  r.params = params_of(params);
+  r.omega_b = vector_of<double>(d["omega_b"]);
+  r.tangent_omega = vector_of<double>(d["tangent_omega"]);
+  r.residual = vector_of<double>(d["residual"]);
+  r.iterations = vector_of<std::int32_t>(d["iterations"]);
+  const auto x = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(d["x"]);
+  r.sites = x.ndim() == 2 ? std::size_t(x.shape(1)) : 0;
+  r.x = vector_of<double>(d["x"]);
+  r.y = vector_of<double>(d["y"]);
+  for (const auto& m : d["measures"].cast<py::list>()) r.measures.push_back(measures_of(m.cast<py::dict>()));
+  if (!d["floquet"].is_none())
+    for (const auto& f : d["floquet"].cast<py::list>()) r.floquet.push_back(floquet_of(f.cast<py::dict>()));
+  r.turning_points = d["turning_points"].cast<std::vector<double>>();
+  r.stop_reason = d["stop_reason"].cast<std::string>();
+  sim::dark::write_dark_branch_hdf5(path, r);
+}
+
 }  // namespace
 
 }  // namespace lrchain::python
@@ -73,5 +206,12 @@ PYBIND11_MODULE(_hdf5, m) {
   m.doc() = "HDF5 writer of lrchain's results (the HDF5 C library).";
   m.def("write_hdf5", &write_hdf5, py::arg("path"), py::arg("tree"),
         "Writes {name: dict | array | number | str} as HDF5 groups, datasets and attributes.");
+  m.def("write_simulation", &write_simulation, py::arg("path"), py::arg("kind"), py::arg("series"), py::arg("field"),
+        py::arg("snapshots"), py::arg("summary_json"), py::arg("extra"),
+        "Writes a bright/drive/modulated run with the sim library's writer (the CLI's --format hdf5 file).");
+  m.def("write_dark_solution", &write_dark_solution, py::arg("path"), py::arg("params"), py::arg("solution"),
+        "Writes a dark breather with the sim library's writer (the CLI's dark solve|floquet --format hdf5 file).");
+  m.def("write_dark_branch", &write_dark_branch, py::arg("path"), py::arg("params"), py::arg("branch"),
+        "Writes a dark-breather branch with the sim library's writer (the CLI's dark continue --format hdf5 file).");
   m.attr("version") = LRCHAIN_VERSION_STRING;
 }

@@ -188,6 +188,11 @@ bool Job::has_parameter(const std::string& parameter) const {
 }
 
 JobResult Job::run(const Overrides& overrides, const RunControl& control) const {
+  JobWorkspace workspace;
+  return run(overrides, control, workspace);
+}
+
+JobResult Job::run(const Overrides& overrides, const RunControl& control, JobWorkspace& workspace) const {
   const auto start = std::chrono::steady_clock::now();
   JobResult r;
   try {
@@ -195,7 +200,7 @@ JobResult Job::run(const Overrides& overrides, const RunControl& control) const 
     if (is_study_kind(kind_))
       r = run_study(kind_, doc, control);
     else if (kind_ == "bright")
-      reduce(run_bright(load_experiment_config(doc).bright, control).summary, bright_scalars(), r);
+      reduce(run_bright(load_experiment_config(doc).bright, workspace.bright, control), bright_scalars(), r);
     else if (kind_ == "drive")
       reduce(run_drive(load_drive_config(doc).run, control).summary, drive_scalars(), r);
     else

@@ -155,6 +155,7 @@ SweepConfig load_sweep_config(const std::filesystem::path& file) {
   if (root.read("csv_max_points", csv)) c.csv_max_points = std::size_t(csv);
   root.read("checkpoint_seconds", c.checkpoint_seconds);
   if (output.empty()) throw error_at(root, "the top level", "output", "give a file name");
+  if (base.empty()) throw error_at(root, "the top level", "base", "give the base config's file name");
   c.output = output;
   c.base = std::filesystem::path(base).is_absolute() ? std::filesystem::path(base) : file.parent_path() / base;
 
@@ -189,7 +190,10 @@ SweepConfig load_sweep_config(const std::filesystem::path& file) {
       throw error_at(a, "[[axis]]", "parameter", "the grid has more than 1e9 points");
     c.axes.push_back(std::move(axis));
   }
-  if (root.read("figure", c.figure) && c.job == "dark continue" && c.figure == "stability") {
+  const bool figure_given = root.read("figure", c.figure);
+  if (figure_given && c.figure.empty())
+    throw error_at(root, "the top level", "figure", "give a scalar's name (leave 'figure' out for no figure)");
+  if (figure_given && c.job == "dark continue" && c.figure == "stability") {
     if (c.axes.size() != 1) throw error_at(root, "the top level", "figure", "the stability figure needs exactly one axis");
   } else if (!c.figure.empty()) {
     const auto& names = job.scalar_names();

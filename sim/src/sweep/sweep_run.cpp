@@ -37,13 +37,15 @@ void run_points(const Job& job, const SweepConfig& c, PointQueue& queue, int thr
   RunControl control;
   control.stop = stop;
   const int team = threads > 0 ? threads : omp_get_max_threads();
-  // Each thread takes the next point when it is free (dynamic scheduling, one point at a time).
+  // Each thread takes the next point when it is free (dynamic scheduling, one point at a time) and
+  // runs it in its own workspace.
 #pragma omp parallel num_threads(team)
   {
+    JobWorkspace workspace;  // this thread's buffers, reused by each of its points
     while (!control.stop_requested()) {
       const auto point = queue.next();
       if (!point) break;
-      const JobResult r = job.run(c.overrides(*point), control);
+      const JobResult r = job.run(c.overrides(*point), control, workspace);
       if (r.status == PointStatus::missing) break;  // stopped part-way: not a result
       queue.finished(*point, r);
     }

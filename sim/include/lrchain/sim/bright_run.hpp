@@ -11,8 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "lrchain/ansatz/bright_breather.hpp"
 #include "lrchain/dispersion.hpp"
 #include "lrchain/params.hpp"
+#include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/integrator_options.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/sim/run_control.hpp"
@@ -87,5 +89,22 @@ struct BrightRunResult {
 };
 
 BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control = {});
+
+// What a bright run keeps from one run to the next (a sweep holds one per thread): the lattice
+// (rebuilt only when the parameters, the size or the ends change), the state, the observers' arrays
+// and the record. Every buffer grows to the largest run it has seen and keeps its capacity.
+struct BrightWorkspace {
+  std::optional<DisplacementLattice> chain;
+  Params chain_params;
+  std::size_t chain_beads = 0;
+  bool chain_ansatz_ends = false;
+  const BrightBreatherAnsatz* ansatz = nullptr;  // of the run under way: the prescribed ends follow it
+  State state;
+  std::vector<double> x, y, x_ansatz, y_ansatz, energy_density, scratch, times, snapshot_times, centre_t, centre_x;
+  RunRecord record;  // the last run's record
+};
+
+// The same run (bit for bit) in `workspace`, whose record holds the run's record afterwards.
+BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& workspace, const RunControl& control = {});
 
 }  // namespace lrchain::sim

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "lrchain/config/strict_toml.hpp"
+#include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/run_control.hpp"
 
 namespace lrchain::sim::sweep {
@@ -31,6 +32,12 @@ struct JobResult {
 
 // (parameter, value) pairs set on top of the base config for one point.
 using Overrides = std::vector<std::pair<std::string, double>>;
+
+// Buffers one thread reuses from point to point (bright runs: their lattice, state, observers and
+// record), so that a sweep allocates per thread, not per point.
+struct JobWorkspace {
+  BrightWorkspace bright;
+};
 
 class Job {
  public:
@@ -53,6 +60,8 @@ class Job {
   // refuse gives status `invalid`, a blow-up `blew_up`; `control.stop` ends the run early with
   // status `missing`.
   JobResult run(const Overrides& overrides, const RunControl& control = {}) const;
+  // The same run in the thread's `workspace` (the same numbers, bit for bit).
+  JobResult run(const Overrides& overrides, const RunControl& control, JobWorkspace& workspace) const;
 
  private:
   config::Document base_;

@@ -1,0 +1,73 @@
+#pragma once
+// The HDF5 files of exact dark breathers (Sec. 5.3-5.4): one writer per result, used by `lrchain dark
+// solve|floquet|continue --format hdf5` and by Python's `result.to_hdf5(path)` (same file, h5py reads it).
+//
+// Root attributes of both: lrchain_result ("DarkSolution" or "Branch"), lrchain_version, git_commit,
+// model, parameters (the model parameters as JSON).
+// A solution: attributes omega_b, omega_edge; datasets n, x, y, x_seed, y_seed, newton_residuals;
+//   group measures (attributes norm_squared, K_x, K_y, C_x, C_y, E_b, max_strain); with Floquet
+//   multipliers, group floquet: dataset multipliers (complex, h5py's {r, i}), attributes kind,
+//   max_modulus, max_real, max_period_doubling, max_oscillatory, near_one, pairing_defect,
+//   conjugation_defect, log_det.
+// A branch of P points on N sites: datasets omega_b, tangent_omega, residual (P), iterations (P,
+//   int32), x, y (P x N), turning_points (or the attribute "[]" when there are none); attribute
+//   stop_reason; group measures with one dataset (P) per measure; with Floquet multipliers, group
+//   floquet: multipliers (P x 4N complex), one dataset (P) per scalar, attribute kind (JSON list).
+#include <complex>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "lrchain/params.hpp"
+#include "lrchain/sim/dark/continuation.hpp"
+#include "lrchain/sim/dark/floquet.hpp"
+#include "lrchain/sim/dark/measures.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
+
+namespace lrchain::sim::dark {
+
+// Floquet multipliers and their classification as written (kind() as text).
+struct FloquetRecord {
+  std::vector<std::complex<double>> multipliers;
+  std::string kind;
+  double max_modulus = 0, max_real = 0, max_period_doubling = 0, max_oscillatory = 0;
+  std::int64_t near_one = 0;
+  double pairing_defect = 0, conjugation_defect = 0, log_det = 0;
+};
+FloquetRecord floquet_record(const FloquetResult& f);
+
+struct DarkSolutionRecord {
+  Params params;
+  double omega_b = 0, omega_edge = 0;
+  std::vector<double> x, y, x_seed, y_seed;  // Z(0) and the eq:xy_app seed on sites n = i - (N-1)/2
+  std::vector<double> newton_residuals;
+  DarkMeasures measures;
+  std::optional<FloquetRecord> floquet;
+};
+// The record of a converged solution: z0 = (x(0), y(0)), the seed, Newton's residual history.
+DarkSolutionRecord dark_solution_record(const Params& p, double omega_b, double omega_edge, const Eigen::VectorXd& z0,
+                                        const Eigen::VectorXd& seed, const NewtonResult& newton,
+                                        const DarkMeasures& measures, const FloquetResult* floquet);
+
+struct DarkBranchRecord {
+  Params params;
+  std::size_t sites = 0;
+  std::vector<double> omega_b, tangent_omega, residual;
+  std::vector<std::int32_t> iterations;
+  std::vector<double> x, y;  // points x sites, row-major
+  std::vector<DarkMeasures> measures;
+  std::vector<FloquetRecord> floquet;  // one per point, or empty (not computed)
+  std::vector<double> turning_points;
+  std::string stop_reason;
+};
+DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch, std::size_t sites, bool floquet);
+
+// Writers (temporary name + rename; InputError naming `path` if its directory is missing or it is a directory).
+void write_dark_solution_hdf5(const std::filesystem::path& path, const DarkSolutionRecord& s);
+void write_dark_branch_hdf5(const std::filesystem::path& path, const DarkBranchRecord& b);
+
+}  // namespace lrchain::sim::dark
