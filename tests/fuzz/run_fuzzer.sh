@@ -28,6 +28,7 @@ work=$build/fuzz-work-$target
 rm -rf "$work/artifacts" "$work/merged"  # the working corpus carries over between runs
 mkdir -p "$work/corpus" "$work/artifacts" "$work/merged" "$corpus"
 cp "${seeds[@]}" "$work/corpus/"
+cd "$work"  # libFuzzer's -merge writes crash files into the current directory
 if compgen -G "$corpus/*" >/dev/null; then cp "$corpus"/* "$work/corpus/"; fi
 # Inputs up to 4 KiB (the seeds are ~1 KiB); the dictionary holds the keys and tokens of the format.
 # An input that takes over 10 s is a finding too (e.g. an expression that expands without bound).

@@ -6,6 +6,7 @@
 
 #include <toml++/toml.h>
 
+#include "lrchain/config/unicode_guard.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/model.hpp"
 #include "model_expression.hpp"
@@ -48,6 +49,11 @@ std::vector<ex> taylor_coefficients(const ModelFunction& f, const ex& r0) {
 class Loader {
  public:
   Loader(const std::string& text, const std::string& file) : file_(file) {
+    // toml++ 3.3 has undefined behaviour on some non-ASCII input (config/unicode_guard.hpp); found by
+    // fuzzing this reader too.
+    if (const auto bad = config::detail::find_unsafe_non_ascii(text))
+      throw InputError(file + ":" + std::to_string(bad->line) + ": " + bad->what +
+                       " (write it as a \\uXXXX escape inside a \"string\")");
     try {
       root_ = toml::parse(text, file);
     } catch (const toml::parse_error& e) {

@@ -6,7 +6,7 @@
 #include <system_error>
 
 #include "lrchain/config/strict_toml.hpp"
-#include "unicode_guard.hpp"
+#include "lrchain/config/unicode_guard.hpp"
 
 namespace lrchain::config {
 

@@ -3,7 +3,7 @@
 // only in comments and in the string value of a plain `key = "..."` line outside arrays and inline
 // tables: there toml++ is certainly inside a string or comment. Anywhere else a quote may belong to
 // a malformed value that toml++ scans character by character, so non-ASCII there is refused.
-#include "unicode_guard.hpp"
+#include "lrchain/config/unicode_guard.hpp"
 
 namespace lrchain::config::detail {
 
