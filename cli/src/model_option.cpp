@@ -42,7 +42,7 @@ Model resonant_chain_model(const Params& p) {
   return shipped_model("resonant_chain", {{"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}});
 }
 
-Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, const Params& aliases) {
+Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, const Params& aliases, bool lattice_run) {
   std::vector<std::pair<std::string, double>> values;
   std::shared_ptr<const ModelDefinition> definition;
   // Shipped definitions live for the whole program: shared without owning.
@@ -59,6 +59,7 @@ Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, 
       if (m.file_hash == hash) definition = shipped(&m);
 #ifdef LRCHAIN_WITH_MODEL_COMPILER
     if (!definition) {
+      if (lattice_run) check_lattice_compiler(selection.file);
       CompiledModelInfo info;
       definition = compile_model_file(selection.file, &info);
       if (!info.fallback_reason.empty())

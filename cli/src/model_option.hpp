@@ -24,7 +24,10 @@ void add_model_file_options(CLI::App& cmd, ModelSelection& selection);
 // The model of `selection`: a shipped model when the file's bytes are a shipped model file's,
 // otherwise the file compiled at run time. The resonant chain's --alpha/--delta0/--kappa/--rho
 // (given on `cmd`) are aliases for --set; for other models they are an error.
-Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, const Params& resonant_aliases);
+// With `lattice_run`, a user's file is refused (InputError) before anything else when its lattice
+// code can be neither found in the cache nor compiled (no compiler).
+Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, const Params& resonant_aliases,
+                          bool lattice_run = false);
 
 // Where a model's lattice kernels came from, for the JSON output.
 struct LatticeCode {

@@ -62,7 +62,7 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
                                            "lrchain simulate bright --help)");
   for (const char* name : {"--restart", "--checkpoint"})
     if (simulate.count(name) > 0) throw InputError(std::string(name) + " is not available with simulate bright --model");
-  const Model model = load_selected_model(selection, cmd, bright.params);
+  const Model model = load_selected_model(selection, cmd, bright.params, true);
   sim::ModelBrightConfig c;
   c.theta = bright.theta;
   c.detuning = bright.detuning;
@@ -84,7 +84,7 @@ bool run_model_bright_config(const std::string& file, const CLI::App& simulate, 
   ModelSelection selection;
   selection.file = mc.model_file;
   for (const auto& [name, value] : mc.parameters) selection.set.push_back(fmt::format("{}={:.17g}", name, value));
-  const Model model = load_selected_model(selection, simulate, Params{});
+  const Model model = load_selected_model(selection, simulate, Params{}, true);
   run_and_report_model_bright(selection, model, mc.bright, mc.branch, !output.out->empty() ? *output.out : mc.out_dir, output,
                               mc.name);
   return true;

@@ -5,6 +5,7 @@
 // passes the ring check of its derived h and c.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -135,5 +136,25 @@ TEST_CASE("user model lattice: an FPUT chain with next-nearest-neighbour springs
   CHECK(e0 < 0.01);
   CHECK(e1 < e0 / 3);
   CHECK(j["packet"]["relative_disagreement"].get<double>() < 0.01);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("user model lattice: without the C++ compiler a lattice run exits 2 with one line naming it, writing nothing" *
+          doctest::test_suite("fast")) {
+  const fs::path dir = scratch("lrchain-user-lattice-no-compiler");
+  write_renamed_fput(dir / "other_chain.toml", "other_chain");
+  const fs::path out = dir / "out";
+  const auto r = run_lrchain({"simulate", "ring", "--model", (dir / "other_chain.toml").string(), "--branch", "acoustic",
+                              "--theta", "pi/2", "--out", out.string()},
+                             source_dir,
+                             {"XDG_CACHE_HOME=" + (dir / "cache").string(), "LRCHAIN_MODEL_CXX=/nonexistent/lrchain-no-c++"});
+  INFO(r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(r.err.find("/nonexistent/lrchain-no-c++") != std::string::npos);
+  CHECK(r.err.find("apt install g++") != std::string::npos);
+  CHECK(r.err.find("too slow") != std::string::npos);
+  CHECK(!fs::exists(out));
+  CHECK(fs::is_empty(dir / "cache"));
   fs::remove_all(dir);
 }

@@ -241,6 +241,15 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, 
 
 namespace lrchain {
 
+void check_lattice_compiler(const fs::path& path) {
+  if (fs::exists(cache_entry(read_bytes(path), "lattice 1", "lattice-"))) return;
+  const std::string compiler = model_compiler_path();
+  if (!program_in_path(compiler))
+    throw InputError("--model " + path.string() + ": lattice runs of a model file compile its lattice code with the C++ "
+                     "compiler " + compiler + ", which is not installed (evaluating the forces through GiNaC would be "
+                     "far too slow for a lattice run); install it (Debian: apt install g++) or set LRCHAIN_MODEL_CXX");
+}
+
 std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const fs::path& path, CompiledModelInfo* info) {
   const std::string bytes = read_bytes(path);
   // The model's name first (a bad file is the user's input error, reported before the cache is touched).
@@ -252,11 +261,7 @@ std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const fs::p
     if (info) info->from_cache = true;
     return load_lattice_library(library, file.name);
   }
-  const std::string compiler = model_compiler_path();
-  if (!program_in_path(compiler))
-    throw InputError("--model " + path.string() + ": lattice runs of a model file compile its lattice code with the C++ "
-                     "compiler " + compiler + ", which is not installed (evaluating the forces through GiNaC would be "
-                     "far too slow for a lattice run); install it (Debian: apt install g++) or set LRCHAIN_MODEL_CXX");
+  check_lattice_compiler(path);
   // -O3 as the shipped kernels (Release build); the kernels' own attributes pick the vector width.
   compile_into_cache(derivation::lattice_source(file), {"-O3", "-DNDEBUG"}, library.parent_path(), library,
                      "the lattice code of " + path.string());

@@ -33,6 +33,10 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const std::filesystem:
 std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const std::filesystem::path& path,
                                                                      CompiledModelInfo* info = nullptr);
 
+// Throws the InputError of compile_model_lattice when the lattice code of `path` is not cached and
+// the compiler is not installed: lattice runs call it before anything else.
+void check_lattice_compiler(const std::filesystem::path& path);
+
 // The compiler: $LRCHAIN_MODEL_CXX if set, else the one recorded at configure time; and whether it
 // can be run.
 std::string model_compiler_path();
