@@ -58,8 +58,8 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
   for (const char* name : {"--snapshots", "--spacetime-every", "--error-window", "--checkpoint-every",
                            "--stepper", "--abs-tol", "--rel-tol"})
     if (cmd.count(name) > 0)
-      throw InputError(std::string(name) + " is not available with --model (model bright runs use srkn11b; see "
-                                           "lrchain simulate bright --help)");
+      throw InputError(std::string(name) + " is not available with --model (model bright runs use srkn11b, or rkf78 "
+                                           "with --ansatz-ends; see lrchain simulate bright --help)");
   for (const char* name : {"--restart", "--checkpoint"})
     if (simulate.count(name) > 0) throw InputError(std::string(name) + " is not available with simulate bright --model");
   const Model model = load_selected_model(selection, cmd, bright.params, true);

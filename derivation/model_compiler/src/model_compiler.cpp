@@ -237,10 +237,6 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, 
   return load_library(library);
 }
 
-}  // namespace lrchain
-
-namespace lrchain {
-
 void check_lattice_compiler(const fs::path& path) {
   if (fs::exists(cache_entry(read_bytes(path), "lattice 1", "lattice-"))) return;
   const std::string compiler = model_compiler_path();
