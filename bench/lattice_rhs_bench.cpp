@@ -124,19 +124,24 @@ static void BM_PackedSqrtPerBondFloor(benchmark::State& st) {
 }
 BENCHMARK(BM_PackedSqrtPerBondFloor)->Arg(1001)->Arg(4001);
 
-// The generated lattices of the shipped models (models/*.toml at their defaults), strain form
-// where the model is translation-invariant, else displacement form; periodic ends. The first
-// argument indexes shipped_lattice_models(), the second is the number of sites.
+// The generated lattices of the shipped models (models/*.toml at their defaults) in both forms:
+// strain form (translation-invariant models only; an on-site model is skipped there) and
+// displacement form; periodic ends. The first argument indexes shipped_lattice_models(), the second
+// is the number of sites, the third the form (0 displacement, 1 strain).
 static void BM_ModelRHS(benchmark::State& st) {
   const std::string name = shipped_lattice_models().at(std::size_t(st.range(0)));
   const std::size_t n = std::size_t(st.range(1));
+  const LatticeForm form = st.range(2) == 1 ? LatticeForm::strain : LatticeForm::displacement;
   const lrchain_lattice_kernels& k = *shipped_lattice_kernels(name);
+  if (form == LatticeForm::strain && !k.strain_accelerations) {
+    st.SkipWithError((name + ": on-site model, no strain form").c_str());
+    return;
+  }
   const std::map<std::string, double> defaults{{"alpha", 1.5}, {"delta0", 4.0 / 9.0}, {"kappa", 1}, {"rho", 1.0 / 3.0},
                                                {"a", 0.25}, {"b", 0.5}, {"C", 0.1}, {"w0", 1}, {"m", 2},
                                                {"k1", 1}, {"b1", -0.25}, {"g1", 0.125}, {"k2", 1}, {"b2", 0}, {"g2", 0.1}};
   std::vector<double> parameters;
   for (int i = 0; i < k.parameter_count; ++i) parameters.push_back(defaults.at(k.parameter_names[i]));
-  const LatticeForm form = k.strain_accelerations ? LatticeForm::strain : LatticeForm::displacement;
   ModelLattice lattice(k, parameters, n, true, form);
   State s = random_state(n);
   s.resize(2 * lattice.positions());
@@ -149,7 +154,7 @@ static void BM_ModelRHS(benchmark::State& st) {
   st.SetLabel(name + (form == LatticeForm::strain ? " (strain)" : " (displacement)"));
   per_site_counter(st, n);
 }
-BENCHMARK(BM_ModelRHS)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6}, {1001, 4001}});
+BENCHMARK(BM_ModelRHS)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6}, {1001, 4001}, {0, 1}});
 
 // The resonant chain through the generated kernels with the specialised lattice's zero-strain ends
 // (compare with BM_StrainRHS).
@@ -167,5 +172,22 @@ static void BM_GeneratedResonantStrainRHS(benchmark::State& st) {
   per_site_counter(st, n);
 }
 BENCHMARK(BM_GeneratedResonantStrainRHS)->Arg(1001)->Arg(4001);
+
+// The same in displacement form with fixed ends (compare with BM_DisplacementRHS, whose state is
+// also [u v u' v'] per site).
+static void BM_GeneratedResonantDisplacementRHS(benchmark::State& st) {
+  const std::size_t n = std::size_t(st.range(0));
+  const Params p;
+  ModelLattice lattice(*shipped_lattice_kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, false,
+                       LatticeForm::displacement);
+  State s = random_state(n), ds(s.size());
+  for (auto _ : st) {
+    lattice(s, ds, 0.0);
+    benchmark::DoNotOptimize(ds.data());
+    benchmark::ClobberMemory();
+  }
+  per_site_counter(st, n);
+}
+BENCHMARK(BM_GeneratedResonantDisplacementRHS)->Arg(1002)->Arg(4002);
 
 BENCHMARK_MAIN();

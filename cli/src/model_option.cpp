@@ -1,11 +1,13 @@
 #include "model_option.hpp"
 
+#include <chrono>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "lrchain/errors.hpp"
 #include "lrchain/numeric_parse.hpp"
+#include "lrchain/sim/model_lattice_bloch.hpp"
 #ifdef LRCHAIN_WITH_MODEL_COMPILER
 #include "lrchain/model_compiler.hpp"
 #endif
@@ -40,7 +42,7 @@ Model resonant_chain_model(const Params& p) {
   return shipped_model("resonant_chain", {{"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}});
 }
 
-Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, const Params& aliases) {
+Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, const Params& aliases, bool lattice_run) {
   std::vector<std::pair<std::string, double>> values;
   std::shared_ptr<const ModelDefinition> definition;
   // Shipped definitions live for the whole program: shared without owning.
@@ -57,6 +59,7 @@ Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, 
       if (m.file_hash == hash) definition = shipped(&m);
 #ifdef LRCHAIN_WITH_MODEL_COMPILER
     if (!definition) {
+      if (lattice_run) check_lattice_compiler(selection.file);
       CompiledModelInfo info;
       definition = compile_model_file(selection.file, &info);
       if (!info.fallback_reason.empty())
@@ -83,6 +86,39 @@ Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, 
   }
   for (const auto& v : set_values(selection.set)) values.push_back(v);
   return Model(definition, values);
+}
+
+LatticeCode lattice_kernels_for(const ModelSelection& selection, const Model& model) {
+  const auto start = std::chrono::steady_clock::now();
+  LatticeCode code;
+  if (const lrchain_lattice_kernels* shipped = sim::compiled_in_lattice_kernels(model)) {
+    code.kernels = std::shared_ptr<const lrchain_lattice_kernels>(std::shared_ptr<const lrchain_lattice_kernels>(), shipped);
+  } else {
+#ifdef LRCHAIN_WITH_MODEL_COMPILER
+    CompiledModelInfo info;
+    code.kernels = compile_model_lattice(selection.file, &info);
+    code.compiled_in = false;
+    code.from_cache = info.from_cache;
+    code.library = info.library.string();
+#else
+    throw InputError("--model " + selection.file +
+                     ": not a shipped model file, and this build has no model compiler for its lattice code (configure "
+                     "with LRCHAIN_BUILD_DERIVATION=ON)");
+#endif
+  }
+  if (std::size_t(code.kernels->parameter_count) != model.definition().parameters.size())
+    throw std::runtime_error("the lattice code of model " + model.name() + " takes " +
+                             std::to_string(code.kernels->parameter_count) + " parameters, its evaluators " +
+                             std::to_string(model.definition().parameters.size()));
+  code.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return code;
+}
+
+nlohmann::json lattice_code_json(const LatticeCode& code) {
+  nlohmann::json j{{"compiled_in", code.compiled_in}, {"seconds", code.seconds}};
+  j["from_cache"] = code.compiled_in ? nlohmann::json(nullptr) : nlohmann::json(code.from_cache);
+  j["library"] = code.compiled_in ? nlohmann::json(nullptr) : nlohmann::json(code.library);
+  return j;
 }
 
 nlohmann::json model_json(const Model& model) {

@@ -21,12 +21,15 @@ namespace {
 
 // Checks the run (branch, options, focusing, detuning, --out) before anything is written, then
 // runs it, writes --out and prints the JSON summary.
-void run_and_report_model_bright(const Model& model, sim::ModelBrightConfig c, const std::string& branch,
-                                 const std::string& out, const ModelRunOutput& output, const std::string& name) {
+void run_and_report_model_bright(const ModelSelection& selection, const Model& model, sim::ModelBrightConfig c,
+                                 const std::string& branch, const std::string& out, const ModelRunOutput& output,
+                                 const std::string& name) {
   const auto wall0 = std::chrono::steady_clock::now();
-  const lrchain_lattice_kernels& kernels = sim::lattice_kernels_of(model);
   c.branch = model.branch(branch);
   sim::validate(c);
+  coefficients(model, c.branch, c.theta);  // theta on the branch (InvalidParameter otherwise)
+  const LatticeCode code = lattice_kernels_for(selection, model);
+  const lrchain_lattice_kernels& kernels = *code.kernels;
   const sim::ModelBrightAnsatz check(model, kernels, c.branch, c.theta, c.detuning, c.n0);  // focusing, detuning
   std::error_code ec;
   if (!out.empty() && std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
@@ -37,6 +40,7 @@ void run_and_report_model_bright(const Model& model, sim::ModelBrightConfig c, c
   nlohmann::json j = sim::to_json(model, c, r);
   if (!name.empty()) j["name"] = name;
   j["model"] = model_json(model);
+  j["model"]["lattice_code"] = lattice_code_json(code);
   if (!out.empty()) {
     j["out"] = out;
     j["figures"] = sim::write_model_bright_outputs(out, r, j, *output.figures);
@@ -51,14 +55,14 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
                               const sim::BrightRunConfig& bright, const CLI::App& cmd, const CLI::App& simulate,
                               const ModelRunOutput& output) {
   // Options of the resonant chain's run that the model run does not have.
-  for (const char* name : {"--ansatz-ends", "--snapshots", "--spacetime-every", "--error-window", "--checkpoint-every",
+  for (const char* name : {"--snapshots", "--spacetime-every", "--error-window", "--checkpoint-every",
                            "--stepper", "--abs-tol", "--rel-tol"})
     if (cmd.count(name) > 0)
-      throw InputError(std::string(name) + " is not available with --model (model bright runs use srkn11b; see "
-                                           "lrchain simulate bright --help)");
+      throw InputError(std::string(name) + " is not available with --model (model bright runs use srkn11b, or rkf78 "
+                                           "with --ansatz-ends; see lrchain simulate bright --help)");
   for (const char* name : {"--restart", "--checkpoint"})
     if (simulate.count(name) > 0) throw InputError(std::string(name) + " is not available with simulate bright --model");
-  const Model model = load_selected_model(selection, cmd, bright.params);
+  const Model model = load_selected_model(selection, cmd, bright.params, true);
   sim::ModelBrightConfig c;
   c.theta = bright.theta;
   c.detuning = bright.detuning;
@@ -66,8 +70,9 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
   c.N = bright.N;
   c.periods = bright.periods;
   c.sample_every = bright.sample_every;
+  c.ansatz_ends = bright.ansatz_ends;
   if (cmd.count("--dt") > 0) c.dt = bright.integrator.dt;
-  run_and_report_model_bright(model, c, branch, *output.out, output, "");
+  run_and_report_model_bright(selection, model, c, branch, *output.out, output, "");
 }
 
 bool run_model_bright_config(const std::string& file, const CLI::App& simulate, const ModelRunOutput& output) {
@@ -79,8 +84,8 @@ bool run_model_bright_config(const std::string& file, const CLI::App& simulate, 
   ModelSelection selection;
   selection.file = mc.model_file;
   for (const auto& [name, value] : mc.parameters) selection.set.push_back(fmt::format("{}={:.17g}", name, value));
-  const Model model = load_selected_model(selection, simulate, Params{});
-  run_and_report_model_bright(model, mc.bright, mc.branch, !output.out->empty() ? *output.out : mc.out_dir, output,
+  const Model model = load_selected_model(selection, simulate, Params{}, true);
+  run_and_report_model_bright(selection, model, mc.bright, mc.branch, !output.out->empty() ? *output.out : mc.out_dir, output,
                               mc.name);
   return true;
 }

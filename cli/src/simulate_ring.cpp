@@ -28,8 +28,7 @@ struct RingOptions {
 // Validates everything (model, branch, theta, ring, amplitudes, --out), then runs and reports.
 void run_ring_command(const RingOptions& o, const CLI::App& cmd, const ModelRunOutput& output) {
   const auto wall0 = std::chrono::steady_clock::now();
-  const Model model = load_selected_model(o.model, cmd, Params{});
-  const lrchain_lattice_kernels& kernels = sim::lattice_kernels_of(model);
+  const Model model = load_selected_model(o.model, cmd, Params{}, true);
   sim::RingRunConfig run = o.run;
   run.branch = model.branch(o.branch);
   if (!o.amplitudes.empty()) {
@@ -38,6 +37,8 @@ void run_ring_command(const RingOptions& o, const CLI::App& cmd, const ModelRunO
   }
   sim::validate(run);
   coefficients(model, run.branch, run.theta);  // theta on the branch (InvalidParameter otherwise)
+  const LatticeCode code = lattice_kernels_for(o.model, model);
+  const lrchain_lattice_kernels& kernels = *code.kernels;
   sim::bloch_mode(model, kernels, run.branch, run.theta);
   const std::string& out = *output.out;
   std::error_code ec;
@@ -48,6 +49,7 @@ void run_ring_command(const RingOptions& o, const CLI::App& cmd, const ModelRunO
   const sim::RingRunResult r = sim::run_ring(model, kernels, run);
   nlohmann::json j = sim::to_json(model, run, r);
   j["model"] = model_json(model);
+  j["model"]["lattice_code"] = lattice_code_json(code);
   if (!out.empty()) {
     j["out"] = out;
     j["figures"] = sim::write_ring_outputs(out, r, j, *output.figures);

@@ -14,6 +14,7 @@
 #include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/model_lattice.hpp"
+#include "model_lattice/driven_ends_lattice.hpp"
 
 namespace lrchain::sim {
 
@@ -68,6 +69,7 @@ void validate(const ModelBrightConfig& c) {
   if (!(c.steps_per_period == 0 || (c.steps_per_period >= 8 && c.steps_per_period <= 1e4)))
     throw InvalidParameter("steps-per-period", "must be in [8, 1e4] (0: 24)");
   if (!(c.dt >= 0 && std::isfinite(c.dt))) throw InvalidParameter("dt", "must be a finite step > 0");
+  if (!(c.tolerance >= 1e-14 && c.tolerance <= 1e-4)) throw InvalidParameter("tolerance", "must be in [1e-14, 1e-4]");
 }
 
 namespace {
@@ -133,6 +135,11 @@ ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_ker
   IntegratorOptions options;
   options.stepper = StepperKind::srkn11b;
   options.dt = std::min(r.dt, c.sample_every * r.period);
+  r.ansatz_ends = c.ansatz_ends;
+  if (c.ansatz_ends) {  // driven ends: not autonomous, so the adaptive rkf78 (as the resonant chain's run)
+    options.stepper = StepperKind::rkf78;
+    options.abs_tol = options.rel_tol = r.tolerance = c.tolerance;
+  }
 
   const double t_end = c.periods * r.period, h = c.sample_every * r.period;
   std::vector<double> times;
@@ -204,7 +211,28 @@ ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_ker
     return true;
   };
   const auto start = std::chrono::steady_clock::now();
-  r.stats = integrate_observed(chain, s, times, observe, options);
+  if (c.ansatz_ends) {
+    // The ghost sites beyond both ends in the lattice's variables, from the ansatz at time t.
+    const auto end_motion = [&ansatz, &r, fields, first, sites](double t, double* left, double* right) {
+      const auto variable = [&](std::size_t f, long n) {
+        double u, u_dot, u0, u0_dot;
+        ansatz.field(f, double(n), t, u, u_dot);
+        if (!r.mean_flow) return u;
+        ansatz.field(0, double(f == 0 ? n - 1 : n), t, u0, u0_dot);
+        return u - u0;
+      };
+      const long g = long(DrivenEndsLattice::kGhostSites);
+      for (std::size_t f = 0; f < fields; ++f)
+        for (long k = 0; k < g; ++k) {
+          left[f * std::size_t(g) + std::size_t(k)] = variable(f, first - g + k);
+          right[f * std::size_t(g) + std::size_t(k)] = variable(f, first + long(sites) + k);
+        }
+    };
+    const DrivenEndsLattice driven(kernels, parameters, sites, chain.form(), end_motion);
+    r.stats = integrate_observed(driven, s, times, observe, options);
+  } else {
+    r.stats = integrate_observed(chain, s, times, observe, options);
+  }
   r.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (r.stats.blew_up)
     throw NumericalFailure(fmt::format("{}: the bright-breather run blew up at t = {}", model.name(), r.stats.t_reached));

@@ -23,7 +23,9 @@ std::shared_ptr<const TableSchema> model_bright_table() {
        integer("N", 10, 50'000'000, std::to_string(d.N), "sites n = -N..N"),
        number("periods", positive, number_text(d.periods), "run length in breather periods T_b"),
        number("sample_every", positive, number_text(d.sample_every), "E, energy and centre sampled every this many T_b"),
-       number("dt", positive, "2 pi / (24 omega_max)", "srkn11b step (omega_max: the fastest linear mode)")},
+       number("dt", positive, "2 pi / (24 omega_max)", "srkn11b step (omega_max: the fastest linear mode)"),
+       boolean("ansatz_ends", d.ansatz_ends ? "true" : "false",
+               "the sites beyond both ends follow the ansatz (emitting ends; integrated with rkf78)")},
       std::nullopt});
 }
 
@@ -67,6 +69,7 @@ ModelExperimentConfig load_model_experiment_config(const Document& doc) {
   bright.read("periods", c.bright.periods);
   bright.read("sample_every", c.bright.sample_every);
   bright.read("dt", c.bright.dt);
+  bright.read("ansatz_ends", c.bright.ansatz_ends);
   if (auto o = root.table("output")) o->read("dir", c.out_dir);
   return c;
 }

@@ -45,8 +45,6 @@ TEST_CASE("model simulate: bad options exit 2 naming the option, before anything
                  "pi/2"}, "not focusing");
   check_refused({"simulate", "bright", "--model", "models/klein_gordon.toml", "--branch", "branch0", "--theta",
                  "3*pi/4", "--detuning", "-1e-4"}, "detuning");
-  check_refused({"simulate", "bright", "--model", "models/klein_gordon.toml", "--branch", "branch0", "--theta",
-                 "3*pi/4", "--ansatz-ends"}, "--ansatz-ends");
   check_refused({"simulate", "bright", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
                  "--rho", "1"}, "--rho");
 }

@@ -10,11 +10,14 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "ginac_evaluators.hpp"
+#include "lrchain/derivation/lattice_codegen.hpp"
 #include "lrchain/derivation/model_emission.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/process.hpp"
+#include "lrchain/sim/model_lattice_abi.h"
 
 namespace fs = std::filesystem;
 
@@ -113,6 +116,46 @@ std::string shared_object_source(const derivation::ModelDerivation& m, const der
          "}\n";
 }
 
+// Compiles `source` into the shared object `library` in `directory`: written and compiled under a
+// unique temporary name, then renamed into place, so concurrent processes never see a partial file.
+void compile_into_cache(const std::string& source_text, const std::vector<std::string>& optimisation,
+                        const fs::path& directory, const fs::path& library, const std::string& what) {
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec) throw std::runtime_error("cannot create the model cache " + directory.string() + ": " + ec.message());
+  std::random_device random;
+  const std::string stem = ".model-" + std::to_string(::getpid()) + "-" + std::to_string(random());
+  const fs::path source = directory / (stem + ".cpp"), object = directory / (stem + ".so");
+  {
+    std::ofstream out(source, std::ios::binary);
+    out << source_text;
+    if (!out) throw std::runtime_error("cannot write " + source.string());
+  }
+  ProcessOptions options;
+  options.capture_stderr = true;
+  std::vector<std::string> argv{model_compiler_path(), "-std=c++17"};
+  argv.insert(argv.end(), optimisation.begin(), optimisation.end());
+  argv.insert(argv.end(), {"-fPIC", "-shared", "-o", object.string(), source.string()});
+  const ProcessResult r = run_program(argv, options);
+  fs::remove(source, ec);
+  if (!r.ok()) {
+    fs::remove(object, ec);
+    throw std::runtime_error("compiling " + what + " failed: " + r.error_output.substr(0, r.error_output.find('\n')));
+  }
+  fs::rename(object, library, ec);
+  if (ec) {
+    fs::remove(object, ec);
+    throw std::runtime_error("cannot place " + library.string() + " in the model cache");
+  }
+}
+
+// The cache entry of a model file's bytes for one kind of code ("evaluators 2", "lattice 1"): the
+// key hashes the bytes, the compiler and the lrchain version.
+fs::path cache_entry(const std::string& bytes, const std::string& kind, const std::string& prefix) {
+  const std::uint64_t key = fnv1a_64(model_compiler_path() + "\n" + LRCHAIN_VERSION + "\n" + kind + "\n", fnv1a_64(bytes));
+  return cache_directory() / (prefix + model_hash_text(key).substr(2) + ".so");
+}
+
 template <class Function>
 Function symbol(void* handle, const char* name, const fs::path& library) {
   void* p = dlsym(handle, name);
@@ -136,6 +179,22 @@ std::shared_ptr<const ModelDefinition> load_library(const fs::path& library) {
   return d;
 }
 
+// Loads a cached lattice library and checks its kernel table against the model file's name.
+std::shared_ptr<const lrchain_lattice_kernels> load_lattice_library(const fs::path& library, const std::string& name) {
+  void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) throw std::runtime_error("cannot load " + library.string() + ": " + dlerror());
+  std::shared_ptr<void> owner(handle, [](void* h) { dlclose(h); });
+  const auto entry = symbol<const lrchain_lattice_kernels* (*)()>(handle, ("lrchain_lattice_" + name).c_str(), library);
+  const lrchain_lattice_kernels* kernels = entry();
+  if (!kernels || kernels->abi_version != LRCHAIN_LATTICE_ABI_VERSION)
+    throw std::runtime_error(library.string() + ": lattice kernels of ABI version " +
+                             (kernels ? std::to_string(kernels->abi_version) : std::string("none")) + ", expected " +
+                             std::to_string(LRCHAIN_LATTICE_ABI_VERSION) + " (delete the file to recompile it)");
+  if (name != kernels->model_name)
+    throw std::runtime_error(library.string() + ": kernels of model " + kernels->model_name + ", expected " + name);
+  return std::shared_ptr<const lrchain_lattice_kernels>(owner, kernels);  // keeps the library loaded
+}
+
 }  // namespace
 
 std::string model_compiler_path() {
@@ -148,9 +207,8 @@ bool model_compiler_available() { return program_in_path(model_compiler_path());
 std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, CompiledModelInfo* info) {
   const std::string bytes = read_bytes(path);
   const std::string compiler = model_compiler_path();
-  const std::uint64_t key = fnv1a_64(compiler + "\n" + LRCHAIN_VERSION + "\nevaluators 2\n", fnv1a_64(bytes));
-  const fs::path directory = cache_directory();
-  const fs::path library = directory / ("model-" + model_hash_text(key).substr(2) + ".so");
+  const fs::path library = cache_entry(bytes, "evaluators 2", "model-");
+  const fs::path directory = library.parent_path();
   if (info) info->library = library;
   std::error_code ec;
   if (fs::exists(library, ec)) {
@@ -175,32 +233,35 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, 
     }
     return d;
   }
-  fs::create_directories(directory, ec);
-  if (ec) throw std::runtime_error("cannot create the model cache " + directory.string() + ": " + ec.message());
-  // Unique temporary names: concurrent processes each compile their own copy and rename it into place.
-  std::random_device random;
-  const std::string stem = ".model-" + std::to_string(::getpid()) + "-" + std::to_string(random());
-  const fs::path source = directory / (stem + ".cpp"), object = directory / (stem + ".so");
-  {
-    std::ofstream out(source, std::ios::binary);
-    out << shared_object_source(*m, symbols);
-    if (!out) throw std::runtime_error("cannot write " + source.string());
-  }
-  ProcessOptions options;
-  options.capture_stderr = true;
-  const ProcessResult r = run_program({compiler, "-std=c++17", "-O2", "-fPIC", "-shared", "-o", object.string(), source.string()}, options);
-  fs::remove(source, ec);
-  if (!r.ok()) {
-    fs::remove(object, ec);
-    throw std::runtime_error("compiling the evaluators of " + path.string() + " failed: " +
-                             r.error_output.substr(0, r.error_output.find('\n')));
-  }
-  fs::rename(object, library, ec);
-  if (ec) {
-    fs::remove(object, ec);
-    throw std::runtime_error("cannot place " + library.string() + " in the model cache");
-  }
+  compile_into_cache(shared_object_source(*m, symbols), {"-O2"}, directory, library, "the evaluators of " + path.string());
   return load_library(library);
+}
+
+void check_lattice_compiler(const fs::path& path) {
+  if (fs::exists(cache_entry(read_bytes(path), "lattice 1", "lattice-"))) return;
+  const std::string compiler = model_compiler_path();
+  if (!program_in_path(compiler))
+    throw InputError("--model " + path.string() + ": lattice runs of a model file compile its lattice code with the C++ "
+                     "compiler " + compiler + ", which is not installed (evaluating the forces through GiNaC would be "
+                     "far too slow for a lattice run); install it (Debian: apt install g++) or set LRCHAIN_MODEL_CXX");
+}
+
+std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const fs::path& path, CompiledModelInfo* info) {
+  const std::string bytes = read_bytes(path);
+  // The model's name first (a bad file is the user's input error, reported before the cache is touched).
+  const derivation::ModelFile file = derivation::parse_model_text(bytes, path.string());
+  const fs::path library = cache_entry(bytes, "lattice 1", "lattice-");
+  if (info) info->library = library;
+  std::error_code ec;
+  if (fs::exists(library, ec)) {
+    if (info) info->from_cache = true;
+    return load_lattice_library(library, file.name);
+  }
+  check_lattice_compiler(path);
+  // -O3 as the shipped kernels (Release build); the kernels' own attributes pick the vector width.
+  compile_into_cache(derivation::lattice_source(file), {"-O3", "-DNDEBUG"}, library.parent_path(), library,
+                     "the lattice code of " + path.string());
+  return load_lattice_library(library, file.name);
 }
 
 }  // namespace lrchain

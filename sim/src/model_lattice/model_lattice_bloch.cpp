@@ -95,12 +95,18 @@ std::vector<double> lattice_parameters(const Model& model) {
   return {model.inputs().begin(), model.inputs().begin() + std::ptrdiff_t(count)};
 }
 
-const lrchain_lattice_kernels& lattice_kernels_of(const Model& model) {
+const lrchain_lattice_kernels* compiled_in_lattice_kernels(const Model& model) {
   const lrchain_lattice_kernels* kernels = shipped_lattice_kernels(model.name());
   const ModelDefinition* shipped = find_shipped_model(model.name());
-  if (!kernels || !shipped || shipped->file_hash != model.file_hash())
-    throw InputError("--model: no lattice code for model '" + model.name() +
-                     "': lattice runs take the shipped model files (models/*.toml) for now");
+  return kernels && shipped && shipped->file_hash == model.file_hash() ? kernels : nullptr;
+}
+
+const lrchain_lattice_kernels& lattice_kernels_of(const Model& model) {
+  const lrchain_lattice_kernels* kernels = compiled_in_lattice_kernels(model);
+  if (!kernels)
+    throw InputError("--model: no compiled-in lattice code for model '" + model.name() +
+                     "': it is not one of the shipped model files (models/*.toml); a user's model file has its "
+                     "lattice code compiled at run time (lrchain simulate --model FILE)");
   return *kernels;
 }
 

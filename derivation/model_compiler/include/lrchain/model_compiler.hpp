@@ -8,6 +8,7 @@
 #include <string>
 
 #include "lrchain/model.hpp"
+#include "lrchain/sim/model_lattice_abi.h"
 
 namespace lrchain {
 
@@ -23,6 +24,18 @@ struct CompiledModelInfo {
 // std::runtime_error when the compiler fails.
 std::shared_ptr<const ModelDefinition> compile_model_file(const std::filesystem::path& path,
                                                           CompiledModelInfo* info = nullptr);
+
+// The lattice kernels (sim/include/lrchain/sim/model_lattice_abi.h) of the model file `path`, emitted by
+// the lattice code generator and compiled like the evaluators: same cache, key rules (file bytes,
+// compiler, lrchain version) and compiler, loaded with dlopen; the pointer keeps the library loaded.
+// Checks the table's abi_version and model name. Throws InputError for a bad model file or when the
+// compiler is not installed (no slow fallback for lattice runs), std::runtime_error when it fails.
+std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const std::filesystem::path& path,
+                                                                     CompiledModelInfo* info = nullptr);
+
+// Throws the InputError of compile_model_lattice when the lattice code of `path` is not cached and
+// the compiler is not installed: lattice runs call it before anything else.
+void check_lattice_compiler(const std::filesystem::path& path);
 
 // The compiler: $LRCHAIN_MODEL_CXX if set, else the one recorded at configure time; and whether it
 // can be run.

@@ -35,6 +35,11 @@ struct ModelBrightConfig {
   double sample_every = 0.25;      // in T_b
   double steps_per_period = 0;     // srkn11b steps per period of the fastest linear mode (0: 24)
   double dt = 0;                   // srkn11b step (0: from steps_per_period)
+  // Emitting ends (Sec. 4.2): the sites beyond both ends follow the ansatz instead of being fixed
+  // (displacement form) or strain-free (strain form). The run is then driven, not autonomous:
+  // integrated with rkf78 at `tolerance` (absolute and relative), and its energy is not conserved.
+  bool ansatz_ends = false;
+  double tolerance = 1e-10;
 };
 
 // The ansatz of one model, branch, theta and detuning.
@@ -64,7 +69,9 @@ void validate(const ModelBrightConfig& c);
 
 struct ModelBrightResult {
   double omega = 0, omega_b = 0, period = 0, group_velocity = 0, curvature = 0, h_tilde = 0, lambda = 0;
-  double M1 = 0, M2 = 0, inverse_width = 0, dt = 0;
+  double M1 = 0, M2 = 0, inverse_width = 0, dt = 0;  // dt: the srkn11b step (fixed ends)
+  bool ansatz_ends = false;               // emitting ends, integrated with rkf78
+  double tolerance = 0;                   // rkf78's tolerance (ansatz ends)
   bool mean_flow = false;                 // strain form (translation-invariant) or displacement form
   std::vector<double> max_error;          // max_t E_f per field
   std::vector<double> final_error;

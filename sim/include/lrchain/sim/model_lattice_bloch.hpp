@@ -34,8 +34,13 @@ BlochMode bloch_mode(const Model& model, const lrchain_lattice_kernels& kernels,
 // The lattice parameters of `model` (its first parameter_count inputs, in the file's order).
 std::vector<double> lattice_parameters(const Model& model);
 
-// The compiled-in lattice kernels of `model`, or InputError naming the model when there are none
-// (a model file outside the shipped ones: no lattice code is compiled at run time yet).
+// The compiled-in lattice kernels of `model` when it is a shipped model file (same name and file
+// hash), else nullptr.
+const lrchain_lattice_kernels* compiled_in_lattice_kernels(const Model& model);
+
+// The compiled-in lattice kernels of `model`, or InputError naming the model when there are none. A
+// user's model file has its lattice code compiled at run time instead (compile_model_lattice of the
+// model compiler; the CLI's lattice_kernels_for picks either).
 const lrchain_lattice_kernels& lattice_kernels_of(const Model& model);
 
 }  // namespace lrchain::sim
