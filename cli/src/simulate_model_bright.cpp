@@ -51,6 +51,12 @@ void run_and_report_model_bright(const ModelSelection& selection, const Model& m
 
 }  // namespace
 
+void refuse_hdf5_format(const CLI::App& simulate, const std::string& what) {
+  const CLI::Option* format = simulate.get_option_no_throw("--format");
+  if (format != nullptr && format->count() > 0 && format->as<std::string>() == "hdf5")
+    throw InputError("--format hdf5 is not available for " + what + " (it writes CSV and figures; use --format csv)");
+}
+
 void run_model_bright_command(const ModelSelection& selection, const std::string& branch,
                               const sim::BrightRunConfig& bright, const CLI::App& cmd, const CLI::App& simulate,
                               const ModelRunOutput& output) {
@@ -62,6 +68,7 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
                                            "with --ansatz-ends; see lrchain simulate bright --help)");
   for (const char* name : {"--restart", "--checkpoint"})
     if (simulate.count(name) > 0) throw InputError(std::string(name) + " is not available with simulate bright --model");
+  refuse_hdf5_format(simulate, "simulate bright --model");
   const Model model = load_selected_model(selection, cmd, bright.params, true);
   sim::ModelBrightConfig c;
   c.theta = bright.theta;
@@ -80,6 +87,7 @@ bool run_model_bright_config(const std::string& file, const CLI::App& simulate, 
   if (!sim::is_model_experiment(doc)) return false;
   for (const char* name : {"--restart", "--checkpoint"})
     if (simulate.count(name) > 0) throw InputError(std::string(name) + " is not available with a model-file config");
+  refuse_hdf5_format(simulate, "a model-file config");
   const sim::ModelExperimentConfig mc = sim::load_model_experiment_config(doc);
   ModelSelection selection;
   selection.file = mc.model_file;

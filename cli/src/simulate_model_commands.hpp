@@ -16,6 +16,10 @@ struct ModelRunOutput {
   std::shared_ptr<bool> compact_json, figures;
 };
 
+// Model-file runs and `simulate ring` write CSV and figures only: `--format hdf5` on `simulate` is
+// refused (exit 2) for them rather than ignored. `what` names the run in the message.
+void refuse_hdf5_format(const CLI::App& simulate, const std::string& what);
+
 // Adds `ring` to `simulate`.
 void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output);
 

@@ -28,6 +28,7 @@ struct RingOptions {
 // Validates everything (model, branch, theta, ring, amplitudes, --out), then runs and reports.
 void run_ring_command(const RingOptions& o, const CLI::App& cmd, const ModelRunOutput& output) {
   const auto wall0 = std::chrono::steady_clock::now();
+  refuse_hdf5_format(*cmd.get_parent(), "simulate ring");
   const Model model = load_selected_model(o.model, cmd, Params{}, true);
   sim::RingRunConfig run = o.run;
   run.branch = model.branch(o.branch);

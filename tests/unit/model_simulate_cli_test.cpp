@@ -47,6 +47,11 @@ TEST_CASE("model simulate: bad options exit 2 naming the option, before anything
                  "3*pi/4", "--detuning", "-1e-4"}, "detuning");
   check_refused({"simulate", "bright", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
                  "--rho", "1"}, "--rho");
+  // HDF5 output is written for the resonant chain's runs only: refused, not ignored.
+  check_refused({"simulate", "ring", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
+                 "--format", "hdf5"}, "--format hdf5");
+  check_refused({"simulate", "bright", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
+                 "--format", "hdf5"}, "--format hdf5");
 }
 
 TEST_CASE("model simulate: a short ring run reports omega, h and both amplitudes" * doctest::test_suite("fast")) {
