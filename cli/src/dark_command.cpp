@@ -506,14 +506,11 @@ struct ModelDarkJob {
 ModelDarkJob validate_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
   parse_dark_center(a.center);
   parse_shooting_mode(a.mode);
-  if (a.sites < 9 || a.sites % 2 == 0)
-    throw InvalidParameter("sites", "must be an odd integer >= 9 (a staggered dark breather fits "
-                                    "periodic ends only on an odd number of sites)");
   Model model = load_selected_model(a.model, cmd, a.p);
   const lrchain_lattice_kernels& kernels = sim::lattice_kernels_of(model);
   const std::optional<std::size_t> given = a.branch_given ? std::optional(model.branch(a.branch)) : std::nullopt;
-  const std::size_t branch = defocusing_edge(model, given);
-  ModelDarkAnsatz ansatz = make_model_dark_ansatz(model, kernels, branch, a.omega_b);
+  ModelDarkAnsatz ansatz = make_model_dark_ansatz(model, kernels, defocusing_edge(model, given), a.omega_b);
+  check_dark_sites(ansatz, a.sites);
   const double period = 2 * std::numbers::pi / a.omega_b;
   double periods = 0;
   if (job == DarkJob::branch) {

@@ -20,8 +20,10 @@ namespace lrchain::sim::dark {
 namespace odeint = boost::numeric::odeint;
 using OrbitState = std::vector<double>;
 
+// The orbit's stepper (the extended system's is made per call: Odeint sizes a stepper's stage
+// storage once, and the number of tangent columns changes between calls).
 struct ModelDarkOrbit::Steppers {
-  odeint::runge_kutta_fehlberg78<OrbitState> orbit, extended;
+  odeint::runge_kutta_fehlberg78<OrbitState> orbit;
 };
 
 ModelDarkOrbit::ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites,
@@ -30,9 +32,7 @@ ModelDarkOrbit::ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vect
                mean_flow ? LatticeForm::strain : LatticeForm::displacement),
       sites_(sites), positions_(Eigen::Index(lattice_.positions())), options_(options),
       steppers_(std::make_unique<Steppers>()) {
-  if (sites < 9 || sites % 2 == 0)
-    throw InvalidParameter("sites", "must be odd and >= 9 (a staggered dark breather fits periodic ends only on an "
-                                    "odd number of sites), got " + std::to_string(sites));
+  if (sites < 9) throw InvalidParameter("sites", "must be >= 9, got " + std::to_string(sites));
 }
 
 ModelDarkOrbit::~ModelDarkOrbit() = default;
@@ -76,9 +76,10 @@ void ModelDarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi,
     }
   };
   const std::vector<double> times = times_;
+  odeint::runge_kutta_fehlberg78<OrbitState> stepper;
   for (std::size_t k = 0; k + 1 < times.size(); ++k) {
     if (options_.stop && options_.stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
-    steppers_->extended.do_step(system, extended_, times[k], times[k + 1] - times[k]);
+    stepper.do_step(system, extended_, times[k], times[k + 1] - times[k]);
   }
   std::copy(extended_.begin(), extended_.begin() + Eigen::Index(n), state.begin());
   for (std::size_t j = 0; j < columns; ++j)

@@ -1,6 +1,6 @@
 #pragma once
 // Shooting formulation of stationary dark breathers of any model file (the model's generated
-// lattice kernels, model_lattice.hpp, on an odd periodic ring: strain form for translation-invariant
+// lattice kernels, model_lattice.hpp, on a periodic ring: strain form for translation-invariant
 // models, displacement form for on-site models). Unknowns: all positions Z(0) (velocities 0).
 // Residuals:
 //  * reversible (default): Zdot(T_b/2) = 0 (time reversal makes the orbit T_b-periodic);
@@ -26,7 +26,7 @@ namespace lrchain::sim::dark {
 // The periodic orbit of a model lattice and its variational equations. Not thread-safe (scratch).
 class ModelDarkOrbit {
  public:
-  // Throws InvalidParameter("sites") unless sites is odd and >= 9.
+  // Throws InvalidParameter("sites") unless sites >= 9 (check_dark_sites checks the parity).
   ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites, bool mean_flow,
                  ContactIntegrationOptions options = {});
   ~ModelDarkOrbit();
