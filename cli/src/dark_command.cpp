@@ -110,6 +110,8 @@ void add_common(CLI::App& sub, DarkArgs& a) {
          "--model a branch of the model (default: the first whose theta = pi edge is defocusing)")
       ->type_name("NAME");
   add_model_file_options(sub, a.model);
+  sub.get_option("--set")->description("model parameter, repeatable: --set w0=2 --set b=-1/2 (default: the model "
+                                       "file's defaults; with --model only)");
   sub.add_option("--center", a.center, "family: bond (n0 = 1/2) | site (n0 = 0) (default bond)")->check(CLI::IsMember({"bond", "site"}));
   add_integer(sub, "--sites", a.sites, 9, std::numeric_limits<int>::max(),
               "odd number of lattice sites per field x, y (periodic ends; default 101)");
@@ -117,7 +119,7 @@ void add_common(CLI::App& sub, DarkArgs& a) {
       ->check(CLI::IsMember({"reversible", "full"}));
   sub.add_flag("--json", a.json_out, "print the JSON summary (always printed; kept for scripts)");
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr");
-  sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures");
+  sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures (default: none, only the JSON on stdout)");
   add_max_memory(sub, a.max_memory);
   add_figure_format(sub);
 }
