@@ -26,6 +26,10 @@
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/sim/output_lock.hpp"
+#include "lrchain/sim/dark/model_dark_ansatz.hpp"
+#include "lrchain/sim/dark/model_shooting.hpp"
+#include "lrchain/sim/model_lattice_bloch.hpp"
+#include "model_option.hpp"
 #include "options.hpp"
 #include "stop_signals.hpp"
 
@@ -38,7 +42,9 @@ using nlohmann::json;
 struct DarkArgs {
   Params p;
   double omega_b = 0;
-  std::string edge = "optical", center = "bond", mode = "reversible";
+  std::string branch = "optical", center = "bond", mode = "reversible";
+  bool branch_given = false;  // --branch on the command line (a model's default: its defocusing edge)
+  ModelSelection model;       // --model FILE --set NAME=VALUE (empty: the resonant chain through Params)
   int sites = 101;
   bool json_out = false, quiet = false, full_monodromy = false;
   std::string out;
@@ -56,7 +62,7 @@ enum class DarkJob { solve, floquet, branch, evolve };
 // iteration and before anything is written (InvalidParameter/InputError: exit 2).
 void validate_job(const DarkArgs& a, DarkJob job) {
   validate(a.p);
-  make_dark_breather_ansatz(a.p, parse_branch(a.edge), a.omega_b);  // checks --omega-b and --edge
+  make_dark_breather_ansatz(a.p, parse_branch(a.branch), a.omega_b);  // checks --omega-b and --branch
   parse_dark_center(a.center);
   if (a.sites < 9 || a.sites % 2 == 0)
     throw InvalidParameter("sites", "must be an odd integer >= 9 (a staggered dark breather fits "
@@ -99,8 +105,15 @@ void validate_job(const DarkArgs& a, DarkJob job) {
 
 void add_common(CLI::App& sub, DarkArgs& a) {
   add_model_options(sub, a.p, false);
-  add_number(sub, "--omega-b", a.omega_b, "breather frequency omega_b (dimensionless, time unit of Sec. 2; period T_b = 2 pi/omega_b), below the theta = pi band edge (required)")->required();
-  sub.add_option("--edge", a.edge, "theta = pi band edge the breather bifurcates from: optical|acoustic (default optical)")->check(CLI::IsMember({"optical", "acoustic"}));
+  add_number(sub, "--omega-b", a.omega_b, "breather frequency omega_b (dimensionless, time unit of Sec. 2; period T_b = 2 pi/omega_b), on the side of the theta = pi band edge where (omega_b - omega) h_tilde > 0: below it for the resonant chain (required)")->required();
+  sub.add_option_function<std::string>(
+         "--branch", [&a](const std::string& name) { a.branch = name, a.branch_given = true; },
+         "branch whose theta = pi band edge the breather bifurcates from: optical|acoustic (default optical); with "
+         "--model a branch of the model (default: the first whose theta = pi edge is defocusing)")
+      ->type_name("NAME");
+  add_model_file_options(sub, a.model);
+  sub.get_option("--set")->description("model parameter, repeatable: --set w0=2 --set b=-1/2 (default: the model "
+                                       "file's defaults; with --model only)");
   sub.add_option("--center", a.center, "family: bond (n0 = 1/2) | site (n0 = 0) (default bond)")->check(CLI::IsMember({"bond", "site"}));
   add_integer(sub, "--sites", a.sites, 9, std::numeric_limits<int>::max(),
               "odd number of lattice sites per field x, y (periodic ends; default 101)");
@@ -108,7 +121,7 @@ void add_common(CLI::App& sub, DarkArgs& a) {
       ->check(CLI::IsMember({"reversible", "full"}));
   sub.add_flag("--json", a.json_out, "print the JSON summary (always printed; kept for scripts)");
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr");
-  sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures");
+  sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures (default: none, only the JSON on stdout)");
   add_max_memory(sub, a.max_memory);
   add_figure_format(sub);
 }
@@ -145,7 +158,7 @@ struct Solved {
 json base_json(const DarkArgs& a, const DarkBreatherAnsatz& ansatz, const NewtonResult& newton);
 Solved solve(const DarkArgs& a) {
   validate(a.p);
-  const Branch edge = parse_branch(a.edge);
+  const Branch edge = parse_branch(a.branch);
   const DarkCenter center = parse_dark_center(a.center);
   const DarkBreatherAnsatz ansatz = make_dark_breather_ansatz(a.p, edge, a.omega_b);
   DarkShooting shooting(a.p, a.sites, center, parse_shooting_mode(a.mode));
@@ -174,7 +187,7 @@ json base_json(const DarkArgs& a, const DarkBreatherAnsatz& ansatz, const Newton
   json hist = json::array();
   for (const auto& r : newton.history) hist.push_back(r.residual);
   return {{"rho", a.p.rho}, {"kappa", a.p.kappa}, {"delta0", a.p.delta0}, {"alpha", a.p.alpha},
-          {"edge", a.edge}, {"center", a.center}, {"sites", a.sites}, {"mode", a.mode},
+          {"branch", a.branch}, {"center", a.center}, {"sites", a.sites}, {"mode", a.mode},
           {"omega_b", a.omega_b}, {"omega_edge", ansatz.omega},
           {"newton_converged", newton.converged}, {"newton_residuals", hist}, {"failure", nullptr},
           {"provenance", provenance_json()}};
@@ -263,16 +276,21 @@ void run_solve(const DarkArgs& a, bool floquet) {
   std::printf("%s\n", j.dump(2).c_str());
 }
 
-void run_continue(const DarkArgs& a) {
-  validate_job(a, DarkJob::branch);
-  Solved s = solve(a);
+// Continues a solved breather q0 away from the band edge omega_edge (Params or model shooting),
+// prints the JSON summary j completed with the branch and writes --out. `label` names the lattice
+// in figure titles.
+void continue_and_report(const DarkArgs& a, const DarkShootingProblem& shooting, const Eigen::VectorXd& q0,
+                         double omega_edge, json j, const std::string& label) {
   StopSignals signals;  // SIGINT/SIGTERM: stop after the current branch point, write the branch so far
   ContinuationOptions o;
   o.stop = StopSignals::flag();
   o.max_points = a.points;
   o.ds = a.ds;
   o.omega_min = a.omega_min;
-  o.omega_max = a.omega_max > 0 ? a.omega_max : s.ansatz.omega;
+  const bool above = a.omega_b > omega_edge;  // a model edge with h_tilde > 0: the branch rises from it
+  o.direction = above ? 1.0 : -1.0;
+  o.omega_min = above ? std::max(a.omega_min, omega_edge) : a.omega_min;
+  o.omega_max = a.omega_max > 0 ? a.omega_max : above ? 1e300 : omega_edge;
   std::ostringstream csv;
   csv << "omega_b,norm_squared,K_x,K_y,C_x,C_y,E_b,stability,max_modulus,max_real,max_period_doubling,"
          "max_oscillatory,iterations\n";
@@ -299,8 +317,7 @@ void run_continue(const DarkArgs& a) {
       unstable_in[part >= 1] = true;
     }
   };
-  const BranchResult br = continue_branch(s.shooting, s.newton.q, a.omega_b, o, on_point);
-  json j = base_json(a, s);
+  const BranchResult br = continue_branch(shooting, q0, a.omega_b, o, on_point);
   j["points"] = br.points.size();
   j["stop_reason"] = br.stop_reason;
   j["turning_points"] = br.turning_points;
@@ -318,9 +335,9 @@ void run_continue(const DarkArgs& a) {
     if (a.format == "hdf5")
       sim::dark::write_dark_branch_hdf5(std::filesystem::path(a.out) / "result.h5", sim::dark::dark_branch_record(a.p, br, std::size_t(a.sites), o.floquet));
     // The x range reaches the band edge, so that its line (omega_opt or omega_acs) is inside the frame.
-    double lowest = s.ansatz.omega;
+    double lowest = omega_edge;
     for (const auto& b : br.points) lowest = std::min(lowest, b.omega_b);
-    const double margin = 0.03 * std::max(s.ansatz.omega - lowest, 1e-3);
+    const double margin = 0.03 * std::max(omega_edge - lowest, 1e-3);
     figures.draw({"branch.gp",
                         fmt::format("if (!exists(\"outfile\")) outfile = 'branch.png'\n"
                                     "set terminal pngcairo size 900,650 noenhanced\nset output outfile\n"
@@ -329,10 +346,10 @@ void run_continue(const DarkArgs& a) {
                                     "set xrange [{4:.8g}:{5:.8g}]\nset key top left\n"
                                     "set arrow from {0},graph 0 to {0},graph 1 nohead lc 'black'\n"
                                     "set label 'band edge {0:.4f}' at {0},graph 0.96 right offset -0.5,0\n"
-                                    "set title '{1} {2}-centred dark breathers, ρ = {3:g} (red: real instability)'\n"
+                                    "set title '{1} {2}-centred dark breathers, {3} (red: real instability)'\n"
                                     "plot 'branch.csv' skip 1 u 1:2 w l lc 'blue' t 'branch', "
                                     "'' skip 1 u 1:(strstrt(strcol(8),'real') > 0 ? $2 : 1/0) w p pt 7 lc 'red' t 'real instability'\n",
-                                    s.ansatz.omega, a.edge, a.center, a.p.rho, lowest - margin, s.ansatz.omega + margin),
+                                    omega_edge, a.branch, a.center, label, lowest - margin, omega_edge + margin),
                         "branch.png"});
     // One panel per part of the branch that was computed (before / after the first turning point);
     // a part without multipliers off the unit circle says so instead of showing an empty frame.
@@ -342,8 +359,8 @@ void run_continue(const DarkArgs& a) {
         "set terminal pngcairo size 1000,{3} noenhanced\nset output outfile\n"
         "set datafile separator ','\nset xlabel 'breather frequency ω_b'\nset ylabel 'Floquet modulus |λ|'\n"
         "set offsets 0, 0, graph 0.1, 0\nset key off\n"
-        "set multiplot layout {4},1 title '{0} {1}-centred, ρ = {2:g}: Floquet moduli |λ| > 1 (blue: complex, red: real > 0, green: real < 0)'\n",
-        a.edge, a.center, a.p.rho, turned ? 700 : 400, turned ? 2 : 1);
+        "set multiplot layout {4},1 title '{0} {1}-centred, {2}: Floquet moduli |λ| > 1 (blue: complex, red: real > 0, green: real < 0)'\n",
+        a.branch, a.center, label, turned ? 700 : 400, turned ? 2 : 1);
     for (int p = 0; p < (turned ? 2 : 1); ++p) {
       const std::string select = p == 0 ? "$4==0" : "$4>=1";
       moduli += fmt::format("set title '{}'\n", p == 0 ? "weakly nonlinear (before the turning point)"
@@ -369,6 +386,12 @@ void run_continue(const DarkArgs& a) {
                                   StopSignals::name(StopSignals::received()), br.points.size(),
                                   a.out.empty() ? std::string() : "; the branch so far is in " + a.out));
   if (failed) throw NumericalFailure("continuation stopped: " + br.stop_reason);
+}
+
+void run_continue(const DarkArgs& a) {
+  validate_job(a, DarkJob::branch);
+  Solved s = solve(a);
+  continue_and_report(a, s.shooting, s.newton.q, s.ansatz.omega, base_json(a, s), fmt::format("ρ = {:g}", a.p.rho));
 }
 
 // Space-time files and figures of a direct integration (Figs. 21, 22, 25).
@@ -402,7 +425,7 @@ void write_evolution(const DarkArgs& a, const DarkEvolution& e, json& summary) {
   sim::write_file_atomic(dir, "snapshots.csv", sn.str());
   const double T = e.periods.back().t;
   const double nmin = -(N - 1) / 2 - 0.5, nmax = (N - 1) / 2 + 0.5;
-  const std::string title = fmt::format("{} {}-centred dark breather, ρ = {:g}, ω_b = {:g}", a.edge,
+  const std::string title = fmt::format("{} {}-centred dark breather, ρ = {:g}, ω_b = {:g}", a.branch,
                                         a.center, a.p.rho, a.omega_b);
   figures.draw({
       "evolution.gp",
@@ -477,6 +500,228 @@ void run_evolve(const DarkArgs& a) {
   if (!a.out.empty()) write_evolution(a, e, j);
   std::printf("%s\n", j.dump(2).c_str());
 }
+
+// ---- Any model file (--model): the same jobs on the model's generated lattice kernels. ----
+
+// A model's dark job after every check: the model, its kernels, the defocusing edge and seed.
+struct ModelDarkJob {
+  Model model;
+  const lrchain_lattice_kernels* kernels;
+  ModelDarkAnsatz ansatz;
+};
+
+// Loads --model/--set and checks every option of the job before anything is computed or written
+// (InvalidParameter/InputError: exit 2): the defocusing edge, omega_b, sites, window, memory, --out.
+ModelDarkJob validate_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
+  parse_dark_center(a.center);
+  parse_shooting_mode(a.mode);
+  Model model = load_selected_model(a.model, cmd, a.p);
+  const lrchain_lattice_kernels& kernels = sim::lattice_kernels_of(model);
+  const std::optional<std::size_t> given = a.branch_given ? std::optional(model.branch(a.branch)) : std::nullopt;
+  ModelDarkAnsatz ansatz = make_model_dark_ansatz(model, kernels, defocusing_edge(model, given), a.omega_b);
+  check_dark_sites(ansatz, a.sites);
+  const double period = 2 * std::numbers::pi / a.omega_b;
+  double periods = 0;
+  if (job == DarkJob::branch) {
+    checked_finite(a.ds, "ds");
+    if (!(a.ds > 0 && a.ds <= 1)) throw InvalidParameter("ds", "must be in (0, 1] (it adapts within [1e-5, 1])");
+    checked_finite(a.omega_min, "omega-min");
+    checked_finite(a.omega_max, "omega-max");
+    if (!(a.omega_min < a.omega_b)) throw InvalidParameter("omega-min", "must lie below omega-b");
+    if (a.omega_max != 0 && !(a.omega_max > a.omega_b))
+      throw InvalidParameter("omega-max", "must be 0 (the band edge, or none above it) or a frequency above omega-b");
+  }
+  if (job == DarkJob::evolve) {
+    if (!(std::isfinite(a.t_end) && a.t_end >= period))
+      throw InvalidParameter("t-end", fmt::format("must be a finite time >= one period T_b = 2 pi/omega_b = {:.6g}", period));
+    periods = double(checked_count(std::floor(a.t_end / period), "t-end", 1, std::numeric_limits<int>::max(),
+                                   "periods (t-end / T_b)"));
+  }
+  // The estimate counts two fields per site: scale the sites to the model's number of fields.
+  const double sites = double(a.sites) * double(kernels.fields) / 2.0;
+  const sim::ResourceEstimate e = sim::estimate_dark_breather(sites, true, period, periods);
+  sim::check_memory(e, a.max_memory, e.dominant == "periods" ? "t-end" : "sites",
+                    e.dominant == "periods" ? "lower t-end" : "lower sites");
+  if (!a.out.empty()) {
+    std::error_code ec;
+    if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))
+      throw InputError("--out '" + a.out + "' exists and is not a directory");
+    sim::check_output_space(e, a.out, "out", "choose another --out");
+  }
+  return {std::move(model), &kernels, std::move(ansatz)};
+}
+
+// Names of the lattice variables (CSV columns): strains r, w_f of translation-invariant models,
+// displacements u_f of on-site models.
+std::vector<std::string> model_variables(const ModelDarkJob& m) {
+  std::vector<std::string> names;
+  for (int f = 0; f < m.kernels->fields; ++f)
+    names.push_back(m.ansatz.mean_flow ? (f == 0 ? "r" : fmt::format("w{}", f)) : fmt::format("u{}", f));
+  return names;
+}
+
+json model_base_json(const DarkArgs& a, const ModelDarkJob& m, const NewtonResult& newton) {
+  json hist = json::array();
+  for (const auto& r : newton.history) hist.push_back(r.residual);
+  json variables = json::array();
+  for (int f = 0; f < m.kernels->fields; ++f)
+    variables.push_back(m.ansatz.mean_flow ? (f == 0 ? "r[n] = u0[n] - u0[n-1]" : fmt::format("w{0}[n] = u{0}[n] - u0[n]", f))
+                                           : fmt::format("u{}[n]", f));
+  return {{"model", model_json(m.model)}, {"branch", m.model.definition().branch_names.at(m.ansatz.branch)},
+          {"theta", m.ansatz.theta}, {"center", a.center}, {"sites", a.sites}, {"mode", a.mode},
+          {"omega_b", a.omega_b}, {"omega_edge", m.ansatz.omega}, {"curvature", m.ansatz.curvature},
+          {"h_tilde", m.ansatz.h_tilde}, {"lambda", m.ansatz.mean_flow ? json(m.ansatz.lambda) : json(nullptr)},
+          {"lattice_form", m.ansatz.mean_flow ? "strain" : "displacement"}, {"variables", variables},
+          {"contact_changes_located", false},
+          {"newton_converged", newton.converged}, {"newton_iterations", newton.history.empty() ? 0 : newton.history.size() - 1},
+          {"newton_residuals", hist}, {"failure", nullptr}, {"provenance", provenance_json()}};
+}
+
+// Newton from the model's seed; on failure prints the JSON (converged false) and throws (exit 3).
+NewtonResult model_newton(const DarkArgs& a, const ModelDarkJob& m, const ModelDarkShooting& shooting) {
+  NewtonOptions o;
+  if (!a.quiet)
+    o.progress = [](const NewtonRecord& r) {
+      std::fprintf(stderr, "newton %2d  max|F| = %.3e  max|step| = %.3e\n", r.iteration, r.residual, r.step);
+    };
+  NewtonResult res = newton_solve(shooting, model_dark_seed(m.ansatz, parse_dark_center(a.center), a.sites), a.omega_b, o);
+  if (!res.converged) {
+    std::string hist;
+    for (const auto& r : res.history) hist += fmt::format(" {:.3e}", r.residual);
+    const std::string message = fmt::format("Newton did not converge at omega_b = {} ({}); residual history:{}",
+                                            a.omega_b, res.failure, hist);
+    json j = model_base_json(a, m, res);
+    j["failure"] = {{"kind", "newton"}, {"message", message}};
+    std::printf("%s\n", j.dump(2).c_str());
+    throw NumericalFailure(message);
+  }
+  return res;
+}
+
+void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
+  const ModelDarkJob m = validate_model_job(a, job, cmd);
+  const ModelDarkShooting shooting(*m.kernels, sim::lattice_parameters(m.model), a.sites, m.ansatz.mean_flow,
+                                   parse_shooting_mode(a.mode));
+  const NewtonResult newton = model_newton(a, m, shooting);
+  json j = model_base_json(a, m, newton);
+  const Eigen::VectorXd& z0 = newton.q;
+  const std::vector<std::string> variables = model_variables(m);
+  const int N = a.sites;
+  if (job == DarkJob::branch) {
+    continue_and_report(a, shooting, z0, m.ansatz.omega, j, m.model.name());
+    return;
+  }
+  if (job == DarkJob::evolve) {
+    StopSignals signals;
+    const DarkEvolution e = evolve_dark_orbit(shooting.advance(), z0, N, a.omega_b, a.t_end, a.samples, StopSignals::flag());
+    if (e.periods.empty()) throw Interrupted(StopSignals::received(), "interrupted before the first period");
+    double max_E = 0, max_shift = 0;
+    for (const auto& r : e.periods) {
+      max_E = std::max(max_E, r.E_b);
+      max_shift = std::max(max_shift, std::abs(r.position - e.periods.front().position));
+    }
+    j["t_end"] = e.periods.back().t;
+    j["periods"] = e.periods.size();
+    j["period"] = e.period;
+    j["E_b_first_period"] = e.periods.front().E_b;
+    j["E_b_end"] = e.periods.back().E_b;
+    j["E_b_max"] = max_E;
+    j["C_x_first_period"] = e.periods.front().C_x;
+    j["C_x_end"] = e.periods.back().C_x;
+    j["position_first_period"] = e.periods.front().position;
+    j["position_end"] = e.periods.back().position;
+    j["centre_drift"] = std::abs(e.periods.back().position - e.periods.front().position);
+    j["max_centre_shift"] = max_shift;
+    j["depth_first_period"] = e.periods.front().depth;
+    j["depth_end"] = e.periods.back().depth;
+    j["samples_per_period"] = a.samples;
+    if (!a.out.empty()) {
+      const sim::OutputLock lock(a.out);
+      std::ostringstream ev;
+      ev << "t,E_b,C_x,K_x,position,depth\n";
+      for (const auto& r : e.periods)
+        ev << fmt::format("{:.12g},{:.6e},{:.9g},{:.9g},{:.6f},{:.6g}\n", r.t, r.E_b, r.C_x, r.K_x, r.position, r.depth);
+      sim::write_file_atomic(a.out, "evolution.csv", ev.str());
+      std::ostringstream sn;
+      sn << "n";
+      for (const auto& v : variables) sn << "," << v << "_0," << v << "_T";
+      sn << "\n";
+      for (int i = 0; i < N; ++i) {
+        sn << i - (N - 1) / 2;
+        for (std::size_t f = 0; f < variables.size(); ++f)
+          sn << fmt::format(",{:.17g},{:.17g}", e.snapshots.front()(Eigen::Index(f) * N + i), e.snapshots.back()(Eigen::Index(f) * N + i));
+        sn << "\n";
+      }
+      sim::write_file_atomic(a.out, "snapshots.csv", sn.str());
+      sim::write_file_atomic(a.out, "summary.json", j.dump(2) + "\n");
+    }
+    std::printf("%s\n", j.dump(2).c_str());
+    if (StopSignals::received() != 0)
+      throw Interrupted(StopSignals::received(), fmt::format("interrupted after {} periods", e.periods.size()));
+    return;
+  }
+  DarkMeasures measures;
+  shooting.measure(z0, a.omega_b, measures);
+  j["measures"] = measures_json(measures);
+  if (!m.ansatz.mean_flow || m.kernels->fields < 2) j["measures"]["K_y"] = j["measures"]["C_y"] = nullptr;
+  FloquetResult f;
+  if (job == DarkJob::floquet) {
+    f = floquet_from_monodromy(shooting.monodromy(z0, a.omega_b));
+    j["monodromy"] = "full period";
+    j["floquet"] = floquet_json(f, true);
+  }
+  if (!a.out.empty()) {
+    const sim::OutputLock lock(a.out);
+    sim::Figures figures(a.out);
+    const Eigen::VectorXd seed = model_dark_seed(m.ansatz, parse_dark_center(a.center), N);
+    std::vector<double> state(2 * std::size_t(z0.size()), 0.0);
+    std::copy(z0.data(), z0.data() + z0.size(), state.begin());
+    shooting.orbit().integrate(state, 0.0, 2 * std::numbers::pi / a.omega_b);
+    std::ostringstream os;
+    os << "n";
+    for (const auto& v : variables) os << "," << v << "_0," << v << "_seed," << v << "_T";
+    os << "\n";
+    for (int i = 0; i < N; ++i) {
+      os << i - (N - 1) / 2;
+      for (std::size_t v = 0; v < variables.size(); ++v) {
+        const Eigen::Index at = Eigen::Index(v) * N + i;
+        os << fmt::format(",{:.17g},{:.17g},{:.17g}", z0(at), seed(at), state[std::size_t(at)]);
+      }
+      os << "\n";
+    }
+    sim::write_file_atomic(a.out, "profile.csv", os.str());
+    std::string plot = "plot ";
+    for (std::size_t v = 0; v < variables.size(); ++v)
+      plot += fmt::format("{0}'profile.csv' skip 1 u 1:{1} w lp pt 3 t '{2}(0)', '' skip 1 u 1:{3} w p pt 4 ps 1.5 t "
+                          "'{2}(T_b)', '' skip 1 u 1:{4} w p pt 6 t '{2} seed'",
+                          v == 0 ? "" : ", ", 2 + 3 * v, variables[v], 4 + 3 * v, 3 + 3 * v);
+    figures.draw({"profile.gp",
+                  fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
+                              "set terminal pngcairo size 1000,700 noenhanced\nset output outfile\n"
+                              "set datafile separator ','\nset xlabel 'site n'\nset ylabel 'lattice variables'\n"
+                              "set key outside\nset title '{} dark breather ({} centred), ω_b = {:.5f}: Z(0), Z(T_b), seed'\n{}\n",
+                              m.model.name(), a.center, a.omega_b, plot),
+                  "profile.png"});
+    if (job == DarkJob::floquet) write_multipliers(a.out, "multipliers", f, a.omega_b, figures);
+    figures.finish(j);
+  }
+  std::printf("%s\n", j.dump(2).c_str());
+}
+
+// The resonant chain through Params, or (--model) any model file.
+void dispatch(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
+  if (a.model.file.empty()) {
+    if (!a.model.set.empty()) throw InputError("--set takes the parameters of a --model FILE; give --model");
+    if (job == DarkJob::branch) run_continue(a);
+    else if (job == DarkJob::evolve) run_evolve(a);
+    else run_solve(a, job == DarkJob::floquet);
+    return;
+  }
+  if (a.full_monodromy) throw InputError("--full-monodromy: with --model the Floquet multipliers always come from the full-period monodromy");
+  if (a.format == "hdf5") throw InputError("--format hdf5 is not available with --model (it writes CSV and figures; use --format csv)");
+  run_model_job(a, job, cmd);
+}
+
 }  // namespace
 
 void register_dark(CLI::App& app) {
@@ -487,12 +732,16 @@ void register_dark(CLI::App& app) {
   auto args = std::make_shared<DarkArgs>();
   auto* solve_cmd = dark->add_subcommand("solve", "Newton solve from the eq:xy_app seed");
   add_common(*solve_cmd, *args);
-  solve_cmd->callback([args] { run_solve(*args, false); });
+  solve_cmd->footer("Example:\n  lrchain dark solve --rho 1/3 --branch optical --center bond --omega-b 2.44 --out out/dark-solve\n"
+                    "  lrchain dark solve --model models/klein_gordon.toml --set b=-1/2 --omega-b 1.17 --sites 61");
+  solve_cmd->callback([args, solve_cmd] { dispatch(*args, DarkJob::solve, *solve_cmd); });
   auto* floq = dark->add_subcommand("floquet", "Solve, then the Floquet multipliers of the monodromy matrix (Sec. 5.4)");
   add_common(*floq, *args);
   floq->add_flag("--full-monodromy", args->full_monodromy,
                  "integrate the full period (check of the reversible reduction)");
-  floq->callback([args] { run_solve(*args, true); });
+  floq->footer("Example:\n  lrchain dark floquet --rho 1/3 --center bond --omega-b 2.44 --sites 51\n"
+               "  lrchain dark floquet --model models/diatomic_chain.toml --omega-b 1.33 --sites 41");
+  floq->callback([args, floq] { dispatch(*args, DarkJob::floquet, *floq); });
   auto* cont = dark->add_subcommand(
       "continue", "Pseudo-arclength continuation in omega_b through turning points, Floquet at every point");
   add_common(*cont, *args);
@@ -500,18 +749,20 @@ void register_dark(CLI::App& app) {
   add_number(*cont, "--ds", args->ds, "initial pseudo-arclength step in (Z(0), omega_b), dimensionless, adapted between 1e-5 and 1 (default 0.1)");
   add_number(*cont, "--omega-min", args->omega_min, "stop when omega_b falls below this (dimensionless frequency; default 0)");
   add_number(*cont, "--omega-max", args->omega_max, "stop when omega_b rises above this (dimensionless frequency, at most twice the top of the optical band; default: the band edge omega(pi))");
-  cont->callback([args] { run_continue(*args); });
+  cont->footer("Example:\n  lrchain dark continue --rho 1/3 --branch optical --center bond --omega-b 2.44 --points 10 --out out/dark");
+  cont->callback([args, cont] { dispatch(*args, DarkJob::branch, *cont); });
   auto* evo = dark->add_subcommand(
       "evolve", "Solve, then integrate eq:Hertzd0S from the solution: space-time x_n, y_n, E_b(t), breather position (Figs. 21, 22, 25)");
   add_common(*evo, *args);
   add_number(*evo, "--t-end", args->t_end, "integration time (dimensionless, time unit of Sec. 2), at least one period T_b (required)")->required();
   add_integer(*evo, "--samples", args->samples, 4, 1'000'000,
               "samples of x_n(t) per period for the amplitudes of the position measure (default 24, >= 4)");
-  evo->callback([args] { run_evolve(*args); });
+  evo->footer("Example:\n  lrchain dark evolve --rho 1/3 --center bond --omega-b 2.44 --t-end 500 --out out/dark-evolve");
+  evo->callback([args, evo] { dispatch(*args, DarkJob::evolve, *evo); });
   for (auto* sub : {solve_cmd, floq, cont})
     sub->add_option("--format", args->format,
                     "data files in --out: csv (CSV and figures; default) or hdf5 (also result.h5: profiles or the "
-                    "branch, Floquet multipliers as complex numbers)")
+                    "branch, Floquet multipliers as complex numbers; not with --model)")
         ->check(CLI::IsMember({"csv", "hdf5"}));
 }
 

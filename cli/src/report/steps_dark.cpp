@@ -25,7 +25,7 @@ json run_branch(const StepContext& ctx, const BranchRun& b, Section& s, CsvTable
   // needs 6-7 chord iterations, the step shrinks back, and 26 points at rho = 1 stopped at
   // omega_b = 2.233, short of 2.207. The quick branches keep the default step.
   json j = run_lrchain(ctx,
-                       {"dark", "continue", "--rho", b.rho, "--edge", b.edge, "--center", b.center, "--omega-b",
+                       {"dark", "continue", "--rho", b.rho, "--branch", b.edge, "--center", b.center, "--omega-b",
                         b.start, "--points", std::to_string(points), "--quiet", "--out", dir.string()},
                        dir, "summary", s.commands);
   table = read_csv(dir / "branch.csv");
@@ -77,7 +77,7 @@ Section solutions(const StepContext& ctx) {
   for (const std::string center : {"bond", "site"}) {
     const auto dir = ctx.out / "dark" / ("solve_" + center);
     const json j = run_lrchain(ctx,
-                               {"dark", "solve", "--rho", "1/3", "--edge", "optical", "--center", center, "--omega-b",
+                               {"dark", "solve", "--rho", "1/3", "--branch", "optical", "--center", center, "--omega-b",
                                 "2.42", "--quiet", "--out", dir.string()},
                                dir, "summary", s.commands);
     const double eb = j.contains("measures") ? j["measures"].value("E_b", not_computed) : not_computed;
@@ -227,7 +227,7 @@ json evolve(const StepContext& ctx, Section& s, const std::string& sub, const st
             const std::string& center, const std::string& omega_b, const std::string& t_end) {
   const auto dir = ctx.out / "dark" / sub;
   const json j = run_lrchain(ctx,
-                             {"dark", "evolve", "--rho", rho, "--edge", "optical", "--center", center, "--omega-b",
+                             {"dark", "evolve", "--rho", rho, "--branch", "optical", "--center", center, "--omega-b",
                               omega_b, "--t-end", t_end, "--samples", "12", "--quiet", "--out", dir.string()},
                              dir, "summary", s.commands);
   s.links.push_back("dark/" + sub + "/evolution.csv");

@@ -20,7 +20,7 @@ Eigen::VectorXd tangent(const Eigen::MatrixXd& J, const Eigen::VectorXd& t_prev)
 }
 }  // namespace
 
-BranchResult continue_branch(const DarkShooting& shooting, const Eigen::VectorXd& q0, double omega0,
+BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::VectorXd& q0, double omega0,
                              const ContinuationOptions& o,
                              const std::function<void(const BranchPoint&)>& on_point) {
   const Eigen::Index k = shooting.unknowns();
@@ -31,7 +31,7 @@ BranchResult continue_branch(const DarkShooting& shooting, const Eigen::VectorXd
   Eigen::VectorXd t_prev = Eigen::VectorXd::Zero(k + 1);
   t_prev(k) = o.direction < 0 ? -1.0 : 1.0;
   Eigen::VectorXd r;
-  Eigen::MatrixXd J, Phi;
+  Eigen::MatrixXd J;
   double ds = o.ds;
   int iterations = 0;
 
@@ -40,17 +40,8 @@ BranchResult continue_branch(const DarkShooting& shooting, const Eigen::VectorXd
     BranchPoint pt;
     pt.omega_b = u(k);
     pt.z0 = shooting.z_from_unknowns(u.head(k));
-    if (o.floquet && shooting.mode() == ShootingMode::reversible) {
-      shooting.evaluate(u.head(k), u(k), r, &J, &Phi);
-      pt.floquet = floquet_reversible(shooting, Phi);
-    } else {
-      shooting.evaluate(u.head(k), u(k), r, &J);
-      if (o.floquet) {  // full mode: the propagator is the monodromy
-        shooting.evaluate(u.head(k), u(k), r, &J, &Phi);
-        pt.floquet = floquet_from_monodromy(Phi);
-      }
-    }
-    pt.measures = measure_dark_breather(shooting.params(), pt.z0, pt.omega_b, shooting.integration());
+    shooting.jacobian_and_floquet(u.head(k), u(k), r, J, o.floquet ? &pt.floquet : nullptr);
+    shooting.measure(pt.z0, pt.omega_b, pt.measures);
     pt.iterations = iterations;
     pt.residual = residual;
     const Eigen::VectorXd t = tangent(J, t_prev);

@@ -29,22 +29,19 @@ double dark_dip_position(const Eigen::VectorXd& amplitude) {
 }
 
 // Direct integration of eq:Hertzd0S from (Z(0), 0) with per-period measures (eq:relerr, eq:center).
-DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
-                                   double t_end, int samples_per_period,
-                                   const ContactIntegrationOptions& integration,
-                                   const std::atomic<bool>* stop) {
+DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, int sites, double omega_b,
+                                double t_end, int samples_per_period, const std::atomic<bool>* stop) {
   if (!(omega_b > 0)) throw InvalidParameter("omega-b", "must be > 0");
   if (samples_per_period < 4) throw InvalidParameter("samples", "at least 4 samples per period");
-  const int N = static_cast<int>(z0.size() / 2);
+  const int N = sites;
   const double period = 2.0 * std::numbers::pi / omega_b;
   if (!(t_end >= period && std::isfinite(t_end)))
     throw InvalidParameter("t-end", "must be a finite time of at least one period T_b = 2 pi/omega_b");
   const int M = static_cast<int>(checked_count(std::floor(t_end / period), "t-end", 1,
                                                std::numeric_limits<int>::max(), "periods (t-end / T_b)"));
-  StrainLatticeOrbit orbit(p, N);
-  ContactIntegrator integrator(orbit, integration);
-  std::vector<double> s(static_cast<std::size_t>(4 * N), 0.0);
-  for (int i = 0; i < 2 * N; ++i) s[static_cast<std::size_t>(i)] = z0(i);
+  const Eigen::Index positions = z0.size();
+  std::vector<double> s(static_cast<std::size_t>(2 * positions), 0.0);
+  for (Eigen::Index i = 0; i < positions; ++i) s[static_cast<std::size_t>(i)] = z0(i);
   const double zmax = z0.cwiseAbs().maxCoeff();
 
   DarkEvolution out;
@@ -62,14 +59,14 @@ DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, d
     for (int k = 1; k <= samples_per_period; ++k) {
       const double t0 = period * ((m - 1) + static_cast<double>(k - 1) / samples_per_period);
       const double t1 = period * ((m - 1) + static_cast<double>(k) / samples_per_period);
-      integrator.integrate(s, t0, t1);
+      advance(s, t0, t1);
       for (int n = 0; n < N; ++n) {
         const double x = s[static_cast<std::size_t>(n)];
         lo(n) = std::min(lo(n), x);
         hi(n) = std::max(hi(n), x);
       }
     }
-    const Eigen::Map<const Eigen::VectorXd> z(s.data(), 2 * N);
+    const Eigen::Map<const Eigen::VectorXd> z(s.data(), positions);
     out.snapshots.emplace_back(z);
     out.max_strain = std::max(out.max_strain, hi.maxCoeff());
     DarkEvolutionPeriod r;
@@ -89,6 +86,17 @@ DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, d
     out.periods.push_back(r);
   }
   return out;
+}
+
+DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
+                                   double t_end, int samples_per_period,
+                                   const ContactIntegrationOptions& integration,
+                                   const std::atomic<bool>* stop) {
+  const int N = static_cast<int>(z0.size() / 2);
+  StrainLatticeOrbit orbit(p, N);
+  ContactIntegrator integrator(orbit, integration);
+  return evolve_dark_orbit([&](std::vector<double>& s, double t0, double t1) { integrator.integrate(s, t0, t1); },
+                           z0, N, omega_b, t_end, samples_per_period, stop);
 }
 
 }  // namespace lrchain::sim::dark

@@ -25,37 +25,52 @@ double relative_error(const std::vector<double>& s, const Eigen::VectorXd& z0) {
 }
 }  // namespace
 
+DarkMeasures measure_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, int sites, double omega_b,
+                                int samples) {
+  const int N = sites;
+  const int fields = static_cast<int>(z0.size()) / N;
+  std::vector<double> s = initial_state(z0);
+  const double period = 2.0 * std::numbers::pi / omega_b;
+  std::vector<double> lo(static_cast<std::size_t>(fields)), hi(static_cast<std::size_t>(fields));
+  for (int f = 0; f < fields; ++f) lo[f] = hi[f] = s[static_cast<std::size_t>(f * N)];
+  double strain_max = z0.head(N).maxCoeff();
+  for (int k = 1; k <= samples; ++k) {
+    advance(s, period * (k - 1) / samples, period * k / samples);
+    for (int f = 0; f < fields; ++f) {
+      lo[f] = std::min(lo[f], s[static_cast<std::size_t>(f * N)]);
+      hi[f] = std::max(hi[f], s[static_cast<std::size_t>(f * N)]);
+    }
+    for (int n = 0; n < N; ++n) strain_max = std::max(strain_max, s[static_cast<std::size_t>(n)]);
+  }
+  DarkMeasures m;
+  m.E_b = relative_error(s, z0);
+  std::vector<double> centre(static_cast<std::size_t>(fields)), amplitude(static_cast<std::size_t>(fields));
+  for (int f = 0; f < fields; ++f) {
+    centre[f] = 0.5 * (hi[f] + lo[f]);     // eq:center
+    amplitude[f] = 0.5 * (hi[f] - lo[f]);  // eq:amp
+  }
+  m.C_x = centre[0];
+  m.K_x = amplitude[0];
+  if (fields > 1) {
+    m.C_y = centre[1];
+    m.K_y = amplitude[1];
+  }
+  m.max_strain = strain_max;
+  double norm = 0;  // eq:l2norm
+  for (int n = 0; n < N; ++n)
+    for (int f = 0; f < fields; ++f)
+      norm += amplitude[f] * amplitude[f] - (z0(f * N + n) - centre[f]) * (z0(f * N + n) - centre[f]);
+  m.norm_squared = norm;
+  return m;
+}
+
 DarkMeasures measure_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
                                    const ContactIntegrationOptions& integration, int samples) {
   const int N = static_cast<int>(z0.size() / 2);
   StrainLatticeOrbit orbit(p, N);
   ContactIntegrator integrator(orbit, integration);
-  std::vector<double> s = initial_state(z0);
-  const double period = 2.0 * std::numbers::pi / omega_b;
-  double xmin = s[0], xmax = s[0], ymin = s[N], ymax = s[N];
-  double strain_max = z0.head(N).maxCoeff();
-  for (int k = 1; k <= samples; ++k) {
-    integrator.integrate(s, period * (k - 1) / samples, period * k / samples);
-    xmin = std::min(xmin, s[0]);
-    xmax = std::max(xmax, s[0]);
-    ymin = std::min(ymin, s[N]);
-    ymax = std::max(ymax, s[N]);
-    for (int n = 0; n < N; ++n) strain_max = std::max(strain_max, s[static_cast<std::size_t>(n)]);
-  }
-  DarkMeasures m;
-  m.E_b = relative_error(s, z0);
-  m.C_x = 0.5 * (xmax + xmin);  // eq:center
-  m.C_y = 0.5 * (ymax + ymin);
-  m.K_x = 0.5 * (xmax - xmin);  // eq:amp
-  m.K_y = 0.5 * (ymax - ymin);
-  m.max_strain = strain_max;
-  double norm = 0;  // eq:l2norm
-  for (int n = 0; n < N; ++n) {
-    norm += m.K_x * m.K_x - (z0(n) - m.C_x) * (z0(n) - m.C_x);
-    norm += m.K_y * m.K_y - (z0(N + n) - m.C_y) * (z0(N + n) - m.C_y);
-  }
-  m.norm_squared = norm;
-  return m;
+  return measure_dark_orbit([&](std::vector<double>& s, double t0, double t1) { integrator.integrate(s, t0, t1); },
+                            z0, N, omega_b, samples);
 }
 
 std::vector<RelativeErrorSample> relative_error_history(const Params& p, const Eigen::VectorXd& z0,

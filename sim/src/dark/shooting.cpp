@@ -216,7 +216,7 @@ void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::Vec
   }
 }
 
-NewtonResult newton_solve(const DarkShooting& shooting, Eigen::VectorXd q0, double omega_b,
+NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q0, double omega_b,
                           const NewtonOptions& options) {
   NewtonResult result;
   result.q = std::move(q0);

@@ -46,7 +46,7 @@ struct BranchResult {
 };
 
 // Continues from a converged solution q0 at omega0. on_point is called after each point.
-BranchResult continue_branch(const DarkShooting& shooting, const Eigen::VectorXd& q0, double omega0,
+BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::VectorXd& q0, double omega0,
                              const ContinuationOptions& options,
                              const std::function<void(const BranchPoint&)>& on_point = {});
 

@@ -10,6 +10,7 @@
 
 #include "lrchain/params.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
+#include "lrchain/sim/dark/measures.hpp"
 
 namespace lrchain::sim::dark {
 
@@ -33,6 +34,11 @@ struct DarkEvolution {
 // Position of the dark dip from the amplitudes A_n (array index i): circular mean of
 // i weighted by (max A - A_i)^2, returned as a physical site n = i - (N - 1)/2 in (-N/2, N/2].
 double dark_dip_position(const Eigen::VectorXd& amplitude);
+
+// The same for any orbit: Z(0) = z0 holds the positions of all variables (`sites` per variable,
+// field-major); the amplitudes, centre and position use variable 0.
+DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, int sites, double omega_b,
+                                double t_end, int samples_per_period, const std::atomic<bool>* stop = nullptr);
 
 // Integrates from Z(0) over floor(t_end / T_b) periods, sampling every site `samples_per_period`
 // times per period for the amplitudes A_n = (sup - inf)/2 of x_n(t) (the position measure).

@@ -3,6 +3,7 @@
 // amplitudes K_x, K_y (eq:amp) at the far site i = 0, the renormalised l2 norm (eq:l2norm) and the
 // relative error E_b(t) (eq:relerr), from a direct integration of eq:Hertzd0S.
 #include <Eigen/Dense>
+#include <functional>
 #include <vector>
 
 #include "lrchain/params.hpp"
@@ -17,6 +18,15 @@ struct DarkMeasures {
   double E_b = 0;           // E_b(T_b) of eq:relerr
   double max_strain = 0;    // max_n,t x_n(t) (> delta0: beads lose contact)
 };
+
+// Advances an orbit state [positions, velocities] in place from t0 to t1 (any lattice).
+using OrbitAdvance = std::function<void(std::vector<double>& state, double t0, double t1)>;
+
+// The measures of one period of an orbit from Z(0) = z0 (positions of `fields` variables of `sites`
+// sites each, field-major; Zdot(0) = 0): variable 0 gives K_x, C_x and max_strain, variable 1 (if
+// any) K_y, C_y; the l2 norm sums over all variables.
+DarkMeasures measure_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, int sites, double omega_b,
+                                int samples = 400);
 
 // Integrates one period from Z(0) (Zdot(0) = 0), sampling x_0, y_0 at >= `samples` times.
 DarkMeasures measure_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,

@@ -32,14 +32,35 @@ enum class ShootingMode { reversible, full };
 std::string_view to_string(ShootingMode m);
 ShootingMode parse_shooting_mode(std::string_view text);  // InvalidParameter("mode")
 
-class DarkShooting {
+struct FloquetResult;
+struct DarkMeasures;
+
+// What Newton and the continuation need of a shooting formulation: the shooting residual and its
+// Jacobian, the Floquet multipliers and the measures of a converged point. DarkShooting (the
+// resonant chain's strain lattice, eq:Hertzd0S) and ModelDarkShooting (any model file) provide it.
+class DarkShootingProblem {
+ public:
+  virtual ~DarkShootingProblem() = default;
+  virtual int unknowns() const = 0;
+  virtual Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const = 0;
+  // Residual F(q, omega_b); if jacobian != nullptr also [dF/dq | dF/domega_b] (unknowns()+1 cols).
+  virtual void evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
+                        Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator = nullptr) const = 0;
+  // At a converged point: the Jacobian, and the Floquet multipliers into *floquet if not null.
+  virtual void jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
+                                    Eigen::MatrixXd& jacobian, FloquetResult* floquet) const = 0;
+  // Measures (eq:center, eq:amp, eq:l2norm, eq:relerr) of the breather Z(0) = z0.
+  virtual void measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const = 0;
+};
+
+class DarkShooting : public DarkShootingProblem {
  public:
   // Throws InvalidParameter("sites") unless sites is odd and >= 9 (staggered waves on a ring).
   DarkShooting(const Params& p, int sites, DarkCenter center, ShootingMode mode,
                ContactIntegrationOptions integration = {});
 
   int sites() const { return sites_; }
-  int unknowns() const { return static_cast<int>(basis_.cols()); }
+  int unknowns() const override { return static_cast<int>(basis_.cols()); }
   DarkCenter center() const { return center_; }
   ShootingMode mode() const { return mode_; }
   const Params& params() const { return p_; }
@@ -47,7 +68,7 @@ class DarkShooting {
   // Reflection of the family: site index i -> R(i).
   int reflect(int i) const { return reflection_[static_cast<std::size_t>(i)]; }
 
-  Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const { return basis_ * q; }
+  Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const override { return basis_ * q; }
   // Least-squares projection onto the family's subspace (symmetrises a seed).
   Eigen::VectorXd unknowns_from_z(const Eigen::VectorXd& z0) const { return basis_.transpose() * z0; }
 
@@ -56,7 +77,12 @@ class DarkShooting {
   // transition matrix over the shooting interval: Phi(T_b/2) (reversible, site), Phi(T_b/4)
   // (reversible, bond) or Phi(T_b) (full mode): the input of the Floquet analysis (floquet.hpp).
   void evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
-                Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator = nullptr) const;
+                Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator = nullptr) const override;
+  // Reversible mode: Floquet from the shooting propagator (floquet_reversible); full mode: from
+  // the full-period monodromy.
+  void jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
+                            Eigen::MatrixXd& jacobian, FloquetResult* floquet) const override;
+  void measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const override;
   // Time over which the reversible/full shooting integrates: T_b/2, T_b/4 or T_b.
   double shooting_time(double omega_b) const;
 
@@ -92,7 +118,7 @@ struct NewtonResult {
 };
 
 // Newton (least squares, column-pivoting QR) on F(., omega_b) = 0 from q0 (Sec. 5.3).
-NewtonResult newton_solve(const DarkShooting& shooting, Eigen::VectorXd q0, double omega_b,
+NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q0, double omega_b,
                           const NewtonOptions& options);
 
 // Seed Z(0) from eq:xy_app at t = 0 on the array (centre in the middle, n_phys = i - (N-1)/2).

@@ -1,0 +1,65 @@
+#pragma once
+// Dark breathers of any model file: a band edge (theta = pi, else theta = 0) where the model's NLS
+// is defocusing and the stationary dark-breather seed built from its derived coefficients
+// (eq:defocus_app, eq:xy_app generalised): at theta = pi, on an odd periodic ring, displacements
+//   u_f[n](0) = (M + 2 K_f (-1)^n) A tanh(eta (n - n0)),
+// A = sqrt(3 (omega_b - omega) / h_tilde), eta = sqrt(3 (omega_b - omega) / omega''), K the
+// lattice's own Bloch vector at theta = pi (model_lattice_bloch.hpp), and the mean-flow factor
+// M = -lambda sqrt(omega'' h_tilde) / |h_tilde| of translation-invariant models (on-site models
+// have no mean flow, M = 0). For the resonant chain this is exactly make_dark_breather_ansatz.
+// At theta = 0 the carrier does not change sign from site to site, so a single dark breather does
+// not fit a periodic ring: the seed is a pair of dark breathers half a ring apart on an even ring,
+//   u_f[n](0) = M A (tanh(eta (n - n1)) + tanh(eta (n - n2))) - 2 K_f A tanh(eta (n - n1)) tanh(eta (n - n2)),
+// n1 = N/4 + n0, n2 = n1 + N/2 (array index n).
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/model.hpp"
+#include "lrchain/sim/model_lattice_abi.h"
+
+namespace lrchain::sim::dark {
+
+struct ModelDarkAnsatz {
+  std::size_t branch = 0;
+  double theta = 0;               // pi: the edge the breather bifurcates from
+  double omega_b = 0;             // breather frequency, on the side of the edge where A is real
+  double omega = 0;               // edge frequency
+  double curvature = 0;           // omega'' at the edge
+  double h_tilde = 0;             // h - lambda beta (h for on-site models)
+  double lambda = 0;              // 0 without mean flow
+  double amplitude = 0;           // A
+  double inverse_width = 0;       // eta
+  double mean_factor = 0;         // M
+  std::vector<double> kernel;     // Bloch vector K_f (real at theta = pi), K_0 = 1
+  bool mean_flow = false;         // strain form (translation-invariant) or displacement form
+};
+
+struct ModelDarkEdge {
+  std::size_t branch = 0;
+  double theta = 0;  // pi or 0
+};
+
+// The branch (given, or the first in the file's order) and edge (theta = pi first, then theta = 0)
+// where the NLS is defocusing (omega'' h_tilde > 0). InvalidParameter("branch", ...) naming every
+// edge checked and its regime when there is none.
+ModelDarkEdge defocusing_edge(const Model& model, std::optional<std::size_t> branch);
+
+// The seed's coefficients at omega_b. InvalidParameter("omega-b", ...) unless
+// (omega_b - omega) h_tilde > 0 and omega_b > 0.
+ModelDarkAnsatz make_model_dark_ansatz(const Model& model, const lrchain_lattice_kernels& kernels,
+                                       const ModelDarkEdge& edge, double omega_b);
+
+// InvalidParameter("sites", ...) unless `sites` >= 9 fits the edge: odd at theta = pi, even at 0.
+void check_dark_sites(const ModelDarkAnsatz& ansatz, int sites);
+
+// Z(0) on a periodic ring of `sites` (theta = pi: centre in the middle, n = i - (sites - 1)/2;
+// theta = 0: the pair) in the lattice's variables: strains r[n] = u_0[n] - u_0[n-1],
+// w_f[n] = u_f[n] - u_0[n] (mean flow) or displacements u_f[n], field-major.
+Eigen::VectorXd model_dark_seed(const ModelDarkAnsatz& ansatz, DarkCenter center, int sites);
+
+}  // namespace lrchain::sim::dark

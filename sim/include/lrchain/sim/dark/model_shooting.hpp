@@ -1,0 +1,82 @@
+#pragma once
+// Shooting formulation of stationary dark breathers of any model file (the model's generated
+// lattice kernels, model_lattice.hpp, on a periodic ring: strain form for translation-invariant
+// models, displacement form for on-site models). Unknowns: all positions Z(0) (velocities 0).
+// Residuals:
+//  * reversible (default): Zdot(T_b/2) = 0 (time reversal makes the orbit T_b-periodic);
+//  * full: Z(T_b) - Z(0) = 0, Zdot(T_b) = 0 (least squares; a check of the reversible one);
+// plus, for translation-invariant models, the row C_x = (r_0(0) + r_0(T_b/2))/2 = 0 at the far site
+// that fixes the conserved total strain (as the resonant chain's shooting.hpp). The Jacobian comes
+// from the variational equations of the generated Jacobian action, integrated on the orbit's own
+// Runge-Kutta-Fehlberg 7(8) steps (the exact derivative of the discrete flow). Floquet multipliers
+// from the full-period monodromy, so that the (lambda, 1/lambda) pairing is a check, not built in.
+// Contact changes of one-sided contact laws are not located: steps cross them adaptively.
+#include <Eigen/Dense>
+#include <atomic>
+#include <memory>
+#include <vector>
+
+#include "lrchain/sim/dark/contact_integrator.hpp"
+#include "lrchain/sim/dark/measures.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/model_lattice.hpp"
+
+namespace lrchain::sim::dark {
+
+// The periodic orbit of a model lattice and its variational equations. Not thread-safe (scratch).
+class ModelDarkOrbit {
+ public:
+  // Throws InvalidParameter("sites") unless sites >= 9 (check_dark_sites checks the parity).
+  ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites, bool mean_flow,
+                 ContactIntegrationOptions options = {});
+  ~ModelDarkOrbit();
+  int sites() const { return sites_; }
+  Eigen::Index positions() const { return positions_; }  // fields x sites
+  const ModelLattice& lattice() const { return lattice_; }
+  const ContactIntegrationOptions& options() const { return options_; }
+
+  // Integrates [q qdot] (2 positions() entries) from t0 to t1 with error control (RKF78).
+  void integrate(std::vector<double>& state, double t0, double t1) const;
+  // The same, and the tangent columns phi (2 positions() rows) along: Phi(t1) Phi(t0)^-1 phi.
+  void integrate(std::vector<double>& state, Eigen::MatrixXd& phi, double t0, double t1) const;
+  // [qdot, qddot] of state s.
+  void rhs(const double* s, double* ds) const;
+
+ private:
+  struct Steppers;
+  ModelLattice lattice_;
+  int sites_;
+  Eigen::Index positions_;
+  ContactIntegrationOptions options_;
+  std::unique_ptr<Steppers> steppers_;
+  mutable std::vector<double> times_, extended_;
+};
+
+class ModelDarkShooting : public DarkShootingProblem {
+ public:
+  ModelDarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites, bool mean_flow,
+                    ShootingMode mode, ContactIntegrationOptions options = {});
+  int sites() const { return orbit_.sites(); }
+  int unknowns() const override { return static_cast<int>(orbit_.positions()); }
+  Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const override { return q; }
+  ShootingMode mode() const { return mode_; }
+  bool mean_flow() const { return mean_flow_; }
+  const ModelDarkOrbit& orbit() const { return orbit_; }
+
+  void evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual, Eigen::MatrixXd* jacobian,
+                Eigen::MatrixXd* propagator = nullptr) const override;
+  void jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
+                            Eigen::MatrixXd& jacobian, FloquetResult* floquet) const override;
+  void measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const override;
+  // Monodromy matrix Phi(T_b) of the variational equations (2 positions() square).
+  Eigen::MatrixXd monodromy(const Eigen::VectorXd& z0, double omega_b) const;
+  // Advances an orbit state (for measures and evolution).
+  OrbitAdvance advance() const;
+
+ private:
+  ModelDarkOrbit orbit_;
+  bool mean_flow_;
+  ShootingMode mode_;
+};
+
+}  // namespace lrchain::sim::dark

@@ -1,0 +1,172 @@
+// Shooting Newton residuals, variational equations and Floquet multipliers of dark breathers of
+// any model file (model_shooting.hpp).
+#include "lrchain/sim/dark/model_shooting.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <numbers>
+#include <string>
+
+#include <boost/numeric/odeint/integrate/integrate_adaptive.hpp>
+#include <boost/numeric/odeint/stepper/generation.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/dark/floquet.hpp"
+
+namespace lrchain::sim::dark {
+
+namespace odeint = boost::numeric::odeint;
+using OrbitState = std::vector<double>;
+
+// The orbit's stepper (the extended system's is made per call: Odeint sizes a stepper's stage
+// storage once, and the number of tangent columns changes between calls).
+struct ModelDarkOrbit::Steppers {
+  odeint::runge_kutta_fehlberg78<OrbitState> orbit;
+};
+
+ModelDarkOrbit::ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites,
+                               bool mean_flow, ContactIntegrationOptions options)
+    : lattice_(kernels, std::move(parameters), std::size_t(std::max(sites, 2)), true,
+               mean_flow ? LatticeForm::strain : LatticeForm::displacement),
+      sites_(sites), positions_(Eigen::Index(lattice_.positions())), options_(options),
+      steppers_(std::make_unique<Steppers>()) {
+  if (sites < 9) throw InvalidParameter("sites", "must be >= 9, got " + std::to_string(sites));
+}
+
+ModelDarkOrbit::~ModelDarkOrbit() = default;
+
+void ModelDarkOrbit::rhs(const double* s, double* ds) const {
+  const std::size_t P = std::size_t(positions_);
+  std::copy(s + P, s + 2 * P, ds);
+  lattice_.acceleration(s, ds + P);
+}
+
+void ModelDarkOrbit::integrate(std::vector<double>& state, double t0, double t1) const {
+  auto system = [this](const OrbitState& s, OrbitState& ds, double) { rhs(s.data(), ds.data()); };
+  auto stepper = odeint::make_controlled(options_.abs_tol, options_.rel_tol, options_.max_step, steppers_->orbit);
+  const std::atomic<bool>* stop = options_.stop;
+  times_.clear();
+  odeint::integrate_adaptive(stepper, system, state, t0, t1, std::min(options_.initial_step, t1 - t0),
+                             [this, stop](const OrbitState&, double t) {
+                               if (stop && stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
+                               times_.push_back(t);
+                             });
+}
+
+// Orbit with error control first (its accepted step times), then orbit and tangents together on
+// exactly those steps: the tangents are the derivative of the discrete flow.
+void ModelDarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi, double t0, double t1) const {
+  const std::size_t P = std::size_t(positions_), n = 2 * P, columns = std::size_t(phi.cols());
+  if (phi.rows() != Eigen::Index(n)) throw std::invalid_argument("ModelDarkOrbit: phi must have 2 positions() rows");
+  std::vector<double> orbit_only = state;
+  integrate(orbit_only, t0, t1);
+  extended_.resize(n * (1 + columns));
+  std::copy(state.begin(), state.end(), extended_.begin());
+  for (std::size_t j = 0; j < columns; ++j)
+    for (std::size_t i = 0; i < n; ++i) extended_[n * (1 + j) + i] = phi(Eigen::Index(i), Eigen::Index(j));
+  auto system = [this, P, n, columns](const OrbitState& s, OrbitState& ds, double) {
+    rhs(s.data(), ds.data());
+    for (std::size_t j = 1; j <= columns; ++j) {
+      const double* column = s.data() + n * j;
+      double* out = ds.data() + n * j;
+      std::copy(column + P, column + n, out);
+      lattice_.jacobian_action(s.data(), column, out + P);
+    }
+  };
+  const std::vector<double> times = times_;
+  odeint::runge_kutta_fehlberg78<OrbitState> stepper;
+  for (std::size_t k = 0; k + 1 < times.size(); ++k) {
+    if (options_.stop && options_.stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
+    stepper.do_step(system, extended_, times[k], times[k + 1] - times[k]);
+  }
+  std::copy(extended_.begin(), extended_.begin() + Eigen::Index(n), state.begin());
+  for (std::size_t j = 0; j < columns; ++j)
+    for (std::size_t i = 0; i < n; ++i) phi(Eigen::Index(i), Eigen::Index(j)) = extended_[n * (1 + j) + i];
+}
+
+ModelDarkShooting::ModelDarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters,
+                                     int sites, bool mean_flow, ShootingMode mode, ContactIntegrationOptions options)
+    : orbit_(kernels, std::move(parameters), sites, mean_flow, options), mean_flow_(mean_flow), mode_(mode) {}
+
+OrbitAdvance ModelDarkShooting::advance() const {
+  return [this](std::vector<double>& s, double t0, double t1) { orbit_.integrate(s, t0, t1); };
+}
+
+// Residual rows (reversible: Zdot(T_b/2); full: Z(T_b) - Z(0), Zdot(T_b)), then the C_x row of
+// translation-invariant models; Jacobian columns d/dq and d/domega_b (state(tau) moves with
+// tau = T_b/2 or T_b: d state / d omega_b = -f(state) tau / omega_b).
+void ModelDarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
+                                 Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator) const {
+  using Eigen::Index;
+  const Index P = orbit_.positions(), n = 2 * P;
+  const double period = 2.0 * std::numbers::pi / omega_b;
+  std::vector<double> state(static_cast<std::size_t>(n), 0.0), f(static_cast<std::size_t>(n), 0.0);
+  for (Index i = 0; i < P; ++i) state[std::size_t(i)] = q(i);
+  const bool jac = jacobian != nullptr;
+  Eigen::MatrixXd phi;
+  if (jac) {
+    phi = Eigen::MatrixXd::Zero(n, P);
+    phi.topRows(P).setIdentity();
+  }
+  auto advance = [&](double t0, double t1) {
+    if (jac) orbit_.integrate(state, phi, t0, t1);
+    else orbit_.integrate(state, t0, t1);
+  };
+  const Index rows = (mode_ == ShootingMode::full ? n : P) + (mean_flow_ ? 1 : 0);
+  residual.resize(rows);
+  if (jac) jacobian->setZero(rows, P + 1);
+  advance(0.0, 0.5 * period);
+  double half_x0 = state[0], half_x0_dot = state[std::size_t(P)];
+  Eigen::RowVectorXd half_row;
+  if (jac) half_row = phi.row(0);
+  double tau = 0.5 * period;
+  if (mode_ == ShootingMode::full) {
+    advance(0.5 * period, period);
+    tau = period;
+    for (Index i = 0; i < P; ++i) residual(i) = state[std::size_t(i)] - q(i);
+  }
+  const Index velocity_rows = mode_ == ShootingMode::full ? P : 0;
+  for (Index i = 0; i < P; ++i) residual(velocity_rows + i) = state[std::size_t(P + i)];
+  if (jac) {
+    orbit_.rhs(state.data(), f.data());
+    const Eigen::Map<const Eigen::VectorXd> fv(f.data(), n);
+    if (mode_ == ShootingMode::full) {
+      jacobian->topLeftCorner(P, P) = phi.topRows(P) - Eigen::MatrixXd::Identity(P, P);
+      jacobian->col(P).head(P) = fv.head(P) * (-tau / omega_b);
+    }
+    jacobian->block(velocity_rows, 0, P, P) = phi.bottomRows(P);
+    jacobian->col(P).segment(velocity_rows, P) = fv.tail(P) * (-tau / omega_b);
+  }
+  if (mean_flow_) {
+    residual(rows - 1) = 0.5 * (q(0) + half_x0);  // eq:center at the far site
+    if (jac) {
+      jacobian->row(rows - 1).head(P) = 0.5 * half_row;
+      (*jacobian)(rows - 1, 0) += 0.5;
+      (*jacobian)(rows - 1, P) = 0.5 * half_x0_dot * (-0.5 * period / omega_b);
+    }
+  }
+  if (propagator) *propagator = monodromy(q, omega_b);
+}
+
+Eigen::MatrixXd ModelDarkShooting::monodromy(const Eigen::VectorXd& z0, double omega_b) const {
+  const Eigen::Index P = orbit_.positions(), n = 2 * P;
+  std::vector<double> state(std::size_t(n), 0.0);
+  for (Eigen::Index i = 0; i < P; ++i) state[std::size_t(i)] = z0(i);
+  Eigen::MatrixXd phi = Eigen::MatrixXd::Identity(n, n);
+  orbit_.integrate(state, phi, 0.0, 2.0 * std::numbers::pi / omega_b);
+  return phi;
+}
+
+void ModelDarkShooting::jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
+                                             Eigen::MatrixXd& jacobian, FloquetResult* floquet) const {
+  evaluate(q, omega_b, residual, &jacobian);
+  if (floquet) *floquet = floquet_from_monodromy(monodromy(q, omega_b));
+}
+
+void ModelDarkShooting::measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const {
+  out = measure_dark_orbit(advance(), z0, orbit_.sites(), omega_b);
+}
+
+}  // namespace lrchain::sim::dark

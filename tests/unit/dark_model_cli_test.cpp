@@ -1,0 +1,83 @@
+// `lrchain dark ... --model`: bad input exits 2 with one line naming the option (or the edges
+// checked) and writes nothing; a small klein_gordon solve prints the model's provenance and
+// writes its profile. The numerical checks are validation tests (dark_model_test.cpp).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "../support/run_lrchain.hpp"
+
+namespace fs = std::filesystem;
+using lrchain::test::run_lrchain;
+
+namespace {
+
+const fs::path source_dir = LRCHAIN_SOURCE_DIR;
+
+void check_refused(const std::vector<std::string>& args, const std::string& needle) {
+  const fs::path out = fs::temp_directory_path() / "lrchain-dark-model-refused";
+  fs::remove_all(out);
+  std::vector<std::string> argv = args;
+  argv.insert(argv.end(), {"--quiet", "--out", out.string()});
+  const auto r = run_lrchain(argv, source_dir);
+  INFO(r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find(needle) != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(r.out.empty());
+  CHECK(!fs::exists(out));
+}
+
+}  // namespace
+
+TEST_CASE("dark --model: bad input exits 2 with one line, nothing written" * doctest::test_suite("fast")) {
+  // fput: focusing at theta = pi (omega'' h < 0), no real frequency at theta = 0 on its acoustic branch.
+  check_refused({"dark", "solve", "--model", "models/fput.toml", "--omega-b", "1.9"},
+                "fput has no defocusing band edge for dark breathers (edges checked: acoustic at theta = pi: focusing");
+  check_refused({"dark", "solve", "--model", "models/klein_gordon.toml", "--omega-b", "1.1"}, "theta = 0");
+  check_refused({"dark", "solve", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b", "1.19"},
+                "omega-b");
+  check_refused({"dark", "solve", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b", "1.17",
+                 "--sites", "60"}, "sites");
+  check_refused({"dark", "floquet", "--model", "models/diatomic_chain.toml", "--omega-b", "1.72", "--sites", "41"},
+                "even");
+  check_refused({"dark", "solve", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b", "1.17",
+                 "--branch", "optical"}, "branch");
+  check_refused({"dark", "solve", "--model", "models/klein_gordon.toml", "--set", "bb=1", "--omega-b", "1.17"}, "bb");
+  check_refused({"dark", "solve", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b", "1.17",
+                 "--rho", "1"}, "--rho");
+  check_refused({"dark", "floquet", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b", "1.17",
+                 "--full-monodromy"}, "--full-monodromy");
+  check_refused({"dark", "evolve", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b", "1.17",
+                 "--t-end", "1"}, "t-end");
+  check_refused({"dark", "continue", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b", "1.17",
+                 "--omega-min", "1.2"}, "omega-min");
+  check_refused({"dark", "solve", "--set", "rho=1", "--omega-b", "2.44"}, "--model");
+  check_refused({"dark", "solve", "--omega-b", "2.44", "--branch", "middle"}, "branch");
+}
+
+TEST_CASE("dark --model: a klein_gordon breather with its model provenance and profile" * doctest::test_suite("fast")) {
+  const fs::path out = fs::temp_directory_path() / "lrchain-dark-model-solve";
+  fs::remove_all(out);
+  const auto r = run_lrchain({"dark", "solve", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b",
+                              "1.17", "--sites", "31", "--quiet", "--figure-format", "png", "--out", out.string()},
+                             source_dir);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["model"]["name"] == "klein_gordon");
+  CHECK(j["model"]["parameters"]["b"] == doctest::Approx(-0.5));
+  CHECK(j["model"]["file_hash"].get<std::string>().size() == 18);
+  CHECK(j["branch"] == "branch0");
+  CHECK(j["lattice_form"] == "displacement");
+  CHECK(j["lambda"].is_null());
+  // omega(pi) = sqrt(w0^2 + 4 C) = sqrt(1.4) for the defaults w0 = 1, C = 1/10.
+  CHECK(j["omega_edge"].get<double>() == doctest::Approx(std::sqrt(1.4)).epsilon(1e-12));
+  CHECK(j["newton_converged"] == true);
+  CHECK(j["measures"]["E_b"].get<double>() < 1e-10);
+  CHECK(fs::exists(out / "profile.csv"));
+  fs::remove_all(out);
+}
