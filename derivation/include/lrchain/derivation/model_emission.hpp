@@ -17,6 +17,14 @@ std::string model_evaluator_functions(const ModelDerivation& m, const Symbols& s
 // outputs are named p[i], q[i], D1, sigma, omega, w[k], out[k].
 std::vector<EmittedFunction> model_evaluator_definitions(const ModelDerivation& m, const Symbols& s);
 
+// Worst cancellation sum |terms| / |sum| over the polynomial factors of the emitted NLS outputs (50
+// digits), on every real branch at theta / pi = 0.001, 0.01, 0.3, 0.7, 0.99, 0.999 and the derivation's
+// parameter values: the factor by which rounding errors of the evaluation are amplified.
+double evaluator_cancellation(const ModelDerivation& m, const Symbols& s);
+
+// Arithmetic type of the emitted nls() for a measured cancellation: "long double" or "__float128".
+std::string evaluator_precision(double cancellation);
+
 // definition(): the lrchain::ModelDefinition of the model (names, ranges, branches, evaluators).
 std::string model_definition_function(const ModelDerivation& m);
 
