@@ -266,9 +266,12 @@ std::vector<EmittedFunction> model_evaluator_definitions(const ModelDerivation& 
   return {intermediates_function(m), dispersion_function(m, s), nls_function(m, s, "double")};
 }
 
-std::string model_evaluator_functions(const ModelDerivation& m, const Symbols& s) {
+std::string model_evaluator_functions(const ModelDerivation& m, const Symbols& s, const std::string& arithmetic) {
+  if (arithmetic == "double")
+    return emit_function(intermediates_function(m)) + "\n" + emit_function(dispersion_function(m, s)) + "\n" +
+           emit_function(nls_function(m, s, "double"));
   const double cancellation = evaluator_cancellation(m, s);
-  const std::string real_type = evaluator_precision(cancellation);
+  const std::string real_type = arithmetic.empty() ? evaluator_precision(cancellation) : arithmetic;
   std::string text = emit_function(intermediates_function(m)) + "\n" + emit_function(dispersion_function(m, s)) + "\n";
   if (real_type != "double")
     text += emit_function(intermediates_extended_function(m)) + "\n" +
@@ -306,7 +309,7 @@ std::string model_definition_function(const ModelDerivation& m) {
   return out.str();
 }
 
-std::string model_header(const ModelDerivation& m, const Symbols& s) {
+std::string model_header(const ModelDerivation& m, const Symbols& s, const std::string& arithmetic) {
   std::ostringstream out;
   out << "// GENERATED FILE - DO NOT EDIT.\n"
          "// Written by lrchain-derive from models/" << m.file.name << ".toml (FNV-1a 64 " << hash_text(m.file.hash)
@@ -315,7 +318,7 @@ std::string model_header(const ModelDerivation& m, const Symbols& s) {
          "// Regenerate with `cmake --build build --target regenerate`.\n"
          "#pragma once\n\n#include <cmath>\n\n#include \"lrchain/model.hpp\"\n\n"
          "namespace lrchain::generated::model_" << m.file.name << " {\n\n"
-      << model_evaluator_functions(m, s) << "\n" << model_definition_function(m) << "\n"
+      << model_evaluator_functions(m, s, arithmetic) << "\n" << model_definition_function(m) << "\n"
       << "}  // namespace lrchain::generated::model_" << m.file.name << "\n";
   return out.str();
 }
