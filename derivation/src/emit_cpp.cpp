@@ -184,6 +184,9 @@ NodePtr factored_tree(const ex& e, const Names* names) {
 // C++ text of canonical trees; subexpressions used more than once become `const double tN`.
 class Printer {
  public:
+  // Temporaries and fractions in `real_type` ("double", or the alias `real` of an extended type).
+  explicit Printer(std::string real_type) : real_type_(std::move(real_type)) {}
+
   void count(const NodePtr& e) {
     if (e->kind == Node::number || e->kind == Node::symbol) return;
     if (++uses_[e->key] > 1) return;  // children already counted
@@ -197,7 +200,7 @@ class Printer {
     std::string text = print_node(*e);
     if (uses_[e->key] > 1) {
       const std::string name = "t" + std::to_string(temps_.size());
-      body_ << "  const double " << name << " = " << text << ";\n";
+      body_ << "  const " << real_type_ << " " << name << " = " << text << ";\n";
       temps_[e->key] = name;
       return name;
     }
@@ -207,10 +210,12 @@ class Printer {
   std::string body() const { return body_.str(); }
 
  private:
-  static std::string number(const numeric& n) {
+  // Integers exactly; a fraction divided in the function's arithmetic type (1/3 is not a double).
+  std::string number(const numeric& n) const {
     std::ostringstream os;
     if (n.is_integer()) os << n << ".0";
-    else os << "(" << n.numer() << ".0 / " << n.denom() << ".0)";
+    else if (real_type_ == "double") os << "(" << n.numer() << ".0 / " << n.denom() << ".0)";
+    else os << "(real(" << n.numer() << ".0) / " << n.denom() << ".0)";
     std::string s = os.str();
     return n.is_negative() ? "(" + s + ")" : s;
   }
@@ -268,6 +273,7 @@ class Printer {
     return "(1.0 / " + power_text(e.children[0], -e.exponent) + ")";
   }
 
+  std::string real_type_;
   std::map<std::string, int> uses_;
   std::map<std::string, std::string> temps_;
   std::ostringstream body_;
@@ -275,18 +281,18 @@ class Printer {
 
 // Sum of the absolute values of the terms of e's expanded numerator over |denominator|: the size
 // of the terms that cancel in e (a scale for deciding that e vanishes in double precision).
-NodePtr term_scale_tree(const ex& e, const Names* names) {
+NodePtr term_scale_tree(const ex& e, const Names* names, const std::string& abs_function) {
   const ex nd = normal(e).numer_denom();
   const ex numerator = expand(nd.op(0));
   std::vector<NodePtr> terms;
   if (is_a<GiNaC::add>(numerator)) {
-    for (const auto& t : numerator) terms.push_back(make_call("std::abs", {convert(t, names)}));
+    for (const auto& t : numerator) terms.push_back(make_call(abs_function, {convert(t, names)}));
   } else {
-    terms.push_back(make_call("std::abs", {convert(numerator, names)}));
+    terms.push_back(make_call(abs_function, {convert(numerator, names)}));
   }
   NodePtr sum = terms.size() == 1 ? terms.front() : make_nary(Node::sum, std::move(terms));
   if (nd.op(1).is_equal(1)) return sum;
-  return make_nary(Node::product, {sum, make_power(make_call("std::abs", {factored_tree(nd.op(1), names)}), -1)});
+  return make_nary(Node::product, {sum, make_power(make_call(abs_function, {factored_tree(nd.op(1), names)}), -1)});
 }
 
 }  // namespace
@@ -297,16 +303,20 @@ std::string emit_function(const EmittedFunction& f) {
   // Struct result: outputs are fields r.NAME. Without a result type the outputs are written to the
   // lvalues named (e.g. out[3]) by a void function.
   const bool returns_struct = !f.result_type.empty();
-  const auto lvalue = [&](const std::string& name) { return returns_struct ? "r." + name : name; };
+  const auto lvalue = [&](const std::string& name) {
+    if (returns_struct) return "r." + name;
+    if (!f.local_outputs.empty() && name.rfind("out[", 0) == 0) return f.local_outputs + name.substr(3);
+    return name;
+  };
   Names names;
   for (const auto& [sym, name] : f.inputs) names[sym] = name;
   for (const auto& [name, sym] : f.output_symbols) names[sym] = lvalue(name);
   std::vector<NodePtr> forms;
   for (const auto& [name, e] : f.outputs)
-    forms.push_back(f.term_scales.count(name) ? term_scale_tree(e, &names)
+    forms.push_back(f.term_scales.count(name) ? term_scale_tree(e, &names, f.abs_function)
                     : f.unfactored.count(name) ? convert(expand(e), &names)
                                                : factored_tree(e, &names));
-  Printer printer;
+  Printer printer(f.real_type == "double" ? "double" : "real");
   for (const auto& e : forms) printer.count(e);
   std::ostringstream out;
   out << "// " << f.comment << "\n";
@@ -326,6 +336,7 @@ std::string emit_function(const EmittedFunction& f) {
     collected = body;
     out << "  " << lvalue(f.outputs[i].first) << " = " << rhs << ";\n";
   }
+  out << f.epilogue;
   if (returns_struct) out << "  return r;\n";
   out << "}\n";
   return out.str();

@@ -62,7 +62,9 @@ bool write_file(const fs::path& target, const std::string& text) {
 
 // Derives every *.toml model in `dir` at its default parameters and adds its evaluator header
 // and the list header to `files`; false when a model's checks fail.
-bool derive_model_files(const std::string& dir, std::vector<std::pair<std::string, std::string>>& files, bool quiet) {
+// Models named in `double_models` get evaluators in double arithmetic (faster, not held to 1e-11).
+bool derive_model_files(const std::string& dir, const std::vector<std::string>& double_models,
+                        std::vector<std::pair<std::string, std::string>>& files, bool quiet) {
   std::vector<fs::path> paths;
   for (const auto& entry : fs::directory_iterator(dir))
     if (entry.path().extension() == ".toml") paths.push_back(entry.path());
@@ -79,7 +81,9 @@ bool derive_model_files(const std::string& dir, std::vector<std::pair<std::strin
                 << m->derive_seconds << " s, checks " << m->check_seconds << " s)\n";
     passed &= m->passed();
     names.push_back(m->file.name);
-    files.emplace_back("model_" + m->file.name + ".hpp", lrchain::derivation::model_header(*m, symbols));
+    const bool in_double = std::find(double_models.begin(), double_models.end(), m->file.name) != double_models.end();
+    files.emplace_back("model_" + m->file.name + ".hpp",
+                       lrchain::derivation::model_header(*m, symbols, in_double ? "double" : ""));
   }
   std::sort(names.begin(), names.end());
   files.emplace_back("shipped_models.hpp", lrchain::derivation::shipped_models_header(names));
@@ -90,17 +94,27 @@ bool derive_model_files(const std::string& dir, std::vector<std::pair<std::strin
 
 int main(int argc, char** argv) {
   std::string out_dir, models_dir;
+  std::vector<std::string> double_models;
   bool quiet = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--out") && i + 1 < argc) out_dir = argv[++i];
     else if (!std::strcmp(argv[i], "--models") && i + 1 < argc) models_dir = argv[++i];
     else if (!std::strcmp(argv[i], "--quiet")) quiet = true;
+    else if (!std::strcmp(argv[i], "--double-evaluators") && i + 1 < argc) {
+      std::string list = argv[++i];
+      for (std::size_t start = 0, comma; start <= list.size(); start = comma + 1) {
+        comma = std::min(list.find(',', start), list.size());
+        if (comma > start) double_models.push_back(list.substr(start, comma - start));
+      }
+    }
     else {
-      std::cerr << "usage: lrchain-derive [--out DIR] [--models MODELS_DIR] [--quiet]\n"
+      std::cerr << "usage: lrchain-derive [--out DIR] [--models MODELS_DIR] [--double-evaluators NAME,...] [--quiet]\n"
                    "  Derives the NLS coefficients of the resonant and homogeneous chains, checks them\n"
                    "  against the paper, and writes DIR/nls_coefficients.hpp (default: print report only).\n"
                    "  With --models, also derives every MODELS_DIR/*.toml (checks must pass) and writes\n"
-                   "  DIR/model_<name>.hpp and DIR/shipped_models.hpp.\n"
+                   "  DIR/model_<name>.hpp and DIR/shipped_models.hpp. A model's NLS evaluator computes in\n"
+                   "  long double or __float128 (chosen by the cancellation measured in its expressions),\n"
+                   "  or in double for the models named in --double-evaluators (faster, less accurate).\n"
                    "  Exit codes: 0 all checks passed, 1 a check failed or a file could not be written,\n"
                    "  2 bad arguments or --out (nothing written).\n";
       return exit_invalid_input;
@@ -124,7 +138,7 @@ int main(int argc, char** argv) {
   std::vector<std::pair<std::string, std::string>> files{{"nls_coefficients.hpp", header}};
   if (!models_dir.empty()) {
     try {
-      all_passed &= derive_model_files(models_dir, files, quiet);
+      all_passed &= derive_model_files(models_dir, double_models, files, quiet);
     } catch (const lrchain::InputError& e) {
       std::cerr << "lrchain-derive: " << e.what() << "\n";
       return exit_invalid_input;

@@ -63,7 +63,7 @@ TEST_CASE("re-running lrchain-derive reproduces every committed generated header
   std::filesystem::remove_all(tmp);
   const auto source = std::filesystem::path(LRCHAIN_SOURCE_DIR);
   REQUIRE(lrchain::test::run_command({LRCHAIN_DERIVE, "--quiet", "--out", tmp.string(), "--models",
-                                      (source / "models").string()})
+                                      (source / "models").string(), "--double-evaluators", LRCHAIN_DOUBLE_EVALUATOR_MODELS})
               .exit_code == 0);
   const auto committed = source / "lib/include/lrchain/generated";
   int compared = 0;

@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "lrchain/derivation/evaluate.hpp"
 #include "lrchain/derivation/model_emission.hpp"
 
 namespace lrchain {
@@ -53,6 +54,14 @@ GinacModelEvaluators::Function prepare(const derivation::EmittedFunction& f) {
   return out;
 }
 
+// Significant digits of the nls() evaluation: more than the compiled path's long double or
+// __float128, so the fallback is at least as accurate.
+constexpr int kNlsDigits = 40;
+
+// An exact double as a kNlsDigits-digit number (a double-float numeric would keep the whole
+// computation in double: CLN rounds mixed precisions to the smaller one).
+numeric precise(double x) { return ex_to<numeric>(evalf(derivation::exact(x))); }
+
 // A real double from an evaluated expression; NaN if it did not evaluate to a number.
 double to_double(const ex& e) {
   const ex v = e.evalf();
@@ -95,20 +104,31 @@ void GinacModelEvaluators::run(const Function& f, const Arrays& a) const {
   const std::lock_guard<std::mutex> lock(mutex_);
   exmap values;
   for (const auto& [symbol, slot] : f.inputs) values[symbol] = numeric(read(slot, a));
+  evaluate_outputs(f, values, a, false);
+}
+
+// Each output evaluated by evalf with `values` substituted; later outputs see earlier ones at
+// full precision when `keep_precision`, else rounded to double.
+void GinacModelEvaluators::evaluate_outputs(const Function& f, exmap& values, const Arrays& a, bool keep_precision) const {
   for (const auto& o : f.outputs) {
+    ex precise_value;
+    bool evaluated = false;
     double v = 0;
     try {
       if (o.term_scale) {
         for (const auto& t : o.terms) v += std::abs(to_double(t.subs(values)));
         if (!o.denominator.is_equal(1)) v /= std::abs(to_double(o.denominator.subs(values)));
       } else {
-        v = to_double(o.value.subs(values));
+        precise_value = evalf(o.value.subs(values));
+        v = to_double(precise_value);
+        evaluated = is_a<numeric>(precise_value);
       }
     } catch (const std::exception&) {  // division by zero, pole of a function
       v = std::numeric_limits<double>::quiet_NaN();
     }
     write(o.slot, a) = v;
-    if (!o.symbol.is_zero()) values[o.symbol] = numeric(v);
+    if (!o.symbol.is_zero())
+      values[o.symbol] = keep_precision && evaluated ? precise_value : ex(numeric(v));
   }
 }
 
@@ -129,14 +149,55 @@ void GinacModelEvaluators::dispersion(double D1, double sigma, const double* q, 
   run(dispersion_, a);
 }
 
+// As the emitted extended-precision nls (model_emission.cpp): the intermediates recomputed from the
+// parameters, (D1, sigma) rescaled so that sin^2 + cos^2 = 1 for the half angle, omega^2 polished
+// on det M = 0, then every output at kNlsDigits digits.
 void GinacModelEvaluators::nls(double D1, double sigma, double omega, const double* q, double* out) const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  struct DigitsScope {  // restores GiNaC's global precision on every exit
+    long saved = Digits;
+    ~DigitsScope() { Digits = saved; }
+  } scope;
+  Digits = kNlsDigits;
+  exmap parameters;
+  for (const auto& [symbol, slot] : intermediates_.inputs) parameters[symbol] = precise(q[slot.index]);
+  std::vector<ex> q_values(parameter_count_ + intermediates_.outputs.size());
+  for (std::size_t i = 0; i < parameter_count_; ++i) q_values[i] = precise(q[i]);
+  for (const auto& o : intermediates_.outputs) q_values.at(std::size_t(o.slot.index)) = evalf(o.value.subs(parameters));
+  numeric d1 = precise(D1), s = precise(sigma);
+  if (D1 > 0) {
+    const numeric norm = d1 / 4 + s * s / d1;
+    d1 = d1 / norm;
+    s = s / norm;
+  }
+  exmap values;
+  for (const auto& [symbol, slot] : nls_.inputs) {
+    if (slot.array == 'q') values[symbol] = q_values.at(std::size_t(slot.index));
+    else if (slot.array == 'D') values[symbol] = d1;
+    else if (slot.array == 's') values[symbol] = s;
+  }
+  std::vector<numeric> w;
+  for (const auto& o : dispersion_.outputs) {
+    const ex c = evalf(o.value.subs(values));
+    w.push_back(is_a<numeric>(c) ? ex_to<numeric>(c).real() : numeric(0));
+  }
+  numeric w2 = precise(omega) * precise(omega);
+  for (int iteration = 0; iteration < 4; ++iteration) {
+    numeric p = 0, dp = 0;
+    for (std::size_t k = w.size(); k-- > 0;) {
+      dp = dp * w2 + p;
+      p = p * w2 + w[k];
+    }
+    if (dp.is_zero()) break;
+    const numeric step = p / dp;
+    if (abs(step) > numeric(1, 1000000) * abs(w2)) break;
+    w2 -= step;
+  }
+  for (const auto& [symbol, slot] : nls_.inputs)
+    if (slot.array == 'm') values[symbol] = w2.is_positive() ? ex_to<numeric>(evalf(sqrt(w2))) : precise(omega);
   Arrays a;
-  a.q_in = q;
-  a.D1 = D1;
-  a.sigma = sigma;
-  a.omega = omega;
   a.out = out;
-  run(nls_, a);
+  evaluate_outputs(nls_, values, a, true);
 }
 
 }  // namespace lrchain

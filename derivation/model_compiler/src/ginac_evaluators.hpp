@@ -1,7 +1,8 @@
 #pragma once
-// A derived model's evaluators computed by GiNaC with double-precision numbers (evalf on IEEE
-// doubles): the fallback for a user model when no C++ compiler is available. The same
-// expressions as the emitted C++ (model_evaluator_definitions), substituted and evaluated per call.
+// A derived model's evaluators computed by GiNaC (evalf): the fallback for a user model when no
+// C++ compiler is available. The same expressions as the emitted C++ (model_evaluator_definitions),
+// substituted and evaluated per call; nls() from consistent inputs at 40 digits, as the emitted
+// extended-precision nls.
 #include <ginac/ginac.h>
 
 #include <mutex>
@@ -49,6 +50,7 @@ class GinacModelEvaluators final : public ModelEvaluatorObject {
 
  private:
   void run(const Function& f, const Arrays& a) const;
+  void evaluate_outputs(const Function& f, GiNaC::exmap& values, const Arrays& a, bool keep_precision) const;
 
   Function intermediates_, dispersion_, nls_;
   std::size_t parameter_count_ = 0;

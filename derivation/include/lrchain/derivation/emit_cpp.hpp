@@ -25,6 +25,12 @@ struct EmittedFunction {
   std::string prologue;                               // statements before the outputs
   std::set<std::string> unfactored;                   // outputs printed expanded (no normal/factor)
   std::set<std::string> term_scales;                  // outputs printed as sum |terms| / |denominator|
+  std::string real_type = "double";                   // arithmetic type of temporaries and fractions
+                                                      // (else the function defines `using real = ...`)
+  std::string local_outputs;                          // non-empty: outputs out[k] are held in this local
+                                                      // array (declared in the prologue) instead
+  std::string abs_function = "std::abs";              // absolute value used by term_scales
+  std::string epilogue;                               // statements after the outputs
 };
 
 // C++ source for one inline function filling `result_type` (fields = output names).

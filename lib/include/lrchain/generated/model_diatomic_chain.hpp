@@ -31,50 +31,102 @@ inline void dispersion(double D1, double sigma, const double* q, double* w) noex
   w[2] = 4.0 * q[2];
 }
 
-// NLS coefficients at omega on a branch of det M = 0 (outputs in lrchain::ModelOutput order).
-inline void nls(double D1, double sigma, double omega, const double* q, double* out) noexcept {
+// intermediates() in long double.
+inline void intermediates_extended(const long double* p, long double* q) noexcept {
+  using real [[maybe_unused]] = long double;
+  q[0] = p[0];
+  q[1] = p[1];
+  q[2] = p[2];
+  const real t0 = std::pow(p[1], p[0]);
+  q[3] = p[0] * t0 / (p[1]);
+  const real t1 = (p[0] * p[0]);
+  q[4] = (-((real(1.0) / 2.0) * t1 * t0 / ((p[1] * p[1]))) + (real(1.0) / 2.0) * p[0] * t0 / ((p[1] * p[1])));
+  q[5] = (-((real(1.0) / 2.0) * t1 * t0 / ((p[1] * p[1] * p[1]))) + (real(1.0) / 3.0) * p[0] * t0 / ((p[1] * p[1] * p[1])) + (real(1.0) / 6.0) * (p[0] * p[0] * p[0]) * t0 / ((p[1] * p[1] * p[1])));
+}
+
+// Coefficients of det M as dispersion(), in __float128 arithmetic.
+inline void dispersion_extended(__float128 D1, __float128 sigma, const __float128* Q, __float128* w) noexcept {
+  using real [[maybe_unused]] = __float128;
   (void)sigma;
-  (void)q;
-  const double t0 = (D1 * D1);
-  const double t1 = (q[3] * q[3]);
-  const double t2 = -(t0 * t1);
-  const double t3 = (omega * omega * omega * omega);
-  const double t4 = (sigma * sigma);
-  const double t5 = -(4.0 * t1 * t4);
-  const double t6 = (omega * omega);
-  const double t7 = 8.0 * t1 * D1;
-  out[0] = 4.0 * (t6 - (2.0 * q[3])) * t1 * sigma / ((t2 - (16.0 * t1) - (16.0 * t1 * q[2]) - (4.0 * t3 * q[2]) + t5 + 16.0 * t6 * q[2] * q[3] + t7) * omega);
-  const double t8 = t1 * D1;
-  const double t9 = (-(D1) + 4.0);
-  out[1] = -(t9 * t1 / ((-(t3 * q[2]) - (4.0 * t1) - (4.0 * t1 * q[2]) + t8 + 4.0 * t6 * q[2] * q[3]) * omega));
-  const double t10 = (out[0] * out[0]);
-  const double t11 = (q[3] * q[3] * q[3]);
-  const double t12 = (q[3] * q[3] * q[3] * q[3]);
-  const double t13 = (q[2] * q[2]);
-  const double t14 = (omega * omega * omega * omega * omega * omega);
-  out[2] = (1.0 / 2.0) * (-(t3 * t1 * D1 * q[2]) - (16.0 * t10 * t11) - (16.0 * t10 * t11 * q[2]) - (2.0 * t6 * t10 * t1 * D1 * q[2]) - (2.0 * t12 * D1) - (24.0 * t6 * t10 * t13 * t1) - (4.0 * t3 * t10 * q[2] * q[3]) - (6.0 * t14 * t10 * t13) - (8.0 * t6 * t11) - (8.0 * t6 * t11 * q[2]) - (8.0 * (omega * omega * omega) * t1 * out[0] * q[2] * sigma) + 16.0 * t11 * omega * out[0] * q[2] * sigma + 2.0 * t6 * t11 * D1 + 2.0 * t6 * t11 * D1 * q[2] + 24.0 * t6 * t10 * t1 * q[2] + 24.0 * t3 * t10 * t13 * q[3] + 4.0 * t3 * t1 * q[2] + 4.0 * t10 * t11 * D1 + 8.0 * t12) * out[1] / ((-(t6 * q[2]) + 2.0 * q[3]) * t9 * (q[3] * q[3]));
-  const double t15 = (t3 - (t6 * D1 * q[3]) + t8);
-  out[3] = -(t15 * out[1] * q[4] / (t9 * (q[3] * q[3])));
-  const double t16 = (D1 * D1 * D1 * D1);
-  const double t17 = (D1 * D1 * D1);
-  out[4] = -((1.0 / 4.0) * (-(t16 * t1) - (16.0 * t1 * t4) - (24.0 * t0 * t1) - (32.0 * t6 * q[2] * q[3]) - (32.0 * t6 * q[3]) - (4.0 * t0 * t1 * t4) + 16.0 * t1 * t4 * D1 + 32.0 * t1 * D1 + 64.0 * t3 * q[2] + 8.0 * t17 * t1));
-  const double t18 = -(q[3]);
-  const double t19 = 2.0 * t10;
-  const double t20 = 2.0 * t10 * q[2];
-  out[5] = (1.0 / 2.0) * (t18 + t19 + t20);
-  const double t21 = (q[4] * q[4]);
-  const double t22 = (q[3] * q[3] * q[3] * q[3] * q[3] * q[3]);
-  const double t23 = (omega * omega * omega * omega * omega * omega * omega * omega);
-  const double t24 = (omega * omega * omega * omega * omega * omega * omega * omega * omega * omega);
-  const double t25 = (q[3] * q[3] * q[3] * q[3] * q[3]);
-  const double t26 = (omega * omega * omega * omega * omega * omega * omega * omega * omega * omega * omega * omega);
-  out[6] = (-(12.0 * t17 * t3 * t11 * t21) - (12.0 * t17 * t22 * q[5]) - (144.0 * t23 * t1 * D1 * q[2] * q[5]) - (16.0 * t0 * t23 * t21 * q[2] * q[3]) - (16.0 * t24 * t21 * D1 * q[2]) - (2.0 * t0 * t23 * t21 * q[3]) - (2.0 * t16 * t3 * t11 * t21) - (2.0 * t16 * t25 * t21) - (32.0 * t17 * t6 * t12 * t21) - (48.0 * t0 * t23 * t1 * q[2] * q[5]) - (48.0 * t26 * q[2] * q[5]) - (6.0 * t17 * t3 * t12 * q[5]) - (6.0 * t17 * t14 * t11 * q[5]) - (6.0 * t16 * t6 * t25 * q[5]) - (60.0 * t23 * t1 * D1 * q[5]) - (64.0 * t14 * t1 * t21 * D1) - (64.0 * t14 * t1 * t21 * D1 * q[2]) - (72.0 * t0 * t3 * t12 * q[5]) - (96.0 * t0 * t3 * t12 * q[2] * q[5]) + 120.0 * t0 * t14 * t11 * q[2] * q[5] + 16.0 * t0 * t14 * t1 * t21 * q[2] + 24.0 * t0 * t6 * t25 * q[2] * q[5] + 24.0 * t0 * t6 * t25 * q[5] + 24.0 * t17 * t6 * t25 * q[5] + 24.0 * t24 * q[2] * q[3] * q[5] + 24.0 * t24 * q[3] * q[5] + 3.0 * t0 * t23 * t1 * q[5] + 3.0 * t16 * t3 * t12 * q[5] + 3.0 * t16 * t22 * q[5] + 4.0 * t0 * t24 * t21 * q[2] + 4.0 * t17 * t14 * t1 * t21 + 48.0 * t0 * t14 * t11 * q[5] + 48.0 * t14 * t11 * D1 * q[2] * q[5] + 48.0 * t14 * t11 * D1 * q[5] + 64.0 * t23 * t21 * D1 * q[2] * q[3] + 8.0 * t17 * t25 * t21 + 8.0 * t16 * t6 * t12 * t21 + 8.0 * t23 * t21 * D1 * q[3] + 80.0 * t0 * t3 * t11 * t21 + 96.0 * t24 * D1 * q[2] * q[3] * q[5]) * out[1] / ((t9 * t9) * out[4] * (q[3] * q[3] * q[3] * q[3]));
-  out[7] = 2.0 * t15 * q[4] / (t9 * out[5] * (q[3] * q[3]));
-  out[8] = (-(out[3] * out[7]) + out[6]);
-  out[9] = (-(12.0 * t17 * t3 * t11 * t21 * out[1] * out[5]) - (12.0 * t17 * t22 * out[1] * out[5] * q[5]) - (144.0 * t23 * t1 * D1 * out[1] * out[5] * q[2] * q[5]) - (16.0 * t0 * t23 * t21 * out[1] * out[5] * q[2] * q[3]) - (16.0 * t24 * t21 * D1 * out[1] * out[5] * q[2]) - (2.0 * t0 * t6 * t11 * out[3] * out[4] * q[4]) - (2.0 * t0 * t23 * t21 * out[1] * out[5] * q[3]) - (2.0 * t16 * t3 * t11 * t21 * out[1] * out[5]) - (2.0 * t16 * t25 * t21 * out[1] * out[5]) - (32.0 * t17 * t6 * t12 * t21 * out[1] * out[5]) - (48.0 * t0 * t23 * t1 * out[1] * out[5] * q[2] * q[5]) - (48.0 * t26 * out[1] * out[5] * q[2] * q[5]) - (6.0 * t17 * t3 * t12 * out[1] * out[5] * q[5]) - (6.0 * t17 * t14 * t11 * out[1] * out[5] * q[5]) - (6.0 * t16 * t6 * t25 * out[1] * out[5] * q[5]) - (60.0 * t23 * t1 * D1 * out[1] * out[5] * q[5]) - (64.0 * t14 * t1 * t21 * D1 * out[1] * out[5]) - (64.0 * t14 * t1 * t21 * D1 * out[1] * out[5] * q[2]) - (72.0 * t0 * t3 * t12 * out[1] * out[5] * q[5]) - (8.0 * t3 * t1 * out[3] * out[4] * q[4]) - (8.0 * t12 * D1 * out[3] * out[4] * q[4]) - (96.0 * t0 * t3 * t12 * out[1] * out[5] * q[2] * q[5]) + 120.0 * t0 * t14 * t11 * out[1] * out[5] * q[2] * q[5] + 16.0 * t0 * t14 * t1 * t21 * out[1] * out[5] * q[2] + 2.0 * t0 * t12 * out[3] * out[4] * q[4] + 2.0 * t3 * t1 * D1 * out[3] * out[4] * q[4] + 24.0 * t0 * t6 * t25 * out[1] * out[5] * q[2] * q[5] + 24.0 * t0 * t6 * t25 * out[1] * out[5] * q[5] + 24.0 * t17 * t6 * t25 * out[1] * out[5] * q[5] + 24.0 * t24 * out[1] * out[5] * q[2] * q[3] * q[5] + 24.0 * t24 * out[1] * out[5] * q[3] * q[5] + 3.0 * t0 * t23 * t1 * out[1] * out[5] * q[5] + 3.0 * t16 * t3 * t12 * out[1] * out[5] * q[5] + 3.0 * t16 * t22 * out[1] * out[5] * q[5] + 4.0 * t0 * t24 * t21 * out[1] * out[5] * q[2] + 4.0 * t17 * t14 * t1 * t21 * out[1] * out[5] + 48.0 * t0 * t14 * t11 * out[1] * out[5] * q[5] + 48.0 * t14 * t11 * D1 * out[1] * out[5] * q[2] * q[5] + 48.0 * t14 * t11 * D1 * out[1] * out[5] * q[5] + 64.0 * t23 * t21 * D1 * out[1] * out[5] * q[2] * q[3] + 8.0 * t17 * t25 * t21 * out[1] * out[5] + 8.0 * t16 * t6 * t12 * t21 * out[1] * out[5] + 8.0 * t6 * t11 * D1 * out[3] * out[4] * q[4] + 8.0 * t23 * t21 * D1 * out[1] * out[5] * q[3] + 80.0 * t0 * t3 * t11 * t21 * out[1] * out[5] + 96.0 * t24 * D1 * out[1] * out[5] * q[2] * q[3] * q[5]) / ((t9 * t9) * (q[3] * q[3] * q[3] * q[3]));
-  out[10] = (1.0 / 4.0) * (t2 + t5 - (8.0 * t6 * q[2] * q[3]) - (8.0 * t6 * q[3]) + 4.0 * t3 * q[2] + t7);
-  out[11] = (std::abs(-(16.0 * t1 * t4 * D1)) + std::abs(-(32.0 * t1 * D1)) + std::abs(-(64.0 * t3 * q[2])) + std::abs(-(8.0 * t17 * t1)) + std::abs(t16 * t1) + std::abs(16.0 * t1 * t4) + std::abs(24.0 * t0 * t1) + std::abs(32.0 * t6 * q[2] * q[3]) + std::abs(32.0 * t6 * q[3]) + std::abs(4.0 * t0 * t1 * t4)) / (std::abs(4.0));
-  out[12] = (std::abs(t18) + std::abs(t19) + std::abs(t20)) / (std::abs(2.0));
+  (void)Q;
+  w[0] = -(((D1 * D1) - (8.0 * D1) + 4.0 * (sigma * sigma)) * (Q[3] * Q[3]));
+  w[1] = 8.0 * ((-1.0) - (Q[2])) * Q[3];
+  w[2] = 4.0 * Q[2];
+}
+
+// NLS coefficients at omega on a branch of det M = 0 (outputs in lrchain::ModelOutput order). In __float128: the terms of its factors cancel by up to 1e+13 (measured at derivation).
+inline void nls(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
+  using real [[maybe_unused]] = __float128;
+  const auto magnitude = [](real x) { return x < 0 ? -x : x; };
+  long double parameters[3], intermediates[6];
+  for (int i = 0; i < 3; ++i) parameters[i] = q[i];
+  intermediates_extended(parameters, intermediates);
+  real Q[6];
+  for (int i = 0; i < 6; ++i) Q[i] = intermediates[i];
+  // (sin, cos)(theta/2) from D1 = 4 sin^2, sigma = 2 sin cos, rescaled so that sin^2 + cos^2 = 1 here.
+  real D1 = D1_in, sigma = sigma_in;
+  if (D1_in > 0.0) {
+    const real norm = real(0.25) * D1_in + real(sigma_in) * sigma_in / D1_in;
+    D1 = D1_in / norm;
+    sigma = sigma_in / norm;
+  }
+  // omega^2: Newton steps on det M = 0 from the double root.
+  real w[3];
+  dispersion_extended(D1, sigma, Q, w);
+  real w2 = real(omega_in) * omega_in;
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    real p = 0, dp = 0;
+    for (int k = 2; k >= 0; --k) {
+      dp = dp * w2 + p;
+      p = p * w2 + w[k];
+    }
+    const real step = dp != 0 ? p / dp : real(0);
+    if (!(magnitude(step) <= 1e-6 * w2)) break;
+    w2 -= step;
+  }
+  real omega = omega_in;
+  for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);
+  real o[13];
+  const real t0 = (D1 * D1);
+  const real t1 = (Q[3] * Q[3]);
+  const real t2 = -(t0 * t1);
+  const real t3 = (sigma * sigma);
+  const real t4 = -(4.0 * t1 * t3);
+  const real t5 = (omega * omega * omega * omega);
+  const real t6 = (omega * omega);
+  const real t7 = 8.0 * t1 * D1;
+  o[0] = 4.0 * (t6 - (2.0 * Q[3])) * t1 * sigma / ((t2 - (16.0 * t1) - (16.0 * t1 * Q[2]) + t4 - (4.0 * t5 * Q[2]) + 16.0 * t6 * Q[2] * Q[3] + t7) * omega);
+  const real t8 = (-(D1) + 4.0);
+  o[1] = t8 * t1 / ((-(t1 * D1) - (4.0 * t6 * Q[2] * Q[3]) + t5 * Q[2] + 4.0 * t1 + 4.0 * t1 * Q[2]) * omega);
+  const real t9 = (Q[3] * Q[3] * Q[3]);
+  const real t10 = (o[0] * o[0]);
+  const real t11 = (Q[3] * Q[3] * Q[3] * Q[3]);
+  const real t12 = (Q[2] * Q[2]);
+  const real t13 = (omega * omega * omega * omega * omega * omega);
+  o[2] = (real(1.0) / 2.0) * (-(t1 * t5 * D1 * Q[2]) - (16.0 * t9 * t10) - (16.0 * t9 * t10 * Q[2]) - (2.0 * t1 * t10 * t6 * D1 * Q[2]) - (2.0 * t11 * D1) - (24.0 * t12 * t1 * t10 * t6) - (4.0 * t10 * t5 * Q[2] * Q[3]) - (6.0 * t12 * t10 * t13) - (8.0 * t1 * (omega * omega * omega) * Q[2] * o[0] * sigma) - (8.0 * t9 * t6) - (8.0 * t9 * t6 * Q[2]) + 16.0 * t9 * Q[2] * o[0] * omega * sigma + 2.0 * t9 * t6 * D1 + 2.0 * t9 * t6 * D1 * Q[2] + 24.0 * t12 * t10 * t5 * Q[3] + 24.0 * t1 * t10 * t6 * Q[2] + 4.0 * t1 * t5 * Q[2] + 4.0 * t9 * t10 * D1 + 8.0 * t11) * o[1] / ((-(t6 * Q[2]) + 2.0 * Q[3]) * t8 * (Q[3] * Q[3]));
+  const real t14 = (t5 - (t6 * D1 * Q[3]) + t1 * D1);
+  o[3] = -(t14 * Q[4] * o[1] / (t8 * (Q[3] * Q[3])));
+  const real t15 = (D1 * D1 * D1 * D1);
+  const real t16 = (D1 * D1 * D1);
+  o[4] = -((real(1.0) / 4.0) * (-(t15 * t1) - (16.0 * t1 * t3) - (24.0 * t0 * t1) - (32.0 * t6 * Q[2] * Q[3]) - (32.0 * t6 * Q[3]) - (4.0 * t0 * t1 * t3) + 16.0 * t1 * t3 * D1 + 32.0 * t1 * D1 + 64.0 * t5 * Q[2] + 8.0 * t16 * t1));
+  const real t17 = -(Q[3]);
+  const real t18 = 2.0 * t10;
+  const real t19 = 2.0 * t10 * Q[2];
+  o[5] = (real(1.0) / 2.0) * (t17 + t18 + t19);
+  const real t20 = (Q[4] * Q[4]);
+  const real t21 = (Q[3] * Q[3] * Q[3] * Q[3] * Q[3] * Q[3]);
+  const real t22 = (omega * omega * omega * omega * omega * omega * omega * omega);
+  const real t23 = (omega * omega * omega * omega * omega * omega * omega * omega * omega * omega);
+  const real t24 = (Q[3] * Q[3] * Q[3] * Q[3] * Q[3]);
+  const real t25 = (omega * omega * omega * omega * omega * omega * omega * omega * omega * omega * omega * omega);
+  o[6] = (-(12.0 * t16 * t9 * t20 * t5) - (12.0 * t16 * t21 * Q[5]) - (144.0 * t1 * t22 * D1 * Q[2] * Q[5]) - (16.0 * t0 * t20 * t22 * Q[2] * Q[3]) - (16.0 * t20 * t23 * D1 * Q[2]) - (2.0 * t0 * t20 * t22 * Q[3]) - (2.0 * t15 * t9 * t20 * t5) - (2.0 * t15 * t24 * t20) - (32.0 * t16 * t11 * t20 * t6) - (48.0 * t0 * t1 * t22 * Q[2] * Q[5]) - (48.0 * t25 * Q[2] * Q[5]) - (6.0 * t16 * t9 * t13 * Q[5]) - (6.0 * t16 * t11 * t5 * Q[5]) - (6.0 * t15 * t24 * t6 * Q[5]) - (60.0 * t1 * t22 * D1 * Q[5]) - (64.0 * t1 * t20 * t13 * D1) - (64.0 * t1 * t20 * t13 * D1 * Q[2]) - (72.0 * t0 * t11 * t5 * Q[5]) - (96.0 * t0 * t11 * t5 * Q[2] * Q[5]) + 120.0 * t0 * t9 * t13 * Q[2] * Q[5] + 16.0 * t0 * t1 * t20 * t13 * Q[2] + 24.0 * t0 * t24 * t6 * Q[2] * Q[5] + 24.0 * t0 * t24 * t6 * Q[5] + 24.0 * t16 * t24 * t6 * Q[5] + 24.0 * t23 * Q[2] * Q[3] * Q[5] + 24.0 * t23 * Q[3] * Q[5] + 3.0 * t0 * t1 * t22 * Q[5] + 3.0 * t15 * t11 * t5 * Q[5] + 3.0 * t15 * t21 * Q[5] + 4.0 * t0 * t20 * t23 * Q[2] + 4.0 * t16 * t1 * t20 * t13 + 48.0 * t0 * t9 * t13 * Q[5] + 48.0 * t9 * t13 * D1 * Q[2] * Q[5] + 48.0 * t9 * t13 * D1 * Q[5] + 64.0 * t20 * t22 * D1 * Q[2] * Q[3] + 8.0 * t16 * t24 * t20 + 8.0 * t15 * t11 * t20 * t6 + 8.0 * t20 * t22 * D1 * Q[3] + 80.0 * t0 * t9 * t20 * t5 + 96.0 * t23 * D1 * Q[2] * Q[3] * Q[5]) * o[1] / ((t8 * t8) * (Q[3] * Q[3] * Q[3] * Q[3]) * o[4]);
+  o[7] = 2.0 * t14 * Q[4] / (t8 * (Q[3] * Q[3]) * o[5]);
+  o[8] = (-(o[3] * o[7]) + o[6]);
+  o[9] = (-(12.0 * t16 * t9 * t20 * t5 * o[1] * o[5]) - (12.0 * t16 * t21 * Q[5] * o[1] * o[5]) - (144.0 * t1 * t22 * D1 * Q[2] * Q[5] * o[1] * o[5]) - (16.0 * t0 * t20 * t22 * Q[2] * Q[3] * o[1] * o[5]) - (16.0 * t20 * t23 * D1 * Q[2] * o[1] * o[5]) - (2.0 * t0 * t9 * t6 * Q[4] * o[3] * o[4]) - (2.0 * t0 * t20 * t22 * Q[3] * o[1] * o[5]) - (2.0 * t15 * t9 * t20 * t5 * o[1] * o[5]) - (2.0 * t15 * t24 * t20 * o[1] * o[5]) - (32.0 * t16 * t11 * t20 * t6 * o[1] * o[5]) - (48.0 * t0 * t1 * t22 * Q[2] * Q[5] * o[1] * o[5]) - (48.0 * t25 * Q[2] * Q[5] * o[1] * o[5]) - (6.0 * t16 * t9 * t13 * Q[5] * o[1] * o[5]) - (6.0 * t16 * t11 * t5 * Q[5] * o[1] * o[5]) - (6.0 * t15 * t24 * t6 * Q[5] * o[1] * o[5]) - (60.0 * t1 * t22 * D1 * Q[5] * o[1] * o[5]) - (64.0 * t1 * t20 * t13 * D1 * Q[2] * o[1] * o[5]) - (64.0 * t1 * t20 * t13 * D1 * o[1] * o[5]) - (72.0 * t0 * t11 * t5 * Q[5] * o[1] * o[5]) - (8.0 * t1 * t5 * Q[4] * o[3] * o[4]) - (8.0 * t11 * D1 * Q[4] * o[3] * o[4]) - (96.0 * t0 * t11 * t5 * Q[2] * Q[5] * o[1] * o[5]) + 120.0 * t0 * t9 * t13 * Q[2] * Q[5] * o[1] * o[5] + 16.0 * t0 * t1 * t20 * t13 * Q[2] * o[1] * o[5] + 2.0 * t0 * t11 * Q[4] * o[3] * o[4] + 2.0 * t1 * t5 * D1 * Q[4] * o[3] * o[4] + 24.0 * t0 * t24 * t6 * Q[2] * Q[5] * o[1] * o[5] + 24.0 * t0 * t24 * t6 * Q[5] * o[1] * o[5] + 24.0 * t16 * t24 * t6 * Q[5] * o[1] * o[5] + 24.0 * t23 * Q[2] * Q[3] * Q[5] * o[1] * o[5] + 24.0 * t23 * Q[3] * Q[5] * o[1] * o[5] + 3.0 * t0 * t1 * t22 * Q[5] * o[1] * o[5] + 3.0 * t15 * t11 * t5 * Q[5] * o[1] * o[5] + 3.0 * t15 * t21 * Q[5] * o[1] * o[5] + 4.0 * t0 * t20 * t23 * Q[2] * o[1] * o[5] + 4.0 * t16 * t1 * t20 * t13 * o[1] * o[5] + 48.0 * t0 * t9 * t13 * Q[5] * o[1] * o[5] + 48.0 * t9 * t13 * D1 * Q[2] * Q[5] * o[1] * o[5] + 48.0 * t9 * t13 * D1 * Q[5] * o[1] * o[5] + 64.0 * t20 * t22 * D1 * Q[2] * Q[3] * o[1] * o[5] + 8.0 * t16 * t24 * t20 * o[1] * o[5] + 8.0 * t15 * t11 * t20 * t6 * o[1] * o[5] + 8.0 * t9 * t6 * D1 * Q[4] * o[3] * o[4] + 8.0 * t20 * t22 * D1 * Q[3] * o[1] * o[5] + 80.0 * t0 * t9 * t20 * t5 * o[1] * o[5] + 96.0 * t23 * D1 * Q[2] * Q[3] * Q[5] * o[1] * o[5]) / ((t8 * t8) * (Q[3] * Q[3] * Q[3] * Q[3]));
+  o[10] = (real(1.0) / 4.0) * (t2 + t4 - (8.0 * t6 * Q[2] * Q[3]) - (8.0 * t6 * Q[3]) + 4.0 * t5 * Q[2] + t7);
+  o[11] = (magnitude(-(16.0 * t1 * t3 * D1)) + magnitude(-(32.0 * t1 * D1)) + magnitude(-(64.0 * t5 * Q[2])) + magnitude(-(8.0 * t16 * t1)) + magnitude(t15 * t1) + magnitude(16.0 * t1 * t3) + magnitude(24.0 * t0 * t1) + magnitude(32.0 * t6 * Q[2] * Q[3]) + magnitude(32.0 * t6 * Q[3]) + magnitude(4.0 * t0 * t1 * t3)) / (magnitude(4.0));
+  o[12] = (magnitude(t17) + magnitude(t18) + magnitude(t19)) / (magnitude(2.0));
+  for (int k = 0; k < 13; ++k) out[k] = static_cast<double>(o[k]);
 }
 
 // The model's description for lrchain::Model (parameters, ranges, branches, evaluators).

@@ -30,48 +30,100 @@ inline void dispersion(double D1, double sigma, const double* q, double* w) noex
   w[2] = q[6];
 }
 
-// NLS coefficients at omega on a branch of det M = 0 (outputs in lrchain::ModelOutput order).
-inline void nls(double D1, double sigma, double omega, const double* q, double* out) noexcept {
+// intermediates() in long double.
+inline void intermediates_extended(const long double* p, long double* q) noexcept {
+  using real [[maybe_unused]] = long double;
+  q[0] = p[0];
+  q[1] = p[1];
+  q[2] = p[2];
+  q[3] = p[3];
+  q[4] = p[4];
+  q[5] = p[5];
+  q[6] = p[6];
+}
+
+// Coefficients of det M as dispersion(), in long double arithmetic.
+inline void dispersion_extended(long double D1, long double sigma, const long double* Q, long double* w) noexcept {
+  using real [[maybe_unused]] = long double;
   (void)sigma;
-  (void)q;
-  const double t0 = (q[3] * q[3]);
-  const double t1 = (omega * omega);
-  const double t2 = (omega * omega * omega * omega);
-  const double t3 = (q[6] * q[6]);
-  const double t4 = (-(t1 * q[6]) + q[3]);
-  const double t5 = (t4 * t4);
-  out[0] = t5 * q[0] * sigma / ((t0 - (2.0 * t1 * q[3] * q[6]) + t2 * t3 + t0 * q[6]) * omega);
-  out[1] = t5 / ((t0 - (2.0 * t1 * q[3] * q[6]) + t2 * t3 + t0 * q[6]) * omega);
-  const double t6 = (omega * omega * omega * omega * omega * omega);
-  const double t7 = (q[6] * q[6] * q[6]);
-  const double t8 = (out[0] * out[0]);
-  const double t9 = (q[3] * q[3] * q[3]);
-  out[2] = -((1.0 / 2.0) * (-(t6 * t7 * D1 * q[0]) - (2.0 * t6 * t8 * t7) - (2.0 * t9 * q[0]) - (3.0 * t1 * t0 * D1 * q[0] * q[6]) - (6.0 * t1 * t8 * t0 * q[6]) - (6.0 * t2 * t3 * q[0] * q[3]) + t9 * D1 * q[0] + 2.0 * t6 * t7 * q[0] + 2.0 * t8 * t9 + 2.0 * t8 * t9 * q[6] + 3.0 * t2 * t3 * D1 * q[0] * q[3] + 6.0 * t1 * t8 * t0 * t3 + 6.0 * t1 * t0 * q[0] * q[6] + 6.0 * t2 * t8 * t3 * q[3]) * out[1] / ((t4 * t4 * t4)));
-  out[3] = -(D1 * out[1] * q[1]);
-  const double t10 = (D1 * D1);
-  out[4] = -((-(t10 * q[0] * q[3]) - (16.0 * t1 * D1 * q[0] * q[6]) - (4.0 * t1 * q[3]) - (4.0 * t1 * q[3] * q[6]) + 16.0 * t2 * q[6] + 4.0 * t10 * t1 * q[0] * q[6] + 4.0 * D1 * q[0] * q[3]));
-  const double t11 = -(q[0]);
-  const double t12 = t8 * q[6];
-  out[5] = (t8 + t11 + t12);
-  const double t13 = (omega * omega * omega * omega * omega * omega * omega * omega * omega * omega);
-  const double t14 = (q[6] * q[6] * q[6] * q[6] * q[6]);
-  const double t15 = (q[3] * q[3] * q[3] * q[3] * q[3] * q[3]);
-  const double t16 = (q[6] * q[6] * q[6] * q[6]);
-  const double t17 = (D1 * D1 * D1);
-  const double t18 = (omega * omega * omega * omega * omega * omega * omega * omega);
-  const double t19 = (q[1] * q[1]);
-  const double t20 = (q[4] * q[4]);
-  const double t21 = (D1 * D1 * D1 * D1);
-  const double t22 = (q[3] * q[3] * q[3] * q[3] * q[3]);
-  const double t23 = (q[3] * q[3] * q[3] * q[3]);
-  const double t24 = (omega * omega * omega * omega * omega * omega * omega * omega * omega * omega * omega * omega);
-  out[6] = -((1.0 / 2.0) * (-(12.0 * t10 * t13 * t0 * t14 * q[2]) - (12.0 * t10 * t1 * t15 * q[2]) - (12.0 * t10 * t1 * t15 * q[2] * q[6]) - (12.0 * t13 * t0 * t16 * q[5]) - (12.0 * t13 * t0 * t14 * q[5]) - (136.0 * t17 * t18 * t19 * t0 * t16) - (16.0 * t10 * t13 * t20 * t14 * q[0]) - (16.0 * t21 * t1 * t19 * t22 * q[6]) - (176.0 * t17 * t2 * t19 * t23 * t3) - (204.0 * t10 * t13 * t0 * t16 * q[2]) - (24.0 * t18 * t20 * t16 * D1 * q[0] * q[3]) - (264.0 * t10 * t6 * t23 * t3 * q[2]) - (3.0 * t10 * t18 * t0 * t16 * q[0] * q[5]) - (3.0 * t21 * t15 * q[0] * q[2]) - (336.0 * t17 * t6 * t9 * t7 * q[0] * q[2]) - (48.0 * t17 * t13 * t14 * q[0] * q[2] * q[3]) - (48.0 * t13 * t14 * D1 * q[0] * q[3] * q[5]) - (51.0 * t21 * t18 * t0 * t16 * q[0] * q[2]) - (56.0 * t21 * t6 * t19 * t9 * t7) - (64.0 * t24 * t20 * t14) - (66.0 * t21 * t2 * t23 * t3 * q[0] * q[2]) - (72.0 * t10 * t6 * t23 * t7 * q[2]) - (8.0 * t17 * t19 * t15) - (8.0 * t21 * t13 * t19 * t14 * q[3]) - (96.0 * t17 * t1 * t22 * q[0] * q[2] * q[6]) + 12.0 * t10 * t13 * t14 * q[0] * q[3] * q[5] + 12.0 * t17 * t15 * q[0] * q[2] + 12.0 * t21 * t13 * t14 * q[0] * q[2] * q[3] + 12.0 * t18 * t0 * t16 * D1 * q[0] * q[5] + 2.0 * t21 * t19 * t15 + 204.0 * t17 * t18 * t0 * t16 * q[0] * q[2] + 224.0 * t17 * t6 * t19 * t9 * t7 + 24.0 * t21 * t1 * t22 * q[0] * q[2] * q[6] + 24.0 * t13 * t20 * t16 * q[3] + 24.0 * t13 * t20 * t14 * q[3] + 264.0 * t17 * t2 * t23 * t3 * q[0] * q[2] + 32.0 * t17 * t13 * t19 * t14 * q[3] + 336.0 * t10 * t18 * t9 * t7 * q[2] + 34.0 * t21 * t18 * t19 * t0 * t16 + 44.0 * t21 * t2 * t19 * t23 * t3 + 48.0 * t10 * t24 * t14 * q[2] * q[3] + 48.0 * t10 * t2 * t22 * t3 * q[2] + 48.0 * t10 * t18 * t9 * t16 * q[2] + 48.0 * t24 * t14 * q[3] * q[5] + 6.0 * t10 * t18 * t20 * t16 * q[0] * q[3] + 64.0 * t17 * t1 * t19 * t22 * q[6] + 64.0 * t13 * t20 * t14 * D1 * q[0] + 84.0 * t21 * t6 * t9 * t7 * q[0] * q[2] + 96.0 * t10 * t2 * t22 * q[2] * q[6]) * out[1] / ((t4 * t4 * t4 * t4) * out[4] * q[3]));
-  out[7] = 2.0 * D1 * q[1] / (out[5]);
-  out[8] = (-(out[3] * out[7]) + out[6]);
-  out[9] = -((1.0 / 2.0) * (-(12.0 * t10 * t13 * t0 * t14 * out[1] * out[5] * q[2]) - (12.0 * t10 * t1 * t15 * out[1] * out[5] * q[2]) - (12.0 * t10 * t1 * t15 * out[1] * out[5] * q[2] * q[6]) - (12.0 * t13 * t0 * t16 * out[1] * out[5] * q[5]) - (12.0 * t13 * t0 * t14 * out[1] * out[5] * q[5]) - (136.0 * t17 * t18 * t19 * t0 * t16 * out[1] * out[5]) - (16.0 * t10 * t13 * t20 * t14 * out[1] * out[5] * q[0]) - (16.0 * t21 * t1 * t19 * t22 * out[1] * out[5] * q[6]) - (16.0 * t1 * t23 * D1 * out[3] * out[4] * q[1] * q[6]) - (16.0 * t6 * t0 * t7 * D1 * out[3] * out[4] * q[1]) - (176.0 * t17 * t2 * t19 * t23 * t3 * out[1] * out[5]) - (204.0 * t10 * t13 * t0 * t16 * out[1] * out[5] * q[2]) - (24.0 * t18 * t20 * t16 * D1 * out[1] * out[5] * q[0] * q[3]) - (264.0 * t10 * t6 * t23 * t3 * out[1] * out[5] * q[2]) - (3.0 * t10 * t18 * t0 * t16 * out[1] * out[5] * q[0] * q[5]) - (3.0 * t21 * t15 * out[1] * out[5] * q[0] * q[2]) - (336.0 * t17 * t6 * t9 * t7 * out[1] * out[5] * q[0] * q[2]) - (48.0 * t17 * t13 * t14 * out[1] * out[5] * q[0] * q[2] * q[3]) - (48.0 * t13 * t14 * D1 * out[1] * out[5] * q[0] * q[3] * q[5]) - (51.0 * t21 * t18 * t0 * t16 * out[1] * out[5] * q[0] * q[2]) - (56.0 * t21 * t6 * t19 * t9 * t7 * out[1] * out[5]) - (64.0 * t24 * t20 * t14 * out[1] * out[5]) - (66.0 * t21 * t2 * t23 * t3 * out[1] * out[5] * q[0] * q[2]) - (72.0 * t10 * t6 * t23 * t7 * out[1] * out[5] * q[2]) - (8.0 * t17 * t19 * t15 * out[1] * out[5]) - (8.0 * t21 * t13 * t19 * t14 * out[1] * out[5] * q[3]) - (96.0 * t17 * t1 * t22 * out[1] * out[5] * q[0] * q[2] * q[6]) + 12.0 * t10 * t13 * t14 * out[1] * out[5] * q[0] * q[3] * q[5] + 12.0 * t17 * t15 * out[1] * out[5] * q[0] * q[2] + 12.0 * t21 * t13 * t14 * out[1] * out[5] * q[0] * q[2] * q[3] + 12.0 * t18 * t0 * t16 * D1 * out[1] * out[5] * q[0] * q[5] + 2.0 * t21 * t19 * t15 * out[1] * out[5] + 204.0 * t17 * t18 * t0 * t16 * out[1] * out[5] * q[0] * q[2] + 224.0 * t17 * t6 * t19 * t9 * t7 * out[1] * out[5] + 24.0 * t21 * t1 * t22 * out[1] * out[5] * q[0] * q[2] * q[6] + 24.0 * t13 * t20 * t16 * out[1] * out[5] * q[3] + 24.0 * t13 * t20 * t14 * out[1] * out[5] * q[3] + 24.0 * t2 * t9 * t3 * D1 * out[3] * out[4] * q[1] + 264.0 * t17 * t2 * t23 * t3 * out[1] * out[5] * q[0] * q[2] + 32.0 * t17 * t13 * t19 * t14 * out[1] * out[5] * q[3] + 336.0 * t10 * t18 * t9 * t7 * out[1] * out[5] * q[2] + 34.0 * t21 * t18 * t19 * t0 * t16 * out[1] * out[5] + 4.0 * t18 * t16 * D1 * out[3] * out[4] * q[1] * q[3] + 4.0 * t22 * D1 * out[3] * out[4] * q[1] + 44.0 * t21 * t2 * t19 * t23 * t3 * out[1] * out[5] + 48.0 * t10 * t24 * t14 * out[1] * out[5] * q[2] * q[3] + 48.0 * t10 * t2 * t22 * t3 * out[1] * out[5] * q[2] + 48.0 * t10 * t18 * t9 * t16 * out[1] * out[5] * q[2] + 48.0 * t24 * t14 * out[1] * out[5] * q[3] * q[5] + 6.0 * t10 * t18 * t20 * t16 * out[1] * out[5] * q[0] * q[3] + 64.0 * t17 * t1 * t19 * t22 * out[1] * out[5] * q[6] + 64.0 * t13 * t20 * t14 * D1 * out[1] * out[5] * q[0] + 84.0 * t21 * t6 * t9 * t7 * out[1] * out[5] * q[0] * q[2] + 96.0 * t10 * t2 * t22 * out[1] * out[5] * q[2] * q[6]) / ((t4 * t4 * t4 * t4) * q[3]));
-  out[10] = (-(t1 * D1 * q[0] * q[6]) - (t1 * q[3]) - (t1 * q[3] * q[6]) + t2 * q[6] + D1 * q[0] * q[3]);
-  out[11] = (std::abs(-(16.0 * t2 * q[6])) + std::abs(-(4.0 * t10 * t1 * q[0] * q[6])) + std::abs(-(4.0 * D1 * q[0] * q[3])) + std::abs(t10 * q[0] * q[3]) + std::abs(16.0 * t1 * D1 * q[0] * q[6]) + std::abs(4.0 * t1 * q[3]) + std::abs(4.0 * t1 * q[3] * q[6]));
-  out[12] = (std::abs(t8) + std::abs(t11) + std::abs(t12));
+  (void)Q;
+  w[0] = D1 * Q[0] * Q[3];
+  w[1] = (-(D1 * Q[0] * Q[6]) - (Q[3]) - (Q[3] * Q[6]));
+  w[2] = Q[6];
+}
+
+// NLS coefficients at omega on a branch of det M = 0 (outputs in lrchain::ModelOutput order). In long double: the terms of its factors cancel by up to 4.6e+05 (measured at derivation).
+inline void nls(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
+  using real [[maybe_unused]] = long double;
+  const auto magnitude = [](real x) { return x < 0 ? -x : x; };
+  long double parameters[7], intermediates[7];
+  for (int i = 0; i < 7; ++i) parameters[i] = q[i];
+  intermediates_extended(parameters, intermediates);
+  real Q[7];
+  for (int i = 0; i < 7; ++i) Q[i] = intermediates[i];
+  // (sin, cos)(theta/2) from D1 = 4 sin^2, sigma = 2 sin cos, rescaled so that sin^2 + cos^2 = 1 here.
+  real D1 = D1_in, sigma = sigma_in;
+  if (D1_in > 0.0) {
+    const real norm = real(0.25) * D1_in + real(sigma_in) * sigma_in / D1_in;
+    D1 = D1_in / norm;
+    sigma = sigma_in / norm;
+  }
+  // omega^2: Newton steps on det M = 0 from the double root.
+  real w[3];
+  dispersion_extended(D1, sigma, Q, w);
+  real w2 = real(omega_in) * omega_in;
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    real p = 0, dp = 0;
+    for (int k = 2; k >= 0; --k) {
+      dp = dp * w2 + p;
+      p = p * w2 + w[k];
+    }
+    const real step = dp != 0 ? p / dp : real(0);
+    if (!(magnitude(step) <= 1e-6 * w2)) break;
+    w2 -= step;
+  }
+  real omega = omega_in;
+  for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);
+  real o[13];
+  const real t0 = (Q[3] * Q[3]);
+  const real t1 = (omega * omega);
+  const real t2 = (Q[6] * Q[6]);
+  const real t3 = (omega * omega * omega * omega);
+  const real t4 = (-(t1 * Q[6]) + Q[3]);
+  const real t5 = (t4 * t4);
+  o[0] = t5 * Q[0] * sigma / ((t0 - (2.0 * t1 * Q[3] * Q[6]) + t0 * Q[6] + t2 * t3) * omega);
+  o[1] = t5 / ((t0 - (2.0 * t1 * Q[3] * Q[6]) + t0 * Q[6] + t2 * t3) * omega);
+  const real t6 = (Q[3] * Q[3] * Q[3]);
+  const real t7 = (o[0] * o[0]);
+  const real t8 = (Q[6] * Q[6] * Q[6]);
+  const real t9 = (omega * omega * omega * omega * omega * omega);
+  o[2] = (real(1.0) / 2.0) * (-(t6 * D1 * Q[0]) - (2.0 * t6 * t7) - (2.0 * t6 * t7 * Q[6]) - (2.0 * t8 * t9 * Q[0]) - (3.0 * t2 * t3 * D1 * Q[0] * Q[3]) - (6.0 * t0 * t2 * t7 * t1) - (6.0 * t0 * t1 * Q[0] * Q[6]) - (6.0 * t2 * t7 * t3 * Q[3]) + t8 * t9 * D1 * Q[0] + 2.0 * t6 * Q[0] + 2.0 * t8 * t7 * t9 + 3.0 * t0 * t1 * D1 * Q[0] * Q[6] + 6.0 * t0 * t7 * t1 * Q[6] + 6.0 * t2 * t3 * Q[0] * Q[3]) * o[1] / ((t4 * t4 * t4));
+  o[3] = -(D1 * Q[1] * o[1]);
+  const real t10 = (D1 * D1);
+  o[4] = -((-(t10 * Q[0] * Q[3]) - (16.0 * t1 * D1 * Q[0] * Q[6]) - (4.0 * t1 * Q[3]) - (4.0 * t1 * Q[3] * Q[6]) + 16.0 * t3 * Q[6] + 4.0 * t10 * t1 * Q[0] * Q[6] + 4.0 * D1 * Q[0] * Q[3]));
+  const real t11 = -(Q[0]);
+  const real t12 = t7 * Q[6];
+  o[5] = (t7 + t11 + t12);
+  const real t13 = (Q[6] * Q[6] * Q[6] * Q[6] * Q[6]);
+  const real t14 = (omega * omega * omega * omega * omega * omega * omega * omega * omega * omega);
+  const real t15 = (Q[3] * Q[3] * Q[3] * Q[3] * Q[3] * Q[3]);
+  const real t16 = (Q[6] * Q[6] * Q[6] * Q[6]);
+  const real t17 = (D1 * D1 * D1);
+  const real t18 = (Q[1] * Q[1]);
+  const real t19 = (omega * omega * omega * omega * omega * omega * omega * omega);
+  const real t20 = (Q[4] * Q[4]);
+  const real t21 = (D1 * D1 * D1 * D1);
+  const real t22 = (Q[3] * Q[3] * Q[3] * Q[3] * Q[3]);
+  const real t23 = (Q[3] * Q[3] * Q[3] * Q[3]);
+  const real t24 = (omega * omega * omega * omega * omega * omega * omega * omega * omega * omega * omega * omega);
+  o[6] = -((real(1.0) / 2.0) * (-(12.0 * t10 * t0 * t13 * t14 * Q[2]) - (12.0 * t10 * t15 * t1 * Q[2]) - (12.0 * t10 * t15 * t1 * Q[2] * Q[6]) - (12.0 * t0 * t16 * t14 * Q[5]) - (12.0 * t0 * t13 * t14 * Q[5]) - (136.0 * t17 * t18 * t0 * t16 * t19) - (16.0 * t10 * t20 * t13 * t14 * Q[0]) - (16.0 * t21 * t18 * t22 * t1 * Q[6]) - (176.0 * t17 * t18 * t23 * t2 * t3) - (204.0 * t10 * t0 * t16 * t14 * Q[2]) - (24.0 * t20 * t16 * t19 * D1 * Q[0] * Q[3]) - (264.0 * t10 * t23 * t2 * t9 * Q[2]) - (3.0 * t10 * t0 * t16 * t19 * Q[0] * Q[5]) - (3.0 * t21 * t15 * Q[0] * Q[2]) - (336.0 * t17 * t6 * t8 * t9 * Q[0] * Q[2]) - (48.0 * t17 * t13 * t14 * Q[0] * Q[2] * Q[3]) - (48.0 * t13 * t14 * D1 * Q[0] * Q[3] * Q[5]) - (51.0 * t21 * t0 * t16 * t19 * Q[0] * Q[2]) - (56.0 * t21 * t18 * t6 * t8 * t9) - (64.0 * t20 * t13 * t24) - (66.0 * t21 * t23 * t2 * t3 * Q[0] * Q[2]) - (72.0 * t10 * t23 * t8 * t9 * Q[2]) - (8.0 * t17 * t18 * t15) - (8.0 * t21 * t18 * t13 * t14 * Q[3]) - (96.0 * t17 * t22 * t1 * Q[0] * Q[2] * Q[6]) + 12.0 * t10 * t13 * t14 * Q[0] * Q[3] * Q[5] + 12.0 * t17 * t15 * Q[0] * Q[2] + 12.0 * t21 * t13 * t14 * Q[0] * Q[2] * Q[3] + 12.0 * t0 * t16 * t19 * D1 * Q[0] * Q[5] + 2.0 * t21 * t18 * t15 + 204.0 * t17 * t0 * t16 * t19 * Q[0] * Q[2] + 224.0 * t17 * t18 * t6 * t8 * t9 + 24.0 * t21 * t22 * t1 * Q[0] * Q[2] * Q[6] + 24.0 * t20 * t16 * t14 * Q[3] + 24.0 * t20 * t13 * t14 * Q[3] + 264.0 * t17 * t23 * t2 * t3 * Q[0] * Q[2] + 32.0 * t17 * t18 * t13 * t14 * Q[3] + 336.0 * t10 * t6 * t8 * t19 * Q[2] + 34.0 * t21 * t18 * t0 * t16 * t19 + 44.0 * t21 * t18 * t23 * t2 * t3 + 48.0 * t10 * t6 * t16 * t19 * Q[2] + 48.0 * t10 * t22 * t2 * t3 * Q[2] + 48.0 * t10 * t13 * t24 * Q[2] * Q[3] + 48.0 * t13 * t24 * Q[3] * Q[5] + 6.0 * t10 * t20 * t16 * t19 * Q[0] * Q[3] + 64.0 * t17 * t18 * t22 * t1 * Q[6] + 64.0 * t20 * t13 * t14 * D1 * Q[0] + 84.0 * t21 * t6 * t8 * t9 * Q[0] * Q[2] + 96.0 * t10 * t22 * t3 * Q[2] * Q[6]) * o[1] / ((t4 * t4 * t4 * t4) * Q[3] * o[4]));
+  o[7] = 2.0 * D1 * Q[1] / (o[5]);
+  o[8] = (-(o[3] * o[7]) + o[6]);
+  o[9] = -((real(1.0) / 2.0) * (-(12.0 * t10 * t0 * t13 * t14 * Q[2] * o[1] * o[5]) - (12.0 * t10 * t15 * t1 * Q[2] * Q[6] * o[1] * o[5]) - (12.0 * t10 * t15 * t1 * Q[2] * o[1] * o[5]) - (12.0 * t0 * t16 * t14 * Q[5] * o[1] * o[5]) - (12.0 * t0 * t13 * t14 * Q[5] * o[1] * o[5]) - (136.0 * t17 * t18 * t0 * t16 * t19 * o[1] * o[5]) - (16.0 * t10 * t20 * t13 * t14 * Q[0] * o[1] * o[5]) - (16.0 * t21 * t18 * t22 * t1 * Q[6] * o[1] * o[5]) - (16.0 * t0 * t8 * t9 * D1 * Q[1] * o[3] * o[4]) - (16.0 * t23 * t1 * D1 * Q[1] * Q[6] * o[3] * o[4]) - (176.0 * t17 * t18 * t23 * t2 * t3 * o[1] * o[5]) - (204.0 * t10 * t0 * t16 * t14 * Q[2] * o[1] * o[5]) - (24.0 * t20 * t16 * t19 * D1 * Q[0] * Q[3] * o[1] * o[5]) - (264.0 * t10 * t23 * t2 * t9 * Q[2] * o[1] * o[5]) - (3.0 * t10 * t0 * t16 * t19 * Q[0] * Q[5] * o[1] * o[5]) - (3.0 * t21 * t15 * Q[0] * Q[2] * o[1] * o[5]) - (336.0 * t17 * t6 * t8 * t9 * Q[0] * Q[2] * o[1] * o[5]) - (48.0 * t17 * t13 * t14 * Q[0] * Q[2] * Q[3] * o[1] * o[5]) - (48.0 * t13 * t14 * D1 * Q[0] * Q[3] * Q[5] * o[1] * o[5]) - (51.0 * t21 * t0 * t16 * t19 * Q[0] * Q[2] * o[1] * o[5]) - (56.0 * t21 * t18 * t6 * t8 * t9 * o[1] * o[5]) - (64.0 * t20 * t13 * t24 * o[1] * o[5]) - (66.0 * t21 * t23 * t2 * t3 * Q[0] * Q[2] * o[1] * o[5]) - (72.0 * t10 * t23 * t8 * t9 * Q[2] * o[1] * o[5]) - (8.0 * t17 * t18 * t15 * o[1] * o[5]) - (8.0 * t21 * t18 * t13 * t14 * Q[3] * o[1] * o[5]) - (96.0 * t17 * t22 * t1 * Q[0] * Q[2] * Q[6] * o[1] * o[5]) + 12.0 * t10 * t13 * t14 * Q[0] * Q[3] * Q[5] * o[1] * o[5] + 12.0 * t17 * t15 * Q[0] * Q[2] * o[1] * o[5] + 12.0 * t21 * t13 * t14 * Q[0] * Q[2] * Q[3] * o[1] * o[5] + 12.0 * t0 * t16 * t19 * D1 * Q[0] * Q[5] * o[1] * o[5] + 2.0 * t21 * t18 * t15 * o[1] * o[5] + 204.0 * t17 * t0 * t16 * t19 * Q[0] * Q[2] * o[1] * o[5] + 224.0 * t17 * t18 * t6 * t8 * t9 * o[1] * o[5] + 24.0 * t21 * t22 * t1 * Q[0] * Q[2] * Q[6] * o[1] * o[5] + 24.0 * t6 * t2 * t3 * D1 * Q[1] * o[3] * o[4] + 24.0 * t20 * t16 * t14 * Q[3] * o[1] * o[5] + 24.0 * t20 * t13 * t14 * Q[3] * o[1] * o[5] + 264.0 * t17 * t23 * t2 * t3 * Q[0] * Q[2] * o[1] * o[5] + 32.0 * t17 * t18 * t13 * t14 * Q[3] * o[1] * o[5] + 336.0 * t10 * t6 * t8 * t19 * Q[2] * o[1] * o[5] + 34.0 * t21 * t18 * t0 * t16 * t19 * o[1] * o[5] + 4.0 * t22 * D1 * Q[1] * o[3] * o[4] + 4.0 * t16 * t19 * D1 * Q[1] * Q[3] * o[3] * o[4] + 44.0 * t21 * t18 * t23 * t2 * t3 * o[1] * o[5] + 48.0 * t10 * t6 * t16 * t19 * Q[2] * o[1] * o[5] + 48.0 * t10 * t22 * t2 * t3 * Q[2] * o[1] * o[5] + 48.0 * t10 * t13 * t24 * Q[2] * Q[3] * o[1] * o[5] + 48.0 * t13 * t24 * Q[3] * Q[5] * o[1] * o[5] + 6.0 * t10 * t20 * t16 * t19 * Q[0] * Q[3] * o[1] * o[5] + 64.0 * t17 * t18 * t22 * t1 * Q[6] * o[1] * o[5] + 64.0 * t20 * t13 * t14 * D1 * Q[0] * o[1] * o[5] + 84.0 * t21 * t6 * t8 * t9 * Q[0] * Q[2] * o[1] * o[5] + 96.0 * t10 * t22 * t3 * Q[2] * Q[6] * o[1] * o[5]) / ((t4 * t4 * t4 * t4) * Q[3]));
+  o[10] = (-(t1 * D1 * Q[0] * Q[6]) - (t1 * Q[3]) - (t1 * Q[3] * Q[6]) + t3 * Q[6] + D1 * Q[0] * Q[3]);
+  o[11] = (magnitude(-(16.0 * t3 * Q[6])) + magnitude(-(4.0 * t10 * t1 * Q[0] * Q[6])) + magnitude(-(4.0 * D1 * Q[0] * Q[3])) + magnitude(t10 * Q[0] * Q[3]) + magnitude(16.0 * t1 * D1 * Q[0] * Q[6]) + magnitude(4.0 * t1 * Q[3]) + magnitude(4.0 * t1 * Q[3] * Q[6]));
+  o[12] = (magnitude(t7) + magnitude(t11) + magnitude(t12));
+  for (int k = 0; k < 13; ++k) out[k] = static_cast<double>(o[k]);
 }
 
 // The model's description for lrchain::Model (parameters, ranges, branches, evaluators).
