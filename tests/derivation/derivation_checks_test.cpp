@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 
 #include "../support/run_lrchain.hpp"
 #include "lrchain/derivation/generate.hpp"
@@ -59,7 +60,7 @@ TEST_CASE("the homogeneous chain's coefficients are the known FPU-type ones (Cho
 // The emitted text depends only on the derived expressions (docs/derivation.md, "Reproducible
 // bytes"), so every build of lrchain-derive, instrumented or not, reproduces the committed files.
 TEST_CASE("re-running lrchain-derive reproduces every committed generated header byte for byte") {
-  const auto tmp = std::filesystem::temp_directory_path() / "lrchain-derive-drift";
+  const auto tmp = std::filesystem::temp_directory_path() / ("lrchain-derive-drift-" + std::to_string(::getpid()));
   std::filesystem::remove_all(tmp);
   const auto source = std::filesystem::path(LRCHAIN_SOURCE_DIR);
   REQUIRE(lrchain::test::run_command({LRCHAIN_DERIVE, "--quiet", "--out", tmp.string(), "--models",

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <numbers>
 #include <random>
+#include <string>
+#include <unistd.h>
 
 #include "lrchain/model.hpp"
 #include "lrchain/model_compiler.hpp"
@@ -38,7 +40,7 @@ double relative(double a, double b) {
 }  // namespace
 
 TEST_CASE("without a C++ compiler a model file is evaluated through GiNaC and agrees with the compiled path") {
-  const fs::path cache = fs::temp_directory_path() / "lrchain-ginac-fallback-test";
+  const fs::path cache = fs::temp_directory_path() / ("lrchain-ginac-fallback-test-" + std::to_string(::getpid()));
   fs::remove_all(cache);
   ScopedEnvironment xdg("XDG_CACHE_HOME", cache.string());
   for (const std::string name : {"diatomic_chain", "klein_gordon", "resonant_chain_polynomial"}) {

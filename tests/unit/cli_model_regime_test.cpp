@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
+#include <string>
+#include <unistd.h>
 
 #include "../support/run_lrchain.hpp"
 
@@ -41,7 +43,7 @@ TEST_CASE("regime intervals --model models/resonant_chain.toml equals the defaul
 }
 
 TEST_CASE("a scratch model file goes through regime map, intervals and thresholds") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-user-model-regime";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-user-model-regime-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "cache");
   {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include "../support/run_lrchain.hpp"
@@ -13,7 +15,7 @@
 namespace fs = std::filesystem;
 
 TEST_CASE("a scratch model file is compiled once into the cache and evaluated by lrchain coeffs") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-user-model-test";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-user-model-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "cache");
   {
@@ -59,7 +61,7 @@ TEST_CASE("a scratch model file is compiled once into the cache and evaluated by
 }
 
 TEST_CASE("a bad user model file exits 2 with one line naming the file and line") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-user-model-bad";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-user-model-bad-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   {
@@ -78,7 +80,7 @@ TEST_CASE("a bad user model file exits 2 with one line naming the file and line"
 }
 
 TEST_CASE("without the C++ compiler a user model is evaluated through GiNaC with one warning line") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-user-model-no-compiler";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-user-model-no-compiler-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "cache");
   {

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <string>
+#include <unistd.h>
 
 #include "lrchain/config/strict_toml.hpp"
 #include "lrchain/process.hpp"
@@ -167,7 +169,7 @@ TEST_CASE("config: every message is one line, whatever the key or value holds") 
 }
 
 TEST_CASE("config: missing, directory, empty, binary, malformed files are one located ConfigError") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-config-strict-test";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-config-strict-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "sub.toml");
   const auto write = [&](const std::string& name, const std::string& bytes) {
@@ -272,7 +274,7 @@ TEST_CASE("config: closest_match finds typos only") {
 }
 
 TEST_CASE("config: simulate --config with a bad file exits 2 with one line and writes nothing") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-config-cli-test";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-config-cli-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path out = dir / "out";

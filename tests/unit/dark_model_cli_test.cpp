@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <string>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -18,7 +20,7 @@ namespace {
 const fs::path source_dir = LRCHAIN_SOURCE_DIR;
 
 void check_refused(const std::vector<std::string>& args, const std::string& needle) {
-  const fs::path out = fs::temp_directory_path() / "lrchain-dark-model-refused";
+  const fs::path out = fs::temp_directory_path() / ("lrchain-dark-model-refused-" + std::to_string(::getpid()));
   fs::remove_all(out);
   std::vector<std::string> argv = args;
   argv.insert(argv.end(), {"--quiet", "--out", out.string()});
@@ -60,7 +62,7 @@ TEST_CASE("dark --model: bad input exits 2 with one line, nothing written" * doc
 }
 
 TEST_CASE("dark --model: a klein_gordon breather with its model provenance and profile" * doctest::test_suite("fast")) {
-  const fs::path out = fs::temp_directory_path() / "lrchain-dark-model-solve";
+  const fs::path out = fs::temp_directory_path() / ("lrchain-dark-model-solve-" + std::to_string(::getpid()));
   fs::remove_all(out);
   const auto r = run_lrchain({"dark", "solve", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b",
                               "1.17", "--sites", "31", "--quiet", "--figure-format", "png", "--out", out.string()},

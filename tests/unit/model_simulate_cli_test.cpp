@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -20,7 +22,7 @@ namespace {
 const fs::path source_dir = LRCHAIN_SOURCE_DIR;
 
 void check_refused(const std::vector<std::string>& args, const std::string& needle) {
-  const fs::path out = fs::temp_directory_path() / "lrchain-model-simulate-refused";
+  const fs::path out = fs::temp_directory_path() / ("lrchain-model-simulate-refused-" + std::to_string(::getpid()));
   fs::remove_all(out);
   std::vector<std::string> argv = args;
   argv.insert(argv.end(), {"--out", out.string()});

@@ -1,6 +1,7 @@
 // run_program (lrchain/process.hpp): argv passed as data, never through a shell.
 #include <doctest/doctest.h>
 #include <signal.h>
+#include <string>
 #include <unistd.h>
 
 #include <filesystem>
@@ -11,7 +12,7 @@
 namespace fs = std::filesystem;
 
 TEST_CASE("run_program passes shell metacharacters as plain arguments") {
-  const fs::path dir = fs::temp_directory_path() / "lrchain-process-test";
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-process-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string evil = "$(touch INJECTED); echo 'x' \"y\" ";

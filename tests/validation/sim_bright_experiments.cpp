@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <unistd.h>
 
 #include "../support/run_lrchain.hpp"
 #include "lrchain/sim/bright_run.hpp"
@@ -91,7 +92,7 @@ TEST_CASE("exp3: theta=3pi/5 near theta_c keeps moving at c_+ but the error grow
 }
 
 TEST_CASE("CLI: simulate --config exp1 writes JSON, CSV, space-time data, gnuplot scripts and PNGs" * doctest::test_suite("validation")) {
-  const auto dir = std::filesystem::temp_directory_path() / "lrchain_sim_cli_exp1";
+  const auto dir = std::filesystem::temp_directory_path() / ("lrchain_sim_cli_exp1-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   const auto run = lrchain::test::run_lrchain(
       {"simulate", "--config", std::string(LRCHAIN_SOURCE_DIR) + "/examples/exp1_optical_pi2.toml", "--out",

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <unistd.h>
 
 #include "../support/run_lrchain.hpp"
 #include "lrchain/coefficients.hpp"
@@ -86,7 +87,7 @@ TEST_CASE("exp7: modulated acoustic wave (eq:cimi): long transient, instability 
 }
 
 TEST_CASE("exp7 checkpoint/restart: 0->1000 then restart ->2000 equals one run 0->2000" * doctest::test_suite("validation")) {
-  const auto dir = std::filesystem::temp_directory_path() / "lrchain_sim_more_ckpt";
+  const auto dir = std::filesystem::temp_directory_path() / ("lrchain_sim_more_ckpt-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   auto c = load_modulated_config(example("exp7_modulated_dark.toml")).run;
@@ -119,7 +120,7 @@ TEST_CASE("exp7 checkpoint/restart: 0->1000 then restart ->2000 equals one run 0
 }
 
 TEST_CASE("CLI: simulate modulated writes checkpoint, --restart continues, drive refuses omega0 outside the optical band" * doctest::test_suite("validation")) {
-  const auto dir = std::filesystem::temp_directory_path() / "lrchain_sim_more_cli";
+  const auto dir = std::filesystem::temp_directory_path() / ("lrchain_sim_more_cli-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   int status = 0;
   auto out = run_cli("simulate modulated --t-end 300 --checkpoint-every 100 --out " + dir.string() + "/a --json", status);
