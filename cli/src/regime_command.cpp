@@ -822,7 +822,7 @@ void register_regime(CLI::App& app) {
   th->add_option("--axis-range", ta->axis_range, "with --model: lo hi of the scan (default: its declared range when bounded)")
       ->expected(2);
   th->add_option("--branch", ta->branch, "with --model: a branch name (default: every branch)");
-  add_examples(*th, {"lrchain regime thresholds", "lrchain regime thresholds --model models/fput.toml --axis b"});
+  add_examples(*th, {"lrchain regime thresholds", "lrchain regime thresholds --model models/fput.toml --axis b --axis-range 0.1 2"});
   th->callback([ta, th] {
     if (ta->model.file.empty()) {
       if (!ta->model.set.empty() || !ta->axis.empty() || !ta->axis_range.empty() || !ta->branch.empty())

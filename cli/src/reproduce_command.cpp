@@ -263,7 +263,7 @@ void register_reproduce(CLI::App& app) {
       "quotes next to ours (pass / deviates / erratum / unresolved) and each figure with the paper figure it corresponds to. "
       "The report is written to DIR.partial and renamed to DIR when complete.");
   auto* quick = sub->add_flag("--quick", a->quick,
-                              "smaller lattices and shorter runs where that keeps the conclusion (default; ~2 min on 2 cores)");
+                              "smaller lattices and shorter runs where that keeps the conclusion (default; under a minute on 2 cores)");
   auto* full = sub->add_flag("--full", a->full, "the paper's lattice sizes and run times (tens of minutes)");
   quick->excludes(full);
   sub->add_option("--out", a->out, "report directory (default lrchain-report; must be new, empty or an earlier report, which is replaced; "
