@@ -153,33 +153,37 @@ sim::RunControl make_control(ProgressBar& bar) {
 }
 
 // How a run reports: the JSON summary on one line (--json), figures drawn or not (--no-figures).
-// `sites_key`: the run's name for the lattice size that --sites sets (N, beads), so that a refusal
-// names the option the user gave; empty for a --config run, whose refusals name the TOML key.
+// `option_names`: the run's names (N, beads, t-m, b) of what the subcommand's options spell out
+// (sites, switch-off-time, modulation-depth), so that a refusal names the option the user gave;
+// empty for a --config run, whose refusals name the TOML key.
 struct ReportStyle {
   bool compact_json = false;
   bool figures = true;
-  std::string sites_key;
+  std::vector<std::pair<std::string, std::string>> option_names;
 };
 
-// The style of a subcommand run whose --sites sets the run's `key`.
-ReportStyle with_sites_key(ReportStyle style, const std::string& key) {
-  style.sites_key = key;
+// The style of a subcommand run whose options have other names than the run's (run name, option).
+ReportStyle with_option_names(ReportStyle style, std::vector<std::pair<std::string, std::string>> names) {
+  style.option_names = std::move(names);
   return style;
 }
 
 // Validates a run before anything is written: every option, counts, memory, the output directory;
-// a refusal of the lattice size names --sites when that is what the user gave.
+// a refusal names the option the user gave (--sites where the run says N or beads).
 template <class Config>
 void validate_run(const Config& cfg, const std::string& out, const ReportStyle& style) {
   try {
     sim::validate(cfg);
     check_output(cfg, out);
   } catch (const InvalidParameter& e) {
-    if (style.sites_key.empty() || e.parameter() != style.sites_key) throw;
-    std::string message = std::string(e.what()).substr(("invalid " + e.parameter() + ": ").size());
-    for (std::size_t at; (at = message.find("lower " + style.sites_key)) != std::string::npos;)
-      message.replace(at, 6 + style.sites_key.size(), "lower --sites");
-    throw InvalidParameter("sites", message);
+    for (const auto& [name, option] : style.option_names) {
+      if (e.parameter() != name) continue;
+      std::string message = std::string(e.what()).substr(("invalid " + name + ": ").size());
+      for (std::size_t at; (at = message.find("lower " + name)) != std::string::npos;)
+        message.replace(at, 6 + name.size(), "lower --" + option);
+      throw InvalidParameter(option, message);
+    }
+    throw;
   }
 }
 
@@ -355,7 +359,7 @@ void register_simulate(CLI::App& app) {
     cfg->restart_file = *restart;
     cfg->checkpoint_file = *checkpoint;
     cfg->max_memory = *max_memory;
-    run_bright_and_report(*cfg, *out, with_sites_key(*style, "N"));
+    run_bright_and_report(*cfg, *out, with_option_names(*style, {{"N", "sites"}}));
   });
 
   // simulate drive (experiment 6, Sec. 4.3)
@@ -391,7 +395,7 @@ void register_simulate(CLI::App& app) {
     dcfg->restart_file = *restart;
     dcfg->checkpoint_file = *checkpoint;
     dcfg->max_memory = *max_memory;
-    run_drive_and_report(*dcfg, *out, with_sites_key(*style, "beads"));
+    run_drive_and_report(*dcfg, *out, with_option_names(*style, {{"beads", "sites"}, {"t-m", "switch-off-time"}}));
   });
 
   // simulate modulated (experiment 7, Sec. 5.1)
@@ -424,7 +428,7 @@ void register_simulate(CLI::App& app) {
     mcfg->restart_file = *restart;
     mcfg->checkpoint_file = *checkpoint;
     mcfg->max_memory = *max_memory;
-    run_modulated_and_report(*mcfg, *out, with_sites_key(*style, "N"));
+    run_modulated_and_report(*mcfg, *out, with_option_names(*style, {{"N", "sites"}, {"b", "modulation-depth"}}));
   });
 
   sim_cmd->callback([=] {
