@@ -13,6 +13,7 @@
 #include "lrchain/coefficients.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/model.hpp"
+#include "help_text.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
 
@@ -45,7 +46,8 @@ nlohmann::json to_json(const NlsCoefficients& c) {
           {"regime", std::string(to_string(c.regime))}};
 }
 
-std::string cell(double v) { return std::isfinite(v) ? fmt::format("{:>12.6g}", v) : fmt::format("{:>12}", "singular"); }
+// One column of the --table output: a space and 12 characters, right-aligned under its header.
+std::string cell(double v) { return std::isfinite(v) ? fmt::format(" {:>12.6g}", v) : fmt::format(" {:>12}", "singular"); }
 
 void print_text(const NlsCoefficients& c, Branch b, const Params& p) {
   fmt::print("{} branch, theta = {:.12g} (alpha={:g}, delta0={:.12g}, kappa={:g}, rho={:.12g})\n", to_string(b),
@@ -102,8 +104,8 @@ void print_model_table(const Model& m) {
                "omega", "c", "omega''", "beta", "h", "lambda", "h_tilde", "regime");
     for (const auto& [label, theta] : thetas) {
       const NlsCoefficients c = coefficients(m, b, theta);
-      fmt::print("{:>7} {}{}{}{}{}{}{}  {}\n", label, cell(c.omega), cell(c.group_velocity), cell(c.curvature),
-                 cell(c.beta), cell(c.h), d.mean_flow ? cell(c.lambda) : fmt::format("{:>12}", "none"), cell(c.h_tilde),
+      fmt::print("{:>7}{}{}{}{}{}{}{}  {}\n", label, cell(c.omega), cell(c.group_velocity), cell(c.curvature),
+                 cell(c.beta), cell(c.h), d.mean_flow ? cell(c.lambda) : fmt::format(" {:>12}", "none"), cell(c.h_tilde),
                  to_string(c.regime));
     }
   }
@@ -121,7 +123,7 @@ void print_table(const Params& p) {
                "omega", "c", "omega''", "beta", "h", "lambda", "h_tilde", "regime");
     for (const auto& [label, theta] : thetas) {
       const NlsCoefficients c = coefficients(p, b, theta);
-      fmt::print("{:>7} {}{}{}{}{}{}{}  {}\n", label, cell(c.omega), cell(c.group_velocity), cell(c.curvature),
+      fmt::print("{:>7}{}{}{}{}{}{}{}  {}\n", label, cell(c.omega), cell(c.group_velocity), cell(c.curvature),
                  cell(c.beta), cell(c.h), cell(c.lambda), cell(c.h_tilde), to_string(c.regime));
     }
   }
@@ -136,15 +138,20 @@ void register_coeffs(CLI::App& app) {
       "NLS coefficients of the modulation equations (Sec. 3): omega, group velocity c, curvature omega'',\n"
       "gamma, beta, h, lambda, h_tilde = h - lambda beta, the two non-resonance values and the regime\n"
       "(focusing if omega'' h_tilde < 0). Dimensionless units of Sec. 2.");
-  add_number(*cmd, "--theta", opts->theta, "carrier wavenumber in (-pi, pi], e.g. pi/2 (required unless --table)");
+  add_number(*cmd, "--theta", opts->theta, "carrier wavenumber in (-pi, pi], e.g. pi/2 (required unless --table; no default)");
   add_model_options(*cmd, opts->params, /*rho_required=*/false);
   add_model_file_options(*cmd, opts->model);
   cmd->add_option("--branch", opts->branch,
                   "dispersion branch: optical (omega_+) or acoustic (omega_-); other models: the names `lrchain "
-                  "derive` lists (acoustic/optical or branch0, branch1, ...)")
+                  "derive` lists (acoustic/optical or branch0, branch1, ...) (required unless --table; no default)")
       ->type_name("NAME");
-  cmd->add_flag("--json", opts->json, "print one JSON object (singular coefficients as null)");
-  cmd->add_flag("--table", opts->table, "print the table of both branches at theta = pi/8 ... pi");
+  cmd->add_flag("--json", opts->json,
+                "print one JSON object on one line instead of the text: theta, branch, the coefficients (singular "
+                "ones as null), the model with its parameter values, provenance");
+  cmd->add_flag("--table", opts->table, "print the table of every branch at theta = pi/8 ... pi instead");
+  add_examples(*cmd, {"lrchain coeffs --branch optical --theta pi/2 --rho 1/3",
+                      "lrchain coeffs --branch acoustic --theta 3*pi/5 --rho 1 --json",
+                      "lrchain coeffs --table --rho 10"});
   cmd->callback([opts, cmd] {
     if (opts->model.file.empty()) validate(opts->params);  // the resonant chain's own messages
     const Model model = load_selected_model(opts->model, *cmd, opts->params);
@@ -167,6 +174,7 @@ void register_coeffs(CLI::App& app) {
       const NlsCoefficients c = coefficients(opts->params, b, opts->theta);
       if (opts->json) {
         nlohmann::json j = to_json(c);
+        j["branch"] = std::string(to_string(b));
         j["model"] = model_json(model);
         j["provenance"] = provenance_json();
         std::printf("%s\n", j.dump().c_str());

@@ -506,6 +506,7 @@ void run_evolve(const DarkArgs& a) {
 // A model's dark job after every check: the model, its kernels, the defocusing edge and seed.
 struct ModelDarkJob {
   Model model;
+  LatticeCode code;  // compiled-in, or compiled at run time for a user's file (kept loaded here)
   const lrchain_lattice_kernels* kernels;
   ModelDarkAnsatz ansatz;
 };
@@ -515,8 +516,9 @@ struct ModelDarkJob {
 ModelDarkJob validate_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
   parse_dark_center(a.center);
   parse_shooting_mode(a.mode);
-  Model model = load_selected_model(a.model, cmd, a.p);
-  const lrchain_lattice_kernels& kernels = sim::lattice_kernels_of(model);
+  Model model = load_selected_model(a.model, cmd, a.p, true);
+  LatticeCode code = lattice_kernels_for(a.model, model);
+  const lrchain_lattice_kernels& kernels = *code.kernels;
   const std::optional<std::size_t> given = a.branch_given ? std::optional(model.branch(a.branch)) : std::nullopt;
   ModelDarkAnsatz ansatz = make_model_dark_ansatz(model, kernels, defocusing_edge(model, given), a.omega_b);
   check_dark_sites(ansatz, a.sites);
@@ -548,7 +550,7 @@ ModelDarkJob validate_model_job(const DarkArgs& a, DarkJob job, const CLI::App& 
       throw InputError("--out '" + a.out + "' exists and is not a directory");
     sim::check_output_space(e, a.out, "out", "choose another --out");
   }
-  return {std::move(model), &kernels, std::move(ansatz)};
+  return {std::move(model), std::move(code), &kernels, std::move(ansatz)};
 }
 
 // Names of the lattice variables (CSV columns): strains r, w_f of translation-invariant models,

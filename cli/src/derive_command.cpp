@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "help_text.hpp"
 #include "lrchain/derivation/model_derivation.hpp"
 #include "lrchain/errors.hpp"
 
@@ -91,9 +92,12 @@ void register_derive(CLI::App& app) {
       "the branches, c, gamma, omega'', beta, h, lambda, h_tilde in symbolic form, and the check report.\n"
       "Exit 1 when a check fails, 2 for a bad model file or parameter value.");
   cmd->add_option("--model", opts->model, "model file (TOML), e.g. models/klein_gordon.toml")->required()->type_name("FILE");
-  cmd->add_option("--set", opts->set, "parameter value, repeatable: --set rho=1/3 --set kappa=2")->type_name("NAME=VALUE");
-  cmd->add_flag("--json", opts->json, "print one JSON object");
-  cmd->add_flag("--latex", opts->latex, "write expressions in LaTeX");
+  cmd->add_option("--set", opts->set, "parameter value, repeatable: --set rho=1/3 --set kappa=2 (default: the model file's "
+                  "defaults)")->type_name("NAME=VALUE");
+  cmd->add_flag("--json", opts->json, "print one JSON object instead of the text report (default: text)");
+  cmd->add_flag("--latex", opts->latex, "write expressions in LaTeX (default: plain text)");
+  add_examples(*cmd, {"lrchain derive --model models/klein_gordon.toml",
+                      "lrchain derive --model models/fput.toml --set a=1/4 --set b=1/2 --json"});
   cmd->callback([opts] {
     const derivation::Symbols symbols;
     derivation::ModelFile file = derivation::load_model_file(opts->model);

@@ -3,8 +3,10 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "commands.hpp"
+#include "help_text.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/exit_codes.hpp"
 #include "lrchain/provenance.hpp"
@@ -16,11 +18,7 @@ int main(int argc, char** argv) {
       "sqrt(m1/(A R^(alpha-1))), lengths in units of R). Numbers accept 0.25, 1e-3, 1/3, 3*pi/5."};
   app.require_subcommand(1);
   app.set_version_flag("--version", lrchain::version_line(), "print the lrchain version and git commit, and exit");
-  app.footer(
-      "Exit codes: 0 success; 1 another error (e.g. a file could not be written); 2 bad input or a\n"
-      "job too large for the machine (one line on stderr names the option; nothing written);\n"
-      "3 numerical failure (blow-up of a lattice run, Newton not converging; also in the JSON);\n"
-      "130/143 interrupted by SIGINT/SIGTERM.");
+  app.footer(lrchain::cli::exit_codes_text());  // inherited by the subcommands, which add their examples
   lrchain::cli::register_coeffs(app);
   lrchain::cli::register_regime(app);
   lrchain::cli::register_simulate(app);
@@ -30,12 +28,16 @@ int main(int argc, char** argv) {
 #ifdef LRCHAIN_WITH_DERIVE
   lrchain::cli::register_derive(app);
 #endif
+  lrchain::cli::add_examples(app, {"lrchain coeffs --branch optical --theta pi/2 --rho 1/3",
+                                   "lrchain reproduce --quick --out report"});
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // --help exits 0; usage errors exit 2 with CLI11's one-line message.
     if (e.get_exit_code() == 0) return app.exit(e);
-    std::fprintf(stderr, "lrchain: %s\n", e.what());
+    // A command that needs a subcommand names the ones it has.
+    const std::string missing = e.get_name() == "RequiredError" ? lrchain::cli::missing_subcommand_message(app) : "";
+    std::fprintf(stderr, "%s\n", missing.empty() ? ("lrchain: " + std::string(e.what())).c_str() : missing.c_str());
     return lrchain::exit_code::invalid_input;
   } catch (const lrchain::InputError& e) {
     std::fprintf(stderr, "lrchain: %s\n", e.what());

@@ -35,7 +35,7 @@ void add_model_file_options(CLI::App& cmd, ModelSelection& selection) {
   cmd.add_option("--model", selection.file,
                  "lattice model file (docs/models.md), e.g. models/klein_gordon.toml (default: the resonant chain)")
       ->type_name("FILE");
-  cmd.add_option("--set", selection.set, "model parameter, repeatable: --set w0=2 --set b=1/3")->type_name("NAME=VALUE");
+  cmd.add_option("--set", selection.set, "model parameter, repeatable: --set w0=2 --set b=1/3 (default: the model file's defaults)")->type_name("NAME=VALUE");
 }
 
 Model resonant_chain_model(const Params& p) {

@@ -29,6 +29,7 @@
 #include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/output_lock.hpp"
+#include "help_text.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
 
@@ -180,7 +181,7 @@ void run_intervals(const IntervalsArgs& a, const CLI::App& cmd) {
   out["boundaries"] = roots;
   out["theta_tolerance"] = 1e-12;
   out["provenance"] = provenance_json();
-  std::cout << out.dump(2) << '\n';
+  std::cout << out.dump(a.json_flag ? -1 : 2) << '\n';
 }
 
 // ---- regime map -----------------------------------------------------------------------------
@@ -697,10 +698,10 @@ void run_model_thresholds(const ThresholdsArgs& a, const Model& m) {
                      {"events", ev},
                      {"seconds", secs}});
   }
-  std::cout << json{{"model", model_json(m)}, {"scans", scans}, {"provenance", provenance_json()}}.dump(2) << '\n';
+  std::cout << json{{"model", model_json(m)}, {"scans", scans}, {"provenance", provenance_json()}}.dump(a.json_flag ? -1 : 2) << '\n';
 }
 
-void run_thresholds(int scan_points) {
+void run_thresholds(int scan_points, bool compact) {
   json scenarios = json::array();
   for (auto s : paper_threshold_scenarios()) {
     if (scan_points > 0) s.scan.n = scan_points;
@@ -728,7 +729,7 @@ void run_thresholds(int scan_points) {
                          {"events", ev},
                          {"seconds", secs}});
   }
-  std::cout << json{{"scenarios", scenarios}, {"provenance", provenance_json()}}.dump(2) << '\n';
+  std::cout << json{{"scenarios", scenarios}, {"provenance", provenance_json()}}.dump(compact ? -1 : 2) << '\n';
 }
 
 }  // namespace
@@ -739,6 +740,8 @@ void register_regime(CLI::App& app) {
       "Focusing/defocusing regimes of the NLS limit (Sec. 3.3, Figs. 2, 4, 5): focusing "
       "wavenumber intervals (omega'' h_tilde < 0), regime maps and special parameter values.");
   regime->require_subcommand(1);
+  add_examples(*regime, {"lrchain regime intervals --branch optical --rho 1/3",
+                         "lrchain regime map --plane theta-rho --branch both --out out/map"});
 
   // intervals
   auto ia = std::make_shared<IntervalsArgs>();
@@ -755,7 +758,8 @@ void register_regime(CLI::App& app) {
                  "its only branch)");
   add_integer(*in, "--samples", ia->samples, 8, 10'000'000,
               "theta samples used to bracket the zeros (default 2048)");
-  in->add_flag("--json", ia->json_flag, "print JSON (the default and only format)");
+  in->add_flag("--json", ia->json_flag, "print the JSON on one line (default: indented)");
+  add_examples(*in, {"lrchain regime intervals --branch acoustic --rho 1 --delta0 4/9"});
   in->callback([ia, in] { run_intervals(*ia, *in); });
 
   // map
@@ -781,9 +785,10 @@ void register_regime(CLI::App& app) {
   mp->add_option("--plane", ma->plane, "theta-rho (default) or delta0-omega");
   mp->add_option("--branch", ma->branch,
                  "optical, acoustic or both (default both; theta-rho only); with --model: a branch name or both/all");
-  mp->add_option("--out", ma->out, "output directory (created)")->required();
-  mp->add_option("--rho-range", ma->rho_range, "theta-rho: rho lo hi")->expected(2);
-  mp->add_option("--delta0-range", ma->delta0_range, "delta0-omega: delta0 lo hi")->expected(2);
+  mp->add_option("--out", ma->out, "output directory (created)")->required()->type_name("DIR");
+  mp->add_option("--rho-range", ma->rho_range,
+                 "theta-rho: rho lo hi (default 0.01 30 for optical or both, 0.01 2.5 for acoustic)")->expected(2);
+  mp->add_option("--delta0-range", ma->delta0_range, "delta0-omega: delta0 lo hi (default 0.001 1)")->expected(2);
   mp->add_option("--omega-range", ma->omega_range,
                  "delta0-omega: omega lo hi, each in [0, twice the top of the optical band] (default: the band over the delta0 range)")
       ->expected(2);
@@ -794,6 +799,8 @@ void register_regime(CLI::App& app) {
   add_figure_format(*mp);
   mp->add_flag("--no-curves", ma->no_curves, "skip tracing the boundary curves");
   mp->add_flag("--no-png", ma->no_png, "write the .gp script but do not run gnuplot");
+  add_examples(*mp, {"lrchain regime map --plane theta-rho --branch both --out out/fig2",
+                      "lrchain regime map --plane delta0-omega --branch optical --rho 3 --out out/fig4"});
   mp->callback([ma, mp] { run_map_command(*ma, *mp); });
 
   // thresholds
@@ -808,19 +815,20 @@ void register_regime(CLI::App& app) {
       "With --model FILE: the same events along one parameter of that model (--axis, --axis-range, --branch).");
   add_integer(*th, "--scan", ta->scan, 10, 100'000,
               "scan points per scenario (default: built-in 300-400; with --model 300)");
-  th->add_flag("--json", ta->json_flag, "print JSON (the default and only format)");
+  th->add_flag("--json", ta->json_flag, "print the JSON on one line (default: indented)");
   add_model_file_options(*th, ta->model);
   th->add_option("--axis", ta->axis, "with --model: the scanned parameter (default rho / the model's first)")
       ->type_name("NAME");
   th->add_option("--axis-range", ta->axis_range, "with --model: lo hi of the scan (default: its declared range when bounded)")
       ->expected(2);
   th->add_option("--branch", ta->branch, "with --model: a branch name (default: every branch)");
+  add_examples(*th, {"lrchain regime thresholds", "lrchain regime thresholds --model models/fput.toml --axis b --axis-range 0.1 2"});
   th->callback([ta, th] {
     if (ta->model.file.empty()) {
       if (!ta->model.set.empty() || !ta->axis.empty() || !ta->axis_range.empty() || !ta->branch.empty())
         throw InvalidParameter("model", "--set, --axis, --axis-range and --branch need --model FILE (without it "
                                         "the paper's scenarios run)");
-      return run_thresholds(ta->scan);
+      return run_thresholds(ta->scan, ta->json_flag);
     }
     run_model_thresholds(*ta, load_selected_model(ta->model, *th, Params{}));
   });

@@ -14,6 +14,7 @@
 
 #include "commands.hpp"
 #include "figure_format_option.hpp"
+#include "help_text.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/figure_format.hpp"
@@ -262,17 +263,22 @@ void register_reproduce(CLI::App& app) {
       "quotes next to ours (pass / deviates / erratum / unresolved) and each figure with the paper figure it corresponds to. "
       "The report is written to DIR.partial and renamed to DIR when complete.");
   auto* quick = sub->add_flag("--quick", a->quick,
-                              "smaller lattices and shorter runs where that keeps the conclusion (default; ~2 min on 2 cores)");
+                              "smaller lattices and shorter runs where that keeps the conclusion (default; under a minute on 2 cores)");
   auto* full = sub->add_flag("--full", a->full, "the paper's lattice sizes and run times (tens of minutes)");
   quick->excludes(full);
   sub->add_option("--out", a->out, "report directory (default lrchain-report; must be new, empty or an earlier report, which is replaced; "
-                  "never the current directory or a parent of it)");
+                  "never the current directory or a parent of it)")->type_name("DIR");
   sub->add_option("--jobs", a->jobs, "steps run at the same time (default 0: one per core)");
-  sub->add_option("--only", a->only, "run only these steps (ids from --list)")->delimiter(',');
+  sub->add_option("--only", a->only, "run only these steps, comma-separated ids from --list (default: every step)")
+      ->delimiter(',')->type_name("ID,...");
   sub->add_flag("--list", a->list, "list the steps and exit");
-  sub->add_option("--examples", a->examples, "directory of the experiment configs (default: the source tree's examples/)");
-  sub->add_option("--errata", a->errata, "docs/paper-errata.md to include (default: the source tree's)");
+  sub->add_option("--examples", a->examples, "directory of the experiment configs (default: the source tree's examples/, "
+                  "else the installed share/lrchain/examples)")->type_name("DIR");
+  sub->add_option("--errata", a->errata, "docs/paper-errata.md to include (default: the source tree's, else the installed "
+                  "share/lrchain/docs/paper-errata.md)")->type_name("FILE");
   add_figure_format(*sub);
+  add_examples(*sub, {"lrchain reproduce --quick --out report", "lrchain reproduce --only exp1,dark_solutions --out report-part",
+                      "lrchain reproduce --full --jobs 2 --out report-full"});
   sub->callback([a] { run_reproduce(*a); });
 }
 

@@ -30,6 +30,7 @@
 #include "lrchain/sim/output_lock.hpp"
 #include "lrchain/sim/experiment_config.hpp"
 #include "lrchain/sim/more_experiment_config.hpp"
+#include "help_text.hpp"
 #include "options.hpp"
 #include "simulate_model_commands.hpp"
 #include "stop_signals.hpp"
@@ -152,21 +153,49 @@ sim::RunControl make_control(ProgressBar& bar) {
   return c;
 }
 
-// Runs one experiment with SIGINT/SIGTERM handling, writes its JSON summary and outputs (also when
-// interrupted: the outputs so far, consistent with the checkpoint), prints the summary, then ends
-// like an interrupted run (130/143) or a blown-up one (3) where that applies.
 // How a run reports: the JSON summary on one line (--json), figures drawn or not (--no-figures).
+// `option_names`: the run's names (N, beads, t-m, b) of what the subcommand's options spell out
+// (sites, switch-off-time, modulation-depth), so that a refusal names the option the user gave;
+// empty for a --config run, whose refusals name the TOML key.
 struct ReportStyle {
   bool compact_json = false;
   bool figures = true;
   std::string format = "csv";  // --format: csv (data files and figures) or hdf5 (result.h5)
+  std::vector<std::pair<std::string, std::string>> option_names;
 };
 
+// The style of a subcommand run whose options have other names than the run's (run name, option).
+ReportStyle with_option_names(ReportStyle style, std::vector<std::pair<std::string, std::string>> names) {
+  style.option_names = std::move(names);
+  return style;
+}
+
+// Validates a run before anything is written: every option, counts, memory, the output directory;
+// a refusal names the option the user gave (--sites where the run says N or beads).
+template <class Config>
+void validate_run(const Config& cfg, const std::string& out, const ReportStyle& style) {
+  try {
+    sim::validate(cfg);
+    check_output(cfg, out);
+  } catch (const InvalidParameter& e) {
+    for (const auto& [name, option] : style.option_names) {
+      if (e.parameter() != name) continue;
+      std::string message = std::string(e.what()).substr(("invalid " + name + ": ").size());
+      for (std::size_t at; (at = message.find("lower " + name)) != std::string::npos;)
+        message.replace(at, 6 + name.size(), "lower --" + option);
+      throw InvalidParameter(option, message);
+    }
+    throw;
+  }
+}
+
+// Runs one experiment with SIGINT/SIGTERM handling, writes its JSON summary and outputs (also when
+// interrupted: the outputs so far, consistent with the checkpoint), prints the summary, then ends
+// like an interrupted run (130/143) or a blown-up one (3) where that applies.
 template <class Config, class Run, class Write>
 void run_and_report(const Config& cfg, const std::string& out, const ReportStyle& style, Run run, Write write) {
   const auto wall0 = std::chrono::steady_clock::now();
-  sim::validate(cfg);  // every option, counts and memory: before anything is created
-  check_output(cfg, out);
+  validate_run(cfg, out, style);  // every option, counts and memory: before anything is created
   std::optional<sim::OutputLock> lock;  // one run per --out, taken after validation
   if (!out.empty()) lock.emplace(out);
   refuse_earlier_checkpoint(cfg);  // (after the lock: a run still writing it is named by the lock)
@@ -212,6 +241,22 @@ void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& ou
                  [](const std::string& d, const auto& r, const auto& j, bool f) { return sim::write_modulated_outputs(d, r, j, f); });
 }
 
+// --sites of a bright run: the odd number 2N + 1 of strain sites n = -N..N, kept as the half-width N
+// of the run (and of the TOML key N); refused (exit 2) when even or out of [5, 2e15 + 1].
+void add_strain_sites(CLI::App& app, long& half_width) {
+  auto* opt = app.add_option_function<std::string>(
+      "--sites",
+      [&half_width](const std::string& text) {
+        const std::int64_t sites = checked_integer(parse_number(text, "sites"), "sites", 5, 2'000'000'000'000'001);
+        if (sites % 2 == 0)
+          throw InvalidParameter("sites", "must be odd: the strain sites are n = -N..N, 2N + 1 of them (got " +
+                                              std::to_string(sites) + ")");
+        half_width = static_cast<long>((sites - 1) / 2);
+      },
+      "odd number of strain sites 2N + 1, n = -N..N (default 1001, N = 500; TOML key N is the half-width)");
+  opt->type_name("INT");
+}
+
 // --stepper, --abs-tol, --rel-tol, --dt; with o.automatic_dt the fixed-step steppers choose their
 // step themselves unless --dt is given (the callback clears automatic_dt then).
 void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::string& stepper) {
@@ -236,19 +281,24 @@ void register_simulate(CLI::App& app) {
   auto config = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto style = std::make_shared<ReportStyle>();
-  sim_cmd->add_option("--config", *config, "run the experiment in this TOML file (examples/*.toml)");
-  sim_cmd->add_option("--out", *out, "output directory for data and figures");
-  sim_cmd->add_flag("--json", style->compact_json, "print the JSON summary on one line");
+  sim_cmd->add_option("--config", *config,
+                      "run the experiment in this TOML file (docs/configs.md, examples/*.toml; default: none, "
+                      "give a subcommand instead)")->type_name("FILE");
+  sim_cmd->add_option("--out", *out,
+                      "output directory for data and figures (default: a config's [output] dir; for a subcommand "
+                      "none: only the JSON summary is printed)")->type_name("DIR");
+  sim_cmd->add_flag("--json", style->compact_json, "print the JSON summary on one line (default: indented)");
   sim_cmd->add_flag("--no-figures{false}", style->figures,
                     "write the data and summary.json to --out but no figures (no gnuplot run)");
   auto restart = std::make_shared<std::string>();
   auto checkpoint = std::make_shared<std::string>();
   sim_cmd->add_option("--restart", *restart,
                       "continue the run from this checkpoint file (written with the same physics, "
-                      "lattice and stepper; the outputs cover the whole run)");
+                      "lattice and stepper; the outputs cover the whole run; default: none, a new run)")->type_name("FILE");
   sim_cmd->add_option("--checkpoint", *checkpoint,
                       "checkpoint file, written periodically, at the end and on SIGINT/SIGTERM "
-                      "(default OUT/checkpoint.bin: on SIGINT/SIGTERM, and periodically with --checkpoint-every)");
+                      "(default OUT/checkpoint.bin: on SIGINT/SIGTERM, and periodically with --checkpoint-every)")
+      ->type_name("FILE");
   auto max_memory = std::make_shared<double>(0.0);
   add_max_memory(*sim_cmd, *max_memory);
   add_figure_format(*sim_cmd);
@@ -262,7 +312,11 @@ void register_simulate(CLI::App& app) {
     auto compact = std::shared_ptr<bool>(style, &style->compact_json);
     auto figures = std::shared_ptr<bool>(style, &style->figures);
     register_simulate_ring(*sim_cmd, {out, compact, figures});
+    add_examples(*sim_cmd->get_subcommand("ring"),
+                 {"lrchain simulate ring --model models/fput.toml --branch acoustic --theta pi/2 --out out/ring-fput"});
   }
+  add_examples(*sim_cmd, {"lrchain simulate --config examples/exp1_optical_pi2.toml --out out/exp1",
+                          "lrchain simulate --config examples/models/fput_bright.toml --out out/fput"});
 
   // simulate bright
   auto cfg = std::make_shared<sim::BrightRunConfig>();
@@ -272,28 +326,29 @@ void register_simulate(CLI::App& app) {
       "bright", "Lattice run from the NLS bright breather (eq:focus_app, eq:focus_ini), Sec. 4.2");
   auto bright_branch = std::make_shared<std::string>();
   bright->add_option("--branch", *bright_branch, "optical or acoustic (with --model: a branch of the model)")
-      ->required()->type_name("B");
-  add_number(*bright, "--theta", cfg->theta, "carrier wavenumber in (0, pi]")->required();
+      ->required()->type_name("NAME");
+  add_number(*bright, "--theta", cfg->theta, "carrier wavenumber in (0, pi], e.g. pi/2")->required();
   add_model_options(*bright, cfg->params, false);
   auto bright_model = std::make_shared<ModelSelection>();
   add_model_file_options(*bright, *bright_model);
   bright->add_option_function<std::string>("--detuning", [cfg](const std::string& s) {
     cfg->detuning = parse_number(s, "detuning");
   }, "omega_b - omega (default sign(h_tilde)*1e-4)")->type_name("NUM");
-  add_number(*bright, "--n0", cfg->n0, "initial breather centre (default 0)");
-  add_integer(*bright, "--N", cfg->N, 2, 1'000'000'000'000'000, "strain sites n = -N..N (default 500)");
+  add_number(*bright, "--n0", cfg->n0, "initial breather centre n0, |n0| <= N = (sites - 1)/2 (default 0)");
+  add_strain_sites(*bright, cfg->N);
   add_number(*bright, "--periods", cfg->periods, "run length in breather periods T_b (default 200)");
   add_number(*bright, "--sample-every", cfg->sample_every, "sampling interval in T_b (default 0.25)");
   add_number(*bright, "--spacetime-every", cfg->spacetime_every,
              "energy-density row interval in T_b (default 1)");
   add_number(*bright, "--error-window", cfg->error_window_end,
-             "also report max E_x, E_y for t <= this time");
+             "also report max E_x, E_y for t <= this time (default: none, the whole run only)");
   bright->add_option("--snapshots", *snapshots, "snapshot times in T_b (default 0 50.125 200)");
   bright->add_flag("--ansatz-ends", cfg->ansatz_ends,
                    "end beads follow the ansatz (emitting boundary conditions, Sec. 4.2)");
   add_number(*bright, "--checkpoint-every", cfg->checkpoint_every,
              "periods T_b between checkpoints (default 0: only on SIGINT/SIGTERM)");
   add_integrator_options(*bright, cfg->integrator, *stepper);
+  add_examples(*bright, {"lrchain simulate bright --branch optical --theta pi/2 --rho 1/3 --sites 1001 --periods 200 --out out/exp1"});
   bright->fallthrough();  // --out, --json may follow the subcommand
   bright->callback([=] {
     if (!bright_model->file.empty()) {  // any model file: simulate_model_bright.cpp
@@ -310,7 +365,7 @@ void register_simulate(CLI::App& app) {
     cfg->restart_file = *restart;
     cfg->checkpoint_file = *checkpoint;
     cfg->max_memory = *max_memory;
-    run_bright_and_report(*cfg, *out, *style);
+    run_bright_and_report(*cfg, *out, with_option_names(*style, {{"N", "sites"}}));
   });
 
   // simulate drive (experiment 6, Sec. 4.3)
@@ -320,12 +375,13 @@ void register_simulate(CLI::App& app) {
       "drive", "Chain at rest driven at u_0(t) = A0 sin(omega0 t) chi(t), clamped far end (Sec. 4.3)");
   dcfg->params.rho = 10;  // before add_model_options: its help shows the defaults
   add_model_options(*drive, dcfg->params, false);
-  add_integer(*drive, "--beads", dcfg->beads, 10, std::numeric_limits<std::int64_t>::max(),
-              "beads n = 1..beads (default 2000)");
+  add_integer(*drive, "--sites", dcfg->beads, 10, std::numeric_limits<std::int64_t>::max(),
+              "lattice sites: beads n = 1..sites, each with its resonator, driven at n = 0, far end clamped "
+              "(default 2000; TOML key beads)");
   add_number(*drive, "--amplitude", dcfg->amplitude, "A0, in (0, delta0] (default 0.06)");
   add_number(*drive, "--omega0", dcfg->omega0, "driving frequency, in the optical band (default 2.1)");
   add_number(*drive, "--ramp-rate", dcfg->ramp_rate, "r of chi(t) (default 0.046)");
-  add_number(*drive, "--t-m", dcfg->t_m, "switch-off time t_m of chi(t) (default 700)");
+  add_number(*drive, "--switch-off-time", dcfg->t_m, "switch-off time t_m of chi(t) (default 700; TOML key t_m)");
   add_number(*drive, "--t-end", dcfg->t_end, "final time (default 2400)");
   add_number(*drive, "--sample-every", dcfg->sample_every, "series interval (default 1)");
   add_number(*drive, "--spacetime-every", dcfg->spacetime_every, "e_n row interval (default 2)");
@@ -338,13 +394,14 @@ void register_simulate(CLI::App& app) {
              "time between checkpoints (default 0: only on SIGINT/SIGTERM)");
   dcfg->integrator = sim::DriveRunConfig{}.integrator;
   add_integrator_options(*drive, dcfg->integrator, *dstepper);
+  add_examples(*drive, {"lrchain simulate drive --rho 10 --sites 2000 --omega0 2.1 --t-end 2400 --out out/exp6"});
   drive->fallthrough();
   drive->callback([=] {
     dcfg->integrator.stepper = sim::parse_stepper(*dstepper);
     dcfg->restart_file = *restart;
     dcfg->checkpoint_file = *checkpoint;
     dcfg->max_memory = *max_memory;
-    run_drive_and_report(*dcfg, *out, *style);
+    run_drive_and_report(*dcfg, *out, with_option_names(*style, {{"beads", "sites"}, {"t-m", "switch-off-time"}}));
   });
 
   // simulate modulated (experiment 7, Sec. 5.1)
@@ -355,11 +412,11 @@ void register_simulate(CLI::App& app) {
   mcfg->params.rho = 0.32;  // before add_model_options: its help shows the defaults
   mcfg->params.delta0 = 0.27;
   add_model_options(*mod, mcfg->params, false);
-  add_integer(*mod, "--N", mcfg->N, 8, std::numeric_limits<std::int64_t>::max(),
-              "periodic chain length (default 401)");
+  add_integer(*mod, "--sites", mcfg->N, 8, std::numeric_limits<std::int64_t>::max(),
+              "lattice sites N of the periodic chain, n = 0..N-1 (default 401; TOML key N)");
   add_parameter(*mod, "--epsilon", mcfg->epsilon, modulation_amplitude_range, "default 0.03");
-  add_number(*mod, "--theta-waves", mcfg->theta_waves, "theta0 = this * pi / N (default 252)");
-  add_number(*mod, "--b", mcfg->b, "modulation depth (default 0.01)");
+  add_number(*mod, "--theta-waves", mcfg->theta_waves, "carrier theta0 = this * pi / N, N = --sites (default 252)");
+  add_number(*mod, "--modulation-depth", mcfg->b, "modulation depth b of eq:cimi (default 0.01; TOML key b)");
   add_number(*mod, "--t-end", mcfg->t_end, "final time (default 45000)");
   add_number(*mod, "--sample-every", mcfg->sample_every, "series and e_n row interval (default 10)");
   mod->add_option("--snapshots", mcfg->snapshot_times, "snapshot times (default 0 17100 32400)");
@@ -370,13 +427,14 @@ void register_simulate(CLI::App& app) {
   add_number(*mod, "--checkpoint-every", mcfg->checkpoint_every,
              "time between checkpoints (default 1000, 0: none)");
   add_integrator_options(*mod, mcfg->integrator, *mstepper);
+  add_examples(*mod, {"lrchain simulate modulated --sites 401 --theta-waves 252 --t-end 45000 --out out/exp7"});
   mod->fallthrough();
   mod->callback([=] {
     mcfg->integrator.stepper = sim::parse_stepper(*mstepper);
     mcfg->restart_file = *restart;
     mcfg->checkpoint_file = *checkpoint;
     mcfg->max_memory = *max_memory;
-    run_modulated_and_report(*mcfg, *out, *style);
+    run_modulated_and_report(*mcfg, *out, with_option_names(*style, {{"N", "sites"}, {"b", "modulation-depth"}}));
   });
 
   sim_cmd->callback([=] {

@@ -99,12 +99,13 @@ void register_sweep(CLI::App& app) {
       "Run one job (bright, drive, modulated, dark continue, regime intervals) over a grid or list of parameter points described in a TOML "
       "file, in-process on threads (and over MPI ranks under mpirun or srun); results in one HDF5 file "
       "(and a CSV view for small sweeps). A stopped sweep continues from its results file.");
-  cmd->add_option("--config", a->config, "the sweep file (docs/sweeps.md)")->required();
-  cmd->add_option("--output", a->output, "results file (overrides the sweep file's `output`)");
+  cmd->add_option("--config", a->config, "the sweep file (docs/sweeps.md)")->required()->type_name("FILE");
+  cmd->add_option("--output", a->output, "results file (default: the sweep file's `output`)")->type_name("FILE");
   add_integer(*cmd, "--threads", a->threads, 1, 4096, "threads per process (default: all cores, shared among the ranks of a node)");
   cmd->add_flag("--retry-failed", a->retry_failed, "when resuming, run the points recorded as failed again");
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
-  cmd->add_flag("--json", a->compact, "print the JSON summary on one line");
+  cmd->add_flag("--json", a->compact, "print the JSON summary on one line (default: indented)");
+  cmd->footer("Example:\n  lrchain sweep --config examples/sweeps/regime_intervals_rho.toml --threads 2\n\n" + cmd->get_footer());
   cmd->callback([a] { run_sweep_command(*a); });
 }
 

@@ -26,16 +26,16 @@ const std::map<std::string, std::vector<std::string>>& base_commands() {
       {"regime map", {"--out", "@OUT@", "--nx", "8", "--ny", "8", "--no-curves", "--no-png"}},
       {"regime thresholds", {"--scan", "10"}},
       {"simulate bright",
-       {"--branch", "optical", "--theta", "pi/2", "--N", "50", "--periods", "1", "--sample-every", "0.25",
+       {"--branch", "optical", "--theta", "pi/2", "--sites", "101", "--periods", "1", "--sample-every", "0.25",
         "--spacetime-every", "0.5", "--snapshots", "0", "1", "--out", "@OUT@", "--json"}},
       {"simulate ring",
        {"--model", LRCHAIN_SOURCE_DIR "/models/fput.toml", "--branch", "acoustic", "--theta", "pi/2", "--periods",
         "10", "--packet-width", "4", "--out", "@OUT@", "--json"}},
       {"simulate drive",
-       {"--beads", "50", "--t-end", "2", "--t-m", "1", "--sample-every", "1", "--spacetime-every", "2",
+       {"--sites", "50", "--t-end", "2", "--switch-off-time", "1", "--sample-every", "1", "--spacetime-every", "2",
         "--snapshots", "1", "2", "--front-fit-start", "0", "--front-fit-end", "2", "--out", "@OUT@", "--json"}},
       {"simulate modulated",
-       {"--N", "21", "--theta-waves", "13", "--t-end", "2", "--sample-every", "1", "--snapshots", "0", "1",
+       {"--sites", "21", "--theta-waves", "13", "--t-end", "2", "--sample-every", "1", "--snapshots", "0", "1",
         "--speed-fit-start", "0", "--speed-fit-end", "2", "--checkpoint-every", "1", "--out", "@OUT@", "--json"}},
       {"dark solve", {"--omega-b", "2.42", "--sites", "21", "--quiet", "--out", "@OUT@"}},
       {"dark floquet", {"--omega-b", "2.42", "--sites", "21", "--quiet", "--out", "@OUT@"}},
@@ -78,10 +78,12 @@ const std::set<BadValue>& possibly_valid(const std::string& name) {
       {"trailing-fit-start", {zero}},        // 0: no trailing-structure fit (the default)
       {"snapshots", {zero}},                 // a snapshot at t = 0 is the initial state
       {"rel-tol", {zero}},                   // pure absolute error control
-      {"t-m", {minus_one, zero}},            // chi(t) is defined for any switch-off time
+      {"t-m", {minus_one, zero}},            // chi(t) is defined for any switch-off time (config key t_m)
+      {"switch-off-time", {minus_one, zero}},  // the option of t_m
       {"front-fit-start", {minus_one, zero}},  // a fit window opening before the run starts at t = 0
       {"speed-fit-start", {minus_one, zero}},
-      {"b", {zero}},                         // no modulation
+      {"b", {zero}},                         // no modulation (config key b)
+      {"modulation-depth", {zero}},          // the option of b
       {"omega-min", {minus_one, zero}},      // lower stop of the continuation (default 0)
       {"omega-max", {minus_one, zero}},      // <= 0 today means "the band edge"
       {"ds", {minus_one}},                   // the sign of the first step may pick the direction

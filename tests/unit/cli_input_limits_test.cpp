@@ -111,15 +111,15 @@ TEST_CASE("a t_end of inf in a config file is exit 2 with nothing written") {
 TEST_CASE("jobs larger than the machine are refused before any allocation, naming the option") {
   // Each of these allocated until std::bad_alloc or ran for minutes. The estimates are terabytes,
   // beyond any machine, except where --max-memory sets the limit.
-  check_refused(with(bright, {"--N", "1e9", "--out", "o"}), "N");
+  check_refused(with(bright, {"--sites", "2000000001", "--out", "o"}), "sites");
   check_refused(with(bright, {"--periods", "1e9", "--out", "o"}), "periods");
   check_refused(with(bright, {"--periods", "1", "--sample-every", "1e-9", "--out", "o"}), "sample-every");
   check_refused(with(bright, {"--periods", "100", "--sample-every", "1e-6", "--spacetime-every", "1e-6",
                               "--out", "o"}),
                 "spacetime-every");
-  check_refused({"simulate", "drive", "--beads", "1e10", "--out", "o"}, "beads");
+  check_refused({"simulate", "drive", "--sites", "1e10", "--out", "o"}, "sites");
   check_refused({"simulate", "drive", "--t-end", "1e9", "--out", "o"}, "t-end");
-  check_refused({"simulate", "modulated", "--N", "1e9", "--out", "o"}, "N");
+  check_refused({"simulate", "modulated", "--sites", "1e9", "--out", "o"}, "sites");
   check_refused({"simulate", "modulated", "--sample-every", "1e-6", "--out", "o"}, "sample-every");
   check_refused({"simulate", "modulated", "--checkpoint-every", "1e-7", "--out", "o"}, "checkpoint-every");
   check_refused({"dark", "solve", "--omega-b", "2.0", "--sites", "1000001", "--out", "o"}, "sites");
@@ -151,7 +151,7 @@ TEST_CASE("regime map, modulated runs and dark continue validate everything befo
 }
 
 TEST_CASE("an --out that is a file is exit 2 with the file untouched") {
-  const Job j = run_lrchain(with(bright, {"--N", "20", "--periods", "1", "--out", "taken"}), {{"taken", "user data"}});
+  const Job j = run_lrchain(with(bright, {"--sites", "41", "--periods", "1", "--out", "taken"}), {{"taken", "user data"}});
   CHECK(j.exit_code == 2);
   CHECK(j.err.find("taken") != std::string::npos);
   CHECK(j.created.empty());
@@ -160,18 +160,20 @@ TEST_CASE("an --out that is a file is exit 2 with the file untouched") {
 }
 
 TEST_CASE("integer options accept integral values such as 1e3 and refuse fractions") {
-  const Job j = run_lrchain(with(bright, {"--N", "1e2", "--periods", "2", "--json"}));
+  // --sites 2N + 1 = 201 strain sites: the run's half-width N = 100 (its summary's "N").
+  const Job j = run_lrchain(with(bright, {"--sites", "2.01e2", "--periods", "2", "--json"}));
   REQUIRE(j.exit_code == 0);
   CHECK(nlohmann::json::parse(j.out)["N"] == 100);
-  check_refused(with(bright, {"--N", "100.5"}), "N");
-  check_refused(with(bright, {"--N", "1e300"}), "N");
+  check_refused(with(bright, {"--sites", "100.5"}), "sites");
+  check_refused(with(bright, {"--sites", "1e300"}), "sites");
+  check_refused(with(bright, {"--sites", "200"}), "sites");  // even: not n = -N..N
   check_refused({"regime", "intervals", "--samples", "1e300"}, "samples");
 }
 
 TEST_CASE("a blown-up lattice run is exit 3, says when and where, and keeps its outputs") {
   // McLachlan's symplectic stepper with dt = 1.5 is unstable on this chain (measured: it blows up
   // at t = 90; the same run with dt = 1 stays finite to t = 200).
-  const Job j = run_lrchain({"simulate", "modulated", "--N", "16", "--theta-waves", "8", "--dt", "1.5",
+  const Job j = run_lrchain({"simulate", "modulated", "--sites", "16", "--theta-waves", "8", "--dt", "1.5",
                              "--t-end", "200", "--checkpoint-every", "0", "--out", "o", "--json"});
   INFO("stderr: " << j.err);
   CHECK(j.exit_code == 3);
@@ -190,7 +192,7 @@ TEST_CASE("a blown-up lattice run is exit 3, says when and where, and keeps its 
 
 TEST_CASE("JSON says null for none: no instability, no dark-breather speed, no failure") {
   // Contrast threshold 10: far above the contrast of eq:cimi (about 0.1), so no instability time.
-  const Job j = run_lrchain({"simulate", "modulated", "--N", "64", "--theta-waves", "40", "--t-end", "50",
+  const Job j = run_lrchain({"simulate", "modulated", "--sites", "64", "--theta-waves", "40", "--t-end", "50",
                              "--contrast-threshold", "10", "--checkpoint-every", "0", "--json"});
   REQUIRE(j.exit_code == 0);
   const auto s = nlohmann::json::parse(j.out);
@@ -280,7 +282,7 @@ TEST_CASE("a new run refuses an --out holding an earlier run's checkpoint — a 
   lrchain::ProcessOptions o;
   o.working_directory = dir;
   o.capture_stdout = o.capture_stderr = true;
-  const std::vector<std::string> first = {LRCHAIN_CLI, "simulate", "modulated", "--N", "16", "--theta-waves", "8",
+  const std::vector<std::string> first = {LRCHAIN_CLI, "simulate", "modulated", "--sites", "16", "--theta-waves", "8",
                                           "--t-end", "2", "--sample-every", "1", "--checkpoint-every", "1",
                                           "--out", "o", "--json"};
   REQUIRE(lrchain::run_program(first, o).exit_code == 0);

@@ -29,7 +29,7 @@ std::string slurp(const fs::path& f) {
 }
 
 std::vector<std::string> bright_args(const fs::path& out) {
-  return {LRCHAIN_CLI, "simulate", "bright", "--branch", "optical", "--theta", "pi/2", "--N", "200",
+  return {LRCHAIN_CLI, "simulate", "bright", "--branch", "optical", "--theta", "pi/2", "--sites", "401",
           "--periods", "300", "--snapshots", "0", "150", "300", "--checkpoint-every", "5",
           "--out", out.string(), "--json"};
 }

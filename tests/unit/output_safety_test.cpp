@@ -96,7 +96,7 @@ bool wait_for(F ready, double seconds) {
 }
 
 const std::vector<std::string> small_bright = {"simulate", "bright", "--branch", "optical", "--theta", "pi/2",
-                                               "--N",      "60",     "--periods", "4", "--snapshots", "0", "2", "4"};
+                                               "--sites",  "121",     "--periods", "4", "--snapshots", "0", "2", "4"};
 
 std::vector<std::string> with_out(std::vector<std::string> args, const std::string& out) {
   args.push_back("--out");

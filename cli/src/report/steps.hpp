@@ -23,7 +23,7 @@ struct StepContext {
 struct Step {
   std::string id;                  // also the output sub-directory
   std::string title;
-  double cost = 1;                 // rough cost in seconds (quick), to start long steps first
+  double cost = 1;                 // CPU seconds of the quick step (measured), to start long steps first
   std::function<Section(const StepContext&)> run;
 };
 

@@ -205,13 +205,13 @@ Section exp5(const StepContext& ctx) {
 }  // namespace
 
 std::vector<Step> bright_steps() {
-  return {{"exp1", "Experiment 1", 3, exp1},
-          {"exp2", "Experiment 2", 3, exp2},
-          {"exp3", "Experiment 3", 4, exp3},
-          {"exp4", "Experiment 4", 6, exp4},
-          {"exp4b", "Experiment 4b", 6, [](const StepContext& c) { return exp4b(c, false); }},
-          {"exp4c", "Experiment 4c", 35, [](const StepContext& c) { return exp4b(c, true); }},
-          {"exp5", "Experiment 5", 8, exp5}};
+  return {{"exp1", "Experiment 1", 0.8, exp1},
+          {"exp2", "Experiment 2", 1.7, exp2},
+          {"exp3", "Experiment 3", 0.6, exp3},
+          {"exp4", "Experiment 4", 1.5, exp4},
+          {"exp4b", "Experiment 4b", 2.9, [](const StepContext& c) { return exp4b(c, false); }},
+          {"exp4c", "Experiment 4c", 8.5, [](const StepContext& c) { return exp4b(c, true); }},
+          {"exp5", "Experiment 5", 1.4, exp5}};
 }
 
 }  // namespace lrchain::report

@@ -83,7 +83,7 @@ Section exp7(const StepContext& ctx) {
 }  // namespace
 
 std::vector<Step> lattice_steps() {
-  return {{"exp6", "Experiment 6", 12, exp6}, {"exp7", "Experiment 7", 20, exp7}};
+  return {{"exp6", "Experiment 6", 8, exp6}, {"exp7", "Experiment 7", 3.8, exp7}};
 }
 
 }  // namespace lrchain::report

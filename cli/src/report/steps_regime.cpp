@@ -117,7 +117,7 @@ Section regime_section(const StepContext& ctx) {
 }  // namespace
 
 std::vector<Step> regime_steps() {
-  return {{"regime", "Focusing and defocusing regimes", 4, regime_section}};
+  return {{"regime", "Focusing and defocusing regimes", 1.7, regime_section}};
 }
 
 }  // namespace lrchain::report

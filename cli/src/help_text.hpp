@@ -1,0 +1,43 @@
+#pragma once
+// The parts of `lrchain ... --help` that every subcommand shares: the exit codes, an example
+// command line (footer), and the one-line message for a command given without its subcommand.
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace lrchain::cli {
+
+// The exit codes of every lrchain command (lrchain/exit_codes.hpp), as the help shows them.
+inline std::string exit_codes_text() {
+  return "Exit codes: 0 success; 1 another error (e.g. a file could not be written); 2 bad input or a\n"
+         "job too large for the machine (one line on stderr names the option; nothing written);\n"
+         "3 numerical failure (blow-up of a lattice run, Newton not converging; also in the JSON);\n"
+         "130/143 interrupted by SIGINT/SIGTERM.";
+}
+
+// Sets the help footer of `cmd` to its examples (one command line each) and the exit codes.
+inline void add_examples(CLI::App& cmd, std::initializer_list<std::string> examples) {
+  std::string text = examples.size() > 1 ? "Examples:\n" : "Example:\n";
+  for (const auto& e : examples) text += "  " + e + "\n";
+  cmd.footer(text + "\n" + exit_codes_text());
+}
+
+// "lrchain regime: give a subcommand: intervals, map, thresholds (see lrchain regime --help)":
+// the message for the deepest command of a parsed command line that needs a subcommand and got
+// none; empty when no such command was given.
+inline std::string missing_subcommand_message(const CLI::App& app) {
+  const CLI::App* deepest = &app;
+  std::string path = "lrchain";
+  for (;;) {
+    const auto parsed = deepest->get_subcommands();
+    if (parsed.empty()) break;
+    deepest = parsed.front();
+    path += " " + deepest->get_name();
+  }
+  const auto available = deepest->get_subcommands([](const CLI::App*) { return true; });
+  if (available.empty() || !deepest->get_subcommands().empty()) return {};
+  std::string names;
+  for (const CLI::App* sub : available) names += (names.empty() ? "" : ", ") + sub->get_name();
+  return path + ": give a subcommand: " + names + " (see " + path + " --help)";
+}
+
+}  // namespace lrchain::cli
