@@ -119,7 +119,7 @@ void add_common(CLI::App& sub, DarkArgs& a) {
               "odd number of lattice sites per field x, y (periodic ends; default 101)");
   sub.add_option("--mode", a.mode, "shooting: reversible (half/quarter period; default) | full (whole period, a check)")
       ->check(CLI::IsMember({"reversible", "full"}));
-  sub.add_flag("--json", a.json_out, "print the JSON summary (always printed; kept for scripts)");
+  sub.add_flag("--json", a.json_out, "print the JSON summary on one line (default: indented)");
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr");
   sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures (default: none, only the JSON on stdout)");
   add_max_memory(sub, a.max_memory);
@@ -176,7 +176,7 @@ Solved solve(const DarkArgs& a) {
                                 " (" + res.failure + "); residual history:" + hist;
     json j = base_json(a, ansatz, res);
     j["failure"] = {{"kind", "newton"}, {"message", message}};
-    std::printf("%s\n", j.dump(2).c_str());
+    std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
     throw NumericalFailure(message);
   }
   return {std::move(shooting), ansatz, std::move(res)};
@@ -273,7 +273,7 @@ void run_solve(const DarkArgs& a, bool floquet) {
                                           sim::dark::dark_solution_record(a.p, a.omega_b, s.ansatz.omega, z0, seed, s.newton, m, floquet ? &f : nullptr));
     figures.finish(j);
   }
-  std::printf("%s\n", j.dump(2).c_str());
+  std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
 }
 
 // Continues a solved breather q0 away from the band edge omega_edge (Params or model shooting),
@@ -378,7 +378,7 @@ void continue_and_report(const DarkArgs& a, const DarkShootingProblem& shooting,
     figures.draw({"floquet_moduli.gp", moduli, "floquet_moduli.png"});
     figures.finish(j);
   }
-  std::printf("%s\n", j.dump(2).c_str());
+  std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
   std::fflush(stdout);
   if (br.interrupted)
     throw Interrupted(StopSignals::received(),
@@ -498,7 +498,7 @@ void run_evolve(const DarkArgs& a) {
   j["max_strain"] = e.max_strain;
   j["samples_per_period"] = a.samples;
   if (!a.out.empty()) write_evolution(a, e, j);
-  std::printf("%s\n", j.dump(2).c_str());
+  std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
 }
 
 // ---- Any model file (--model): the same jobs on the model's generated lattice kernels. ----
@@ -594,7 +594,7 @@ NewtonResult model_newton(const DarkArgs& a, const ModelDarkJob& m, const ModelD
                                             a.omega_b, res.failure, hist);
     json j = model_base_json(a, m, res);
     j["failure"] = {{"kind", "newton"}, {"message", message}};
-    std::printf("%s\n", j.dump(2).c_str());
+    std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
     throw NumericalFailure(message);
   }
   return res;
@@ -657,7 +657,7 @@ void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
       sim::write_file_atomic(a.out, "snapshots.csv", sn.str());
       sim::write_file_atomic(a.out, "summary.json", j.dump(2) + "\n");
     }
-    std::printf("%s\n", j.dump(2).c_str());
+    std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
     if (StopSignals::received() != 0)
       throw Interrupted(StopSignals::received(), fmt::format("interrupted after {} periods", e.periods.size()));
     return;
@@ -707,7 +707,7 @@ void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
     if (job == DarkJob::floquet) write_multipliers(a.out, "multipliers", f, a.omega_b, figures);
     figures.finish(j);
   }
-  std::printf("%s\n", j.dump(2).c_str());
+  std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
 }
 
 // The resonant chain through Params, or (--model) any model file.
