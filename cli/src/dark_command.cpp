@@ -16,6 +16,7 @@
 #include "commands.hpp"
 #include "lrchain/sim/dark/dark_hdf5.hpp"
 #include "figure_format_option.hpp"
+#include "help_text.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/checked_number.hpp"
@@ -117,10 +118,11 @@ void add_common(CLI::App& sub, DarkArgs& a) {
   sub.add_option("--center", a.center, "family: bond (n0 = 1/2) | site (n0 = 0) (default bond)")->check(CLI::IsMember({"bond", "site"}));
   add_integer(sub, "--sites", a.sites, 9, std::numeric_limits<int>::max(),
               "odd number of lattice sites per field x, y (periodic ends; default 101)");
-  sub.add_option("--mode", a.mode, "shooting: reversible (half/quarter period; default) | full (whole period, a check)")
-      ->check(CLI::IsMember({"reversible", "full"}));
+  sub.add_option("--mode", a.mode, "shooting: reversible (half/quarter period) | full (whole period, a check) (default reversible)")
+      ->check(CLI::IsMember({"reversible", "full"}).description(""))
+      ->type_name("MODE");
   sub.add_flag("--json", a.json_out, "print the JSON summary on one line (default: indented)");
-  sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr");
+  sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr (default: progress shown)");
   sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures (default: none, only the JSON on stdout)");
   add_max_memory(sub, a.max_memory);
   add_figure_format(sub);
@@ -731,6 +733,8 @@ void register_dark(CLI::App& app) {
       "dark", "Exact stationary dark breathers (Secs. 5.3-5.4): shooting Newton on the period-T_b map, "
               "continuation in omega_b, Floquet stability");
   dark->require_subcommand(1);
+  add_examples(*dark, {"lrchain dark continue --rho 1/3 --branch optical --omega-b 2.42 --points 12 --out out/dark",
+                       "lrchain dark solve --model models/klein_gordon.toml --set b=-1/2 --omega-b 1.17 --sites 61"});
   auto args = std::make_shared<DarkArgs>();
   auto* solve_cmd = dark->add_subcommand("solve", "Newton solve from the eq:xy_app seed");
   add_common(*solve_cmd, *args);

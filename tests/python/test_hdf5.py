@@ -116,13 +116,13 @@ def _assert_same_file(cli_file, python_file):
 
 
 @pytest.mark.parametrize("kind, cli_args, python_run", [
-    ("bright", ["--branch", "optical", "--theta", "pi/2", "--N", "40", "--periods", "2", "--stepper", "rkf78"],
+    ("bright", ["--branch", "optical", "--theta", "pi/2", "--sites", "81", "--periods", "2", "--stepper", "rkf78"],
      lambda: lrchain.simulate.bright(lrchain.Params(), "optical", np.pi / 2, N=40, periods=2, stepper="rkf78")),
-    ("drive", ["--beads", "50", "--t-end", "4", "--t-m", "2", "--sample-every", "1", "--spacetime-every", "2",
+    ("drive", ["--sites", "50", "--t-end", "4", "--switch-off-time", "2", "--sample-every", "1", "--spacetime-every", "2",
                "--snapshots", "2", "4", "--front-fit-start", "0", "--front-fit-end", "4"],
      lambda: lrchain.simulate.drive(beads=50, t_end=4, t_m=2, sample_every=1, spacetime_every=2,
                                     snapshot_times=[2, 4], front_fit_start=0, front_fit_end=4)),
-    ("modulated", ["--N", "21", "--theta-waves", "13", "--t-end", "4", "--sample-every", "1", "--snapshots", "0", "4",
+    ("modulated", ["--sites", "21", "--theta-waves", "13", "--t-end", "4", "--sample-every", "1", "--snapshots", "0", "4",
                    "--speed-fit-start", "0", "--speed-fit-end", "4"],
      lambda: lrchain.simulate.modulated(N=21, theta_waves=13, t_end=4, sample_every=1, snapshot_times=[0, 4],
                                         speed_fit_start=0, speed_fit_end=4)),

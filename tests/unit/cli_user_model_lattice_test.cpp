@@ -93,7 +93,7 @@ TEST_CASE("user model lattice: a renamed copy of fput runs ring and bright with 
   CHECK(lattice_libraries == 1);
 
   // Bright (mean flow, strain form): the shipped run's errors, energy and centre to round-off.
-  const std::vector<std::string> bright{"--branch", "acoustic", "--theta", "pi/2", "--N", "300", "--n0", "-100",
+  const std::vector<std::string> bright{"--branch", "acoustic", "--theta", "pi/2", "--sites", "601", "--n0", "-100",
                                         "--periods", "10", "--detuning", "1e-3", "--json"};
   std::vector<std::string> a{"simulate", "bright", "--model", "models/fput.toml"}, b{"simulate", "bright", "--model", mine};
   a.insert(a.end(), bright.begin(), bright.end());
@@ -140,7 +140,7 @@ TEST_CASE("user model lattice: an FPUT chain with next-nearest-neighbour springs
   // stays within 5 % of the NLS ansatz (the bound the shipped models meet) and the energy centre
   // moves at c. Measured: max E_x 0.22 %, centre speed / c = 0.99993.
   const json b = run_json({"simulate", "bright", "--model", (dir / "fput_nnn.toml").string(), "--branch", "acoustic",
-                           "--theta", "pi/2", "--N", "1000", "--n0", "-500", "--json"},
+                           "--theta", "pi/2", "--sites", "2001", "--n0", "-500", "--json"},
                           dir);
   CHECK(b["model"]["lattice_code"]["from_cache"] == true);
   CHECK(b["max_E_x"].get<double>() < 0.05);

@@ -20,8 +20,16 @@ std::string edge_regime(const Model& model, std::size_t branch, double theta, bo
   defocusing = false;
   try {
     const NlsCoefficients c = coefficients(model, branch, theta);
-    defocusing = c.regime == Regime::defocusing;
     if (c.regime == Regime::singular || !std::isfinite(c.curvature * c.h_tilde)) return "singular coefficients";
+    // An NLS coefficient that diverges at the edge (the diatomic chain's h at theta = pi) is finite
+    // but huge at the rounded edge: the edge is singular when h_tilde there is not the limit of its
+    // values just inside the band (theta 1e-4 away: a smooth h_tilde changes by O(1e-8) relatively).
+    const double inside = theta == 0 ? 1e-4 : theta - 1e-4;
+    const NlsCoefficients near = coefficients(model, branch, inside);
+    if (!(std::abs(c.h_tilde - near.h_tilde) <= 1e-3 * std::abs(near.h_tilde) + 1e-12))
+      return fmt::format("singular coefficients (h_tilde = {:.4g} at the edge, {:.4g} at theta = {:.6g})", c.h_tilde,
+                         near.h_tilde, inside);
+    defocusing = c.regime == Regime::defocusing;
     return fmt::format("{} (omega'' h_tilde = {:.4g})", to_string(c.regime), c.curvature * c.h_tilde);
   } catch (const InvalidParameter&) {
     return "no real positive frequency";
