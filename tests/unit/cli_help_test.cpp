@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <regex>
-#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -49,15 +48,10 @@ std::vector<std::string> options_without_default(const std::string& help) {
   return missing;
 }
 
-// Commands whose help is not walked here: `dark` and its subcommands (their options are checked
-// by the dark-breather tests); remove an entry once that help shows examples and defaults.
-const std::set<std::string> not_walked = {};
-
 // Checks `lrchain <path> --help` and walks into its subcommands.
 void check_help(const std::vector<std::string>& path, int& commands) {
   std::string shown = "lrchain";
   for (const auto& p : path) shown += " " + p;
-  if (!path.empty() && not_walked.count(path.front())) return;
   std::vector<std::string> args = path;
   args.push_back("--help");
   const auto r = run_lrchain(args);
