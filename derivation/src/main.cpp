@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
                    "  DIR/model_<name>.hpp and DIR/shipped_models.hpp. A model's NLS evaluator computes in\n"
                    "  long double or __float128 (chosen by the cancellation measured in its expressions),\n"
                    "  or in double for the models named in --double-evaluators (faster: omega'' by implicit\n"
-                   "  differentiation of det M, theta < 0.05 handed to a long double version).\n"
+                   "  differentiation of det M; theta < 0.05 and sums that cancel go to a long double version).\n"
                    "  Exit codes: 0 all checks passed, 1 a check failed or a file could not be written,\n"
                    "  2 bad arguments or --out (nothing written).\n";
       return exit_invalid_input;
