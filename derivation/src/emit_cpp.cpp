@@ -283,7 +283,11 @@ class Printer {
 // of the terms that cancel in e (a scale for deciding that e vanishes in double precision).
 NodePtr term_scale_tree(const ex& e, const Names* names, const std::string& abs_function) {
   const ex nd = normal(e).numer_denom();
-  const ex numerator = expand(nd.op(0));
+  ex numerator = expand(nd.op(0));
+  // The sign collect_factors gives a polynomial (the magnitudes do not depend on it), so that the
+  // terms are the ones printed in a factored output and become shared temporaries.
+  if (is_a<GiNaC::add>(numerator) && convert(expand(-numerator), names)->key < convert(numerator, names)->key)
+    numerator = expand(-numerator);
   std::vector<NodePtr> terms;
   if (is_a<GiNaC::add>(numerator)) {
     for (const auto& t : numerator) terms.push_back(make_call(abs_function, {convert(t, names)}));

@@ -62,7 +62,8 @@ bool write_file(const fs::path& target, const std::string& text) {
 
 // Derives every *.toml model in `dir` at its default parameters and adds its evaluator header
 // and the list header to `files`; false when a model's checks fail.
-// Models named in `double_models` get evaluators in double arithmetic (faster, not held to 1e-11).
+// Models named in `double_models` get evaluators in double arithmetic (faster; omega'' by implicit
+// differentiation, small theta in long double).
 bool derive_model_files(const std::string& dir, const std::vector<std::string>& double_models,
                         std::vector<std::pair<std::string, std::string>>& files, bool quiet) {
   std::vector<fs::path> paths;
@@ -114,7 +115,8 @@ int main(int argc, char** argv) {
                    "  With --models, also derives every MODELS_DIR/*.toml (checks must pass) and writes\n"
                    "  DIR/model_<name>.hpp and DIR/shipped_models.hpp. A model's NLS evaluator computes in\n"
                    "  long double or __float128 (chosen by the cancellation measured in its expressions),\n"
-                   "  or in double for the models named in --double-evaluators (faster, less accurate).\n"
+                   "  or in double for the models named in --double-evaluators (faster: omega'' by implicit\n"
+                   "  differentiation of det M; theta < 0.05 and sums that cancel go to a long double version).\n"
                    "  Exit codes: 0 all checks passed, 1 a check failed or a file could not be written,\n"
                    "  2 bad arguments or --out (nothing written).\n";
       return exit_invalid_input;

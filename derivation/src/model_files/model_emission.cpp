@@ -1,5 +1,6 @@
 #include "lrchain/derivation/model_emission.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <cmath>
 #include <cstdlib>
@@ -92,12 +93,15 @@ EmittedFunction intermediates_extended_function(const ModelDerivation& m) {
 }
 
 // The inputs q[i] read as Q[i] in the type `real`: the parameters as given, the intermediates
-// recomputed from them in long double; declared by the returned statements.
-std::string extended_q(EmittedFunction& f, const ModelDerivation& m) {
+// recomputed from them in long double (else converted from q's doubles); declared by the returned statements.
+std::string extended_q(EmittedFunction& f, const ModelDerivation& m, bool recompute_intermediates) {
   for (auto& [symbol, name] : f.inputs)
     if (name.rfind("q[", 0) == 0) name = "Q" + name.substr(1);
   const std::string n = std::to_string(m.file.parameters.size());
   const std::string all = std::to_string(m.file.model.parameters.size());
+  if (!recompute_intermediates)
+    return "  real Q[" + all + "];\n"
+           "  for (int i = 0; i < " + all + "; ++i) Q[i] = q[i];\n";
   return "  long double parameters[" + n + "], intermediates[" + all + "];\n"
          "  for (int i = 0; i < " + n + "; ++i) parameters[i] = q[i];\n"
          "  intermediates_extended(parameters, intermediates);\n"
@@ -152,7 +156,8 @@ std::string consistent_inputs(int degree) {
 
 // The NLS coefficients in derivation order, later ones written with earlier ones by name; in
 // `real_type` arithmetic from consistent inputs when that is not double (model_evaluator_precision).
-EmittedFunction nls_function(const ModelDerivation& m, const Symbols& s, const std::string& real_type) {
+EmittedFunction nls_function(const ModelDerivation& m, const Symbols& s, const std::string& real_type,
+                             bool recompute_intermediates = true) {
   const DerivedCoefficients& c = m.coefficients;
   EmittedFunction f;
   f.name = "nls";
@@ -190,10 +195,118 @@ EmittedFunction nls_function(const ModelDerivation& m, const Symbols& s, const s
   f.local_outputs = "o";
   f.abs_function = "magnitude";
   f.prologue = "  using real [[maybe_unused]] = " + real_type + ";\n"
-               "  const auto magnitude = [](real x) { return x < 0 ? -x : x; };\n" + extended_q(f, m) +
+               "  const auto magnitude = [](real x) { return x < 0 ? -x : x; };\n" + extended_q(f, m, recompute_intermediates) +
                consistent_inputs(int(m.branches.size())) + "  real o[" + count + "];\n";
   f.epilogue = "  for (int k = 0; k < " + count + "; ++k) out[k] = static_cast<double>(o[k]);\n";
   return f;
+}
+
+// Below this D1 (theta < 0.05) the double nls hands over to its long double version: there the
+// acoustic omega'' = (W'' - 2 c^2) / (2 omega), W = omega^2, loses digits as 1/theta^2 (measured on
+// the resonant chain over its sampled parameters: 6.6e-12 at theta = 0.02, 9.3e-13 at 0.05, 2.3e-13 at 0.1).
+constexpr const char* double_nls_extended_below = "0.0025";
+
+// A double nls that hands its inputs to nls_extended where its sums cancel by more than this factor
+// (error about 1e-16 times it): near a zero of h or h_tilde, or near a non-resonance violation.
+// (Checking omega'' too cost 5 ns per call; 1e3 instead of 1e4 sent the paper's acoustic branch
+// near h = 0 to long double 20 times per 1024 points: both measured below 10 M/s.)
+constexpr const char* double_nls_cancellation_limit = "1e4";
+
+// p or -p, whichever is positive at a point fixed by the symbols' names (factor() returns either
+// sign from one run to the next; the emitted text must not change).
+ex canonical_sign(const ex& p) {
+  exmap point;
+  for (const_preorder_iterator i = p.preorder_begin(); i != p.preorder_end(); ++i)
+    if (is_a<symbol>(*i)) {
+      std::uint64_t hash = 1469598103934665603ull;
+      for (const char ch : ex_to<symbol>(*i).get_name()) hash = (hash ^ std::uint8_t(ch)) * 1099511628211ull;
+      point[*i] = numeric(long(1000 + hash % 1000u), 997);
+    }
+  const ex value = p.subs(point, subs_options::no_pattern);
+  return is_a<numeric>(value) && ex_to<numeric>(value).is_negative() ? ex(-p) : p;
+}
+
+// Adds to the double nls f the magnitudes of the terms of h's numerator, and an epilogue that
+// re-evaluates in long double (nls_extended) where those, h_tilde = h - lambda beta or the
+// non-resonance values cancel by more than double_nls_cancellation_limit.
+EmittedFunction with_cancellation_check(EmittedFunction f, const ModelDerivation& m) {
+  const std::pair<std::string, std::string> checked[] = {{"h", "out[6]"}};
+  std::string condition;
+  for (const auto& [quantity, output] : checked)
+    for (const auto& [name, e] : std::vector<std::pair<std::string, ex>>(f.outputs))
+      if (name == output) {
+        // The sum among the factors of the numerator (printed as in the output, so its terms are shared).
+        const ex numerator = factor(normal(e).numer_denom().op(0));
+        ex sum = numerator;
+        if (is_a<GiNaC::mul>(numerator))
+          for (const auto& factor_term : numerator)
+            if (is_a<GiNaC::add>(factor_term)) sum = factor_term;
+        if (!is_a<GiNaC::add>(sum)) continue;  // a product: nothing cancels
+        sum = canonical_sign(expand(sum / sum.integer_content()));  // primitive, as emit_cpp prints factors
+        const std::string value = "sum_" + quantity, scale = "cancellation_" + quantity;
+        f.outputs.emplace_back(value, sum);
+        f.outputs.emplace_back(scale, sum);
+        f.term_scales.insert(scale);
+        f.prologue += "  double " + value + ", " + scale + ";\n";
+        condition += std::string(condition.empty() ? "" : " &&\n        ") + "std::abs(" + value + ") * limit > " + scale;
+      }
+  condition += " &&\n        std::abs(out[4]) * limit > out[11]";
+  if (m.coefficients.mean_flow)
+    condition += " && std::abs(out[5]) * limit > out[12] &&\n"
+                 "        std::abs(out[8]) * limit > std::abs(out[6]) + std::abs(out[3] * out[7])";
+  f.epilogue += "  // Sums that cancel in double (near a zero of h or h_tilde, or a non-resonance): long double.\n"
+                "  const double limit = " + std::string(double_nls_cancellation_limit) + ";\n"
+                "  if (!(" + condition + "))\n"
+                "    nls_extended(D1, sigma, omega, q, out);\n";
+  return f;
+}
+
+// The double nls with omega'' by implicit differentiation of det M = P(W, D1) = 0 at W = omega^2,
+// D1' = 2 sigma, D1'' = 2 - D1, from P's partial derivatives evaluated as numbers: the closed form
+// of omega'' divides by powers of a factor of P's D1-derivative that vanishes on the acoustic branch
+// near theta = pi (its expanded terms cancel by up to 1e6 there); this form has no such division.
+// Points with D1 below double_nls_extended_below are passed to nls_extended (same inputs).
+EmittedFunction double_nls_function(const ModelDerivation& m, const Symbols& s) {
+  EmittedFunction f = nls_function(m, s, "double");
+  f.prologue = "  if (D1 < " + std::string(double_nls_extended_below) + ") {\n"
+               "    nls_extended(D1, sigma, omega, q, out);\n"
+               "    return;\n"
+               "  }\n" + f.prologue;
+  const realsymbol W("W");
+  const ex polynomial = expand(numer(normal(m.coefficients.dispersion)));
+  ex P = 0;
+  for (int k = 0; k <= polynomial.degree(s.omega); k += 2) P += real_form(polynomial.coeff(s.omega, k), s) * pow(W, k / 2);
+  if (P.has(s.sigma)) return with_cancellation_check(f, m);  // det M depends on sigma: keep the closed form
+  const std::pair<std::string, ex> derivatives[] = {
+      {"dispersion_W", P.diff(W)},          {"dispersion_D", P.diff(s.D1)},         {"dispersion_WW", P.diff(W, 2)},
+      {"dispersion_WD", P.diff(W).diff(s.D1)}, {"dispersion_DD", P.diff(s.D1, 2)}};
+  std::vector<std::pair<std::string, ex>> locals;
+  std::vector<ex> value;
+  std::string declared;
+  for (const auto& [name, d] : derivatives) {
+    const ex at_omega = expand(d.subs(W == pow(s.omega, 2)));
+    if (is_a<numeric>(at_omega)) {
+      value.push_back(at_omega);
+      continue;
+    }
+    const realsymbol local(name);
+    f.output_symbols[name] = local;
+    locals.emplace_back(name, at_omega);
+    value.push_back(local);
+    declared += (declared.empty() ? "  double " : ", ") + name;
+  }
+  f.prologue += declared + ";\n";
+  const ex dW = 2 * s.omega * s.c, dD1 = 2 * s.sigma, ddD1 = 2 - s.D1;
+  const ex ddW = -(value[2] * dW * dW + 2 * value[3] * dW * dD1 + value[4] * dD1 * dD1 + value[1] * ddD1) / value[0];
+  const ex curvature = (ddW - 2 * pow(s.c, 2)) / (2 * s.omega);
+  for (std::size_t k = 0; k < f.outputs.size(); ++k) {
+    if (f.outputs[k].first != "out[2]") continue;
+    f.outputs[k].second = curvature;
+    f.outputs.insert(f.outputs.begin() + std::ptrdiff_t(k), locals.begin(), locals.end());
+    break;
+  }
+  f.comment += " omega'' by implicit differentiation of det M; theta < 0.05 in long double (nls_extended).";
+  return with_cancellation_check(f, m);
 }
 
 std::string number_text(double v) {
@@ -267,9 +380,15 @@ std::vector<EmittedFunction> model_evaluator_definitions(const ModelDerivation& 
 }
 
 std::string model_evaluator_functions(const ModelDerivation& m, const Symbols& s, const std::string& arithmetic) {
-  if (arithmetic == "double")
+  if (arithmetic == "double") {
+    // The intermediates q as given (a pow per call would cost the double path its rate).
+    EmittedFunction extended = nls_function(m, s, "long double", false);
+    extended.name = "nls_extended";
+    extended.comment = "nls() in long double from consistent inputs, where the double nls loses digits.";
     return emit_function(intermediates_function(m)) + "\n" + emit_function(dispersion_function(m, s)) + "\n" +
-           emit_function(nls_function(m, s, "double"));
+           emit_function(dispersion_extended_function(m, s, "long double")) + "\n" + emit_function(extended) + "\n" +
+           emit_function(double_nls_function(m, s));
+  }
   const double cancellation = evaluator_cancellation(m, s);
   const std::string real_type = arithmetic.empty() ? evaluator_precision(cancellation) : arithmetic;
   std::string text = emit_function(intermediates_function(m)) + "\n" + emit_function(dispersion_function(m, s)) + "\n";

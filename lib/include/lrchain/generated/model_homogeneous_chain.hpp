@@ -91,19 +91,22 @@ inline void nls(double D1_in, double sigma_in, double omega_in, const double* q,
   o[2] = (real(1.0) / 2.0) * (t1 - (2.0 * t2) + 2.0 * Q[2]) * o[1];
   o[3] = -(D1 * Q[3] * o[1]);
   const real t3 = (D1 * D1);
-  const real t4 = (omega * omega);
-  o[4] = -((-(t3 * Q[2]) - (4.0 * t4) + 4.0 * D1 * Q[2]));
-  const real t5 = -(Q[2]);
-  o[5] = (t2 + t5);
-  const real t6 = (Q[3] * Q[3]);
-  o[6] = -((real(1.0) / 2.0) * (-(12.0 * t4 * Q[4]) - (3.0 * t3 * Q[2] * Q[4]) - (8.0 * t6 * D1) + 12.0 * D1 * Q[2] * Q[4] + 2.0 * t3 * t6) * t3 * o[1] / (o[4]));
+  const real t4 = -(t3 * Q[2]);
+  const real t5 = (omega * omega);
+  const real t6 = -(4.0 * t5);
+  const real t7 = 4.0 * D1 * Q[2];
+  o[4] = -((t4 + t6 + t7));
+  const real t8 = -(Q[2]);
+  o[5] = (t2 + t8);
+  const real t9 = (Q[3] * Q[3]);
+  o[6] = -((real(1.0) / 2.0) * (-(12.0 * t5 * Q[4]) - (3.0 * t3 * Q[2] * Q[4]) - (8.0 * t9 * D1) + 12.0 * D1 * Q[2] * Q[4] + 2.0 * t3 * t9) * t3 * o[1] / (o[4]));
   o[7] = 2.0 * D1 * Q[3] / (o[5]);
   o[8] = (-(o[3] * o[7]) + o[6]);
-  const real t7 = (D1 * D1 * D1);
-  o[9] = (real(1.0) / 2.0) * (-(12.0 * t3 * Q[2] * Q[4] * o[1] * o[5]) - (2.0 * t7 * t6 * o[1] * o[5]) - (4.0 * Q[3] * o[3] * o[4]) + 12.0 * t4 * D1 * Q[4] * o[1] * o[5] + 3.0 * t7 * Q[2] * Q[4] * o[1] * o[5] + 8.0 * t3 * t6 * o[1] * o[5]) * D1;
-  o[10] = -((t4 + t1));
-  o[11] = (magnitude(-(4.0 * D1 * Q[2])) + magnitude(t3 * Q[2]) + magnitude(4.0 * t4));
-  o[12] = (magnitude(t2) + magnitude(t5));
+  const real t10 = (D1 * D1 * D1);
+  o[9] = (real(1.0) / 2.0) * (-(12.0 * t3 * Q[2] * Q[4] * o[1] * o[5]) - (2.0 * t10 * t9 * o[1] * o[5]) - (4.0 * Q[3] * o[3] * o[4]) + 12.0 * t5 * D1 * Q[4] * o[1] * o[5] + 3.0 * t10 * Q[2] * Q[4] * o[1] * o[5] + 8.0 * t3 * t9 * o[1] * o[5]) * D1;
+  o[10] = -((t5 + t1));
+  o[11] = (magnitude(t4) + magnitude(t6) + magnitude(t7));
+  o[12] = (magnitude(t2) + magnitude(t8));
   for (int k = 0; k < 13; ++k) out[k] = static_cast<double>(o[k]);
 }
 

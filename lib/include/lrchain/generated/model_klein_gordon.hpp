@@ -84,17 +84,20 @@ inline void nls(double D1_in, double sigma_in, double omega_in, const double* q,
   o[3] = 0.0;
   const real t1 = (Q[1] * Q[1]);
   const real t2 = (D1 * D1);
-  const real t3 = (omega * omega);
-  o[4] = -((t1 - (t2 * Q[0]) - (4.0 * t3) + 4.0 * D1 * Q[0]));
+  const real t3 = -(t2 * Q[0]);
+  const real t4 = (omega * omega);
+  const real t5 = -(4.0 * t4);
+  const real t6 = 4.0 * D1 * Q[0];
+  o[4] = -((t1 + t3 + t5 + t6));
   o[5] = 1.0;
-  const real t4 = (Q[2] * Q[2]);
-  const real t5 = (-(12.0 * t1 * t3 * Q[3]) - (16.0 * t4 * D1 * Q[0]) - (3.0 * t2 * t1 * Q[0] * Q[3]) - (6.0 * t1 * t4) + 12.0 * t1 * D1 * Q[0] * Q[3] + 16.0 * t4 * t3 + 3.0 * (Q[1] * Q[1] * Q[1] * Q[1]) * Q[3] + 4.0 * t2 * t4 * Q[0]);
-  o[6] = -((real(1.0) / 2.0) * t5 * o[1] / ((Q[1] * Q[1]) * o[4]));
+  const real t7 = (Q[2] * Q[2]);
+  const real t8 = (-(12.0 * t1 * t4 * Q[3]) - (16.0 * t7 * D1 * Q[0]) - (3.0 * t2 * t1 * Q[0] * Q[3]) - (6.0 * t1 * t7) + 12.0 * t1 * D1 * Q[0] * Q[3] + 16.0 * t7 * t4 + 3.0 * (Q[1] * Q[1] * Q[1] * Q[1]) * Q[3] + 4.0 * t2 * t7 * Q[0]);
+  o[6] = -((real(1.0) / 2.0) * t8 * o[1] / ((Q[1] * Q[1]) * o[4]));
   o[7] = 0.0;
   o[8] = (-(o[3] * o[7]) + o[6]);
-  o[9] = -((real(1.0) / 2.0) * t5 * o[1] * o[5] / ((Q[1] * Q[1])));
-  o[10] = (t1 - (t3) + D1 * Q[0]);
-  o[11] = (magnitude(-(t1)) + magnitude(-(4.0 * D1 * Q[0])) + magnitude(t2 * Q[0]) + magnitude(4.0 * t3));
+  o[9] = -((real(1.0) / 2.0) * t8 * o[1] * o[5] / ((Q[1] * Q[1])));
+  o[10] = (t1 - (t4) + D1 * Q[0]);
+  o[11] = (magnitude(t1) + magnitude(t3) + magnitude(t5) + magnitude(t6));
   o[12] = magnitude(1.0);
   for (int k = 0; k < 13; ++k) out[k] = static_cast<double>(o[k]);
 }

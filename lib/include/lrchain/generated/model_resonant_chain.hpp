@@ -32,38 +32,149 @@ inline void dispersion(double D1, double sigma, const double* q, double* w) noex
   w[2] = q[3];
 }
 
-// NLS coefficients at omega on a branch of det M = 0 (outputs in lrchain::ModelOutput order).
+// Coefficients of det M as dispersion(), in long double arithmetic.
+inline void dispersion_extended(long double D1, long double sigma, const long double* Q, long double* w) noexcept {
+  using real [[maybe_unused]] = long double;
+  (void)sigma;
+  (void)Q;
+  w[0] = D1 * Q[2] * Q[4];
+  w[1] = (-(D1 * Q[3] * Q[4]) - (Q[2]) - (Q[2] * Q[3]));
+  w[2] = Q[3];
+}
+
+// nls() in long double from consistent inputs, where the double nls loses digits.
+inline void nls_extended(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
+  using real [[maybe_unused]] = long double;
+  const auto magnitude = [](real x) { return x < 0 ? -x : x; };
+  real Q[7];
+  for (int i = 0; i < 7; ++i) Q[i] = q[i];
+  // (sin, cos)(theta/2) from D1 = 4 sin^2, sigma = 2 sin cos, rescaled so that sin^2 + cos^2 = 1 here.
+  real D1 = D1_in, sigma = sigma_in;
+  if (D1_in > 0.0) {
+    const real norm = real(0.25) * D1_in + real(sigma_in) * sigma_in / D1_in;
+    D1 = D1_in / norm;
+    sigma = sigma_in / norm;
+  }
+  // omega^2: Newton steps on det M = 0 from the double root.
+  real w[3];
+  dispersion_extended(D1, sigma, Q, w);
+  real w2 = real(omega_in) * omega_in;
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    real p = 0, dp = 0;
+    for (int k = 2; k >= 0; --k) {
+      dp = dp * w2 + p;
+      p = p * w2 + w[k];
+    }
+    const real step = dp != 0 ? p / dp : real(0);
+    if (!(magnitude(step) <= 1e-6 * w2)) break;
+    w2 -= step;
+  }
+  real omega = omega_in;
+  for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);
+  real o[13];
+  const real t0 = (Q[2] * Q[2]);
+  const real t1 = (omega * omega);
+  const real t2 = (Q[3] * Q[3]);
+  const real t3 = (omega * omega * omega * omega);
+  const real t4 = (-(t1 * Q[3]) + Q[2]);
+  const real t5 = (t4 * t4);
+  o[0] = t5 * Q[4] * sigma / ((t0 - (2.0 * t1 * Q[2] * Q[3]) + t0 * Q[3] + t2 * t3) * omega);
+  o[1] = t5 / ((t0 - (2.0 * t1 * Q[2] * Q[3]) + t0 * Q[3] + t2 * t3) * omega);
+  const real t6 = (Q[2] * Q[2] * Q[2]);
+  const real t7 = (o[0] * o[0]);
+  const real t8 = (Q[3] * Q[3] * Q[3]);
+  const real t9 = (omega * omega * omega * omega * omega * omega);
+  o[2] = (real(1.0) / 2.0) * (-(t6 * D1 * Q[4]) - (2.0 * t6 * t7) - (2.0 * t6 * t7 * Q[3]) - (2.0 * t8 * t9 * Q[4]) - (3.0 * t2 * t3 * D1 * Q[2] * Q[4]) - (6.0 * t0 * t2 * t7 * t1) - (6.0 * t0 * t1 * Q[3] * Q[4]) - (6.0 * t2 * t7 * t3 * Q[2]) + t8 * t9 * D1 * Q[4] + 2.0 * t6 * Q[4] + 2.0 * t8 * t7 * t9 + 3.0 * t0 * t1 * D1 * Q[3] * Q[4] + 6.0 * t0 * t7 * t1 * Q[3] + 6.0 * t2 * t3 * Q[2] * Q[4]) * o[1] / ((t4 * t4 * t4));
+  o[3] = -(D1 * Q[5] * o[1]);
+  const real t10 = (D1 * D1);
+  const real t11 = -(t10 * Q[2] * Q[4]);
+  const real t12 = -(16.0 * t1 * D1 * Q[3] * Q[4]);
+  const real t13 = -(4.0 * t1 * Q[2]);
+  const real t14 = -(4.0 * t1 * Q[2] * Q[3]);
+  const real t15 = 16.0 * t3 * Q[3];
+  const real t16 = 4.0 * t10 * t1 * Q[3] * Q[4];
+  const real t17 = 4.0 * D1 * Q[2] * Q[4];
+  o[4] = -((t11 + t12 + t13 + t14 + t15 + t16 + t17));
+  const real t18 = -(Q[4]);
+  const real t19 = t7 * Q[3];
+  o[5] = (t7 + t18 + t19);
+  const real t20 = (Q[5] * Q[5]);
+  o[6] = (real(1.0) / 2.0) * (-(12.0 * t10 * t1 * Q[3] * Q[4] * Q[6]) - (12.0 * D1 * Q[2] * Q[4] * Q[6]) - (2.0 * t10 * t20 * Q[2]) - (32.0 * t20 * t1 * D1 * Q[3]) - (48.0 * t3 * Q[3] * Q[6]) + 12.0 * t1 * Q[2] * Q[3] * Q[6] + 12.0 * t1 * Q[2] * Q[6] + 3.0 * t10 * Q[2] * Q[4] * Q[6] + 48.0 * t1 * D1 * Q[3] * Q[4] * Q[6] + 8.0 * t10 * t20 * t1 * Q[3] + 8.0 * t20 * D1 * Q[2]) * t10 * o[1] / (o[4]);
+  o[7] = 2.0 * D1 * Q[5] / (o[5]);
+  o[8] = (-(o[3] * o[7]) + o[6]);
+  const real t21 = (D1 * D1 * D1);
+  o[9] = (real(1.0) / 2.0) * (-(12.0 * t10 * Q[2] * Q[4] * Q[6] * o[1] * o[5]) - (12.0 * t21 * t1 * Q[3] * Q[4] * Q[6] * o[1] * o[5]) - (2.0 * t21 * t20 * Q[2] * o[1] * o[5]) - (32.0 * t10 * t20 * t1 * Q[3] * o[1] * o[5]) - (4.0 * Q[5] * o[3] * o[4]) - (48.0 * t3 * D1 * Q[3] * Q[6] * o[1] * o[5]) + 12.0 * t1 * D1 * Q[2] * Q[3] * Q[6] * o[1] * o[5] + 12.0 * t1 * D1 * Q[2] * Q[6] * o[1] * o[5] + 3.0 * t21 * Q[2] * Q[4] * Q[6] * o[1] * o[5] + 48.0 * t10 * t1 * Q[3] * Q[4] * Q[6] * o[1] * o[5] + 8.0 * t10 * t20 * Q[2] * o[1] * o[5] + 8.0 * t21 * t20 * t1 * Q[3] * o[1] * o[5]) * D1;
+  o[10] = (-(t1 * D1 * Q[3] * Q[4]) - (t1 * Q[2]) - (t1 * Q[2] * Q[3]) + t3 * Q[3] + D1 * Q[2] * Q[4]);
+  o[11] = (magnitude(t11) + magnitude(t12) + magnitude(t13) + magnitude(t14) + magnitude(t15) + magnitude(t16) + magnitude(t17));
+  o[12] = (magnitude(t7) + magnitude(t18) + magnitude(t19));
+  for (int k = 0; k < 13; ++k) out[k] = static_cast<double>(o[k]);
+}
+
+// NLS coefficients at omega on a branch of det M = 0 (outputs in lrchain::ModelOutput order). omega'' by implicit differentiation of det M; theta < 0.05 in long double (nls_extended).
 inline void nls(double D1, double sigma, double omega, const double* q, double* out) noexcept {
+  if (D1 < 0.0025) {
+    nls_extended(D1, sigma, omega, q, out);
+    return;
+  }
   (void)sigma;
   (void)q;
+  double dispersion_W, dispersion_D, dispersion_WW, dispersion_WD;
+  double sum_h, cancellation_h;
   const double t0 = (q[2] * q[2]);
   const double t1 = (omega * omega);
   const double t2 = (omega * omega * omega * omega);
-  const double t3 = (q[3] * q[3]);
-  const double t4 = (-(t1 * q[3]) + q[2]);
-  const double t5 = (t4 * t4);
-  out[0] = t5 * q[4] * sigma / ((t0 - (2.0 * t1 * q[2] * q[3]) + t2 * t3 + t0 * q[3]) * omega);
-  out[1] = t5 / ((t0 - (2.0 * t1 * q[2] * q[3]) + t2 * t3 + t0 * q[3]) * omega);
-  const double t6 = (omega * omega * omega * omega * omega * omega);
-  const double t7 = (q[3] * q[3] * q[3]);
-  const double t8 = (out[0] * out[0]);
-  const double t9 = (q[2] * q[2] * q[2]);
-  out[2] = -((1.0 / 2.0) * (-(t6 * t7 * D1 * q[4]) - (2.0 * t6 * t8 * t7) - (2.0 * t9 * q[4]) - (3.0 * t1 * t0 * D1 * q[3] * q[4]) - (6.0 * t1 * t8 * t0 * q[3]) - (6.0 * t2 * t3 * q[2] * q[4]) + t9 * D1 * q[4] + 2.0 * t6 * t7 * q[4] + 2.0 * t8 * t9 + 2.0 * t8 * t9 * q[3] + 3.0 * t2 * t3 * D1 * q[2] * q[4] + 6.0 * t1 * t8 * t0 * t3 + 6.0 * t1 * t0 * q[3] * q[4] + 6.0 * t2 * t8 * t3 * q[2]) * out[1] / ((t4 * t4 * t4)));
+  const double t3 = (-(t1 * q[3]) + q[2]);
+  const double t4 = (t3 * t3);
+  out[0] = t4 * q[4] * sigma / ((t0 - (2.0 * t1 * q[2] * q[3]) + t2 * (q[3] * q[3]) + t0 * q[3]) * omega);
+  out[1] = t4 / ((t0 - (2.0 * t1 * q[2] * q[3]) + t2 * (q[3] * q[3]) + t0 * q[3]) * omega);
+  dispersion_W = (-(D1 * q[3] * q[4]) - (q[2]) - (q[2] * q[3]) + 2.0 * t1 * q[3]);
+  dispersion_D = t3 * q[4];
+  dispersion_WW = 2.0 * q[3];
+  dispersion_WD = -(q[3] * q[4]);
+  const double t5 = (out[0] * out[0]);
+  out[2] = -((1.0 / 2.0) * (-(D1 * dispersion_D) + 2.0 * t5 * dispersion_W + 2.0 * dispersion_D + 4.0 * t1 * t5 * dispersion_WW + 8.0 * dispersion_WD * omega * out[0] * sigma) / (dispersion_W * omega));
   out[3] = -(D1 * out[1] * q[5]);
-  const double t10 = (D1 * D1);
-  out[4] = -((-(t10 * q[2] * q[4]) - (16.0 * t1 * D1 * q[3] * q[4]) - (4.0 * t1 * q[2]) - (4.0 * t1 * q[2] * q[3]) + 16.0 * t2 * q[3] + 4.0 * t10 * t1 * q[3] * q[4] + 4.0 * D1 * q[2] * q[4]));
-  const double t11 = -(q[4]);
-  const double t12 = t8 * q[3];
-  out[5] = (t8 + t11 + t12);
-  const double t13 = (q[5] * q[5]);
-  out[6] = (1.0 / 2.0) * (-(12.0 * t10 * t1 * q[3] * q[4] * q[6]) - (12.0 * D1 * q[2] * q[4] * q[6]) - (2.0 * t10 * t13 * q[2]) - (32.0 * t1 * t13 * D1 * q[3]) - (48.0 * t2 * q[3] * q[6]) + 12.0 * t1 * q[2] * q[3] * q[6] + 12.0 * t1 * q[2] * q[6] + 3.0 * t10 * q[2] * q[4] * q[6] + 48.0 * t1 * D1 * q[3] * q[4] * q[6] + 8.0 * t10 * t1 * t13 * q[3] + 8.0 * t13 * D1 * q[2]) * t10 * out[1] / (out[4]);
+  const double t6 = (D1 * D1);
+  const double t7 = -(t6 * q[2] * q[4]);
+  const double t8 = -(16.0 * t1 * D1 * q[3] * q[4]);
+  const double t9 = -(4.0 * t1 * q[2]);
+  const double t10 = -(4.0 * t1 * q[2] * q[3]);
+  const double t11 = 16.0 * t2 * q[3];
+  const double t12 = 4.0 * t6 * t1 * q[3] * q[4];
+  const double t13 = 4.0 * D1 * q[2] * q[4];
+  out[4] = -((t7 + t8 + t9 + t10 + t11 + t12 + t13));
+  const double t14 = -(q[4]);
+  const double t15 = t5 * q[3];
+  out[5] = (t5 + t14 + t15);
+  const double t16 = -(12.0 * t6 * t1 * q[3] * q[4] * q[6]);
+  const double t17 = -(12.0 * D1 * q[2] * q[4] * q[6]);
+  const double t18 = (q[5] * q[5]);
+  const double t19 = -(2.0 * t6 * t18 * q[2]);
+  const double t20 = -(32.0 * t1 * t18 * D1 * q[3]);
+  const double t21 = -(48.0 * t2 * q[3] * q[6]);
+  const double t22 = 12.0 * t1 * q[2] * q[3] * q[6];
+  const double t23 = 12.0 * t1 * q[2] * q[6];
+  const double t24 = 3.0 * t6 * q[2] * q[4] * q[6];
+  const double t25 = 48.0 * t1 * D1 * q[3] * q[4] * q[6];
+  const double t26 = 8.0 * t6 * t1 * t18 * q[3];
+  const double t27 = 8.0 * t18 * D1 * q[2];
+  const double t28 = (t16 + t17 + t19 + t20 + t21 + t22 + t23 + t24 + t25 + t26 + t27);
+  out[6] = (1.0 / 2.0) * t28 * t6 * out[1] / (out[4]);
   out[7] = 2.0 * D1 * q[5] / (out[5]);
   out[8] = (-(out[3] * out[7]) + out[6]);
-  const double t14 = (D1 * D1 * D1);
-  out[9] = (1.0 / 2.0) * (-(12.0 * t10 * out[1] * out[5] * q[2] * q[4] * q[6]) - (12.0 * t14 * t1 * out[1] * out[5] * q[3] * q[4] * q[6]) - (2.0 * t14 * t13 * out[1] * out[5] * q[2]) - (32.0 * t10 * t1 * t13 * out[1] * out[5] * q[3]) - (4.0 * out[3] * out[4] * q[5]) - (48.0 * t2 * D1 * out[1] * out[5] * q[3] * q[6]) + 12.0 * t1 * D1 * out[1] * out[5] * q[2] * q[3] * q[6] + 12.0 * t1 * D1 * out[1] * out[5] * q[2] * q[6] + 3.0 * t14 * out[1] * out[5] * q[2] * q[4] * q[6] + 48.0 * t10 * t1 * out[1] * out[5] * q[3] * q[4] * q[6] + 8.0 * t10 * t13 * out[1] * out[5] * q[2] + 8.0 * t14 * t1 * t13 * out[1] * out[5] * q[3]) * D1;
+  const double t29 = (D1 * D1 * D1);
+  out[9] = (1.0 / 2.0) * (-(12.0 * t6 * out[1] * out[5] * q[2] * q[4] * q[6]) - (12.0 * t29 * t1 * out[1] * out[5] * q[3] * q[4] * q[6]) - (2.0 * t29 * t18 * out[1] * out[5] * q[2]) - (32.0 * t6 * t1 * t18 * out[1] * out[5] * q[3]) - (4.0 * out[3] * out[4] * q[5]) - (48.0 * t2 * D1 * out[1] * out[5] * q[3] * q[6]) + 12.0 * t1 * D1 * out[1] * out[5] * q[2] * q[3] * q[6] + 12.0 * t1 * D1 * out[1] * out[5] * q[2] * q[6] + 3.0 * t29 * out[1] * out[5] * q[2] * q[4] * q[6] + 48.0 * t6 * t1 * out[1] * out[5] * q[3] * q[4] * q[6] + 8.0 * t6 * t18 * out[1] * out[5] * q[2] + 8.0 * t29 * t1 * t18 * out[1] * out[5] * q[3]) * D1;
   out[10] = (-(t1 * D1 * q[3] * q[4]) - (t1 * q[2]) - (t1 * q[2] * q[3]) + t2 * q[3] + D1 * q[2] * q[4]);
-  out[11] = (std::abs(-(16.0 * t2 * q[3])) + std::abs(-(4.0 * t10 * t1 * q[3] * q[4])) + std::abs(-(4.0 * D1 * q[2] * q[4])) + std::abs(t10 * q[2] * q[4]) + std::abs(16.0 * t1 * D1 * q[3] * q[4]) + std::abs(4.0 * t1 * q[2]) + std::abs(4.0 * t1 * q[2] * q[3]));
-  out[12] = (std::abs(t8) + std::abs(t11) + std::abs(t12));
+  out[11] = (std::abs(t7) + std::abs(t8) + std::abs(t9) + std::abs(t10) + std::abs(t11) + std::abs(t12) + std::abs(t13));
+  out[12] = (std::abs(t5) + std::abs(t14) + std::abs(t15));
+  sum_h = t28;
+  cancellation_h = (std::abs(t16) + std::abs(t17) + std::abs(t19) + std::abs(t20) + std::abs(t21) + std::abs(t22) + std::abs(t23) + std::abs(t24) + std::abs(t25) + std::abs(t26) + std::abs(t27));
+  // Sums that cancel in double (near a zero of h or h_tilde, or a non-resonance): long double.
+  const double limit = 1e4;
+  if (!(std::abs(sum_h) * limit > cancellation_h &&
+        std::abs(out[4]) * limit > out[11] && std::abs(out[5]) * limit > out[12] &&
+        std::abs(out[8]) * limit > std::abs(out[6]) + std::abs(out[3] * out[7])))
+    nls_extended(D1, sigma, omega, q, out);
 }
 
 // The model's description for lrchain::Model (parameters, ranges, branches, evaluators).
