@@ -124,6 +124,17 @@ static void BM_PackedSqrtPerBondFloor(benchmark::State& st) {
 }
 BENCHMARK(BM_PackedSqrtPerBondFloor)->Arg(1001)->Arg(4001);
 
+// Times the generated lattice's accelerations at state `s`, reported per site of `n`.
+static void time_generated_rhs(benchmark::State& st, const ModelLattice& lattice, const State& s, std::size_t n) {
+  State ds(s.size());
+  for (auto _ : st) {
+    lattice(s, ds, 0.0);
+    benchmark::DoNotOptimize(ds.data());
+    benchmark::ClobberMemory();
+  }
+  per_site_counter(st, n);
+}
+
 // The generated lattices of the shipped models (models/*.toml at their defaults) in both forms:
 // strain form (translation-invariant models only; an on-site model is skipped there) and
 // displacement form; periodic ends. The first argument indexes shipped_lattice_models(), the second
@@ -145,14 +156,8 @@ static void BM_ModelRHS(benchmark::State& st) {
   ModelLattice lattice(k, parameters, n, true, form);
   State s = random_state(n);
   s.resize(2 * lattice.positions());
-  State ds(s.size());
-  for (auto _ : st) {
-    lattice(s, ds, 0.0);
-    benchmark::DoNotOptimize(ds.data());
-    benchmark::ClobberMemory();
-  }
   st.SetLabel(name + (form == LatticeForm::strain ? " (strain)" : " (displacement)"));
-  per_site_counter(st, n);
+  time_generated_rhs(st, lattice, s, n);
 }
 BENCHMARK(BM_ModelRHS)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6}, {1001, 4001}, {0, 1}});
 
@@ -163,13 +168,7 @@ static void BM_GeneratedResonantStrainRHS(benchmark::State& st) {
   const Params p;
   ModelLattice lattice(*shipped_lattice_kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, false,
                        LatticeForm::strain);
-  State s = random_state(n), ds(s.size());
-  for (auto _ : st) {
-    lattice(s, ds, 0.0);
-    benchmark::DoNotOptimize(ds.data());
-    benchmark::ClobberMemory();
-  }
-  per_site_counter(st, n);
+  time_generated_rhs(st, lattice, random_state(n), n);
 }
 BENCHMARK(BM_GeneratedResonantStrainRHS)->Arg(1001)->Arg(4001);
 
@@ -180,13 +179,7 @@ static void BM_GeneratedResonantDisplacementRHS(benchmark::State& st) {
   const Params p;
   ModelLattice lattice(*shipped_lattice_kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, false,
                        LatticeForm::displacement);
-  State s = random_state(n), ds(s.size());
-  for (auto _ : st) {
-    lattice(s, ds, 0.0);
-    benchmark::DoNotOptimize(ds.data());
-    benchmark::ClobberMemory();
-  }
-  per_site_counter(st, n);
+  time_generated_rhs(st, lattice, random_state(n), n);
 }
 BENCHMARK(BM_GeneratedResonantDisplacementRHS)->Arg(1002)->Arg(4002);
 

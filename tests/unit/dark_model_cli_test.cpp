@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../support/refusal_checks.hpp"
 #include "../support/run_lrchain.hpp"
 
 namespace fs = std::filesystem;
@@ -21,18 +22,10 @@ namespace {
 
 const fs::path source_dir = LRCHAIN_SOURCE_DIR;
 
-void check_refused(const std::vector<std::string>& args, const std::string& needle) {
-  const fs::path out = fs::temp_directory_path() / ("lrchain-dark-model-refused-" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  std::vector<std::string> argv = args;
-  argv.insert(argv.end(), {"--quiet", "--out", out.string()});
-  const auto r = run_lrchain(argv, source_dir);
-  INFO(r.err);
-  CHECK(r.exit_code == 2);
-  CHECK(r.err.find(needle) != std::string::npos);
-  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-  CHECK(r.out.empty());
-  CHECK(!fs::exists(out));
+// A dark job given --quiet (no Newton progress on stderr), refused.
+void check_refused(std::vector<std::string> args, const std::string& needle) {
+  args.push_back("--quiet");
+  lrchain::test::check_refused_run(args, needle, source_dir);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/sim/model_experiment_config.hpp"
+#include "../support/refusal_checks.hpp"
 #include "../support/run_lrchain.hpp"
 
 namespace fs = std::filesystem;
@@ -22,16 +23,7 @@ namespace {
 const fs::path source_dir = LRCHAIN_SOURCE_DIR;
 
 void check_refused(const std::vector<std::string>& args, const std::string& needle) {
-  const fs::path out = fs::temp_directory_path() / ("lrchain-model-simulate-refused-" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  std::vector<std::string> argv = args;
-  argv.insert(argv.end(), {"--out", out.string()});
-  const auto r = run_lrchain(argv, source_dir);
-  INFO(r.err);
-  CHECK(r.exit_code == 2);
-  CHECK(r.err.find(needle) != std::string::npos);
-  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-  CHECK(!fs::exists(out));
+  lrchain::test::check_refused_run(args, needle, source_dir);
 }
 
 }  // namespace
