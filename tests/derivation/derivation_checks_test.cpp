@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 #include "../support/run_lrchain.hpp"
 #include "lrchain/derivation/generate.hpp"
@@ -63,23 +64,32 @@ TEST_CASE("re-running lrchain-derive reproduces every committed generated header
   const auto tmp = std::filesystem::temp_directory_path() / ("lrchain-derive-drift-" + std::to_string(::getpid()));
   std::filesystem::remove_all(tmp);
   const auto source = std::filesystem::path(LRCHAIN_SOURCE_DIR);
-  REQUIRE(lrchain::test::run_command({LRCHAIN_DERIVE, "--quiet", "--out", tmp.string(), "--models",
-                                      (source / "models").string(), "--double-evaluators", LRCHAIN_DOUBLE_EVALUATOR_MODELS})
+  auto models = source / "models";
+#ifdef LRCHAIN_SANITIZE_BUILD
+  // Under the sanitizers (about ten times slower) three models cover the emitter's cases: a mean-flow
+  // chain, an on-site chain and complex two-field kernels; the Release build regenerates them all.
+  const std::vector<std::string> subset = {"fput", "klein_gordon", "diatomic_chain"};
+  models = tmp / "models";
+  std::filesystem::create_directories(models);
+  for (const auto& name : subset) std::filesystem::copy_file(source / "models" / (name + ".toml"), models / (name + ".toml"));
+#endif
+  REQUIRE(lrchain::test::run_command({LRCHAIN_DERIVE, "--quiet", "--out", (tmp / "out").string(), "--models",
+                                      models.string(), "--double-evaluators", LRCHAIN_DOUBLE_EVALUATOR_MODELS})
               .exit_code == 0);
   const auto committed = source / "lib/include/lrchain/generated";
   int compared = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(tmp)) {
+  for (const auto& entry : std::filesystem::directory_iterator(tmp / "out")) {
     const std::string name = entry.path().filename().string();
+    if (models != source / "models" && name == "shipped_models.hpp") continue;  // lists the subset only
     INFO(name);
     const std::string fresh = slurp(entry.path());
     REQUIRE(!fresh.empty());
     CHECK(fresh == slurp(committed / name));
     ++compared;
   }
-  // nls_coefficients.hpp, shipped_models.hpp and one header per models/*.toml.
+  // nls_coefficients.hpp, shipped_models.hpp (all models only) and one header per model file.
   int model_files = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(source / "models"))
-    model_files += entry.path().extension() == ".toml";
-  CHECK(compared == model_files + 2);
+  for (const auto& entry : std::filesystem::directory_iterator(models)) model_files += entry.path().extension() == ".toml";
+  CHECK(compared == model_files + (models == source / "models" ? 2 : 1));
   std::filesystem::remove_all(tmp);
 }
