@@ -9,10 +9,10 @@
   check of the derived h and c).
 
 Each run integrates in C++ without holding the GIL; Ctrl-C stops it at the next step and raises
-``KeyboardInterrupt``. Keyword arguments left out (or None) take the library's defaults, the same as
-the ``lrchain simulate`` command's, and the keywords are its options' names (``sites`` for
-``--sites``, ``switch_off_time`` for ``--switch-off-time``, ...). An ``observer(t, q1, q2, e)`` is called at every sample with
-copies of the lattice fields (bright: strains x_n, y_n; drive, modulated: displacements u_n, v_n)
+``KeyboardInterrupt`` (model-file runs: when the run returns). Keyword arguments left out (or None)
+take the library's defaults, the same as the ``lrchain simulate`` command's, and the keywords are
+its options' names (``sites`` for ``--sites``, ``switch_off_time`` for ``--switch-off-time``, ...).
+An ``observer(t, q1, q2, e)`` is called at every sample with copies of the lattice fields (bright: strains x_n, y_n; drive, modulated: displacements u_n, v_n)
 and the energy density e_n.
 """
 
@@ -141,7 +141,8 @@ def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=
     generated lattice, ``branch`` one of ``model.branches``, with ``detuning``, ``n0``, ``sites`` (odd, in
     [21, 100000001]), ``periods``, ``sample_every``, ``dt`` (the srkn11b step; default from the fastest
     linear mode) and ``ansatz_ends`` (emitting ends, integrated with rkf78); the other keywords are
-    refused as the command refuses them. Returns :class:`ModelBrightResult`.
+    refused as the command refuses them. Ctrl-C is raised when the run returns (the model run
+    polls no stop flag). Returns :class:`ModelBrightResult`.
     """
     if model is None and isinstance(params, Model):  # bright(lrchain.load_model(...), ...)
         model, params = params, None
@@ -244,7 +245,8 @@ def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, ste
     their frequency measured over ``periods`` carrier periods (default 400, ``steps_per_period`` 80
     srkn11b steps) against omega + h U^2/4, and a Gaussian wave packet (``packet_amplitude``, default
     a tenth of the smallest U; ``packet_width`` 24 sites) whose speed is compared with c.
-    ``model`` is an :class:`lrchain.Model`. Returns :class:`RingResult`."""
+    ``model`` is an :class:`lrchain.Model`. Ctrl-C is raised when the run returns. Returns
+    :class:`RingResult`."""
     options = _options(theta=theta, amplitudes=None if amplitudes is None else [float(a) for a in amplitudes],
                        sites=sites, periods=periods, steps_per_period=steps_per_period,
                        packet_amplitude=packet_amplitude, packet_width=packet_width)
