@@ -55,3 +55,14 @@ def python_names(call, **renames):
         if message.startswith(f"invalid {old}:"):
             message = f"invalid {new}:" + message[len(f"invalid {old}:"):]
         raise InvalidParameterError(message, new) from None
+
+
+def checked_model(model):
+    """``model`` if it is an :class:`lrchain.Model`, else InvalidParameterError naming ``model``."""
+    from ._lrchain import Model
+    from .errors import InvalidParameterError
+
+    if not isinstance(model, Model):
+        raise InvalidParameterError(f"invalid model: must be an lrchain.Model (lrchain.load_model(file or name)), "
+                                    f"not {type(model).__name__}", "model")
+    return model

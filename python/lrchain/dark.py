@@ -22,7 +22,7 @@ import os
 import numpy as np
 
 from . import _lrchain
-from ._keywords import python_names, renamed
+from ._keywords import checked_model, python_names, renamed
 from ._lrchain import Model, Params
 from .errors import InputError
 from .hdf5 import HDF5Mixin
@@ -114,6 +114,7 @@ def _job(params, model, omega_b, branch, function):
     if model is None and isinstance(params, Model):
         model, params = params, None
     if model is not None:
+        checked_model(model)
         if params is not None:
             raise InputError(f"{function}: give params (the resonant chain) or model, not both")
         if omega_b is None:

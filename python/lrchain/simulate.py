@@ -23,7 +23,7 @@ from math import pi
 import numpy as np
 
 from . import _lrchain
-from ._keywords import odd_sites, python_names, renamed
+from ._keywords import checked_model, odd_sites, python_names, renamed
 from ._lrchain import Model, Params
 from .errors import InputError
 from .hdf5 import write_simulation
@@ -147,6 +147,7 @@ def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=
     if model is None and isinstance(params, Model):  # bright(lrchain.load_model(...), ...)
         model, params = params, None
     if model is not None:
+        checked_model(model)
         given = dict(params=params, spacetime_every=spacetime_every, snapshot_periods=snapshot_periods,
                      centre_window=centre_window, error_window_end=error_window_end, stepper=stepper,
                      abs_tol=abs_tol, rel_tol=rel_tol, max_memory=max_memory, observer=observer,
@@ -247,6 +248,7 @@ def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, ste
     a tenth of the smallest U; ``packet_width`` 24 sites) whose speed is compared with c.
     ``model`` is an :class:`lrchain.Model`. Ctrl-C is raised when the run returns. Returns
     :class:`RingResult`."""
+    checked_model(model)
     options = _options(theta=theta, amplitudes=None if amplitudes is None else [float(a) for a in amplitudes],
                        sites=sites, periods=periods, steps_per_period=steps_per_period,
                        packet_amplitude=packet_amplitude, packet_width=packet_width)

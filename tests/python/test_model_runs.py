@@ -57,6 +57,9 @@ def test_model_bright_refusals():
     with pytest.raises(lrchain.InputError, match="stepper is not available with model="):
         lrchain.simulate.bright(model=model, branch="acoustic", theta=np.pi / 2, stepper="rkf78")
     with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.simulate.bright(model=lrchain.Params(), branch="acoustic", theta=np.pi / 2)
+    assert err.value.parameter == "model"
+    with pytest.raises(lrchain.InvalidParameterError) as err:
         lrchain.simulate.bright(model=model, branch="acoustic", theta=np.pi / 2, sites=11)
     assert err.value.parameter == "sites"
     with pytest.raises(lrchain.InvalidParameterError) as err:
