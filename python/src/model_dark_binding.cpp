@@ -41,7 +41,7 @@ struct ModelDarkJob {
 };
 
 // The checks of `lrchain dark ... --model` (edge, omega_b, sites, Newton, memory) before anything runs;
-// `periods` > 0 for an evolution, `t_end_name` names its option.
+// `periods`: the evolution's periods (0 for the other jobs), for the memory estimate.
 ModelDarkJob make_job(const LoadedModel& loaded, double omega_b, const std::optional<std::string>& branch,
                       const std::string& center, int sites, const std::string& mode, double tolerance,
                       int max_iterations, double periods) {
