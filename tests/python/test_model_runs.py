@@ -16,15 +16,15 @@ def _close(python, cli, rtol=1e-12):
     assert python == pytest.approx(cli, rel=rtol, abs=0), (python, cli)
 
 
-# fput, acoustic branch at theta = pi/2 (focusing, docs/simulate-models.md), 201 sites, 10 T_b.
-FPUT_BRIGHT = dict(branch="acoustic", theta=np.pi / 2, sites=201, periods=10)
+# fput, acoustic branch at theta = pi/2 (focusing, docs/simulate-models.md), 2001 sites, 10 T_b.
+FPUT_BRIGHT = dict(branch="acoustic", theta=np.pi / 2, sites=2001, periods=10)
 
 
 def test_model_bright_equals_cli(cli, source_dir):
     model_file = source_dir / "models" / "fput.toml"
     r = lrchain.simulate.bright(model=lrchain.load_model(model_file), **FPUT_BRIGHT)
     expected = cli("simulate", "bright", "--model", model_file, "--branch", "acoustic", "--theta", "pi/2",
-                   "--sites", 201, "--periods", 10, "--json", "--no-figures")
+                   "--sites", 2001, "--periods", 10, "--json", "--no-figures")
     for key in ("max_E_x", "energy0", "max_relative_energy_drift", "centre_speed"):
         _close(r.summary[key], expected[key])
     _close(r.summary["ansatz"]["omega_b"], expected["ansatz"]["omega_b"])
@@ -35,6 +35,8 @@ def test_model_bright_equals_cli(cli, source_dir):
     assert r.energy[0] == pytest.approx(r.summary["energy0"], rel=1e-15)
     drift = np.abs(r.energy / r.energy[0] - 1).max()
     assert drift == pytest.approx(r.summary["max_relative_energy_drift"], rel=1e-9)
+    assert drift < 1e-9  # srkn11b on an autonomous lattice (measured 2.2e-12)
+    assert r.summary["max_E_x"] < 0.05  # the NLS breather holds over 10 T_b (measured 0.79 %)
     assert r.t.shape == r.energy.shape == r.centre.shape == r.E_x.shape
     assert r.summary["model"]["name"] == "fput" and r.summary["model"]["lattice_code"]["compiled_in"] is True
 
