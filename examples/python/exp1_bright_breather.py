@@ -20,7 +20,7 @@ parser.add_argument("--out", type=Path, default=Path("."), help="directory for e
 parser.add_argument("--periods", type=float, default=200, help="run length in breather periods (default 200)")
 args = parser.parse_args()
 
-run = lrchain.simulate.bright(lrchain.Params(), "optical", pi / 2, N=500, periods=args.periods,
+run = lrchain.simulate.bright(lrchain.Params(), "optical", pi / 2, sites=1001, periods=args.periods,
                               stepper="srkn11b", dt=0.37)
 T_b = run.summary["ansatz"]["T_b"]
 e = run.energy_density

@@ -8,8 +8,10 @@ The C++ library behind the ``lrchain`` command, with numpy arrays in and out::
     kg = lrchain.load_model("klein_gordon", w0=1.2)  # a model file (or a shipped model's name)
 
 Submodules: :mod:`lrchain.regime` (focusing intervals, the regime maps of Figs. 2, 4, 5 and their
-boundary curves), :mod:`lrchain.simulate` (bright-breather, driven-chain and modulated-wave runs),
-:mod:`lrchain.dark` (exact dark breathers: Newton, continuation, Floquet multipliers, evolution).
+boundary curves), :mod:`lrchain.simulate` (bright-breather, driven-chain and modulated-wave runs;
+bright-breather and ring runs of any model file), :mod:`lrchain.dark` (exact dark breathers: Newton,
+continuation, Floquet multipliers, evolution; of the resonant chain or, with ``model=``, of any model
+file).
 Invalid input raises :class:`lrchain.InvalidParameterError` (a ``ValueError``) naming the parameter;
 Ctrl-C interrupts a long computation with ``KeyboardInterrupt``.
 """

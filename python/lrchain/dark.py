@@ -3,9 +3,15 @@ lattice with periodic ends, found by shooting Newton from the NLS approximation 
 continued in the frequency omega_b, with their Floquet multipliers and direct evolution.
 
 Every function starts from ``solve``'s arguments: ``params``, ``omega_b`` (on the gap side of the
-theta = pi band edge ``edge``, "optical" or "acoustic"), ``center`` ("bond" or "site"), ``sites``
+theta = pi band edge of ``branch``, "optical" or "acoustic"), ``center`` ("bond" or "site"), ``sites``
 (odd, >= 9), ``mode`` ("reversible" or "full" shooting), Newton's ``tolerance`` (max |F|) and
-``max_iterations``. Newton failing raises :class:`lrchain.NumericalFailure`; Ctrl-C during any of
+``max_iterations``: the options of ``lrchain dark solve|floquet|continue|evolve``.
+
+With ``model=`` (an :class:`lrchain.Model`: a shipped model or your own model file), they are
+``lrchain dark ... --model FILE``: the model's generated lattice on a periodic ring, at the band edge
+where its NLS is defocusing (``branch`` a name of ``model.branches``, default the first with a
+defocusing edge; theta = pi first, then theta = 0), ``omega_b`` required; the results are
+:class:`ModelDarkSolution`, :class:`ModelBranch` and :class:`ModelEvolution`. Newton failing raises :class:`lrchain.NumericalFailure`; Ctrl-C during any of
 these computations (Newton, the Floquet multipliers' monodromy matrix, continuation, evolution)
 stops it within one integration step and raises ``KeyboardInterrupt``.
 """
@@ -16,7 +22,9 @@ import os
 import numpy as np
 
 from . import _lrchain
-from ._lrchain import Params
+from ._keywords import checked_model, python_names, renamed
+from ._lrchain import Model, Params
+from .errors import InputError
 from .hdf5 import HDF5Mixin
 
 
@@ -100,23 +108,99 @@ def _solution(params, omega_b, d):
     return DarkSolution(omega_b=omega_b, floquet=_floquet(d.pop("floquet", None)), params=params, **d)
 
 
-def solve(params=None, omega_b=2.42, edge="optical", center="bond", sites=101, mode="reversible",
-          tolerance=1e-11, max_iterations=20):
-    """Newton (least squares) from the eq. xy_app seed; returns :class:`DarkSolution`."""
-    params = Params() if params is None else params
-    d = _lrchain.dark_solve(params, omega_b, edge, center, sites, mode, tolerance, max_iterations, False, False)
+def _job(params, model, omega_b, branch, function):
+    """(params, model, omega_b, branch) of a job: bright-style ``solve(model, ...)`` accepted, the
+    paper chain's defaults (omega_b 2.42, branch "optical") without a model."""
+    if model is None and isinstance(params, Model):
+        model, params = params, None
+    if model is not None:
+        checked_model(model)
+        if params is not None:
+            raise InputError(f"{function}: give params (the resonant chain) or model, not both")
+        if omega_b is None:
+            raise InputError(f"{function}: omega_b is required with model= (the breather frequency, on the side of "
+                             f"the defocusing band edge where (omega_b - omega) h_tilde > 0)")
+        return None, model, omega_b, branch
+    return (Params() if params is None else params), None, (2.42 if omega_b is None else omega_b), \
+        ("optical" if branch is None else branch)
+
+
+@renamed(edge="branch")
+def solve(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
+          tolerance=1e-11, max_iterations=20, *, model=None):
+    """Newton (least squares) from the eq. xy_app seed (omega_b default 2.42, branch "optical");
+    returns :class:`DarkSolution`. With ``model``: the model's seed at its defocusing edge; returns
+    :class:`ModelDarkSolution`."""
+    params, model, omega_b, branch = _job(params, model, omega_b, branch, "solve")
+    if model is not None:
+        return _model_solution(python_names(lambda: _lrchain.dark_model_solve(
+            model, omega_b, branch, center, sites, mode, tolerance, max_iterations, False)), omega_b)
+    d = python_names(lambda: _lrchain.dark_solve(params, omega_b, branch, center, sites, mode, tolerance,
+                                                 max_iterations, False, False))
     return _solution(params, omega_b, d)
 
 
-def floquet(params=None, omega_b=2.42, edge="optical", center="bond", sites=101, mode="reversible",
-            tolerance=1e-11, max_iterations=20, full_monodromy=False):
+@renamed(edge="branch")
+def floquet(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
+            tolerance=1e-11, max_iterations=20, full_monodromy=False, *, model=None):
     """Solve, then the Floquet multipliers of the monodromy matrix (from the reversible reduction,
     or integrated over a full period with ``full_monodromy``); returns :class:`DarkSolution` with
-    ``floquet`` set."""
-    params = Params() if params is None else params
-    d = _lrchain.dark_solve(params, omega_b, edge, center, sites, mode, tolerance, max_iterations, True,
-                            full_monodromy)
+    ``floquet`` set. With ``model`` the multipliers always come from the full-period monodromy (the
+    symplectic pairing defect is a check); returns :class:`ModelDarkSolution`."""
+    params, model, omega_b, branch = _job(params, model, omega_b, branch, "floquet")
+    if model is not None:
+        if full_monodromy:
+            raise InputError("full_monodromy: with model= the Floquet multipliers always come from the full-period "
+                             "monodromy")
+        return _model_solution(python_names(lambda: _lrchain.dark_model_solve(
+            model, omega_b, branch, center, sites, mode, tolerance, max_iterations, True)), omega_b)
+    d = python_names(lambda: _lrchain.dark_solve(params, omega_b, branch, center, sites, mode, tolerance,
+                                                 max_iterations, True, full_monodromy))
     return _solution(params, omega_b, d)
+
+
+@dataclass(frozen=True, repr=False)
+class ModelDarkSolution:
+    """A converged dark breather of a model file: ``z`` (fields, sites) = Z(0) in the lattice's
+    ``variables`` (strains r, w1, ... of translation-invariant models, displacements u0, u1, ... of
+    on-site models) on sites ``n`` (centred), the NLS ``seed`` (same shape), Newton's residual
+    history, the edge (``branch``, ``theta``, ``omega_edge``, ``curvature``, ``h_tilde``, ``lambda_``
+    (None without mean flow)), ``lattice_form``, ``measures`` (norm_squared, K_x, K_y, C_x, C_y, E_b,
+    max_strain; K_y, C_y None where there is no second strain-form variable), ``floquet`` (a
+    :class:`Floquet` or None) and ``model`` (name, file_hash, parameters, lattice_code)."""
+
+    omega_b: float
+    n: np.ndarray
+    z: np.ndarray
+    seed: np.ndarray
+    variables: tuple
+    newton_residuals: np.ndarray
+    branch: str
+    theta: float
+    omega_edge: float
+    curvature: float
+    h_tilde: float
+    lambda_: float
+    lattice_form: str
+    measures: dict
+    model: dict
+    floquet: Floquet = None
+
+    def __repr__(self):
+        f = f", {self.floquet!r}" if self.floquet else ""
+        return (f"ModelDarkSolution({self.model['name']}, omega_b={self.omega_b}, {len(self.n)} sites, Newton "
+                f"residual {self.newton_residuals[-1]:.3g}, E_b = {self.measures['E_b']:.3g}{f})")
+
+
+def _edge(d):
+    """The fields every model job reports, renamed for Python (lambda -> lambda_)."""
+    d["lambda_"] = d.pop("lambda")
+    return d
+
+
+def _model_solution(d, omega_b):
+    d = _edge(d)
+    return ModelDarkSolution(omega_b=omega_b, floquet=_floquet(d.pop("floquet")), **d)
 
 
 @dataclass(frozen=True, repr=False)
@@ -164,17 +248,66 @@ class Branch(HDF5Mixin):
                 f"{len(self.turning_points)} turning points; {self.stop_reason})")
 
 
-def continue_branch(params=None, omega_b=2.42, edge="optical", center="bond", sites=101, mode="reversible",
+@renamed(edge="branch")
+def continue_branch(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
                     tolerance=1e-11, max_iterations=20, points=100, ds=0.1, omega_min=0.0, omega_max=None,
-                    floquet=True):
+                    floquet=True, *, model=None):
     """Solve at ``omega_b``, then continue the family (at most ``points`` points, initial arclength step
     ``ds``) while omega_b stays in [omega_min, omega_max] (default: up to the band edge), with the
-    Floquet multipliers at every point if ``floquet``; returns :class:`Branch`."""
-    params = Params() if params is None else params
-    d = _lrchain.dark_continue(params, omega_b, edge, center, sites, mode, tolerance, max_iterations, points, ds,
-                               omega_min, omega_max, floquet)
+    Floquet multipliers at every point if ``floquet``; returns :class:`Branch`. With ``model``: away
+    from the model's edge (into the gap below it, upwards from an edge the branch rises from, as
+    ``lrchain dark continue --model``); returns :class:`ModelBranch`."""
+    params, model, omega_b, branch = _job(params, model, omega_b, branch, "continue_branch")
+    if model is not None:
+        d = _edge(python_names(lambda: _lrchain.dark_model_continue(
+            model, omega_b, branch, center, sites, mode, tolerance, max_iterations, points, ds, omega_min, omega_max,
+            floquet)))
+        d["floquet"] = [_floquet(f) for f in d["floquet"]]
+        return ModelBranch(**d)
+    d = python_names(lambda: _lrchain.dark_continue(params, omega_b, branch, center, sites, mode, tolerance,
+                                                    max_iterations, points, ds, omega_min, omega_max, floquet))
     d["floquet"] = [_floquet(f) for f in d["floquet"]]
     return Branch(params=params, **d)
+
+
+@dataclass(frozen=True, repr=False)
+class ModelBranch:
+    """A branch of dark breathers of a model file: per point ``omega_b``, profiles ``z`` (points,
+    fields, sites) in the lattice's ``variables``, ``measures`` (list of dicts), ``floquet`` (list of
+    :class:`Floquet` or None), ``tangent_omega``, ``residual``, ``iterations``; ``turning_points``,
+    ``stop_reason``; the edge and ``model`` as in :class:`ModelDarkSolution`."""
+
+    omega_b: np.ndarray
+    tangent_omega: np.ndarray
+    residual: np.ndarray
+    iterations: np.ndarray
+    z: np.ndarray
+    n: np.ndarray
+    variables: tuple
+    measures: list
+    floquet: list
+    turning_points: list
+    stop_reason: str
+    branch: str
+    theta: float
+    omega_edge: float
+    curvature: float
+    h_tilde: float
+    lambda_: float
+    lattice_form: str
+    model: dict
+
+    @property
+    def norm_squared(self):
+        return np.array([m["norm_squared"] for m in self.measures])
+
+    @property
+    def max_modulus(self):
+        return np.array([f.max_modulus if f else np.nan for f in self.floquet])
+
+    def __repr__(self):
+        return (f"ModelBranch({self.model['name']}, {len(self.omega_b)} points, omega_b {self.omega_b[0]:.6g} .. "
+                f"{self.omega_b[-1]:.6g}; {self.stop_reason})")
 
 
 @dataclass(frozen=True, repr=False)
@@ -199,13 +332,51 @@ class Evolution(HDF5Mixin):
         return f"Evolution({len(self.t)} periods to t = {self.t[-1]:g}, max E_b = {self.E_b.max():.3g})"
 
 
-def evolve(params=None, omega_b=2.42, edge="optical", center="bond", sites=101, mode="reversible",
-           tolerance=1e-11, max_iterations=20, t_end=None, samples=24):
+@renamed(edge="branch")
+def evolve(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
+           tolerance=1e-11, max_iterations=20, t_end=None, samples=24, *, model=None):
     """Solve, then integrate from Z(0) over floor(t_end / T_b) periods (default: 10 periods),
     sampling every site ``samples`` times per period for the position measure; returns
-    :class:`Evolution`. Ctrl-C interrupts it with ``KeyboardInterrupt``."""
-    params = Params() if params is None else params
+    :class:`Evolution` (with ``model``: :class:`ModelEvolution`). Ctrl-C interrupts it with
+    ``KeyboardInterrupt``."""
+    params, model, omega_b, branch = _job(params, model, omega_b, branch, "evolve")
     if t_end is None:
         t_end = 10 * 2 * np.pi / omega_b
-    d = _lrchain.dark_evolve(params, omega_b, edge, center, sites, mode, tolerance, max_iterations, t_end, samples)
+    if model is not None:
+        d = _edge(python_names(lambda: _lrchain.dark_model_evolve(
+            model, omega_b, branch, center, sites, mode, tolerance, max_iterations, t_end, samples)))
+        return ModelEvolution(**d)
+    d = python_names(lambda: _lrchain.dark_evolve(params, omega_b, branch, center, sites, mode, tolerance,
+                                                  max_iterations, t_end, samples))
     return Evolution(**d)
+
+
+@dataclass(frozen=True, repr=False)
+class ModelEvolution:
+    """Direct integration from an exact dark breather of a model file: per period ``t``, ``E_b``,
+    ``C_x``, ``K_x``, ``position``, ``depth``; stroboscopic profiles ``z`` (M+1, fields, sites) in the
+    lattice's ``variables``; ``period`` T_b, ``max_strain``; the edge and ``model`` as in
+    :class:`ModelDarkSolution`."""
+
+    period: float
+    t: np.ndarray
+    E_b: np.ndarray
+    C_x: np.ndarray
+    K_x: np.ndarray
+    position: np.ndarray
+    depth: np.ndarray
+    z: np.ndarray
+    n: np.ndarray
+    variables: tuple
+    max_strain: float
+    branch: str
+    theta: float
+    omega_edge: float
+    curvature: float
+    h_tilde: float
+    lambda_: float
+    lattice_form: str
+    model: dict
+
+    def __repr__(self):
+        return f"ModelEvolution({self.model['name']}, {len(self.t)} periods to t = {self.t[-1]:g}, max E_b = {self.E_b.max():.3g})"

@@ -3,12 +3,16 @@
 - :func:`bright`: the chain started from the NLS bright breather, compared with the ansatz
   (experiments 1-5: E_x(t), E_y(t), energy, energy centre, energy density e_n(t));
 - :func:`drive`: a chain at rest driven at its first bead (experiment 6);
-- :func:`modulated`: a periodic chain started from a modulated acoustic wave (experiment 7).
+- :func:`modulated`: a periodic chain started from a modulated acoustic wave (experiment 7);
+- :func:`bright` with ``model=``: the bright breather of any model file on its generated lattice;
+- :func:`ring`: plane waves and a wave packet of any model file on a periodic ring (the numerical
+  check of the derived h and c).
 
 Each run integrates in C++ without holding the GIL; Ctrl-C stops it at the next step and raises
-``KeyboardInterrupt``. Keyword arguments left out (or None) take the library's defaults, the same as
-the ``lrchain simulate`` command's. An ``observer(t, q1, q2, e)`` is called at every sample with
-copies of the lattice fields (bright: strains x_n, y_n; drive, modulated: displacements u_n, v_n)
+``KeyboardInterrupt`` (model-file runs: when the run returns). Keyword arguments left out (or None)
+take the library's defaults, the same as the ``lrchain simulate`` command's, and the keywords are
+its options' names (``sites`` for ``--sites``, ``switch_off_time`` for ``--switch-off-time``, ...).
+An ``observer(t, q1, q2, e)`` is called at every sample with copies of the lattice fields (bright: strains x_n, y_n; drive, modulated: displacements u_n, v_n)
 and the energy density e_n.
 """
 
@@ -19,7 +23,9 @@ from math import pi
 import numpy as np
 
 from . import _lrchain
-from ._lrchain import Params
+from ._keywords import checked_model, odd_sites, python_names, renamed
+from ._lrchain import Model, Params
+from .errors import InputError
 from .hdf5 import write_simulation
 
 
@@ -114,34 +120,146 @@ class BrightResult(_SimulationHDF5):
                 f"max E_x = {self.summary['max_E_x']:.4g}, max E_y = {self.summary['max_E_y']:.4g})")
 
 
-def bright(params=None, branch="optical", theta=pi / 2, *, detuning=None, n0=None, N=None, periods=None,
-           sample_every=None, spacetime_every=None, snapshot_periods=None, centre_window=None,
+@renamed(N="sites")
+def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=None, n0=None, sites=None,
+           periods=None, sample_every=None, spacetime_every=None, snapshot_periods=None, centre_window=None,
            error_window_end=None, ansatz_ends=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
            max_memory=None, record_strains=False, observer=None):
-    """Bright-breather run: the strain lattice on n = -N..N started from the NLS bright breather of
-    ``branch`` at carrier ``theta`` and integrated for ``periods`` breather periods T_b.
+    """Bright-breather run: the strain lattice on n = -N..N (``sites`` = 2N + 1, odd) started from the
+    NLS bright breather of ``branch`` at carrier ``theta`` and integrated for ``periods`` breather
+    periods T_b, as ``lrchain simulate bright``.
 
-    Library defaults: N=500, periods=200, sample_every=0.25 and spacetime_every=1 (units of T_b),
+    Library defaults: sites=1001, periods=200, sample_every=0.25 and spacetime_every=1 (units of T_b),
     snapshot_periods=(0, 50.125, 200) (those inside the run), centre_window=100, stepper "rkf78"
     with abs_tol = rel_tol = 1e-12, dt=0.05 (other steppers: dopri5, symplectic, srkn11b, srkn14a,
     ss17; dt is the fixed/maximal step of the symplectic ones). ``detuning`` = omega_b - omega
     (default sign(h_tilde) 1e-4). ``record_strains`` keeps x_n(t), y_n(t) at every sample.
     Returns :class:`BrightResult`.
+
+    With ``model`` (an :class:`lrchain.Model`, e.g. ``lrchain.load_model("models/fput.toml")`` or your
+    own file), the run is ``lrchain simulate bright --model FILE``: the model's bright breather on its
+    generated lattice, ``branch`` one of ``model.branches``, with ``detuning``, ``n0``, ``sites`` (odd, in
+    [21, 100000001]), ``periods``, ``sample_every``, ``dt`` (the srkn11b step; default from the fastest
+    linear mode) and ``ansatz_ends`` (emitting ends, integrated with rkf78); the other keywords are
+    refused as the command refuses them. Ctrl-C is raised when the run returns (the model run
+    polls no stop flag). Returns :class:`ModelBrightResult`.
     """
-    options = _options(params=params, branch=branch, theta=theta, n0=n0, N=N, periods=periods,
+    if model is None and isinstance(params, Model):  # bright(lrchain.load_model(...), ...)
+        model, params = params, None
+    if model is not None:
+        checked_model(model)
+        given = dict(params=params, spacetime_every=spacetime_every, snapshot_periods=snapshot_periods,
+                     centre_window=centre_window, error_window_end=error_window_end, stepper=stepper,
+                     abs_tol=abs_tol, rel_tol=rel_tol, max_memory=max_memory, observer=observer,
+                     record_strains=record_strains or None)
+        for name, value in given.items():
+            if value is not None:
+                raise InputError(f"{name} is not available with model= (model bright runs use srkn11b, or rkf78 "
+                                 f"with ansatz_ends=True; see help(lrchain.simulate.bright))")
+        options = _options(theta=theta, n0=n0, N=None if sites is None else odd_sites(sites, 21, 100_000_001),
+                           periods=periods, sample_every=sample_every, dt=dt, ansatz_ends=ansatz_ends)
+        if detuning is not None:
+            options["detuning"] = detuning
+        out = python_names(lambda: _lrchain.simulate_model_bright(model, branch, options))
+        return _model_bright_result(out)
+    options = _options(params=params, branch=branch, theta=theta, n0=n0,
+                       N=None if sites is None else odd_sites(sites, 5, 2_000_000_000_000_001), periods=periods,
                        sample_every=sample_every, spacetime_every=spacetime_every,
                        snapshot_periods=None if snapshot_periods is None else list(snapshot_periods),
                        centre_window=centre_window, error_window_end=error_window_end, ansatz_ends=ansatz_ends,
                        stepper=stepper, abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
     if detuning is not None:
         options["detuning"] = detuning
-    out = _lrchain.simulate_bright(options, record_strains, observer)
+    out = python_names(lambda: _lrchain.simulate_bright(options, record_strains, observer), N="sites")
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "x_n", "y_n")
     return BrightResult(t=series["t"], E_x=series["E_x"], E_y=series["E_y"], energy=series["energy"],
                         centre=series["X"], energy_density=_spacetime(record), snapshots=_snapshots(record),
                         summary=json.loads(out["summary_json"]), x=fields[0] if fields else None,
                         y=fields[1] if fields else None)
+
+
+@dataclass(frozen=True, repr=False)
+class ModelBrightResult:
+    """A bright-breather run of a model file (``lrchain simulate bright --model``).
+
+    ``t``, ``energy``, ``centre`` (energy centre X(t)) at every sample; ``E`` a tuple with, per field f,
+    E_f(t) = max_n |x_f - x_f^A| / max_n |x_f(0)| (x_f: strains of translation-invariant models,
+    displacements of on-site models); ``E_x`` = E[0], ``E_y`` = E[1] (None for a one-field model);
+    ``snapshots`` (the final profiles and the ansatz); ``summary``: the same JSON as the command
+    (omega_b, period, max_E, max_E_x, energy0, max_relative_energy_drift, centre_speed, ...)."""
+
+    t: np.ndarray
+    E: tuple
+    energy: np.ndarray
+    centre: np.ndarray
+    snapshots: list
+    summary: dict
+
+    @property
+    def E_x(self):
+        return self.E[0]
+
+    @property
+    def E_y(self):
+        return self.E[1] if len(self.E) > 1 else None
+
+    def __repr__(self):
+        return (f"ModelBrightResult({self.summary['model']['name']}, {len(self.t)} samples to t = {self.t[-1]:g}, "
+                f"max E_x = {self.summary['max_E_x']:.4g})")
+
+
+def _model_bright_result(out):
+    record, series = out["record"], out["record"]["series"]
+    return ModelBrightResult(t=series["t"], E=tuple(series[f"E_{f}"] for f in range(out["fields"])),
+                             energy=series["energy"], centre=series["X"], snapshots=_snapshots(record),
+                             summary=json.loads(out["summary_json"]))
+
+
+@dataclass(frozen=True, repr=False)
+class RingResult:
+    """Plane waves of a model on a periodic ring (``lrchain simulate ring``): per amplitude U
+    (``amplitude``) the ``measured_frequency`` and ``predicted_frequency`` omega + h U^2/4, their
+    shifts from omega and ``relative_disagreement`` of the shifts (nan where h vanishes); the wave
+    packet's centre ``packet_t``, ``packet_centre`` and ``summary`` (the command's JSON: omega, h,
+    group_velocity, packet_speed, packet_relative_disagreement, ...)."""
+
+    amplitude: np.ndarray
+    measured_frequency: np.ndarray
+    predicted_frequency: np.ndarray
+    measured_shift: np.ndarray
+    predicted_shift: np.ndarray
+    relative_disagreement: np.ndarray
+    packet_t: np.ndarray
+    packet_centre: np.ndarray
+    summary: dict
+
+    def __repr__(self):
+        return (f"RingResult({self.summary['model']['name']}, {len(self.amplitude)} amplitudes, relative "
+                f"disagreement {', '.join(f'{d:.3g}' for d in self.relative_disagreement)})")
+
+
+def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, steps_per_period=None,
+         packet_amplitude=None, packet_width=None):
+    """``lrchain simulate ring --model FILE``: plane waves of amplitude U (``amplitudes``, default
+    (0.02, 0.01)) on a periodic ring of ``sites`` (default the smallest >= 8 with theta on it),
+    their frequency measured over ``periods`` carrier periods (default 400, ``steps_per_period`` 80
+    srkn11b steps) against omega + h U^2/4, and a Gaussian wave packet (``packet_amplitude``, default
+    a tenth of the smallest U; ``packet_width`` 24 sites) whose speed is compared with c.
+    ``model`` is an :class:`lrchain.Model`. Ctrl-C is raised when the run returns. Returns
+    :class:`RingResult`."""
+    checked_model(model)
+    options = _options(theta=theta, amplitudes=None if amplitudes is None else [float(a) for a in amplitudes],
+                       sites=sites, periods=periods, steps_per_period=steps_per_period,
+                       packet_amplitude=packet_amplitude, packet_width=packet_width)
+    out = python_names(lambda: _lrchain.simulate_ring(model, branch, options))
+    series = out["record"]["series"]
+    names = list(series)
+    return RingResult(amplitude=out["amplitude"], measured_frequency=out["measured_frequency"],
+                      predicted_frequency=out["predicted_frequency"], measured_shift=out["measured_shift"],
+                      predicted_shift=out["predicted_shift"], relative_disagreement=out["relative_disagreement"],
+                      packet_t=series[names[0]], packet_centre=series[names[1]],
+                      summary=json.loads(out["summary_json"]))
 
 
 @dataclass(frozen=True, repr=False)
@@ -171,20 +289,23 @@ class DriveResult(_SimulationHDF5):
         return f"DriveResult({len(self.t)} samples to t = {self.t[-1]:g}, final energy {self.energy[-1]:.6g})"
 
 
-def drive(params=None, *, beads=None, amplitude=None, omega0=None, ramp_rate=None, t_m=None, t_end=None,
+@renamed(beads="sites", t_m="switch_off_time")
+def drive(params=None, *, sites=None, amplitude=None, omega0=None, ramp_rate=None, switch_off_time=None, t_end=None,
           sample_every=None, spacetime_every=None, snapshot_times=None, front_fraction=None,
           front_fit_start=None, front_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
           max_memory=None, record_displacements=False, observer=None):
-    """Driven chain: beads 1..beads at rest, clamped far end, first bead driven by
-    A0 sin(omega0 t) chi(t). Library defaults: params rho=10 (alpha=3/2, delta0=4/9, kappa=1),
-    beads=2000, amplitude=0.06, omega0=2.1, ramp_rate=0.046, t_m=700, t_end=2400, sample_every=1,
-    spacetime_every=2, stepper rkf78 at 1e-10. Returns :class:`DriveResult`."""
-    options = _options(params=params, beads=beads, amplitude=amplitude, omega0=omega0, ramp_rate=ramp_rate, t_m=t_m,
-                       t_end=t_end, sample_every=sample_every, spacetime_every=spacetime_every,
+    """Driven chain (``lrchain simulate drive``): beads n = 1..sites at rest, clamped far end, first
+    bead driven by A0 sin(omega0 t) chi(t). Library defaults: params rho=10 (alpha=3/2,
+    delta0=4/9, kappa=1), sites=2000, amplitude=0.06, omega0=2.1, ramp_rate=0.046,
+    switch_off_time=700 (t_m of chi(t)), t_end=2400, sample_every=1, spacetime_every=2, stepper
+    rkf78 at 1e-10. Returns :class:`DriveResult`."""
+    options = _options(params=params, beads=sites, amplitude=amplitude, omega0=omega0, ramp_rate=ramp_rate,
+                       t_m=switch_off_time, t_end=t_end, sample_every=sample_every, spacetime_every=spacetime_every,
                        snapshot_times=None if snapshot_times is None else list(snapshot_times),
                        front_fraction=front_fraction, front_fit_start=front_fit_start, front_fit_end=front_fit_end,
                        stepper=stepper, abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
-    out = _lrchain.simulate_drive(options, record_displacements, observer)
+    out = python_names(lambda: _lrchain.simulate_drive(options, record_displacements, observer), beads="sites",
+                       t_m="switch_off_time", **{"t-m": "switch_off_time"})
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "u_n", "v_n")
     return DriveResult(t=series["t"], energy=series["energy"], front=series["front"],
@@ -219,20 +340,23 @@ class ModulatedResult(_SimulationHDF5):
         return f"ModulatedResult({len(self.t)} samples to t = {self.t[-1]:g})"
 
 
-def modulated(params=None, *, N=None, epsilon=None, theta_waves=None, b=None, t_end=None, sample_every=None,
-              snapshot_times=None, contrast_threshold=None, dark_window=None, speed_fit_start=None,
-              speed_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None, max_memory=None,
-              record_displacements=False, observer=None):
-    """Periodic chain of N sites started from the modulated acoustic wave (eq. cimi). Library
-    defaults: params delta0=0.27, rho=0.32, N=401, epsilon=0.03, theta_waves=252, b=0.01,
-    t_end=45000, sample_every=10, symplectic stepper with dt=0.05. Returns :class:`ModulatedResult`."""
-    options = _options(params=params, N=N, epsilon=epsilon, theta_waves=theta_waves, b=b, t_end=t_end,
-                       sample_every=sample_every,
+@renamed(N="sites", b="modulation_depth")
+def modulated(params=None, *, sites=None, epsilon=None, theta_waves=None, modulation_depth=None, t_end=None,
+              sample_every=None, snapshot_times=None, contrast_threshold=None, dark_window=None,
+              speed_fit_start=None, speed_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
+              max_memory=None, record_displacements=False, observer=None):
+    """Periodic chain of ``sites`` sites (``lrchain simulate modulated``) started from the modulated
+    acoustic wave (eq. cimi). Library defaults: params delta0=0.27, rho=0.32, sites=401,
+    epsilon=0.03, theta_waves=252, modulation_depth=0.01 (b of eq. cimi), t_end=45000,
+    sample_every=10, symplectic stepper with dt=0.05. Returns :class:`ModulatedResult`."""
+    options = _options(params=params, N=sites, epsilon=epsilon, theta_waves=theta_waves, b=modulation_depth,
+                       t_end=t_end, sample_every=sample_every,
                        snapshot_times=None if snapshot_times is None else list(snapshot_times),
                        contrast_threshold=contrast_threshold, dark_window=dark_window,
                        speed_fit_start=speed_fit_start, speed_fit_end=speed_fit_end, stepper=stepper,
                        abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
-    out = _lrchain.simulate_modulated(options, record_displacements, observer)
+    out = python_names(lambda: _lrchain.simulate_modulated(options, record_displacements, observer), N="sites",
+                       b="modulation_depth")
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "u_n", "v_n")
     return ModulatedResult(t=series["t"], energy=series["energy"], contrast=series["contrast"],

@@ -11,5 +11,7 @@ void register_model(pybind11::module_& m);         // model_binding.cpp: load_mo
 void register_regime(pybind11::module_& m);        // regime_binding.cpp: intervals, maps, curves
 void register_simulate(pybind11::module_& m);      // simulate_binding.cpp: bright, drive, modulated
 void register_dark(pybind11::module_& m);          // dark_binding.cpp: exact dark breathers
+void register_model_simulate(pybind11::module_& m);  // model_simulate_binding.cpp: model bright, ring
+void register_model_dark(pybind11::module_& m);      // model_dark_binding.cpp: model dark breathers
 
 }  // namespace lrchain::python

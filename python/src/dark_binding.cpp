@@ -11,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "dark_arrays.hpp"
 #include "interrupt_guard.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/errors.hpp"
@@ -87,41 +88,6 @@ Solved solve(const DarkJob& j, const std::atomic<bool>* stop) {
   };
   NewtonResult res = newton_solve(shooting, shooting.unknowns_from_z(seed), j.omega_b, o);
   return {std::move(shooting), ansatz, std::move(res), seed};
-}
-
-py::array_t<double> residuals(const NewtonResult& r) {
-  py::array_t<double> a(static_cast<py::ssize_t>(r.history.size()));
-  for (std::size_t k = 0; k < r.history.size(); ++k) a.mutable_at(k) = r.history[k].residual;
-  return a;
-}
-
-py::dict measures(const DarkMeasures& m) {
-  py::dict d;
-  d["norm_squared"] = m.norm_squared;
-  d["K_x"] = m.K_x;
-  d["K_y"] = m.K_y;
-  d["C_x"] = m.C_x;
-  d["C_y"] = m.C_y;
-  d["E_b"] = m.E_b;
-  d["max_strain"] = m.max_strain;
-  return d;
-}
-
-py::dict floquet_dict(const FloquetResult& f) {
-  py::array_t<std::complex<double>> mult(static_cast<py::ssize_t>(f.multipliers.size()));
-  std::copy(f.multipliers.begin(), f.multipliers.end(), mult.mutable_data());
-  py::dict d;
-  d["multipliers"] = mult;
-  d["kind"] = f.kind();
-  d["max_modulus"] = f.max_modulus;
-  d["max_real"] = f.max_real;
-  d["max_period_doubling"] = f.max_period_doubling;
-  d["max_oscillatory"] = f.max_oscillatory;
-  d["near_one"] = f.near_one;
-  d["pairing_defect"] = f.pairing_defect;
-  d["conjugation_defect"] = f.conjugation_defect;
-  d["log_det"] = f.log_det;
-  return d;
 }
 
 // Throws NumericalFailure with the residual history if Newton did not converge.
@@ -291,13 +257,13 @@ py::dict evolve_job(const Params& p, double omega_b, const std::string& edge, co
 }  // namespace
 
 void register_dark(py::module_& m) {
-  m.def("dark_solve", &solve_job, py::arg("params"), py::arg("omega_b"), py::arg("edge"), py::arg("center"),
+  m.def("dark_solve", &solve_job, py::arg("params"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("floquet"),
         py::arg("full_monodromy"));
-  m.def("dark_continue", &continue_job, py::arg("params"), py::arg("omega_b"), py::arg("edge"),
+  m.def("dark_continue", &continue_job, py::arg("params"), py::arg("omega_b"), py::arg("branch"),
         py::arg("center"), py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"),
         py::arg("points"), py::arg("ds"), py::arg("omega_min"), py::arg("omega_max"), py::arg("floquet"));
-  m.def("dark_evolve", &evolve_job, py::arg("params"), py::arg("omega_b"), py::arg("edge"), py::arg("center"),
+  m.def("dark_evolve", &evolve_job, py::arg("params"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("t_end"),
         py::arg("samples"));
 }

@@ -13,6 +13,8 @@
 #include "coefficient_arrays.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/model.hpp"
+#include "loaded_model.hpp"
+#include "lrchain/sim/model_lattice_bloch.hpp"
 #include "model_capsule.hpp"
 
 namespace py = pybind11;
@@ -21,12 +23,6 @@ namespace fs = std::filesystem;
 namespace lrchain::python {
 
 namespace {
-
-// A model with its parameter values and the definition it was made from (for replace()).
-struct LoadedModel {
-  std::shared_ptr<const ModelDefinition> definition;
-  Model model;
-};
 
 // Shipped definitions live for the whole program: shared without owning.
 std::shared_ptr<const ModelDefinition> shipped(const ModelDefinition* d) {
@@ -83,7 +79,8 @@ std::vector<std::pair<std::string, double>> parameter_values(const py::kwargs& p
   return values;
 }
 
-LoadedModel load_model(const std::string& source, const py::kwargs& parameters) {
+LoadedModel load_model(const py::object& source_path, const py::kwargs& parameters) {
+  const std::string source = py::str(py::module_::import("os").attr("fspath")(source_path));
   const auto values = parameter_values(parameters);
   std::shared_ptr<const ModelDefinition> definition;
   {
@@ -91,7 +88,29 @@ LoadedModel load_model(const std::string& source, const py::kwargs& parameters) 
     definition = find_shipped_definition(source);
   }
   if (!definition) definition = compile_user_model(source);
-  return LoadedModel{definition, Model(definition, values)};
+  const fs::path path(source);
+  const bool bare_name = !path.has_parent_path() && !path.has_extension() && !fs::exists(path);
+  return LoadedModel{definition, Model(definition, values), bare_name ? std::string() : fs::absolute(path).string()};
+}
+
+// The lattice code of a user's model file, compiled at run time by lrchain._model_compiler.
+std::shared_ptr<const lrchain_lattice_kernels> compile_user_lattice(const LoadedModel& m) {
+#ifdef LRCHAIN_WITH_MODEL_COMPILER
+  std::ifstream in(m.source, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  if (!in || fnv1a_64(bytes.str()) != m.definition->file_hash)
+    throw InputError("model " + m.model.name() + ": the file " + m.source +
+                     " changed (or went) since it was loaded; load it again with lrchain.load_model");
+  const py::tuple compiled = py::module_::import("lrchain._model_compiler").attr("compile_lattice")(m.source);
+  m.lattice_compiled_in = false;
+  m.lattice_from_cache = compiled[1].cast<bool>();
+  m.lattice_library = compiled[2].cast<std::string>();
+  return *static_cast<LatticeKernelsHandle*>(PyCapsule_GetPointer(compiled[0].ptr(), kLatticeCapsuleName));
+#else
+  throw InputError("model " + m.model.name() + ": not a shipped model file, and this build has no model compiler for "
+                   "its lattice code (configure with LRCHAIN_BUILD_DERIVATION=ON)");
+#endif
 }
 
 bool is_resonant_chain(const ModelDefinition& d) {
@@ -141,12 +160,38 @@ py::dict parameter_dict(const Model& m) {
 
 }  // namespace
 
+const lrchain_lattice_kernels& lattice_kernels(const LoadedModel& m) {
+  if (!m.lattice) {
+    if (const lrchain_lattice_kernels* shipped = sim::compiled_in_lattice_kernels(m.model))
+      m.lattice = std::shared_ptr<const lrchain_lattice_kernels>(std::shared_ptr<const lrchain_lattice_kernels>(), shipped);
+    else
+      m.lattice = compile_user_lattice(m);
+    if (std::size_t(m.lattice->parameter_count) != m.definition->parameters.size())
+      throw std::runtime_error("the lattice code of model " + m.model.name() + " takes " +
+                               std::to_string(m.lattice->parameter_count) + " parameters, its evaluators " +
+                               std::to_string(m.definition->parameters.size()));
+  }
+  return *m.lattice;
+}
+
+nlohmann::json model_summary_json(const LoadedModel& m) {
+  nlohmann::json parameters = nlohmann::json::object();
+  const auto& d = *m.definition;
+  for (std::size_t i = 0; i < d.parameters.size(); ++i) parameters[d.parameters[i].name] = m.model.inputs()[i];
+  nlohmann::json code{{"compiled_in", m.lattice_compiled_in}};
+  code["from_cache"] = m.lattice_compiled_in ? nlohmann::json(nullptr) : nlohmann::json(m.lattice_from_cache);
+  code["library"] = m.lattice_compiled_in ? nlohmann::json(nullptr) : nlohmann::json(m.lattice_library);
+  return {{"name", d.name}, {"file_hash", model_hash_text(d.file_hash)}, {"parameters", parameters}, {"lattice_code", code}};
+}
+
 void register_model(py::module_& m) {
   py::class_<LoadedModel>(m, "Model", R"doc(
 A lattice model (a model file, docs/models.md) with parameter values; made by lrchain.load_model.
 name, description, parameters ({name: value}), ranges ({name: range text}), branches (names in
 increasing frequency), mean_flow (False for on-site models: no lambda), file_hash. Immutable; use
-replace(...) for a copy with other parameter values.)doc")
+replace(...) for a copy with other parameter values. Model(source, **parameters) is
+lrchain.load_model(source, **parameters).)doc")
+      .def(py::init(&load_model), py::arg("source"))
       .def_property_readonly("name", [](const LoadedModel& l) { return l.model.name(); })
       .def_property_readonly("description", [](const LoadedModel& l) { return l.definition->description; })
       .def_property_readonly("file_hash", [](const LoadedModel& l) { return model_hash_text(l.model.file_hash()); },
@@ -175,7 +220,7 @@ replace(...) for a copy with other parameter values.)doc")
             std::vector<std::pair<std::string, double>> all;
             for (std::size_t i = 0; i < parameters.size(); ++i) all.emplace_back(parameters[i].name, l.model.inputs()[i]);
             for (auto& v : values) all.push_back(std::move(v));
-            return LoadedModel{l.definition, Model(l.definition, all)};
+            return LoadedModel{l.definition, Model(l.definition, all), l.source};
           },
           "A copy with the given parameters changed, e.g. m.replace(w0=2).")
       .def("__repr__", [](const LoadedModel& l) {

@@ -10,4 +10,6 @@ PYBIND11_MODULE(_lrchain, m) {
   lrchain::python::register_regime(m);
   lrchain::python::register_simulate(m);
   lrchain::python::register_dark(m);
+  lrchain::python::register_model_simulate(m);
+  lrchain::python::register_model_dark(m);
 }

@@ -51,9 +51,13 @@ def test_branch_names_branch():
 
 
 def test_simulation_options():
-    with pytest.raises(lrchain.InvalidParameterError, match="N") as err:
-        lrchain.simulate.bright(N=1)
-    assert err.value.parameter == "N"
+    # Lattice sizes are `sites` as in the command's --sites: bright takes the odd 2N + 1.
+    with pytest.raises(lrchain.InvalidParameterError, match="odd") as err:
+        lrchain.simulate.bright(sites=2)
+    assert err.value.parameter == "sites"
+    with pytest.raises(lrchain.InvalidParameterError, match="odd") as err:
+        lrchain.simulate.bright(sites=100)
+    assert err.value.parameter == "sites"
     with pytest.raises(lrchain.InvalidParameterError) as err:
         lrchain.simulate.bright(periods=-1)
     assert err.value.parameter == "periods"
@@ -61,11 +65,38 @@ def test_simulation_options():
         lrchain.simulate.bright(stepper="euler")
     assert err.value.parameter == "stepper"
     with pytest.raises(lrchain.InvalidParameterError, match="must be an integer, not float") as err:
-        lrchain.simulate.bright(N=10.5)
-    assert err.value.parameter == "N"
+        lrchain.simulate.bright(sites=10.5)
+    assert err.value.parameter == "sites"
     with pytest.raises(lrchain.InvalidParameterError) as err:
-        lrchain.simulate.drive(beads=3)
-    assert err.value.parameter == "beads"
+        lrchain.simulate.bright(sample_every=-1)
+    assert err.value.parameter == "sample_every" and str(err.value).startswith("invalid sample_every:")
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.simulate.drive(sites=3)
+    assert err.value.parameter == "sites"
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.simulate.modulated(modulation_depth=2)
+    assert err.value.parameter == "modulation_depth"
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.simulate.modulated(sites=4)
+    assert err.value.parameter == "sites"
+
+
+@pytest.mark.parametrize("call, old, new", [
+    (lambda: lrchain.simulate.bright(N=40), "N", "sites"),
+    (lambda: lrchain.simulate.drive(beads=50), "beads", "sites"),
+    (lambda: lrchain.simulate.drive(t_m=2), "t_m", "switch_off_time"),
+    (lambda: lrchain.simulate.modulated(N=21), "N", "sites"),
+    (lambda: lrchain.simulate.modulated(b=0.1), "b", "modulation_depth"),
+    (lambda: lrchain.dark.solve(edge="optical"), "edge", "branch"),
+    (lambda: lrchain.dark.floquet(edge="optical"), "edge", "branch"),
+    (lambda: lrchain.dark.continue_branch(edge="optical"), "edge", "branch"),
+    (lambda: lrchain.dark.evolve(edge="optical"), "edge", "branch"),
+])
+def test_old_keyword_names_raise_naming_the_new_one(call, old, new):
+    # One name per concept, the command's (--sites, --branch, --switch-off-time, --modulation-depth):
+    # an old keyword is a TypeError naming its new name, never silently accepted.
+    with pytest.raises(TypeError, match=f"'{old}', which is now '{new}'"):
+        call()
 
 
 def test_dark_options():
@@ -75,7 +106,7 @@ def test_dark_options():
     # Above the optical edge omega_+(pi) = sqrt(6) there is no dark breather (the gap side is below).
     with pytest.raises(lrchain.InvalidParameterError) as err:
         lrchain.dark.solve(omega_b=2.5)
-    assert err.value.parameter == "omega-b"
+    assert err.value.parameter == "omega_b" and str(err.value).startswith("invalid omega_b:")
     # Too large for the machine: refused before Newton starts, naming what to lower.
     with pytest.raises(lrchain.InvalidParameterError) as err:
         lrchain.dark.solve(sites=2_000_001)

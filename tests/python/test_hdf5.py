@@ -12,7 +12,7 @@ h5py = pytest.importorskip("h5py")
 
 
 def test_bright_run_round_trip(tmp_path):
-    r = lrchain.simulate.bright(lrchain.Params(), N=40, periods=2, record_strains=True)
+    r = lrchain.simulate.bright(lrchain.Params(), sites=81, periods=2, record_strains=True)
     path = tmp_path / "bright.h5"
     r.to_hdf5(path)
     assert [p.name for p in tmp_path.iterdir()] == ["bright.h5"]  # no temporary left behind
@@ -117,14 +117,14 @@ def _assert_same_file(cli_file, python_file):
 
 @pytest.mark.parametrize("kind, cli_args, python_run", [
     ("bright", ["--branch", "optical", "--theta", "pi/2", "--sites", "81", "--periods", "2", "--stepper", "rkf78"],
-     lambda: lrchain.simulate.bright(lrchain.Params(), "optical", np.pi / 2, N=40, periods=2, stepper="rkf78")),
+     lambda: lrchain.simulate.bright(lrchain.Params(), "optical", np.pi / 2, sites=81, periods=2, stepper="rkf78")),
     ("drive", ["--sites", "50", "--t-end", "4", "--switch-off-time", "2", "--sample-every", "1", "--spacetime-every", "2",
                "--snapshots", "2", "4", "--front-fit-start", "0", "--front-fit-end", "4"],
-     lambda: lrchain.simulate.drive(beads=50, t_end=4, t_m=2, sample_every=1, spacetime_every=2,
+     lambda: lrchain.simulate.drive(sites=50, t_end=4, switch_off_time=2, sample_every=1, spacetime_every=2,
                                     snapshot_times=[2, 4], front_fit_start=0, front_fit_end=4)),
     ("modulated", ["--sites", "21", "--theta-waves", "13", "--t-end", "4", "--sample-every", "1", "--snapshots", "0", "4",
                    "--speed-fit-start", "0", "--speed-fit-end", "4"],
-     lambda: lrchain.simulate.modulated(N=21, theta_waves=13, t_end=4, sample_every=1, snapshot_times=[0, 4],
+     lambda: lrchain.simulate.modulated(sites=21, theta_waves=13, t_end=4, sample_every=1, snapshot_times=[0, 4],
                                         speed_fit_start=0, speed_fit_end=4)),
 ])
 def test_cli_hdf5_equals_python_to_hdf5(tmp_path, cli, kind, cli_args, python_run):

@@ -22,13 +22,13 @@ def test_bright_run_interrupted():
     timer = interrupt_after(1.0)
     # About 1e5 breather periods on 4001 sites: hours of work without the interrupt.
     with pytest.raises(KeyboardInterrupt):
-        lrchain.simulate.bright(lrchain.Params(), N=2000, periods=1e5, sample_every=10, spacetime_every=1000,
+        lrchain.simulate.bright(lrchain.Params(), sites=4001, periods=1e5, sample_every=10, spacetime_every=1000,
                                 snapshot_periods=[0])
     timer.join()
     assert time.monotonic() - start < 60
     assert signal.getsignal(signal.SIGINT) is handler  # Python's handler is back
     # The library still works: a short run completes and starts on the ansatz.
-    r = lrchain.simulate.bright(lrchain.Params(), N=40, periods=2)
+    r = lrchain.simulate.bright(lrchain.Params(), sites=81, periods=2)
     assert r.E_x[0] == 0 and len(r.t) == 9
 
 
@@ -54,7 +54,7 @@ def test_custom_python_handler_is_called():
     try:
         timer = interrupt_after(0.5)
         with pytest.raises(Stop):
-            lrchain.simulate.bright(lrchain.Params(), N=2000, periods=1e5, sample_every=10, spacetime_every=1000,
+            lrchain.simulate.bright(lrchain.Params(), sites=4001, periods=1e5, sample_every=10, spacetime_every=1000,
                                     snapshot_periods=[0])
         timer.join()
     finally:

@@ -7,7 +7,7 @@ import lrchain
 
 # Experiment 1 (examples/exp1_optical_pi2.toml): optical breather at theta = pi/2, rho = 1/3, N = 500,
 # 200 T_b, Blanes-Moan srkn11b with dt = 0.37.
-EXP1 = dict(branch="optical", theta=np.pi / 2, N=500, periods=200, sample_every=0.25, spacetime_every=1.0,
+EXP1 = dict(branch="optical", theta=np.pi / 2, sites=1001, periods=200, sample_every=0.25, spacetime_every=1.0,
             snapshot_periods=[0.0, 50.125, 200.0], stepper="srkn11b", dt=0.37)
 
 
@@ -52,7 +52,7 @@ def test_record_strains_and_observer():
     def observer(t, x, y, e):
         seen.append((t, x.copy(), e.sum()))
 
-    r = lrchain.simulate.bright(lrchain.Params(), theta=np.pi / 2, N=60, periods=4, record_strains=True,
+    r = lrchain.simulate.bright(lrchain.Params(), theta=np.pi / 2, sites=121, periods=4, record_strains=True,
                                 observer=observer)
     assert r.x.values.shape == (len(r.t), 121) and r.y.values.shape == (len(r.t), 121)
     assert r.x.n[0] == -60 and r.x.n[-1] == 60
@@ -71,11 +71,11 @@ def test_observer_exception_propagates():
             raise RuntimeError("stop here")
 
     with pytest.raises(RuntimeError, match="stop here"):
-        lrchain.simulate.bright(lrchain.Params(), N=30, periods=3, observer=observer)
+        lrchain.simulate.bright(lrchain.Params(), sites=61, periods=3, observer=observer)
 
 
 def test_drive_short_run():
-    r = lrchain.simulate.drive(beads=200, t_end=60, t_m=40, sample_every=1, spacetime_every=2, snapshot_times=[60],
+    r = lrchain.simulate.drive(sites=200, t_end=60, switch_off_time=40, sample_every=1, spacetime_every=2, snapshot_times=[60],
                                record_displacements=True)
     assert len(r.t) == 61 and r.energy_density.values.shape == (31, 200)
     assert r.u.values.shape == (61, 200)
@@ -85,7 +85,7 @@ def test_drive_short_run():
 
 
 def test_modulated_short_run():
-    r = lrchain.simulate.modulated(N=101, theta_waves=63, t_end=200, sample_every=10, snapshot_times=[0, 200])
+    r = lrchain.simulate.modulated(sites=101, theta_waves=63, t_end=200, sample_every=10, snapshot_times=[0, 200])
     assert len(r.t) == 21 and r.energy_density.values.shape == (21, 101)
     # The symplectic stepper conserves the energy of the periodic chain closely.
     assert np.max(np.abs(r.energy / r.energy[0] - 1)) < 1e-6

@@ -439,3 +439,22 @@ TEST_CASE("config: non-ASCII where toml++ 3.3 would reach undefined behaviour is
   CHECK(ok.root()["m"].value<std::string>().value() == "\xCF\x89\"");
   CHECK(ok.root()["n"].value<long>().value() == 1);
 }
+
+TEST_CASE("config: a renamed key is an error naming its new name, with file and line") {
+  using namespace lrchain::config;
+  const auto dark = std::make_shared<const TableSchema>(TableSchema{
+      "a dark job", {choice("branch", {"optical", "acoustic"}, "optical", "")}, std::nullopt, {{"edge", "branch"}}});
+  const TableSchema root{"a study", {table("dark", dark)}, std::nullopt};
+  const auto message = [&](const std::string& text) {
+    try {
+      check(Document::from_text(text, "s.toml"), root);
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(message("[dark]\nedge = \"optical\"\n") == "key 'edge' in [dark] at s.toml:2 was renamed: use 'branch'");
+  CHECK(message("[dark]\nbranch = \"acoustic\"\n") == "no error");
+  // A renamed key is not offered as a guess for a typo of another key.
+  CHECK(message("[dark]\nbranh = \"acoustic\"\n") == "unknown key 'branh' in [dark] at s.toml:2; did you mean 'branch'?");
+}

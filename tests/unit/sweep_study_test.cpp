@@ -177,6 +177,8 @@ TEST_CASE("sweep dark continue / regime intervals: bad configs exit 2 naming the
   write(d / "both.toml", std::string(dark_base) + "edge_offset = 0.01\n");
   write(d / "even.toml", "experiment = \"dark continue\"\n[dark]\nomega_b = 2.44\nsites = 20\n");
   write(d / "typo.toml", "experiment = \"dark continue\"\n[dark]\nomega_b = 2.44\npoints = 5\nsitse = 21\n");
+  // The key `edge` of [dark] is now `branch` (one name per concept with `lrchain dark --branch`).
+  write(d / "old_key.toml", "experiment = \"dark continue\"\n[dark]\nomega_b = 2.44\nedge = \"optical\"\n");
   const std::string out = "output = \"" + (d / "out" / "r.h5").string() + "\"\n";
   struct Case {
     std::string text, expected;
@@ -192,6 +194,8 @@ TEST_CASE("sweep dark continue / regime intervals: bad configs exit 2 naming the
        "sites"},
       {"job = \"dark continue\"\nbase = \"typo.toml\"\n" + out + "[[axis]]\nparameter = \"model.rho\"\nvalues = [1]\n",
        "did you mean 'sites'"},
+      {"job = \"dark continue\"\nbase = \"old_key.toml\"\n" + out + "[[axis]]\nparameter = \"model.rho\"\nvalues = [1]\n",
+       "old_key.toml:4 was renamed: use 'branch'"},
       {"job = \"regime intervals\"\nbase = \"regime.toml\"\n" + out + "[[axis]]\nparameter = \"regime.samples\"\nvalues = []\n",
        "'values'"},
       {"job = \"dark continue\"\nbase = \"dark.toml\"\nfigure = \"stability\"\n" + out +

@@ -150,6 +150,13 @@ class Checker {
 
   void unknown(const toml::key& key, const toml::node& value, const TableSchema& schema, const std::string& path) {
     const long line = key.source().begin.line ? long(key.source().begin.line) : line_of(value);
+    for (const auto& [old_name, new_name] : schema.renamed)
+      if (key.str() == old_name) {
+        add(line, "key '" + old_name + "' " + in_table(path) + " at " + location(source_, line) + " was renamed: use '" +
+                      new_name + "'",
+            path, key.str());
+        return;
+      }
     std::vector<std::string> names;
     for (const auto& k : schema.keys) names.push_back(k.name);
     const auto shown = [&](const std::string& name) {

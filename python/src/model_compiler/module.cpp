@@ -30,11 +30,35 @@ py::capsule compile(const std::string& path) {
                      });
 }
 
+// The lattice code of the model file at `path` compiled into the per-user cache and loaded:
+// (capsule, from_cache, library). Raises lrchain.InputError for a bad file or a missing compiler.
+py::tuple compile_lattice(const std::string& path) {
+  lrchain::python::LatticeKernelsHandle kernels;
+  lrchain::CompiledModelInfo info;
+  try {
+    py::gil_scoped_release release;  // deriving and compiling takes seconds
+    kernels = lrchain::compile_model_lattice(path, &info);
+  } catch (const lrchain::InputError& e) {
+    const py::object input_error = py::module_::import("lrchain.errors").attr("InputError");
+    PyErr_SetString(input_error.ptr(), e.what());
+    throw py::error_already_set();
+  }
+  py::capsule capsule(new lrchain::python::LatticeKernelsHandle(std::move(kernels)), lrchain::python::kLatticeCapsuleName,
+                      [](PyObject* c) {
+                        delete static_cast<lrchain::python::LatticeKernelsHandle*>(
+                            PyCapsule_GetPointer(c, lrchain::python::kLatticeCapsuleName));
+                      });
+  return py::make_tuple(capsule, info.from_cache, info.library.string());
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_model_compiler, m) {
   m.doc() = "Run-time compiler of lattice model files for lrchain.load_model (GiNaC, the C++ compiler).";
   m.def("compile", &compile, py::arg("path"),
         "The model file at path derived, compiled into the per-user cache and loaded: a capsule for lrchain.");
+  m.def("compile_lattice", &compile_lattice, py::arg("path"),
+        "The lattice code of the model file at path compiled into the per-user cache and loaded: "
+        "(capsule, from_cache, library).");
   m.attr("compiler") = lrchain::model_compiler_path();
 }

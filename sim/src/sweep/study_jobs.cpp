@@ -32,7 +32,7 @@ std::shared_ptr<const TableSchema> dark_table() {
       {number("omega_b", NumberRange::positive(), "none", "start frequency omega_b, below the theta = pi band edge"),
        number("edge_offset", NumberRange::positive(), "none",
               "start at omega_b = omega(pi) - edge_offset instead (for sweeps over the model)"),
-       choice("edge", {"optical", "acoustic"}, "optical", "theta = pi band edge the breather bifurcates from"),
+       choice("branch", {"optical", "acoustic"}, "optical", "branch whose theta = pi band edge the breather bifurcates from"),
        choice("center", {"bond", "site"}, "bond", "family: bond (n0 = 1/2) or site (n0 = 0)"),
        integer("sites", 9, 1'000'001, "101", "odd number of lattice sites per field (periodic ends)"),
        choice("mode", {"reversible", "full"}, "reversible", "shooting over a half/quarter period or the whole period"),
@@ -40,7 +40,8 @@ std::shared_ptr<const TableSchema> dark_table() {
        number("ds", NumberRange::between(0, 1, true, false), "0.1", "initial pseudo-arclength step (adapted in [1e-5, 1])"),
        number("omega_min", NumberRange::non_negative(), "0", "stop when omega_b falls below this"),
        number("omega_max", NumberRange::non_negative(), "0 (the band edge)", "stop when omega_b rises above this")},
-      std::nullopt});
+      std::nullopt,
+      {{"edge", "branch"}}});
 }
 
 // [regime]: the options of `lrchain regime intervals` (both branches are run).
@@ -78,7 +79,7 @@ Params read_model(const CheckedTable& root) {
 struct DarkSettings {
   Params p;
   std::optional<double> omega_b, edge_offset;
-  std::string edge = "optical", center = "bond", mode = "reversible";
+  std::string branch = "optical", center = "bond", mode = "reversible";
   std::int64_t sites = 101, points = 100;
   double ds = 0.1, omega_min = 0, omega_max = 0;
 };
@@ -92,7 +93,7 @@ std::pair<DarkSettings, DarkBreatherAnsatz> read_dark(const Document& doc) {
   const CheckedTable d = *root.table("dark");
   s.omega_b = d.number("omega_b");
   s.edge_offset = d.number("edge_offset");
-  d.read("edge", s.edge);
+  d.read("branch", s.branch);
   d.read("center", s.center);
   d.read("mode", s.mode);
   d.read("sites", s.sites);
@@ -105,7 +106,7 @@ std::pair<DarkSettings, DarkBreatherAnsatz> read_dark(const Document& doc) {
     throw InvalidParameter(key("omega_b"), "give exactly one of 'omega_b' and 'edge_offset'");
   if (s.sites % 2 == 0)
     throw InvalidParameter(key("sites"), "must be an odd integer >= 9 (a staggered dark breather fits periodic ends only on an odd number of sites)");
-  const Branch edge = parse_branch(s.edge);
+  const Branch edge = parse_branch(s.branch);
   const double edge_omega = dispersion_omega(s.p, edge, std::acos(-1.0));
   const double omega_b = s.omega_b ? *s.omega_b : edge_omega - *s.edge_offset;
   const char* start_key = s.omega_b ? "omega_b" : "edge_offset";

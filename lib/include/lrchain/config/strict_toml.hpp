@@ -101,6 +101,8 @@ struct TableSchema {
   std::string meaning;
   std::vector<KeySchema> keys;
   std::optional<KeySchema> other_keys;
+  // Keys that were renamed: {old, new}. The old key is an error naming the new one.
+  std::vector<std::pair<std::string, std::string>> renamed = {};
 
   const KeySchema* find(std::string_view key) const;  // listed key, else other_keys, else nullptr
 };

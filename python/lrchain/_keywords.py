@@ -1,0 +1,68 @@
+"""Keyword arguments that were renamed to the ``lrchain`` command's names for the same concept
+(``sites`` for every lattice size, ``branch``, ``switch_off_time``, ``modulation_depth``): the old
+name raises a TypeError naming the new one, never silently accepted."""
+
+import functools
+
+
+def renamed(**old_to_new):
+    """Decorator: calling the function with an old keyword (``old=...``) raises TypeError naming the
+    new one; the signature and docstring are the function's own."""
+
+    def wrap(function):
+        @functools.wraps(function)
+        def call(*args, **kwargs):
+            for old, new in old_to_new.items():
+                if old in kwargs:
+                    raise TypeError(f"{function.__name__}() got the keyword argument '{old}', which is now "
+                                    f"'{new}' (as in the lrchain command); use {new}=")
+            return function(*args, **kwargs)
+
+        return call
+
+    return wrap
+
+
+def odd_sites(sites, least, most):
+    """The half-width N of ``sites`` = 2N + 1 strain sites (n = -N..N), checked as the command's
+    ``--sites`` is: an odd integer in [least, most]; InvalidParameterError naming ``sites``."""
+    from .errors import InvalidParameterError
+
+    if isinstance(sites, bool) or not isinstance(sites, int) and not (hasattr(sites, "__index__")):
+        raise InvalidParameterError(f"invalid sites: must be an integer, not {type(sites).__name__}", "sites")
+    sites = int(sites)
+    if not least <= sites <= most or sites % 2 == 0:
+        raise InvalidParameterError(f"invalid sites: must be an odd integer in [{least}, {most}]: the strain sites "
+                                    f"are n = -N..N, 2N + 1 of them (got {sites})", "sites")
+    return (sites - 1) // 2
+
+
+def python_names(call, **renames):
+    """``call()``, with an InvalidParameterError's parameter given its Python keyword's name:
+    ``renames`` {library name: keyword}, and the library's hyphens as underscores (t-end -> t_end)."""
+    from .errors import InvalidParameterError
+
+    try:
+        return call()
+    except InvalidParameterError as e:
+        old = e.parameter
+        if old is None:
+            raise
+        new = renames.get(old, old.replace("-", "_"))
+        if new == old:
+            raise
+        message = str(e)
+        if message.startswith(f"invalid {old}:"):
+            message = f"invalid {new}:" + message[len(f"invalid {old}:"):]
+        raise InvalidParameterError(message, new) from None
+
+
+def checked_model(model):
+    """``model`` if it is an :class:`lrchain.Model`, else InvalidParameterError naming ``model``."""
+    from ._lrchain import Model
+    from .errors import InvalidParameterError
+
+    if not isinstance(model, Model):
+        raise InvalidParameterError(f"invalid model: must be an lrchain.Model (lrchain.load_model(file or name)), "
+                                    f"not {type(model).__name__}", "model")
+    return model

@@ -1,0 +1,20 @@
+#pragma once
+// Results of the dark-breather jobs as Python objects, shared by the resonant chain's jobs
+// (dark_binding.cpp) and any model's (model_dark_binding.cpp).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "lrchain/sim/dark/floquet.hpp"
+#include "lrchain/sim/dark/measures.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
+
+namespace lrchain::python {
+
+// Newton's max|F| per iteration.
+pybind11::array_t<double> residuals(const sim::dark::NewtonResult& r);
+// {norm_squared, K_x, K_y, C_x, C_y, E_b, max_strain}.
+pybind11::dict measures(const sim::dark::DarkMeasures& m);
+// {multipliers (complex array), kind, max_modulus, ..., log_det}.
+pybind11::dict floquet_dict(const sim::dark::FloquetResult& f);
+
+}  // namespace lrchain::python
