@@ -1,6 +1,7 @@
 // The emitted double evaluators of every shipped model (lib/include/lrchain/generated/model_*.hpp,
 // through lrchain::coefficients(Model, ...)) against 50-digit CLN evaluation of the expressions the
-// derivation produces from the model file, at 1000 random points per model and branch.
+// derivation produces from the model file, at 1000 random points per model and branch (10000 for the
+// resonant chain, evaluated in double with hand-off rules, except under the sanitizers).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -30,9 +31,21 @@ double sample(const derivation::ModelParameter& p, std::mt19937_64& rng) {
   return d;
 }
 
-// The bound: 1e-11 for every model (errors measured <= 5.3e-13 with this seed; the
-// resonant chain, emitted in double with omega'' by implicit differentiation: <= 1.0e-12).
+// The bound: 1e-11 for every model (errors measured <= 5.3e-13 with this seed at 1000 points; the
+// resonant chain, emitted in double with omega'' by implicit differentiation, over 10000 points per
+// branch with this seed: 1.7e-12 acoustic (h_tilde), 5.0e-12 optical (omega'' at one of its zeros)).
 constexpr double accuracy_bound = 1e-11;
+
+// Points per branch: 10000 for the double-arithmetic resonant chain, whose hand-off rules 1000 points
+// did not test enough (K4 rounded near alpha = 2 gave 1.1e-11 in h at 1 point in 10000).
+int points_per_branch(const std::string& model) {
+#ifdef LRCHAIN_SANITIZE_BUILD
+  (void)model;
+  return 1000;
+#else
+  return model == "resonant_chain" ? 10000 : 1000;
+#endif
+}
 
 }  // namespace
 
@@ -40,8 +53,8 @@ TEST_CASE("every shipped model's emitted evaluators agree with 50-digit evaluati
   const Symbols s;
   std::mt19937_64 rng(2026);
   std::uniform_real_distribution<double> U(0.0, 1.0);
-  const int points_per_branch = 1000;
   for (const auto& definition : shipped_models()) {
+    const int points = points_per_branch(definition.name);
     const ModelFile file = load_model_file(std::filesystem::path(LRCHAIN_SOURCE_DIR) / "models" / (definition.name + ".toml"));
     REQUIRE(file.hash == definition.file_hash);  // the committed evaluators come from this file
     const DerivedCoefficients d = derive(file.model, s);
@@ -52,7 +65,7 @@ TEST_CASE("every shipped model's emitted evaluators agree with 50-digit evaluati
       int compared = 0, excluded = 0;
       double worst = 0, worst_theta = 0, worst_distance = 0;
       std::string worst_name;
-      for (int attempt = 0; compared < points_per_branch && attempt < 4 * points_per_branch; ++attempt) {
+      for (int attempt = 0; compared < points && attempt < 4 * points; ++attempt) {
         std::vector<std::pair<std::string, double>> values;
         GiNaC::exmap exact_values;
         // 50-digit floating values of the exact doubles: exact rationals would make every power exact (slow).
@@ -108,7 +121,7 @@ TEST_CASE("every shipped model's emitted evaluators agree with 50-digit evaluati
                   definition.name.c_str(), definition.branch_names[branch].c_str(), compared, excluded, worst,
                   worst_name.c_str(), worst_theta, worst_distance);
       INFO(definition.name << " " << definition.branch_names[branch] << ": worst " << worst_name);
-      CHECK(compared == points_per_branch);
+      CHECK(compared == points);
       CHECK(worst <= accuracy_bound);
     }
   }

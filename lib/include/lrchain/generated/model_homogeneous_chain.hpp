@@ -16,9 +16,10 @@ inline void intermediates(const double* p, double* q) noexcept {
   q[1] = p[1];
   const double t0 = std::pow(p[1], p[0]);
   q[2] = p[0] * t0 / (p[1]);
-  const double t1 = (p[0] * p[0]);
-  q[3] = (-((1.0 / 2.0) * t1 * t0 / ((p[1] * p[1]))) + (1.0 / 2.0) * p[0] * t0 / ((p[1] * p[1])));
-  q[4] = (-((1.0 / 2.0) * t1 * t0 / ((p[1] * p[1] * p[1]))) + (1.0 / 3.0) * p[0] * t0 / ((p[1] * p[1] * p[1])) + (1.0 / 6.0) * (p[0] * p[0] * p[0]) * t0 / ((p[1] * p[1] * p[1])));
+  const double t1 = -(p[0]);
+  const double t2 = (t1 + 1.0);
+  q[3] = (1.0 / 2.0) * t2 * p[0] * t0 / ((p[1] * p[1]));
+  q[4] = (1.0 / 6.0) * t2 * (t1 + 2.0) * p[0] * t0 / ((p[1] * p[1] * p[1]));
 }
 
 // Coefficients of det M = 0 in ascending powers of omega^2 at D1 = 4 sin^2(theta/2), sigma = sin(theta).
@@ -36,9 +37,10 @@ inline void intermediates_extended(const long double* p, long double* q) noexcep
   q[1] = p[1];
   const real t0 = std::pow(p[1], p[0]);
   q[2] = p[0] * t0 / (p[1]);
-  const real t1 = (p[0] * p[0]);
-  q[3] = (-((real(1.0) / 2.0) * t1 * t0 / ((p[1] * p[1]))) + (real(1.0) / 2.0) * p[0] * t0 / ((p[1] * p[1])));
-  q[4] = (-((real(1.0) / 2.0) * t1 * t0 / ((p[1] * p[1] * p[1]))) + (real(1.0) / 3.0) * p[0] * t0 / ((p[1] * p[1] * p[1])) + (real(1.0) / 6.0) * (p[0] * p[0] * p[0]) * t0 / ((p[1] * p[1] * p[1])));
+  const real t1 = -(p[0]);
+  const real t2 = (t1 + 1.0);
+  q[3] = (real(1.0) / 2.0) * t2 * p[0] * t0 / ((p[1] * p[1]));
+  q[4] = (real(1.0) / 6.0) * t2 * (t1 + 2.0) * p[0] * t0 / ((p[1] * p[1] * p[1]));
 }
 
 // Coefficients of det M as dispersion(), in long double arithmetic.

@@ -18,9 +18,10 @@ inline void intermediates(const double* p, double* q) noexcept {
   q[3] = p[3];
   const double t0 = std::pow(p[1], p[0]);
   q[4] = p[0] * t0 / (p[1]);
-  const double t1 = (p[0] * p[0]);
-  q[5] = (-((1.0 / 2.0) * t1 * t0 / ((p[1] * p[1]))) + (1.0 / 2.0) * p[0] * t0 / ((p[1] * p[1])));
-  q[6] = (-((1.0 / 2.0) * t1 * t0 / ((p[1] * p[1] * p[1]))) + (1.0 / 3.0) * p[0] * t0 / ((p[1] * p[1] * p[1])) + (1.0 / 6.0) * (p[0] * p[0] * p[0]) * t0 / ((p[1] * p[1] * p[1])));
+  const double t1 = -(p[0]);
+  const double t2 = (t1 + 1.0);
+  q[5] = (1.0 / 2.0) * t2 * p[0] * t0 / ((p[1] * p[1]));
+  q[6] = (1.0 / 6.0) * t2 * (t1 + 2.0) * p[0] * t0 / ((p[1] * p[1] * p[1]));
 }
 
 // Coefficients of det M = 0 in ascending powers of omega^2 at D1 = 4 sin^2(theta/2), sigma = sin(theta).
@@ -169,11 +170,12 @@ inline void nls(double D1, double sigma, double omega, const double* q, double* 
   out[12] = (std::abs(t5) + std::abs(t14) + std::abs(t15));
   sum_h = t28;
   cancellation_h = (std::abs(t16) + std::abs(t17) + std::abs(t19) + std::abs(t20) + std::abs(t21) + std::abs(t22) + std::abs(t23) + std::abs(t24) + std::abs(t25) + std::abs(t26) + std::abs(t27));
-  // Sums that cancel in double (near a zero of h or h_tilde, or a non-resonance): long double.
+  // Sums that cancel in double (near a zero of h, or a non-resonance, times the cancellation of
+  // h_tilde): long double.
   const double limit = 1e4;
-  if (!(std::abs(sum_h) * limit > cancellation_h &&
-        std::abs(out[4]) * limit > out[11] && std::abs(out[5]) * limit > out[12] &&
-        std::abs(out[8]) * limit > std::abs(out[6]) + std::abs(out[3] * out[7])))
+  const double bound = std::abs(out[8]) * limit, terms = std::abs(out[6]) + std::abs(out[3] * out[7]);
+  if (!(std::abs(sum_h) * bound > cancellation_h * terms &&
+        std::abs(out[4]) * bound > out[11] * terms && std::abs(out[5]) * bound > out[12] * terms))
     nls_extended(D1, sigma, omega, q, out);
 }
 
