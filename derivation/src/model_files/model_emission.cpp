@@ -111,12 +111,12 @@ std::string extended_q(EmittedFunction& f, const ModelDerivation& m, bool recomp
   const std::string all = std::to_string(m.file.model.parameters.size());
   if (!recompute_intermediates)
     return "  real Q[" + all + "];\n"
-           "  for (int i = 0; i < " + all + "; ++i) Q[i] = q[i];\n";
+           "  lrchain::model_evaluator::widen(q, Q, " + all + ");\n";
   return "  long double parameters[" + n + "], intermediates[" + all + "];\n"
-         "  for (int i = 0; i < " + n + "; ++i) parameters[i] = q[i];\n"
+         "  lrchain::model_evaluator::widen(q, parameters, " + n + ");\n"
          "  intermediates_extended(parameters, intermediates);\n"
          "  real Q[" + all + "];\n"
-         "  for (int i = 0; i < " + all + "; ++i) Q[i] = intermediates[i];\n";
+         "  lrchain::model_evaluator::widen(intermediates, Q, " + all + ");\n";
 }
 
 // det M's coefficients in `real_type` at D1, sigma, Q of that type (used by the extended-precision nls).
@@ -133,35 +133,15 @@ EmittedFunction dispersion_extended_function(const ModelDerivation& m, const Sym
 }
 
 // Statements that turn the double inputs D1_in, sigma_in, omega_in into D1, sigma, omega in the type
-// `real`, consistent to that precision: sin^2 + cos^2 = 1 for the half angle (so sigma^2 = D1 - D1^2/4,
-// with which the expressions were reduced) and det M = 0 (omega^2 polished by Newton steps). The
-// coefficients are rational functions of (D1, sigma, omega) that are 0/0-like at band edges: they
-// need their inputs to satisfy these relations, not only to be close to the true values.
+// `real`, consistent to that precision (lrchain/model_evaluator_support.hpp): sin^2 + cos^2 = 1 for the
+// half angle and det M = 0 (omega^2 polished by Newton steps).
 std::string consistent_inputs(int degree) {
-  const std::string n = std::to_string(degree);
-  return "  // (sin, cos)(theta/2) from D1 = 4 sin^2, sigma = 2 sin cos, rescaled so that sin^2 + cos^2 = 1 here.\n"
-         "  real D1 = D1_in, sigma = sigma_in;\n"
-         "  if (D1_in > 0.0) {\n"
-         "    const real norm = real(0.25) * D1_in + real(sigma_in) * sigma_in / D1_in;\n"
-         "    D1 = D1_in / norm;\n"
-         "    sigma = sigma_in / norm;\n"
-         "  }\n"
-         "  // omega^2: Newton steps on det M = 0 from the double root.\n"
+  return "  // D1, sigma and omega consistent in `real` (sin^2 + cos^2 = 1 for theta/2, det M = 0).\n"
+         "  real D1, sigma;\n"
+         "  lrchain::model_evaluator::consistent_half_angle(D1_in, sigma_in, D1, sigma);\n"
          "  real w[" + std::to_string(degree + 1) + "];\n"
          "  dispersion_extended(D1, sigma, Q, w);\n"
-         "  real w2 = real(omega_in) * omega_in;\n"
-         "  for (int iteration = 0; iteration < 3; ++iteration) {\n"
-         "    real p = 0, dp = 0;\n"
-         "    for (int k = " + n + "; k >= 0; --k) {\n"
-         "      dp = dp * w2 + p;\n"
-         "      p = p * w2 + w[k];\n"
-         "    }\n"
-         "    const real step = dp != 0 ? p / dp : real(0);\n"
-         "    if (!(magnitude(step) <= 1e-6 * w2)) break;\n"
-         "    w2 -= step;\n"
-         "  }\n"
-         "  real omega = omega_in;\n"
-         "  for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);\n";
+         "  const real omega = lrchain::model_evaluator::polished_omega(w, " + std::to_string(degree) + ", omega_in);\n";
 }
 
 // The NLS coefficients in derivation order, later ones written with earlier ones by name; in
@@ -205,7 +185,7 @@ EmittedFunction nls_function(const ModelDerivation& m, const Symbols& s, const s
   f.local_outputs = "o";
   f.abs_function = "magnitude";
   f.prologue = "  using real [[maybe_unused]] = " + real_type + ";\n"
-               "  const auto magnitude = [](real x) { return x < 0 ? -x : x; };\n" + extended_q(f, m, recompute_intermediates) +
+               "  using lrchain::model_evaluator::magnitude;\n" + extended_q(f, m, recompute_intermediates) +
                consistent_inputs(int(m.branches.size())) + "  real o[" + count + "];\n";
   f.epilogue = "  for (int k = 0; k < " + count + "; ++k) out[k] = static_cast<double>(o[k]);\n";
   return f;
@@ -451,7 +431,7 @@ std::string model_header(const ModelDerivation& m, const Symbols& s, const std::
       << "): the double evaluators of\n"
          "// the model's dispersion relation and NLS coefficients (docs/models.md).\n"
          "// Regenerate with `cmake --build build --target regenerate`.\n"
-         "#pragma once\n\n#include <cmath>\n\n#include \"lrchain/model.hpp\"\n\n"
+         "#pragma once\n\n#include <cmath>\n\n#include \"lrchain/model.hpp\"\n#include \"lrchain/model_evaluator_support.hpp\"\n\n"
          "namespace lrchain::generated::model_" << m.file.name << " {\n\n"
       << model_evaluator_functions(m, s, arithmetic) << "\n" << model_definition_function(m) << "\n"
       << "}  // namespace lrchain::generated::model_" << m.file.name << "\n";
