@@ -126,3 +126,38 @@ TEST_CASE("every shipped model's emitted evaluators agree with 50-digit evaluati
     }
   }
 }
+
+// Points of the resonant chain (parameters alpha, delta0, kappa, rho) where the double evaluator
+// lost more than 1e-11 before its intermediates were emitted factored (K4 rounded near alpha = 2:
+// h on the optical branch at small theta, 2.2e-11 and 1.1e-11 against the long double evaluation)
+// and before the cancellation of h_tilde weighted its hand-off rule (h_tilde 2e-11 at 82 x 3900).
+TEST_CASE("the resonant chain's double evaluator agrees with 50-digit evaluation where it used to lose digits") {
+  const Symbols s;
+  const ModelFile file = load_model_file(std::filesystem::path(LRCHAIN_SOURCE_DIR) / "models" / "resonant_chain.toml");
+  const DerivedCoefficients d = derive(file.model, s);
+  struct Point {
+    double alpha, delta0, kappa, rho, theta;
+    const char* branch;
+  };
+  const Point points[] = {{1.9999548871528079, 0.20341087233830693, 0.78430545070854851, 0.29826523741119948, 0.015, "optical"},
+                          {1.9999548871528079, 0.20341087233830693, 0.78430545070854851, 0.29826523741119948, 0.0245693, "optical"},
+                          {2.7852206738113323, 1.1256553232104136, 0.64333211686531966, 0.36887494974224727, 2.6140499, "acoustic"}};
+  GiNaC::Digits = 50;
+  for (const Point& p : points) {
+    const std::vector<std::pair<std::string, double>> values = {
+        {"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}};
+    GiNaC::exmap exact_values;
+    for (std::size_t k = 0; k < file.parameters.size(); ++k)
+      exact_values[file.parameters[k].symbol] = GiNaC::evalf(exact(values[k].second));
+    for (const auto& i : file.intermediates)
+      exact_values[i.symbol] = GiNaC::evalf(i.value.subs(exact_values, GiNaC::subs_options::no_pattern));
+    const Model model = shipped_model("resonant_chain", values);
+    const std::size_t branch = model.branch(p.branch);
+    const NlsCoefficients got = coefficients(model, branch, p.theta);
+    const BranchPoint ref(d, s, exact_values, p.theta, branch, 50);
+    const double h = ref.value(d.h).to_double(), h_tilde = ref.value(d.h_tilde).to_double();
+    INFO(std::string(p.branch) << " at alpha " << p.alpha << ", theta " << p.theta);
+    CHECK(std::abs(got.h - h) <= accuracy_bound * std::abs(h));
+    CHECK(std::abs(got.h_tilde - h_tilde) <= accuracy_bound * std::abs(h_tilde));
+  }
+}
