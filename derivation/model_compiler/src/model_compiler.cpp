@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "evaluator_support_text.hpp"
 #include "ginac_evaluators.hpp"
 #include "lrchain/derivation/lattice_codegen.hpp"
 #include "lrchain/derivation/model_emission.hpp"
@@ -105,7 +106,8 @@ std::string literal(const std::string& text) {
 
 // Self-contained source of the shared object: the evaluators and C entry points.
 std::string shared_object_source(const derivation::ModelDerivation& m, const derivation::Symbols& s) {
-  return "// lrchain model " + m.file.name + ", emitted from " + m.file.path + "\n#include <cmath>\n\nnamespace lrchain_model {\n\n" +
+  return "// lrchain model " + m.file.name + ", emitted from " + m.file.path + "\n#include <cmath>\n" +
+         model_compiler_detail::evaluator_support_text + "\nnamespace lrchain_model {\n\n" +
          derivation::model_evaluator_functions(m, s) +
          "\n}  // namespace lrchain_model\n\n"
          "extern \"C\" const char lrchain_model_metadata[] = " + literal(metadata(m)) + ";\n\n"
@@ -149,7 +151,7 @@ void compile_into_cache(const std::string& source_text, const std::vector<std::s
   }
 }
 
-// The cache entry of a model file's bytes for one kind of code ("evaluators 2", "lattice 1"): the
+// The cache entry of a model file's bytes for one kind of code ("evaluators 3", "lattice 1"): the
 // key hashes the bytes, the compiler and the lrchain version.
 fs::path cache_entry(const std::string& bytes, const std::string& kind, const std::string& prefix) {
   const std::uint64_t key = fnv1a_64(model_compiler_path() + "\n" + LRCHAIN_VERSION + "\n" + kind + "\n", fnv1a_64(bytes));
@@ -207,7 +209,7 @@ bool model_compiler_available() { return program_in_path(model_compiler_path());
 std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, CompiledModelInfo* info) {
   const std::string bytes = read_bytes(path);
   const std::string compiler = model_compiler_path();
-  const fs::path library = cache_entry(bytes, "evaluators 2", "model-");
+  const fs::path library = cache_entry(bytes, "evaluators 3", "model-");
   const fs::path directory = library.parent_path();
   if (info) info->library = library;
   std::error_code ec;

@@ -38,6 +38,17 @@ std::vector<std::pair<ex, std::string>> q_inputs(const ModelDerivation& m) {
   return inputs;
 }
 
+// e factored as a polynomial in its parameters, its non-rational parts (delta0^alpha) held as
+// symbols meanwhile: Hertz's K4 = alpha (alpha - 1) (alpha - 2) delta0^alpha / (6 delta0^3) as the
+// expanded sum of its alpha^3, alpha^2 and alpha terms cancels near alpha = 2 (K4's relative error
+// up to 8e-12 at alpha = 1.99995, carried into h on the optical branch at small theta).
+ex factored_intermediate(const ex& e) {
+  exmap non_rational;
+  const ex rational = e.to_rational(non_rational);
+  const ex nd = normal(rational).numer_denom();
+  return (factor(nd.op(0)) / factor(nd.op(1))).subs(non_rational, subs_options::no_pattern);
+}
+
 // q = parameters followed by the named intermediates evaluated from them.
 EmittedFunction intermediates_function(const ModelDerivation& m) {
   EmittedFunction f;
@@ -51,8 +62,7 @@ EmittedFunction intermediates_function(const ModelDerivation& m) {
   }
   for (std::size_t j = 0; j < m.file.intermediates.size(); ++j) {
     const std::string name = "q[" + std::to_string(n + j) + "]";
-    f.outputs.emplace_back(name, m.file.intermediates[j].value);
-    f.unfactored.insert(name);
+    f.outputs.emplace_back(name, factored_intermediate(m.file.intermediates[j].value));
   }
   return f;
 }
@@ -101,12 +111,12 @@ std::string extended_q(EmittedFunction& f, const ModelDerivation& m, bool recomp
   const std::string all = std::to_string(m.file.model.parameters.size());
   if (!recompute_intermediates)
     return "  real Q[" + all + "];\n"
-           "  for (int i = 0; i < " + all + "; ++i) Q[i] = q[i];\n";
+           "  lrchain::model_evaluator::widen(q, Q, " + all + ");\n";
   return "  long double parameters[" + n + "], intermediates[" + all + "];\n"
-         "  for (int i = 0; i < " + n + "; ++i) parameters[i] = q[i];\n"
+         "  lrchain::model_evaluator::widen(q, parameters, " + n + ");\n"
          "  intermediates_extended(parameters, intermediates);\n"
          "  real Q[" + all + "];\n"
-         "  for (int i = 0; i < " + all + "; ++i) Q[i] = intermediates[i];\n";
+         "  lrchain::model_evaluator::widen(intermediates, Q, " + all + ");\n";
 }
 
 // det M's coefficients in `real_type` at D1, sigma, Q of that type (used by the extended-precision nls).
@@ -123,35 +133,15 @@ EmittedFunction dispersion_extended_function(const ModelDerivation& m, const Sym
 }
 
 // Statements that turn the double inputs D1_in, sigma_in, omega_in into D1, sigma, omega in the type
-// `real`, consistent to that precision: sin^2 + cos^2 = 1 for the half angle (so sigma^2 = D1 - D1^2/4,
-// with which the expressions were reduced) and det M = 0 (omega^2 polished by Newton steps). The
-// coefficients are rational functions of (D1, sigma, omega) that are 0/0-like at band edges: they
-// need their inputs to satisfy these relations, not only to be close to the true values.
+// `real`, consistent to that precision (lrchain/model_evaluator_support.hpp): sin^2 + cos^2 = 1 for the
+// half angle and det M = 0 (omega^2 polished by Newton steps).
 std::string consistent_inputs(int degree) {
-  const std::string n = std::to_string(degree);
-  return "  // (sin, cos)(theta/2) from D1 = 4 sin^2, sigma = 2 sin cos, rescaled so that sin^2 + cos^2 = 1 here.\n"
-         "  real D1 = D1_in, sigma = sigma_in;\n"
-         "  if (D1_in > 0.0) {\n"
-         "    const real norm = real(0.25) * D1_in + real(sigma_in) * sigma_in / D1_in;\n"
-         "    D1 = D1_in / norm;\n"
-         "    sigma = sigma_in / norm;\n"
-         "  }\n"
-         "  // omega^2: Newton steps on det M = 0 from the double root.\n"
+  return "  // D1, sigma and omega consistent in `real` (sin^2 + cos^2 = 1 for theta/2, det M = 0).\n"
+         "  real D1, sigma;\n"
+         "  lrchain::model_evaluator::consistent_half_angle(D1_in, sigma_in, D1, sigma);\n"
          "  real w[" + std::to_string(degree + 1) + "];\n"
          "  dispersion_extended(D1, sigma, Q, w);\n"
-         "  real w2 = real(omega_in) * omega_in;\n"
-         "  for (int iteration = 0; iteration < 3; ++iteration) {\n"
-         "    real p = 0, dp = 0;\n"
-         "    for (int k = " + n + "; k >= 0; --k) {\n"
-         "      dp = dp * w2 + p;\n"
-         "      p = p * w2 + w[k];\n"
-         "    }\n"
-         "    const real step = dp != 0 ? p / dp : real(0);\n"
-         "    if (!(magnitude(step) <= 1e-6 * w2)) break;\n"
-         "    w2 -= step;\n"
-         "  }\n"
-         "  real omega = omega_in;\n"
-         "  for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);\n";
+         "  const real omega = lrchain::model_evaluator::polished_omega(w, " + std::to_string(degree) + ", omega_in);\n";
 }
 
 // The NLS coefficients in derivation order, later ones written with earlier ones by name; in
@@ -195,7 +185,7 @@ EmittedFunction nls_function(const ModelDerivation& m, const Symbols& s, const s
   f.local_outputs = "o";
   f.abs_function = "magnitude";
   f.prologue = "  using real [[maybe_unused]] = " + real_type + ";\n"
-               "  const auto magnitude = [](real x) { return x < 0 ? -x : x; };\n" + extended_q(f, m, recompute_intermediates) +
+               "  using lrchain::model_evaluator::magnitude;\n" + extended_q(f, m, recompute_intermediates) +
                consistent_inputs(int(m.branches.size())) + "  real o[" + count + "];\n";
   f.epilogue = "  for (int k = 0; k < " + count + "; ++k) out[k] = static_cast<double>(o[k]);\n";
   return f;
@@ -227,8 +217,9 @@ ex canonical_sign(const ex& p) {
 }
 
 // Adds to the double nls f the magnitudes of the terms of h's numerator, and an epilogue that
-// re-evaluates in long double (nls_extended) where those, h_tilde = h - lambda beta or the
-// non-resonance values cancel by more than double_nls_cancellation_limit.
+// re-evaluates in long double (nls_extended) where h's numerator or a non-resonance value, times
+// the cancellation of h_tilde = h - lambda beta (which multiplies their rounding errors), cancels
+// by more than double_nls_cancellation_limit (each alone passed: h_tilde lost 1.3e-11 at 82 x 3900).
 EmittedFunction with_cancellation_check(EmittedFunction f, const ModelDerivation& m) {
   const std::pair<std::string, std::string> checked[] = {{"h", "out[6]"}};
   std::string condition;
@@ -248,14 +239,19 @@ EmittedFunction with_cancellation_check(EmittedFunction f, const ModelDerivation
         f.outputs.emplace_back(scale, sum);
         f.term_scales.insert(scale);
         f.prologue += "  double " + value + ", " + scale + ";\n";
-        condition += std::string(condition.empty() ? "" : " &&\n        ") + "std::abs(" + value + ") * limit > " + scale;
+        condition += std::string(condition.empty() ? "" : " &&\n        ") + "std::abs(" + value + ") * bound > " + scale +
+                     " * terms";
       }
-  condition += " &&\n        std::abs(out[4]) * limit > out[11]";
-  if (m.coefficients.mean_flow)
-    condition += " && std::abs(out[5]) * limit > out[12] &&\n"
-                 "        std::abs(out[8]) * limit > std::abs(out[6]) + std::abs(out[3] * out[7])";
-  f.epilogue += "  // Sums that cancel in double (near a zero of h or h_tilde, or a non-resonance): long double.\n"
-                "  const double limit = " + std::string(double_nls_cancellation_limit) + ";\n"
+  condition += " &&\n        std::abs(out[4]) * bound > out[11] * terms";
+  std::string bound = "  const double bound = limit, terms = 1;\n";
+  if (m.coefficients.mean_flow) {
+    // h_tilde = h - lambda beta multiplies the relative errors of h and lambda by its own cancellation.
+    condition += " && std::abs(out[5]) * bound > out[12] * terms";
+    bound = "  const double bound = std::abs(out[8]) * limit, terms = std::abs(out[6]) + std::abs(out[3] * out[7]);\n";
+  }
+  f.epilogue += "  // Sums that cancel in double (near a zero of h, or a non-resonance, times the cancellation of\n"
+                "  // h_tilde): long double.\n"
+                "  const double limit = " + std::string(double_nls_cancellation_limit) + ";\n" + bound +
                 "  if (!(" + condition + "))\n"
                 "    nls_extended(D1, sigma, omega, q, out);\n";
   return f;
@@ -435,7 +431,7 @@ std::string model_header(const ModelDerivation& m, const Symbols& s, const std::
       << "): the double evaluators of\n"
          "// the model's dispersion relation and NLS coefficients (docs/models.md).\n"
          "// Regenerate with `cmake --build build --target regenerate`.\n"
-         "#pragma once\n\n#include <cmath>\n\n#include \"lrchain/model.hpp\"\n\n"
+         "#pragma once\n\n#include <cmath>\n\n#include \"lrchain/model.hpp\"\n#include \"lrchain/model_evaluator_support.hpp\"\n\n"
          "namespace lrchain::generated::model_" << m.file.name << " {\n\n"
       << model_evaluator_functions(m, s, arithmetic) << "\n" << model_definition_function(m) << "\n"
       << "}  // namespace lrchain::generated::model_" << m.file.name << "\n";

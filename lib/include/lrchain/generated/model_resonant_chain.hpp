@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "lrchain/model.hpp"
+#include "lrchain/model_evaluator_support.hpp"
 
 namespace lrchain::generated::model_resonant_chain {
 
@@ -18,9 +19,10 @@ inline void intermediates(const double* p, double* q) noexcept {
   q[3] = p[3];
   const double t0 = std::pow(p[1], p[0]);
   q[4] = p[0] * t0 / (p[1]);
-  const double t1 = (p[0] * p[0]);
-  q[5] = (-((1.0 / 2.0) * t1 * t0 / ((p[1] * p[1]))) + (1.0 / 2.0) * p[0] * t0 / ((p[1] * p[1])));
-  q[6] = (-((1.0 / 2.0) * t1 * t0 / ((p[1] * p[1] * p[1]))) + (1.0 / 3.0) * p[0] * t0 / ((p[1] * p[1] * p[1])) + (1.0 / 6.0) * (p[0] * p[0] * p[0]) * t0 / ((p[1] * p[1] * p[1])));
+  const double t1 = -(p[0]);
+  const double t2 = (t1 + 1.0);
+  q[5] = (1.0 / 2.0) * t2 * p[0] * t0 / ((p[1] * p[1]));
+  q[6] = (1.0 / 6.0) * t2 * (t1 + 2.0) * p[0] * t0 / ((p[1] * p[1] * p[1]));
 }
 
 // Coefficients of det M = 0 in ascending powers of omega^2 at D1 = 4 sin^2(theta/2), sigma = sin(theta).
@@ -45,32 +47,15 @@ inline void dispersion_extended(long double D1, long double sigma, const long do
 // nls() in long double from consistent inputs, where the double nls loses digits.
 inline void nls_extended(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
   using real [[maybe_unused]] = long double;
-  const auto magnitude = [](real x) { return x < 0 ? -x : x; };
+  using lrchain::model_evaluator::magnitude;
   real Q[7];
-  for (int i = 0; i < 7; ++i) Q[i] = q[i];
-  // (sin, cos)(theta/2) from D1 = 4 sin^2, sigma = 2 sin cos, rescaled so that sin^2 + cos^2 = 1 here.
-  real D1 = D1_in, sigma = sigma_in;
-  if (D1_in > 0.0) {
-    const real norm = real(0.25) * D1_in + real(sigma_in) * sigma_in / D1_in;
-    D1 = D1_in / norm;
-    sigma = sigma_in / norm;
-  }
-  // omega^2: Newton steps on det M = 0 from the double root.
+  lrchain::model_evaluator::widen(q, Q, 7);
+  // D1, sigma and omega consistent in `real` (sin^2 + cos^2 = 1 for theta/2, det M = 0).
+  real D1, sigma;
+  lrchain::model_evaluator::consistent_half_angle(D1_in, sigma_in, D1, sigma);
   real w[3];
   dispersion_extended(D1, sigma, Q, w);
-  real w2 = real(omega_in) * omega_in;
-  for (int iteration = 0; iteration < 3; ++iteration) {
-    real p = 0, dp = 0;
-    for (int k = 2; k >= 0; --k) {
-      dp = dp * w2 + p;
-      p = p * w2 + w[k];
-    }
-    const real step = dp != 0 ? p / dp : real(0);
-    if (!(magnitude(step) <= 1e-6 * w2)) break;
-    w2 -= step;
-  }
-  real omega = omega_in;
-  for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);
+  const real omega = lrchain::model_evaluator::polished_omega(w, 2, omega_in);
   real o[13];
   const real t0 = (Q[2] * Q[2]);
   const real t1 = (omega * omega);
@@ -169,11 +154,12 @@ inline void nls(double D1, double sigma, double omega, const double* q, double* 
   out[12] = (std::abs(t5) + std::abs(t14) + std::abs(t15));
   sum_h = t28;
   cancellation_h = (std::abs(t16) + std::abs(t17) + std::abs(t19) + std::abs(t20) + std::abs(t21) + std::abs(t22) + std::abs(t23) + std::abs(t24) + std::abs(t25) + std::abs(t26) + std::abs(t27));
-  // Sums that cancel in double (near a zero of h or h_tilde, or a non-resonance): long double.
+  // Sums that cancel in double (near a zero of h, or a non-resonance, times the cancellation of
+  // h_tilde): long double.
   const double limit = 1e4;
-  if (!(std::abs(sum_h) * limit > cancellation_h &&
-        std::abs(out[4]) * limit > out[11] && std::abs(out[5]) * limit > out[12] &&
-        std::abs(out[8]) * limit > std::abs(out[6]) + std::abs(out[3] * out[7])))
+  const double bound = std::abs(out[8]) * limit, terms = std::abs(out[6]) + std::abs(out[3] * out[7]);
+  if (!(std::abs(sum_h) * bound > cancellation_h * terms &&
+        std::abs(out[4]) * bound > out[11] * terms && std::abs(out[5]) * bound > out[12] * terms))
     nls_extended(D1, sigma, omega, q, out);
 }
 
