@@ -1,0 +1,144 @@
+// `lrchain dark ... --model` with one-sided contacts: the resonant chain's model file at a branch
+// point whose orbit opens contacts every period (bond-centred, omega_b = 2.42, K_x = 0.473 > delta0,
+// the case of dark_breather_test.cpp) gives the specialised strain-lattice breather (shooting.hpp,
+// contact changes located there too); a smooth model (klein_gordon) reports no contacts; `dark
+// evolve --model` writes the paper chain's evolution files and figures.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "../support/run_lrchain.hpp"
+#include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/sim/dark/measures.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
+
+namespace fs = std::filesystem;
+using lrchain::test::run_lrchain;
+
+namespace {
+
+const fs::path source_dir = LRCHAIN_SOURCE_DIR;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+// Rows of a CSV file with a header row, as numbers.
+std::vector<std::vector<double>> read_csv(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST_CASE("dark --model: the resonant chain's model file opens contacts and gives the strain-lattice breather" *
+          doctest::test_suite("fast")) {
+  const double omega_b = 2.42;
+  const int N = 41;
+  const fs::path out = scratch("dark-model-contact");
+  const auto r = run_lrchain({"dark", "solve", "--model", "models/resonant_chain.toml", "--branch", "optical", "--omega-b", "2.42", "--center",
+                              "bond", "--sites", "41", "--quiet", "--figure-format", "png", "--out", out.string()},
+                             source_dir);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j["newton_converged"] == true);
+  CHECK(j["contact_changes_located"] == true);
+  REQUIRE(j["one_sided_contacts"].size() == 1);  // one Hertz bond law: F(u[n+1] - u[n]) = F(r[n+1]) up to a shift
+  const long changes = j["contact_changes_per_period"].get<long>();
+  CHECK(changes > 0);
+  CHECK(changes % 2 == 0);  // every contact opened in a period closes again
+
+  // The specialised solver (Params path) at the same point.
+  const lrchain::Params p;  // alpha 3/2, delta0 4/9, kappa 1, rho 1/3: the model file's defaults
+  using namespace lrchain::sim::dark;
+  const DarkShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
+  const auto res = newton_solve(
+      sh, sh.unknowns_from_z(lrchain::dark_seed(lrchain::make_dark_breather_ansatz(p, lrchain::Branch::optical, omega_b),
+                                                DarkCenter::bond, N)),
+      omega_b, {});
+  REQUIRE(res.converged);
+  const Eigen::VectorXd xy = sh.z_from_unknowns(res.q);
+  const DarkMeasures m = measure_dark_breather(p, xy, omega_b);
+  REQUIRE(m.max_strain > p.delta0);  // the paper chain's orbit loses contact every period
+
+  // profile.csv: n, r_0, r_seed, r_T, w1_0, w1_seed, w1_T; (r, w) -> (x, y): x_n = r_n,
+  // y_n = r_n + w_n - w_{n-1} (periodic).
+  const auto rows = read_csv(out / "profile.csv");
+  REQUIRE(rows.size() == std::size_t(N));
+  double profile = 0;
+  for (int n = 0; n < N; ++n) {
+    const double x = rows[std::size_t(n)][1], y = x + rows[std::size_t(n)][4] - rows[std::size_t((n + N - 1) % N)][4];
+    profile = std::max({profile, std::abs(x - xy(n)), std::abs(y - xy(N + n))});
+  }
+  const double E_b = j["measures"]["E_b"].get<double>(), K_x = j["measures"]["K_x"].get<double>();
+  std::printf("dark resonant_chain model vs Params at omega_b 2.42 (contacts open): %ld contact changes per period, "
+              "E_b %.3e vs %.3e, K_x %.15f vs %.15f, max profile difference %.3e\n",
+              changes, E_b, m.E_b, K_x, m.K_x, profile);
+  // Both exact to the 1e-10 (dark_breather_test.cpp: the Params path reaches it here).
+  CHECK(E_b <= 1e-10);
+  CHECK(m.E_b <= 1e-10);
+  // Same breather: the model path solves all 2N strains with no reflection symmetry imposed, so its
+  // weakly pinned translation mode takes up integration error (4.3e-8 measured without contact
+  // changes, dark_model_test.cpp); K_x, at the far site, is not affected.
+  CHECK(profile < 1e-6);
+  CHECK(std::abs(K_x - m.K_x) < 1e-9);
+  fs::remove_all(out);
+}
+
+TEST_CASE("dark --model: a smooth model (klein_gordon) has no one-sided contacts" * doctest::test_suite("fast")) {
+  const auto r = run_lrchain({"dark", "solve", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b",
+                              "1.17", "--sites", "31", "--quiet", "--json"},
+                             source_dir);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["one_sided_contacts"].empty());
+  CHECK(j["contact_changes_located"] == false);
+  CHECK(j["contact_changes_per_period"].is_null());
+  CHECK(j["measures"]["E_b"].get<double>() < 1e-10);
+}
+
+TEST_CASE("dark evolve --model: the paper chain's evolution files and figures" * doctest::test_suite("fast")) {
+  const fs::path out = scratch("dark-model-evolve");
+  const auto r = run_lrchain({"dark", "evolve", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b",
+                              "1.17", "--sites", "31", "--t-end", "60", "--quiet", "--figure-format", "png", "--out",
+                              out.string()},
+                             source_dir);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  for (const char* name : {"u0_spacetime.bin", "evolution.csv", "snapshots.csv", "evolution.gp", "diagnostics.gp",
+                           "summary.json"}) {
+    INFO(name);
+    REQUIRE(fs::exists(out / name));
+    CHECK(fs::file_size(out / name) > 0);
+  }
+  std::ifstream gp(out / "evolution.gp");
+  const std::string script((std::istreambuf_iterator<char>(gp)), std::istreambuf_iterator<char>());
+  CHECK(script.find("set xlabel 'site n'") != std::string::npos);
+  CHECK(script.find("set ylabel 't (dimensionless)'") != std::string::npos);
+  CHECK(script.find("set cblabel 'u0[n]'") != std::string::npos);
+  fs::remove_all(out);
+}
