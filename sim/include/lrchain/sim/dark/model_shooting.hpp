@@ -34,6 +34,8 @@ class ModelDarkOrbit {
   ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites, bool mean_flow,
                  ContactIntegrationOptions options = {}, ContactBonds bonds = {});
   ~ModelDarkOrbit();
+  ModelDarkOrbit(const ModelDarkOrbit&) = delete;  // its contact integrator refers to it
+  ModelDarkOrbit& operator=(const ModelDarkOrbit&) = delete;
   int sites() const { return sites_; }
   Eigen::Index positions() const { return positions_; }  // fields x sites
   const ModelLattice& lattice() const { return lattice_; }
