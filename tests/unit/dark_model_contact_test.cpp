@@ -1,9 +1,9 @@
-// `lrchain dark ... --model` with one-sided contacts: the resonant chain's model file at a branch
-// point whose orbit opens contacts every period (site-centred, omega_b = 2.42, K_x = 0.473 > delta0,
-// the amplitude of dark_breather_test.cpp; and rho = 1 at 2.207, K_x = 0.662) gives the specialised
-// strain-lattice breather (shooting.hpp,
-// contact changes located there too) with the same contact changes; a smooth model (klein_gordon) reports no contacts; `dark
-// evolve --model` writes the paper chain's evolution files and figures.
+// `lrchain dark ... --model` with one-sided contacts: the resonant chain's model file at branch points
+// whose orbits open contacts every period (site-centred; rho = 1/3 at omega_b = 2.42, K_x = 0.473 >
+// delta0, the amplitude of dark_breather_test.cpp; rho = 1 at 2.207, K_x = 0.662) gives the specialised
+// strain-lattice breather (shooting.hpp, contact changes located there too) with the same contact
+// changes; a smooth model (klein_gordon) reports no contacts; `dark evolve --model` writes the paper
+// chain's evolution files and figures.
 #include <doctest/doctest.h>
 
 #include <algorithm>
