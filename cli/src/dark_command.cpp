@@ -30,6 +30,7 @@
 #include "lrchain/sim/dark/model_dark_ansatz.hpp"
 #include "lrchain/sim/dark/model_shooting.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
+#include "dark_contact_bonds.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
 #include "stop_signals.hpp"
@@ -396,22 +397,30 @@ void run_continue(const DarkArgs& a) {
   continue_and_report(a, s.shooting, s.newton.q, s.ansatz.omega, base_json(a, s), fmt::format("ρ = {:g}", a.p.rho));
 }
 
-// Space-time files and figures of a direct integration (Figs. 21, 22, 25).
-void write_evolution(const DarkArgs& a, const DarkEvolution& e, json& summary) {
+// One lattice variable of an evolution's files: its name (x, r, u0, ...) and axis label.
+struct EvolutionVariable {
+  std::string name, label;
+};
+
+// Space-time files and figures of a direct integration (Figs. 21, 22, 25) for any lattice variables:
+// <name>_spacetime.bin per variable, evolution.csv, snapshots.csv (n, every v_0, every v_T),
+// evolution.gp (snapshots and space-time maps) and diagnostics.gp (E_b(t), position), summary.json.
+void write_evolution(const std::string& dir, const DarkEvolution& e, const std::vector<EvolutionVariable>& variables,
+                     const std::string& title, json& summary) {
   const int N = e.sites;
-  const std::string& dir = a.out;
+  const int V = int(variables.size());
   const sim::OutputLock lock(dir);
   sim::Figures figures(dir);
-  for (int field = 0; field < 2; ++field) {
+  for (int field = 0; field < V; ++field) {
     sim::SpaceTime st;
-    st.quantity = field == 0 ? "x_n" : "y_n";
+    st.quantity = variables[std::size_t(field)].name + "_n";
     st.first_label = -(N - 1) / 2;
     st.sites = static_cast<std::size_t>(N);
     for (std::size_t m = 0; m < e.snapshots.size(); ++m) {
       st.times.push_back(static_cast<double>(m) * e.period);
       for (int i = 0; i < N; ++i) st.values.push_back(static_cast<float>(e.snapshots[m](field * N + i)));
     }
-    sim::write_spacetime_binary(dir, field == 0 ? "x_spacetime.bin" : "y_spacetime.bin", st);
+    sim::write_spacetime_binary(dir, variables[std::size_t(field)].name + "_spacetime.bin", st);
   }
   std::ostringstream ev;
   ev << "t,E_b,C_x,K_x,position,depth\n";
@@ -421,35 +430,47 @@ void write_evolution(const DarkArgs& a, const DarkEvolution& e, json& summary) {
   const Eigen::VectorXd& z0 = e.snapshots.front();
   const Eigen::VectorXd& zT = e.snapshots.back();
   std::ostringstream sn;
-  sn << "n,x_0,y_0,x_T,y_T\n";
-  for (int i = 0; i < N; ++i)
-    sn << fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g}\n", i - (N - 1) / 2, z0(i), z0(N + i), zT(i), zT(N + i));
+  sn << "n";
+  for (const char* when : {"_0", "_T"})
+    for (const auto& v : variables) sn << "," << v.name << when;
+  sn << "\n";
+  for (int i = 0; i < N; ++i) {
+    sn << i - (N - 1) / 2;
+    for (const Eigen::VectorXd* z : {&z0, &zT})
+      for (int field = 0; field < V; ++field) sn << fmt::format(",{:.17g}", (*z)(field * N + i));
+    sn << "\n";
+  }
   sim::write_file_atomic(dir, "snapshots.csv", sn.str());
   const double T = e.periods.back().t;
   const double nmin = -(N - 1) / 2 - 0.5, nmax = (N - 1) / 2 + 0.5;
-  const std::string title = fmt::format("{} {}-centred dark breather, ρ = {:g}, ω_b = {:g}", a.branch,
-                                        a.center, a.p.rho, a.omega_b);
+  const double height = 0.94 / V;
+  std::string maps, snapshots, right;
+  for (int k = 0; k < V; ++k) {
+    const EvolutionVariable& v = variables[std::size_t(k)];
+    const double origin = (V - 1 - k) * height;
+    maps += fmt::format("{}{}_n(m T_b)", k == 0 ? "" : ", ", v.name);
+    snapshots += fmt::format(
+        "set size 0.36,{0:g}\nset origin 0.0,{1:g}\nset ylabel '{2}' noenhanced\nset title '{3}_n' noenhanced\n"
+        "plot 'snapshots.csv' skip 1 u 1:{4} w lp pt 3 lc 'red' t 't = 0', '' skip 1 u 1:{5} w lp pt 4 lc 'blue' t 't = {6:.1f}'\n",
+        height, origin, v.label, v.name, 2 + k, 2 + V + k, T);
+    right += fmt::format("set size 0.64,{0:g}\nset origin 0.36,{1:g}\nset cblabel '{2}' noenhanced\n"
+                         "set title '{3}_n(t), t = m T_b' noenhanced\n"
+                         "plot '{3}_spacetime.bin' binary matrix with image notitle\n",
+                         height, origin, v.label, v.name);
+  }
   figures.draw({
       "evolution.gp",
       fmt::format("if (!exists(\"outfile\")) outfile = 'evolution.png'\n"
-                  "set terminal pngcairo size 1500,900\nset output outfile\n"
+                  "set terminal pngcairo size 1500,{5}\nset output outfile\n"
                   "set datafile separator ','\n"
-                  "set multiplot title '{0}: snapshots at t = 0 and t = {1:.1f} (left), space-time x_n(m T_b), y_n(m T_b) (right)' noenhanced\n"
+                  "set multiplot title '{0}: snapshots at t = 0 and t = {1:.1f} (left), space-time {6} (right)' noenhanced\n"
                   "set key outside below horizontal\nset xrange [{2}:{3}]\nset xlabel 'site n'\n"
-                  "set size 0.36,0.47\nset origin 0.0,0.47\nset ylabel 'strain x_n' noenhanced\n"
-                  "set title 'x_n' noenhanced\n"
-                  "plot 'snapshots.csv' skip 1 u 1:2 w lp pt 3 lc 'red' t 't = 0', '' skip 1 u 1:4 w lp pt 4 lc 'blue' t 't = {1:.1f}'\n"
-                  "set origin 0.0,0.0\nset ylabel 'strain y_n' noenhanced\nset title 'y_n' noenhanced\n"
-                  "plot 'snapshots.csv' skip 1 u 1:3 w lp pt 3 lc 'red' t 't = 0', '' skip 1 u 1:5 w lp pt 4 lc 'blue' t 't = {1:.1f}'\n"
+                  "{7}"
                   "set datafile separator whitespace\n"
-                  "set size 0.64,0.47\nset origin 0.36,0.47\nset ylabel 't (dimensionless)'\nset yrange [0:{1}]\n"
-                  "{4}\nset colorbox\nset cblabel 'strain x_n' noenhanced\n"
-                  "set title 'x_n(t), t = m T_b' noenhanced\n"
-                  "plot 'x_spacetime.bin' binary matrix with image notitle\n"
-                  "set origin 0.36,0.0\nset title 'y_n(t), t = m T_b' noenhanced\nset cblabel 'strain y_n' noenhanced\n"
-                  "plot 'y_spacetime.bin' binary matrix with image notitle\n"
+                  "set ylabel 't (dimensionless)'\nset yrange [0:{1}]\n"
+                  "{4}\nset colorbox\n{8}"
                   "unset multiplot\n",
-                  title, T, nmin, nmax, sim::viridis_palette),
+                  title, T, nmin, nmax, sim::viridis_palette, 450 * std::max(V, 2), maps, snapshots, right),
       "evolution.png"});
   figures.draw({
       "diagnostics.gp",
@@ -499,7 +520,10 @@ void run_evolve(const DarkArgs& a) {
   j["depth_end"] = last.depth;
   j["max_strain"] = e.max_strain;
   j["samples_per_period"] = a.samples;
-  if (!a.out.empty()) write_evolution(a, e, j);
+  if (!a.out.empty())
+    write_evolution(a.out, e, {{"x", "strain x_n"}, {"y", "strain y_n"}},
+                    fmt::format("{} {}-centred dark breather, ρ = {:g}, ω_b = {:g}", a.branch, a.center, a.p.rho, a.omega_b),
+                    j);
   std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
 }
 
@@ -511,6 +535,7 @@ struct ModelDarkJob {
   LatticeCode code;  // compiled-in, or compiled at run time for a user's file (kept loaded here)
   const lrchain_lattice_kernels* kernels;
   ModelDarkAnsatz ansatz;
+  sim::dark::ContactBonds contacts;  // one-sided contacts (empty: a smooth model)
 };
 
 // Loads --model/--set and checks every option of the job before anything is computed or written
@@ -524,6 +549,7 @@ ModelDarkJob validate_model_job(const DarkArgs& a, DarkJob job, const CLI::App& 
   const std::optional<std::size_t> given = a.branch_given ? std::optional(model.branch(a.branch)) : std::nullopt;
   ModelDarkAnsatz ansatz = make_model_dark_ansatz(model, kernels, defocusing_edge(model, given), a.omega_b);
   check_dark_sites(ansatz, a.sites);
+  sim::dark::ContactBonds contacts = model_contact_bonds(a.model.file, model, ansatz.mean_flow);
   const double period = 2 * std::numbers::pi / a.omega_b;
   double periods = 0;
   if (job == DarkJob::branch) {
@@ -552,7 +578,7 @@ ModelDarkJob validate_model_job(const DarkArgs& a, DarkJob job, const CLI::App& 
       throw InputError("--out '" + a.out + "' exists and is not a directory");
     sim::check_output_space(e, a.out, "out", "choose another --out");
   }
-  return {std::move(model), std::move(code), &kernels, std::move(ansatz)};
+  return {std::move(model), std::move(code), &kernels, std::move(ansatz), std::move(contacts)};
 }
 
 // Names of the lattice variables (CSV columns): strains r, w_f of translation-invariant models,
@@ -564,19 +590,33 @@ std::vector<std::string> model_variables(const ModelDarkJob& m) {
   return names;
 }
 
+// What each lattice variable is: r[n] = u0[n] - u0[n-1], w_f[n] = u_f[n] - u0[n] (strain form) or u_f[n].
+std::vector<std::string> model_variable_meanings(const ModelDarkJob& m) {
+  std::vector<std::string> meanings;
+  for (int f = 0; f < m.kernels->fields; ++f)
+    meanings.push_back(m.ansatz.mean_flow ? (f == 0 ? "r[n] = u0[n] - u0[n-1]" : fmt::format("w{0}[n] = u{0}[n] - u0[n]", f))
+                                          : fmt::format("u{}[n]", f));
+  return meanings;
+}
+
+// The model's one-sided contact bonds by name (an empty list for a smooth model).
+json contact_names(const sim::dark::ContactBonds& contacts) {
+  json names = json::array();
+  for (const auto& bond : contacts) names.push_back(bond.name);
+  return names;
+}
+
 json model_base_json(const DarkArgs& a, const ModelDarkJob& m, const NewtonResult& newton) {
   json hist = json::array();
   for (const auto& r : newton.history) hist.push_back(r.residual);
-  json variables = json::array();
-  for (int f = 0; f < m.kernels->fields; ++f)
-    variables.push_back(m.ansatz.mean_flow ? (f == 0 ? "r[n] = u0[n] - u0[n-1]" : fmt::format("w{0}[n] = u{0}[n] - u0[n]", f))
-                                           : fmt::format("u{}[n]", f));
+  json variables = model_variable_meanings(m);
   return {{"model", model_json(m.model)}, {"branch", m.model.definition().branch_names.at(m.ansatz.branch)},
           {"theta", m.ansatz.theta}, {"center", a.center}, {"sites", a.sites}, {"mode", a.mode},
           {"omega_b", a.omega_b}, {"omega_edge", m.ansatz.omega}, {"curvature", m.ansatz.curvature},
           {"h_tilde", m.ansatz.h_tilde}, {"lambda", m.ansatz.mean_flow ? json(m.ansatz.lambda) : json(nullptr)},
           {"lattice_form", m.ansatz.mean_flow ? "strain" : "displacement"}, {"variables", variables},
-          {"contact_changes_located", false},
+          {"one_sided_contacts", contact_names(m.contacts)},
+          {"contact_changes_located", !m.contacts.empty()},
           {"newton_converged", newton.converged}, {"newton_iterations", newton.history.empty() ? 0 : newton.history.size() - 1},
           {"newton_residuals", hist}, {"failure", nullptr}, {"provenance", provenance_json()}};
 }
@@ -605,10 +645,12 @@ NewtonResult model_newton(const DarkArgs& a, const ModelDarkJob& m, const ModelD
 void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
   const ModelDarkJob m = validate_model_job(a, job, cmd);
   const ModelDarkShooting shooting(*m.kernels, sim::lattice_parameters(m.model), a.sites, m.ansatz.mean_flow,
-                                   parse_shooting_mode(a.mode));
+                                   parse_shooting_mode(a.mode), {}, m.contacts);
   const NewtonResult newton = model_newton(a, m, shooting);
   json j = model_base_json(a, m, newton);
   const Eigen::VectorXd& z0 = newton.q;
+  j["contact_changes_per_period"] =
+      m.contacts.empty() ? json(nullptr) : json(shooting.contact_changes_per_period(z0, a.omega_b));
   const std::vector<std::string> variables = model_variables(m);
   const int N = a.sites;
   if (job == DarkJob::branch) {
@@ -640,24 +682,13 @@ void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
     j["depth_end"] = e.periods.back().depth;
     j["samples_per_period"] = a.samples;
     if (!a.out.empty()) {
-      const sim::OutputLock lock(a.out);
-      std::ostringstream ev;
-      ev << "t,E_b,C_x,K_x,position,depth\n";
-      for (const auto& r : e.periods)
-        ev << fmt::format("{:.12g},{:.6e},{:.9g},{:.9g},{:.6f},{:.6g}\n", r.t, r.E_b, r.C_x, r.K_x, r.position, r.depth);
-      sim::write_file_atomic(a.out, "evolution.csv", ev.str());
-      std::ostringstream sn;
-      sn << "n";
-      for (const auto& v : variables) sn << "," << v << "_0," << v << "_T";
-      sn << "\n";
-      for (int i = 0; i < N; ++i) {
-        sn << i - (N - 1) / 2;
-        for (std::size_t f = 0; f < variables.size(); ++f)
-          sn << fmt::format(",{:.17g},{:.17g}", e.snapshots.front()(Eigen::Index(f) * N + i), e.snapshots.back()(Eigen::Index(f) * N + i));
-        sn << "\n";
-      }
-      sim::write_file_atomic(a.out, "snapshots.csv", sn.str());
-      sim::write_file_atomic(a.out, "summary.json", j.dump(2) + "\n");
+      std::vector<EvolutionVariable> fields;
+      const std::vector<std::string> meanings = model_variable_meanings(m);
+      for (std::size_t v = 0; v < variables.size(); ++v) fields.push_back({variables[v], meanings[v]});
+      write_evolution(a.out, e, fields,
+                      fmt::format("{} {} {}-centred dark breather, ω_b = {:g}", m.model.name(),
+                                  m.model.definition().branch_names.at(m.ansatz.branch), a.center, a.omega_b),
+                      j);
     }
     std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
     if (StopSignals::received() != 0)

@@ -29,12 +29,40 @@ struct ContactIntegrator::Stepper {
   Rkf78 rk;
 };
 
+namespace {
+// The strain lattice as a ContactSystem: contact functions x_n - delta0 (eq:Vr), stiffness V''(x_n).
+class StrainContactSystem final : public ContactSystem {
+ public:
+  explicit StrainContactSystem(const StrainLatticeOrbit& orbit) : orbit_(orbit) {}
+  std::size_t dimension() const override { return orbit_.orbit_size(); }
+  int stiffness_count() const override { return orbit_.sites(); }
+  void rhs(const double* s, double* ds, double* stiffness) const override { orbit_.rhs(s, ds, stiffness); }
+  int contact_count() const override { return orbit_.sites(); }
+  void contacts(const double* s, double* value, double* rate) const override {
+    const int N = orbit_.sites();
+    const double d0 = orbit_.params().delta0;
+    for (int n = 0; n < N; ++n) {
+      value[n] = s[n] - d0;
+      rate[n] = s[2 * N + n];
+    }
+  }
+
+ private:
+  const StrainLatticeOrbit& orbit_;
+};
+}  // namespace
+
 ContactIntegrator::~ContactIntegrator() = default;
 
-ContactIntegrator::ContactIntegrator(const StrainLatticeOrbit& orbit,
-                                     ContactIntegrationOptions options)
-    : stepper_(std::make_unique<Stepper>()), orbit_(orbit), options_(options), h_(options.initial_step) {
-  trial_stiffness_.resize(static_cast<std::size_t>(OrbitRecord::stages * orbit.sites()));
+ContactIntegrator::ContactIntegrator(const StrainLatticeOrbit& orbit, ContactIntegrationOptions options)
+    : stepper_(std::make_unique<Stepper>()), owned_(std::make_unique<StrainContactSystem>(orbit)),
+      system_(*owned_), options_(options), h_(options.initial_step) {
+  trial_stiffness_.resize(static_cast<std::size_t>(OrbitRecord::stages * system_.stiffness_count()));
+}
+
+ContactIntegrator::ContactIntegrator(const ContactSystem& system, ContactIntegrationOptions options)
+    : stepper_(std::make_unique<Stepper>()), system_(system), options_(options), h_(options.initial_step) {
+  trial_stiffness_.resize(static_cast<std::size_t>(OrbitRecord::stages * system_.stiffness_count()));
 }
 
 double ContactIntegrator::error_norm(const State& in, const State& out) const {
@@ -47,16 +75,15 @@ double ContactIntegrator::error_norm(const State& in, const State& out) const {
   return e;
 }
 
-double ContactIntegrator::first_contact(const State& in, const State& out, double h) const {
-  const int N = orbit_.sites();
-  const double d0 = orbit_.params().delta0;
+double ContactIntegrator::first_contact(double h) const {
+  const int N = system_.contact_count();
   const double ignore = 1e-11;  // a crossing at the very start: we are sitting on that kink
-  // First time in (0, h] where the cubic Hermite interpolant of x_n - delta0 changes sign,
+  // First time in (0, h] where the cubic Hermite interpolant of contact function n changes sign,
   // or -1. The cubic is split at its interior extrema so that a grazing contact (x_n crosses
   // delta0 and comes back within one step, equal signs at both ends) is found too.
   auto crossing = [&](int n) -> double {
-    const double x0 = in[n] - d0, x1 = out[n] - d0;
-    const double v0 = in[2 * N + n], v1 = out[2 * N + n];
+    const double x0 = contact_in_[std::size_t(n)], x1 = contact_out_[std::size_t(n)];
+    const double v0 = rate_in_[std::size_t(n)], v1 = rate_out_[std::size_t(n)];
     auto f = [&](double s) { return hermite(x0, v0, x1, v1, h, s); };
     auto changes = [](double a, double b) { return (a < 0.0 && b >= 0.0) || (a > 0.0 && b <= 0.0); };
     // Breakpoints: 0, the roots of p'(s) = A s^2 + B s + C in (0, 1) in increasing order, 1.
@@ -116,26 +143,25 @@ double ContactIntegrator::first_contact(const State& in, const State& out, doubl
   return cut < h ? cut : h;
 }
 
-double ContactIntegrator::time_to_contact(const State& out) const {
-  const int N = orbit_.sites();
-  const double d0 = orbit_.params().delta0;
+double ContactIntegrator::time_to_contact() const {
+  const int N = system_.contact_count();
   double tau = std::numeric_limits<double>::infinity();
   for (int n = 0; n < N; ++n) {
-    const double gap = d0 - out[n], v = out[2 * N + n];
-    if (gap * v > 0.0) tau = std::min(tau, gap / v);  // moving towards delta0
+    const double gap = -contact_out_[std::size_t(n)], v = rate_out_[std::size_t(n)];
+    if (gap * v > 0.0) tau = std::min(tau, gap / v);  // moving towards the contact change
   }
   return tau;
 }
 
 void ContactIntegrator::trial(const State& in, double t, double h) {
-  const int N = orbit_.sites();
+  const std::size_t N = static_cast<std::size_t>(system_.stiffness_count());
   calls_ = 0;
   auto sys = [this, N](const State& s, State& ds, double) {
-    double* g = recording_ ? trial_stiffness_.data() +
-                                 static_cast<std::size_t>(std::min(calls_, OrbitRecord::stages - 1)) * N
-                           : nullptr;
+    double* g = recording_ && N > 0
+                    ? trial_stiffness_.data() + static_cast<std::size_t>(std::min(calls_, OrbitRecord::stages - 1)) * N
+                    : nullptr;
     ++calls_;
-    orbit_.rhs(s.data(), ds.data(), g);
+    system_.rhs(s.data(), ds.data(), g);
   };
   stepper_->rk.do_step(sys, in, t, out_, h, err_);
   if (calls_ != OrbitRecord::stages)
@@ -145,9 +171,15 @@ void ContactIntegrator::trial(const State& in, double t, double h) {
 void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecord* record) {
   if (!(t1 > t0)) return;
   recording_ = record != nullptr;
-  if (record) record->sites = orbit_.sites();
+  if (record) record->sites = system_.stiffness_count();
   out_.resize(state.size());
   err_.resize(state.size());
+  const std::size_t contacts = static_cast<std::size_t>(system_.contact_count());
+  contact_in_.resize(contacts);
+  rate_in_.resize(contacts);
+  contact_out_.resize(contacts);
+  rate_out_.resize(contacts);
+  if (options_.locate_contacts && contacts > 0) system_.contacts(state.data(), contact_in_.data(), rate_in_.data());
   double t = t0;
   double h = std::min(h_, options_.max_step);
   // Grading cap after a contact change and a located contact change ahead (absolute time):
@@ -187,10 +219,11 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
                                  std::to_string(options_.min_step) + " at t = " + std::to_string(t));
       continue;
     }
-    if (options_.locate_contacts) {
+    if (options_.locate_contacts && contacts > 0) {
+      system_.contacts(out_.data(), contact_out_.data(), rate_out_.data());
       // Landing steps end just past the located group; an earlier contact change of another
       // site (or a grazing one) inside them is approached in turn.
-      const double cut = first_contact(state, out_, step);
+      const double cut = first_contact(step);
       const double slack = landing ? options_.group_window : 0.0;
       if (cut < step - slack) {  // a contact change inside: approach it with graded steps
         ++stats_.rejected;
@@ -203,7 +236,7 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
       // (1.5 contact_step), its end must stay step / (2 (grading - 1)) away from the next contact
       // change (linear extrapolation of x_n; graded steps keep twice that).
       if (step > 1.5 * contact_step) {
-        const double tau = time_to_contact(out_);
+        const double tau = time_to_contact();
         const double estimate = t + step + tau;
         if (tau < 0.5 * step / (options_.grading - 1.0) && (!(target > t) || estimate < target)) {
           ++stats_.rejected;
@@ -215,6 +248,14 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
     const double next = step * std::min(4.0, 0.9 * std::pow(std::max(e, 1e-12), -1.0 / 8.0));
     state.swap(out_);
     ++stats_.steps;
+    if (options_.locate_contacts && contacts > 0) {
+      for (std::size_t n = 0; n < contacts; ++n) {
+        const double a = contact_in_[n], b = contact_out_[n];
+        if ((a < 0.0 && b >= 0.0) || (a > 0.0 && b <= 0.0)) ++stats_.contact_changes;
+      }
+      contact_in_.swap(contact_out_);
+      rate_in_.swap(rate_out_);
+    }
     if (record) {
       record->t.push_back(t);
       record->dt.push_back(step);

@@ -26,16 +26,44 @@ struct ModelDarkOrbit::Steppers {
   odeint::runge_kutta_fehlberg78<OrbitState> orbit;
 };
 
+// The orbit's first-order system with the overlaps of its one-sided contacts as contact functions.
+class ModelDarkOrbit::Contacts final : public ContactSystem {
+ public:
+  explicit Contacts(const ModelDarkOrbit& orbit) : orbit_(orbit) {}
+  std::size_t dimension() const override { return 2 * std::size_t(orbit_.positions()); }
+  int stiffness_count() const override { return 0; }
+  void rhs(const double* s, double* ds, double*) const override { orbit_.rhs(s, ds); }
+  int contact_count() const override { return int(orbit_.bonds_.size()) * orbit_.sites(); }
+  void contacts(const double* s, double* value, double* rate) const override {
+    contact_overlaps(orbit_.bonds_, orbit_.sites(), s, s + orbit_.positions(), value, rate);
+  }
+
+ private:
+  const ModelDarkOrbit& orbit_;
+};
+
 ModelDarkOrbit::ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites,
-                               bool mean_flow, ContactIntegrationOptions options)
+                               bool mean_flow, ContactIntegrationOptions options, ContactBonds bonds)
     : lattice_(kernels, std::move(parameters), std::size_t(std::max(sites, 2)), true,
                mean_flow ? LatticeForm::strain : LatticeForm::displacement),
       sites_(sites), positions_(Eigen::Index(lattice_.positions())), options_(options),
-      steppers_(std::make_unique<Steppers>()) {
+      steppers_(std::make_unique<Steppers>()), bonds_(std::move(bonds)) {
   if (sites < 9) throw InvalidParameter("sites", "must be >= 9, got " + std::to_string(sites));
+  for (const auto& bond : bonds_)
+    for (const auto& term : bond.terms)
+      if (term.variable < 0 || term.variable >= kernels.fields)
+        throw std::invalid_argument("ModelDarkOrbit: contact bond " + bond.name + " names a variable out of range");
+  if (!bonds_.empty()) {
+    contacts_ = std::make_unique<Contacts>(*this);
+    contact_integrator_ = std::make_unique<ContactIntegrator>(*contacts_, options_);
+  }
 }
 
 ModelDarkOrbit::~ModelDarkOrbit() = default;
+
+long ModelDarkOrbit::contact_changes() const {
+  return contact_integrator_ ? contact_integrator_->stats().contact_changes : 0;
+}
 
 void ModelDarkOrbit::rhs(const double* s, double* ds) const {
   const std::size_t P = std::size_t(positions_);
@@ -44,6 +72,13 @@ void ModelDarkOrbit::rhs(const double* s, double* ds) const {
 }
 
 void ModelDarkOrbit::integrate(std::vector<double>& state, double t0, double t1) const {
+  if (contact_integrator_) {  // contact changes located; the accepted step times kept for the tangents
+    record_.clear();
+    contact_integrator_->integrate(state, t0, t1, &record_);
+    times_.assign(record_.t.begin(), record_.t.end());
+    steps_.assign(record_.dt.begin(), record_.dt.end());
+    return;
+  }
   auto system = [this](const OrbitState& s, OrbitState& ds, double) { rhs(s.data(), ds.data()); };
   auto stepper = odeint::make_controlled(options_.abs_tol, options_.rel_tol, options_.max_step, steppers_->orbit);
   const std::atomic<bool>* stop = options_.stop;
@@ -53,6 +88,8 @@ void ModelDarkOrbit::integrate(std::vector<double>& state, double t0, double t1)
                                if (stop && stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
                                times_.push_back(t);
                              });
+  steps_.clear();
+  for (std::size_t k = 0; k + 1 < times_.size(); ++k) steps_.push_back(times_[k + 1] - times_[k]);
 }
 
 // Orbit with error control first (its accepted step times), then orbit and tangents together on
@@ -75,11 +112,11 @@ void ModelDarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi,
       lattice_.jacobian_action(s.data(), column, out + P);
     }
   };
-  const std::vector<double> times = times_;
+  const std::vector<double> times = times_, steps = steps_;
   odeint::runge_kutta_fehlberg78<OrbitState> stepper;
-  for (std::size_t k = 0; k + 1 < times.size(); ++k) {
+  for (std::size_t k = 0; k < steps.size(); ++k) {
     if (options_.stop && options_.stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
-    stepper.do_step(system, extended_, times[k], times[k + 1] - times[k]);
+    stepper.do_step(system, extended_, times[k], steps[k]);
   }
   std::copy(extended_.begin(), extended_.begin() + Eigen::Index(n), state.begin());
   for (std::size_t j = 0; j < columns; ++j)
@@ -87,8 +124,18 @@ void ModelDarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi,
 }
 
 ModelDarkShooting::ModelDarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters,
-                                     int sites, bool mean_flow, ShootingMode mode, ContactIntegrationOptions options)
-    : orbit_(kernels, std::move(parameters), sites, mean_flow, options), mean_flow_(mean_flow), mode_(mode) {}
+                                     int sites, bool mean_flow, ShootingMode mode, ContactIntegrationOptions options,
+                                     ContactBonds bonds)
+    : orbit_(kernels, std::move(parameters), sites, mean_flow, options, std::move(bonds)), mean_flow_(mean_flow),
+      mode_(mode) {}
+
+long ModelDarkShooting::contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const {
+  std::vector<double> state(2 * std::size_t(orbit_.positions()), 0.0);
+  std::copy(z0.data(), z0.data() + z0.size(), state.begin());
+  const long before = orbit_.contact_changes();
+  orbit_.integrate(state, 0.0, 2.0 * std::numbers::pi / omega_b);
+  return orbit_.contact_changes() - before;
+}
 
 OrbitAdvance ModelDarkShooting::advance() const {
   return [this](std::vector<double>& s, double t0, double t1) { orbit_.integrate(s, t0, t1); };

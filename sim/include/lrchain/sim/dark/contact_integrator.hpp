@@ -1,7 +1,9 @@
 #pragma once
-// Time integration of the strain lattice orbit (strain_variational.hpp) with Boost.Odeint's
+// Time integration of a lattice orbit with one-sided contacts (the strain lattice of
+// strain_variational.hpp, or any model lattice through ContactSystem) with Boost.Odeint's
 // Runge-Kutta-Fehlberg 7(8) error stepper, error control on the orbit, and steps that end exactly
-// at contact changes x_n(t) = delta0, where the force (delta0 - x)_+^(3/2) of eq:Vr is not smooth.
+// at contact changes (x_n(t) = delta0 for the strain lattice), where a force such as the
+// (delta0 - x)_+^(3/2) of eq:Vr is not smooth.
 //
 // Why not odeint's integrate_adaptive: a step that straddles or merely touches a contact change
 // sees a |t - t*|^(3/2) singularity; the embedded error estimate misjudges it and E_b(T_b) stalls
@@ -9,7 +11,8 @@
 // the step is cut there, and steps next to a contact change are graded geometrically down to
 // `contact_step`. The Runge-Kutta stages are Odeint's.
 //
-// Optionally records, for every accepted step, (t, dt) and V''(x) at each of the 13 stages, so
+// Optionally records, for every accepted step, (t, dt) and V''(x) at each of the 13 stages (the
+// strain lattice; a ContactSystem records what its stiffness_count() says, possibly nothing), so
 // that the variational equations can be integrated afterwards with exactly the same steps
 // (tangent_propagation.hpp): the Jacobian is then the exact derivative of the discrete flow.
 #include <atomic>
@@ -38,7 +41,24 @@ struct ContactIntegrationOptions {
 struct ContactIntegrationStats {
   long steps = 0;          // accepted steps
   long rejected = 0;       // trial steps rejected (error test or a contact change inside)
-  long contact_cuts = 0;   // steps ended at a contact change
+  long contact_cuts = 0;   // steps ended at a contact change (a group of them)
+  long contact_changes = 0;  // sign changes of contact functions over accepted steps
+};
+
+// A first-order system whose right-hand side is smooth except where one of its contact functions
+// changes sign (a one-sided contact opening or closing).
+class ContactSystem {
+ public:
+  virtual ~ContactSystem() = default;
+  virtual std::size_t dimension() const = 0;
+  // Entries written per stage into `stiffness` by rhs() (0: nothing recorded).
+  virtual int stiffness_count() const = 0;
+  // ds = d/dt s; if stiffness != nullptr it receives stiffness_count() values.
+  virtual void rhs(const double* s, double* ds, double* stiffness) const = 0;
+  virtual int contact_count() const = 0;
+  // The contact functions at s and their time derivatives along the flow (linear in the positions,
+  // so the rates follow from the velocities).
+  virtual void contacts(const double* s, double* value, double* rate) const = 0;
 };
 
 // Accepted steps of one integration and the stage stiffnesses V''(x) (13 stages x N per step).
@@ -58,6 +78,8 @@ struct OrbitRecord {
 class ContactIntegrator {
  public:
   ContactIntegrator(const StrainLatticeOrbit& orbit, ContactIntegrationOptions options = {});
+  // Any system (kept by reference: it must outlive the integrator).
+  ContactIntegrator(const ContactSystem& system, ContactIntegrationOptions options = {});
   ~ContactIntegrator();
   ContactIntegrator(const ContactIntegrator&) = delete;
   ContactIntegrator& operator=(const ContactIntegrator&) = delete;
@@ -68,18 +90,21 @@ class ContactIntegrator {
  private:
   double error_norm(const std::vector<double>& in, const std::vector<double>& out) const;
   // Earliest contact change in (0, h] (end of its group), or h if none.
-  double first_contact(const std::vector<double>& in, const std::vector<double>& out, double h) const;
+  double first_contact(double h) const;
   void trial(const std::vector<double>& in, double t, double h);
   // Smallest time until some x_n reaches delta0 by linear extrapolation from the end state.
-  double time_to_contact(const std::vector<double>& out) const;
+  double time_to_contact() const;
 
   struct Stepper;  // Odeint RKF78 stepper (stage storage sized for this orbit)
   std::unique_ptr<Stepper> stepper_;
-  const StrainLatticeOrbit& orbit_;
+  std::unique_ptr<ContactSystem> owned_;  // the strain lattice's adapter
+  const ContactSystem& system_;
   ContactIntegrationOptions options_;
   ContactIntegrationStats stats_;
   double h_;
   std::vector<double> out_, err_, trial_stiffness_;
+  // Contact functions and rates at the start (in) and end (out) of the trial step.
+  std::vector<double> contact_in_, rate_in_, contact_out_, rate_out_;
   int calls_ = 0;
   double last_t_ = -1e300, cap_ = 0, target_ = -1, contact_step_ = 0;
   bool recording_ = false;

@@ -10,12 +10,15 @@
 // from the variational equations of the generated Jacobian action, integrated on the orbit's own
 // Runge-Kutta-Fehlberg 7(8) steps (the exact derivative of the discrete flow). Floquet multipliers
 // from the full-period monodromy, so that the (lambda, 1/lambda) pairing is a check, not built in.
-// Contact changes of one-sided contact laws are not located: steps cross them adaptively.
+// Models with one-sided contacts (ContactBonds, contact_bonds.hpp) are integrated by ContactIntegrator:
+// every contact change (an overlap s_n changing sign) is located and a step ends there, and the
+// tangents are integrated on those same steps. Smooth models use Odeint's adaptive RKF78 stepping.
 #include <Eigen/Dense>
 #include <atomic>
 #include <memory>
 #include <vector>
 
+#include "lrchain/sim/dark/contact_bonds.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
 #include "lrchain/sim/dark/measures.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
@@ -27,13 +30,19 @@ namespace lrchain::sim::dark {
 class ModelDarkOrbit {
  public:
   // Throws InvalidParameter("sites") unless sites >= 9 (check_dark_sites checks the parity).
+  // `bonds`: the model's one-sided contacts in the lattice form's variables (empty: a smooth model).
   ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites, bool mean_flow,
-                 ContactIntegrationOptions options = {});
+                 ContactIntegrationOptions options = {}, ContactBonds bonds = {});
   ~ModelDarkOrbit();
+  ModelDarkOrbit(const ModelDarkOrbit&) = delete;  // its contact integrator refers to it
+  ModelDarkOrbit& operator=(const ModelDarkOrbit&) = delete;
   int sites() const { return sites_; }
   Eigen::Index positions() const { return positions_; }  // fields x sites
   const ModelLattice& lattice() const { return lattice_; }
   const ContactIntegrationOptions& options() const { return options_; }
+  const ContactBonds& contact_bonds() const { return bonds_; }
+  // Contact changes located by the integrations since the orbit was made (0 for smooth models).
+  long contact_changes() const;
 
   // Integrates [q qdot] (2 positions() entries) from t0 to t1 with error control (RKF78).
   void integrate(std::vector<double>& state, double t0, double t1) const;
@@ -44,18 +53,23 @@ class ModelDarkOrbit {
 
  private:
   struct Steppers;
+  class Contacts;  // the lattice as a ContactSystem
   ModelLattice lattice_;
   int sites_;
   Eigen::Index positions_;
   ContactIntegrationOptions options_;
   std::unique_ptr<Steppers> steppers_;
-  mutable std::vector<double> times_, extended_;
+  ContactBonds bonds_;
+  std::unique_ptr<Contacts> contacts_;
+  std::unique_ptr<ContactIntegrator> contact_integrator_;  // with bonds only
+  mutable OrbitRecord record_;
+  mutable std::vector<double> times_, steps_, extended_;  // accepted step starts and sizes
 };
 
 class ModelDarkShooting : public DarkShootingProblem {
  public:
   ModelDarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites, bool mean_flow,
-                    ShootingMode mode, ContactIntegrationOptions options = {});
+                    ShootingMode mode, ContactIntegrationOptions options = {}, ContactBonds bonds = {});
   int sites() const { return orbit_.sites(); }
   int unknowns() const override { return static_cast<int>(orbit_.positions()); }
   Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const override { return q; }
@@ -72,6 +86,8 @@ class ModelDarkShooting : public DarkShootingProblem {
   Eigen::MatrixXd monodromy(const Eigen::VectorXd& z0, double omega_b) const;
   // Advances an orbit state (for measures and evolution).
   OrbitAdvance advance() const;
+  // Contact changes over one period T_b of the orbit from Z(0) = z0 (0 for smooth models).
+  long contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const;
 
  private:
   ModelDarkOrbit orbit_;
