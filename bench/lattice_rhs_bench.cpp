@@ -66,7 +66,7 @@ static void BM_BondForces(benchmark::State& st) {
   State u = random_state(n);
   std::vector<double> f(n);
   for (auto _ : st) {
-    bond_forces_from_displacements(law, u.data(), f.data(), n - 1);
+    bond_forces_from_displacements(law, std::span(u).first(n), std::span(f).first(n - 1));
     benchmark::DoNotOptimize(f.data());
     benchmark::ClobberMemory();
   }

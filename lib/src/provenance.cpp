@@ -48,7 +48,7 @@ std::string utc_now() {
 }  // namespace
 
 Provenance current_provenance() {
-  return {build_info(), static_cast<int>(std::thread::hardware_concurrency()), utc_now(), own_command_line()};
+  return {build_info(), static_cast<Index>(std::thread::hardware_concurrency()), utc_now(), own_command_line()};
 }
 
 std::string version_line() {

@@ -110,13 +110,13 @@ namespace {
 
 // The workspace's lattice for this run: kept when the parameters, the bead count and the ends are
 // those of the previous run (prescribed ends follow workspace.ansatz), else built anew.
-const DisplacementLattice& workspace_lattice(const BrightRunConfig& c, BrightWorkspace& w, std::size_t beads, long N) {
+const DisplacementLattice& workspace_lattice(const BrightRunConfig& c, BrightWorkspace& w, std::size_t beads, Index N) {
   const Params& p = c.params;
   const Params& q = w.chain_params;
-  if (w.chain && w.chain_beads == beads && w.chain_ansatz_ends == c.ansatz_ends && p.alpha == q.alpha &&
+  if (w.chain && w.chain_beads == Index(beads) && w.chain_ansatz_ends == c.ansatz_ends && p.alpha == q.alpha &&
       p.delta0 == q.delta0 && p.kappa == q.kappa && p.rho == q.rho)
     return *w.chain;
-  const long first = -N - 1;
+  const Index first = -N - 1;
   DisplacementBoundary boundary;
   if (c.ansatz_ends) {
     boundary.left.kind = boundary.right.kind = EndKind::prescribed;
@@ -134,7 +134,7 @@ const DisplacementLattice& workspace_lattice(const BrightRunConfig& c, BrightWor
   w.chain.reset();
   w.chain.emplace(c.params, beads, boundary);
   w.chain_params = c.params;
-  w.chain_beads = beads;
+  w.chain_beads = Index(beads);
   w.chain_ansatz_ends = c.ansatz_ends;
   return *w.chain;
 }
@@ -161,9 +161,9 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
 BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const RunControl& control) {
   validate(c);
   const BrightBreatherAnsatz ansatz(c.params, c.branch, c.theta, c.detuning, c.n0);
-  const long N = c.N;
+  const Index N = c.N;
   const std::size_t beads = std::size_t(2 * N + 2);  // labels -N-1 .. N
-  const long first = -N - 1;
+  const Index first = -N - 1;
   const std::size_t strains = beads - 1;             // labels -N .. N
 
   w.ansatz = &ansatz;
@@ -266,7 +266,7 @@ BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const 
       x[i] = u[i + 1] - u[i];
       y[i] = v[i + 1] - v[i];
     }
-    ansatz.strains(-N, strains, t, xa.data(), ya.data());
+    ansatz.strains(-N, t, xa, ya);
     double ex = 0, ey = 0;
     if (first_sample) {
       for (std::size_t i = 0; i < strains; ++i) {
@@ -281,8 +281,8 @@ BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const 
     ex /= S.x0_inf;
     ey /= S.y0_inf;
     const double energy = chain.total_energy(st, t);
-    energy_density(chain, st, t, e.data(), scratch.data());
-    const double X = energy_centre(e.data(), beads, c.centre_window) + double(first);
+    energy_density(chain, st, t, e, scratch);
+    const double X = energy_centre(e, c.centre_window) + double(first);
     if (first_sample) S.energy0 = energy;
     first_sample = false;
     S.max_Ex = std::max(S.max_Ex, ex);
@@ -357,8 +357,7 @@ BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const 
     S.centre_end = centre_x.back();
   }
   // x, y hold the strains of the last observation.
-  S.trailing = track_trailing_structure(rec.fields[0], centre_t, centre_x, x.data(), y.data(), -N,
-                                        strains, c.trailing);
+  S.trailing = track_trailing_structure(rec.fields[0], centre_t, centre_x, x, y, -N, c.trailing);
   w.ansatz = nullptr;
   return S;
 }

@@ -82,28 +82,28 @@ void forces_displacement_general(const ContactLaw& law, const double* __restrict
 
 }  // namespace
 
-void bond_forces_from_strains(const ContactLaw& law, const double* r, double* f, std::size_t n) {
+void bond_forces_from_strains(const ContactLaw& law, std::span<const double> r, std::span<double> f) {
   if (law.three_halves)
-    forces_strain_three_halves(law.delta0, law.delta0_pow_alpha, r, f, n);
+    forces_strain_three_halves(law.delta0, law.delta0_pow_alpha, r.data(), f.data(), r.size());
   else
-    forces_strain_general(law, r, f, n);
+    forces_strain_general(law, r.data(), f.data(), r.size());
 }
 
-void bond_energies_from_strains(const ContactLaw& law, const double* r, double* V, std::size_t n) {
+void bond_energies_from_strains(const ContactLaw& law, std::span<const double> r, std::span<double> V) {
+  const std::size_t n = r.size();
   if (law.three_halves) {
-    if (V != r) std::copy(r, r + n, V);
-    energies_strain_three_halves(law.delta0, law.delta0_pow_alpha, law.delta0_pow_alpha1, V, n);
+    if (V.data() != r.data()) std::copy(r.begin(), r.end(), V.begin());
+    energies_strain_three_halves(law.delta0, law.delta0_pow_alpha, law.delta0_pow_alpha1, V.data(), n);
   } else {
     for (std::size_t i = 0; i < n; ++i) V[i] = bond_energy(law, r[i]);
   }
 }
 
-void bond_forces_from_displacements(const ContactLaw& law, const double* u, double* f,
-                                    std::size_t n) {
+void bond_forces_from_displacements(const ContactLaw& law, std::span<const double> u, std::span<double> f) {
   if (law.three_halves)
-    forces_displacement_three_halves(law.delta0, law.delta0_pow_alpha, u, f, n);
+    forces_displacement_three_halves(law.delta0, law.delta0_pow_alpha, u.data(), f.data(), f.size());
   else
-    forces_displacement_general(law, u, f, n);
+    forces_displacement_general(law, u.data(), f.data(), f.size());
 }
 
 }  // namespace lrchain::sim

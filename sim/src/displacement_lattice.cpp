@@ -26,14 +26,14 @@ void bead_accelerations(const double* __restrict f, const double* __restrict u,
 
 }  // namespace
 
-DisplacementLattice::DisplacementLattice(const Params& p, std::size_t sites,
-                                         DisplacementBoundary boundary)
-    : params_(p), law_(make_contact_law(p)), layout_{sites}, boundary_(std::move(boundary)) {
+DisplacementLattice::DisplacementLattice(const Params& p, Index sites, DisplacementBoundary boundary)
+    : params_(p), law_(make_contact_law(p)), layout_{static_cast<std::size_t>(std::max<Index>(sites, 0))},
+      boundary_(std::move(boundary)) {
   if (sites < 2) throw InvalidParameter("sites", "the chain needs at least 2 beads");
   for (const EndCondition* e : {&boundary_.left, &boundary_.right})
     if (!boundary_.periodic && e->kind == EndKind::prescribed && !e->motion)
       throw InvalidParameter("boundary", "a prescribed end needs a motion u(t)");
-  bond_force_.assign(sites + 1, 0.0);
+  bond_force_.assign(layout_.sites + 1, 0.0);
   block_force_.assign(block_ + 1, 0.0);
 }
 
@@ -74,7 +74,7 @@ void DisplacementLattice::acceleration(const double* q, double* a, double t) con
     const std::size_t b1 = std::min(n, b0 + block_);
     if (b0 > 0) f[0] = f[block_];  // bond b0, the last bond of the previous (full) block
     const std::size_t j0 = b0 + 1, j1 = std::min(b1, n - 1);  // new bonds j0..j1
-    if (j1 >= j0) bond_forces_from_displacements(law_, u + j0 - 1, f + 1, j1 - j0 + 1);
+    if (j1 >= j0) bond_forces_from_displacements(law_, {u + j0 - 1, j1 - j0 + 2}, {f + 1, j1 - j0 + 1});
     if (b1 == n) f[n - b0] = f_last;
     bead_accelerations(f, u + b0, v + b0, a + b0, a + n + b0, kappa, kappa_over_rho, b1 - b0);
   }
@@ -110,7 +110,7 @@ double DisplacementLattice::total_energy(const State& s, double t) const {
   }
   double* V = bond_force_.data();  // scratch: bond strains, then V(r_j) (eq:Vr)
   bond_strains(u, t, V);
-  bond_energies_from_strains(law_, V, V, n + 1);
+  bond_energies_from_strains(law_, {V, n + 1}, {V, n + 1});
   for (std::size_t j = 1; j < n; ++j) e += V[j];
   if (boundary_.periodic) {
     e += V[0];

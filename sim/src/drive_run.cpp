@@ -204,7 +204,7 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
       skip_first = false;
       return true;
     }
-    energy_density(chain, st, t, e.data(), scratch.data());
+    energy_density(chain, st, t, e, scratch);
     const double emax = *std::max_element(e.begin(), e.end());
     long front = 0;
     for (std::size_t i = beads; i-- > 0;)
@@ -224,7 +224,7 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
     }
     for (double ts : snap_times) {
       if (std::abs(ts - t) > 1e-9 * c.t_end) continue;
-      rec.snapshots.push_back(displacement_snapshot(L, st, e.data(), t, fmt::format("t{:.1f}", t), 1));
+      rec.snapshots.push_back(displacement_snapshot(L, st, e, t, fmt::format("t{:.1f}", t), 1));
       break;
     }
     if (control.on_sample)

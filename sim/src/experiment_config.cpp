@@ -21,7 +21,7 @@ void read_bright(const config::CheckedTable& t, BrightRunConfig& c) {
   t.read("spacetime_every", c.spacetime_every);
   t.read("error_window_end", c.error_window_end);
   std::int64_t m = 0;
-  if (t.read("centre_window", m)) c.centre_window = std::size_t(m);
+  if (t.read("centre_window", m)) c.centre_window = Index(m);
   t.read("ansatz_ends", c.ansatz_ends);
   t.read("snapshot_periods", c.snapshot_periods);
   t.read("trailing_fit_start", c.trailing.fit_start);

@@ -182,7 +182,7 @@ ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_ker
     if (chain.has_energy()) {
       chain.energy_density(x.data(), x.data() + size, e.data());
       for (double v : e) energy += v;
-      X = energy_centre(e.data(), sites, 100) + double(first);
+      X = energy_centre(e, 100) + double(first);
       if (first_sample) r.energy0 = energy;
       r.max_energy_drift = std::max(r.max_energy_drift, std::abs(energy - r.energy0) / std::abs(r.energy0));
       centre_t.push_back(t);

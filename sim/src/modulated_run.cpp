@@ -210,7 +210,7 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
       skip_first = false;
       return true;
     }
-    energy_density(chain, st, t, e.data(), scratch.data());
+    energy_density(chain, st, t, e, scratch);
     running_mean(e, c.dark_window, m);
     const auto [mn, mx] = std::minmax_element(m.begin(), m.end());
     double mean = 0;
@@ -240,7 +240,7 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
     }
     for (double ts : snap_times) {
       if (!near(ts, t)) continue;
-      rec.snapshots.push_back(displacement_snapshot(L, st, e.data(), t, fmt::format("t{:.0f}", t), 0));
+      rec.snapshots.push_back(displacement_snapshot(L, st, e, t, fmt::format("t{:.0f}", t), 0));
       break;
     }
     if (control.on_sample)

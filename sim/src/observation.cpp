@@ -16,8 +16,8 @@ std::vector<double> merge_observation_times(std::vector<double> times,
   return times;
 }
 
-Snapshot displacement_snapshot(const StateLayout& L, const State& s, const double* e, double t,
-                               std::string tag, long first_label) {
+Snapshot displacement_snapshot(const StateLayout& L, const State& s, std::span<const double> e, double t,
+                               std::string tag, Index first_label) {
   Snapshot snap;
   snap.t = t;
   snap.tag = std::move(tag);
@@ -26,7 +26,7 @@ Snapshot displacement_snapshot(const StateLayout& L, const State& s, const doubl
                *vd = L.secondary_rate(s);
   for (std::size_t i = 0; i < L.sites; ++i)
     snap.data.insert(snap.data.end(),
-                     {double(first_label + long(i)), u[i], v[i], ud[i], vd[i], e[i]});
+                     {double(first_label + Index(i)), u[i], v[i], ud[i], vd[i], e[i]});
   return snap;
 }
 

@@ -55,7 +55,7 @@ IntegratorOptions fixed_step(double omega, double steps_per_period) {
 
 }  // namespace
 
-long ring_sites(const RingRunConfig& c) {
+Index ring_sites(const RingRunConfig& c) {
   if (c.sites > 0) return c.sites;
   for (long n = 8; n <= 4096; ++n)
     if (mode_number_on(c.theta, n) > 0) return n;
@@ -88,7 +88,7 @@ void validate(const RingRunConfig& c) {
 }
 
 double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
-                              const BlochMode& mode, long sites, long mode_number, double amplitude, double periods,
+                              const BlochMode& mode, Index sites, Index mode_number, double amplitude, double periods,
                               double steps_per_period) {
   const double theta = kTwoPi * double(mode_number) / double(sites);
   const ModelLattice ring(kernels, parameters, std::size_t(sites), true, LatticeForm::displacement);
@@ -118,7 +118,7 @@ double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std:
 }
 
 double measure_packet_speed(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
-                            const BlochMode& mode, double group_velocity, long sites, long mode_number,
+                            const BlochMode& mode, double group_velocity, Index sites, Index mode_number,
                             double amplitude, double width, double duration, double steps_per_period,
                             TimeSeries& track) {
   const double theta = kTwoPi * double(mode_number) / double(sites);

@@ -1,6 +1,7 @@
 // Strain form of the resonant chain (eq:Hertzd0S) with zero-strain or periodic ends.
 #include "lrchain/sim/strain_lattice.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "lrchain/errors.hpp"
@@ -25,10 +26,10 @@ void site_accelerations(const double* __restrict F, const double* __restrict x,
 
 }  // namespace
 
-StrainLattice::StrainLattice(const Params& p, std::size_t sites, StrainEnds ends)
-    : params_(p), law_(make_contact_law(p)), layout_{sites}, ends_(ends) {
+StrainLattice::StrainLattice(const Params& p, Index sites, StrainEnds ends)
+    : params_(p), law_(make_contact_law(p)), layout_{static_cast<std::size_t>(std::max<Index>(sites, 0))}, ends_(ends) {
   if (sites < 2) throw InvalidParameter("sites", "the strain lattice needs at least 2 sites");
-  force_.assign(sites + 2, 0.0);
+  force_.assign(layout_.sites + 2, 0.0);
 }
 
 // x_n'' and y_n'' of eq:Hertzd0S from F_n = V'(x_n) (F at the ghost sites: 0 or periodic copy).
@@ -37,7 +38,7 @@ void StrainLattice::acceleration(const double* q, double* a) const {
   const double* x = q;
   const double* y = q + n;
   double* F = force_.data();
-  bond_forces_from_strains(law_, x, F + 1, n);
+  bond_forces_from_strains(law_, {x, n}, {F + 1, n});
   if (ends_ == StrainEnds::periodic) {
     F[0] = F[n];
     F[n + 1] = F[1];

@@ -8,48 +8,13 @@
 #  3. every installed header compiles on its own (the public headers include no private one);
 #  4. the exported targets name no absolute include path, and the installed lrchain binary holds
 #     no path of the source or build tree.
+include(${CMAKE_CURRENT_LIST_DIR}/consumer_checks.cmake)
 file(REMOVE_RECURSE ${WORK_DIR})
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
-  endif()
-  set(out "${out}" PARENT_SCOPE)
-endfunction()
-function(expect_in text)
-  foreach(expected ${ARGN})
-    string(FIND "${text}" "${expected}" pos)
-    if(pos EQUAL -1)
-      message(FATAL_ERROR "output lacks '${expected}':\n${text}")
-    endif()
-  endforeach()
-endfunction()
 set(prefix ${WORK_DIR}/prefix)
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 
-# 1. coefficients only
-run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/build
-    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
-run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
-run(${WORK_DIR}/build/nls_coefficients)
-message(STATUS "consumer output:\n${out}")
-expect_in("${out}" "c = 0.2298504217" "focusing = yes" "focusing interval: (0.000000, 1.891589)")
-
-# 2. the simulator
-run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer_sim -B ${WORK_DIR}/build-sim
-    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
-run(${CMAKE_COMMAND} --build ${WORK_DIR}/build-sim)
-run(${WORK_DIR}/build-sim/breathers)
-message(STATUS "consumer_sim output:\n${out}")
-expect_in("${out}" "dark: converged = yes" "K_x = 0.473")
-string(REGEX MATCH "E_b = ([0-9.e+-]+)" _ "${out}")
-if(NOT CMAKE_MATCH_1 OR CMAKE_MATCH_1 GREATER 1e-10)
-  message(FATAL_ERROR "dark breather E_b = '${CMAKE_MATCH_1}', expected <= 1e-10")
-endif()
-string(REGEX MATCH "max E_x = ([0-9.]+) .* drift = ([0-9.e+-]+)" _ "${out}")
-if(NOT CMAKE_MATCH_1 OR CMAKE_MATCH_1 GREATER 0.05 OR CMAKE_MATCH_2 GREATER 1e-9)
-  message(FATAL_ERROR "bright run: max E_x = '${CMAKE_MATCH_1}' (expected < 0.05), drift = '${CMAKE_MATCH_2}' (expected < 1e-9)")
-endif()
+# 1 and 2: examples/consumer and examples/consumer_sim (consumer_checks.cmake)
+check_consumers(${SOURCE_DIR} ${prefix} ${WORK_DIR})
 
 # 3. every installed header on its own
 file(GLOB_RECURSE headers RELATIVE ${prefix}/include ${prefix}/include/lrchain/*)

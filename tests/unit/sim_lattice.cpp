@@ -82,7 +82,7 @@ TEST_CASE("energy density sums to the total energy, energy is conserved by rkf78
     DisplacementLattice chain(p, 60, b);
     State s = random_state(60, 0.02, 7);
     std::vector<double> e(60), scratch(61);
-    energy_density(chain, s, 0.0, e.data(), scratch.data());
+    energy_density(chain, s, 0.0, e, scratch);
     double sum = 0;
     for (double x : e) sum += x;
     CHECK(sum == doctest::Approx(chain.total_energy(s)).epsilon(1e-13));
@@ -145,9 +145,9 @@ TEST_CASE("small plane wave on a periodic chain oscillates at omega(theta) of eq
 TEST_CASE("energy centre (eq:ectr) of a symmetric bump is its centre, window m clips" * doctest::test_suite("fast")) {
   std::vector<double> e(301, 0.0);
   for (int i = 0; i < 301; ++i) e[i] = std::exp(-0.01 * (i - 120) * (i - 120));
-  CHECK(energy_centre(e.data(), e.size(), 100) == doctest::Approx(120.0).epsilon(1e-9));
+  CHECK(energy_centre(e, 100) == doctest::Approx(120.0).epsilon(1e-9));
   e[300] = 0.5;  // far away: outside the window m = 100 around the maximum, ignored
-  CHECK(energy_centre(e.data(), e.size(), 100) == doctest::Approx(120.0).epsilon(1e-9));
+  CHECK(energy_centre(e, 100) == doctest::Approx(120.0).epsilon(1e-9));
 }
 
 TEST_CASE("clamped and prescribed ends: prescribed motion drives the first bead" * doctest::test_suite("fast")) {
@@ -180,17 +180,17 @@ TEST_CASE("vectorised bond loops equal the scalar eq:Vr formulas (forces bit for
     for (std::size_t i = 0; i < r.size(); ++i) r[i] = -0.6 + 1.2 * double(i) / 1002.0;  // r > delta0: loss
     u[0] = 0.1;
     for (std::size_t i = 0; i < r.size(); ++i) u[i + 1] = u[i] + r[i];
-    bond_forces_from_strains(law, r.data(), f.data(), r.size());
-    bond_energies_from_strains(law, r.data(), V.data(), r.size());
+    bond_forces_from_strains(law, r, f);
+    bond_energies_from_strains(law, r, V);
     std::size_t force_mismatch = 0, disp_mismatch = 0;
     double energy_error = 0;
     for (std::size_t i = 0; i < r.size(); ++i) {
       force_mismatch += f[i] != bond_force(law, r[i]);
       energy_error = std::max(energy_error, std::abs(V[i] - bond_energy(law, r[i])));
     }
-    bond_forces_from_displacements(law, u.data(), f.data(), r.size());
+    bond_forces_from_displacements(law, u, f);
     for (std::size_t i = 0; i < r.size(); ++i) disp_mismatch += f[i] != bond_force(law, u[i + 1] - u[i]);
-    bond_energies_from_strains(law, r.data(), r.data(), r.size());  // in place
+    bond_energies_from_strains(law, r, r);  // in place
     std::size_t in_place_mismatch = 0;
     for (std::size_t i = 0; i < r.size(); ++i) in_place_mismatch += r[i] != V[i];
     INFO("alpha = ", alpha);

@@ -34,7 +34,7 @@ double optical_theta_of_omega(const Params& p, double omega) {
 // ||x(0)||_inf of the bright-breather ansatz (eq:focus_app) on a long lattice.
 double ansatz_strain_sup(const BrightBreatherAnsatz& a, long N) {
   std::vector<double> x(2 * N + 1), y(2 * N + 1);
-  a.strains(-N, x.size(), 0.0, x.data(), y.data());
+  a.strains(-N, 0.0, x, y);
   double m = 0;
   for (double v : x) m = std::max(m, std::abs(v));
   return m;

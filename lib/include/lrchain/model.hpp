@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lrchain/coefficients.hpp"
+#include "lrchain/index.hpp"
 
 namespace lrchain {
 
@@ -23,7 +24,7 @@ enum ModelOutput : int {
 };
 
 // Highest degree in omega^2 of det M a model may have (number of fields).
-inline constexpr int kMaxModelDegree = 6;
+inline constexpr Index kMaxModelDegree = 6;
 
 // The same three evaluators held by an object: a user model evaluated through GiNaC in double
 // precision when no C++ compiler is available (lrchain_model_compiler). Safe to call concurrently.
@@ -75,7 +76,7 @@ struct ModelDefinition {
   std::vector<std::string> intermediates;  // names of the named Taylor coefficients (q after the parameters)
   std::vector<std::string> branch_names;   // in increasing frequency
   bool mean_flow = true;                   // translation-invariant (lambda, h_tilde = h - lambda beta); else on-site
-  int degree = 1;                          // degree of det M in omega^2 (= number of fields)
+  Index degree = 1;                        // degree of det M in omega^2 (= number of fields)
   ModelEvaluators evaluators;
   std::shared_ptr<const void> keep_alive;  // owner of the evaluator code (a loaded shared object), if any
 };
@@ -127,8 +128,9 @@ NlsCoefficients coefficients(const Model& model, std::size_t branch, double thet
 bool coefficients_at(const ModelDefinition& definition, const double* q, std::size_t branch, double theta,
                      NlsCoefficients& out) noexcept;
 
-// Roots in omega^2 of the polynomial sum_k coefficients[k] w^k (degree <= kMaxModelDegree), real
-// parts ascending, into `roots`; returns false when a root is not real. Allocation-free.
-bool omega_squared_roots(const double* coefficients, int degree, double* roots);
+// Roots in omega^2 of the polynomial sum_k coefficients[k] w^k (k = 0..degree, degree <=
+// kMaxModelDegree), real parts ascending, into roots[0..degree); returns false when a root is not
+// real. Allocation-free. (Raw arrays like the evaluators above: the C interface of generated code.)
+bool omega_squared_roots(const double* coefficients, Index degree, double* roots);
 
 }  // namespace lrchain

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/version.hpp"
 
 namespace lrchain {
@@ -20,7 +21,7 @@ BuildInfo build_info();
 
 struct Provenance {
   BuildInfo build;
-  int cores = 0;                          // hardware threads of this machine
+  Index cores = 0;                        // hardware threads of this machine
   std::string date;                       // now, ISO 8601 UTC ("2026-11-23T16:40:00Z")
   std::vector<std::string> command_line;  // argv of this process; empty when it cannot be read
 };

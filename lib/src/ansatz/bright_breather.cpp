@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 #include "lrchain/errors.hpp"
 
@@ -75,13 +76,13 @@ void BrightBreatherAnsatz::velocities(double n, double t, double& u_dot, double&
   v_dot = kink + B_ * osc;
 }
 
-void BrightBreatherAnsatz::strains(long n_first, std::size_t count, double t, double* x,
-                                   double* y) const {
+void BrightBreatherAnsatz::strains(Index n_first, double t, std::span<double> x, std::span<double> y) const {
+  if (x.size() != y.size()) throw std::invalid_argument("BrightBreatherAnsatz::strains: x and y differ in length");
   double u_prev, v_prev;
   displacements(static_cast<double>(n_first - 1), t, u_prev, v_prev);
-  for (std::size_t i = 0; i < count; ++i) {
+  for (std::size_t i = 0; i < x.size(); ++i) {
     double u, v;
-    displacements(static_cast<double>(n_first + static_cast<long>(i)), t, u, v);
+    displacements(static_cast<double>(n_first + static_cast<Index>(i)), t, u, v);
     x[i] = u - u_prev;
     y[i] = v - v_prev;
     u_prev = u;

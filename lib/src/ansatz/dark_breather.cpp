@@ -44,19 +44,19 @@ DarkBreatherAnsatz make_dark_breather_ansatz(const Params& p, Branch edge, doubl
 
 // eq:xy_app: x_n = d^-{(m + 2 (-1)^n cos(omega_b t)) A tanh[eta (n - n0)]}, y_n likewise with the
 // staggered part scaled by kappa/(kappa - rho omega^2).
-void dark_breather_strains(const DarkBreatherAnsatz& a, DarkCenter center, int n_first, int sites,
+void dark_breather_strains(const DarkBreatherAnsatz& a, DarkCenter center, Index n_first, Index sites,
                            double t, std::vector<double>& x, std::vector<double>& y) {
   const double n0 = dark_center_n0(center);
   const double cs = std::cos(a.omega_b * t);
   x.resize(static_cast<std::size_t>(sites));
   y.resize(static_cast<std::size_t>(sites));
-  auto u = [&](int n, double stagger) {
+  auto u = [&](Index n, double stagger) {
     const double sign = (n % 2 == 0) ? 1.0 : -1.0;
     return (a.mean_factor + 2.0 * sign * stagger * cs) * a.amplitude *
            std::tanh(a.inverse_width * (n - n0));
   };
-  for (int i = 0; i < sites; ++i) {
-    const int n = n_first + i;
+  for (Index i = 0; i < sites; ++i) {
+    const Index n = n_first + i;
     x[static_cast<std::size_t>(i)] = u(n, 1.0) - u(n - 1, 1.0);
     y[static_cast<std::size_t>(i)] = u(n, a.resonator_factor) - u(n - 1, a.resonator_factor);
   }

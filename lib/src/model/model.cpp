@@ -96,7 +96,7 @@ std::size_t Model::branch(std::string_view name) const {
 
 // Linear and quadratic in closed form (the quadratic without cancellation), higher degrees by
 // Durand-Kerner iteration on fixed-size arrays.
-bool omega_squared_roots(const double* c, int degree, double* roots) {
+bool omega_squared_roots(const double* c, Index degree, double* roots) {
   if (degree == 1) {
     roots[0] = -c[0] / c[1];
     return std::isfinite(roots[0]);

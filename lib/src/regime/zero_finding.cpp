@@ -59,9 +59,9 @@ std::vector<double> find_zeros(const std::function<double(double)>& f, std::span
 
 std::vector<double> find_zeros(const std::function<double(double)>& f, double a, double b,
                                const ZeroFindingOptions& options) {
-  const int n = std::max(options.samples, 2);
+  const Index n = std::max<Index>(options.samples, 2);
   std::vector<double> xs(n), fs(n);
-  for (int i = 0; i < n; ++i) {
+  for (Index i = 0; i < n; ++i) {
     xs[i] = i == n - 1 ? b : a + (b - a) * i / (n - 1);
     fs[i] = f(xs[i]);
   }

@@ -2,11 +2,12 @@
 // Moving bright breather of the focusing NLS as initial data and reference for the lattice
 // (Sec. 4.1): displacements u_n^A, v_n^A whose differences are eq:focus_app, and velocities whose
 // differences are eq:focus_ini, with F = f = 0.
-#include <cstddef>
 #include <optional>
+#include <span>
 
 #include "lrchain/coefficients.hpp"
 #include "lrchain/dispersion.hpp"
+#include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 
 namespace lrchain {
@@ -44,8 +45,9 @@ class BrightBreatherAnsatz {
   void displacements(double n, double t, double& u, double& v) const;
   // Time derivatives of the above; their differences are eq:focus_ini at t = 0.
   void velocities(double n, double t, double& u_dot, double& v_dot) const;
-  // Strains x_n = u_n - u_{n-1}, y_n = v_n - v_{n-1} (eq:focus_app) for n = n_first .. n_first+count-1.
-  void strains(long n_first, std::size_t count, double t, double* x, double* y) const;
+  // Strains x_n = u_n - u_{n-1}, y_n = v_n - v_{n-1} (eq:focus_app) for n = n_first .. n_first +
+  // x.size() - 1 into x and y (of one size; std::invalid_argument otherwise).
+  void strains(Index n_first, double t, std::span<double> x, std::span<double> y) const;
 
  private:
   Params params_;

@@ -5,6 +5,7 @@
 
 #include "lrchain/coefficients.hpp"
 #include "lrchain/dispersion.hpp"
+#include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 
 namespace lrchain {
@@ -36,7 +37,7 @@ DarkBreatherAnsatz make_dark_breather_ansatz(const Params& p, Branch edge, doubl
 
 // Strains x_n(t), y_n(t) of eq:xy_app at sites n = n_first .. n_first + sites - 1 (physical index,
 // the difference operator d^- uses n - 1), centred at n0 = dark_center_n0(center).
-void dark_breather_strains(const DarkBreatherAnsatz& a, DarkCenter center, int n_first, int sites,
+void dark_breather_strains(const DarkBreatherAnsatz& a, DarkCenter center, Index n_first, Index sites,
                            double t, std::vector<double>& x, std::vector<double>& y);
 
 }  // namespace lrchain

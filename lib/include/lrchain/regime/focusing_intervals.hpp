@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "lrchain/dispersion.hpp"
+#include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/regime/boundary_cause.hpp"
 #include "lrchain/regime/regime_functions.hpp"
@@ -21,7 +22,7 @@ struct FocusingInterval {
 };
 
 struct IntervalOptions {
-  int samples = 2048;          // theta samples pi*i/samples, i = 1..samples, for bracketing
+  Index samples = 2048;        // theta samples pi*i/samples, i = 1..samples, for bracketing
   double x_tolerance = 1e-12;  // accuracy of every interval end in theta
 };
 

@@ -55,7 +55,7 @@ struct ModelRegimeMap {
   GridAxis y;  // theta
   std::vector<std::int8_t> values;  // values[j * x.n + i] at (x.at(i), y.at(j))
 
-  std::int8_t at(int i, int j) const { return values[static_cast<std::size_t>(j) * x.n + i]; }
+  std::int8_t at(Index i, Index j) const { return values[static_cast<std::size_t>(j * x.n + i)]; }
 };
 
 // The map at (x_i, theta_j); both ends of x inside the parameter's range, theta in [0, pi].

@@ -21,14 +21,14 @@ struct RegimeEvent {
   double theta = 0;  // wavenumber where it happens
   EventKind kind = EventKind::unresolved;
   std::vector<BoundaryCause> causes;  // the boundary kinds involved
-  int intervals_before = 0;           // focusing intervals just below value
-  int intervals_after = 0;            // ... and just above
+  Index intervals_before = 0;         // focusing intervals just below value
+  Index intervals_after = 0;          // ... and just above
 };
 
 struct EventOptions {
   IntervalOptions intervals{1024, 1e-12};
   double value_tolerance = 1e-11;  // relative accuracy of event values
-  int max_depth = 40;              // subdivisions while isolating events
+  Index max_depth = 40;            // subdivisions while isolating events
 };
 
 // All structure changes for the parameter on the scan grid (refined between grid points).

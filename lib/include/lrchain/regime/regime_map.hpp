@@ -19,7 +19,7 @@ struct RegimeMap {
   GridAxis y;  // theta or omega
   std::vector<std::int8_t> values;  // values[j * x.n + i] at (x.at(i), y.at(j))
 
-  std::int8_t at(int i, int j) const { return values[static_cast<std::size_t>(j) * x.n + i]; }
+  std::int8_t at(Index i, Index j) const { return values[static_cast<std::size_t>(j * x.n + i)]; }
 };
 
 // sign(omega'' h_tilde) at (rho_i, theta_j); the other parameters from base (Fig. 2).

@@ -5,6 +5,8 @@
 #include <functional>
 #include <vector>
 
+#include "lrchain/index.hpp"
+
 namespace lrchain::regime {
 
 struct PlanePoint {
@@ -20,9 +22,9 @@ struct TraceOptions {
   double step = 4e-3;          // initial/maximal step in box-normalised units
   double min_step = 1e-7;      // give up a branch below this step
   double max_turn = 0.15;      // maximal tangent turn per step (radians)
-  int max_points = 20000;      // per polyline
-  int seed_lines = 48;         // rows and columns searched for seeds
-  int seed_samples = 513;      // samples per seed line
+  Index max_points = 20000;    // per polyline
+  Index seed_lines = 48;       // rows and columns searched for seeds
+  Index seed_samples = 513;    // samples per seed line
   double tolerance = 1e-12;    // corrector accuracy (normalised units)
 };
 

@@ -5,10 +5,12 @@
 #include <span>
 #include <vector>
 
+#include "lrchain/index.hpp"
+
 namespace lrchain::regime {
 
 struct ZeroFindingOptions {
-  int samples = 2049;          // uniform sample points on [a, b] (including both ends)
+  Index samples = 2049;        // uniform sample points on [a, b] (including both ends)
   double x_tolerance = 1e-12;  // final bracket width of every zero
 };
 

@@ -32,14 +32,14 @@ struct BrightRunConfig {
   double theta = 0;
   std::optional<double> detuning;  // omega_b - omega; default sign(h_tilde) 1e-4
   double n0 = 0;                   // initial centre
-  long N = 500;                    // strain sites n = -N..N
+  Index N = 500;                   // strain sites n = -N..N
   double periods = 200;            // run length in T_b
   double sample_every = 0.25;      // E_x, E_y, energy, centre sampled every this many T_b
   double spacetime_every = 1.0;    // energy density row every this many T_b
   // Snapshot times in T_b, each in [0, periods]; the default list (the paper's run of 200 T_b)
   // keeps only those inside a shorter run.
   std::vector<double> snapshot_periods = default_bright_snapshot_periods();
-  std::size_t centre_window = 100;  // m of eq:ectr
+  Index centre_window = 100;        // m of eq:ectr
   double error_window_end = -1;     // also report max E_x, E_y over t <= this (if > 0)
   bool ansatz_ends = false;
   TrailingStructureOptions trailing;  // secondary structure behind the breather (fit_start > 0)
@@ -72,7 +72,7 @@ struct BrightRunSummary {
   double centre_start = 0, centre_end = 0;
   double t_end = 0;                       // time reached
   double t_start = 0;                     // 0, or the time of the checkpoint restarted from
-  long checkpoints_written = 0;
+  Index checkpoints_written = 0;
   double last_checkpoint_time = -1;       // of the last checkpoint written (< 0: none)
   bool interrupted = false, blew_up = false;
   std::optional<BlowUp> blow_up;  // when and where, if blew_up
@@ -96,7 +96,7 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control =
 struct BrightWorkspace {
   std::optional<DisplacementLattice> chain;
   Params chain_params;
-  std::size_t chain_beads = 0;
+  Index chain_beads = 0;
   bool chain_ansatz_ends = false;
   const BrightBreatherAnsatz* ansatz = nullptr;  // of the run under way: the prescribed ends follow it
   State state;

@@ -1,7 +1,7 @@
 #pragma once
 // Hertzian contact law of the chain: the bond force V'(r) = delta0^alpha - (delta0 - r)_+^alpha and
 // the bond energy V(r) (eq:Vr), evaluated exactly (contact loss included) for any alpha > 1.
-#include <cstddef>
+#include <span>
 
 #include "lrchain/params.hpp"
 
@@ -24,12 +24,14 @@ double bond_force(const ContactLaw& law, double r);
 // V(r) for one bond (eq:Vr); V(0) = V'(0) = 0.
 double bond_energy(const ContactLaw& law, double r);
 
-// f[i] = V'(r[i]) for i < n (one sqrt per bond when alpha = 3/2). No allocation.
-void bond_forces_from_strains(const ContactLaw& law, const double* r, double* f, std::size_t n);
-// V[i] = V(r[i]) for i < n (eq:Vr; one sqrt per bond when alpha = 3/2); V may be r. No allocation.
-void bond_energies_from_strains(const ContactLaw& law, const double* r, double* V, std::size_t n);
-// f[i] = V'(u[i+1] - u[i]) for i < n (reads u[0..n]). No allocation.
-void bond_forces_from_displacements(const ContactLaw& law, const double* u, double* f,
-                                    std::size_t n);
+// f[i] = V'(r[i]) for i < r.size() (f has at least as many entries; one sqrt per bond when
+// alpha = 3/2). No allocation.
+void bond_forces_from_strains(const ContactLaw& law, std::span<const double> r, std::span<double> f);
+// V[i] = V(r[i]) for i < r.size() (eq:Vr; one sqrt per bond when alpha = 3/2); V may be r. No
+// allocation.
+void bond_energies_from_strains(const ContactLaw& law, std::span<const double> r, std::span<double> V);
+// f[i] = V'(u[i+1] - u[i]) for i < f.size() (reads u[0..f.size()], so u has one entry more). No
+// allocation.
+void bond_forces_from_displacements(const ContactLaw& law, std::span<const double> u, std::span<double> f);
 
 }  // namespace lrchain::sim

@@ -8,6 +8,7 @@
 #include <functional>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/contact_law.hpp"
 #include "lrchain/sim/state.hpp"
@@ -31,11 +32,14 @@ struct DisplacementBoundary {
   EndCondition right;     // ghost bead after bead sites-1
 };
 
+// Not thread-safe: acceleration() and total_energy() are const but write scratch buffers of the
+// object (no allocation per call); give each thread its own lattice.
 class DisplacementLattice {
  public:
-  DisplacementLattice(const Params& p, std::size_t sites, DisplacementBoundary boundary = {});
+  // Throws InvalidParameter("sites", ...) for fewer than 2 beads.
+  DisplacementLattice(const Params& p, Index sites, DisplacementBoundary boundary = {});
 
-  std::size_t sites() const { return layout_.sites; }
+  Index sites() const { return static_cast<Index>(layout_.sites); }
   const StateLayout& layout() const { return layout_; }
   const Params& params() const { return params_; }
   const ContactLaw& law() const { return law_; }

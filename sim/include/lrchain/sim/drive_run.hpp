@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/integrator_options.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
@@ -21,7 +22,7 @@ inline std::vector<double> default_drive_snapshot_times() { return {779.9, 2400}
 
 struct DriveRunConfig {
   Params params{1.5, 4.0 / 9.0, 1.0, 10.0};
-  long beads = 2000;            // n = 1..beads, u_{beads+1} = 0 (clamped)
+  Index beads = 2000;           // n = 1..beads, u_{beads+1} = 0 (clamped)
   double amplitude = 0.06;      // A0
   double omega0 = 2.1;          // driving frequency
   double ramp_rate = 0.046;     // r of chi(t)
@@ -55,15 +56,15 @@ struct DriveRunSummary {
   double theta = 0;            // omega_+(theta) = omega0 (optical branch)
   double group_velocity = 0;   // c_+ = omega_+'(theta)
   double front_speed = 0;      // least-squares slope of the front over the fit window
-  long front_samples = 0;      // samples in that window (the speed needs at least 2)
+  Index front_samples = 0;     // samples in that window (the speed needs at least 2)
   double final_participation = 0;  // (sum e)^2 / sum e^2 at t_end (sites carrying energy)
   double max_participation = 0;
-  long final_peaks = 0;        // local maxima of e_n (3-site smoothed) above 10 % of the maximum
+  Index final_peaks = 0;       // local maxima of e_n (3-site smoothed) above 10 % of the maximum
   double final_energy = 0;     // total energy at t_end
   double max_energy = 0;
   double t_end = 0;
   double t_start = 0;          // 0, or the time of the checkpoint restarted from
-  long checkpoints_written = 0;
+  Index checkpoints_written = 0;
   double last_checkpoint_time = -1;  // of the last checkpoint written (< 0: none)
   bool interrupted = false, blew_up = false;
   std::optional<BlowUp> blow_up;  // when and where, if blew_up

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "lrchain/index.hpp"
+
 namespace lrchain::sim {
 
 enum class StepperKind { rkf78, dopri5, symplectic, srkn11b, srkn14a, ss17 };
@@ -43,11 +45,11 @@ struct IntegrationStats {
 // Where a blown-up integration of a displacement-form state (state.hpp) first became non-finite.
 struct BlowUp {
   double t = 0;       // observation time at which the state was found non-finite
-  long site = 0;      // label of the first site with a non-finite entry
+  Index site = 0;     // label of the first site with a non-finite entry
   std::string field;  // "u", "v", "du/dt" or "dv/dt"
   std::string message() const;  // "the integration blew up (non-finite state) at t = ..., ..."
 };
 // The blow-up recorded in `stats`, if any, on `sites` sites labelled first_label, first_label + 1, ...
-std::optional<BlowUp> locate_blow_up(const IntegrationStats& stats, std::size_t sites, long first_label);
+std::optional<BlowUp> locate_blow_up(const IntegrationStats& stats, Index sites, Index first_label);
 
 }  // namespace lrchain::sim

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/integrator_options.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
@@ -23,7 +24,7 @@ inline std::vector<double> default_modulated_snapshot_times() { return {0, 17100
 struct ModulatedRunConfig {
   std::string name = "modulated";
   Params params{1.5, 0.27, 1.0, 0.32};
-  long N = 401;                       // periodic chain, n = 0..N-1
+  Index N = 401;                      // periodic chain, n = 0..N-1
   double epsilon = 0.03;              // eq:cimi amplitude
   double theta_waves = 252;           // theta0 = theta_waves * pi / N
   double b = 0.01;                    // modulation depth
@@ -32,7 +33,7 @@ struct ModulatedRunConfig {
   // Snapshot times, each in [0, t_end]; the default list keeps only those inside a shorter run.
   std::vector<double> snapshot_times = default_modulated_snapshot_times();
   double contrast_threshold = 0.2;    // instability time: first t with (max e - min e)/mean e above this
-  long dark_window = 9;               // running mean (sites) before locating min e_n
+  Index dark_window = 9;              // running mean (sites) before locating min e_n
   double speed_fit_start = 30000, speed_fit_end = 33000;  // dark-breather speed fit window
   double checkpoint_every = 1000;     // time units between checkpoints (0: none)
   std::string checkpoint_file;        // where to write checkpoints (empty: none)
@@ -58,10 +59,10 @@ struct ModulatedRunSummary {
   double initial_contrast = 0;
   std::optional<double> instability_time;  // first t with contrast > threshold, if any
   double dark_speed = 0;            // |slope| of the unwrapped min-e position over the fit window
-  long dark_samples = 0;            // samples in that window
+  Index dark_samples = 0;           // samples in that window
   double energy0 = 0, max_energy_drift = 0;
   double t_end = 0;
-  long checkpoints_written = 0;
+  Index checkpoints_written = 0;
   double last_checkpoint_time = -1;  // of the last checkpoint written (< 0: none)
   bool interrupted = false, blew_up = false;
   std::optional<BlowUp> blow_up;  // when and where, if blew_up

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "lrchain/index.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
 #include "lrchain/sim/model_lattice_bloch.hpp"
@@ -23,7 +24,7 @@ struct RingRunConfig {
   std::size_t branch = 0;
   double theta = 0;                           // carrier wavenumber in (0, pi], a mode of the ring
   std::vector<double> amplitudes{0.02, 0.01};  // U: first-field amplitude of the plane wave
-  long sites = 0;                             // ring size N; 0: the smallest N >= 8 with theta N / (2 pi) whole
+  Index sites = 0;                            // ring size N; 0: the smallest N >= 8 with theta N / (2 pi) whole
   double periods = 400;                       // carrier periods per frequency measurement
   double steps_per_period = 80;               // srkn11b steps per carrier period
   std::optional<double> packet_amplitude;     // default: a tenth of the smallest amplitude
@@ -33,7 +34,7 @@ struct RingRunConfig {
 // Throws InvalidParameter naming the option (theta, sites, amplitudes, periods, ...).
 void validate(const RingRunConfig& c);
 // The ring size the run uses (c.sites or the smallest ring >= 8 with theta on it).
-long ring_sites(const RingRunConfig& c);
+Index ring_sites(const RingRunConfig& c);
 
 struct RingAmplitude {
   double amplitude = 0;
@@ -46,9 +47,9 @@ struct RingRunResult {
   std::string model;
   double omega = 0, h = 0, group_velocity = 0;  // from the model's coefficient evaluators
   BlochMode mode;                               // from the lattice code (omega agrees to 1e-9)
-  long sites = 0, mode_number = 0;
+  Index sites = 0, mode_number = 0;
   std::vector<RingAmplitude> amplitudes;
-  long packet_sites = 0;
+  Index packet_sites = 0;
   double packet_amplitude = 0, packet_width = 0, packet_duration = 0;
   double packet_speed = 0;                      // least-squares slope of the packet centre
   std::optional<double> packet_relative_disagreement;  // |speed - c| / |c|; none if c = 0
@@ -59,14 +60,14 @@ struct RingRunResult {
 // the phase of the first field's mode amplitude sum_n u_0[n] e^{-i n theta} (least squares over
 // `periods` carrier periods).
 double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
-                              const BlochMode& mode, long sites, long mode_number, double amplitude,
+                              const BlochMode& mode, Index sites, Index mode_number, double amplitude,
                               double periods, double steps_per_period);
 
 // Centre speed of a Gaussian packet U exp(-(n-n0)^2/(2 w^2)) Re(K e^{i(n theta - omega t)}) moving
 // at c, from the centroid of sum_f m_f (u_f'^2 + omega^2 u_f^2) (the squared envelope); the
 // centre track (t, X) goes to `track`.
 double measure_packet_speed(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
-                            const BlochMode& mode, double group_velocity, long sites, long mode_number,
+                            const BlochMode& mode, double group_velocity, Index sites, Index mode_number,
                             double amplitude, double width, double duration, double steps_per_period,
                             TimeSeries& track);
 

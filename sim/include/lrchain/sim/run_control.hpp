@@ -4,15 +4,17 @@
 #include <functional>
 #include <span>
 
+#include "lrchain/index.hpp"
+
 namespace lrchain::sim {
 
 // The lattice at one sample time of a run, for a caller's own measures (RunControl::on_sample).
 struct SampleView {
   double t = 0;
-  long first_label = 0;               // site label n of primary[0] and secondary[0]
+  Index first_label = 0;              // site label n of primary[0] and secondary[0]
   std::span<const double> primary;    // bright: strains x_n; drive, modulated: displacements u_n
   std::span<const double> secondary;  // bright: strains y_n; drive, modulated: displacements v_n
-  long energy_first_label = 0;        // bead label n of energy_density[0]
+  Index energy_first_label = 0;       // bead label n of energy_density[0]
   std::span<const double> energy_density;  // e_n (eq:edensity)
 };
 

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "lrchain/index.hpp"
+
 namespace lrchain::sim {
 
 // Columns of numbers sampled in time; data is row-major with names.size() entries per row.
@@ -18,7 +20,7 @@ struct TimeSeries {
 // A field f(n, t) on sites n = first_label .. first_label + sites - 1, one row per time.
 struct SpaceTime {
   std::string quantity;   // e.g. "e_n" or "u_dot"
-  long first_label = 0;   // paper label of the first site
+  Index first_label = 0;  // paper label of the first site
   std::size_t sites = 0;
   std::vector<double> times;
   std::vector<float> values;  // row-major, sites per row

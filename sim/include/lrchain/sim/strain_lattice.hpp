@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/contact_law.hpp"
 #include "lrchain/sim/state.hpp"
@@ -15,11 +16,14 @@ namespace lrchain::sim {
 
 enum class StrainEnds { zero_strain, periodic };
 
+// Not thread-safe: acceleration() is const but writes a scratch buffer of the object (no allocation
+// per call); give each thread its own lattice.
 class StrainLattice {
  public:
-  StrainLattice(const Params& p, std::size_t sites, StrainEnds ends = StrainEnds::zero_strain);
+  // Throws InvalidParameter("sites", ...) for fewer than 2 sites.
+  StrainLattice(const Params& p, Index sites, StrainEnds ends = StrainEnds::zero_strain);
 
-  std::size_t sites() const { return layout_.sites; }
+  Index sites() const { return static_cast<Index>(layout_.sites); }
   const StateLayout& layout() const { return layout_; }
   const Params& params() const { return params_; }
   const ContactLaw& law() const { return law_; }

@@ -5,9 +5,10 @@
 // energy centre eq:ectr), its speed a least-squares fit of the local energy centre over time, and
 // its branch read from the final strains: y_n/x_n = kappa/(kappa - rho omega^2) is > 0 on the
 // acoustic branch and < 0 on the optical branch (eq:b10b11), so the sign tells which it is.
-#include <cstddef>
+#include <span>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/sim/run_record.hpp"
 
 namespace lrchain::sim {
@@ -15,8 +16,8 @@ namespace lrchain::sim {
 struct TrailingStructureOptions {
   double fit_start = 0;      // fit the speed over field rows with t >= fit_start (> 0 to enable)
   double gap = 150;          // sites between the parent's energy centre and the searched region
-  long half_window = 40;     // local energy centre and y/x over max site +- half_window
-  long far_end = 800;        // ignore |n| > far_end (fast sound pulses reaching the ends)
+  Index half_window = 40;    // local energy centre and y/x over max site +- half_window
+  Index far_end = 800;       // ignore |n| > far_end (fast sound pulses reaching the ends)
 };
 
 struct TrailingStructure {
@@ -29,10 +30,10 @@ struct TrailingStructure {
 };
 
 // field: e_n rows (first_label = label of its site 0); centre_t/centre_x: X(t) series (paper
-// labels); x, y: final strains on labels x_first .. x_first + count - 1.
+// labels); x, y: final strains (of one size) on labels x_first .. x_first + x.size() - 1.
 TrailingStructure track_trailing_structure(const SpaceTime& field, const std::vector<double>& centre_t,
-                                           const std::vector<double>& centre_x, const double* x,
-                                           const double* y, long x_first, std::size_t count,
+                                           const std::vector<double>& centre_x, std::span<const double> x,
+                                           std::span<const double> y, Index x_first,
                                            const TrailingStructureOptions& opt);
 
 }  // namespace lrchain::sim
