@@ -167,6 +167,16 @@ DerivedCoefficients Solver::run() {
     solve_regular(2, 0, L, rhs);
     note("eps^2 E^0: mean correction A_{2,0} solved directly");
   }
+  // A_{2,0,f} = (free part) + offset |A_{1,1}|^2 + strain_offset d_xi A_{1,0}.
+  std::vector<ex> mean_offset(n_, 0), mean_strain_offset(n_, 0);
+  for (std::size_t f = d.mean_flow ? 1 : 0; f < n_; ++f) {
+    const ex value = known_.at(jets_.get(int(f), 2, 0));
+    const ex free_part = d.mean_flow ? kernel0[f] * jets_.get(0, 2, 0) : ex(0);
+    mean_offset[f] = normal(monomial_coeff(value, {{A11, 1}, {A1m1, 1}}, jets_));
+    if (d.mean_flow) mean_strain_offset[f] = normal(monomial_coeff(value, {{jets_.get(0, 1, 0, 0, 1), 1}}, jets_));
+    const ex rest = value - free_part - mean_offset[f] * A11 * A1m1 - mean_strain_offset[f] * jets_.get(0, 1, 0, 0, 1);
+    if (!normal(expand(rest)).is_zero()) throw std::runtime_error("eps^2 E^0 solution has unexpected terms: " + str(rest));
+  }
 
   // eps^2 E^1: solvability fixes the group velocity c (eq:c).
   split(2, 1, level(2, 1), L, rhs);
@@ -183,6 +193,12 @@ DerivedCoefficients Solver::run() {
   d.nonresonance1 = normal(-L.determinant());
   solve_regular(2, 2, L, rhs);
   note("eps^2 E^2: non-resonance value -det L_2 = " + str(d.nonresonance1));
+  for (std::size_t f = 0; f < n_; ++f) {
+    const ex value = known_.at(jets_.get(int(f), 2, 2));
+    d.second_harmonic.push_back(normal(monomial_coeff(value, {{A11, 2}}, jets_)));
+    if (!normal(expand(value - d.second_harmonic.back() * A11 * A11)).is_zero())
+      throw std::runtime_error("eps^2 E^2 solution is not proportional to A_{1,1}^2: " + str(value));
+  }
 
   // eps^3 E^0: mean-flow equation (eq:mod2) -> nonresonance2 and lambda (eq:lambda).
   if (d.mean_flow) {
@@ -238,6 +254,11 @@ DerivedCoefficients Solver::run() {
   d.h = explicit_form(d, s_, s_.gamma * d.h_n1_over_gamma / d.nonresonance1);
   d.lambda = explicit_form(d, s_, d.lambda_n2 / d.nonresonance2);
   d.h_tilde = d.h - d.lambda * d.beta;
+  for (std::size_t f = 0; f < n_; ++f) {
+    d.second_harmonic[f] = explicit_form(d, s_, d.second_harmonic[f]);
+    d.mean_offset.push_back(explicit_form(d, s_, mean_offset[f]) +
+                            (d.mean_flow ? explicit_form(d, s_, mean_strain_offset[f]) * d.lambda : ex(0)));
+  }
   d.h_tilde_numerator = explicit_form(
       d, s_, s_.gamma * d.h_n1_over_gamma * d.nonresonance2 - d.lambda_n2 * s_.gamma * d.beta_over_gamma * d.nonresonance1);
   d.report = report_;
