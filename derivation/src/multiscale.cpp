@@ -186,6 +186,15 @@ DerivedCoefficients Solver::run() {
     throw std::runtime_error("eps^2 E^1 solvability has unexpected terms");
   d.group_velocity = normal(lsolve(a_xi == 0, s_.c));
   solve_singular(2, 1, L, rhs, d.kernel);
+  // A_{2,1,f} = K_f A_{2,1} + gradient_f d_xi A_{1,1} (field 0: A_{2,1} free, set to 0 in an ansatz).
+  d.kernel_gradient.assign(1, 0);
+  for (std::size_t f = 1; f < n_; ++f) {
+    const ex A11x = jets_.get(0, 1, 1, 0, 1);
+    const ex value = known_.at(jets_.get(int(f), 2, 1));
+    d.kernel_gradient.push_back(normal(monomial_coeff(value, {{A11x, 1}}, jets_)));
+    if (!normal(expand(value - d.kernel[f] * jets_.get(0, 2, 1) - d.kernel_gradient.back() * A11x)).is_zero())
+      throw std::runtime_error("eps^2 E^1 solution has unexpected terms: " + str(value));
+  }
   note("eps^2 E^1: solvability (" + str(normal(a_xi)) + ") d_xi A_{1,1} = 0 gives c = " + str(d.group_velocity));
 
   // eps^2 E^2: second harmonic, invertible under (eq:nonresonance1).
@@ -256,6 +265,7 @@ DerivedCoefficients Solver::run() {
   d.h_tilde = d.h - d.lambda * d.beta;
   for (std::size_t f = 0; f < n_; ++f) {
     d.second_harmonic[f] = explicit_form(d, s_, d.second_harmonic[f]);
+    d.kernel_gradient[f] = explicit_form(d, s_, d.kernel_gradient[f]);
     d.mean_offset.push_back(explicit_form(d, s_, mean_offset[f]) +
                             (d.mean_flow ? explicit_form(d, s_, mean_strain_offset[f]) * d.lambda : ex(0)));
   }

@@ -47,6 +47,7 @@ ModelBrightAnsatz::ModelBrightAnsatz(const Model& model, const lrchain_lattice_k
   } else {
     second_order_.second_harmonic.assign(mode_.kernel.size(), 0.0);
     second_order_.mean.assign(mode_.kernel.size(), 0.0);
+    second_order_.kernel_gradient.assign(mode_.kernel.size(), 0.0);
   }
 }
 
@@ -62,12 +63,15 @@ void ModelBrightAnsatz::field(std::size_t f, double n, double t, double& u, doub
   const std::complex<double> phase = std::polar(1.0, n * nls_.theta - omega_b_ * t);
   const std::complex<double> carrier = mode_.kernel[f] * phase;
   const std::complex<double> harmonic = second_order_.second_harmonic[f] * phase * phase;
-  const double A = M2_ * sech;  // the envelope |A|
-  u = M1_ * th + 2.0 * A * carrier.real() + 2.0 * A * A * harmonic.real() + A * A * second_order_.mean[f];
-  // d/dt [sech(z)^k e^{i k phase}] = k sech^k (c a tanh - i omega_b) e^{i k phase}
-  const std::complex<double> rate(c * a_ * th, -omega_b_);
+  const std::complex<double> gradient = second_order_.kernel_gradient[f] * phase;
+  const double A = M2_ * sech;  // the envelope |A|; dA/dn = -a tanh(z) A
+  u = M1_ * th + 2.0 * A * carrier.real() + 2.0 * A * A * harmonic.real() + A * A * second_order_.mean[f] -
+      2.0 * a_ * th * A * gradient.real();
+  // d/dt [sech(z)^k e^{i k phase}] = k sech^k (c a tanh - i omega_b) e^{i k phase};
+  // d/dt [tanh(z) sech(z) e^{i phase}] = sech (c a (tanh^2 - sech^2) - i omega_b tanh) e^{i phase}
+  const std::complex<double> rate(c * a_ * th, -omega_b_), gradient_rate(c * a_ * (th * th - sech * sech), -omega_b_ * th);
   u_dot = -c * a_ * M1_ * sech * sech + 2.0 * A * (rate * carrier).real() + 4.0 * A * A * (rate * harmonic).real() +
-          2.0 * c * a_ * th * A * A * second_order_.mean[f];
+          2.0 * c * a_ * th * A * A * second_order_.mean[f] - 2.0 * a_ * A * (gradient_rate * gradient).real();
 }
 
 void validate(const ModelBrightConfig& c) {

@@ -93,6 +93,8 @@ TEST_CASE("without a C++ compiler a model file is evaluated through GiNaC and ag
           worst = std::max(worst, std::abs(p.second_harmonic[f] - r.second_harmonic[f]) /
                                       std::max(std::abs(p.second_harmonic[f]), 1e-300));
           if (p.mean[f] != r.mean[f]) worst = std::max(worst, relative(p.mean[f], r.mean[f]));
+          if (p.kernel_gradient[f] != r.kernel_gradient[f])
+            worst = std::max(worst, std::abs(p.kernel_gradient[f] - r.kernel_gradient[f]) / std::abs(p.kernel_gradient[f]));
         }
         ++points;
       }

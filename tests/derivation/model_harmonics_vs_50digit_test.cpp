@@ -1,5 +1,6 @@
 // The emitted harmonics evaluators of every shipped model (second harmonic W2_f = A_{2,2,f} /
-// A_{1,1}^2 and mean W0_f = A_{2,0,f} / |A_{1,1}|^2, through lrchain::second_order_terms) against
+// A_{1,1}^2, mean W0_f = A_{2,0,f} / |A_{1,1}|^2 and gradient term G_f, through
+// lrchain::second_order_terms) against
 // 50-digit CLN evaluation of the expressions the derivation produces from the model file.
 #include <doctest/doctest.h>
 
@@ -72,6 +73,9 @@ TEST_CASE("every shipped model's emitted second-order terms agree with 50-digit 
           if (w0.real() != 0) worst = std::max(worst, std::abs(got.mean[f] - w0.real()) / std::abs(w0.real()));
           else CHECK(got.mean[f] == 0.0);
           CHECK(std::abs(w0.imag()) <= 1e-40 * std::max(1.0, std::abs(w0.real())));
+          const std::complex<double> g = value(d.kernel_gradient[f]);
+          if (std::abs(g) > 0) worst = std::max(worst, std::abs(got.kernel_gradient[f] - g) / std::abs(g));
+          else CHECK(std::abs(got.kernel_gradient[f]) == 0.0);
         }
         ++compared;
       }

@@ -45,7 +45,7 @@ TEST_CASE("fput: the second harmonic is i a cot(theta/2) and there is no offset"
   }
 }
 
-TEST_CASE("resonant_chain: second harmonic as eq:A22A11 with B22 = kappa / (kappa - 4 rho omega^2) A22") {
+TEST_CASE("resonant_chain: second harmonic as eq:A22A11 with B22 = kappa / (kappa - 4 rho omega^2) A22, gradient term from eq:B21") {
   // Appendix A of the paper: A_{2,2} = K3 s D1 (kappa - 4 omega^2 rho) / ((4 omega^2 - 4 K2 sin^2 theta
   // - kappa)(kappa - 4 omega^2 rho) + kappa^2) A_{1,1}^2 with s = 2i sin theta, K2 = alpha delta0^(alpha-1),
   // K3 = -alpha (alpha-1) delta0^(alpha-2) / 2; the resonator is linear: no offset of v from u.
@@ -60,12 +60,18 @@ TEST_CASE("resonant_chain: second harmonic as eq:A22A11 with B22 = kappa / (kapp
       const Complex A22 = K3 * s * D1 * (kappa - 4 * w2 * rho) /
                           ((4 * w2 - 4 * K2 * sin2 - kappa) * (kappa - 4 * w2 * rho) + kappa * kappa);
       const Complex B22 = kappa / (kappa - 4 * rho * w2) * A22;
+      // eq:B21 with A_{2,1} = 0: (kappa - rho omega^2) B_{2,1} = -2i omega c rho d_xi B_{1,1}, B_{1,1} = K A_{1,1}:
+      // G_1 = -2i omega c rho kappa / (kappa - rho omega^2)^2 (= -i dK/dtheta along the branch).
+      const double c = coefficients(model, model.branch(branch), theta).group_velocity;
+      const Complex G1(0, -2 * omega * c * rho * kappa / std::pow(kappa - rho * w2, 2));
       const SecondOrderTerms t = second_order_terms(model, model.branch(branch), theta);
       INFO(branch << " theta " << theta);
       CHECK(std::abs(t.second_harmonic[0] - A22) <= 1e-12 * std::abs(A22));
       CHECK(std::abs(t.second_harmonic[1] - B22) <= 1e-12 * std::abs(B22));
       CHECK(t.mean[0] == 0.0);
       CHECK(std::abs(t.mean[1]) <= 1e-15);
+      CHECK(t.kernel_gradient[0] == 0.0);
+      CHECK(std::abs(t.kernel_gradient[1] - G1) <= 1e-12 * std::abs(G1));
     }
 }
 
@@ -89,8 +95,9 @@ TEST_CASE("resonant_chain_polynomial: the nonlinear resonator's mean offset 2 b2
 TEST_CASE("model bright ansatz of the resonant chain: first order equals BrightBreatherAnsatz, second order adds eq:A22A11") {
   // The generic ansatz (ModelBrightAnsatz on the generated lattice's Bloch vector) without its
   // second-order terms is eq:focus_app, as the specialised BrightBreatherAnsatz: equal to round-off.
-  // With them, the difference is 2 |A|^2 Re(W2_f e^{2 i phi}) with W2 from the paper (test above),
-  // |A| = M2 sech(a (n - n0 - c t)), phi = n theta - omega_b t (no offset: the resonator is linear).
+  // With them, the difference is 2 |A|^2 Re(W2_f e^{2 i phi}) + 2 Re(G_f dA/dn e^{i phi}) with W2, G
+  // from the paper (test above), |A| = M2 sech(a (n - n0 - c t)), phi = n theta - omega_b t (no offset:
+  // the resonator is linear).
   const Params p{1.5, 4.0 / 9.0, 1.0, 1.0 / 3.0};
   const Model model = shipped_model("resonant_chain");
   const auto& kernels = sim::lattice_kernels_of(model);
@@ -114,7 +121,8 @@ TEST_CASE("model bright ansatz of the resonant chain: first order equals BrightB
         first.field(f, n, time, x, x_dot);
         worst_first = std::max({worst_first, std::abs(x - expected[f][0]), std::abs(x_dot - expected[f][1])});
         second.field(f, n, time, x, x_dot);
-        const double harmonic = 2 * A * A * (t.second_harmonic[f] * phase * phase).real();
+        const double harmonic = 2 * A * A * (t.second_harmonic[f] * phase * phase).real() -
+                                2 * paper.inverse_width() * std::tanh(z) * A * (t.kernel_gradient[f] * phase).real();
         worst_second = std::max(worst_second, std::abs(x - expected[f][0] - harmonic));
         scale = std::max(scale, std::abs(expected[f][0]));
       }

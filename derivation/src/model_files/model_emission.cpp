@@ -215,24 +215,28 @@ std::pair<ex, ex> complex_parts(const ex& e, const Symbols& s) {
   return {reduced(numerator.real_part()) / real_denominator, reduced(numerator.imag_part()) / real_denominator};
 }
 
-// The second-order terms per field f at out[3 f + lrchain::HarmonicOutput]: the second harmonic
-// A_{2,2,f} / A_{1,1}^2 (real, imaginary part) and the mean A_{2,0,f} / |A_{1,1}|^2, in `real_type`
+// The second-order terms per field f at out[5 f + lrchain::HarmonicOutput]: the second harmonic
+// A_{2,2,f} / A_{1,1}^2 (real, imaginary part), the mean A_{2,0,f} / |A_{1,1}|^2 and the gradient
+// term of A_{2,1,f} per unit d_xi A_{1,1} (real, imaginary part), in `real_type`
 // from consistent inputs (as the extended nls; not a hot path: an ansatz calls it once).
 EmittedFunction harmonics_function(const ModelDerivation& m, const Symbols& s, const std::string& real_type,
                                    bool recompute_intermediates) {
   const DerivedCoefficients& c = m.coefficients;
   EmittedFunction f;
   f.name = "harmonics";
-  f.comment = "Per field f, out[3f..3f+2]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean "
-              "A_{2,0,f}/|A_{1,1}|^2 (lrchain::HarmonicOutput).";
+  f.comment = "Per field f, out[5f..5f+4]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean "
+              "A_{2,0,f}/|A_{1,1}|^2, gradient term of A_{2,1,f} per d_xi A_{1,1} (real, imaginary) (lrchain::HarmonicOutput).";
   f.parameter_list = "double D1, double sigma, double omega, const double* q, double* out";
   f.inputs = {{s.D1, "D1"}, {s.sigma, "sigma"}, {s.omega, "omega"}};
   for (const auto& input : q_inputs(m)) f.inputs.push_back(input);
   for (std::size_t field = 0; field < c.second_harmonic.size(); ++field) {
     const auto [real_part, imaginary_part] = complex_parts(c.second_harmonic[field], s);
-    f.outputs.emplace_back("out[" + std::to_string(3 * field) + "]", real_part);
-    f.outputs.emplace_back("out[" + std::to_string(3 * field + 1) + "]", imaginary_part);
-    f.outputs.emplace_back("out[" + std::to_string(3 * field + 2) + "]", real_form(c.mean_offset[field], s));
+    f.outputs.emplace_back("out[" + std::to_string(5 * field) + "]", real_part);
+    f.outputs.emplace_back("out[" + std::to_string(5 * field + 1) + "]", imaginary_part);
+    f.outputs.emplace_back("out[" + std::to_string(5 * field + 2) + "]", real_form(c.mean_offset[field], s));
+    const auto [gradient_real, gradient_imaginary] = complex_parts(c.kernel_gradient[field], s);
+    f.outputs.emplace_back("out[" + std::to_string(5 * field + 3) + "]", gradient_real);
+    f.outputs.emplace_back("out[" + std::to_string(5 * field + 4) + "]", gradient_imaginary);
   }
   if (real_type == "double") {
     f.prologue = "  (void)sigma;\n  (void)q;\n";

@@ -23,13 +23,16 @@ enum ModelOutput : int {
   model_output_count
 };
 
-// Outputs of a model's harmonics evaluator for field f: out[3 f + HarmonicOutput] (ModelEvaluators::
-// harmonics writes 3 per field): the second harmonic A_{2,2,f} / A_{1,1}^2 and the mean A_{2,0,f} /
-// |A_{1,1}|^2 of the multiple-scale expansion u_f = eps (A_{1,1} K_f E + c.c.) + eps^2 (A_{2,2,f} E^2
-// + c.c. + A_{2,0,f}) + ..., E = e^{i(n theta - omega t)}. Translation-invariant models: field 0's
-// mean is the mean flow (lambda) and reported as 0; other fields' is their offset from it.
+// Outputs of a model's harmonics evaluator for field f: out[harmonic_output_count f + HarmonicOutput]:
+// the second-order terms of the multiple-scale expansion
+//   u_f = eps (A_{1,1} K_f E + c.c.) + eps^2 (A_{2,2,f} E^2 + A_{2,1,f} E + c.c. + A_{2,0,f}) + ...,
+// E = e^{i(n theta - omega t)}: the second harmonic A_{2,2,f} / A_{1,1}^2, the mean A_{2,0,f} /
+// |A_{1,1}|^2 (translation-invariant models: field 0's mean is the mean flow, lambda, reported as 0;
+// other fields' is their offset from it) and the gradient term G_f of A_{2,1,f} = K_f A_{2,1} + G_f
+// d_xi A_{1,1} (G_0 = 0; G_f = -i dK_f/dtheta along the branch).
 enum HarmonicOutput : int {
-  harmonic_second_real, harmonic_second_imaginary, harmonic_mean, harmonic_output_count
+  harmonic_second_real, harmonic_second_imaginary, harmonic_mean, harmonic_gradient_real, harmonic_gradient_imaginary,
+  harmonic_output_count
 };
 
 // Highest degree in omega^2 of det M a model may have (number of fields).
@@ -144,11 +147,12 @@ bool coefficients_at(const ModelDefinition& definition, const double* q, std::si
                      NlsCoefficients& out) noexcept;
 
 // The second-order terms of the multiple-scale expansion of `model` on `branch` at theta, per field
-// (HarmonicOutput): the second harmonic per unit A^2 and the mean per unit |A|^2, where A is the
-// envelope of field 0 (u_0 = A E + c.c. + ...). Same checks and exceptions as coefficients().
+// (HarmonicOutput): the second harmonic per unit A^2, the mean per unit |A|^2 and the gradient term
+// per unit dA/dn, where A is the envelope of field 0 (u_0 = A E + c.c. + ...). Same checks and exceptions as coefficients().
 struct SecondOrderTerms {
   std::vector<std::complex<double>> second_harmonic;  // A_{2,2,f} / A_{1,1}^2
   std::vector<double> mean;                           // A_{2,0,f} / |A_{1,1}|^2 (mean flow: offset from it)
+  std::vector<std::complex<double>> kernel_gradient;  // G_f: A_{2,1,f} = K_f A_{2,1} + G_f d_xi A_{1,1}
 };
 SecondOrderTerms second_order_terms(const Model& model, std::size_t branch, double theta);
 

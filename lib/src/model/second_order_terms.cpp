@@ -7,7 +7,7 @@
 
 namespace lrchain {
 
-// A_{2,2,f} / A_{1,1}^2 and A_{2,0,f} / |A_{1,1}|^2 per field at (branch, theta).
+// A_{2,2,f} / A_{1,1}^2, A_{2,0,f} / |A_{1,1}|^2 and G_f per field at (branch, theta).
 SecondOrderTerms second_order_terms(const Model& model, std::size_t branch, double theta) {
   const NlsCoefficients c = coefficients(model, branch, theta);  // checks theta, branch; gives omega
   const ModelDefinition& d = model.definition();
@@ -20,6 +20,7 @@ SecondOrderTerms second_order_terms(const Model& model, std::size_t branch, doub
     const double* field = out + harmonic_output_count * f;
     terms.second_harmonic.emplace_back(field[harmonic_second_real], field[harmonic_second_imaginary]);
     terms.mean.push_back(field[harmonic_mean]);
+    terms.kernel_gradient.emplace_back(field[harmonic_gradient_real], field[harmonic_gradient_imaginary]);
   }
   return terms;
 }

@@ -36,6 +36,9 @@ struct DerivedCoefficients {
   // flow A_{1,0}, with d_xi A_{1,0} = lambda |A_{1,1}|^2) and field f's is its offset from it, the
   // d_xi A_{1,0} part of A_{2,0,f} included through lambda.
   std::vector<GiNaC::ex> second_harmonic, mean_offset;
+  // The envelope-gradient term of A_{2,1,f} = K_f A_{2,1} + kernel_gradient_f d_xi A_{1,1} per field
+  // (0 for field 0; = -i dK_f/dtheta along the branch): a wave packet's kernel varies with its wavenumbers.
+  std::vector<GiNaC::ex> kernel_gradient;
   std::vector<std::string> report;     // the derivation's own consistency checks, one line each
   std::vector<GiNaC::ex> vanishing_modulo_dispersion;  // coefficients that must be 0 on det L_1 = 0
   // Translation-invariant model (singular L_0): mean flow A_{1,0}, lambda, h_tilde = h - lambda beta.

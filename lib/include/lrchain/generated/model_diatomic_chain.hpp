@@ -139,7 +139,7 @@ inline void nls(double D1_in, double sigma_in, double omega_in, const double* q,
   for (int k = 0; k < 13; ++k) out[k] = static_cast<double>(o[k]);
 }
 
-// Per field f, out[3f..3f+2]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean A_{2,0,f}/|A_{1,1}|^2 (lrchain::HarmonicOutput).
+// Per field f, out[5f..5f+4]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean A_{2,0,f}/|A_{1,1}|^2, gradient term of A_{2,1,f} per d_xi A_{1,1} (real, imaginary) (lrchain::HarmonicOutput).
 inline void harmonics(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
   using real [[maybe_unused]] = __float128;
   const auto magnitude = [](real x) { return x < 0 ? -x : x; };
@@ -171,25 +171,32 @@ inline void harmonics(double D1_in, double sigma_in, double omega_in, const doub
   }
   real omega = omega_in;
   for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);
-  real o[6];
+  real o[10];
   o[0] = 0.0;
   const real t0 = (D1 * D1);
   const real t1 = (Q[3] * Q[3]);
-  const real t2 = (omega * omega);
-  const real t3 = (omega * omega * omega * omega);
-  const real t4 = -(D1);
-  const real t5 = (Q[3] * Q[3] * Q[3]);
-  const real t6 = (omega * omega * omega * omega * omega * omega);
-  o[1] = -(2.0 * (-(t0 * t5) - (2.0 * t3 * Q[3]) - (8.0 * t3 * Q[2] * Q[3]) + 2.0 * t1 * t2 * D1 + 2.0 * t5 * D1 + 4.0 * t6 * Q[2]) * Q[4] * sigma / ((-(t0 * t1) - (8.0 * t2 * Q[2] * Q[3]) - (8.0 * t2 * Q[3]) + 16.0 * t3 * Q[2] + 4.0 * t1 * D1) * (t4 + 4.0) * (Q[3] * Q[3])));
+  const real t2 = -(t0 * t1);
+  const real t3 = (omega * omega);
+  const real t4 = (omega * omega * omega * omega);
+  const real t5 = -(D1);
+  const real t6 = (t5 + 4.0);
+  const real t7 = (Q[3] * Q[3] * Q[3]);
+  const real t8 = (omega * omega * omega * omega * omega * omega);
+  o[1] = -(2.0 * (-(t0 * t7) - (2.0 * t4 * Q[3]) - (8.0 * t4 * Q[2] * Q[3]) + 2.0 * t1 * t3 * D1 + 2.0 * t7 * D1 + 4.0 * t8 * Q[2]) * Q[4] * sigma / ((t2 - (8.0 * t3 * Q[2] * Q[3]) - (8.0 * t3 * Q[3]) + 16.0 * t4 * Q[2] + 4.0 * t1 * D1) * t6 * (Q[3] * Q[3])));
   o[2] = 0.0;
-  const real t7 = (-(t3 * D1) - (2.0 * t1 * D1) - (6.0 * t3) + 6.0 * t2 * D1 * Q[3]);
-  o[3] = -((real(1.0) / 2.0) * t7 * D1 * Q[4] / ((-(t0 * t1) - (8.0 * t2 * Q[2] * Q[3]) - (8.0 * t2 * Q[3]) + 16.0 * t3 * Q[2] + 4.0 * t1 * D1) * Q[3]));
-  o[4] = t7 * (t4 + 2.0) * Q[4] * sigma / ((-(t0 * t1) - (8.0 * t2 * Q[2] * Q[3]) - (8.0 * t2 * Q[3]) + 16.0 * t3 * Q[2] + 4.0 * t1 * D1) * (t4 + 4.0) * Q[3]);
-  const real t8 = (Q[2] * Q[2]);
-  const real t9 = (Q[3] * Q[3] * Q[3] * Q[3]);
-  const real t10 = (Q[3] * Q[3] * Q[3] * Q[3] * Q[3]);
-  o[5] = 4.0 * (((-(t1 * D1) - (4.0 * t2 * Q[2] * Q[3]) + t3 * Q[2] + 4.0 * t1 + 4.0 * t1 * Q[2])) * ((-(t1 * D1) - (4.0 * t2 * Q[2] * Q[3]) + t3 * Q[2] + 4.0 * t1 + 4.0 * t1 * Q[2]))) * (t3 - (t2 * D1 * Q[3]) + t1 * D1) * t2 * Q[4] / ((-(t0 * t5 * t3) - (t0 * t5 * t3 * Q[2]) - (12.0 * t5 * t3 * D1 * Q[2]) - (16.0 * t1 * t6 * Q[2]) - (2.0 * t8 * (omega * omega * omega * omega * omega * omega * omega * omega * omega * omega)) - (32.0 * t8 * t9 * t2) - (32.0 * t9 * t2) - (4.0 * t0 * t10) - (4.0 * t0 * t10 * Q[2]) - (48.0 * t8 * t1 * t6) - (64.0 * t9 * t2 * Q[2]) + 16.0 * t8 * (omega * omega * omega * omega * omega * omega * omega * omega) * Q[3] + 16.0 * t10 * D1 + 16.0 * t10 * D1 * Q[2] + 2.0 * t0 * t9 * t2 + 4.0 * t0 * t9 * t2 * Q[2] + 4.0 * t1 * t6 * D1 * Q[2] + 4.0 * t5 * t3 * D1 + 64.0 * t8 * t5 * t3 + 64.0 * t5 * t3 * Q[2]) * (t4 + 4.0) * (Q[3] * Q[3] * Q[3]));
-  for (int k = 0; k < 6; ++k) out[k] = static_cast<double>(o[k]);
+  o[3] = 0.0;
+  o[4] = 0.0;
+  const real t9 = (-(t4 * D1) - (2.0 * t1 * D1) - (6.0 * t4) + 6.0 * t3 * D1 * Q[3]);
+  o[5] = -((real(1.0) / 2.0) * t9 * D1 * Q[4] / ((t2 - (8.0 * t3 * Q[2] * Q[3]) - (8.0 * t3 * Q[3]) + 16.0 * t4 * Q[2] + 4.0 * t1 * D1) * Q[3]));
+  o[6] = t9 * (t5 + 2.0) * Q[4] * sigma / ((t2 - (8.0 * t3 * Q[2] * Q[3]) - (8.0 * t3 * Q[3]) + 16.0 * t4 * Q[2] + 4.0 * t1 * D1) * t6 * Q[3]);
+  const real t10 = (Q[2] * Q[2]);
+  const real t11 = (Q[3] * Q[3] * Q[3] * Q[3]);
+  const real t12 = (Q[3] * Q[3] * Q[3] * Q[3] * Q[3]);
+  const real t13 = (-(t1 * D1) - (4.0 * t3 * Q[2] * Q[3]) + t4 * Q[2] + 4.0 * t1 + 4.0 * t1 * Q[2]);
+  o[7] = 4.0 * (t13 * t13) * (t4 - (t3 * D1 * Q[3]) + t1 * D1) * t3 * Q[4] / ((-(t0 * t7 * t4) - (t0 * t7 * t4 * Q[2]) - (12.0 * t7 * t4 * D1 * Q[2]) - (16.0 * t1 * t8 * Q[2]) - (2.0 * t10 * (omega * omega * omega * omega * omega * omega * omega * omega * omega * omega)) - (32.0 * t10 * t11 * t3) - (32.0 * t11 * t3) - (4.0 * t0 * t12) - (4.0 * t0 * t12 * Q[2]) - (48.0 * t10 * t1 * t8) - (64.0 * t11 * t3 * Q[2]) + 16.0 * t10 * (omega * omega * omega * omega * omega * omega * omega * omega) * Q[3] + 16.0 * t12 * D1 + 16.0 * t12 * D1 * Q[2] + 2.0 * t0 * t11 * t3 + 4.0 * t0 * t11 * t3 * Q[2] + 4.0 * t1 * t8 * D1 * Q[2] + 4.0 * t7 * t4 * D1 + 64.0 * t10 * t7 * t4 + 64.0 * t7 * t4 * Q[2]) * t6 * (Q[3] * Q[3] * Q[3]));
+  o[8] = -((real(1.0) / 2.0) * (t2 - (2.0 * t4 * Q[2]) - (8.0 * t1) - (8.0 * t1 * Q[2]) + 6.0 * t1 * D1 + 8.0 * t3 * Q[2] * Q[3]) * Q[3] / (t13 * (-(t3 * Q[2]) + 2.0 * Q[3])));
+  o[9] = t6 * t7 * sigma / (t13 * (-(t3 * Q[2]) + 2.0 * Q[3]));
+  for (int k = 0; k < 10; ++k) out[k] = static_cast<double>(o[k]);
 }
 
 // The model's description for lrchain::Model (parameters, ranges, branches, evaluators).

@@ -110,7 +110,7 @@ inline void nls(double D1_in, double sigma_in, double omega_in, const double* q,
   for (int k = 0; k < 13; ++k) out[k] = static_cast<double>(o[k]);
 }
 
-// Per field f, out[3f..3f+2]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean A_{2,0,f}/|A_{1,1}|^2 (lrchain::HarmonicOutput).
+// Per field f, out[5f..5f+4]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean A_{2,0,f}/|A_{1,1}|^2, gradient term of A_{2,1,f} per d_xi A_{1,1} (real, imaginary) (lrchain::HarmonicOutput).
 inline void harmonics(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
   using real [[maybe_unused]] = long double;
   const auto magnitude = [](real x) { return x < 0 ? -x : x; };
@@ -142,11 +142,13 @@ inline void harmonics(double D1_in, double sigma_in, double omega_in, const doub
   }
   real omega = omega_in;
   for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);
-  real o[3];
+  real o[5];
   o[0] = 0.0;
   o[1] = -(2.0 * D1 * Q[3] * sigma / ((-((D1 * D1) * Q[2]) - (4.0 * (omega * omega)) + 4.0 * D1 * Q[2])));
   o[2] = 0.0;
-  for (int k = 0; k < 3; ++k) out[k] = static_cast<double>(o[k]);
+  o[3] = 0.0;
+  o[4] = 0.0;
+  for (int k = 0; k < 5; ++k) out[k] = static_cast<double>(o[k]);
 }
 
 // The model's description for lrchain::Model (parameters, ranges, branches, evaluators).

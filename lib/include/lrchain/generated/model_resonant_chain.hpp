@@ -177,7 +177,7 @@ inline void nls(double D1, double sigma, double omega, const double* q, double* 
     nls_extended(D1, sigma, omega, q, out);
 }
 
-// Per field f, out[3f..3f+2]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean A_{2,0,f}/|A_{1,1}|^2 (lrchain::HarmonicOutput).
+// Per field f, out[5f..5f+4]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean A_{2,0,f}/|A_{1,1}|^2, gradient term of A_{2,1,f} per d_xi A_{1,1} (real, imaginary) (lrchain::HarmonicOutput).
 inline void harmonics(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
   using real [[maybe_unused]] = long double;
   const auto magnitude = [](real x) { return x < 0 ? -x : x; };
@@ -206,16 +206,22 @@ inline void harmonics(double D1_in, double sigma_in, double omega_in, const doub
   }
   real omega = omega_in;
   for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);
-  real o[6];
+  real o[10];
   o[0] = 0.0;
   const real t0 = (D1 * D1);
   const real t1 = (omega * omega);
-  o[1] = 2.0 * (-(Q[2]) + 4.0 * t1 * Q[3]) * D1 * Q[5] * sigma / ((-(t0 * Q[2] * Q[4]) - (16.0 * t1 * D1 * Q[3] * Q[4]) - (4.0 * t1 * Q[2]) - (4.0 * t1 * Q[2] * Q[3]) + 16.0 * (omega * omega * omega * omega) * Q[3] + 4.0 * t0 * t1 * Q[3] * Q[4] + 4.0 * D1 * Q[2] * Q[4]));
+  const real t2 = (omega * omega * omega * omega);
+  o[1] = 2.0 * (-(Q[2]) + 4.0 * t1 * Q[3]) * D1 * Q[5] * sigma / ((-(t0 * Q[2] * Q[4]) - (16.0 * t1 * D1 * Q[3] * Q[4]) - (4.0 * t1 * Q[2]) - (4.0 * t1 * Q[2] * Q[3]) + 16.0 * t2 * Q[3] + 4.0 * t0 * t1 * Q[3] * Q[4] + 4.0 * D1 * Q[2] * Q[4]));
   o[2] = 0.0;
   o[3] = 0.0;
-  o[4] = -(2.0 * D1 * Q[2] * Q[5] * sigma / ((-(t0 * Q[2] * Q[4]) - (16.0 * t1 * D1 * Q[3] * Q[4]) - (4.0 * t1 * Q[2]) - (4.0 * t1 * Q[2] * Q[3]) + 16.0 * (omega * omega * omega * omega) * Q[3] + 4.0 * t0 * t1 * Q[3] * Q[4] + 4.0 * D1 * Q[2] * Q[4])));
+  o[4] = 0.0;
   o[5] = 0.0;
-  for (int k = 0; k < 6; ++k) out[k] = static_cast<double>(o[k]);
+  o[6] = -(2.0 * D1 * Q[2] * Q[5] * sigma / ((-(t0 * Q[2] * Q[4]) - (16.0 * t1 * D1 * Q[3] * Q[4]) - (4.0 * t1 * Q[2]) - (4.0 * t1 * Q[2] * Q[3]) + 16.0 * t2 * Q[3] + 4.0 * t0 * t1 * Q[3] * Q[4] + 4.0 * D1 * Q[2] * Q[4])));
+  o[7] = 0.0;
+  o[8] = 0.0;
+  const real t3 = (Q[2] * Q[2]);
+  o[9] = -(2.0 * Q[2] * Q[3] * Q[4] * sigma / ((t3 - (2.0 * t1 * Q[2] * Q[3]) + t3 * Q[3] + (Q[3] * Q[3]) * t2)));
+  for (int k = 0; k < 10; ++k) out[k] = static_cast<double>(o[k]);
 }
 
 // The model's description for lrchain::Model (parameters, ranges, branches, evaluators).

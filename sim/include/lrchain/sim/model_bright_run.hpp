@@ -1,9 +1,10 @@
 #pragma once
 // Bright breathers of any model file: the NLS bright-breather ansatz built from the derived
 // coefficients (omega, c, omega'', h_tilde, lambda), the lattice's own Bloch vector K and the
-// derivation's second-order terms (second harmonic W2_f, mean W0_f per field):
-//   u_f[n](t) = M1 tanh(z) + (A K_f e^{i phi} + c.c.) + (A^2 W2_f e^{2 i phi} + c.c.) + |A|^2 W0_f,
-// A = M2 sech(z), phi = n theta - omega_b t, z = a (n - n0 - c t),
+// derivation's second-order terms (second harmonic W2_f, mean W0_f, gradient term G_f per field):
+//   u_f[n](t) = M1 tanh(z) + ((A K_f + G_f dA/dn) e^{i phi} + c.c.) + (A^2 W2_f e^{2 i phi} + c.c.) + |A|^2 W0_f,
+// A = M2 sech(z), phi = n theta - omega_b t, z = a (n - n0 - c t), G_f the gradient term of A_{2,1,f}
+// (-i dK_f/dtheta: the kernel of a wave packet's neighbouring wavenumbers; G_0 = 0),
 // M2 = sqrt(2 (omega_b - omega) / h_tilde), a = sqrt(2 (omega - omega_b) / omega''), and the mean-flow
 // kink M1 = lambda sqrt(2 omega'' (omega - omega_b)) / |h_tilde| of translation-invariant models
 // (eq:focus_app with K = (1, kappa / (kappa - rho omega^2)) for the resonant chain, whose second
@@ -45,7 +46,7 @@ struct ModelBrightConfig {
   // integrated with rkf78 at `tolerance` (absolute and relative), and its energy is not conserved.
   bool ansatz_ends = false;
   double tolerance = 1e-10;
-  // The O(eps^2) terms (second harmonic, mean offsets) in the ansatz; false: first order only
+  // The O(eps^2) terms (second harmonic, mean offsets, gradient terms) in the ansatz; false: first order only
   // (eq:focus_app as printed).
   bool second_order = true;
 };
