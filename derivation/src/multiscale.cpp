@@ -167,6 +167,16 @@ DerivedCoefficients Solver::run() {
     solve_regular(2, 0, L, rhs);
     note("eps^2 E^0: mean correction A_{2,0} solved directly");
   }
+  // A_{2,0,f} = (free part) + offset |A_{1,1}|^2 + strain_offset d_xi A_{1,0}.
+  std::vector<ex> mean_offset(n_, 0), mean_strain_offset(n_, 0);
+  for (std::size_t f = d.mean_flow ? 1 : 0; f < n_; ++f) {
+    const ex value = known_.at(jets_.get(int(f), 2, 0));
+    const ex free_part = d.mean_flow ? kernel0[f] * jets_.get(0, 2, 0) : ex(0);
+    mean_offset[f] = normal(monomial_coeff(value, {{A11, 1}, {A1m1, 1}}, jets_));
+    if (d.mean_flow) mean_strain_offset[f] = normal(monomial_coeff(value, {{jets_.get(0, 1, 0, 0, 1), 1}}, jets_));
+    const ex rest = value - free_part - mean_offset[f] * A11 * A1m1 - mean_strain_offset[f] * jets_.get(0, 1, 0, 0, 1);
+    if (!normal(expand(rest)).is_zero()) throw std::runtime_error("eps^2 E^0 solution has unexpected terms: " + str(rest));
+  }
 
   // eps^2 E^1: solvability fixes the group velocity c (eq:c).
   split(2, 1, level(2, 1), L, rhs);
@@ -176,6 +186,15 @@ DerivedCoefficients Solver::run() {
     throw std::runtime_error("eps^2 E^1 solvability has unexpected terms");
   d.group_velocity = normal(lsolve(a_xi == 0, s_.c));
   solve_singular(2, 1, L, rhs, d.kernel);
+  // A_{2,1,f} = K_f A_{2,1} + gradient_f d_xi A_{1,1} (field 0: A_{2,1} free, set to 0 in an ansatz).
+  d.kernel_gradient.assign(1, 0);
+  for (std::size_t f = 1; f < n_; ++f) {
+    const ex A11x = jets_.get(0, 1, 1, 0, 1);
+    const ex value = known_.at(jets_.get(int(f), 2, 1));
+    d.kernel_gradient.push_back(normal(monomial_coeff(value, {{A11x, 1}}, jets_)));
+    if (!normal(expand(value - d.kernel[f] * jets_.get(0, 2, 1) - d.kernel_gradient.back() * A11x)).is_zero())
+      throw std::runtime_error("eps^2 E^1 solution has unexpected terms: " + str(value));
+  }
   note("eps^2 E^1: solvability (" + str(normal(a_xi)) + ") d_xi A_{1,1} = 0 gives c = " + str(d.group_velocity));
 
   // eps^2 E^2: second harmonic, invertible under (eq:nonresonance1).
@@ -183,6 +202,12 @@ DerivedCoefficients Solver::run() {
   d.nonresonance1 = normal(-L.determinant());
   solve_regular(2, 2, L, rhs);
   note("eps^2 E^2: non-resonance value -det L_2 = " + str(d.nonresonance1));
+  for (std::size_t f = 0; f < n_; ++f) {
+    const ex value = known_.at(jets_.get(int(f), 2, 2));
+    d.second_harmonic.push_back(normal(monomial_coeff(value, {{A11, 2}}, jets_)));
+    if (!normal(expand(value - d.second_harmonic.back() * A11 * A11)).is_zero())
+      throw std::runtime_error("eps^2 E^2 solution is not proportional to A_{1,1}^2: " + str(value));
+  }
 
   // eps^3 E^0: mean-flow equation (eq:mod2) -> nonresonance2 and lambda (eq:lambda).
   if (d.mean_flow) {
@@ -238,6 +263,12 @@ DerivedCoefficients Solver::run() {
   d.h = explicit_form(d, s_, s_.gamma * d.h_n1_over_gamma / d.nonresonance1);
   d.lambda = explicit_form(d, s_, d.lambda_n2 / d.nonresonance2);
   d.h_tilde = d.h - d.lambda * d.beta;
+  for (std::size_t f = 0; f < n_; ++f) {
+    d.second_harmonic[f] = explicit_form(d, s_, d.second_harmonic[f]);
+    d.kernel_gradient[f] = explicit_form(d, s_, d.kernel_gradient[f]);
+    d.mean_offset.push_back(explicit_form(d, s_, mean_offset[f]) +
+                            (d.mean_flow ? explicit_form(d, s_, mean_strain_offset[f]) * d.lambda : ex(0)));
+  }
   d.h_tilde_numerator = explicit_form(
       d, s_, s_.gamma * d.h_n1_over_gamma * d.nonresonance2 - d.lambda_n2 * s_.gamma * d.beta_over_gamma * d.nonresonance1);
   d.report = report_;

@@ -25,6 +25,20 @@ nlohmann::json to_json(const Model& model, const ModelBrightConfig& c, const Mod
                  {"group_velocity", r.group_velocity}, {"curvature", r.curvature}, {"h_tilde", r.h_tilde},
                  {"lambda", r.mean_flow ? nlohmann::json(r.lambda) : nlohmann::json(nullptr)},
                  {"M1", r.M1},               {"M2", r.M2},               {"inverse_width", r.inverse_width}};
+  // Which terms the ansatz holds, and the second-order ones per field (per unit A^2, |A|^2).
+  nlohmann::json terms = {"kernel vector"};
+  if (r.mean_flow) terms.push_back("mean flow (lambda)");
+  if (r.uses_second_order) terms.insert(terms.end(), {"second harmonic", "mean offset", "kernel gradient"});
+  j["ansatz"]["terms"] = terms;
+  nlohmann::json kernel = nlohmann::json::array(), harmonic = nlohmann::json::array();
+  for (const auto& k : r.kernel) kernel.push_back({k.real(), k.imag()});
+  nlohmann::json gradient = nlohmann::json::array();
+  for (const auto& w : r.second_order.second_harmonic) harmonic.push_back({w.real(), w.imag()});
+  for (const auto& g : r.second_order.kernel_gradient) gradient.push_back({g.real(), g.imag()});
+  j["ansatz"]["kernel"] = kernel;
+  j["ansatz"]["second_harmonic"] = r.uses_second_order ? harmonic : nlohmann::json(nullptr);
+  j["ansatz"]["mean_offset"] = r.uses_second_order ? nlohmann::json(r.second_order.mean) : nlohmann::json(nullptr);
+  j["ansatz"]["kernel_gradient"] = r.uses_second_order ? gradient : nlohmann::json(nullptr);
   j["compared"] = r.mean_flow ? "strains u_f[n] - u_f[n-1]" : "displacements u_f[n]";
   j["max_E"] = r.max_error;
   j["final_E"] = r.final_error;

@@ -20,7 +20,7 @@ namespace lrchain::sim {
 
 // M1, M2, a of the bright breather (eq:focus_app) from the model's coefficients at theta.
 ModelBrightAnsatz::ModelBrightAnsatz(const Model& model, const lrchain_lattice_kernels& kernels, std::size_t branch,
-                                     double theta, std::optional<double> detuning, double n0)
+                                     double theta, std::optional<double> detuning, double n0, bool second_order)
     : nls_(coefficients(model, branch, theta)), n0_(n0) {
   const std::string where = fmt::format("{} at theta = {} on branch {}", model.name(), theta,
                                         model.definition().branch_names.at(branch));
@@ -41,6 +41,14 @@ ModelBrightAnsatz::ModelBrightAnsatz(const Model& model, const lrchain_lattice_k
   M2_ = std::sqrt(2.0 * (omega_b_ - nls_.omega) / nls_.h_tilde);
   a_ = std::sqrt(2.0 * mu / nls_.curvature);
   M1_ = model.definition().mean_flow ? nls_.lambda * std::sqrt(2.0 * nls_.curvature * mu) / std::abs(nls_.h_tilde) : 0.0;
+  uses_second_order_ = second_order;
+  if (second_order) {
+    second_order_ = second_order_terms(model, branch, theta);
+  } else {
+    second_order_.second_harmonic.assign(mode_.kernel.size(), 0.0);
+    second_order_.mean.assign(mode_.kernel.size(), 0.0);
+    second_order_.kernel_gradient.assign(mode_.kernel.size(), 0.0);
+  }
 }
 
 double ModelBrightAnsatz::period() const { return 2.0 * std::numbers::pi / omega_b_; }
@@ -52,10 +60,18 @@ void ModelBrightAnsatz::field(std::size_t f, double n, double t, double& u, doub
   const double e = e1 * e1;
   const double th = std::copysign((1.0 - e) / (1.0 + e), z);
   const double sech = 2.0 * e1 / (1.0 + e);
-  const std::complex<double> carrier = mode_.kernel[f] * std::polar(1.0, n * nls_.theta - omega_b_ * t);
-  u = M1_ * th + 2.0 * M2_ * sech * carrier.real();
-  // d/dt [sech(z) e^{i phase}] = sech (c a tanh - i omega_b) e^{i phase}
-  u_dot = -c * a_ * M1_ * sech * sech + 2.0 * M2_ * sech * (std::complex<double>(c * a_ * th, -omega_b_) * carrier).real();
+  const std::complex<double> phase = std::polar(1.0, n * nls_.theta - omega_b_ * t);
+  const std::complex<double> carrier = mode_.kernel[f] * phase;
+  const std::complex<double> harmonic = second_order_.second_harmonic[f] * phase * phase;
+  const std::complex<double> gradient = second_order_.kernel_gradient[f] * phase;
+  const double A = M2_ * sech;  // the envelope |A|; dA/dn = -a tanh(z) A
+  u = M1_ * th + 2.0 * A * carrier.real() + 2.0 * A * A * harmonic.real() + A * A * second_order_.mean[f] -
+      2.0 * a_ * th * A * gradient.real();
+  // d/dt [sech(z)^k e^{i k phase}] = k sech^k (c a tanh - i omega_b) e^{i k phase};
+  // d/dt [tanh(z) sech(z) e^{i phase}] = sech (c a (tanh^2 - sech^2) - i omega_b tanh) e^{i phase}
+  const std::complex<double> rate(c * a_ * th, -omega_b_), gradient_rate(c * a_ * (th * th - sech * sech), -omega_b_ * th);
+  u_dot = -c * a_ * M1_ * sech * sech + 2.0 * A * (rate * carrier).real() + 4.0 * A * A * (rate * harmonic).real() +
+          2.0 * c * a_ * th * A * A * second_order_.mean[f] - 2.0 * a_ * A * (gradient_rate * gradient).real();
 }
 
 void validate(const ModelBrightConfig& c) {
@@ -87,7 +103,7 @@ double largest_linear_frequency(const lrchain_lattice_kernels& kernels, const st
 ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_kernels& kernels,
                                    const ModelBrightConfig& c) {
   validate(c);
-  const ModelBrightAnsatz ansatz(model, kernels, c.branch, c.theta, c.detuning, c.n0);
+  const ModelBrightAnsatz ansatz(model, kernels, c.branch, c.theta, c.detuning, c.n0, c.second_order);
   const std::vector<double> parameters = lattice_parameters(model);
   ModelBrightResult r;
   r.mean_flow = model.definition().mean_flow;
@@ -130,6 +146,9 @@ ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_ker
   r.M1 = ansatz.M1();
   r.M2 = ansatz.M2();
   r.inverse_width = ansatz.inverse_width();
+  r.kernel = ansatz.mode().kernel;
+  r.second_order = ansatz.second_order();
+  r.uses_second_order = ansatz.uses_second_order();
   const double steps = c.steps_per_period > 0 ? c.steps_per_period : 24;
   r.dt = c.dt > 0 ? c.dt : 2 * std::numbers::pi / largest_linear_frequency(kernels, parameters) / steps;
   IntegratorOptions options;

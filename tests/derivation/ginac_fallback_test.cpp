@@ -1,6 +1,6 @@
 // The GiNaC double-precision fallback of a user model (no C++ compiler): found through the real
 // detection path ($LRCHAIN_MODEL_CXX naming a program that does not exist) and checked against the
-// compiled evaluators of the same file (1e-12 relative).
+// compiled evaluators of the same file (1e-12 relative): NLS coefficients and second-order terms.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -87,6 +87,15 @@ TEST_CASE("without a C++ compiler a model file is evaluated through GiNaC and ag
                             {x.nonresonance2, y.nonresonance2}, {x.h_tilde_numerator, y.h_tilde_numerator}})
           worst = std::max(worst, relative(u, v));
         CHECK(x.regime == y.regime);
+        // The second-order terms (harmonics evaluator), relative to each quantity's size.
+        const SecondOrderTerms p = second_order_terms(a, branch, theta), r = second_order_terms(b, branch, theta);
+        for (std::size_t f = 0; f < p.mean.size(); ++f) {
+          worst = std::max(worst, std::abs(p.second_harmonic[f] - r.second_harmonic[f]) /
+                                      std::max(std::abs(p.second_harmonic[f]), 1e-300));
+          if (p.mean[f] != r.mean[f]) worst = std::max(worst, relative(p.mean[f], r.mean[f]));
+          if (p.kernel_gradient[f] != r.kernel_gradient[f])
+            worst = std::max(worst, std::abs(p.kernel_gradient[f] - r.kernel_gradient[f]) / std::abs(p.kernel_gradient[f]));
+        }
         ++points;
       }
     MESSAGE(name << ": GiNaC double fallback vs compiled, " << points << " points, largest relative difference "

@@ -29,8 +29,8 @@ TEST_CASE("model bright: ansatz ends make a short chain match a long one (klein_
           doctest::test_suite("fast")) {
   {
     // klein_gordon, theta = 3 pi/4, detuning 1e-4: width 1/a = 18 sites, c = 0.061, 50 T_b. N = 60 cuts
-    // the tails at 3.3 widths. Measured: long chain 1.160 %, short with ansatz ends 1.160 % (equal to
-    // 2e-7 relative), short with fixed ends 15.6 %.
+    // the tails at 3.3 widths. Measured: long chain 0.079 %, short with ansatz ends 0.079 %, short with
+    // fixed ends 15.7 %.
     const Model model = shipped_model("klein_gordon");
     ModelBrightConfig c;
     c.branch = model.branch("branch0");
@@ -46,7 +46,7 @@ TEST_CASE("model bright: ansatz ends make a short chain match a long one (klein_
   {
     // fput, theta = pi/2 (mean flow, strain form), detuning 1e-4: c = 0.707, so over 50 T_b the breather
     // moves 157 sites and leaves the chain n = -100..100 through its right end. Measured: long chain
-    // (N = 1000) 0.794 %, short with ansatz ends 0.798 %, short with strain-free ends 117 %.
+    // (N = 1000) 0.015 %, short with ansatz ends 0.015 %, short with strain-free ends 117 %.
     const Model model = shipped_model("fput");
     ModelBrightConfig c;
     c.branch = model.branch("acoustic");

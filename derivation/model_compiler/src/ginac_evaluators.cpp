@@ -97,6 +97,7 @@ GinacModelEvaluators::GinacModelEvaluators(const derivation::ModelDerivation& m,
   intermediates_ = prepare(functions.at(0));
   dispersion_ = prepare(functions.at(1));
   nls_ = prepare(functions.at(2));
+  harmonics_ = prepare(functions.at(3));
 }
 
 // Inputs and earlier outputs substituted as double-precision numbers, each output evaluated by evalf.
@@ -149,10 +150,19 @@ void GinacModelEvaluators::dispersion(double D1, double sigma, const double* q, 
   run(dispersion_, a);
 }
 
+void GinacModelEvaluators::nls(double D1, double sigma, double omega, const double* q, double* out) const {
+  run_consistent(nls_, D1, sigma, omega, q, out);
+}
+
+void GinacModelEvaluators::harmonics(double D1, double sigma, double omega, const double* q, double* out) const {
+  run_consistent(harmonics_, D1, sigma, omega, q, out);
+}
+
 // As the emitted extended-precision nls (model_emission.cpp): the intermediates recomputed from the
 // parameters, (D1, sigma) rescaled so that sin^2 + cos^2 = 1 for the half angle, omega^2 polished
-// on det M = 0, then every output at kNlsDigits digits.
-void GinacModelEvaluators::nls(double D1, double sigma, double omega, const double* q, double* out) const {
+// on det M = 0, then every output of f (nls or harmonics) at kNlsDigits digits.
+void GinacModelEvaluators::run_consistent(const Function& f, double D1, double sigma, double omega, const double* q,
+                                          double* out) const {
   const std::lock_guard<std::mutex> lock(mutex_);
   struct DigitsScope {  // restores GiNaC's global precision on every exit
     long saved = Digits;
@@ -171,7 +181,7 @@ void GinacModelEvaluators::nls(double D1, double sigma, double omega, const doub
     s = s / norm;
   }
   exmap values;
-  for (const auto& [symbol, slot] : nls_.inputs) {
+  for (const auto& [symbol, slot] : f.inputs) {
     if (slot.array == 'q') values[symbol] = q_values.at(std::size_t(slot.index));
     else if (slot.array == 'D') values[symbol] = d1;
     else if (slot.array == 's') values[symbol] = s;
@@ -193,11 +203,11 @@ void GinacModelEvaluators::nls(double D1, double sigma, double omega, const doub
     if (abs(step) > numeric(1, 1000000) * abs(w2)) break;
     w2 -= step;
   }
-  for (const auto& [symbol, slot] : nls_.inputs)
+  for (const auto& [symbol, slot] : f.inputs)
     if (slot.array == 'm') values[symbol] = w2.is_positive() ? ex_to<numeric>(evalf(sqrt(w2))) : precise(omega);
   Arrays a;
   a.out = out;
-  evaluate_outputs(nls_, values, a, true);
+  evaluate_outputs(f, values, a, true);
 }
 
 }  // namespace lrchain

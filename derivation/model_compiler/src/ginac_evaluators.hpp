@@ -20,6 +20,7 @@ class GinacModelEvaluators final : public ModelEvaluatorObject {
   void intermediates(const double* parameters, double* q) const override;
   void dispersion(double D1, double sigma, const double* q, double* coefficients) const override;
   void nls(double D1, double sigma, double omega, const double* q, double* out) const override;
+  void harmonics(double D1, double sigma, double omega, const double* q, double* out) const override;
 
   // Where an input is read from or an output written to: p[i], q[i], w[i], out[i], D1, sigma, omega.
   struct Slot {
@@ -51,8 +52,9 @@ class GinacModelEvaluators final : public ModelEvaluatorObject {
  private:
   void run(const Function& f, const Arrays& a) const;
   void evaluate_outputs(const Function& f, GiNaC::exmap& values, const Arrays& a, bool keep_precision) const;
+  void run_consistent(const Function& f, double D1, double sigma, double omega, const double* q, double* out) const;
 
-  Function intermediates_, dispersion_, nls_;
+  Function intermediates_, dispersion_, nls_, harmonics_;
   std::size_t parameter_count_ = 0;
   mutable std::mutex mutex_;  // GiNaC's reference counts are not thread-safe
 };

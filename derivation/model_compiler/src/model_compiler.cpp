@@ -115,6 +115,7 @@ std::string shared_object_source(const derivation::ModelDerivation& m, const der
          "void lrchain_model_intermediates(const double* p, double* q) { lrchain_model::intermediates(p, q); }\n"
          "void lrchain_model_dispersion(double D1, double sigma, const double* q, double* w) { lrchain_model::dispersion(D1, sigma, q, w); }\n"
          "void lrchain_model_nls(double D1, double sigma, double omega, const double* q, double* out) { lrchain_model::nls(D1, sigma, omega, q, out); }\n"
+         "void lrchain_model_harmonics(double D1, double sigma, double omega, const double* q, double* out) { lrchain_model::harmonics(D1, sigma, omega, q, out); }\n"
          "}\n";
 }
 
@@ -151,11 +152,9 @@ void compile_into_cache(const std::string& source_text, const std::vector<std::s
   }
 }
 
-// The cache entry of a model file's bytes for one kind of code ("evaluators 3", "lattice 1"): the
-// key hashes the bytes, the compiler and the lrchain version.
+// The cache entry of a model file's bytes for one kind of code (kEvaluatorCode, "lattice 1").
 fs::path cache_entry(const std::string& bytes, const std::string& kind, const std::string& prefix) {
-  const std::uint64_t key = fnv1a_64(model_compiler_path() + "\n" + LRCHAIN_VERSION + "\n" + kind + "\n", fnv1a_64(bytes));
-  return cache_directory() / (prefix + model_hash_text(key).substr(2) + ".so");
+  return cache_directory() / (prefix + model_hash_text(model_cache_key(bytes, model_compiler_path(), LRCHAIN_VERSION, kind)).substr(2) + ".so");
 }
 
 template <class Function>
@@ -176,6 +175,7 @@ std::shared_ptr<const ModelDefinition> load_library(const fs::path& library) {
   d->evaluators.intermediates = symbol<void (*)(const double*, double*)>(handle, "lrchain_model_intermediates", library);
   d->evaluators.dispersion = symbol<void (*)(double, double, const double*, double*)>(handle, "lrchain_model_dispersion", library);
   d->evaluators.nls = symbol<void (*)(double, double, double, const double*, double*)>(handle, "lrchain_model_nls", library);
+  d->evaluators.harmonics = symbol<void (*)(double, double, double, const double*, double*)>(handle, "lrchain_model_harmonics", library);
   if (d->name.empty() || d->branch_names.empty()) throw std::runtime_error(library.string() + ": no model description");
   d->keep_alive = owner;
   return d;
@@ -199,6 +199,13 @@ std::shared_ptr<const lrchain_lattice_kernels> load_lattice_library(const fs::pa
 
 }  // namespace
 
+std::uint64_t model_cache_key(const std::string& bytes, const std::string& compiler, const std::string& version,
+                              const std::string& kind) {
+  return fnv1a_64(compiler + "\n" + version + "\n" + kind + "\n", fnv1a_64(bytes));
+}
+
+std::string model_compiler_version() { return LRCHAIN_VERSION; }
+
 std::string model_compiler_path() {
   const char* chosen = std::getenv("LRCHAIN_MODEL_CXX");
   return chosen && *chosen ? chosen : LRCHAIN_CXX_COMPILER;
@@ -209,7 +216,7 @@ bool model_compiler_available() { return program_in_path(model_compiler_path());
 std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, CompiledModelInfo* info) {
   const std::string bytes = read_bytes(path);
   const std::string compiler = model_compiler_path();
-  const fs::path library = cache_entry(bytes, "evaluators 3", "model-");
+  const fs::path library = cache_entry(bytes, kEvaluatorCode, "model-");
   const fs::path directory = library.parent_path();
   if (info) info->library = library;
   std::error_code ec;

@@ -191,6 +191,58 @@ EmittedFunction nls_function(const ModelDerivation& m, const Symbols& s, const s
   return f;
 }
 
+// Real and imaginary parts of a derived expression held with complex numbers (complex Bloch
+// kernels), each a ratio of real polynomials reduced modulo sigma^2 = D1 - D1^2/4 (as real_form).
+std::pair<ex, ex> complex_parts(const ex& e, const Symbols& s) {
+  if (!e.has(I)) return {e, 0};
+  const ex nd = normal(e).numer_denom();
+  const ex relation = pow(s.sigma, 2) - s.D1 + pow(s.D1, 2) / 4;
+  const auto reduced = [&](const ex& p) { return expand(rem(expand(p), relation, s.sigma)); };
+  const ex conjugate_denominator = nd.op(1).conjugate();
+  const ex numerator = expand(nd.op(0) * conjugate_denominator), denominator = expand(nd.op(1) * conjugate_denominator);
+  if (!reduced(denominator.imag_part()).is_zero()) throw std::runtime_error("|denominator|^2 is not real");
+  const ex real_denominator = reduced(denominator.real_part());
+  return {reduced(numerator.real_part()) / real_denominator, reduced(numerator.imag_part()) / real_denominator};
+}
+
+// The second-order terms per field f at out[5 f + lrchain::HarmonicOutput]: the second harmonic
+// A_{2,2,f} / A_{1,1}^2 (real, imaginary part), the mean A_{2,0,f} / |A_{1,1}|^2 and the gradient
+// term of A_{2,1,f} per unit d_xi A_{1,1} (real, imaginary part), in `real_type`
+// from consistent inputs (as the extended nls; not a hot path: an ansatz calls it once).
+EmittedFunction harmonics_function(const ModelDerivation& m, const Symbols& s, const std::string& real_type,
+                                   bool recompute_intermediates) {
+  const DerivedCoefficients& c = m.coefficients;
+  EmittedFunction f;
+  f.name = "harmonics";
+  f.comment = "Per field f, out[5f..5f+4]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean "
+              "A_{2,0,f}/|A_{1,1}|^2, gradient term of A_{2,1,f} per d_xi A_{1,1} (real, imaginary) (lrchain::HarmonicOutput).";
+  f.parameter_list = "double D1, double sigma, double omega, const double* q, double* out";
+  f.inputs = {{s.D1, "D1"}, {s.sigma, "sigma"}, {s.omega, "omega"}};
+  for (const auto& input : q_inputs(m)) f.inputs.push_back(input);
+  for (std::size_t field = 0; field < c.second_harmonic.size(); ++field) {
+    const auto [real_part, imaginary_part] = complex_parts(c.second_harmonic[field], s);
+    f.outputs.emplace_back("out[" + std::to_string(5 * field) + "]", real_part);
+    f.outputs.emplace_back("out[" + std::to_string(5 * field + 1) + "]", imaginary_part);
+    f.outputs.emplace_back("out[" + std::to_string(5 * field + 2) + "]", real_form(c.mean_offset[field], s));
+    const auto [gradient_real, gradient_imaginary] = complex_parts(c.kernel_gradient[field], s);
+    f.outputs.emplace_back("out[" + std::to_string(5 * field + 3) + "]", gradient_real);
+    f.outputs.emplace_back("out[" + std::to_string(5 * field + 4) + "]", gradient_imaginary);
+  }
+  if (real_type == "double") {
+    f.prologue = "  (void)sigma;\n  (void)q;\n";
+    return f;
+  }
+  const std::string count = std::to_string(f.outputs.size());
+  f.real_type = real_type;
+  f.parameter_list = "double D1_in, double sigma_in, double omega_in, const double* q, double* out";
+  f.local_outputs = "o";
+  f.prologue = "  using real [[maybe_unused]] = " + real_type + ";\n"
+               "  const auto magnitude = [](real x) { return x < 0 ? -x : x; };\n" + extended_q(f, m, recompute_intermediates) +
+               consistent_inputs(int(m.branches.size())) + "  real o[" + count + "];\n";
+  f.epilogue = "  for (int k = 0; k < " + count + "; ++k) out[k] = static_cast<double>(o[k]);\n";
+  return f;
+}
+
 // Below this D1 (theta < 0.05) the double nls hands over to its long double version: there the
 // acoustic omega'' = (W'' - 2 c^2) / (2 omega), W = omega^2, loses digits as 1/theta^2 (measured on
 // the resonant chain over its sampled parameters: 6.6e-12 at theta = 0.02, 9.3e-13 at 0.05, 2.3e-13 at 0.1).
@@ -372,7 +424,8 @@ std::string evaluator_precision(double cancellation) {
 }
 
 std::vector<EmittedFunction> model_evaluator_definitions(const ModelDerivation& m, const Symbols& s) {
-  return {intermediates_function(m), dispersion_function(m, s), nls_function(m, s, "double")};
+  return {intermediates_function(m), dispersion_function(m, s), nls_function(m, s, "double"),
+          harmonics_function(m, s, "double", true)};
 }
 
 std::string model_evaluator_functions(const ModelDerivation& m, const Symbols& s, const std::string& arithmetic) {
@@ -383,7 +436,7 @@ std::string model_evaluator_functions(const ModelDerivation& m, const Symbols& s
     extended.comment = "nls() in long double from consistent inputs, where the double nls loses digits.";
     return emit_function(intermediates_function(m)) + "\n" + emit_function(dispersion_function(m, s)) + "\n" +
            emit_function(dispersion_extended_function(m, s, "long double")) + "\n" + emit_function(extended) + "\n" +
-           emit_function(double_nls_function(m, s));
+           emit_function(double_nls_function(m, s)) + "\n" + emit_function(harmonics_function(m, s, "long double", false));
   }
   const double cancellation = evaluator_cancellation(m, s);
   const std::string real_type = arithmetic.empty() ? evaluator_precision(cancellation) : arithmetic;
@@ -396,7 +449,7 @@ std::string model_evaluator_functions(const ModelDerivation& m, const Symbols& s
   std::snprintf(measured, sizeof measured, " In %s: the terms of its factors cancel by up to %.2g (measured at derivation).",
                 real_type.c_str(), cancellation);
   nls.comment += measured;
-  return text + emit_function(nls);
+  return text + emit_function(nls) + "\n" + emit_function(harmonics_function(m, s, real_type, true));
 }
 
 std::string model_definition_function(const ModelDerivation& m) {
@@ -419,7 +472,7 @@ std::string model_definition_function(const ModelDerivation& m) {
   for (const auto& b : m.branches) out << "  d.branch_names.push_back(" << quoted(b.name) << ");\n";
   out << "  d.mean_flow = " << (m.coefficients.mean_flow ? "true" : "false") << ";\n"
       << "  d.degree = " << m.branches.size() << ";\n"
-      << "  d.evaluators = {&intermediates, &dispersion, &nls};\n"
+      << "  d.evaluators = {&intermediates, &dispersion, &nls, &harmonics, nullptr};\n"
          "  return d;\n}\n";
   return out.str();
 }

@@ -3,6 +3,7 @@
 // ranges, branch names and the emitted double evaluators (shipped models: compiled into the
 // library from lib/include/lrchain/generated/model_*.hpp; a user's file: compiled at run time and
 // loaded by the model compiler). The library never runs the symbolic derivation itself.
+#include <complex>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -23,10 +24,22 @@ enum ModelOutput : int {
   model_output_count
 };
 
+// Outputs of a model's harmonics evaluator for field f: out[harmonic_output_count f + HarmonicOutput]:
+// the second-order terms of the multiple-scale expansion
+//   u_f = eps (A_{1,1} K_f E + c.c.) + eps^2 (A_{2,2,f} E^2 + A_{2,1,f} E + c.c. + A_{2,0,f}) + ...,
+// E = e^{i(n theta - omega t)}: the second harmonic A_{2,2,f} / A_{1,1}^2, the mean A_{2,0,f} /
+// |A_{1,1}|^2 (translation-invariant models: field 0's mean is the mean flow, lambda, reported as 0;
+// other fields' is their offset from it) and the gradient term G_f of A_{2,1,f} = K_f A_{2,1} + G_f
+// d_xi A_{1,1} (G_0 = 0; G_f = -i dK_f/dtheta along the branch).
+enum HarmonicOutput : int {
+  harmonic_second_real, harmonic_second_imaginary, harmonic_mean, harmonic_gradient_real, harmonic_gradient_imaginary,
+  harmonic_output_count
+};
+
 // Highest degree in omega^2 of det M a model may have (number of fields).
 inline constexpr Index kMaxModelDegree = 6;
 
-// The same three evaluators held by an object: a user model evaluated through GiNaC in double
+// The same evaluators held by an object: a user model evaluated through GiNaC in double
 // precision when no C++ compiler is available (lrchain_model_compiler). Safe to call concurrently.
 class ModelEvaluatorObject {
  public:
@@ -34,6 +47,7 @@ class ModelEvaluatorObject {
   virtual void intermediates(const double* parameters, double* q) const = 0;
   virtual void dispersion(double D1, double sigma, const double* q, double* coefficients) const = 0;
   virtual void nls(double D1, double sigma, double omega, const double* q, double* out) const = 0;
+  virtual void harmonics(double D1, double sigma, double omega, const double* q, double* out) const = 0;
 };
 
 // The evaluator functions emitted for a model. q holds the parameter values followed by the named
@@ -42,6 +56,7 @@ struct ModelEvaluators {
   void (*intermediates)(const double* parameters, double* q) = nullptr;  // q = parameters, intermediates
   void (*dispersion)(double D1, double sigma, const double* q, double* coefficients) = nullptr;  // det M, ascending in omega^2
   void (*nls)(double D1, double sigma, double omega, const double* q, double* out) = nullptr;     // ModelOutput order
+  void (*harmonics)(double D1, double sigma, double omega, const double* q, double* out) = nullptr;  // HarmonicOutput per field
   std::shared_ptr<const ModelEvaluatorObject> object;  // used instead when the functions are null
 
   // The functions when emitted and compiled, else the object.
@@ -56,6 +71,10 @@ struct ModelEvaluators {
   void evaluate_nls(double D1, double sigma, double omega, const double* q, double* out) const {
     if (nls) nls(D1, sigma, omega, q, out);
     else object->nls(D1, sigma, omega, q, out);
+  }
+  void evaluate_harmonics(double D1, double sigma, double omega, const double* q, double* out) const {
+    if (harmonics) harmonics(D1, sigma, omega, q, out);
+    else object->harmonics(D1, sigma, omega, q, out);
   }
 };
 
@@ -127,6 +146,16 @@ NlsCoefficients coefficients(const Model& model, std::size_t branch, double thet
 // omega^2 is not positive. For loops over theta or a parameter (regime maps). Allocation-free.
 bool coefficients_at(const ModelDefinition& definition, const double* q, std::size_t branch, double theta,
                      NlsCoefficients& out) noexcept;
+
+// The second-order terms of the multiple-scale expansion of `model` on `branch` at theta, per field
+// (HarmonicOutput): the second harmonic per unit A^2, the mean per unit |A|^2 and the gradient term
+// per unit dA/dn, where A is the envelope of field 0 (u_0 = A E + c.c. + ...). Same checks and exceptions as coefficients().
+struct SecondOrderTerms {
+  std::vector<std::complex<double>> second_harmonic;  // A_{2,2,f} / A_{1,1}^2
+  std::vector<double> mean;                           // A_{2,0,f} / |A_{1,1}|^2 (mean flow: offset from it)
+  std::vector<std::complex<double>> kernel_gradient;  // G_f: A_{2,1,f} = K_f A_{2,1} + G_f d_xi A_{1,1}
+};
+SecondOrderTerms second_order_terms(const Model& model, std::size_t branch, double theta);
 
 // Roots in omega^2 of the polynomial sum_k coefficients[k] w^k (k = 0..degree, degree <=
 // kMaxModelDegree), real parts ascending, into roots[0..degree); returns false when a root is not

@@ -10,14 +10,16 @@
 
 namespace lrchain::derivation {
 
-// The three functions intermediates(p, q), dispersion(D1, sigma, q, w), nls(D1, sigma, omega, q, out).
+// The functions intermediates(p, q), dispersion(D1, sigma, q, w), nls(D1, sigma, omega, q, out) and
+// harmonics(D1, sigma, omega, q, out) (the second-order terms per field, in long double or the nls's
+// extended type).
 // nls computes in `arithmetic` ("double", "long double", "__float128"; empty: evaluator_precision of
 // the measured cancellation) from inputs made consistent at that precision (helpers emitted too);
 // in "double", omega'' comes from implicit differentiation of det M, and points with theta < 0.05 or
 // where h, h_tilde or a non-resonance value cancels by more than 1e4 go to a long double nls_extended.
 std::string model_evaluator_functions(const ModelDerivation& m, const Symbols& s, const std::string& arithmetic = "");
 
-// The same three as expressions (what model_evaluator_functions prints), in that order: inputs and
+// The same four as expressions (what model_evaluator_functions prints, in double), in that order: inputs and
 // outputs are named p[i], q[i], D1, sigma, omega, w[k], out[k].
 std::vector<EmittedFunction> model_evaluator_definitions(const ModelDerivation& m, const Symbols& s);
 

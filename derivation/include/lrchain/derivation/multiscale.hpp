@@ -30,6 +30,15 @@ struct DerivedCoefficients {
   GiNaC::ex lambda_n2;                 // lambda * nonresonance2 (smooth)
   // Assembled (contain the symbols c and gamma where noted above, substituted here):
   GiNaC::ex curvature, beta, h, lambda, h_tilde, h_tilde_numerator;  // fully explicit
+  // Second-order terms of the expansion per field f (fully explicit): the second harmonic
+  // A_{2,2,f} / A_{1,1}^2 (complex in general) and the mean A_{2,0,f} / |A_{1,1}|^2. On-site models:
+  // every field's static offset. Translation-invariant models: field 0's is 0 (its mean is the mean
+  // flow A_{1,0}, with d_xi A_{1,0} = lambda |A_{1,1}|^2) and field f's is its offset from it, the
+  // d_xi A_{1,0} part of A_{2,0,f} included through lambda.
+  std::vector<GiNaC::ex> second_harmonic, mean_offset;
+  // The envelope-gradient term of A_{2,1,f} = K_f A_{2,1} + kernel_gradient_f d_xi A_{1,1} per field
+  // (0 for field 0; = -i dK_f/dtheta along the branch): a wave packet's kernel varies with its wavenumbers.
+  std::vector<GiNaC::ex> kernel_gradient;
   std::vector<std::string> report;     // the derivation's own consistency checks, one line each
   std::vector<GiNaC::ex> vanishing_modulo_dispersion;  // coefficients that must be 0 on det L_1 = 0
   // Translation-invariant model (singular L_0): mean flow A_{1,0}, lambda, h_tilde = h - lambda beta.

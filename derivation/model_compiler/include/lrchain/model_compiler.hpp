@@ -3,6 +3,7 @@
 // C++, compile them with the compiler lrchain was built with into a per-user cache
 // ($XDG_CACHE_HOME/lrchain, default ~/.cache/lrchain) keyed by the file's bytes, the compiler and
 // the lrchain version, and load the shared object. A second call with the same file reuses it.
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -36,6 +37,17 @@ std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const std::
 // Throws the InputError of compile_model_lattice when the lattice code of `path` is not cached and
 // the compiler is not installed: lattice runs call it before anything else.
 void check_lattice_compiler(const std::filesystem::path& path);
+
+// Version of the emitted evaluator code (its functions and their outputs): part of the cache key,
+// so a cached shared object of an older emitter is never loaded. "evaluators 3": harmonics() added.
+inline constexpr const char* kEvaluatorCode = "evaluators 4";
+
+// The cache key of a model file's bytes compiled by `compiler` for lrchain `version` into `kind` of
+// code (kEvaluatorCode, or the lattice code's): FNV-1a 64 of all four.
+std::uint64_t model_cache_key(const std::string& bytes, const std::string& compiler, const std::string& version,
+                              const std::string& kind);
+// The lrchain version the cache keys use (the project's version at build time).
+std::string model_compiler_version();
 
 // The compiler: $LRCHAIN_MODEL_CXX if set, else the one recorded at configure time; and whether it
 // can be run.

@@ -125,6 +125,66 @@ inline void nls(double D1_in, double sigma_in, double omega_in, const double* q,
   for (int k = 0; k < 13; ++k) out[k] = static_cast<double>(o[k]);
 }
 
+// Per field f, out[5f..5f+4]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean A_{2,0,f}/|A_{1,1}|^2, gradient term of A_{2,1,f} per d_xi A_{1,1} (real, imaginary) (lrchain::HarmonicOutput).
+inline void harmonics(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
+  using real [[maybe_unused]] = __float128;
+  const auto magnitude = [](real x) { return x < 0 ? -x : x; };
+  long double parameters[3], intermediates[6];
+  for (int i = 0; i < 3; ++i) parameters[i] = q[i];
+  intermediates_extended(parameters, intermediates);
+  real Q[6];
+  for (int i = 0; i < 6; ++i) Q[i] = intermediates[i];
+  // (sin, cos)(theta/2) from D1 = 4 sin^2, sigma = 2 sin cos, rescaled so that sin^2 + cos^2 = 1 here.
+  real D1 = D1_in, sigma = sigma_in;
+  if (D1_in > 0.0) {
+    const real norm = real(0.25) * D1_in + real(sigma_in) * sigma_in / D1_in;
+    D1 = D1_in / norm;
+    sigma = sigma_in / norm;
+  }
+  // omega^2: Newton steps on det M = 0 from the double root.
+  real w[3];
+  dispersion_extended(D1, sigma, Q, w);
+  real w2 = real(omega_in) * omega_in;
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    real p = 0, dp = 0;
+    for (int k = 2; k >= 0; --k) {
+      dp = dp * w2 + p;
+      p = p * w2 + w[k];
+    }
+    const real step = dp != 0 ? p / dp : real(0);
+    if (!(magnitude(step) <= 1e-6 * w2)) break;
+    w2 -= step;
+  }
+  real omega = omega_in;
+  for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);
+  real o[10];
+  o[0] = 0.0;
+  const real t0 = (D1 * D1);
+  const real t1 = (Q[3] * Q[3]);
+  const real t2 = -(t0 * t1);
+  const real t3 = (omega * omega);
+  const real t4 = (omega * omega * omega * omega);
+  const real t5 = -(D1);
+  const real t6 = (t5 + 4.0);
+  const real t7 = (Q[3] * Q[3] * Q[3]);
+  const real t8 = (omega * omega * omega * omega * omega * omega);
+  o[1] = -(2.0 * (-(t0 * t7) - (2.0 * t4 * Q[3]) - (8.0 * t4 * Q[2] * Q[3]) + 2.0 * t1 * t3 * D1 + 2.0 * t7 * D1 + 4.0 * t8 * Q[2]) * Q[4] * sigma / ((t2 - (8.0 * t3 * Q[2] * Q[3]) - (8.0 * t3 * Q[3]) + 16.0 * t4 * Q[2] + 4.0 * t1 * D1) * t6 * (Q[3] * Q[3])));
+  o[2] = 0.0;
+  o[3] = 0.0;
+  o[4] = 0.0;
+  const real t9 = (-(t4 * D1) - (2.0 * t1 * D1) - (6.0 * t4) + 6.0 * t3 * D1 * Q[3]);
+  o[5] = -((real(1.0) / 2.0) * t9 * D1 * Q[4] / ((t2 - (8.0 * t3 * Q[2] * Q[3]) - (8.0 * t3 * Q[3]) + 16.0 * t4 * Q[2] + 4.0 * t1 * D1) * Q[3]));
+  o[6] = t9 * (t5 + 2.0) * Q[4] * sigma / ((t2 - (8.0 * t3 * Q[2] * Q[3]) - (8.0 * t3 * Q[3]) + 16.0 * t4 * Q[2] + 4.0 * t1 * D1) * t6 * Q[3]);
+  const real t10 = (Q[2] * Q[2]);
+  const real t11 = (Q[3] * Q[3] * Q[3] * Q[3]);
+  const real t12 = (Q[3] * Q[3] * Q[3] * Q[3] * Q[3]);
+  const real t13 = (-(t1 * D1) - (4.0 * t3 * Q[2] * Q[3]) + t4 * Q[2] + 4.0 * t1 + 4.0 * t1 * Q[2]);
+  o[7] = 4.0 * (t13 * t13) * (t4 - (t3 * D1 * Q[3]) + t1 * D1) * t3 * Q[4] / ((-(t0 * t7 * t4) - (t0 * t7 * t4 * Q[2]) - (12.0 * t7 * t4 * D1 * Q[2]) - (16.0 * t1 * t8 * Q[2]) - (2.0 * t10 * (omega * omega * omega * omega * omega * omega * omega * omega * omega * omega)) - (32.0 * t10 * t11 * t3) - (32.0 * t11 * t3) - (4.0 * t0 * t12) - (4.0 * t0 * t12 * Q[2]) - (48.0 * t10 * t1 * t8) - (64.0 * t11 * t3 * Q[2]) + 16.0 * t10 * (omega * omega * omega * omega * omega * omega * omega * omega) * Q[3] + 16.0 * t12 * D1 + 16.0 * t12 * D1 * Q[2] + 2.0 * t0 * t11 * t3 + 4.0 * t0 * t11 * t3 * Q[2] + 4.0 * t1 * t8 * D1 * Q[2] + 4.0 * t7 * t4 * D1 + 64.0 * t10 * t7 * t4 + 64.0 * t7 * t4 * Q[2]) * t6 * (Q[3] * Q[3] * Q[3]));
+  o[8] = -((real(1.0) / 2.0) * (t2 - (2.0 * t4 * Q[2]) - (8.0 * t1) - (8.0 * t1 * Q[2]) + 6.0 * t1 * D1 + 8.0 * t3 * Q[2] * Q[3]) * Q[3] / (t13 * (-(t3 * Q[2]) + 2.0 * Q[3])));
+  o[9] = t6 * t7 * sigma / (t13 * (-(t3 * Q[2]) + 2.0 * Q[3]));
+  for (int k = 0; k < 10; ++k) out[k] = static_cast<double>(o[k]);
+}
+
 // The model's description for lrchain::Model (parameters, ranges, branches, evaluators).
 inline lrchain::ModelDefinition definition() {
   lrchain::ModelDefinition d;
@@ -141,7 +201,7 @@ inline lrchain::ModelDefinition definition() {
   d.branch_names.push_back("optical");
   d.mean_flow = true;
   d.degree = 2;
-  d.evaluators = {&intermediates, &dispersion, &nls};
+  d.evaluators = {&intermediates, &dispersion, &nls, &harmonics, nullptr};
   return d;
 }
 

@@ -96,6 +96,47 @@ inline void nls(double D1_in, double sigma_in, double omega_in, const double* q,
   for (int k = 0; k < 13; ++k) out[k] = static_cast<double>(o[k]);
 }
 
+// Per field f, out[5f..5f+4]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean A_{2,0,f}/|A_{1,1}|^2, gradient term of A_{2,1,f} per d_xi A_{1,1} (real, imaginary) (lrchain::HarmonicOutput).
+inline void harmonics(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
+  using real [[maybe_unused]] = long double;
+  const auto magnitude = [](real x) { return x < 0 ? -x : x; };
+  long double parameters[2], intermediates[5];
+  for (int i = 0; i < 2; ++i) parameters[i] = q[i];
+  intermediates_extended(parameters, intermediates);
+  real Q[5];
+  for (int i = 0; i < 5; ++i) Q[i] = intermediates[i];
+  // (sin, cos)(theta/2) from D1 = 4 sin^2, sigma = 2 sin cos, rescaled so that sin^2 + cos^2 = 1 here.
+  real D1 = D1_in, sigma = sigma_in;
+  if (D1_in > 0.0) {
+    const real norm = real(0.25) * D1_in + real(sigma_in) * sigma_in / D1_in;
+    D1 = D1_in / norm;
+    sigma = sigma_in / norm;
+  }
+  // omega^2: Newton steps on det M = 0 from the double root.
+  real w[2];
+  dispersion_extended(D1, sigma, Q, w);
+  real w2 = real(omega_in) * omega_in;
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    real p = 0, dp = 0;
+    for (int k = 1; k >= 0; --k) {
+      dp = dp * w2 + p;
+      p = p * w2 + w[k];
+    }
+    const real step = dp != 0 ? p / dp : real(0);
+    if (!(magnitude(step) <= 1e-6 * w2)) break;
+    w2 -= step;
+  }
+  real omega = omega_in;
+  for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);
+  real o[5];
+  o[0] = 0.0;
+  o[1] = -(2.0 * D1 * Q[3] * sigma / ((-((D1 * D1) * Q[2]) - (4.0 * (omega * omega)) + 4.0 * D1 * Q[2])));
+  o[2] = 0.0;
+  o[3] = 0.0;
+  o[4] = 0.0;
+  for (int k = 0; k < 5; ++k) out[k] = static_cast<double>(o[k]);
+}
+
 // The model's description for lrchain::Model (parameters, ranges, branches, evaluators).
 inline lrchain::ModelDefinition definition() {
   lrchain::ModelDefinition d;
@@ -110,7 +151,7 @@ inline lrchain::ModelDefinition definition() {
   d.branch_names.push_back("acoustic");
   d.mean_flow = true;
   d.degree = 1;
-  d.evaluators = {&intermediates, &dispersion, &nls};
+  d.evaluators = {&intermediates, &dispersion, &nls, &harmonics, nullptr};
   return d;
 }
 

@@ -117,6 +117,57 @@ inline void nls(double D1_in, double sigma_in, double omega_in, const double* q,
   for (int k = 0; k < 13; ++k) out[k] = static_cast<double>(o[k]);
 }
 
+// Per field f, out[5f..5f+4]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean A_{2,0,f}/|A_{1,1}|^2, gradient term of A_{2,1,f} per d_xi A_{1,1} (real, imaginary) (lrchain::HarmonicOutput).
+inline void harmonics(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
+  using real [[maybe_unused]] = long double;
+  const auto magnitude = [](real x) { return x < 0 ? -x : x; };
+  long double parameters[7], intermediates[7];
+  for (int i = 0; i < 7; ++i) parameters[i] = q[i];
+  intermediates_extended(parameters, intermediates);
+  real Q[7];
+  for (int i = 0; i < 7; ++i) Q[i] = intermediates[i];
+  // (sin, cos)(theta/2) from D1 = 4 sin^2, sigma = 2 sin cos, rescaled so that sin^2 + cos^2 = 1 here.
+  real D1 = D1_in, sigma = sigma_in;
+  if (D1_in > 0.0) {
+    const real norm = real(0.25) * D1_in + real(sigma_in) * sigma_in / D1_in;
+    D1 = D1_in / norm;
+    sigma = sigma_in / norm;
+  }
+  // omega^2: Newton steps on det M = 0 from the double root.
+  real w[3];
+  dispersion_extended(D1, sigma, Q, w);
+  real w2 = real(omega_in) * omega_in;
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    real p = 0, dp = 0;
+    for (int k = 2; k >= 0; --k) {
+      dp = dp * w2 + p;
+      p = p * w2 + w[k];
+    }
+    const real step = dp != 0 ? p / dp : real(0);
+    if (!(magnitude(step) <= 1e-6 * w2)) break;
+    w2 -= step;
+  }
+  real omega = omega_in;
+  for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);
+  real o[10];
+  const real t0 = (D1 * D1);
+  const real t1 = (omega * omega);
+  const real t2 = (omega * omega * omega * omega);
+  o[0] = 4.0 * (Q[6] * Q[6] * Q[6]) * (omega * omega * omega * omega * omega * omega) * Q[4] / ((-(t0 * Q[0] * Q[3]) - (16.0 * t1 * D1 * Q[0] * Q[6]) - (4.0 * t1 * Q[3]) - (4.0 * t1 * Q[3] * Q[6]) + 16.0 * t2 * Q[6] + 4.0 * t0 * t1 * Q[0] * Q[6] + 4.0 * D1 * Q[0] * Q[3]) * (((-(t1 * Q[6]) + Q[3])) * ((-(t1 * Q[6]) + Q[3]))));
+  o[1] = 2.0 * (-(Q[3]) + 4.0 * t1 * Q[6]) * D1 * Q[1] * sigma / ((-(t0 * Q[0] * Q[3]) - (16.0 * t1 * D1 * Q[0] * Q[6]) - (4.0 * t1 * Q[3]) - (4.0 * t1 * Q[3] * Q[6]) + 16.0 * t2 * Q[6] + 4.0 * t0 * t1 * Q[0] * Q[6] + 4.0 * D1 * Q[0] * Q[3]));
+  o[2] = 0.0;
+  o[3] = 0.0;
+  o[4] = 0.0;
+  const real t3 = (Q[6] * Q[6]);
+  o[5] = (-(t0 * Q[0]) - (4.0 * t1) + 4.0 * D1 * Q[0]) * t3 * t2 * Q[4] / ((-(t0 * Q[0] * Q[3]) - (16.0 * t1 * D1 * Q[0] * Q[6]) - (4.0 * t1 * Q[3]) - (4.0 * t1 * Q[3] * Q[6]) + 16.0 * t2 * Q[6] + 4.0 * t0 * t1 * Q[0] * Q[6] + 4.0 * D1 * Q[0] * Q[3]) * (((-(t1 * Q[6]) + Q[3])) * ((-(t1 * Q[6]) + Q[3]))));
+  o[6] = -(2.0 * D1 * Q[1] * Q[3] * sigma / ((-(t0 * Q[0] * Q[3]) - (16.0 * t1 * D1 * Q[0] * Q[6]) - (4.0 * t1 * Q[3]) - (4.0 * t1 * Q[3] * Q[6]) + 16.0 * t2 * Q[6] + 4.0 * t0 * t1 * Q[0] * Q[6] + 4.0 * D1 * Q[0] * Q[3])));
+  o[7] = 2.0 * t3 * t2 * Q[4] / ((((-(t1 * Q[6]) + Q[3])) * ((-(t1 * Q[6]) + Q[3]))) * Q[3]);
+  o[8] = 0.0;
+  const real t4 = (Q[3] * Q[3]);
+  o[9] = -(2.0 * Q[0] * Q[3] * Q[6] * sigma / ((t4 - (2.0 * t1 * Q[3] * Q[6]) + t4 * Q[6] + t3 * t2)));
+  for (int k = 0; k < 10; ++k) out[k] = static_cast<double>(o[k]);
+}
+
 // The model's description for lrchain::Model (parameters, ranges, branches, evaluators).
 inline lrchain::ModelDefinition definition() {
   lrchain::ModelDefinition d;
@@ -134,7 +185,7 @@ inline lrchain::ModelDefinition definition() {
   d.branch_names.push_back("optical");
   d.mean_flow = true;
   d.degree = 2;
-  d.evaluators = {&intermediates, &dispersion, &nls};
+  d.evaluators = {&intermediates, &dispersion, &nls, &harmonics, nullptr};
   return d;
 }
 

@@ -1,0 +1,20 @@
+// The user-model cache key (model_compiler.hpp): it changes with the file's bytes, the compiler, the
+// lrchain version and the kind of emitted code, so a cached shared object is never reused across any.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "lrchain/model_compiler.hpp"
+
+using namespace lrchain;
+
+TEST_CASE("the model cache key depends on the file, the compiler, the lrchain version and the emitter") {
+  const std::string bytes = "name = \"x\"\n", compiler = "/usr/bin/c++", version = model_compiler_version();
+  const auto key = model_cache_key(bytes, compiler, version, kEvaluatorCode);
+  CHECK(key == model_cache_key(bytes, compiler, version, kEvaluatorCode));  // deterministic
+  CHECK(key != model_cache_key(bytes + " ", compiler, version, kEvaluatorCode));
+  CHECK(key != model_cache_key(bytes, "/usr/bin/clang++", version, kEvaluatorCode));
+  CHECK(key != model_cache_key(bytes, compiler, version + ".1", kEvaluatorCode));
+  CHECK(key != model_cache_key(bytes, compiler, version, "evaluators 2"));  // the emitter before harmonics()
+  CHECK(!version.empty());
+}
