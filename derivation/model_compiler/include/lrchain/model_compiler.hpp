@@ -39,7 +39,8 @@ std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const std::
 void check_lattice_compiler(const std::filesystem::path& path);
 
 // Version of the emitted evaluator code (its functions and their outputs): part of the cache key,
-// so a cached shared object of an older emitter is never loaded. "evaluators 3": harmonics() added.
+// so a cached shared object of an older emitter is never loaded. "evaluators 4": harmonics() and the
+// shared extended-precision prologue (model_evaluator_support.hpp).
 inline constexpr const char* kEvaluatorCode = "evaluators 4";
 
 // The cache key of a model file's bytes compiled by `compiler` for lrchain `version` into `kind` of
