@@ -168,30 +168,13 @@ inline void harmonics(double D1_in, double sigma_in, double omega_in, const doub
   using real [[maybe_unused]] = long double;
   const auto magnitude = [](real x) { return x < 0 ? -x : x; };
   real Q[7];
-  for (int i = 0; i < 7; ++i) Q[i] = q[i];
-  // (sin, cos)(theta/2) from D1 = 4 sin^2, sigma = 2 sin cos, rescaled so that sin^2 + cos^2 = 1 here.
-  real D1 = D1_in, sigma = sigma_in;
-  if (D1_in > 0.0) {
-    const real norm = real(0.25) * D1_in + real(sigma_in) * sigma_in / D1_in;
-    D1 = D1_in / norm;
-    sigma = sigma_in / norm;
-  }
-  // omega^2: Newton steps on det M = 0 from the double root.
+  lrchain::model_evaluator::widen(q, Q, 7);
+  // D1, sigma and omega consistent in `real` (sin^2 + cos^2 = 1 for theta/2, det M = 0).
+  real D1, sigma;
+  lrchain::model_evaluator::consistent_half_angle(D1_in, sigma_in, D1, sigma);
   real w[3];
   dispersion_extended(D1, sigma, Q, w);
-  real w2 = real(omega_in) * omega_in;
-  for (int iteration = 0; iteration < 3; ++iteration) {
-    real p = 0, dp = 0;
-    for (int k = 2; k >= 0; --k) {
-      dp = dp * w2 + p;
-      p = p * w2 + w[k];
-    }
-    const real step = dp != 0 ? p / dp : real(0);
-    if (!(magnitude(step) <= 1e-6 * w2)) break;
-    w2 -= step;
-  }
-  real omega = omega_in;
-  for (int iteration = 0; iteration < 2 && w2 > 0; ++iteration) omega += (w2 - omega * omega) / (2 * omega);
+  const real omega = lrchain::model_evaluator::polished_omega(w, 2, omega_in);
   real o[10];
   o[0] = 0.0;
   const real t0 = (D1 * D1);
