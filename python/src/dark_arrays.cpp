@@ -46,4 +46,28 @@ py::dict floquet_dict(const FloquetResult& f) {
   return d;
 }
 
+py::dict evolution_series(const DarkEvolution& e) {
+  const auto M = static_cast<py::ssize_t>(e.periods.size());
+  py::array_t<double> t(M), E_b(M), C_x(M), K_x(M), position(M), depth(M);
+  for (py::ssize_t m = 0; m < M; ++m) {
+    const DarkEvolutionPeriod& r = e.periods[static_cast<std::size_t>(m)];
+    t.mutable_at(m) = r.t;
+    E_b.mutable_at(m) = r.E_b;
+    C_x.mutable_at(m) = r.C_x;
+    K_x.mutable_at(m) = r.K_x;
+    position.mutable_at(m) = r.position;
+    depth.mutable_at(m) = r.depth;
+  }
+  py::dict d;
+  d["period"] = e.period;
+  d["t"] = t;
+  d["E_b"] = E_b;
+  d["C_x"] = C_x;
+  d["K_x"] = K_x;
+  d["position"] = position;
+  d["depth"] = depth;
+  d["max_strain"] = e.max_strain;
+  return d;
+}
+
 }  // namespace lrchain::python

@@ -4,6 +4,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include "lrchain/sim/dark/evolution.hpp"
 #include "lrchain/sim/dark/floquet.hpp"
 #include "lrchain/sim/dark/measures.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
@@ -16,5 +17,7 @@ pybind11::array_t<double> residuals(const sim::dark::NewtonResult& r);
 pybind11::dict measures(const sim::dark::DarkMeasures& m);
 // {multipliers (complex array), kind, max_modulus, ..., log_det}.
 pybind11::dict floquet_dict(const sim::dark::FloquetResult& f);
+// The per-period measures of an evolution: {period, t, E_b, C_x, K_x, position, depth, max_strain}.
+pybind11::dict evolution_series(const sim::dark::DarkEvolution& e);
 
 }  // namespace lrchain::python

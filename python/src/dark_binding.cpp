@@ -222,17 +222,7 @@ py::dict evolve_job(const Params& p, double omega_b, const std::string& edge, co
     const Eigen::VectorXd z0 = s.shooting.z_from_unknowns(s.newton.q);
     return evolve_dark_breather(j.params, z0, j.omega_b, t_end, samples, s.shooting.integration(), guard.flag());
   });
-  const py::ssize_t M = static_cast<py::ssize_t>(e.periods.size()), N = e.sites;
-  py::array_t<double> t(M), E_b(M), C_x(M), K_x(M), position(M), depth(M);
-  for (py::ssize_t m = 0; m < M; ++m) {
-    const DarkEvolutionPeriod& r = e.periods[static_cast<std::size_t>(m)];
-    t.mutable_at(m) = r.t;
-    E_b.mutable_at(m) = r.E_b;
-    C_x.mutable_at(m) = r.C_x;
-    K_x.mutable_at(m) = r.K_x;
-    position.mutable_at(m) = r.position;
-    depth.mutable_at(m) = r.depth;
-  }
+  const py::ssize_t N = e.sites;
   const py::ssize_t rows = static_cast<py::ssize_t>(e.snapshots.size());
   py::array_t<double> x({rows, N}), y({rows, N});
   for (py::ssize_t m = 0; m < rows; ++m)
@@ -240,17 +230,9 @@ py::dict evolve_job(const Params& p, double omega_b, const std::string& edge, co
       x.mutable_at(m, n) = e.snapshots[static_cast<std::size_t>(m)](n);
       y.mutable_at(m, n) = e.snapshots[static_cast<std::size_t>(m)](N + n);
     }
-  py::dict d;
-  d["period"] = e.period;
-  d["t"] = t;
-  d["E_b"] = E_b;
-  d["C_x"] = C_x;
-  d["K_x"] = K_x;
-  d["position"] = position;
-  d["depth"] = depth;
+  py::dict d = evolution_series(e);
   d["x"] = x;
   d["y"] = y;
-  d["max_strain"] = e.max_strain;
   return d;
 }
 

@@ -229,31 +229,14 @@ py::dict evolve_job(const LoadedModel& loaded, double omega_b, std::optional<std
     const NewtonResult r = solve(j, shooting, seed, guard.flag());
     return evolve_dark_orbit(shooting.advance(), r.q, j.sites, j.omega_b, t_end, samples, guard.flag());
   });
-  const py::ssize_t M = py::ssize_t(e.periods.size()), fields = j.kernels->fields, N = j.sites;
-  py::array_t<double> t(M), E_b(M), C_x(M), K_x(M), position(M), depth(M);
-  for (py::ssize_t m = 0; m < M; ++m) {
-    const DarkEvolutionPeriod& r = e.periods[std::size_t(m)];
-    t.mutable_at(m) = r.t;
-    E_b.mutable_at(m) = r.E_b;
-    C_x.mutable_at(m) = r.C_x;
-    K_x.mutable_at(m) = r.K_x;
-    position.mutable_at(m) = r.position;
-    depth.mutable_at(m) = r.depth;
-  }
+  const py::ssize_t fields = j.kernels->fields, N = j.sites;
   const py::ssize_t rows = py::ssize_t(e.snapshots.size());
   py::array_t<double> z({rows, fields, N});
   for (py::ssize_t m = 0; m < rows; ++m)
     std::copy(e.snapshots[std::size_t(m)].data(), e.snapshots[std::size_t(m)].data() + fields * N, z.mutable_data(m, 0, 0));
   py::dict d = job_dict(j);
-  d["period"] = e.period;
-  d["t"] = t;
-  d["E_b"] = E_b;
-  d["C_x"] = C_x;
-  d["K_x"] = K_x;
-  d["position"] = position;
-  d["depth"] = depth;
+  for (const auto& [key, value] : evolution_series(e)) d[key] = value;
   d["z"] = z;
-  d["max_strain"] = e.max_strain;
   return d;
 }
 
