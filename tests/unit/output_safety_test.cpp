@@ -65,19 +65,28 @@ int count_lines(const std::string& text) {
   return n;
 }
 
+// The text of /proc/PID/FILE, or "" when that process has already ended (listed, then gone).
+std::string read_proc(const fs::path& file) {
+  try {
+    return read_file(file);
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
 // Pids of running processes whose parent is `parent`, or whose command line contains `text`.
 std::vector<int> processes(int parent, const std::string& text) {
   std::vector<int> found;
   for (const auto& e : fs::directory_iterator("/proc")) {
     const std::string name = e.path().filename().string();
     if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    const std::string stat = read_file(e.path() / "stat");
+    const std::string stat = read_proc(e.path() / "stat");
     const auto close = stat.rfind(')');
     if (close == std::string::npos) continue;
     char state = 0;
     int ppid = 0;
     if (std::sscanf(stat.c_str() + close + 1, " %c %d", &state, &ppid) != 2 || state == 'Z') continue;
-    std::string cmdline = read_file(e.path() / "cmdline");
+    std::string cmdline = read_proc(e.path() / "cmdline");
     if ((parent > 0 && ppid == parent) || (!text.empty() && cmdline.find(text) != std::string::npos))
       found.push_back(std::stoi(name));
   }
