@@ -160,7 +160,23 @@ def floquet(params=None, omega_b=None, branch=None, center="bond", sites=101, mo
 
 
 @dataclass(frozen=True, repr=False)
-class ModelDarkSolution:
+class _ModelEdge:
+    """The band edge and the model every model-file dark result reports: ``branch``, ``theta``,
+    ``omega_edge``, ``curvature``, ``h_tilde``, ``lambda_`` (None without mean flow),
+    ``lattice_form`` and ``model`` (name, file_hash, parameters, lattice_code)."""
+
+    branch: str
+    theta: float
+    omega_edge: float
+    curvature: float
+    h_tilde: float
+    lambda_: float
+    lattice_form: str
+    model: dict
+
+
+@dataclass(frozen=True, repr=False)
+class ModelDarkSolution(_ModelEdge):
     """A converged dark breather of a model file: ``z`` (fields, sites) = Z(0) in the lattice's
     ``variables`` (strains r, w1, ... of translation-invariant models, displacements u0, u1, ... of
     on-site models) on sites ``n`` (centred), the NLS ``seed`` (same shape), Newton's residual
@@ -175,15 +191,7 @@ class ModelDarkSolution:
     seed: np.ndarray
     variables: tuple
     newton_residuals: np.ndarray
-    branch: str
-    theta: float
-    omega_edge: float
-    curvature: float
-    h_tilde: float
-    lambda_: float
-    lattice_form: str
     measures: dict
-    model: dict
     floquet: Floquet = None
 
     def __repr__(self):
@@ -271,7 +279,7 @@ def continue_branch(params=None, omega_b=None, branch=None, center="bond", sites
 
 
 @dataclass(frozen=True, repr=False)
-class ModelBranch:
+class ModelBranch(_ModelEdge):
     """A branch of dark breathers of a model file: per point ``omega_b``, profiles ``z`` (points,
     fields, sites) in the lattice's ``variables``, ``measures`` (list of dicts), ``floquet`` (list of
     :class:`Floquet` or None), ``tangent_omega``, ``residual``, ``iterations``; ``turning_points``,
@@ -288,14 +296,6 @@ class ModelBranch:
     floquet: list
     turning_points: list
     stop_reason: str
-    branch: str
-    theta: float
-    omega_edge: float
-    curvature: float
-    h_tilde: float
-    lambda_: float
-    lattice_form: str
-    model: dict
 
     @property
     def norm_squared(self):
@@ -352,7 +352,7 @@ def evolve(params=None, omega_b=None, branch=None, center="bond", sites=101, mod
 
 
 @dataclass(frozen=True, repr=False)
-class ModelEvolution:
+class ModelEvolution(_ModelEdge):
     """Direct integration from an exact dark breather of a model file: per period ``t``, ``E_b``,
     ``C_x``, ``K_x``, ``position``, ``depth``; stroboscopic profiles ``z`` (M+1, fields, sites) in the
     lattice's ``variables``; ``period`` T_b, ``max_strain``; the edge and ``model`` as in
@@ -369,14 +369,6 @@ class ModelEvolution:
     n: np.ndarray
     variables: tuple
     max_strain: float
-    branch: str
-    theta: float
-    omega_edge: float
-    curvature: float
-    h_tilde: float
-    lambda_: float
-    lattice_form: str
-    model: dict
 
     def __repr__(self):
         return f"ModelEvolution({self.model['name']}, {len(self.t)} periods to t = {self.t[-1]:g}, max E_b = {self.E_b.max():.3g})"
