@@ -17,9 +17,9 @@ struct LoadedModel {
   Model model;
   std::string source;  // the model file's path as given (a shipped model's name: empty)
   // Lattice kernels, loaded on first use (with the GIL held); keeps a run-time library loaded.
-  mutable std::shared_ptr<const lrchain_lattice_kernels> lattice;
+  mutable std::shared_ptr<const lrchain_lattice_kernels> lattice{};
   mutable bool lattice_compiled_in = true, lattice_from_cache = false;
-  mutable std::string lattice_library;
+  mutable std::string lattice_library{};
 };
 
 // The lattice kernels of `m` (loaded once per definition): a shipped model's compiled-in kernels,
