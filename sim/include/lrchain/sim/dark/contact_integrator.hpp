@@ -78,7 +78,7 @@ struct OrbitRecord {
 class ContactIntegrator {
  public:
   ContactIntegrator(const StrainLatticeOrbit& orbit, ContactIntegrationOptions options = {});
-  // Any system (kept by reference: it must outlive the integrator).
+  // Any ContactSystem, kept by reference: it must outlive the integrator.
   ContactIntegrator(const ContactSystem& system, ContactIntegrationOptions options = {});
   ~ContactIntegrator();
   ContactIntegrator(const ContactIntegrator&) = delete;
