@@ -53,18 +53,18 @@ void print_text(const NlsCoefficients& c, Branch b, const Params& p) {
   fmt::print("{} branch, theta = {:.12g} (alpha={:g}, delta0={:.12g}, kappa={:g}, rho={:.12g})\n", to_string(b),
              c.theta, p.alpha, p.delta0, p.kappa, p.rho);
   const auto row = [](const char* name, const char* eq, double v) {
-    fmt::print("  {:<15} {:<22} {}\n", name, eq, std::isfinite(v) ? fmt::format("{:.17g}", v) : "singular");
+    fmt::print("  {:<15} {:<22} {}\n", name, report::plain_citations(eq), std::isfinite(v) ? fmt::format("{:.17g}", v) : "singular");
   };
-  row("omega", "(eq:disp1d)", c.omega);
-  row("group_velocity", "c (eq:c)", c.group_velocity);
-  row("curvature", "omega'' (eq:ppOmega)", c.curvature);
-  row("gamma", "(eq:gamma)", c.gamma);
-  row("beta", "(eq:ppOmega)", c.beta);
-  row("h", "(eq:h)", c.h);
-  row("lambda", "(eq:lambda)", c.lambda);
+  row("omega", "eq:disp1d", c.omega);
+  row("group_velocity", "c, eq:c", c.group_velocity);
+  row("curvature", "omega'', eq:ppOmega", c.curvature);
+  row("gamma", "eq:gamma", c.gamma);
+  row("beta", "eq:ppOmega", c.beta);
+  row("h", "eq:h", c.h);
+  row("lambda", "eq:lambda", c.lambda);
   row("h_tilde", "h - lambda beta", c.h_tilde);
-  row("nonresonance1", "(eq:nonresonance1)", c.nonresonance1);
-  row("nonresonance2", "(eq:nonresonance2)", c.nonresonance2);
+  row("nonresonance1", "eq:nonresonance1", c.nonresonance1);
+  row("nonresonance2", "eq:nonresonance2", c.nonresonance2);
   fmt::print("  {:<15} {:<22} {}\n", "regime", "sign(omega'' h_tilde)", to_string(c.regime));
 }
 

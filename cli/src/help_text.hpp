@@ -1,8 +1,11 @@
 #pragma once
 // The parts of `lrchain ... --help` that every subcommand shares: the exit codes, an example
-// command line (footer), and the one-line message for a command given without its subcommand.
+// command line (footer), the one-line message for a command given without its subcommand, and
+// the paper's equations cited by number.
 #include <CLI/CLI.hpp>
 #include <string>
+
+#include "report/rich_text.hpp"
 
 namespace lrchain::cli {
 
@@ -38,6 +41,14 @@ inline std::string missing_subcommand_message(const CLI::App& app) {
   std::string names;
   for (const CLI::App* sub : available) names += (names.empty() ? "" : ", ") + sub->get_name();
   return path + ": give a subcommand: " + names + " (see " + path + " --help)";
+}
+
+// Cites the paper's equations and figures by their printed numbers ("eq:focus_app" -> "eq. (38)")
+// in the descriptions of `cmd`, its options and all its subcommands.
+inline void cite_paper_numbers(CLI::App& cmd) {
+  cmd.description(report::plain_citations(cmd.get_description()));
+  for (CLI::Option* option : cmd.get_options()) option->description(report::plain_citations(option->get_description()));
+  for (CLI::App* sub : cmd.get_subcommands([](const CLI::App*) { return true; })) cite_paper_numbers(*sub);
 }
 
 }  // namespace lrchain::cli

@@ -13,9 +13,11 @@
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "lrchain: breathers in a locally resonant granular chain with precompression.\n"
-      "All quantities are dimensionless as in Sec. 2 of the paper (time in units of\n"
-      "sqrt(m1/(A R^(alpha-1))), lengths in units of R). Numbers accept 0.25, 1e-3, 1/3, 3*pi/5."};
+      "lrchain: nonlinear waves in one-dimensional lattices. From a model file (--model; default:\n"
+      "the paper's locally resonant granular chain with precompression) it derives the NLS\n"
+      "coefficients, maps the focusing regimes, runs the lattice, and finds exact dark breathers.\n"
+      "The paper's chain is dimensionless as in its Sec. 2 (time in units of sqrt(m1/(A R^(alpha-1))),\n"
+      "lengths in units of R). Numbers accept 0.25, 1e-3, 1/3, 3*pi/5."};
   app.require_subcommand(1);
   app.set_version_flag("--version", lrchain::version_line(), "print the lrchain version and git commit, and exit");
   app.footer(lrchain::cli::exit_codes_text());  // inherited by the subcommands, which add their examples
@@ -30,6 +32,7 @@ int main(int argc, char** argv) {
 #endif
   lrchain::cli::add_examples(app, {"lrchain coeffs --branch optical --theta pi/2 --rho 1/3",
                                    "lrchain reproduce --quick --out report"});
+  lrchain::cli::cite_paper_numbers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

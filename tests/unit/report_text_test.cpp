@@ -86,6 +86,14 @@ TEST_CASE("rich text: Greek letters, primes, subscripts, norms and paper numbers
   CHECK(rich_text("eq:unknown_label") == "eq:unknown_label");
 }
 
+TEST_CASE("plain citations: the CLI's help cites the paper's printed numbers") {
+  // Numbers from the compiled paper (the table above): eq:focus_app is (38), fig:focus3 is Fig. 7.
+  CHECK(plain_citations("bright breather (eq:focus_app, eq:focus_ini)") == "bright breather (eq. (38), eq. (39))");
+  CHECK(plain_citations("fig:focus3 left") == "Fig. 7 left");
+  // Unknown labels, labels inside a word and other text stay as they are.
+  CHECK(plain_citations("eq:unknown_label and preq:disp1d, omega''") == "eq:unknown_label and preq:disp1d, omega''");
+}
+
 TEST_CASE("report rows: four statuses and the tolerance with its source") {
   const Comparison pass = equals_row("omega_opt", "Sec. 5.3", "2.4495", 2.4495, 2.44949, 5e-5);
   CHECK(pass.status() == Status::pass);

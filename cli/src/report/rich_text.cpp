@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "latex_numbering.hpp"
@@ -38,20 +39,24 @@ bool is_symbol_base(const std::string& name) {
   return name.size() <= 2 || greek().count(name) > 0;
 }
 
-// "fig:focus3" / "eq:disp1d" at `i` (after a non-word character): its HTML, and `end` past it.
-bool citation(const std::string& text, std::size_t i, std::size_t& end, std::string& html) {
+// The paper label "fig:focus3" / "eq:disp1d" starting at `i`, if the paper numbers it: the label,
+// its citation as printed ("Fig. 7", "eq. (7)", with `space` between word and number), and `end` past it.
+struct Citation {
+  std::string label, shown;
+  std::size_t end = 0;
+};
+
+std::optional<Citation> citation(const std::string& text, std::size_t i, const std::string& space) {
   const bool figure = text.compare(i, 4, "fig:") == 0, equation = text.compare(i, 3, "eq:") == 0;
-  if (!figure && !equation) return false;
+  if (!figure && !equation) return std::nullopt;
   std::size_t q = i + (figure ? 4 : 3);
   while (q < text.size() && (is_word_char(text[q]) || (text[q] == ':' && q + 1 < text.size() && is_word_char(text[q + 1])))) ++q;
-  const std::string label = text.substr(i, q - i);
-  const auto number = paper_number(label);
-  if (!number) return false;
-  const std::string shown = number->kind == PaperNumber::Kind::figure ? "Fig.&nbsp;" + std::to_string(number->number)
-                                                                       : "eq.&nbsp;(" + std::to_string(number->number) + ")";
-  html = "<span class=\"cite\" title=\"" + html_escape(label) + "\">" + shown + "</span>";
-  end = q;
-  return true;
+  Citation c{text.substr(i, q - i), "", q};
+  const auto number = paper_number(c.label);
+  if (!number) return std::nullopt;
+  c.shown = number->kind == PaperNumber::Kind::figure ? "Fig." + space + std::to_string(number->number)
+                                                      : "eq." + space + "(" + std::to_string(number->number) + ")";
+  return c;
 }
 
 }  // namespace
@@ -61,11 +66,9 @@ std::string rich_text(const std::string& text) {
   for (std::size_t i = 0; i < text.size();) {
     const bool word_start = i == 0 || !is_word_char(text[i - 1]);
     if (word_start && std::isalpha(static_cast<unsigned char>(text[i]))) {
-      std::size_t end;
-      std::string html;
-      if (citation(text, i, end, html)) {
-        out += html;
-        i = end;
+      if (const auto cite = citation(text, i, "&nbsp;")) {
+        out += "<span class=\"cite\" title=\"" + html_escape(cite->label) + "\">" + cite->shown + "</span>";
+        i = cite->end;
         continue;
       }
       std::size_t q = i;
@@ -112,6 +115,20 @@ std::string rich_text(const std::string& text) {
     }
     out += html_escape(std::string(1, text[i]));
     ++i;
+  }
+  return out;
+}
+
+std::string plain_citations(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (i == 0 || !is_word_char(text[i - 1]))
+      if (const auto cite = citation(text, i, " ")) {
+        out += cite->shown;
+        i = cite->end;
+        continue;
+      }
+    out += text[i++];
   }
   return out;
 }

@@ -9,4 +9,8 @@ namespace lrchain::report {
 
 std::string rich_text(const std::string& text);
 
+// Plain text (help, tables) with the LaTeX labels replaced by the compiled paper's numbers
+// ("eq:disp1d" -> "eq. (7)", "fig:focus3" -> "Fig. 7"); unknown labels and everything else unchanged.
+std::string plain_citations(const std::string& text);
+
 }  // namespace lrchain::report
