@@ -441,9 +441,9 @@ void register_simulate(CLI::App& app) {
     if (!sim_cmd->get_subcommands().empty()) return;
     if (config->empty())
       throw InvalidParameter("config", "give a subcommand (bright, drive, modulated, ring) or --config FILE.toml");
-    if (run_model_bright_config(*config, *sim_cmd, {out, std::shared_ptr<bool>(style, &style->compact_json),
+    if (run_model_config(*config, *sim_cmd, {out, std::shared_ptr<bool>(style, &style->compact_json),
                                                     std::shared_ptr<bool>(style, &style->figures)}))
-      return;  // a model file's bright config (simulate_model_bright.cpp)
+      return;  // a model file's bright or ring config (simulate_model_bright.cpp)
     const std::string kind = sim::experiment_kind(*config);
     if (kind == "drive") {
       auto dc = sim::load_drive_config(*config);

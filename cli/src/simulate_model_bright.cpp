@@ -1,4 +1,4 @@
-// `lrchain simulate bright --model FILE ...` and `simulate --config` with `model = "FILE"`: the NLS
+// `lrchain simulate bright --model FILE ...` and `simulate --config` with `model = "FILE"` (bright or ring): the NLS
 // bright breather of any model file on its generated lattice (sim/model_bright_run.hpp).
 #include <chrono>
 #include <filesystem>
@@ -84,7 +84,7 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
   run_and_report_model_bright(selection, model, c, branch, *output.out, output, "");
 }
 
-bool run_model_bright_config(const std::string& file, const CLI::App& simulate, const ModelRunOutput& output) {
+bool run_model_config(const std::string& file, const CLI::App& simulate, const ModelRunOutput& output) {
   const config::Document doc = config::Document::from_file(file);
   if (!sim::is_model_experiment(doc)) return false;
   for (const char* name : {"--restart", "--checkpoint"})
@@ -95,8 +95,11 @@ bool run_model_bright_config(const std::string& file, const CLI::App& simulate, 
   selection.file = mc.model_file;
   for (const auto& [name, value] : mc.parameters) selection.set.push_back(fmt::format("{}={:.17g}", name, value));
   const Model model = load_selected_model(selection, simulate, Params{}, true);
-  run_and_report_model_bright(selection, model, mc.bright, mc.branch, !output.out->empty() ? *output.out : mc.out_dir, output,
-                              mc.name);
+  const std::string out = !output.out->empty() ? *output.out : mc.out_dir;
+  if (mc.experiment == "ring")
+    run_and_report_ring(selection, model, mc.ring, mc.branch, out, output, mc.name);
+  else
+    run_and_report_model_bright(selection, model, mc.bright, mc.branch, out, output, mc.name);
   return true;
 }
 

@@ -5,7 +5,9 @@
 #include <memory>
 #include <string>
 
+#include "lrchain/model.hpp"
 #include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/ring_run.hpp"
 #include "model_option.hpp"
 
 namespace lrchain::cli {
@@ -29,8 +31,15 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
                               const sim::BrightRunConfig& bright, const CLI::App& cmd, const CLI::App& simulate,
                               const ModelRunOutput& output);
 
-// `simulate --config FILE` where FILE names a model file (`model = "models/x.toml"`): runs it and
-// returns true; false (nothing done) for the resonant chain's configs.
-bool run_model_bright_config(const std::string& file, const CLI::App& simulate, const ModelRunOutput& output);
+// Checks a ring run of `model` on `branch` (options, theta on the ring, --out) before anything is
+// written, then runs it, writes `out` (none when empty) and prints the JSON summary (with `name`
+// when not empty).
+void run_and_report_ring(const ModelSelection& selection, const Model& model, sim::RingRunConfig run,
+                         const std::string& branch, const std::string& out, const ModelRunOutput& output,
+                         const std::string& name);
+
+// `simulate --config FILE` where FILE names a model file (`model = "models/x.toml"`, experiment
+// bright or ring): runs it and returns true; false (nothing done) for the resonant chain's configs.
+bool run_model_config(const std::string& file, const CLI::App& simulate, const ModelRunOutput& output);
 
 }  // namespace lrchain::cli

@@ -25,23 +25,30 @@ struct RingOptions {
   std::vector<std::string> amplitudes;
 };
 
-// Validates everything (model, branch, theta, ring, amplitudes, --out), then runs and reports.
+// `simulate ring` from its options: the amplitudes parsed, then run_and_report_ring.
 void run_ring_command(const RingOptions& o, const CLI::App& cmd, const ModelRunOutput& output) {
-  const auto wall0 = std::chrono::steady_clock::now();
   refuse_hdf5_format(*cmd.get_parent(), "simulate ring");
   const Model model = load_selected_model(o.model, cmd, Params{}, true);
   sim::RingRunConfig run = o.run;
-  run.branch = model.branch(o.branch);
   if (!o.amplitudes.empty()) {
     run.amplitudes.clear();
     for (const auto& a : o.amplitudes) run.amplitudes.push_back(parse_number(a, "amplitudes"));
   }
+  run_and_report_ring(o.model, model, run, o.branch, *output.out, output, "");
+}
+
+}  // namespace
+
+void run_and_report_ring(const ModelSelection& selection, const Model& model, sim::RingRunConfig run,
+                         const std::string& branch, const std::string& out, const ModelRunOutput& output,
+                         const std::string& name) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  run.branch = model.branch(branch);
   sim::validate(run);
   coefficients(model, run.branch, run.theta);  // theta on the branch (InvalidParameter otherwise)
-  const LatticeCode code = lattice_kernels_for(o.model, model);
+  const LatticeCode code = lattice_kernels_for(selection, model);
   const lrchain_lattice_kernels& kernels = *code.kernels;
   sim::bloch_mode(model, kernels, run.branch, run.theta);
-  const std::string& out = *output.out;
   std::error_code ec;
   if (!out.empty() && std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
     throw InputError("--out '" + out + "' exists and is not a directory");
@@ -49,6 +56,7 @@ void run_ring_command(const RingOptions& o, const CLI::App& cmd, const ModelRunO
   if (!out.empty()) lock.emplace(out);
   const sim::RingRunResult r = sim::run_ring(model, kernels, run);
   nlohmann::json j = sim::to_json(model, run, r);
+  if (!name.empty()) j["name"] = name;
   j["model"] = model_json(model);
   j["model"]["lattice_code"] = lattice_code_json(code);
   if (!out.empty()) {
@@ -58,8 +66,6 @@ void run_ring_command(const RingOptions& o, const CLI::App& cmd, const ModelRunO
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::cout << (*output.compact_json ? j.dump() : j.dump(2)) << std::endl;
 }
-
-}  // namespace
 
 void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output) {
   auto o = std::make_shared<RingOptions>();

@@ -72,10 +72,11 @@ TEST_CASE("model simulate: the shipped model configs pass their schema — unkno
     REQUIRE(lrchain::sim::is_model_experiment(doc));
     const auto c = lrchain::sim::load_model_experiment_config(doc);
     CHECK(fs::exists(source_dir / c.model_file));
-    CHECK(c.bright.periods == 200);
+    if (c.experiment == "bright") CHECK(c.bright.periods == 200);
+    if (c.experiment == "ring") CHECK(c.ring.amplitudes == std::vector<double>{0.02, 0.01});
     ++loaded;
   }
-  CHECK(loaded == 4);
+  CHECK(loaded == 6);
   const auto fput = lrchain::sim::load_model_experiment_config(
       lrchain::config::Document::from_file(source_dir / "examples" / "models" / "fput_bright.toml"));
   CHECK(fput.parameters.size() == 2);
@@ -87,4 +88,29 @@ TEST_CASE("model simulate: the shipped model configs pass their schema — unkno
   const auto doc = lrchain::config::Document::from_text(bad, "bad.toml");
   CHECK_THROWS_WITH_AS(lrchain::sim::load_model_experiment_config(doc), doctest::Contains("stepper"),
                        lrchain::config::ConfigError);
+}
+
+TEST_CASE("model simulate: a ring config gives the numbers of the same ring run from options" * doctest::test_suite("fast")) {
+  // Two routes to one run: examples/models/homogeneous_chain_ring.toml and the same values as
+  // options. The shift's disagreement with h U^2/4 is O(U^2): about 4x smaller at U/2.
+  const auto config = run_lrchain({"simulate", "--config", "examples/models/homogeneous_chain_ring.toml", "--json"}, source_dir);
+  const auto options = run_lrchain({"simulate", "ring", "--model", "models/homogeneous_chain.toml", "--set", "alpha=1.5",
+                                    "--set", "delta0=4/9", "--branch", "acoustic", "--theta", "pi/4", "--amplitudes",
+                                    "0.02", "0.01", "--json"},
+                                   source_dir);
+  INFO(config.err, options.err);
+  REQUIRE(config.exit_code == 0);
+  REQUIRE(options.exit_code == 0);
+  const auto a = nlohmann::json::parse(config.out), b = nlohmann::json::parse(options.out);
+  CHECK(a["name"] == "homogeneous-chain-ring-pi-4");
+  CHECK(a["amplitudes"] == b["amplitudes"]);
+  CHECK(a["packet"] == b["packet"]);
+  const double e0 = a["amplitudes"][0]["relative_disagreement"], e1 = a["amplitudes"][1]["relative_disagreement"];
+  CHECK(e0 < 0.01);
+  CHECK(e1 < e0 / 3);
+  // A [bright] table in a ring config is another experiment's table: refused, naming it.
+  const std::string bad = "experiment = \"ring\"\nmodel = \"models/fput.toml\"\n[bright]\nbranch = \"acoustic\"\n"
+                          "theta = \"pi/2\"\n";
+  CHECK_THROWS_WITH_AS(lrchain::sim::load_model_experiment_config(lrchain::config::Document::from_text(bad, "bad.toml")),
+                       doctest::Contains("[bright]"), lrchain::config::ConfigError);
 }
