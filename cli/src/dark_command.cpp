@@ -733,7 +733,7 @@ void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
     figures.draw({"profile.gp",
                   fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
                               "set terminal pngcairo size 1000,700 noenhanced\nset output outfile\n"
-                              "set datafile separator ','\nset xlabel 'site n'\nset ylabel 'lattice variables'\n"
+                              "set datafile separator ','\nset xlabel 'site n'\nset ylabel 'lattice variables: strains or displacements (model units)'\n"
                               "set key outside\nset title '{} dark breather ({} centred), ω_b = {:.5f}: Z(0), Z(T_b), seed'\n{}\n",
                               m.model.name(), a.center, a.omega_b, plot),
                   "profile.png"});

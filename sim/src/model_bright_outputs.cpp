@@ -73,11 +73,11 @@ set terminal pngcairo size 1200,900 font ",11"
 set output outfile
 set datafile separator ","
 set multiplot layout 2,1
-set xlabel "t"
-set ylabel "relative error"
+set xlabel "t (model units)"
+set ylabel "relative error E_f of the lattice against the ansatz"
 plot {}
-set xlabel "n"
-set ylabel "field"
+set xlabel "site n"
+set ylabel "lattice variable x_f at the end of the run (model units)"
 plot {}
 unset multiplot
 )GP",

@@ -64,11 +64,11 @@ set output outfile
 set datafile separator ","
 omega = {:.17g}
 h = {:.17g}
-set xlabel "U (amplitude of the first field)"
-set ylabel "frequency"
+set xlabel "plane-wave amplitude U of the first field (model units)"
+set ylabel "frequency ω (model units)"
 set key top left
 set xrange [0:{:.17g}]
-plot omega + h*x**2/4 with lines lw 2 lc rgb "blue" title "omega + h U^2/4 (derived)", \
+plot omega + h*x**2/4 with lines lw 2 lc rgb "blue" title "ω + h U^2/4 (derived)", \
      'ring_frequency.csv' using 1:2 skip 1 with points pt 7 ps 1.4 lc rgb "red" title "lattice"
 )GP",
                      r.omega, r.h, 1.1 * largest_amplitude(r));
@@ -82,8 +82,8 @@ set output outfile
 set datafile separator ","
 c = {:.17g}
 x0 = {:.17g}
-set xlabel "t"
-set ylabel "packet centre"
+set xlabel "t (model units)"
+set ylabel "packet centre (site n)"
 set key top left
 plot 'series.csv' using 1:2 skip 1 with lines lw 2 lc rgb "red" title "lattice", \
      x0 + c*x with lines dt 2 lw 2 lc rgb "blue" title "n_0 + c t (derived)"
