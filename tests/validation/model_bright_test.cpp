@@ -70,3 +70,9 @@ TEST_CASE("model bright: resonant_chain_polynomial on both branches at theta = 3
   check_model_bright({"resonant_chain_polynomial", "acoustic", 3 * std::numbers::pi / 4, 1e-4, 2000, -1000});
   check_model_bright({"resonant_chain_polynomial", "optical", 3 * std::numbers::pi / 4, 1e-4, 1000, -500});
 }
+
+TEST_CASE("model bright: diatomic_chain on its optical branch (theta = 2.6, moving left at c < 0)") {
+  // The optical branch focuses on (2.192, pi) at the defaults (lrchain regime intervals); c = -0.141
+  // at theta = 2.6, so the breather starts right of the centre. Measured: MEASURED_DIATOMIC.
+  check_model_bright({"diatomic_chain", "optical", 2.6, -1e-4, 1000, 200});
+}
