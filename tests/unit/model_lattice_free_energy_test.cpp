@@ -110,9 +110,9 @@ TEST_CASE("model lattice: open strain-form fput energy is the free-free chain's 
 TEST_CASE("model lattice: open strain-form energy is conserved when waves reach both ends" * doctest::test_suite("fast")) {
   // srkn11b is symplectic of order 6 and conserves the linear momentum, so it keeps the free
   // chain's centre-of-mass energy to O(dt^6) with no secular drift: at dt = 0.01, 6000 steps, the
-  // measured drift is 5e-15 (fput), 7e-14 (resonant chain) and 1.4e-13 (diatomic chain, 0.3 before
-  // its end bonds to beads beyond the chain were left out); the bound 1e-8 leaves room for other
-  // compilers' rounding. The fixed-wall energy of the same runs changes by 5 to 12 (relative).
+  // measured drift is 5e-15 (fput), 7e-14 (resonant chain) and 1.4e-13 (diatomic chain); the bound
+  // 1e-8 leaves room for other compilers' rounding. The fixed-wall energy of the same runs changes
+  // by 5 to 12 (relative).
   const std::size_t n = 41;
   SUBCASE("fput") {
     const std::vector<double> parameters{0.25, 0.5};
