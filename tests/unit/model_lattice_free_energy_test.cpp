@@ -48,7 +48,8 @@ double fixed_wall_energy(const ModelLattice& lattice, const std::vector<double>&
   std::vector<double> u(m), v(m), e(lattice.sites()), work(std::size_t(lattice.kernels().workspace_size(long(lattice.sites()))));
   lattice.displacements_of(x.data(), u.data());
   lattice.displacements_of(x.data() + m, v.data());
-  lattice.kernels().energy_density(parameters.data(), long(lattice.sites()), 0, u.data(), v.data(), e.data(), work.data());
+  lattice.kernels().energy_density(parameters.data(), long(lattice.sites()), LRCHAIN_LATTICE_ENDS_FIXED, u.data(), v.data(), e.data(),
+                                   work.data());
   double sum = 0;
   for (double y : e) sum += y;
   return sum;
