@@ -142,6 +142,8 @@ TEST_CASE("model lattice: fput strain form is the difference of the displacement
 
 TEST_CASE("model lattice: the Jacobian action equals central differences of the accelerations, every shipped model" * doctest::test_suite("fast")) {
   // Central difference error O(h^2 a''') ~ 1e-10 at h = 1e-5; states within the contacts (|q| < 0.05).
+  // Every site is compared, so open strain ends check that the accelerations and the Jacobian action
+  // leave out the same end bonds (the diatomic chain's v[n-1]-u[n] at both ends, for one).
   const std::size_t n = 24;
   for (const std::string& name : shipped_lattice_models()) {
     const lrchain_lattice_kernels& k = kernels(name.c_str());
