@@ -135,6 +135,11 @@ static void time_generated_rhs(benchmark::State& st, const ModelLattice& lattice
   per_site_counter(st, n);
 }
 
+// The defaults of models/<name>.toml by parameter name.
+const std::map<std::string, double> kDefaultParameters{{"alpha", 1.5}, {"delta0", 4.0 / 9.0}, {"kappa", 1}, {"rho", 1.0 / 3.0},
+                                                       {"a", 0.25}, {"b", 0.5}, {"C", 0.1}, {"w0", 1}, {"m", 2},
+                                                       {"k1", 1}, {"b1", -0.25}, {"g1", 0.125}, {"k2", 1}, {"b2", 0}, {"g2", 0.1}};
+
 // The generated lattices of the shipped models (models/*.toml at their defaults) in both forms:
 // strain form (translation-invariant models only; an on-site model is skipped there) and
 // displacement form; periodic ends. The first argument indexes shipped_lattice_models(), the second
@@ -148,11 +153,8 @@ static void BM_ModelRHS(benchmark::State& st) {
     st.SkipWithError((name + ": on-site model, no strain form").c_str());
     return;
   }
-  const std::map<std::string, double> defaults{{"alpha", 1.5}, {"delta0", 4.0 / 9.0}, {"kappa", 1}, {"rho", 1.0 / 3.0},
-                                               {"a", 0.25}, {"b", 0.5}, {"C", 0.1}, {"w0", 1}, {"m", 2},
-                                               {"k1", 1}, {"b1", -0.25}, {"g1", 0.125}, {"k2", 1}, {"b2", 0}, {"g2", 0.1}};
   std::vector<double> parameters;
-  for (int i = 0; i < k.parameter_count; ++i) parameters.push_back(defaults.at(k.parameter_names[i]));
+  for (int i = 0; i < k.parameter_count; ++i) parameters.push_back(kDefaultParameters.at(k.parameter_names[i]));
   ModelLattice lattice(k, parameters, n, true, form);
   State s = random_state(n);
   s.resize(2 * lattice.positions());
@@ -160,6 +162,26 @@ static void BM_ModelRHS(benchmark::State& st) {
   time_generated_rhs(st, lattice, s, n);
 }
 BENCHMARK(BM_ModelRHS)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6}, {1001, 4001}, {0, 1}});
+
+// Every translation-invariant shipped model in strain form with free ends (the bond instances
+// touching beads beyond the chain dropped), to compare with its ring above.
+static void BM_ModelFreeEndsStrainRHS(benchmark::State& st) {
+  const std::string name = shipped_lattice_models().at(std::size_t(st.range(0)));
+  const std::size_t n = std::size_t(st.range(1));
+  const lrchain_lattice_kernels& k = *shipped_lattice_kernels(name);
+  if (!k.strain_accelerations) {
+    st.SkipWithError((name + ": on-site model, no strain form").c_str());
+    return;
+  }
+  std::vector<double> parameters;
+  for (int i = 0; i < k.parameter_count; ++i) parameters.push_back(kDefaultParameters.at(k.parameter_names[i]));
+  ModelLattice lattice(k, parameters, n, false, LatticeForm::strain);
+  State s = random_state(n);
+  s.resize(2 * lattice.positions());
+  st.SetLabel(name + " (strain, free ends)");
+  time_generated_rhs(st, lattice, s, n);
+}
+BENCHMARK(BM_ModelFreeEndsStrainRHS)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6}, {1001, 4001}});
 
 // The resonant chain through the generated kernels with the specialised lattice's zero-strain ends
 // (compare with BM_StrainRHS).

@@ -1,6 +1,7 @@
-// The energy of strain-form model lattices with open ends (model_lattice.hpp): the free-free chain
-// of beads -1..n-1 in its centre-of-mass frame, checked against a hand-written sum (fput) and
-// against its conservation by a symplectic run whose waves reach both ends (fput, resonant_chain).
+// The energy of strain-form model lattices with open ends (model_lattice.hpp): the free chain of
+// beads -1..n-1 in its centre-of-mass frame, checked against hand-written sums (fput, diatomic_chain)
+// and against its conservation by a symplectic run whose waves reach both ends (fput,
+// resonant_chain, diatomic_chain).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -47,7 +48,8 @@ double fixed_wall_energy(const ModelLattice& lattice, const std::vector<double>&
   std::vector<double> u(m), v(m), e(lattice.sites()), work(std::size_t(lattice.kernels().workspace_size(long(lattice.sites()))));
   lattice.displacements_of(x.data(), u.data());
   lattice.displacements_of(x.data() + m, v.data());
-  lattice.kernels().energy_density(parameters.data(), long(lattice.sites()), 0, u.data(), v.data(), e.data(), work.data());
+  lattice.kernels().energy_density(parameters.data(), long(lattice.sites()), LRCHAIN_LATTICE_ENDS_FIXED, u.data(), v.data(), e.data(),
+                                   work.data());
   double sum = 0;
   for (double y : e) sum += y;
   return sum;
@@ -107,10 +109,11 @@ TEST_CASE("model lattice: open strain-form fput energy is the free-free chain's 
 }
 
 TEST_CASE("model lattice: open strain-form energy is conserved when waves reach both ends" * doctest::test_suite("fast")) {
-  // srkn11b is symplectic of order 6 and conserves the linear momentum, so it keeps the free-free
+  // srkn11b is symplectic of order 6 and conserves the linear momentum, so it keeps the free
   // chain's centre-of-mass energy to O(dt^6) with no secular drift: at dt = 0.01, 6000 steps, the
-  // measured drift is 5e-15 (fput) and 7e-14 (resonant chain); the bound 1e-8 leaves room for other
-  // compilers' rounding. The fixed-wall energy of the same runs changes by about 5 (relative).
+  // measured drift is 5e-15 (fput), 7e-14 (resonant chain) and 1.4e-13 (diatomic chain); the bound
+  // 1e-8 leaves room for other compilers' rounding. The fixed-wall energy of the same runs changes
+  // by 5 to 12 (relative).
   const std::size_t n = 41;
   SUBCASE("fput") {
     const std::vector<double> parameters{0.25, 0.5};
@@ -132,4 +135,50 @@ TEST_CASE("model lattice: open strain-form energy is conserved when waves reach 
     CHECK(d.walls > 1e-4);
     CHECK(d.end_energy > 1e-3 * lattice.energy(s) / double(n));
   }
+  SUBCASE("diatomic chain (bonds v[n]-u[n] and u[n+1]-v[n]: the end bonds touch the chain on one side)") {
+    const std::vector<double> parameters{1.5, 4.0 / 9.0, 2.0};
+    ModelLattice lattice(kernels("diatomic_chain"), parameters, n, false, LatticeForm::strain);
+    const State s = centred_pulse(2, n, 0.05 * parameters[1]);
+    const Drift d = energy_drift(lattice, parameters, s, 0.01, 60.0);
+    MESSAGE("diatomic chain: relative drift ", d.relative, ", fixed-wall energy drift ", d.walls);
+    CHECK(d.relative < 1e-8);
+    CHECK(d.walls > 1e-4);
+    CHECK(d.end_energy > 1e-3 * lattice.energy(s) / double(n));
+  }
+}
+
+TEST_CASE("model lattice: open strain-form diatomic energy is the free chain's centre-of-mass energy" * doctest::test_suite("fast")) {
+  // By hand: beads u_{-1}, u_0 v_0 ... u_{n-1} v_{n-1} (masses 1, 1 m 1 m ...), displacements from
+  // u_{-1} = 0; Hertz bonds v_i - u_i and u_{i+1} - v_i only (u_{-1} has none), bond energy
+  // Phi(r) = delta0^alpha r + ((delta0 - r)^(alpha+1) - delta0^(alpha+1))/(alpha+1) in contact;
+  // kinetic energy in the centre-of-mass frame.
+  const std::size_t n = 25;
+  const double alpha = 1.5, delta0 = 4.0 / 9.0, m = 2;
+  ModelLattice lattice(kernels("diatomic_chain"), {alpha, delta0, m}, n, false, LatticeForm::strain);
+  std::mt19937 gen(9);
+  std::uniform_real_distribution<double> d(-0.1, 0.1);  // every contact kept (|argument| < delta0)
+  State s(4 * n);
+  for (double& x : s) x = d(gen);
+  const auto Phi = [&](double r) {
+    return std::pow(delta0, alpha) * r + (std::pow(delta0 - r, alpha + 1) - std::pow(delta0, alpha + 1)) / (alpha + 1);
+  };
+  std::vector<double> u(n), v(n), du(n), dv(n);
+  double position = 0, velocity = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    position += s[i];
+    velocity += s[2 * n + i];
+    u[i] = position;
+    v[i] = position + s[n + i];
+    du[i] = velocity;
+    dv[i] = velocity + s[3 * n + i];
+  }
+  double potential = 0, momentum = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    potential += Phi(v[i] - u[i]) + (i + 1 < n ? Phi(u[i + 1] - v[i]) : 0.0);
+    momentum += du[i] + m * dv[i];
+  }
+  const double centre = momentum / (1 + double(n) * (1 + m));
+  double kinetic = 0.5 * centre * centre;  // u_{-1}
+  for (std::size_t i = 0; i < n; ++i) kinetic += 0.5 * (du[i] - centre) * (du[i] - centre) + 0.5 * m * (dv[i] - centre) * (dv[i] - centre);
+  CHECK(lattice.energy(s) == doctest::Approx(potential + kinetic).epsilon(1e-12));
 }

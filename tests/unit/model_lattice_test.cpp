@@ -142,6 +142,8 @@ TEST_CASE("model lattice: fput strain form is the difference of the displacement
 
 TEST_CASE("model lattice: the Jacobian action equals central differences of the accelerations, every shipped model" * doctest::test_suite("fast")) {
   // Central difference error O(h^2 a''') ~ 1e-10 at h = 1e-5; states within the contacts (|q| < 0.05).
+  // Every site is compared, so open strain ends check that the accelerations and the Jacobian action
+  // leave out the same end bonds (the diatomic chain's v[n-1]-u[n] at both ends, for one).
   const std::size_t n = 24;
   for (const std::string& name : shipped_lattice_models()) {
     const lrchain_lattice_kernels& k = kernels(name.c_str());
@@ -207,4 +209,37 @@ TEST_CASE("model lattice: resonant chain energy equals the specialised bond ener
   // A 6th-order symplectic method at dt = 0.01: energy error bounded near 1e-10 (today's bright runs
   // reach 1e-9 relative); contact loss makes the force only C^0.5, which limits the order.
   CHECK(worst / e0 < 1e-8);
+}
+
+TEST_CASE("model lattice: open diatomic strain form is the free chain of its beads, written out by hand" * doctest::test_suite("fast")) {
+  // models/diatomic_chain.toml in displacements: beads u_0 v_0 u_1 v_1 ... u_{n-1} v_{n-1} (masses 1
+  // and m), Hertz bonds F(r) = delta0^alpha - max(delta0 - r, 0)^alpha of v_i - u_i and u_{i+1} - v_i;
+  // free ends: no bond left of u_0 or right of v_{n-1}; bead u_{-1} (closing the strain r_0) has no
+  // bond. Strain state: r_i = u_i - u_{i-1} (u_{-1} = 0), w_i = v_i - u_i.
+  const std::size_t n = 30;
+  const double alpha = 1.5, delta0 = 4.0 / 9.0, m = 2;
+  const auto F = [&](double r) { return std::pow(delta0, alpha) - std::pow(std::max(delta0 - r, 0.0), alpha); };
+  ModelLattice lattice(kernels("diatomic_chain"), {alpha, delta0, m}, n, false, LatticeForm::strain);
+  // Strains and relative displacements up to 0.6 > delta0: some contacts are lost.
+  const std::vector<double> q = uniform(2 * n, -0.3, 0.6, 17);
+  std::vector<double> u(n), v(n), a(2 * n);
+  double position = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    position += q[i];
+    u[i] = position;
+    v[i] = position + q[n + i];
+  }
+  std::vector<double> force_u(n), force_v(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    force_u[i] = F(v[i] - u[i]) - (i > 0 ? F(u[i] - v[i - 1]) : 0.0);
+    force_v[i] = ((i + 1 < n ? F(u[i + 1] - v[i]) : 0.0) - F(v[i] - u[i])) / m;
+  }
+  lattice.acceleration(q.data(), a.data());
+  double worst = 0, scale = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r_expected = force_u[i] - (i > 0 ? force_u[i - 1] : 0.0);  // bead u_{-1} feels no force
+    worst = std::max({worst, std::abs(a[i] - r_expected), std::abs(a[n + i] - (force_v[i] - force_u[i]))});
+    scale = std::max({scale, std::abs(force_u[i]), std::abs(force_v[i])});
+  }
+  CHECK(worst < 1e-14 * std::max(1.0, scale));
 }

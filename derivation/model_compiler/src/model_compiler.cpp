@@ -34,6 +34,9 @@ std::string read_bytes(const fs::path& path) {
   return ss.str();
 }
 
+// The cache key's kind of lattice code: a new kernel ABI compiles the model file again.
+const std::string kLatticeCode = "lattice " + std::to_string(LRCHAIN_LATTICE_ABI_VERSION);
+
 // $XDG_CACHE_HOME/lrchain, else $HOME/.cache/lrchain.
 fs::path cache_directory() {
   const char* xdg = std::getenv("XDG_CACHE_HOME");
@@ -152,7 +155,7 @@ void compile_into_cache(const std::string& source_text, const std::vector<std::s
   }
 }
 
-// The cache entry of a model file's bytes for one kind of code (kEvaluatorCode, "lattice 1").
+// The cache entry of a model file's bytes for one kind of code (kEvaluatorCode, kLatticeCode).
 fs::path cache_entry(const std::string& bytes, const std::string& kind, const std::string& prefix) {
   return cache_directory() / (prefix + model_hash_text(model_cache_key(bytes, model_compiler_path(), LRCHAIN_VERSION, kind)).substr(2) + ".so");
 }
@@ -247,7 +250,7 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, 
 }
 
 void check_lattice_compiler(const fs::path& path) {
-  if (fs::exists(cache_entry(read_bytes(path), "lattice 1", "lattice-"))) return;
+  if (fs::exists(cache_entry(read_bytes(path), kLatticeCode, "lattice-"))) return;
   const std::string compiler = model_compiler_path();
   if (!program_in_path(compiler))
     throw InputError("--model " + path.string() + ": lattice runs of a model file compile its lattice code with the C++ "
@@ -259,7 +262,7 @@ std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const fs::p
   const std::string bytes = read_bytes(path);
   // The model's name first (a bad file is the user's input error, reported before the cache is touched).
   const derivation::ModelFile file = derivation::parse_model_text(bytes, path.string());
-  const fs::path library = cache_entry(bytes, "lattice 1", "lattice-");
+  const fs::path library = cache_entry(bytes, kLatticeCode, "lattice-");
   if (info) info->library = library;
   std::error_code ec;
   if (fs::exists(library, ec)) {

@@ -36,6 +36,9 @@ struct Form {
   std::vector<Bond> bonds;
   std::vector<ex> remainder;   // per field: the force with calls replaced by bond symbols
   int min_offset = 0, max_offset = 0, min_shift = 0, max_shift = 0;
+  // Free ends: instance i of bond j touches only beads of the chain when
+  // first_instance[j] <= i <= n - 1 - instance_reach[j] (see bead_support).
+  std::vector<long> first_instance, instance_reach;
 };
 
 class Generator {
@@ -212,7 +215,36 @@ class Generator {
         form.max_shift = std::max(form.max_shift, hi);
       }
     }
+    for (const Bond& b : form.bonds) {
+      // The chain's beads: field 0 at sites -1..n-1 (bead -1 closes the strain r[0]), the others at 0..n-1.
+      long first = -4 * kReach, reach = -4 * kReach;  // a constant argument touches no bead
+      for (const auto& [field, shift] : bead_support(b.argument, strain)) {
+        first = std::max<long>(first, (field == 0 ? -1 : 0) - shift);
+        reach = std::max<long>(reach, shift);
+      }
+      form.first_instance.push_back(first);
+      form.instance_reach.push_back(reach);
+    }
     return form;
+  }
+
+  // Beads (field, shift) whose displacement a bond argument depends on; strain variables map back to
+  // displacements U: r[k] = U_0[k] - U_0[k-1], w_f[k] = U_f[k] - U_0[k].
+  std::set<std::pair<std::size_t, int>> bead_support(const ex& argument, bool strain) const {
+    std::vector<std::vector<symbol>> bead(fields_);
+    exmap to_beads;
+    for (std::size_t g = 0; g < fields_; ++g)
+      for (int k = -kReach - 1; k <= kReach; ++k) bead[g].push_back(symbol("U_" + std::to_string(g) + "_" + std::to_string(k)));
+    const auto U = [&](std::size_t g, int k) { return bead[g][std::size_t(k + kReach + 1)]; };
+    for (std::size_t g = 0; g < fields_; ++g)
+      for (int k = -kReach; k <= kReach; ++k)
+        to_beads[var(g, k)] = !strain ? ex(U(g, k)) : g == 0 ? U(0, k) - U(0, k - 1) : U(g, k) - U(0, k);
+    const ex displacements = expand(argument.subs(to_beads, subs_options::no_pattern));
+    std::set<std::pair<std::size_t, int>> support;
+    for (std::size_t g = 0; g < fields_; ++g)
+      for (int k = -kReach - 1; k <= kReach; ++k)
+        if (displacements.has(U(g, k))) support.insert({g, k});
+    return support;
   }
 
   bool is_constant(const ex& e, const Form& form) const {
@@ -420,18 +452,35 @@ class Generator {
       choose += ";\n";
     }
     const std::string site_lo = form.strain ? "-1" : "0";
+    const std::string bonds = std::to_string(form.bonds.size());
+    const std::string pad_ends = "periodic ? LRCHAIN_LATTICE_ENDS_PERIODIC : LRCHAIN_LATTICE_ENDS_FIXED";
+    if (!form.bonds.empty()) {
+      const auto list = [](const std::vector<long>& values) {
+        std::string text;
+        for (long v : values) text += (text.empty() ? "" : ", ") + std::to_string(v);
+        return text;
+      };
+      os << "[[maybe_unused]] constexpr long " << name << "_first_instance[] = {" << list(form.first_instance) << "};\n"
+         << "[[maybe_unused]] constexpr long " << name << "_instance_reach[] = {" << list(form.instance_reach) << "};\n\n";
+    }
+    // Strain form, open ends: the free chain (bond instances touching a bead beyond it dropped).
+    const auto free_ends = [&](const std::string& array) -> std::string {
+      if (!form.strain || form.bonds.empty()) return "";
+      return "  if (!periodic) free_ends(" + array + ", " + bonds + ", " + name + "_first_instance, " + name +
+             "_instance_reach, lo, hi, n);\n";
+    };
     for (bool derivative : {false, true}) {
       os << "void " << name << (derivative ? "_jacobian_action" : "_accelerations") << "(const double* P, long n, int periodic, const double* q, "
          << (derivative ? "const double* dq, " : "") << "double* out, double* work) {\n"
-         << "  Workspace w(work, n);\n  w.pad(w.x, q, n, periodic);\n" << choose
+         << "  Workspace w(work, n);\n  w.pad(w.x, q, n, " << pad_ends << ");\n" << choose
          << "  const long lo = " << lo_bond << ", hi = n + " << hi_bond << ";\n"
          << "  if (defaults) " << name << (specialised ? "_default_exponents" : "_generic") << "_bonds(P, lo, hi, w.x, w.b);\n"
-         << "  else " << name << "_generic_bonds(P, lo, hi, w.x, w.b);\n";
+         << "  else " << name << "_generic_bonds(P, lo, hi, w.x, w.b);\n" << free_ends("w.b");
       std::string target = form.strain ? "w.a" : "w.out(out, n)";
       if (derivative) {
-        os << "  w.pad(w.dx, dq, n, periodic);\n"
+        os << "  w.pad(w.dx, dq, n, " << pad_ends << ");\n"
            << "  if (defaults) " << name << (specialised ? "_default_exponents" : "_generic") << "_bond_derivatives(P, lo, hi, w.x, w.dx, w.db);\n"
-           << "  else " << name << "_generic_bond_derivatives(P, lo, hi, w.x, w.dx, w.db);\n"
+           << "  else " << name << "_generic_bond_derivatives(P, lo, hi, w.x, w.dx, w.db);\n" << free_ends("w.db")
            << "  " << name << "_generic_site_derivatives(P, " << site_lo << ", n, w.x, w.b, w.dx, w.db, " << target << ");\n";
       } else {
         os << "  " << name << "_generic_site_forces(P, " << site_lo << ", n, w.x, w.b, " << target << ");\n";
@@ -569,16 +618,19 @@ class Generator {
     }
     int reach = 0;
     for (const auto& b : form.bonds) reach = std::max(reach, b.max_shift);
-    os << "void energy_density(const double* P, long n, int periodic, const double* u, const double* velocity, double* e, double* work) {\n"
-       << "  Workspace w(work, n);\n  w.pad(w.x, u, n, periodic);\n"
+    os << "void energy_density(const double* P, long n, int ends, const double* u, const double* velocity, double* e, double* work) {\n"
+       << "  Workspace w(work, n);\n  w.pad(w.x, u, n, ends);\n"
        << "  const double* v[kVariables];\n  for (int g = 0; g < kVariables; ++g) v[g] = velocity + g * n;\n"
-       << "  const long lo = periodic ? 0 : -" << reach << ";\n"
-       << "  if (" << choose << ") displacement_" << (specialised ? "default_exponents" : "generic") << "_bond_energies(P, lo, n, w.x, w.b);\n"
-       << "  else displacement_generic_bond_energies(P, lo, n, w.x, w.b);\n"
-       << "  displacement_polynomial_energy(P, 0, n, w.x, v, e);\n"
+       << "  const long lo = ends == LRCHAIN_LATTICE_ENDS_PERIODIC ? 0 : -" << reach << ", hi = n;\n"
+       << "  if (" << choose << ") displacement_" << (specialised ? "default_exponents" : "generic") << "_bond_energies(P, lo, hi, w.x, w.b);\n"
+       << "  else displacement_generic_bond_energies(P, lo, hi, w.x, w.b);\n";
+    if (!form.bonds.empty())
+      os << "  if (ends == LRCHAIN_LATTICE_ENDS_FREE) free_ends(w.b, " << form.bonds.size()
+         << ", displacement_first_instance, displacement_instance_reach, lo, hi, n);\n";
+    os << "  displacement_polynomial_energy(P, 0, n, w.x, v, e);\n"
        << "  for (int j = 0; j < " << form.bonds.size() << "; ++j) {\n"
        << "    for (long i = 0; i < n; ++i) e[i] += w.b[j][i];\n"
-       << "    for (long i = lo; i < 0; ++i) e[0] += w.b[j][i];  // bonds reaching in from the fixed wall\n"
+       << "    for (long i = lo; i < 0; ++i) e[0] += w.b[j][i];  // bonds reaching in from the left end\n"
        << "  }\n}\n\n";
   }
 

@@ -46,8 +46,8 @@ class ModelLattice {
   void jacobian_action(const double* q, const double* dq, double* da) const;
   // Energy density e[n] (sites() entries) at positions q and velocities v; InvalidParameter when
   // the model's forces have no potential. Strain form with open ends: the conserved energy of the
-  // free-free chain of beads -1..n-1 in its centre-of-mass frame (bead -1's kinetic term in e[0]);
-  // periodic strain rings are converted to displacements (u_0 summed from u_0[-1] = 0).
+  // free chain of beads -1..n-1 (model_lattice_abi.h) in its centre-of-mass frame (bead -1's kinetic
+  // term in e[0]); periodic strain rings are converted to displacements (u_0 summed from u_0[-1] = 0).
   void energy_density(const double* q, const double* velocity, double* e) const;
   double energy(const State& s) const;
   bool has_energy() const { return kernels_->energy_density != nullptr; }
@@ -56,12 +56,7 @@ class ModelLattice {
   void displacements_of(const double* q, double* u) const;
 
  private:
-  // Ghost sites right of a strain-form chain in its energy: more than any bond's reach (the
-  // generator's shifts stay within 12 sites), so the kernel's fixed wall touches ghosts only.
-  static constexpr std::size_t kFreeEndGhosts = 13;
   bool free_chain() const { return form_ == LatticeForm::strain && !periodic_; }
-  void free_chain_displacements(const double* q, double* u) const;
-  bool left_bead_feels_chain() const;
 
   const lrchain_lattice_kernels* kernels_;
   std::vector<double> parameters_, masses_;
@@ -70,8 +65,7 @@ class ModelLattice {
   LatticeForm form_;
   lrchain_lattice_accelerations accelerations_;
   lrchain_lattice_jacobian_action jacobian_;
-  bool left_bead_moves_ = false;  // bead -1 of a free strain chain feels the chain (else a wall)
-  mutable std::vector<double> work_, u_, v_, e_, chain_e_;
+  mutable std::vector<double> work_, u_, v_, e_;
 };
 
 }  // namespace lrchain::sim

@@ -5,20 +5,29 @@
  * State layout: field-major arrays of `sites` entries per variable. Displacement form: variable f
  * is field f's displacement u_f[n]. Strain form (translation-invariant models): variable 0 is
  * r[n] = u_0[n] - u_0[n-1], variable f >= 1 is w_f[n] = u_f[n] - u_0[n].
- * Ends: periodic != 0 wraps the sites; otherwise every variable is 0 outside the chain (fixed
- * walls in displacement form, zero-strain ends in strain form).
+ * Ends: periodic != 0 wraps the sites. Otherwise, displacement form: every variable is 0 outside
+ * the chain (fixed walls); strain form: free ends, the chain of beads u_0[-1..sites-1] and
+ * u_f[0..sites-1] (f >= 1) without the bond instances (function calls) that touch any other bead;
+ * polynomial terms of the forces see zero strain and relative displacement beyond the ends.
+ * The energy density takes `ends`: LRCHAIN_LATTICE_ENDS_FIXED, _PERIODIC, or _FREE: the strain
+ * form's free chain in displacements measured from bead u_0[-1] (whose kinetic energy is the
+ * caller's), with the same bond instances dropped.
  * `work` holds workspace_size(sites) doubles; nothing allocates. */
 #ifndef LRCHAIN_MODEL_LATTICE_ABI_H
 #define LRCHAIN_MODEL_LATTICE_ABI_H
 
-#define LRCHAIN_LATTICE_ABI_VERSION 1
+#define LRCHAIN_LATTICE_ABI_VERSION 2
+
+#define LRCHAIN_LATTICE_ENDS_FIXED 0
+#define LRCHAIN_LATTICE_ENDS_PERIODIC 1
+#define LRCHAIN_LATTICE_ENDS_FREE 2
 
 typedef void (*lrchain_lattice_accelerations)(const double* parameters, long sites, int periodic,
                                               const double* q, double* a, double* work);
 typedef void (*lrchain_lattice_jacobian_action)(const double* parameters, long sites, int periodic,
                                                 const double* q, const double* dq, double* da,
                                                 double* work);
-typedef void (*lrchain_lattice_energy_density)(const double* parameters, long sites, int periodic,
+typedef void (*lrchain_lattice_energy_density)(const double* parameters, long sites, int ends,
                                                const double* u, const double* velocity, double* e,
                                                double* work);
 

@@ -10,20 +10,29 @@
  * State layout: field-major arrays of `sites` entries per variable. Displacement form: variable f
  * is field f's displacement u_f[n]. Strain form (translation-invariant models): variable 0 is
  * r[n] = u_0[n] - u_0[n-1], variable f >= 1 is w_f[n] = u_f[n] - u_0[n].
- * Ends: periodic != 0 wraps the sites; otherwise every variable is 0 outside the chain (fixed
- * walls in displacement form, zero-strain ends in strain form).
+ * Ends: periodic != 0 wraps the sites. Otherwise, displacement form: every variable is 0 outside
+ * the chain (fixed walls); strain form: free ends, the chain of beads u_0[-1..sites-1] and
+ * u_f[0..sites-1] (f >= 1) without the bond instances (function calls) that touch any other bead;
+ * polynomial terms of the forces see zero strain and relative displacement beyond the ends.
+ * The energy density takes `ends`: LRCHAIN_LATTICE_ENDS_FIXED, _PERIODIC, or _FREE: the strain
+ * form's free chain in displacements measured from bead u_0[-1] (whose kinetic energy is the
+ * caller's), with the same bond instances dropped.
  * `work` holds workspace_size(sites) doubles; nothing allocates. */
 #ifndef LRCHAIN_MODEL_LATTICE_ABI_H
 #define LRCHAIN_MODEL_LATTICE_ABI_H
 
-#define LRCHAIN_LATTICE_ABI_VERSION 1
+#define LRCHAIN_LATTICE_ABI_VERSION 2
+
+#define LRCHAIN_LATTICE_ENDS_FIXED 0
+#define LRCHAIN_LATTICE_ENDS_PERIODIC 1
+#define LRCHAIN_LATTICE_ENDS_FREE 2
 
 typedef void (*lrchain_lattice_accelerations)(const double* parameters, long sites, int periodic,
                                               const double* q, double* a, double* work);
 typedef void (*lrchain_lattice_jacobian_action)(const double* parameters, long sites, int periodic,
                                                 const double* q, const double* dq, double* da,
                                                 double* work);
-typedef void (*lrchain_lattice_energy_density)(const double* parameters, long sites, int periodic,
+typedef void (*lrchain_lattice_energy_density)(const double* parameters, long sites, int ends,
                                                const double* u, const double* velocity, double* e,
                                                double* work);
 
@@ -82,15 +91,18 @@ struct Workspace {
     for (int g = 0; g < kVariables; ++g) a[g] = sites + g * (n + 1) + 1;
   }
 
-  // Copies q (kVariables arrays of n) into padded arrays: periodic images or zeros outside.
-  static void pad(double* const* padded, const double* q, long n, int periodic) {
+  // Copies q (kVariables arrays of n) into padded arrays: periodic images, or zeros outside
+  // (free ends: copies of field 0's last entry on the right, zero strains beyond the chain).
+  static void pad(double* const* padded, const double* q, long n, int ends) {
+    const bool periodic = ends == LRCHAIN_LATTICE_ENDS_PERIODIC;
+    const double right = ends == LRCHAIN_LATTICE_ENDS_FREE ? q[n - 1] : 0.0;
     for (int g = 0; g < kVariables; ++g) {
       double* p = padded[g];
       const double* source = q + g * n;
       std::memcpy(p, source, std::size_t(n) * sizeof(double));
       for (long i = 1; i <= kPad; ++i) {
         p[-i] = periodic ? source[((-i) % n + n) % n] : 0.0;
-        p[n - 1 + i] = periodic ? source[(n - 1 + i) % n] : 0.0;
+        p[n - 1 + i] = periodic ? source[(n - 1 + i) % n] : right;
       }
     }
   }
@@ -107,6 +119,16 @@ struct Workspace {
   double* a[kVariables];
   double* output[kVariables];
 };
+
+// Free ends: zeroes the instances i in [lo, hi) of each bond j outside first[j] <= i <= n - 1 - reach[j]
+// (those touching a bead beyond the chain).
+[[maybe_unused]] void free_ends(double* const* b, int bonds, const long* first, const long* reach, long lo, long hi, long n) {
+  for (int j = 0; j < bonds; ++j) {
+    double* b_j = b[j];
+    for (long i = lo; i < hi && i < first[j]; ++i) b_j[i] = 0.0;
+    for (long i = n - reach[j] > lo ? n - reach[j] : lo; i < hi; ++i) b_j[i] = 0.0;
+  }
+}
 
 // Strain form: r'' = a_0[n] - a_0[n-1], w_f'' = a_f[n] - a_0[n].
 LRCHAIN_KERNEL void strain_differences(double* const* a, double* out, long n) {
@@ -163,9 +185,12 @@ LRCHAIN_KERNEL void displacement_generic_site_derivatives(const double* P, long 
   }
 }
 
+[[maybe_unused]] constexpr long displacement_first_instance[] = {-1};
+[[maybe_unused]] constexpr long displacement_instance_reach[] = {1};
+
 void displacement_accelerations(const double* P, long n, int periodic, const double* q, double* out, double* work) {
   Workspace w(work, n);
-  w.pad(w.x, q, n, periodic);
+  w.pad(w.x, q, n, periodic ? LRCHAIN_LATTICE_ENDS_PERIODIC : LRCHAIN_LATTICE_ENDS_FIXED);
   const bool defaults = false;
   const long lo = -1, hi = n + 1;
   if (defaults) displacement_generic_bonds(P, lo, hi, w.x, w.b);
@@ -175,12 +200,12 @@ void displacement_accelerations(const double* P, long n, int periodic, const dou
 
 void displacement_jacobian_action(const double* P, long n, int periodic, const double* q, const double* dq, double* out, double* work) {
   Workspace w(work, n);
-  w.pad(w.x, q, n, periodic);
+  w.pad(w.x, q, n, periodic ? LRCHAIN_LATTICE_ENDS_PERIODIC : LRCHAIN_LATTICE_ENDS_FIXED);
   const bool defaults = false;
   const long lo = -1, hi = n + 1;
   if (defaults) displacement_generic_bonds(P, lo, hi, w.x, w.b);
   else displacement_generic_bonds(P, lo, hi, w.x, w.b);
-  w.pad(w.dx, dq, n, periodic);
+  w.pad(w.dx, dq, n, periodic ? LRCHAIN_LATTICE_ENDS_PERIODIC : LRCHAIN_LATTICE_ENDS_FIXED);
   if (defaults) displacement_generic_bond_derivatives(P, lo, hi, w.x, w.dx, w.db);
   else displacement_generic_bond_derivatives(P, lo, hi, w.x, w.dx, w.db);
   displacement_generic_site_derivatives(P, 0, n, w.x, w.b, w.dx, w.db, w.out(out, n));
@@ -229,27 +254,33 @@ LRCHAIN_KERNEL void strain_generic_site_derivatives(const double* P, long lo, lo
   }
 }
 
+[[maybe_unused]] constexpr long strain_first_instance[] = {0};
+[[maybe_unused]] constexpr long strain_instance_reach[] = {0};
+
 void strain_accelerations(const double* P, long n, int periodic, const double* q, double* out, double* work) {
   Workspace w(work, n);
-  w.pad(w.x, q, n, periodic);
+  w.pad(w.x, q, n, periodic ? LRCHAIN_LATTICE_ENDS_PERIODIC : LRCHAIN_LATTICE_ENDS_FIXED);
   const bool defaults = false;
   const long lo = -1, hi = n + 2;
   if (defaults) strain_generic_bonds(P, lo, hi, w.x, w.b);
   else strain_generic_bonds(P, lo, hi, w.x, w.b);
+  if (!periodic) free_ends(w.b, 1, strain_first_instance, strain_instance_reach, lo, hi, n);
   strain_generic_site_forces(P, -1, n, w.x, w.b, w.a);
   strain_differences(w.a, out, n);
 }
 
 void strain_jacobian_action(const double* P, long n, int periodic, const double* q, const double* dq, double* out, double* work) {
   Workspace w(work, n);
-  w.pad(w.x, q, n, periodic);
+  w.pad(w.x, q, n, periodic ? LRCHAIN_LATTICE_ENDS_PERIODIC : LRCHAIN_LATTICE_ENDS_FIXED);
   const bool defaults = false;
   const long lo = -1, hi = n + 2;
   if (defaults) strain_generic_bonds(P, lo, hi, w.x, w.b);
   else strain_generic_bonds(P, lo, hi, w.x, w.b);
-  w.pad(w.dx, dq, n, periodic);
+  if (!periodic) free_ends(w.b, 1, strain_first_instance, strain_instance_reach, lo, hi, n);
+  w.pad(w.dx, dq, n, periodic ? LRCHAIN_LATTICE_ENDS_PERIODIC : LRCHAIN_LATTICE_ENDS_FIXED);
   if (defaults) strain_generic_bond_derivatives(P, lo, hi, w.x, w.dx, w.db);
   else strain_generic_bond_derivatives(P, lo, hi, w.x, w.dx, w.db);
+  if (!periodic) free_ends(w.db, 1, strain_first_instance, strain_instance_reach, lo, hi, n);
   strain_generic_site_derivatives(P, -1, n, w.x, w.b, w.dx, w.db, w.a);
   strain_differences(w.a, out, n);
 }
@@ -272,18 +303,19 @@ LRCHAIN_KERNEL void displacement_polynomial_energy(const double* P, long lo, lon
   for (long i = lo; i < hi; ++i) e[i] = ((1.0/2.0)*(v_0[i]*v_0[i]));
 }
 
-void energy_density(const double* P, long n, int periodic, const double* u, const double* velocity, double* e, double* work) {
+void energy_density(const double* P, long n, int ends, const double* u, const double* velocity, double* e, double* work) {
   Workspace w(work, n);
-  w.pad(w.x, u, n, periodic);
+  w.pad(w.x, u, n, ends);
   const double* v[kVariables];
   for (int g = 0; g < kVariables; ++g) v[g] = velocity + g * n;
-  const long lo = periodic ? 0 : -1;
-  if (false) displacement_generic_bond_energies(P, lo, n, w.x, w.b);
-  else displacement_generic_bond_energies(P, lo, n, w.x, w.b);
+  const long lo = ends == LRCHAIN_LATTICE_ENDS_PERIODIC ? 0 : -1, hi = n;
+  if (false) displacement_generic_bond_energies(P, lo, hi, w.x, w.b);
+  else displacement_generic_bond_energies(P, lo, hi, w.x, w.b);
+  if (ends == LRCHAIN_LATTICE_ENDS_FREE) free_ends(w.b, 1, displacement_first_instance, displacement_instance_reach, lo, hi, n);
   displacement_polynomial_energy(P, 0, n, w.x, v, e);
   for (int j = 0; j < 1; ++j) {
     for (long i = 0; i < n; ++i) e[i] += w.b[j][i];
-    for (long i = lo; i < 0; ++i) e[0] += w.b[j][i];  // bonds reaching in from the fixed wall
+    for (long i = lo; i < 0; ++i) e[0] += w.b[j][i];  // bonds reaching in from the left end
   }
 }
 
