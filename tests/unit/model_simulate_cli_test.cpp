@@ -76,7 +76,7 @@ TEST_CASE("model simulate: the shipped model configs pass their schema — unkno
     if (c.experiment == "ring") CHECK(c.ring.amplitudes == std::vector<double>{0.02, 0.01});
     ++loaded;
   }
-  CHECK(loaded == 6);
+  CHECK(loaded == 7);
   const auto fput = lrchain::sim::load_model_experiment_config(
       lrchain::config::Document::from_file(source_dir / "examples" / "models" / "fput_bright.toml"));
   CHECK(fput.parameters.size() == 2);
