@@ -10,7 +10,7 @@
 
 namespace lrchain::sim {
 
-ModelLattice::ModelLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, std::size_t sites,
+ModelLattice::ModelLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
                            bool periodic, LatticeForm form)
     : kernels_(&kernels), parameters_(std::move(parameters)), sites_(sites), periodic_(periodic), form_(form) {
   if (kernels.abi_version != LRCHAIN_LATTICE_ABI_VERSION)
@@ -71,7 +71,7 @@ void ModelLattice::displacements_of(const double* q, double* u) const {
     return;
   }
   std::partial_sum(q, q + n, u);
-  for (std::size_t f = 1; f < fields(); ++f)
+  for (Index f = 1; f < fields(); ++f)
     for (std::size_t i = 0; i < n; ++i) u[f * n + i] = u[i] + q[f * n + i];
 }
 
@@ -81,9 +81,9 @@ void ModelLattice::displacements_of(const double* q, double* u) const {
 void ModelLattice::free_chain_displacements(const double* q, double* u) const {
   const std::size_t n = sites_, stride = sites_ + kFreeEndGhosts;
   std::partial_sum(q, q + n, u);
-  for (std::size_t f = 1; f < fields(); ++f)
+  for (Index f = 1; f < fields(); ++f)
     for (std::size_t i = 0; i < n; ++i) u[f * stride + i] = u[i] + q[f * n + i];
-  for (std::size_t f = 0; f < fields(); ++f) std::fill(u + f * stride + n, u + (f + 1) * stride, u[n - 1]);
+  for (Index f = 0; f < fields(); ++f) std::fill(u + f * stride + n, u + (f + 1) * stride, u[n - 1]);
 }
 
 void ModelLattice::energy_density(const double* q, const double* velocity, double* e) const {
@@ -103,12 +103,12 @@ void ModelLattice::energy_density(const double* q, const double* velocity, doubl
   free_chain_displacements(q, u_.data());
   free_chain_displacements(velocity, v_.data());
   double momentum = 0, mass = masses_[0];
-  for (std::size_t f = 0; f < fields(); ++f) {
+  for (Index f = 0; f < fields(); ++f) {
     momentum += masses_[f] * std::accumulate(v_.begin() + long(f * stride), v_.begin() + long(f * stride + n), 0.0);
     mass += masses_[f] * double(n);
   }
   const double centre_velocity = left_bead_moves_ ? momentum / mass : 0.0;
-  for (std::size_t f = 0; f < fields(); ++f) {
+  for (Index f = 0; f < fields(); ++f) {
     double* v = v_.data() + f * stride;
     for (std::size_t i = 0; i < n; ++i) v[i] -= centre_velocity;
     std::fill(v + n, v + stride, 0.0);
