@@ -183,11 +183,11 @@ void register_coeffs(CLI::App& app) {
       }
       return;
     }
-    const std::size_t branch = model.branch(opts->branch);
+    const Index branch = model.branch(opts->branch);
     const NlsCoefficients c = coefficients(model, branch, opts->theta);
     if (opts->json) {
       nlohmann::json j = to_json(c);
-      j["branch"] = model.definition().branch_names[branch];
+      j["branch"] = model.definition().branch_names[static_cast<std::size_t>(branch)];
       j["model"] = model_json(model);
       j["provenance"] = provenance_json();
       std::printf("%s\n", j.dump().c_str());

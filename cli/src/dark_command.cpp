@@ -546,7 +546,7 @@ ModelDarkJob validate_model_job(const DarkArgs& a, DarkJob job, const CLI::App& 
   Model model = load_selected_model(a.model, cmd, a.p, true);
   LatticeCode code = lattice_kernels_for(a.model, model);
   const lrchain_lattice_kernels& kernels = *code.kernels;
-  const std::optional<std::size_t> given = a.branch_given ? std::optional(model.branch(a.branch)) : std::nullopt;
+  const std::optional<Index> given = a.branch_given ? std::optional(model.branch(a.branch)) : std::nullopt;
   ModelDarkAnsatz ansatz = make_model_dark_ansatz(model, kernels, defocusing_edge(model, given), a.omega_b);
   check_dark_sites(ansatz, a.sites);
   sim::dark::ContactBonds contacts = model_contact_bonds(a.model.file, model, ansatz.mean_flow);

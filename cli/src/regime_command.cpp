@@ -150,7 +150,7 @@ Params resonant_params(const Model& m) {
 }
 
 // A branch of a model by name; empty: "optical" if the model has it, else its only branch.
-std::size_t model_branch(const Model& m, const std::string& name) {
+Index model_branch(const Model& m, const std::string& name) {
   if (!name.empty()) return m.branch(name);
   const auto& names = m.definition().branch_names;
   if (names.size() == 1) return 0;
@@ -168,9 +168,9 @@ void run_intervals(const IntervalsArgs& a, const CLI::App& cmd) {
     s = regime_structure(regime_functions(p, b), {a.samples, 1e-12});
     out = {{"branch", std::string(to_string(b))}, {"params", params_json(p)}};
   } else {
-    const std::size_t b = model_branch(model, a.branch);
+    const Index b = model_branch(model, a.branch);
     s = regime_structure(regime_functions(model, b), {a.samples, 1e-12});
-    out = {{"branch", model.definition().branch_names[b]}};
+    out = {{"branch", model.definition().branch_names[static_cast<std::size_t>(b)]}};
   }
   json intervals = json::array(), roots = json::array();
   for (const auto& i : s.intervals) intervals.push_back(interval_json(i));
@@ -448,15 +448,15 @@ json map_delta0_omega(const MapArgs& a, const fs::path& dir, sim::Figures& figur
 // The axis, its range per branch and the branches of a model's (parameter, theta) map.
 struct ModelMapPlan {
   std::string axis;
-  std::vector<std::size_t> branches;
+  std::vector<Index> branches;
   std::vector<std::vector<double>> ranges;  // per branch: lo hi
 };
 
 // Default axis range: the resonant chain's rho as in Fig. 2, else the parameter's declared range
 // when it is bounded (open ends moved inwards by 1e-3 of its width).
-std::vector<double> default_axis_range(const Model& m, const ParameterLine& line, std::size_t branch) {
+std::vector<double> default_axis_range(const Model& m, const ParameterLine& line, Index branch) {
   if (m.name() == "resonant_chain" && line.parameter().name == "rho")
-    return m.definition().branch_names[branch] == "optical" ? std::vector<double>{0.01, 30.0}
+    return m.definition().branch_names[static_cast<std::size_t>(branch)] == "optical" ? std::vector<double>{0.01, 30.0}
                                                            : std::vector<double>{0.01, 2.5};
   const ModelParameter& p = line.parameter();
   if (!(p.has_lower && p.has_upper))
@@ -471,11 +471,11 @@ ModelMapPlan plan_model_map(const MapArgs& a, const Model& m) {
   plan.axis = !a.axis.empty() ? a.axis : m.name() == "resonant_chain" ? "rho" : m.definition().parameters.at(0).name;
   const ParameterLine line(m, plan.axis);
   if (a.branch == "both" || a.branch == "all") {
-    for (std::size_t b = m.definition().branch_names.size(); b-- > 0;) plan.branches.push_back(b);  // optical first
+    for (auto b = static_cast<Index>(m.definition().branch_names.size()); b-- > 0;) plan.branches.push_back(b);  // optical first
   } else {
     plan.branches.push_back(m.branch(a.branch));
   }
-  for (std::size_t b : plan.branches) {
+  for (Index b : plan.branches) {
     const auto r = range_or(a.axis_range, {0.0, 1.0}, "axis-range");
     plan.ranges.push_back(a.axis_range.empty() ? default_axis_range(m, line, b) : r);
     line.check_range(plan.ranges.back()[0], plan.ranges.back()[1], "axis-range");
@@ -500,8 +500,8 @@ json map_model(const MapArgs& a, const Model& m, const ModelMapPlan& plan, const
      << "set key top right opaque box font ',9'\n";
   const double panel_w = 1.0 / static_cast<double>(plan.branches.size());
   for (std::size_t k = 0; k < plan.branches.size(); ++k) {
-    const std::size_t b = plan.branches[k];
-    const std::string bn = m.definition().branch_names[b];
+    const Index b = plan.branches[k];
+    const std::string bn = m.definition().branch_names[static_cast<std::size_t>(b)];
     const auto& rr = plan.ranges[k];
     const GridAxis x{rr[0], rr[1], a.res_x}, theta{std::numbers::pi / a.res_y, std::numbers::pi, a.res_y};
     const auto t0 = std::chrono::steady_clock::now();
@@ -685,14 +685,14 @@ void run_model_thresholds(const ThresholdsArgs& a, const Model& m) {
   const ModelMapPlan plan = plan_model_map(map_like, m);
   json scans = json::array();
   for (std::size_t k = 0; k < plan.branches.size(); ++k) {
-    const std::size_t b = plan.branches[k];
+    const Index b = plan.branches[k];
     const GridAxis scan{plan.ranges[k][0], plan.ranges[k][1], a.scan > 0 ? a.scan : 300};
     const auto t0 = std::chrono::steady_clock::now();
     const auto events = regime_events(m, b, plan.axis, scan);
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     json ev = json::array();
     for (const auto& e : events) ev.push_back(event_json(e));
-    scans.push_back({{"branch", m.definition().branch_names[b]},
+    scans.push_back({{"branch", m.definition().branch_names[static_cast<std::size_t>(b)]},
                      {"axis", plan.axis},
                      {"scan", {{"lo", scan.lo}, {"hi", scan.hi}, {"points", scan.n}}},
                      {"events", ev},

@@ -129,7 +129,7 @@ py::dict model_coefficient_arrays(const LoadedModel& loaded, const std::string& 
   const Model& model = loaded.model;
   if (is_resonant_chain(model.definition()))
     return resonant_chain_coefficient_arrays(resonant_chain_params(model), branch, theta, out_arrays);
-  const std::size_t b = model.branch(branch);
+  const Index b = model.branch(branch);
   validate_wavenumbers(theta);
   CoefficientArrays out(shape_of(theta), out_arrays);
   const double* t = theta.data();

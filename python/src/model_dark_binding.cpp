@@ -48,7 +48,7 @@ ModelDarkJob make_job(const LoadedModel& loaded, double omega_b, const std::opti
   const DarkCenter c = parse_dark_center(center);
   const ShootingMode m = parse_shooting_mode(mode);
   const lrchain_lattice_kernels& kernels = lattice_kernels(loaded);
-  const std::optional<std::size_t> given = branch ? std::optional(loaded.model.branch(*branch)) : std::nullopt;
+  const std::optional<Index> given = branch ? std::optional(loaded.model.branch(*branch)) : std::nullopt;
   ModelDarkJob j{&loaded, &kernels, {}, omega_b, c, sites, m, tolerance, max_iterations};
   try {
     j.ansatz = make_model_dark_ansatz(loaded.model, kernels, defocusing_edge(loaded.model, given), omega_b);

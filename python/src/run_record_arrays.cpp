@@ -25,11 +25,11 @@ py::array_t<double> labels(long first, std::size_t count) {
 
 py::dict record_arrays(const sim::RunRecord& record) {
   py::dict series;
-  const std::size_t rows = record.series.rows(), cols = record.series.names.size();
-  for (std::size_t c = 0; c < cols; ++c) {
-    py::array_t<double> column(static_cast<py::ssize_t>(rows));
-    for (std::size_t r = 0; r < rows; ++r) column.mutable_at(r) = record.series.at(r, c);
-    series[py::str(record.series.names[c])] = column;
+  const Index rows = record.series.rows(), cols = static_cast<Index>(record.series.names.size());
+  for (Index c = 0; c < cols; ++c) {
+    py::array_t<double> column(rows);
+    for (Index r = 0; r < rows; ++r) column.mutable_at(r) = record.series.at(r, c);
+    series[py::str(record.series.names[static_cast<std::size_t>(c)])] = column;
   }
   py::list fields;
   for (const sim::SpaceTime& f : record.fields) {

@@ -335,8 +335,8 @@ BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const 
   S.stats = integrate_observed(chain, s, times, observe, S.integrator, at_boundary, resume_step);
   S.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() +
                     (S.step_choice ? S.step_choice->probe_seconds : 0.0);  // the probe is integration too
-  S.stats.steps += sink.base_steps;
-  S.stats.rhs_evaluations += sink.base_rhs_evaluations;
+  S.stats.steps += static_cast<Index>(sink.base_steps);
+  S.stats.rhs_evaluations += static_cast<Index>(sink.base_rhs_evaluations);
   S.checkpoints_written = sink.written;
   S.last_checkpoint_time = sink.last_time;
   S.t_end = S.stats.t_reached;
@@ -347,7 +347,7 @@ BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const 
   std::vector<double>&centre_t = w.centre_t, &centre_x = w.centre_x;
   centre_t.clear();
   centre_x.clear();
-  for (std::size_t r = 0; r < rec.series.rows(); ++r) {
+  for (Index r = 0; r < rec.series.rows(); ++r) {
     centre_t.push_back(rec.series.at(r, 0));
     centre_x.push_back(rec.series.at(r, 4));
   }

@@ -139,11 +139,12 @@ RunRecord get_record(Reader& r) {
     SpaceTime f;
     f.quantity = r.get_string("field name");
     f.first_label = long(r.get<std::int64_t>("field first label"));
-    f.sites = std::size_t(r.get<std::uint64_t>("field sites"));
+    const std::uint64_t sites = r.get<std::uint64_t>("field sites");
     f.times = r.get_array<double>("field times");
     f.values = r.get_array<float>("field values");
-    if (f.sites == 0 || f.values.size() / f.sites != f.times.size() || f.values.size() % f.sites != 0)
+    if (sites == 0 || f.values.size() / sites != f.times.size() || f.values.size() % sites != 0)
       r.fail("field rows do not match its times");
+    f.sites = static_cast<Index>(sites);  // at most the number of values read
     rec.fields.push_back(std::move(f));
   }
   const std::uint64_t snapshots = r.get_count(8 * 4, "snapshot count");

@@ -27,7 +27,7 @@ void bead_accelerations(const double* __restrict f, const double* __restrict u,
 }  // namespace
 
 DisplacementLattice::DisplacementLattice(const Params& p, Index sites, DisplacementBoundary boundary)
-    : params_(p), law_(make_contact_law(p)), layout_{static_cast<std::size_t>(std::max<Index>(sites, 0))},
+    : params_(p), law_(make_contact_law(p)), layout_{std::max<Index>(sites, 0)},
       boundary_(std::move(boundary)) {
   if (sites < 2) throw InvalidParameter("sites", "the chain needs at least 2 beads");
   for (const EndCondition* e : {&boundary_.left, &boundary_.right})
@@ -48,7 +48,7 @@ double DisplacementLattice::ghost(const EndCondition& e, double t) const {
 
 // Bond forces f_j = V'(u_j - u_{j-1}), j = 0..sites, with the ghost beads of the boundary.
 void DisplacementLattice::acceleration(const double* q, double* a, double t) const {
-  const std::size_t n = layout_.sites;
+  const auto n = static_cast<std::size_t>(layout_.sites);
   const double* u = q;
   const double* v = q + n;
   double f_first, f_last;  // bonds 0 and n
@@ -81,13 +81,13 @@ void DisplacementLattice::acceleration(const double* q, double* a, double t) con
 }
 
 void DisplacementLattice::operator()(const State& s, State& ds, double t) const {
-  const std::size_t n = layout_.sites;
+  const auto n = static_cast<std::size_t>(layout_.sites);
   std::memcpy(ds.data(), s.data() + 2 * n, 2 * n * sizeof(double));
   acceleration(s.data(), ds.data() + 2 * n, t);
 }
 
 void DisplacementLattice::bond_strains(const double* u, double t, double* r) const {
-  const std::size_t n = layout_.sites;
+  const auto n = static_cast<std::size_t>(layout_.sites);
   for (std::size_t j = 1; j < n; ++j) r[j] = u[j] - u[j - 1];
   if (boundary_.periodic) {
     r[0] = r[n] = u[0] - u[n - 1];
@@ -98,7 +98,7 @@ void DisplacementLattice::bond_strains(const double* u, double t, double* r) con
 }
 
 double DisplacementLattice::total_energy(const State& s, double t) const {
-  const std::size_t n = layout_.sites;
+  const auto n = static_cast<std::size_t>(layout_.sites);
   const double* u = layout_.primary(s);
   const double* v = layout_.secondary(s);
   const double* du = layout_.primary_rate(s);

@@ -246,8 +246,8 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   const auto start = std::chrono::steady_clock::now();
   S.stats = integrate_observed(chain, s, times, observe, c.integrator, at_boundary, resume_step);
   S.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  S.stats.steps += sink.base_steps;
-  S.stats.rhs_evaluations += sink.base_rhs_evaluations;
+  S.stats.steps += static_cast<Index>(sink.base_steps);
+  S.stats.rhs_evaluations += static_cast<Index>(sink.base_rhs_evaluations);
   S.checkpoints_written = sink.written;
   S.last_checkpoint_time = sink.last_time;
   S.t_end = S.stats.t_reached;
@@ -257,7 +257,7 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   S.final_peaks = long(final_peaks);
   // The front speed: least-squares slope of the series' front column over the fit window.
   std::vector<double> front_t, front_n;
-  for (std::size_t r = 0; r < rec.series.rows(); ++r) {
+  for (Index r = 0; r < rec.series.rows(); ++r) {
     const double t = rec.series.at(r, 0);
     if (t >= c.front_fit_start - 1e-9 && t <= c.front_fit_end + 1e-9) {
       front_t.push_back(t);

@@ -8,7 +8,7 @@ namespace lrchain::sim {
 void energy_density(const DisplacementLattice& lattice, const State& s, double t, std::span<double> e,
                     std::span<double> r) {
   const auto& L = lattice.layout();
-  const std::size_t n = L.sites;
+  const auto n = static_cast<std::size_t>(L.sites);
   const auto& p = lattice.params();
   const double* u = L.primary(s);
   const double* v = L.secondary(s);

@@ -40,11 +40,10 @@ std::string BlowUp::message() const {
 std::optional<BlowUp> locate_blow_up(const IntegrationStats& stats, Index sites, Index first_label) {
   if (!stats.blew_up || sites <= 0) return std::nullopt;
   static const char* const fields[] = {"u", "v", "du/dt", "dv/dt"};
-  const auto n = static_cast<std::size_t>(sites);
   BlowUp b;
   b.t = stats.t_reached;
-  b.site = first_label + static_cast<Index>(stats.blow_up_index % n);
-  b.field = fields[std::min<std::size_t>(stats.blow_up_index / n, 3)];
+  b.site = first_label + stats.blow_up_index % sites;
+  b.field = fields[std::min<Index>(stats.blow_up_index / sites, 3)];
   return b;
 }
 

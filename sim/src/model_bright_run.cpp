@@ -19,11 +19,11 @@
 namespace lrchain::sim {
 
 // M1, M2, a of the bright breather (eq:focus_app) from the model's coefficients at theta.
-ModelBrightAnsatz::ModelBrightAnsatz(const Model& model, const lrchain_lattice_kernels& kernels, std::size_t branch,
+ModelBrightAnsatz::ModelBrightAnsatz(const Model& model, const lrchain_lattice_kernels& kernels, Index branch,
                                      double theta, std::optional<double> detuning, double n0, bool second_order)
     : nls_(coefficients(model, branch, theta)), n0_(n0) {
   const std::string where = fmt::format("{} at theta = {} on branch {}", model.name(), theta,
-                                        model.definition().branch_names.at(branch));
+                                        model.definition().branch_names.at(static_cast<std::size_t>(branch)));
   if (nls_.regime == Regime::singular)
     throw InvalidParameter("theta", "the NLS coefficients of " + where + " are singular (a resonance); no bright breather");
   if (nls_.regime != Regime::focusing)
@@ -53,7 +53,7 @@ ModelBrightAnsatz::ModelBrightAnsatz(const Model& model, const lrchain_lattice_k
 
 double ModelBrightAnsatz::period() const { return 2.0 * std::numbers::pi / omega_b_; }
 
-void ModelBrightAnsatz::field(std::size_t f, double n, double t, double& u, double& u_dot) const {
+void ModelBrightAnsatz::field(Index f, double n, double t, double& u, double& u_dot) const {
   const double c = nls_.group_velocity;
   const double z = a_ * (n - n0_ - c * t);
   const double e1 = std::exp(-std::abs(z));

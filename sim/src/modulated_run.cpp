@@ -108,7 +108,7 @@ State modulated_initial_state(const ModulatedRunConfig& c, double& omega, double
   theta0 = c.theta_waves * M_PI / double(c.N);
   omega = dispersion_omega(c.params, Branch::acoustic, theta0);
   const double ratio = c.params.kappa / (c.params.kappa - c.params.rho * omega * omega);
-  StateLayout L{N};
+  StateLayout L{c.N};
   State s(L.size());
   for (std::size_t i = 0; i < N; ++i) {
     const double n = double(i), mod = 1 + c.b * std::cos(2 * n * M_PI / double(c.N));
@@ -264,8 +264,8 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
   const auto start = std::chrono::steady_clock::now();
   S.stats = integrate_observed(chain, s, times, observe, c.integrator, at_boundary, resume_step);
   S.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  S.stats.steps += sink.base_steps;
-  S.stats.rhs_evaluations += sink.base_rhs_evaluations;
+  S.stats.steps += static_cast<Index>(sink.base_steps);
+  S.stats.rhs_evaluations += static_cast<Index>(sink.base_rhs_evaluations);
   S.checkpoints_written = sink.written;
   S.last_checkpoint_time = sink.last_time;
   S.t_end = S.stats.t_reached;
@@ -274,7 +274,7 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
   S.blow_up = locate_blow_up(S.stats, N, 0);
   // Dark-breather speed: slope of the series' unwrapped minimum position over the fit window.
   std::vector<double> fit_t, fit_x;
-  for (std::size_t r = 0; r < rec.series.rows(); ++r) {
+  for (Index r = 0; r < rec.series.rows(); ++r) {
     const double t = rec.series.at(r, 0);
     if (t >= c.speed_fit_start - 1e-9 && t <= c.speed_fit_end + 1e-9) {
       fit_t.push_back(t);

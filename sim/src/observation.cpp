@@ -24,9 +24,9 @@ Snapshot displacement_snapshot(const StateLayout& L, const State& s, std::span<c
   snap.names = {"n", "u", "v", "u_dot", "v_dot", "e"};
   const double *u = L.primary(s), *v = L.secondary(s), *ud = L.primary_rate(s),
                *vd = L.secondary_rate(s);
-  for (std::size_t i = 0; i < L.sites; ++i)
-    snap.data.insert(snap.data.end(),
-                     {double(first_label + Index(i)), u[i], v[i], ud[i], vd[i], e[i]});
+  for (Index i = 0; i < L.sites; ++i)
+    snap.data.insert(snap.data.end(), {double(first_label + i), u[i], v[i], ud[i], vd[i],
+                                       e[static_cast<std::size_t>(i)]});
   return snap;
 }
 

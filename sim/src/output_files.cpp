@@ -83,7 +83,7 @@ void write_spacetime_binary(const fs::path& dir, const std::string& name, const 
     std::ofstream out(tmp, std::ios::binary);
     std::vector<float> row(f.sites + 1);
     row[0] = static_cast<float>(f.sites);
-    for (std::size_t i = 0; i < f.sites; ++i) row[i + 1] = static_cast<float>(f.first_label + long(i));
+    for (Index i = 0; i < f.sites; ++i) row[static_cast<std::size_t>(i) + 1] = static_cast<float>(f.first_label + i);
     out.write(reinterpret_cast<const char*>(row.data()), std::streamsize(row.size() * sizeof(float)));
     const std::size_t rows = f.sites ? f.values.size() / f.sites : 0;
     for (std::size_t k = 0; k < rows; ++k) {

@@ -41,7 +41,7 @@ Checkpoint read_restart(const std::string& file, const TrajectoryIdentity& ident
 }
 
 Resumption resume_from_checkpoint(const std::string& file, const TrajectoryIdentity& identity, const std::string& kind,
-                                  std::size_t sites, double t_end, State& state, RunRecord& record,
+                                  Index sites, double t_end, State& state, RunRecord& record,
                                   std::initializer_list<std::pair<const char*, double*>> accumulators,
                                   CheckpointSink& sink, std::vector<double>& times) {
   Checkpoint ck = read_restart(file, identity, state.size(), t_end);
@@ -91,8 +91,8 @@ void CheckpointSink::write(const State& s, double t, double next_step, const Int
   c.identity = identity;
   c.t = t;
   c.next_step = next_step;
-  c.steps = base_steps + stats.steps;
-  c.rhs_evaluations = base_rhs_evaluations + stats.rhs_evaluations;
+  c.steps = base_steps + static_cast<std::uint64_t>(stats.steps);
+  c.rhs_evaluations = base_rhs_evaluations + static_cast<std::uint64_t>(stats.rhs_evaluations);
   c.accumulators = std::move(accumulators);
   c.state = s;
   write_checkpoint(path, c, record);

@@ -35,7 +35,7 @@ struct Resumption {
 // then moves its state and record into `state` and `record`, reads each named accumulator into
 // its slot, carries the work done into `sink` and keeps the observation times from its time on.
 Resumption resume_from_checkpoint(const std::string& file, const TrajectoryIdentity& identity, const std::string& kind,
-                                  std::size_t sites, double t_end, State& state, RunRecord& record,
+                                  Index sites, double t_end, State& state, RunRecord& record,
                                   std::initializer_list<std::pair<const char*, double*>> accumulators,
                                   CheckpointSink& sink, std::vector<double>& times);
 

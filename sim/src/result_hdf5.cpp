@@ -110,7 +110,7 @@ void write_record(Hdf5TreeFile& file, const RunRecord& record, const KindLayout&
   if (!record.fields.empty()) {
     const SpaceTime& f = record.fields[0];
     std::vector<double> n(f.sites);
-    for (std::size_t i = 0; i < f.sites; ++i) n[i] = double(f.first_label + long(i));
+    for (Index i = 0; i < f.sites; ++i) n[static_cast<std::size_t>(i)] = double(f.first_label + i);
     write_field(file, "/energy_density", f.quantity, n, f.times, f.values, Hdf5Element::float32);
   }
   file.create_group("/snapshots");

@@ -27,14 +27,14 @@ void site_accelerations(const double* __restrict F, const double* __restrict x,
 }  // namespace
 
 StrainLattice::StrainLattice(const Params& p, Index sites, StrainEnds ends)
-    : params_(p), law_(make_contact_law(p)), layout_{static_cast<std::size_t>(std::max<Index>(sites, 0))}, ends_(ends) {
+    : params_(p), law_(make_contact_law(p)), layout_{std::max<Index>(sites, 0)}, ends_(ends) {
   if (sites < 2) throw InvalidParameter("sites", "the strain lattice needs at least 2 sites");
   force_.assign(layout_.sites + 2, 0.0);
 }
 
 // x_n'' and y_n'' of eq:Hertzd0S from F_n = V'(x_n) (F at the ghost sites: 0 or periodic copy).
 void StrainLattice::acceleration(const double* q, double* a) const {
-  const std::size_t n = layout_.sites;
+  const auto n = static_cast<std::size_t>(layout_.sites);
   const double* x = q;
   const double* y = q + n;
   double* F = force_.data();
@@ -49,7 +49,7 @@ void StrainLattice::acceleration(const double* q, double* a) const {
 }
 
 void StrainLattice::operator()(const State& s, State& ds, double /*t*/) const {
-  const std::size_t n = layout_.sites;
+  const auto n = static_cast<std::size_t>(layout_.sites);
   std::memcpy(ds.data(), s.data() + 2 * n, 2 * n * sizeof(double));
   acceleration(s.data(), ds.data() + 2 * n);
 }

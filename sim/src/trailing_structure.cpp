@@ -15,7 +15,7 @@ TrailingStructure track_trailing_structure(const SpaceTime& field, const std::ve
   TrailingStructure r;
   if (!(opt.fit_start > 0) || field.sites == 0 || centre_t.empty()) return r;
   std::vector<double> fit_t, fit_c;
-  const Index sites = Index(field.sites);
+  const Index sites = field.sites;
   for (std::size_t row = 0; row < field.times.size(); ++row) {
     const double t = field.times[row];
     if (t < opt.fit_start) continue;
@@ -23,7 +23,7 @@ TrailingStructure track_trailing_structure(const SpaceTime& field, const std::ve
     const auto it = std::lower_bound(centre_t.begin(), centre_t.end(), t);
     const std::size_t k = it == centre_t.end() ? centre_t.size() - 1 : std::size_t(it - centre_t.begin());
     const double X = centre_x[k];
-    const float* e = field.values.data() + row * field.sites;
+    const float* e = field.values.data() + static_cast<Index>(row) * sites;
     Index best = -1;
     for (Index i = 0; i < sites; ++i) {
       const Index n = field.first_label + i;

@@ -8,6 +8,7 @@
 #include "lrchain/coefficients.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/model.hpp"
+#include "lrchain/regime/model_regime.hpp"
 
 using namespace lrchain;
 
@@ -38,6 +39,13 @@ TEST_CASE("unknown parameters, values outside the declared range and unknown bra
   CHECK_THROWS_AS(shipped_model("no_such_model"), InputError);
   CHECK_THROWS_AS(shipped_model("klein_gordon").branch("optical"), InvalidParameter);
   CHECK_THROWS_AS(coefficients(shipped_model("fput"), 0, 0.0), InvalidParameter);  // acoustic theta = 0
+  // Branch indices are signed (lrchain::Index): the resonant chain has branches 0 and 1 only.
+  const Model rc = shipped_model("resonant_chain");
+  CHECK(rc.branch("optical") == 1);
+  CHECK_THROWS_AS(coefficients(rc, -1, 1.0), InvalidParameter);
+  CHECK_THROWS_AS(coefficients(rc, 2, 1.0), InvalidParameter);
+  CHECK_THROWS_AS(second_order_terms(rc, -1, 1.0), InvalidParameter);
+  CHECK_THROWS_AS(regime::regime_functions(rc, -1), InvalidParameter);
 }
 
 TEST_CASE("the generic path for the resonant chain agrees with the specialised coefficients()") {

@@ -119,7 +119,7 @@ class Model {
   const std::vector<double>& inputs() const { return q_; }
   double parameter(std::string_view name) const;
   // Index of a branch name (throws InvalidParameter("branch", ...) naming the model's branches).
-  std::size_t branch(std::string_view name) const;
+  Index branch(std::string_view name) const;
 
  private:
   std::shared_ptr<const ModelDefinition> definition_;
@@ -139,12 +139,12 @@ std::uint64_t fnv1a_64(std::string_view bytes, std::uint64_t hash = 146959810393
 // omega is the branch's root of det M = 0 in omega^2. lambda is NaN (no mean flow) for on-site
 // models. Throws InvalidParameter for theta out of range or where the branch has no real,
 // positive frequency (theta = 0 on an acoustic branch). Allocation-free.
-NlsCoefficients coefficients(const Model& model, std::size_t branch, double theta);
+NlsCoefficients coefficients(const Model& model, Index branch, double theta);
 
 // The same from the evaluator input vector q (parameters, then intermediates) without any check
 // of theta or branch: false (and `out` untouched) where det M has no real root or the branch's
 // omega^2 is not positive. For loops over theta or a parameter (regime maps). Allocation-free.
-bool coefficients_at(const ModelDefinition& definition, const double* q, std::size_t branch, double theta,
+bool coefficients_at(const ModelDefinition& definition, const double* q, Index branch, double theta,
                      NlsCoefficients& out) noexcept;
 
 // The second-order terms of the multiple-scale expansion of `model` on `branch` at theta, per field
@@ -155,7 +155,7 @@ struct SecondOrderTerms {
   std::vector<double> mean;                           // A_{2,0,f} / |A_{1,1}|^2 (mean flow: offset from it)
   std::vector<std::complex<double>> kernel_gradient;  // G_f: A_{2,1,f} = K_f A_{2,1} + G_f d_xi A_{1,1}
 };
-SecondOrderTerms second_order_terms(const Model& model, std::size_t branch, double theta);
+SecondOrderTerms second_order_terms(const Model& model, Index branch, double theta);
 
 // Roots in omega^2 of the polynomial sum_k coefficients[k] w^k (k = 0..degree, degree <=
 // kMaxModelDegree), real parts ascending, into roots[0..degree); returns false when a root is not

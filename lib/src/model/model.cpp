@@ -84,10 +84,10 @@ double Model::parameter(std::string_view name) const {
   throw InvalidParameter(std::string(name), "model " + definition_->name + " has no such parameter");
 }
 
-std::size_t Model::branch(std::string_view name) const {
+Index Model::branch(std::string_view name) const {
   const auto& names = definition_->branch_names;
   for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return i;
+    if (names[i] == name) return static_cast<Index>(i);
   std::string known;
   for (const auto& n : names) known += (known.empty() ? "'" : ", '") + n + "'";
   throw InvalidParameter("branch", "model " + definition_->name + " has the branches " + known + ", not '" +
@@ -144,7 +144,7 @@ namespace {
 
 // Roots of det M in omega^2, the branch's omega, the emitted NLS evaluator, the singular test
 // (inlined into both entry points: this is the hot path of every map and scan).
-[[gnu::always_inline]] inline bool evaluate_coefficients(const ModelDefinition& d, const double* q, std::size_t branch,
+[[gnu::always_inline]] inline bool evaluate_coefficients(const ModelDefinition& d, const double* q, Index branch,
                                                          double theta, NlsCoefficients& c) noexcept {
   double sh, ch;
   detail::half_angle_sincos(0.5 * theta, sh, ch);
@@ -184,16 +184,17 @@ namespace {
 
 }  // namespace
 
-bool coefficients_at(const ModelDefinition& d, const double* q, std::size_t branch, double theta,
+bool coefficients_at(const ModelDefinition& d, const double* q, Index branch, double theta,
                      NlsCoefficients& c) noexcept {
   return evaluate_coefficients(d, q, branch, theta, c);
 }
 
-NlsCoefficients coefficients(const Model& model, std::size_t branch, double theta) {
+NlsCoefficients coefficients(const Model& model, Index branch, double theta) {
   const ModelDefinition& d = model.definition();
   if (!(std::isfinite(theta) && theta > -std::numbers::pi && theta <= std::numbers::pi))
     throw InvalidParameter("theta", "must be a wavenumber in (-pi, pi]");
-  if (branch >= d.branch_names.size()) throw InvalidParameter("branch", "index out of range for model " + d.name);
+  if (branch < 0 || branch >= static_cast<Index>(d.branch_names.size()))
+    throw InvalidParameter("branch", "index out of range for model " + d.name);
   NlsCoefficients c;
   if (evaluate_coefficients(d, model.inputs().data(), branch, theta, c)) [[likely]] return c;
   double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
@@ -202,7 +203,7 @@ NlsCoefficients coefficients(const Model& model, std::size_t branch, double thet
   d.evaluators.evaluate_dispersion(4.0 * sh * sh, 2.0 * sh * ch, model.inputs().data(), w);
   if (!omega_squared_roots(w, d.degree, roots))
     throw InvalidParameter("theta", "model " + d.name + " has no real frequency at this wavenumber");
-  throw InvalidParameter("theta", "branch " + d.branch_names[branch] + " of model " + d.name +
+  throw InvalidParameter("theta", "branch " + d.branch_names[static_cast<std::size_t>(branch)] + " of model " + d.name +
                                       " has no positive frequency here (theta = 0 on an acoustic branch is the "
                                       "zero-frequency mode)");
 }

@@ -34,7 +34,7 @@ namespace {
 class StrainContactSystem final : public ContactSystem {
  public:
   explicit StrainContactSystem(const StrainLatticeOrbit& orbit) : orbit_(orbit) {}
-  std::size_t dimension() const override { return orbit_.orbit_size(); }
+  Index dimension() const override { return orbit_.orbit_size(); }
   int stiffness_count() const override { return orbit_.sites(); }
   void rhs(const double* s, double* ds, double* stiffness) const override { orbit_.rhs(s, ds, stiffness); }
   int contact_count() const override { return orbit_.sites(); }

@@ -16,7 +16,7 @@ namespace lrchain::sim::dark {
 
 namespace {
 // "defocusing", "focusing (omega'' h_tilde = ...)" or why there are no coefficients at theta.
-std::string edge_regime(const Model& model, std::size_t branch, double theta, bool& defocusing) {
+std::string edge_regime(const Model& model, Index branch, double theta, bool& defocusing) {
   defocusing = false;
   try {
     const NlsCoefficients c = coefficients(model, branch, theta);
@@ -69,16 +69,16 @@ std::vector<double> uniform_kernel(const Model& model, const lrchain_lattice_ker
 
 }  // namespace
 
-ModelDarkEdge defocusing_edge(const Model& model, std::optional<std::size_t> branch) {
+ModelDarkEdge defocusing_edge(const Model& model, std::optional<Index> branch) {
   const auto& names = model.definition().branch_names;
   std::string checked;
-  for (std::size_t b = 0; b < names.size(); ++b) {
+  for (Index b = 0; b < static_cast<Index>(names.size()); ++b) {
     if (branch && *branch != b) continue;
     for (const double theta : {std::numbers::pi, 0.0}) {
       bool defocusing = false;
       const std::string regime = edge_regime(model, b, theta, defocusing);
       if (defocusing) return {b, theta};
-      checked += fmt::format("{}{} at theta = {}: {}", checked.empty() ? "" : "; ", names[b], theta == 0 ? "0" : "pi",
+      checked += fmt::format("{}{} at theta = {}: {}", checked.empty() ? "" : "; ", names[static_cast<std::size_t>(b)], theta == 0 ? "0" : "pi",
                              regime);
     }
   }
@@ -88,10 +88,10 @@ ModelDarkEdge defocusing_edge(const Model& model, std::optional<std::size_t> bra
 
 ModelDarkAnsatz make_model_dark_ansatz(const Model& model, const lrchain_lattice_kernels& kernels,
                                        const ModelDarkEdge& edge, double omega_b) {
-  const std::size_t branch = edge.branch;
+  const Index branch = edge.branch;
   const NlsCoefficients c = coefficients(model, branch, edge.theta);
   const std::string where = fmt::format("the theta = {} edge of {} branch {}", edge.theta == 0 ? "0" : "pi",
-                                        model.name(), model.definition().branch_names.at(branch));
+                                        model.name(), model.definition().branch_names.at(static_cast<std::size_t>(branch)));
   if (c.regime != Regime::defocusing) throw InvalidParameter("branch", where + " is not defocusing");
   const double detuning = 3.0 * (omega_b - c.omega);
   if (!(std::isfinite(omega_b) && omega_b > 0.0 && detuning / c.h_tilde > 0.0))

@@ -30,7 +30,7 @@ struct ModelDarkOrbit::Steppers {
 class ModelDarkOrbit::Contacts final : public ContactSystem {
  public:
   explicit Contacts(const ModelDarkOrbit& orbit) : orbit_(orbit) {}
-  std::size_t dimension() const override { return 2 * std::size_t(orbit_.positions()); }
+  Index dimension() const override { return 2 * orbit_.positions(); }
   int stiffness_count() const override { return 0; }
   void rhs(const double* s, double* ds, double*) const override { orbit_.rhs(s, ds); }
   int contact_count() const override { return int(orbit_.bonds_.size()) * orbit_.sites(); }

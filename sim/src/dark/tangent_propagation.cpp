@@ -36,7 +36,7 @@ void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& reco
       s.assign(static_cast<std::size_t>(rows * b), 0.0);
       for (int j = 0; j < b; ++j)
         for (Eigen::Index r = 0; r < rows; ++r) s[static_cast<std::size_t>(r * b + j)] = phi(r, c0 + j);
-      std::size_t step = 0;
+      Index step = 0;
       int call = 0;
       auto sys = [&](const State& x, State& dx, double) {
         const double* g = record.stage(step, std::min(call, OrbitRecord::stages - 1));
@@ -49,7 +49,7 @@ void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& reco
           break;
         }
         call = 0;
-        stepper.do_step(sys, s, record.t[step], record.dt[step]);
+        stepper.do_step(sys, s, record.t[static_cast<std::size_t>(step)], record.dt[static_cast<std::size_t>(step)]);
         if (call != OrbitRecord::stages) stage_mismatch = true;
       }
       for (int j = 0; j < b; ++j)

@@ -10,7 +10,7 @@
 
 namespace lrchain::sim {
 
-ModelLattice::ModelLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, std::size_t sites,
+ModelLattice::ModelLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
                            bool periodic, LatticeForm form)
     : kernels_(&kernels), parameters_(std::move(parameters)), sites_(sites), periodic_(periodic), form_(form) {
   if (kernels.abi_version != LRCHAIN_LATTICE_ABI_VERSION)
@@ -54,7 +54,7 @@ void ModelLattice::displacements_of(const double* q, double* u) const {
     return;
   }
   std::partial_sum(q, q + n, u);
-  for (std::size_t f = 1; f < fields(); ++f)
+  for (Index f = 1; f < fields(); ++f)
     for (std::size_t i = 0; i < n; ++i) u[f * n + i] = u[i] + q[f * n + i];
 }
 
@@ -72,9 +72,10 @@ void ModelLattice::energy_density(const double* q, const double* velocity, doubl
   // and velocities measured from bead -1. Its total momentum is conserved, so the conserved energy
   // computable from relative velocities is the centre-of-mass one: potential + (1/2) sum_k m_k (v_k - V)^2.
   double momentum = 0, mass = masses_[0];
-  for (std::size_t f = 0; f < fields(); ++f) {
-    momentum += masses_[f] * std::accumulate(v_.begin() + long(f * sites_), v_.begin() + long((f + 1) * sites_), 0.0);
-    mass += masses_[f] * double(sites_);
+  for (Index f = 0; f < fields(); ++f) {
+    const double field_mass = masses_[std::size_t(f)];
+    momentum += field_mass * std::accumulate(v_.begin() + f * sites(), v_.begin() + (f + 1) * sites(), 0.0);
+    mass += field_mass * double(sites());
   }
   const double centre_velocity = momentum / mass;
   for (double& v : v_) v -= centre_velocity;

@@ -110,9 +110,9 @@ const lrchain_lattice_kernels& lattice_kernels_of(const Model& model) {
   return *kernels;
 }
 
-BlochMode bloch_mode(const Model& model, const lrchain_lattice_kernels& kernels, std::size_t branch, double theta) {
+BlochMode bloch_mode(const Model& model, const lrchain_lattice_kernels& kernels, Index branch, double theta) {
   const std::vector<BlochMode> modes = bloch_modes(kernels, lattice_parameters(model), theta);
-  if (branch >= modes.size())
+  if (branch < 0 || branch >= static_cast<Index>(modes.size()))
     throw InvalidParameter("branch", fmt::format("{} has {} branches", model.name(), modes.size()));
   const NlsCoefficients nls = coefficients(model, branch, theta);
   if (!(std::abs(modes[branch].omega - nls.omega) <= 1e-9 * nls.omega))

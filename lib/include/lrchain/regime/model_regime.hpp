@@ -5,6 +5,7 @@
 // chain's Params functions in the other regime headers are this model's specialised path.
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,36 +21,36 @@ namespace lrchain::regime {
 
 // theta -> the four smooth functions of `model` on `branch` (index into its branch names); all
 // NaN where the branch has no real positive frequency (theta = 0 on an acoustic branch).
-RegimeFunctions regime_functions(const Model& model, std::size_t branch);
+RegimeFunctions regime_functions(const Model& model, Index branch);
 
 // Focusing theta-intervals in (0, pi] of one branch of a model.
-std::vector<FocusingInterval> focusing_intervals(const Model& model, std::size_t branch,
+std::vector<FocusingInterval> focusing_intervals(const Model& model, Index branch,
                                                  const IntervalOptions& options = {});
 
 // A model with one named parameter varied and the others fixed: the evaluator inputs at any value.
 class ParameterLine {
  public:
-  static constexpr std::size_t kMaxParameters = 64;
+  static constexpr Index kMaxParameters = 64;
   // Throws InvalidParameter naming the model's parameters if `parameter` is not one of them.
   ParameterLine(const Model& base, std::string_view parameter);
   const ModelDefinition& definition() const { return base_.definition(); }
   const ModelParameter& parameter() const { return definition().parameters[index_]; }
-  std::size_t input_count() const { return base_.inputs().size(); }
+  Index input_count() const { return static_cast<Index>(base_.inputs().size()); }
   // Evaluator inputs q (input_count() values: parameters, then intermediates) at parameter value x.
-  // No range check; allocation-free.
-  void inputs_at(double x, double* q) const;
+  // No range check; allocation-free. q.size() must be input_count().
+  void inputs_at(double x, std::span<double> q) const;
   // Throws InvalidParameter(option, ...) unless both ends lie in the parameter's declared range.
   void check_range(double lo, double hi, const std::string& option) const;
 
  private:
   Model base_;
-  std::size_t index_ = 0;
+  Index index_ = 0;
 };
 
 // Pixel map of sign(omega'' h_tilde) over (parameter, theta) for one branch of a model; pixel
 // values are those of regime_map.hpp (outside = no positive frequency on the branch there).
 struct ModelRegimeMap {
-  std::size_t branch = 0;
+  Index branch = 0;
   std::string parameter;
   GridAxis x;  // the parameter
   GridAxis y;  // theta
@@ -59,15 +60,15 @@ struct ModelRegimeMap {
 };
 
 // The map at (x_i, theta_j); both ends of x inside the parameter's range, theta in [0, pi].
-ModelRegimeMap parameter_theta_map(const Model& base, std::size_t branch, std::string_view parameter,
+ModelRegimeMap parameter_theta_map(const Model& base, Index branch, std::string_view parameter,
                                    const GridAxis& x, const GridAxis& theta);
 
 // Zero curves of the four smooth functions in the (parameter, theta) plane, parameter in [lo, hi].
-std::vector<BoundaryCurve> boundary_curves(const Model& base, std::size_t branch, std::string_view parameter,
+std::vector<BoundaryCurve> boundary_curves(const Model& base, Index branch, std::string_view parameter,
                                            double lo, double hi, const TraceOptions& options = {});
 
 // Every change of the boundary structure along the parameter on the scan grid (regime_events.hpp).
-std::vector<RegimeEvent> regime_events(const Model& base, std::size_t branch, std::string_view parameter,
+std::vector<RegimeEvent> regime_events(const Model& base, Index branch, std::string_view parameter,
                                        const GridAxis& scan, const EventOptions& options = {});
 
 }  // namespace lrchain::regime

@@ -39,7 +39,7 @@ class DisplacementLattice {
   // Throws InvalidParameter("sites", ...) for fewer than 2 beads.
   DisplacementLattice(const Params& p, Index sites, DisplacementBoundary boundary = {});
 
-  Index sites() const { return static_cast<Index>(layout_.sites); }
+  Index sites() const { return layout_.sites; }
   const StateLayout& layout() const { return layout_; }
   const Params& params() const { return params_; }
   const ContactLaw& law() const { return law_; }

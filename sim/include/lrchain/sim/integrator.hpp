@@ -52,7 +52,7 @@ std::size_t first_non_finite(const double* x, std::size_t n);
 template <class System>
 struct Counted {
   const System* sys;
-  std::size_t* count;
+  Index* count;
   void operator()(const State& s, State& ds, double t) const {
     ++*count;
     (*sys)(s, ds, t);
@@ -63,7 +63,7 @@ struct Counted {
 template <class System>
 struct CountedAcceleration {
   const System* sys;
-  std::size_t* count;
+  Index* count;
   void operator()(const std::vector<double>& q, std::vector<double>& a) const {
     ++*count;
     sys->acceleration(q.data(), a.data(), 0.0);
@@ -81,7 +81,7 @@ template <class System>
 struct StagedAcceleration {
   struct Shared {
     const System* sys = nullptr;
-    std::size_t* count = nullptr;
+    Index* count = nullptr;
     std::vector<double> kick;  // b_l per Odeint stage
     bool fsal = false;         // a_0 == 0
     std::size_t call = 0;
@@ -117,8 +117,8 @@ using RknCoor = std::vector<double, boost::alignment::aligned_allocator<double, 
 // `steps` and `rhs_evaluations` are counted in place, so they stay right if obs throws to stop.
 template <class Stepper, class System, class Obs>
 void integrate_rkn_observed(const System& system, State& state, const std::vector<double>& times,
-                            Obs& obs, double dt, std::size_t& steps,
-                            std::size_t& rhs_evaluations) {
+                            Obs& obs, double dt, Index& steps,
+                            Index& rhs_evaluations) {
   namespace odeint = boost::numeric::odeint;
   const std::size_t half = state.size() / 2;
   RknCoor q(state.begin(), state.begin() + half);
@@ -138,7 +138,7 @@ void integrate_rkn_observed(const System& system, State& state, const std::vecto
         checked_count(interval / dt * (1 - 1e-12), "dt", 1, max_fixed_steps, "steps between observations"));
     odeint::integrate_n_steps(std::ref(stepper), acc, std::make_pair(std::ref(q), std::ref(p)),
                               times[k], interval / double(m), m);
-    steps += m;
+    steps += static_cast<Index>(m);
     std::copy(q.begin(), q.end(), state.begin());
     std::copy(p.begin(), p.end(), state.begin() + half);
   }
@@ -151,7 +151,7 @@ struct StopIntegration {};
 // next handed to `boundary`, and started from `dt`: a restart from (state, t, dt) takes the same steps.
 template <class Stepper, class System, class Obs, class Boundary>
 void integrate_times_controlled(Stepper& st, System system, State& x, const std::vector<double>& times,
-                                double dt, Obs& obs, Boundary& boundary, std::size_t& steps) {
+                                double dt, Obs& obs, Boundary& boundary, Index& steps) {
   namespace odeint = boost::numeric::odeint;
   odeint::failed_step_checker fail_checker;
   auto it = times.begin();
@@ -178,7 +178,7 @@ void integrate_times_controlled(Stepper& st, System system, State& x, const std:
 // a checkpoint written from the observer records the work done so far.
 template <class Stepper, class System, class StateType, class Obs>
 void integrate_times_fixed(Stepper& st, System system, StateType& x, const std::vector<double>& times,
-                           double dt, Obs& obs, std::size_t& steps) {
+                           double dt, Obs& obs, Index& steps) {
   namespace odeint = boost::numeric::odeint;
   double current_dt = dt;
   auto it = times.begin();
@@ -201,7 +201,7 @@ void integrate_times_fixed(Stepper& st, System system, StateType& x, const std::
 // same state and time, the same bits) takes the same steps.
 template <class Dense, class System, class Obs, class Boundary>
 void integrate_times_dense(Dense& st, System system, State& x, const std::vector<double>& times,
-                           double dt, Obs& obs, Boundary& boundary, std::size_t& steps) {
+                           double dt, Obs& obs, Boundary& boundary, Index& steps) {
   namespace odeint = boost::numeric::odeint;
   const double last = times.back();
   auto it = times.begin();
@@ -253,7 +253,7 @@ IntegrationStats integrate_observed(const System& system, State& state,
     stats.t_reached = t;
     if (!detail::all_finite(s.data(), s.size())) {
       stats.blew_up = true;
-      stats.blow_up_index = detail::first_non_finite(s.data(), s.size());
+      stats.blow_up_index = static_cast<Index>(detail::first_non_finite(s.data(), s.size()));
       throw detail::StopIntegration{};
     }
     if (!observer(s, t)) { stats.stopped = true; throw detail::StopIntegration{}; }

@@ -2,7 +2,6 @@
 // The choices and statistics of a lattice time integration (the public part of integrator.hpp):
 // which stepper, its tolerances or step, the step and right-hand-side counts, and where a run that
 // blew up first became non-finite.
-#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,12 +33,12 @@ void validate_step_within_run(const IntegratorOptions& o, double run_length);
 void validate_step_count(const IntegratorOptions& o, double duration);
 
 struct IntegrationStats {
-  std::size_t steps = 0;
-  std::size_t rhs_evaluations = 0;
+  Index steps = 0;
+  Index rhs_evaluations = 0;
   double t_reached = 0;     // time of the last observation made
   bool stopped = false;     // the observer or the step-boundary hook asked to stop (interrupt)
   bool blew_up = false;     // the state became non-finite
-  std::size_t blow_up_index = 0;  // when blew_up: first non-finite entry of the state vector
+  Index blow_up_index = 0;  // when blew_up: first non-finite entry of the state vector
 };
 
 // Where a blown-up integration of a displacement-form state (state.hpp) first became non-finite.

@@ -32,11 +32,11 @@
 namespace lrchain::sim {
 
 struct ModelBrightConfig {
-  std::size_t branch = 0;
+  Index branch = 0;
   double theta = 0;
   std::optional<double> detuning;  // omega_b - omega; default sign(h_tilde) 1e-4
   double n0 = 0;
-  long N = 500;                    // sites n = -N..N
+  Index N = 500;                   // sites n = -N..N
   double periods = 200;            // run length in T_b
   double sample_every = 0.25;      // in T_b
   double steps_per_period = 0;     // srkn11b steps per period of the fastest linear mode (0: 24)
@@ -57,7 +57,7 @@ class ModelBrightAnsatz {
   // Throws InvalidParameter("theta", ...) where the model's NLS is not focusing at theta (or is
   // singular there), InvalidParameter("detuning", ...) unless detuning * h_tilde > 0.
   // second_order: include the second harmonic and mean offsets (else they are zero).
-  ModelBrightAnsatz(const Model& model, const lrchain_lattice_kernels& kernels, std::size_t branch, double theta,
+  ModelBrightAnsatz(const Model& model, const lrchain_lattice_kernels& kernels, Index branch, double theta,
                     std::optional<double> detuning, double n0, bool second_order = true);
   const NlsCoefficients& nls() const { return nls_; }
   const BlochMode& mode() const { return mode_; }
@@ -70,7 +70,7 @@ class ModelBrightAnsatz {
   const SecondOrderTerms& second_order() const { return second_order_; }
   bool uses_second_order() const { return uses_second_order_; }
   // Displacement and velocity of field f at site n, time t.
-  void field(std::size_t f, double n, double t, double& u, double& u_dot) const;
+  void field(Index f, double n, double t, double& u, double& u_dot) const;
 
  private:
   NlsCoefficients nls_;

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
 #include "lrchain/sim/state.hpp"
 
@@ -26,12 +27,12 @@ class ModelLattice {
  public:
   // `parameters` in the model file's order (kernels.parameter_names). Throws InvalidParameter for
   // fewer than 2 sites, a wrong parameter count, or the strain form of an on-site model.
-  ModelLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, std::size_t sites,
+  ModelLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
                bool periodic, LatticeForm form);
 
-  std::size_t sites() const { return sites_; }
-  std::size_t fields() const { return std::size_t(kernels_->fields); }
-  std::size_t positions() const { return fields() * sites_; }  // entries of q (and of a)
+  Index sites() const { return static_cast<Index>(sites_); }
+  Index fields() const { return static_cast<Index>(kernels_->fields); }
+  Index positions() const { return fields() * sites(); }  // entries of q (and of a)
   bool periodic() const { return periodic_; }
   LatticeForm form() const { return form_; }
   const std::vector<double>& masses() const { return masses_; }

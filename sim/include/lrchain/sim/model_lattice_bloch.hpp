@@ -29,7 +29,7 @@ std::vector<double> branch_frequencies(const lrchain_lattice_kernels& kernels, c
 // Branch `branch` of bloch_modes, checked against the model's own dispersion relation: throws
 // NumericalFailure when the lattice kernels and the coefficient evaluators disagree on omega by
 // more than 1e-9 (relative): they would not describe the same lattice.
-BlochMode bloch_mode(const Model& model, const lrchain_lattice_kernels& kernels, std::size_t branch, double theta);
+BlochMode bloch_mode(const Model& model, const lrchain_lattice_kernels& kernels, Index branch, double theta);
 
 // The lattice parameters of `model` (its first parameter_count inputs, in the file's order).
 std::vector<double> lattice_parameters(const Model& model);

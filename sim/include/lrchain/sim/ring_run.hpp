@@ -21,7 +21,7 @@
 namespace lrchain::sim {
 
 struct RingRunConfig {
-  std::size_t branch = 0;
+  Index branch = 0;
   double theta = 0;                           // carrier wavenumber in (0, pi], a mode of the ring
   std::vector<double> amplitudes{0.02, 0.01};  // U: first-field amplitude of the plane wave
   Index sites = 0;                            // ring size N; 0: the smallest N >= 8 with theta N / (2 pi) whole

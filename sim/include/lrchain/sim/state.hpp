@@ -2,8 +2,9 @@
 // Lattice state storage shared by all lattice systems: one contiguous vector of 4*sites doubles,
 // laid out as [q1 (sites) | q2 (sites) | dq1/dt (sites) | dq2/dt (sites)], where (q1, q2) are
 // (u, v) in the displacement form (eq:Hertz) and (x, y) in the strain form (eq:Hertzd0S).
-#include <cstddef>
 #include <vector>
+
+#include "lrchain/index.hpp"
 
 namespace lrchain::sim {
 
@@ -11,8 +12,8 @@ using State = std::vector<double>;
 
 // Views into a State of `sites` sites.
 struct StateLayout {
-  std::size_t sites = 0;
-  std::size_t size() const { return 4 * sites; }
+  Index sites = 0;
+  Index size() const { return 4 * sites; }
   double* primary(State& s) const { return s.data(); }                   // u or x
   double* secondary(State& s) const { return s.data() + sites; }         // v or y
   double* primary_rate(State& s) const { return s.data() + 2 * sites; }  // du/dt or dx/dt

@@ -23,7 +23,7 @@ class StrainLattice {
   // Throws InvalidParameter("sites", ...) for fewer than 2 sites.
   StrainLattice(const Params& p, Index sites, StrainEnds ends = StrainEnds::zero_strain);
 
-  Index sites() const { return static_cast<Index>(layout_.sites); }
+  Index sites() const { return layout_.sites; }
   const StateLayout& layout() const { return layout_; }
   const Params& params() const { return params_; }
   const ContactLaw& law() const { return law_; }

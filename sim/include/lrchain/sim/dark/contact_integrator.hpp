@@ -50,7 +50,7 @@ struct ContactIntegrationStats {
 class ContactSystem {
  public:
   virtual ~ContactSystem() = default;
-  virtual std::size_t dimension() const = 0;
+  virtual Index dimension() const = 0;
   // Entries written per stage into `stiffness` by rhs() (0: nothing recorded).
   virtual int stiffness_count() const = 0;
   // ds = d/dt s; if stiffness != nullptr it receives stiffness_count() values.
@@ -67,11 +67,8 @@ struct OrbitRecord {
   int sites = 0;
   std::vector<double> t, dt;
   std::vector<double> stiffness;  // [step][stage][site]
-  std::size_t steps() const { return dt.size(); }
-  const double* stage(std::size_t step, int stage) const {
-    return stiffness.data() + (step * stages + static_cast<std::size_t>(stage)) *
-                                  static_cast<std::size_t>(sites);
-  }
+  Index steps() const { return static_cast<Index>(dt.size()); }
+  const double* stage(Index step, int stage) const { return stiffness.data() + (step * stages + stage) * sites; }
   void clear() { t.clear(); dt.clear(); stiffness.clear(); }
 };
 

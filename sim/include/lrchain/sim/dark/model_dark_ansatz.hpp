@@ -25,7 +25,7 @@
 namespace lrchain::sim::dark {
 
 struct ModelDarkAnsatz {
-  std::size_t branch = 0;
+  Index branch = 0;
   double theta = 0;               // pi: the edge the breather bifurcates from
   double omega_b = 0;             // breather frequency, on the side of the edge where A is real
   double omega = 0;               // edge frequency
@@ -40,14 +40,14 @@ struct ModelDarkAnsatz {
 };
 
 struct ModelDarkEdge {
-  std::size_t branch = 0;
+  Index branch = 0;
   double theta = 0;  // pi or 0
 };
 
 // The branch (given, or the first in the file's order) and edge (theta = pi first, then theta = 0)
 // where the NLS is defocusing (omega'' h_tilde > 0). InvalidParameter("branch", ...) naming every
 // edge checked and its regime when there is none.
-ModelDarkEdge defocusing_edge(const Model& model, std::optional<std::size_t> branch);
+ModelDarkEdge defocusing_edge(const Model& model, std::optional<Index> branch);
 
 // The seed's coefficients at omega_b. InvalidParameter("omega-b", ...) unless
 // (omega_b - omega) h_tilde > 0 and omega_b > 0.

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 
 namespace lrchain::sim::dark {
@@ -21,7 +22,7 @@ class StrainLatticeOrbit {
   StrainLatticeOrbit(const Params& p, int sites);
 
   int sites() const { return sites_; }
-  std::size_t orbit_size() const { return 4 * static_cast<std::size_t>(sites_); }
+  Index orbit_size() const { return 4 * Index{sites_}; }
   const Params& params() const { return p_; }
 
   // ds = d/dt s (eq:Hertzd0S, periodic ends). If stiffness_out != nullptr it also receives
