@@ -16,7 +16,7 @@
 #ifndef LRCHAIN_MODEL_LATTICE_ABI_H
 #define LRCHAIN_MODEL_LATTICE_ABI_H
 
-#define LRCHAIN_LATTICE_ABI_VERSION 1
+#define LRCHAIN_LATTICE_ABI_VERSION 2
 
 typedef void (*lrchain_lattice_accelerations)(const double* parameters, long sites, int periodic,
                                               const double* q, double* a, double* work);
@@ -26,6 +26,20 @@ typedef void (*lrchain_lattice_jacobian_action)(const double* parameters, long s
 typedef void (*lrchain_lattice_energy_density)(const double* parameters, long sites, int periodic,
                                                const double* u, const double* velocity, double* e,
                                                double* work);
+
+/* The one-sided contacts of one lattice form (a `[functions]` law with `contact`): contact bond j's
+ * overlap at site n is s_n = offsets[j] + sum_k coefficients[t] q[variables[t]][n + shifts[t]] over its
+ * term_counts[j] terms t (the terms of bond after bond), periodic in n; the contact is lost where
+ * s_n < 0, and the accelerations clamp exactly this s_n. term_counts[j] = -1: the overlap is not
+ * linear in the variables (no terms). forms() evaluates offsets and coefficients at the parameters. */
+struct lrchain_lattice_contacts {
+  int bonds;
+  const char* const* names; /* the law and its argument in the fields, e.g. "F(u[n+1] - u[n])" */
+  const int* term_counts;
+  const int* variables;
+  const int* shifts;
+  void (*forms)(const double* parameters, double* offsets, double* coefficients);
+};
 
 struct lrchain_lattice_kernels {
   int abi_version;
@@ -40,6 +54,8 @@ struct lrchain_lattice_kernels {
   lrchain_lattice_accelerations strain_accelerations;     /* null for on-site models */
   lrchain_lattice_jacobian_action strain_jacobian_action; /* null for on-site models */
   lrchain_lattice_energy_density energy_density;          /* displacement form; null if no potential */
+  const struct lrchain_lattice_contacts* displacement_contacts; /* null: no one-sided contact */
+  const struct lrchain_lattice_contacts* strain_contacts;       /* null: none, or an on-site model */
 };
 
 #endif
@@ -299,6 +315,27 @@ void displacement_jacobian_action(const double* P, long n, int periodic, const d
   displacement_generic_site_derivatives(P, 0, n, w.x, w.b, w.dx, w.db, w.out(out, n));
 }
 
+// One-sided contacts of the displacement form: bond j's overlap at site n is offsets[j] plus
+// coefficient times variable[n + shift] over its terms (lrchain_lattice_contacts).
+const char* const displacement_contact_names[] = {"F(v[n] - u[n])", "F(u[n+1] - v[n])"};
+const int displacement_contact_term_counts[] = {2, 2};
+const int displacement_contact_variables[] = {0, 1, 0, 1};
+const int displacement_contact_shifts[] = {0, 0, 1, 0};
+
+void displacement_contact_forms(const double* P, double* offsets, double* coefficients) {
+  [[maybe_unused]] const double p_alpha = P[0];
+  [[maybe_unused]] const double p_delta0 = P[1];
+  [[maybe_unused]] const double p_m = P[2];
+  offsets[0] = p_delta0;
+  coefficients[0] = 1.0;
+  coefficients[1] = (-1.0);
+  offsets[1] = p_delta0;
+  coefficients[2] = (-1.0);
+  coefficients[3] = 1.0;
+}
+
+const lrchain_lattice_contacts displacement_contacts = {2, displacement_contact_names, displacement_contact_term_counts, displacement_contact_variables, displacement_contact_shifts, displacement_contact_forms};
+
 LRCHAIN_KERNEL void strain_generic_bonds(const double* P, long lo, long hi, const double* const* x, double* const* b) {
   [[maybe_unused]] const double p_alpha = P[0];
   [[maybe_unused]] const double p_delta0 = P[1];
@@ -474,6 +511,26 @@ void strain_jacobian_action(const double* P, long n, int periodic, const double*
   strain_differences(w.a, out, n);
 }
 
+// One-sided contacts of the strain form: bond j's overlap at site n is offsets[j] plus
+// coefficient times variable[n + shift] over its terms (lrchain_lattice_contacts).
+const char* const strain_contact_names[] = {"F(v[n] - u[n])", "F(u[n+1] - v[n])"};
+const int strain_contact_term_counts[] = {1, 2};
+const int strain_contact_variables[] = {1, 0, 1};
+const int strain_contact_shifts[] = {0, 1, 0};
+
+void strain_contact_forms(const double* P, double* offsets, double* coefficients) {
+  [[maybe_unused]] const double p_alpha = P[0];
+  [[maybe_unused]] const double p_delta0 = P[1];
+  [[maybe_unused]] const double p_m = P[2];
+  offsets[0] = p_delta0;
+  coefficients[0] = (-1.0);
+  offsets[1] = p_delta0;
+  coefficients[1] = (-1.0);
+  coefficients[2] = 1.0;
+}
+
+const lrchain_lattice_contacts strain_contacts = {2, strain_contact_names, strain_contact_term_counts, strain_contact_variables, strain_contact_shifts, strain_contact_forms};
+
 LRCHAIN_KERNEL void displacement_generic_bond_energies(const double* P, long lo, long hi, const double* const* x, double* const* b) {
   [[maybe_unused]] const double p_alpha = P[0];
   [[maybe_unused]] const double p_delta0 = P[1];
@@ -568,6 +625,6 @@ extern "C" const struct lrchain_lattice_kernels* lrchain_lattice_diatomic_chain(
   static const lrchain_lattice_kernels table = {LRCHAIN_LATTICE_ABI_VERSION, "diatomic_chain", 2, 3, kParameterNames, masses, workspace_size,
       displacement_accelerations, displacement_jacobian_action,
       strain_accelerations, strain_jacobian_action,
-      energy_density};
+      energy_density, &displacement_contacts, &strain_contacts};
   return &table;
 }

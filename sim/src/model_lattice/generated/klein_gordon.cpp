@@ -16,7 +16,7 @@
 #ifndef LRCHAIN_MODEL_LATTICE_ABI_H
 #define LRCHAIN_MODEL_LATTICE_ABI_H
 
-#define LRCHAIN_LATTICE_ABI_VERSION 1
+#define LRCHAIN_LATTICE_ABI_VERSION 2
 
 typedef void (*lrchain_lattice_accelerations)(const double* parameters, long sites, int periodic,
                                               const double* q, double* a, double* work);
@@ -26,6 +26,20 @@ typedef void (*lrchain_lattice_jacobian_action)(const double* parameters, long s
 typedef void (*lrchain_lattice_energy_density)(const double* parameters, long sites, int periodic,
                                                const double* u, const double* velocity, double* e,
                                                double* work);
+
+/* The one-sided contacts of one lattice form (a `[functions]` law with `contact`): contact bond j's
+ * overlap at site n is s_n = offsets[j] + sum_k coefficients[t] q[variables[t]][n + shifts[t]] over its
+ * term_counts[j] terms t (the terms of bond after bond), periodic in n; the contact is lost where
+ * s_n < 0, and the accelerations clamp exactly this s_n. term_counts[j] = -1: the overlap is not
+ * linear in the variables (no terms). forms() evaluates offsets and coefficients at the parameters. */
+struct lrchain_lattice_contacts {
+  int bonds;
+  const char* const* names; /* the law and its argument in the fields, e.g. "F(u[n+1] - u[n])" */
+  const int* term_counts;
+  const int* variables;
+  const int* shifts;
+  void (*forms)(const double* parameters, double* offsets, double* coefficients);
+};
 
 struct lrchain_lattice_kernels {
   int abi_version;
@@ -40,6 +54,8 @@ struct lrchain_lattice_kernels {
   lrchain_lattice_accelerations strain_accelerations;     /* null for on-site models */
   lrchain_lattice_jacobian_action strain_jacobian_action; /* null for on-site models */
   lrchain_lattice_energy_density energy_density;          /* displacement form; null if no potential */
+  const struct lrchain_lattice_contacts* displacement_contacts; /* null: no one-sided contact */
+  const struct lrchain_lattice_contacts* strain_contacts;       /* null: none, or an on-site model */
 };
 
 #endif
@@ -232,6 +248,6 @@ extern "C" const struct lrchain_lattice_kernels* lrchain_lattice_klein_gordon(vo
   static const lrchain_lattice_kernels table = {LRCHAIN_LATTICE_ABI_VERSION, "klein_gordon", 1, 4, kParameterNames, masses, workspace_size,
       displacement_accelerations, displacement_jacobian_action,
       nullptr, nullptr,
-      energy_density};
+      energy_density, nullptr, nullptr};
   return &table;
 }
