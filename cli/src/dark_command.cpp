@@ -341,6 +341,7 @@ void continue_and_report(const DarkArgs& a, const DarkShootingProblem& shooting,
       points.push_back({{"omega_b", b.omega_b}, {"E_b", b.measures.E_b},
                         {"contact_changes_per_period", count_json(b.contact_changes_per_period)}});
     j["branch_points"] = points;
+    j["contact_changes_per_period"] = points.empty() ? json(nullptr) : points.front()["contact_changes_per_period"];
   }
   const bool failed = br.points.size() < 2 && !br.interrupted;  // the corrector failed at once
   if (failed) j["failure"] = {{"kind", "continuation"}, {"message", "continuation stopped: " + br.stop_reason}};
@@ -663,13 +664,13 @@ void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
   const NewtonResult newton = model_newton(a, m, shooting);
   json j = model_base_json(a, m, newton);
   const Eigen::VectorXd& z0 = newton.q;
-  j["contact_changes_per_period"] = count_json(shooting.contact_changes_per_period(z0, a.omega_b));
-  const std::vector<std::string> variables = model_variables(m);
-  const int N = a.sites;
-  if (job == DarkJob::branch) {
+  if (job == DarkJob::branch) {  // the start's contact changes are its branch point's
     continue_and_report(a, shooting, z0, m.ansatz.omega, j, m.model.name(), true);
     return;
   }
+  j["contact_changes_per_period"] = count_json(shooting.contact_changes_per_period(z0, a.omega_b));
+  const std::vector<std::string> variables = model_variables(m);
+  const int N = a.sites;
   if (job == DarkJob::evolve) {
     StopSignals signals;
     const DarkEvolution e = evolve_dark_orbit(shooting.advance(), z0, N, a.omega_b, a.t_end, a.samples, StopSignals::flag());

@@ -205,7 +205,7 @@ def test_dark_model_contacts_equal_cli(cli, source_dir, tmp_path):
     assert s.measures["E_b"] == expected["measures"]["E_b"] and s.measures["E_b"] <= 1e-10
     assert s.measures["K_x"] == expected["measures"]["K_x"]
     # Continuation: every point reports its own contact changes, as the command's JSON and CSV do.
-    b = lrchain.dark.continue_branch(model=model, points=3, ds=0.02, floquet=False, **RC_CONTACTS)
+    b = lrchain.dark.continue_branch(model=model, points=3, ds=0.02, **RC_CONTACTS)  # Floquet at every point, as the CLI
     branch = cli("dark", "continue", "--model", model_file, "--points", 3, "--ds", 0.02, *RC_CONTACTS_CLI,
                  "--out", tmp_path / "branch")
     rows = np.genfromtxt(tmp_path / "branch" / "branch.csv", delimiter=",", names=True, dtype=None, encoding="utf-8")
