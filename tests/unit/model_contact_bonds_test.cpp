@@ -72,7 +72,7 @@ TEST_CASE("model contacts: the diatomic chain's two bonds equal the force text's
                {"F(u[n+1] - v[n])", 0.69999999999999996, {{0, 1, -1.0}, {1, 0, 1.0}}}});
 }
 
-TEST_CASE("model contacts: smooth models export none; a wrong parameter count is refused" * doctest::test_suite("fast")) {
+TEST_CASE("model contacts: smooth models export none and a wrong parameter count is refused" * doctest::test_suite("fast")) {
   using lrchain::sim::dark::model_contact_bonds;
   for (const char* smooth : {"fput", "klein_gordon", "resonant_chain_polynomial"}) {
     CAPTURE(smooth);
