@@ -12,7 +12,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -21,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../support/renamed_model.hpp"
 #include "../support/run_lrchain.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
@@ -212,12 +212,7 @@ TEST_CASE("dark solve --model: a user's copy of the resonant chain (lattice code
   // contact changes as the shipped model on 15 sites (18 per period, measured); E_b to the issue's 1e-10.
   const fs::path dir = scratch("dark-user-contacts");
   fs::create_directories(dir);
-  std::ifstream in(source_dir / "models" / "resonant_chain.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto at = text.find("name = \"resonant_chain\"");
-  REQUIRE(at != std::string::npos);
-  text.replace(at, 23, "name = \"my_resonant_chain\"");
-  std::ofstream(dir / "my_resonant_chain.toml") << text;
+  lrchain::test::write_renamed_model(source_dir, "resonant_chain", "my_resonant_chain", dir / "my_resonant_chain.toml");
   const std::vector<std::string> common{"--branch", "optical", "--center", "site", "--omega-b", "2.42", "--sites", "15",
                                         "--quiet", "--json"};
   std::vector<std::string> shipped{"dark", "solve", "--model", "models/resonant_chain.toml"};
