@@ -212,19 +212,9 @@ TEST_CASE("dark solve --model: a user's copy of the resonant chain (lattice code
   // contact changes as the shipped model on 15 sites (18 per period, measured); E_b to the issue's 1e-10.
   const fs::path dir = scratch("dark-user-contacts");
   fs::create_directories(dir);
-  lrchain::test::write_renamed_model(source_dir, "resonant_chain", "my_resonant_chain", dir / "my_resonant_chain.toml");
-  const std::vector<std::string> common{"--branch", "optical", "--center", "site", "--omega-b", "2.42", "--sites", "15",
-                                        "--quiet", "--json"};
-  std::vector<std::string> shipped{"dark", "solve", "--model", "models/resonant_chain.toml"};
-  std::vector<std::string> user{"dark", "solve", "--model", (dir / "my_resonant_chain.toml").string()};
-  shipped.insert(shipped.end(), common.begin(), common.end());
-  user.insert(user.end(), common.begin(), common.end());
-  const auto a = run_lrchain(shipped, source_dir);
-  const auto b = run_lrchain(user, source_dir, {"XDG_CACHE_HOME=" + (dir / "cache").string()});
-  INFO(a.err << b.err);
-  REQUIRE(a.exit_code == 0);
-  REQUIRE(b.exit_code == 0);
-  const auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
+  const auto [ja, jb] = lrchain::test::dark_solve_shipped_and_renamed(
+      source_dir, "resonant_chain", "my_resonant_chain", dir,
+      {"--branch", "optical", "--center", "site", "--omega-b", "2.42", "--sites", "15", "--quiet", "--json"});
   CHECK(jb["model"]["name"] == "my_resonant_chain");
   CHECK(jb["one_sided_contacts"] == ja["one_sided_contacts"]);
   CHECK(jb["one_sided_contacts"] == nlohmann::json::array({"F(u[n+1] - u[n])"}));
