@@ -308,8 +308,11 @@ void continue_and_report(const DarkArgs& a, const DarkShootingProblem& shooting,
   double last_tangent = -1;
   auto on_point = [&](const BranchPoint& b) {
     if (!a.quiet)
-      std::fprintf(stderr, "point %3d omega_b = %.6f norm^2 = %.5f %s max|lambda| = %.5f\n",
-                   count++, b.omega_b, b.measures.norm_squared, b.floquet.kind().c_str(), b.floquet.max_modulus);
+      std::fprintf(stderr, "point %3d omega_b = %.6f norm^2 = %.5f %s max|lambda| = %.5f%s\n", count++, b.omega_b,
+                   b.measures.norm_squared, b.floquet.kind().c_str(), b.floquet.max_modulus,
+                   b.contact_changes_per_period
+                       ? fmt::format(" contact changes {}", *b.contact_changes_per_period).c_str()
+                       : "");
     if ((b.tangent_omega > 0) != (last_tangent > 0)) ++part;
     last_tangent = b.tangent_omega;
     csv << fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.6g},{:.6g},{:.3g},{},{:.12g},{:.12g},{:.12g},{:.12g},{}",
