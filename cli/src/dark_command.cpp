@@ -567,7 +567,8 @@ ModelDarkJob validate_model_job(const DarkArgs& a, DarkJob job, const CLI::App& 
   const std::optional<std::size_t> given = a.branch_given ? std::optional(model.branch(a.branch)) : std::nullopt;
   ModelDarkAnsatz ansatz = make_model_dark_ansatz(model, kernels, defocusing_edge(model, given), a.omega_b);
   check_dark_sites(ansatz, a.sites);
-  sim::dark::ContactBonds contacts = sim::dark::model_contact_bonds(kernels, sim::lattice_parameters(model), ansatz.mean_flow);
+  sim::dark::ContactBonds contacts =
+      sim::dark::model_contact_bonds(kernels, sim::lattice_parameters(model), ansatz.mean_flow);
   const double period = 2 * std::numbers::pi / a.omega_b;
   double periods = 0;
   if (job == DarkJob::branch) {

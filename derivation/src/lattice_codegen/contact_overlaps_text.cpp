@@ -79,7 +79,8 @@ std::string contact_call_name(const std::string& law, const ex& argument, const 
     return law + "(" + text(argument.subs(named, subs_options::no_pattern)) + ")";
   }
   // Highest site first, led by a positive term where there is one: "v[n] - u[n]", "u[n+1] - u[n]".
-  std::stable_sort(terms.begin(), terms.end(), [](const LinearTerm& a, const LinearTerm& b) { return a.shift > b.shift; });
+  std::stable_sort(terms.begin(), terms.end(),
+                   [](const LinearTerm& a, const LinearTerm& b) { return a.shift > b.shift; });
   const auto positive = std::find_if(terms.begin(), terms.end(), [](const LinearTerm& t) {
     return is_a<numeric>(t.coefficient) && ex_to<numeric>(t.coefficient).is_positive();
   });

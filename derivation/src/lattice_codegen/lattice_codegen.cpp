@@ -187,8 +187,8 @@ class Generator {
           b.max_shift = hi - lo;
           if (!F.contact.is_zero()) {
             set_contact(b, F);
-            b.name = contact_call_name(F.name, expand(call.argument.subs(variable_map(false, 0), subs_options::no_pattern)),
-                                       m_.model.fields, {var_, kReach});
+            const ex displacement_argument = expand(call.argument.subs(variable_map(false, 0), subs_options::no_pattern));
+            b.name = contact_call_name(F.name, displacement_argument, m_.model.fields, {var_, kReach});
           }
           form.bonds.push_back(b);
           it = form.bonds.end() - 1;
