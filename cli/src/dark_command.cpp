@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -30,7 +31,6 @@
 #include "lrchain/sim/dark/model_dark_ansatz.hpp"
 #include "lrchain/sim/dark/model_shooting.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
-#include "dark_contact_bonds.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
 #include "stop_signals.hpp"
@@ -279,11 +279,15 @@ void run_solve(const DarkArgs& a, bool floquet) {
   std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
 }
 
+// A count, or null where there is none (a smooth model's contact changes).
+json count_json(const std::optional<long>& count) { return count ? json(*count) : json(nullptr); }
+
 // Continues a solved breather q0 away from the band edge omega_edge (Params or model shooting),
 // prints the JSON summary j completed with the branch and writes --out. `label` names the lattice
-// in figure titles.
+// in figure titles. A model job (`model_points`) also lists every point's omega_b, E_b and contact
+// changes per period in the JSON (`branch_points`) and the contact changes in branch.csv.
 void continue_and_report(const DarkArgs& a, const DarkShootingProblem& shooting, const Eigen::VectorXd& q0,
-                         double omega_edge, json j, const std::string& label) {
+                         double omega_edge, json j, const std::string& label, bool model_points = false) {
   StopSignals signals;  // SIGINT/SIGTERM: stop after the current branch point, write the branch so far
   ContinuationOptions o;
   o.stop = StopSignals::flag();
@@ -296,7 +300,7 @@ void continue_and_report(const DarkArgs& a, const DarkShootingProblem& shooting,
   o.omega_max = a.omega_max > 0 ? a.omega_max : above ? 1e300 : omega_edge;
   std::ostringstream csv;
   csv << "omega_b,norm_squared,K_x,K_y,C_x,C_y,E_b,stability,max_modulus,max_real,max_period_doubling,"
-         "max_oscillatory,iterations\n";
+         "max_oscillatory,iterations" << (model_points ? ",contact_changes_per_period" : "") << "\n";
   std::ostringstream mult;  // omega_b, |lambda|, type (0 complex, 1 real>0, 2 real<0)
   mult << "omega_b,modulus,type,branch_part\n";
   int part = 0, count = 0;
@@ -304,15 +308,21 @@ void continue_and_report(const DarkArgs& a, const DarkShootingProblem& shooting,
   double last_tangent = -1;
   auto on_point = [&](const BranchPoint& b) {
     if (!a.quiet)
-      std::fprintf(stderr, "point %3d omega_b = %.6f norm^2 = %.5f %s max|lambda| = %.5f\n",
-                   count++, b.omega_b, b.measures.norm_squared, b.floquet.kind().c_str(), b.floquet.max_modulus);
+      std::fprintf(stderr, "point %3d omega_b = %.6f norm^2 = %.5f %s max|lambda| = %.5f%s\n", count++, b.omega_b,
+                   b.measures.norm_squared, b.floquet.kind().c_str(), b.floquet.max_modulus,
+                   b.contact_changes_per_period
+                       ? fmt::format(" contact changes {}", *b.contact_changes_per_period).c_str()
+                       : "");
     if ((b.tangent_omega > 0) != (last_tangent > 0)) ++part;
     last_tangent = b.tangent_omega;
-    csv << fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.6g},{:.6g},{:.3g},{},{:.12g},{:.12g},{:.12g},{:.12g},{}\n",
+    csv << fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.6g},{:.6g},{:.3g},{},{:.12g},{:.12g},{:.12g},{:.12g},{}",
                        b.omega_b, b.measures.norm_squared, b.measures.K_x, b.measures.K_y, b.measures.C_x,
                        b.measures.C_y, b.measures.E_b, b.floquet.kind(), b.floquet.max_modulus,
                        b.floquet.max_real, b.floquet.max_period_doubling, b.floquet.max_oscillatory,
                        b.iterations);
+    if (model_points)  // empty for a smooth model
+      csv << "," << (b.contact_changes_per_period ? std::to_string(*b.contact_changes_per_period) : std::string());
+    csv << "\n";
     for (auto l : b.floquet.multipliers) {
       if (std::abs(l) < 1.0 + 1e-6) continue;
       const bool real = std::abs(l.imag()) <= 1e-7 * std::abs(l);
@@ -328,6 +338,14 @@ void continue_and_report(const DarkArgs& a, const DarkShootingProblem& shooting,
   double worst = 0;
   for (const auto& b : br.points) worst = std::max(worst, b.measures.E_b);
   j["max_E_b"] = worst;
+  if (model_points) {
+    json points = json::array();
+    for (const auto& b : br.points)
+      points.push_back({{"omega_b", b.omega_b}, {"E_b", b.measures.E_b},
+                        {"contact_changes_per_period", count_json(b.contact_changes_per_period)}});
+    j["branch_points"] = points;
+    j["contact_changes_per_period"] = points.empty() ? json(nullptr) : points.front()["contact_changes_per_period"];
+  }
   const bool failed = br.points.size() < 2 && !br.interrupted;  // the corrector failed at once
   if (failed) j["failure"] = {{"kind", "continuation"}, {"message", "continuation stopped: " + br.stop_reason}};
   if (!a.out.empty()) {
@@ -549,7 +567,8 @@ ModelDarkJob validate_model_job(const DarkArgs& a, DarkJob job, const CLI::App& 
   const std::optional<Index> given = a.branch_given ? std::optional(model.branch(a.branch)) : std::nullopt;
   ModelDarkAnsatz ansatz = make_model_dark_ansatz(model, kernels, defocusing_edge(model, given), a.omega_b);
   check_dark_sites(ansatz, a.sites);
-  sim::dark::ContactBonds contacts = model_contact_bonds(a.model.file, model, ansatz.mean_flow);
+  sim::dark::ContactBonds contacts =
+      sim::dark::model_contact_bonds(kernels, sim::lattice_parameters(model), ansatz.mean_flow);
   const double period = 2 * std::numbers::pi / a.omega_b;
   double periods = 0;
   if (job == DarkJob::branch) {
@@ -649,14 +668,13 @@ void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
   const NewtonResult newton = model_newton(a, m, shooting);
   json j = model_base_json(a, m, newton);
   const Eigen::VectorXd& z0 = newton.q;
-  j["contact_changes_per_period"] =
-      m.contacts.empty() ? json(nullptr) : json(shooting.contact_changes_per_period(z0, a.omega_b));
-  const std::vector<std::string> variables = model_variables(m);
-  const int N = a.sites;
-  if (job == DarkJob::branch) {
-    continue_and_report(a, shooting, z0, m.ansatz.omega, j, m.model.name());
+  if (job == DarkJob::branch) {  // the start's contact changes are its branch point's
+    continue_and_report(a, shooting, z0, m.ansatz.omega, j, m.model.name(), true);
     return;
   }
+  j["contact_changes_per_period"] = count_json(shooting.contact_changes_per_period(z0, a.omega_b));
+  const std::vector<std::string> variables = model_variables(m);
+  const int N = a.sites;
   if (job == DarkJob::evolve) {
     StopSignals signals;
     const DarkEvolution e = evolve_dark_orbit(shooting.advance(), z0, N, a.omega_b, a.t_end, a.samples, StopSignals::flag());

@@ -163,7 +163,9 @@ def floquet(params=None, omega_b=None, branch=None, center="bond", sites=101, mo
 class _ModelEdge:
     """The band edge and the model every model-file dark result reports: ``branch``, ``theta``,
     ``omega_edge``, ``curvature``, ``h_tilde``, ``lambda_`` (None without mean flow),
-    ``lattice_form`` and ``model`` (name, file_hash, parameters, lattice_code)."""
+    ``lattice_form``, ``model`` (name, file_hash, parameters, lattice_code) and
+    ``one_sided_contacts`` (the contact bonds by name, e.g. ``("F(u[n+1] - u[n])",)``; empty for a
+    smooth model), whose contact changes are located during the integration."""
 
     branch: str
     theta: float
@@ -173,6 +175,7 @@ class _ModelEdge:
     lambda_: float
     lattice_form: str
     model: dict
+    one_sided_contacts: tuple
 
 
 @dataclass(frozen=True, repr=False)
@@ -183,7 +186,9 @@ class ModelDarkSolution(_ModelEdge):
     history, the edge (``branch``, ``theta``, ``omega_edge``, ``curvature``, ``h_tilde``, ``lambda_``
     (None without mean flow)), ``lattice_form``, ``measures`` (norm_squared, K_x, K_y, C_x, C_y, E_b,
     max_strain; K_y, C_y None where there is no second strain-form variable), ``floquet`` (a
-    :class:`Floquet` or None) and ``model`` (name, file_hash, parameters, lattice_code)."""
+    :class:`Floquet` or None), ``contact_changes_per_period`` (sign changes of the one-sided contacts'
+    overlaps over one period; None for a smooth model) and ``model`` (name, file_hash, parameters,
+    lattice_code)."""
 
     omega_b: float
     n: np.ndarray
@@ -193,6 +198,7 @@ class ModelDarkSolution(_ModelEdge):
     newton_residuals: np.ndarray
     measures: dict
     floquet: Floquet = None
+    contact_changes_per_period: int = None
 
     def __repr__(self):
         f = f", {self.floquet!r}" if self.floquet else ""
@@ -282,8 +288,10 @@ def continue_branch(params=None, omega_b=None, branch=None, center="bond", sites
 class ModelBranch(_ModelEdge):
     """A branch of dark breathers of a model file: per point ``omega_b``, profiles ``z`` (points,
     fields, sites) in the lattice's ``variables``, ``measures`` (list of dicts), ``floquet`` (list of
-    :class:`Floquet` or None), ``tangent_omega``, ``residual``, ``iterations``; ``turning_points``,
-    ``stop_reason``; the edge and ``model`` as in :class:`ModelDarkSolution`."""
+    :class:`Floquet` or None), ``tangent_omega``, ``residual``, ``iterations``,
+    ``contact_changes_per_period`` (list: each point's sign changes of the one-sided contacts'
+    overlaps over one period, None for a smooth model); ``turning_points``, ``stop_reason``; the edge
+    and ``model`` as in :class:`ModelDarkSolution`."""
 
     omega_b: np.ndarray
     tangent_omega: np.ndarray
@@ -294,6 +302,7 @@ class ModelBranch(_ModelEdge):
     variables: tuple
     measures: list
     floquet: list
+    contact_changes_per_period: list
     turning_points: list
     stop_reason: str
 

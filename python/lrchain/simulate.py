@@ -8,8 +8,9 @@
 - :func:`ring`: plane waves and a wave packet of any model file on a periodic ring (the numerical
   check of the derived h and c).
 
-Each run integrates in C++ without holding the GIL; Ctrl-C stops it at the next step and raises
-``KeyboardInterrupt`` (model-file runs: when the run returns). Keyword arguments left out (or None)
+Each run integrates in C++ without holding the GIL; Ctrl-C stops it at the next step (model-file
+runs with the symplectic stepper and ``ring``: at the next sample) and raises ``KeyboardInterrupt``.
+Keyword arguments left out (or None)
 take the library's defaults, the same as the ``lrchain simulate`` command's, and the keywords are
 its options' names (``sites`` for ``--sites``, ``switch_off_time`` for ``--switch-off-time``, ...).
 An ``observer(t, q1, q2, e)`` is called at every sample with copies of the lattice fields (bright: strains x_n, y_n; drive, modulated: displacements u_n, v_n)
@@ -141,8 +142,8 @@ def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=
     generated lattice, ``branch`` one of ``model.branches``, with ``detuning``, ``n0``, ``sites`` (odd, in
     [21, 100000001]), ``periods``, ``sample_every``, ``dt`` (the srkn11b step; default from the fastest
     linear mode) and ``ansatz_ends`` (emitting ends, integrated with rkf78); the other keywords are
-    refused as the command refuses them. Ctrl-C is raised when the run returns (the model run
-    polls no stop flag). Returns :class:`ModelBrightResult`.
+    refused as the command refuses them. Ctrl-C stops the model run at its next sample (emitting
+    ends: its next step) with ``KeyboardInterrupt``. Returns :class:`ModelBrightResult`.
     """
     if model is None and isinstance(params, Model):  # bright(lrchain.load_model(...), ...)
         model, params = params, None
@@ -246,7 +247,8 @@ def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, ste
     their frequency measured over ``periods`` carrier periods (default 400, ``steps_per_period`` 80
     srkn11b steps) against omega + h U^2/4, and a Gaussian wave packet (``packet_amplitude``, default
     a tenth of the smallest U; ``packet_width`` 24 sites) whose speed is compared with c.
-    ``model`` is an :class:`lrchain.Model`. Ctrl-C is raised when the run returns. Returns
+    ``model`` is an :class:`lrchain.Model`. Ctrl-C stops it at its next sample (8 per carrier
+    period) with ``KeyboardInterrupt``. Returns
     :class:`RingResult`."""
     checked_model(model)
     options = _options(theta=theta, amplitudes=None if amplitudes is None else [float(a) for a in amplitudes],

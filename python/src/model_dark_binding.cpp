@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
+#include <optional>
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -38,6 +39,7 @@ struct ModelDarkJob {
   ShootingMode mode;
   double tolerance;
   int max_iterations;
+  ContactBonds contacts = {};  // one-sided contacts in the lattice form's variables (empty: a smooth model)
 };
 
 // The checks of `lrchain dark ... --model` (edge, omega_b, sites, Newton, memory) before anything runs;
@@ -58,6 +60,7 @@ ModelDarkJob make_job(const LoadedModel& loaded, double omega_b, const std::opti
     throw InvalidParameter("omega_b", text.substr(text.find(": ") + 2));
   }
   check_dark_sites(j.ansatz, sites);
+  j.contacts = model_contact_bonds(kernels, sim::lattice_parameters(loaded.model), j.ansatz.mean_flow);
   if (!(tolerance > 0 && tolerance < 1)) throw InvalidParameter("tolerance", "must be in (0, 1)");
   if (max_iterations < 1) throw InvalidParameter("max_iterations", "must be an integer >= 1");
   // The estimate counts two fields per site: scale the sites to the model's number of fields.
@@ -71,7 +74,7 @@ ModelDarkShooting make_shooting(const ModelDarkJob& j, const std::atomic<bool>* 
   ContactIntegrationOptions integration;
   integration.stop = stop;
   return ModelDarkShooting(*j.kernels, sim::lattice_parameters(j.loaded->model), j.sites, j.ansatz.mean_flow, j.mode,
-                           integration);
+                           integration, j.contacts);
 }
 
 // Newton from the model's seed (without the GIL); NumericalFailure with the history if it fails.
@@ -119,6 +122,9 @@ py::dict job_dict(const ModelDarkJob& j) {
   d["lattice_form"] = j.ansatz.mean_flow ? "strain" : "displacement";
   d["variables"] = py::tuple(variables);
   d["n"] = n;
+  py::list contacts;
+  for (const auto& bond : j.contacts) contacts.append(bond.name);
+  d["one_sided_contacts"] = py::tuple(contacts);
   return d;
 }
 
@@ -137,14 +143,15 @@ py::dict solve_job(const LoadedModel& loaded, double omega_b, std::optional<std:
   const ModelDarkJob j = make_job(loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations, 0);
   const Eigen::VectorXd seed = model_dark_seed(j.ansatz, j.center, j.sites);
   InterruptGuard guard;
-  auto [newton, m, f] = guard.run([&] {
+  auto [newton, m, f, changes] = guard.run([&] {
     const ModelDarkShooting shooting = make_shooting(j, guard.flag());
     NewtonResult r = solve(j, shooting, seed, guard.flag());
+    const std::optional<long> changes = shooting.contact_changes_per_period(r.q, j.omega_b);
     DarkMeasures m;
     shooting.measure(r.q, j.omega_b, m);
     FloquetResult f;
     if (floquet) f = floquet_from_monodromy(shooting.monodromy(r.q, j.omega_b));
-    return std::make_tuple(std::move(r), m, f);
+    return std::make_tuple(std::move(r), m, f, changes);
   });
   py::dict d = job_dict(j);
   d["z"] = by_field(newton.q, j.kernels->fields, j.sites);
@@ -152,6 +159,7 @@ py::dict solve_job(const LoadedModel& loaded, double omega_b, std::optional<std:
   d["newton_residuals"] = residuals(newton);
   d["measures"] = model_measures(j, m);
   d["floquet"] = floquet ? py::object(floquet_dict(f)) : py::object(py::none());
+  d["contact_changes_per_period"] = changes ? py::object(py::int_(*changes)) : py::object(py::none());
   return d;
 }
 
@@ -189,7 +197,7 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
   py::array_t<double> omega(k), tangent(k), residual(k);
   py::array_t<int> iterations(k);
   py::array_t<double> z({k, fields, N});
-  py::list measure_rows, floquet_rows;
+  py::list measure_rows, floquet_rows, contact_rows;
   for (py::ssize_t i = 0; i < k; ++i) {
     const BranchPoint& b = br.points[std::size_t(i)];
     omega.mutable_at(i) = b.omega_b;
@@ -199,6 +207,8 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
     std::copy(b.z0.data(), b.z0.data() + fields * N, z.mutable_data(i, 0, 0));
     measure_rows.append(model_measures(j, b.measures));
     floquet_rows.append(floquet ? py::object(floquet_dict(b.floquet)) : py::object(py::none()));
+    contact_rows.append(b.contact_changes_per_period ? py::object(py::int_(*b.contact_changes_per_period))
+                                                     : py::object(py::none()));
   }
   py::dict d = job_dict(j);
   d["omega_b"] = omega;
@@ -208,6 +218,7 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
   d["z"] = z;
   d["measures"] = measure_rows;
   d["floquet"] = floquet_rows;
+  d["contact_changes_per_period"] = contact_rows;
   d["turning_points"] = br.turning_points;
   d["stop_reason"] = br.stop_reason;
   return d;

@@ -1,6 +1,7 @@
 // lrchain.simulate.bright(model=...) and lrchain.simulate.ring: lattice runs of any model file on its
 // generated lattice code (sim/model_bright_run.hpp, sim/ring_run.hpp), with the checks of
-// `lrchain simulate bright|ring --model FILE`, run without the GIL; records as numpy arrays.
+// `lrchain simulate bright|ring --model FILE`, run without the GIL (Ctrl-C raises KeyboardInterrupt
+// during the integration); records as numpy arrays.
 #include <nlohmann/json.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -39,7 +40,8 @@ py::dict model_bright(const LoadedModel& loaded, const std::string& branch, cons
   coefficients(model, c.branch, c.theta);  // theta on the branch (InvalidParameter otherwise)
   const lrchain_lattice_kernels& kernels = lattice_kernels(loaded);
   const ModelBrightAnsatz check(model, kernels, c.branch, c.theta, c.detuning, c.n0);  // focusing, detuning
-  InterruptGuard guard;  // the run polls no stop flag: Ctrl-C is raised when it returns
+  InterruptGuard guard;  // Ctrl-C: the run stops at its next step boundary, KeyboardInterrupt follows
+  c.stop = guard.flag();
   const ModelBrightResult r = guard.run([&] { return run_model_bright(model, kernels, c); });
   nlohmann::json summary = to_json(model, c, r);
   summary["model"] = model_summary_json(loaded);
@@ -68,7 +70,8 @@ py::dict model_ring(const LoadedModel& loaded, const std::string& branch, const 
   coefficients(model, c.branch, c.theta);
   const lrchain_lattice_kernels& kernels = lattice_kernels(loaded);
   bloch_mode(model, kernels, c.branch, c.theta);
-  InterruptGuard guard;
+  InterruptGuard guard;  // Ctrl-C: the run stops at its next sample, KeyboardInterrupt follows
+  c.stop = guard.flag();
   const RingRunResult r = guard.run([&] { return run_ring(model, kernels, c); });
   nlohmann::json summary = to_json(model, c, r);
   summary["model"] = model_summary_json(loaded);

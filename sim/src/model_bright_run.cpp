@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <complex>
 #include <numbers>
 
@@ -229,6 +230,9 @@ ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_ker
     }
     return true;
   };
+  const StepBoundaryHook poll_stop = [&c](const State&, double, double, const IntegrationStats&) {
+    return !(c.stop && c.stop->load(std::memory_order_relaxed));
+  };
   const auto start = std::chrono::steady_clock::now();
   if (c.ansatz_ends) {
     // The ghost sites beyond both ends in the lattice's variables, from the ansatz at time t.
@@ -248,10 +252,11 @@ ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_ker
         }
     };
     const DrivenEndsLattice driven(kernels, parameters, sites, chain.form(), end_motion);
-    r.stats = integrate_observed(driven, s, times, observe, options);
+    r.stats = integrate_observed(driven, s, times, observe, options, poll_stop);
   } else {
-    r.stats = integrate_observed(chain, s, times, observe, options);
+    r.stats = integrate_observed(chain, s, times, observe, options, poll_stop);
   }
+  if (r.stats.stopped) throw Interrupted(SIGINT, fmt::format("interrupted by SIGINT at t = {}", r.stats.t_reached));
   r.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (r.stats.blew_up)
     throw NumericalFailure(fmt::format("{}: the bright-breather run blew up at t = {}", model.name(), r.stats.t_reached));

@@ -3,6 +3,7 @@
 #include "lrchain/sim/ring_run.hpp"
 
 #include <cmath>
+#include <csignal>
 #include <complex>
 #include <numbers>
 
@@ -89,7 +90,7 @@ void validate(const RingRunConfig& c) {
 
 double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
                               const BlochMode& mode, Index sites, Index mode_number, double amplitude, double periods,
-                              double steps_per_period) {
+                              double steps_per_period, const std::atomic<bool>* stop) {
   const double theta = kTwoPi * double(mode_number) / double(sites);
   const ModelLattice ring(kernels, parameters, std::size_t(sites), true, LatticeForm::displacement);
   State s = wave_state(ring, mode, theta, 0.0, [amplitude](double, double& g, double& dg) { g = amplitude; dg = 0; });
@@ -109,8 +110,9 @@ double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std:
     previous = phase;
     t_series.push_back(t);
     phase_series.push_back(unwrapped);
-    return true;
+    return !(stop && stop->load(std::memory_order_relaxed));  // false: stopped (SIGINT)
   }, fixed_step(mode.omega, steps_per_period));
+  if (stats.stopped) throw Interrupted(SIGINT, "interrupted by SIGINT");
   if (stats.blew_up)
     throw NumericalFailure(fmt::format("{}: the plane wave of amplitude {} blew up on the ring at t = {}",
                                        kernels.model_name, amplitude, stats.t_reached));
@@ -120,7 +122,7 @@ double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std:
 double measure_packet_speed(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
                             const BlochMode& mode, double group_velocity, Index sites, Index mode_number,
                             double amplitude, double width, double duration, double steps_per_period,
-                            TimeSeries& track) {
+                            TimeSeries& track, const std::atomic<bool>* stop) {
   const double theta = kTwoPi * double(mode_number) / double(sites);
   const ModelLattice ring(kernels, parameters, std::size_t(sites), true, LatticeForm::displacement);
   const double n0 = double(sites) / 2;
@@ -156,8 +158,9 @@ double measure_packet_speed(const lrchain_lattice_kernels& kernels, const std::v
     t_series.push_back(t);
     centre.push_back(X);
     track.data.insert(track.data.end(), {t, X});
-    return true;
+    return !(stop && stop->load(std::memory_order_relaxed));  // false: stopped (SIGINT)
   }, fixed_step(mode.omega, steps_per_period));
+  if (stats.stopped) throw Interrupted(SIGINT, "interrupted by SIGINT");
   if (stats.blew_up)
     throw NumericalFailure(fmt::format("{}: the wave packet blew up at t = {}", kernels.model_name, stats.t_reached));
   return least_squares_slope(t_series, centre);
@@ -182,7 +185,7 @@ RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernel
     RingAmplitude a;
     a.amplitude = U;
     a.measured_frequency = measure_ring_frequency(kernels, parameters, r.mode, r.sites, r.mode_number, U, c.periods,
-                                                  c.steps_per_period);
+                                                  c.steps_per_period, c.stop);
     a.predicted_shift = r.h * U * U / 4;
     a.predicted_frequency = r.omega + a.predicted_shift;
     a.measured_shift = a.measured_frequency - r.omega;
@@ -203,7 +206,7 @@ RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernel
                                                      : 4000 * period;
   r.packet_speed = measure_packet_speed(kernels, parameters, r.mode, r.group_velocity, r.packet_sites,
                                         multiple * r.mode_number, r.packet_amplitude, r.packet_width,
-                                        r.packet_duration, c.steps_per_period / 2, r.record.series);
+                                        r.packet_duration, c.steps_per_period / 2, r.record.series, c.stop);
   if (r.group_velocity != 0)
     r.packet_relative_disagreement = std::abs(r.packet_speed - r.group_velocity) / std::abs(r.group_velocity);
   return r;

@@ -18,3 +18,11 @@ TEST_CASE("the model cache key depends on the file, the compiler, the lrchain ve
   CHECK(key != model_cache_key(bytes, compiler, version, "evaluators 2"));  // the emitter before harmonics()
   CHECK(!version.empty());
 }
+
+TEST_CASE("the lattice code's cache entry names the kernel table's ABI version") {
+  // ABI version 1 had no contact tables: its cached libraries must be compiled again, not loaded.
+  CHECK(lattice_code_kind() == "lattice " + std::to_string(LRCHAIN_LATTICE_ABI_VERSION));
+  CHECK(LRCHAIN_LATTICE_ABI_VERSION >= 2);
+  const std::string bytes = "name = \"x\"\n", compiler = "/usr/bin/c++", version = model_compiler_version();
+  CHECK(model_cache_key(bytes, compiler, version, lattice_code_kind()) != model_cache_key(bytes, compiler, version, "lattice 1"));
+}

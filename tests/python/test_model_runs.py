@@ -180,3 +180,46 @@ def test_user_model_file_in_tmp_dir(tmp_path, monkeypatch, cli):
     path.write_text(SCRATCH_MODEL.replace("cubic on-site force (test", "cubic on-site force (edited test"))
     with pytest.raises(lrchain.InputError, match="changed"):
         lrchain.simulate.ring(stale, "branch0", np.pi / 2)
+
+
+# The resonant chain's model file on its optical branch, site-centred, omega_b = 2.42: the far-site
+# amplitude K_x = 0.473 exceeds delta0 = 4/9, so the beads lose contact every period
+# (docs/dark-models.md: 70 contact changes per period on 41 sites). 15 sites keep the contacts
+# opening (18 changes per period, measured) at a fraction of the cost.
+RC_CONTACTS = dict(omega_b=2.42, branch="optical", center="site", sites=15)
+RC_CONTACTS_CLI = ("--branch", "optical", "--center", "site", "--omega-b", 2.42, "--sites", 15, "--json", "--quiet")
+
+
+def test_dark_model_contacts_equal_cli(cli, source_dir, tmp_path):
+    model_file = source_dir / "models" / "resonant_chain.toml"
+    model = lrchain.load_model(model_file)
+    s = lrchain.dark.solve(model=model, **RC_CONTACTS)
+    expected = cli("dark", "solve", "--model", model_file, *RC_CONTACTS_CLI)
+    # The same bonds (exported by the generated lattice code) and the same located contact changes.
+    assert s.one_sided_contacts == tuple(expected["one_sided_contacts"]) == ("F(u[n+1] - u[n])",)
+    assert s.contact_changes_per_period == expected["contact_changes_per_period"]
+    assert s.contact_changes_per_period > 0 and s.contact_changes_per_period % 2 == 0  # each opened contact closes
+    # The same C++ run: Newton's history and E_b to every digit the JSON prints (17 significant).
+    assert len(s.newton_residuals) - 1 == expected["newton_iterations"]
+    assert list(s.newton_residuals) == expected["newton_residuals"]
+    assert s.measures["E_b"] == expected["measures"]["E_b"] and s.measures["E_b"] <= 1e-10
+    assert s.measures["K_x"] == expected["measures"]["K_x"]
+    # Continuation: every point reports its own contact changes, as the command's JSON and CSV do.
+    b = lrchain.dark.continue_branch(model=model, points=3, ds=0.02, **RC_CONTACTS)  # Floquet at every point, as the CLI
+    branch = cli("dark", "continue", "--model", model_file, "--points", 3, "--ds", 0.02, *RC_CONTACTS_CLI,
+                 "--out", tmp_path / "branch")
+    rows = np.genfromtxt(tmp_path / "branch" / "branch.csv", delimiter=",", names=True, dtype=None, encoding="utf-8")
+    assert len(b.omega_b) == len(branch["branch_points"]) == len(rows) == 3
+    assert b.contact_changes_per_period == [p["contact_changes_per_period"] for p in branch["branch_points"]]
+    assert list(rows["contact_changes_per_period"]) == b.contact_changes_per_period
+    assert b.contact_changes_per_period[0] == s.contact_changes_per_period
+    assert all(c > 0 for c in b.contact_changes_per_period)
+    np.testing.assert_allclose(b.omega_b, [p["omega_b"] for p in branch["branch_points"]], rtol=1e-14)
+
+
+def test_dark_model_smooth_has_no_contacts(kg_defocusing):
+    _, model = kg_defocusing
+    s = lrchain.dark.solve(model=model, omega_b=1.17, sites=15)
+    assert s.one_sided_contacts == () and s.contact_changes_per_period is None
+    b = lrchain.dark.continue_branch(model=model, omega_b=1.17, sites=15, points=2, ds=0.02, floquet=False)
+    assert b.contact_changes_per_period == [None, None]

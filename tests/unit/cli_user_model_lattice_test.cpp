@@ -9,10 +9,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "../support/renamed_model.hpp"
 #include "../support/run_lrchain.hpp"
 
 namespace fs = std::filesystem;
@@ -33,14 +33,7 @@ fs::path scratch(const std::string& name) {
 
 // models/fput.toml with another model name, written to `path`.
 void write_renamed_fput(const fs::path& path, const std::string& name) {
-  std::ifstream in(source_dir / "models" / "fput.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string s = text.str();
-  const std::string from = "name = \"fput\"";
-  REQUIRE(s.find(from) != std::string::npos);
-  s.replace(s.find(from), from.size(), "name = \"" + name + "\"");
-  std::ofstream(path) << s;
+  lrchain::test::write_renamed_model(source_dir, "fput", name, path);
 }
 
 json run_json(const std::vector<std::string>& args, const fs::path& dir) {

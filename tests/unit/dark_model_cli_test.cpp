@@ -5,14 +5,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
 #include "../support/refusal_checks.hpp"
+#include "../support/renamed_model.hpp"
 #include "../support/run_lrchain.hpp"
 
 namespace fs = std::filesystem;
@@ -87,23 +86,9 @@ TEST_CASE("dark --model: a model file outside models/ gets its lattice code comp
   const fs::path dir = fs::temp_directory_path() / ("lrchain-dark-user-model-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  std::ifstream in(source_dir / "models" / "klein_gordon.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto at = text.find("name = \"klein_gordon\"");
-  REQUIRE(at != std::string::npos);
-  text.replace(at, 21, "name = \"my_klein_gordon\"");
-  std::ofstream(dir / "my_klein_gordon.toml") << text;
-  const std::vector<std::string> common = {"--set", "b=-1/2", "--omega-b", "1.17", "--sites", "31", "--quiet", "--json"};
-  std::vector<std::string> shipped = {"dark", "solve", "--model", "models/klein_gordon.toml"};
-  std::vector<std::string> user = {"dark", "solve", "--model", (dir / "my_klein_gordon.toml").string()};
-  shipped.insert(shipped.end(), common.begin(), common.end());
-  user.insert(user.end(), common.begin(), common.end());
-  const auto a = run_lrchain(shipped, source_dir);
-  const auto b = run_lrchain(user, source_dir, {"XDG_CACHE_HOME=" + (dir / "cache").string()});
-  INFO(a.err << b.err);
-  REQUIRE(a.exit_code == 0);
-  REQUIRE(b.exit_code == 0);
-  const auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
+  const auto [ja, jb] = lrchain::test::dark_solve_shipped_and_renamed(
+      source_dir, "klein_gordon", "my_klein_gordon", dir,
+      {"--set", "b=-1/2", "--omega-b", "1.17", "--sites", "31", "--quiet", "--json"});
   CHECK(jb["model"]["name"] == "my_klein_gordon");
   CHECK(jb["measures"]["E_b"].get<double>() < 1e-10);
   CHECK(jb["measures"]["K_x"].get<double>() == doctest::Approx(ja["measures"]["K_x"].get<double>()).epsilon(1e-9));

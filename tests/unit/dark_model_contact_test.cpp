@@ -3,7 +3,8 @@
 // delta0, the amplitude of dark_breather_test.cpp; rho = 1 at 2.207, K_x = 0.662) gives the specialised
 // strain-lattice breather (shooting.hpp, contact changes located there too) with the same contact
 // changes; a smooth model (klein_gordon) reports no contacts; `dark evolve --model` writes the paper
-// chain's evolution files and figures.
+// chain's evolution files and figures; `dark continue --model` counts contact changes per point; a
+// user's copy of the model file (lattice code compiled at run time) exports the same contacts.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../support/renamed_model.hpp"
 #include "../support/run_lrchain.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
@@ -141,6 +143,44 @@ TEST_CASE("dark --model: a smooth model (klein_gordon) has no one-sided contacts
   CHECK(j["contact_changes_located"] == false);
   CHECK(j["contact_changes_per_period"].is_null());
   CHECK(j["measures"]["E_b"].get<double>() < 1e-10);
+  // Continuation: every point says null (no contact located), never a count.
+  const auto c = run_lrchain({"dark", "continue", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b",
+                              "1.17", "--sites", "15", "--points", "2", "--ds", "0.02", "--quiet", "--json"},
+                             source_dir);
+  INFO(c.err);
+  REQUIRE(c.exit_code == 0);
+  const auto branch = nlohmann::json::parse(c.out);
+  REQUIRE(branch["branch_points"].size() == 2);
+  for (const auto& point : branch["branch_points"]) CHECK(point["contact_changes_per_period"].is_null());
+  CHECK(branch["contact_changes_per_period"].is_null());
+}
+
+TEST_CASE("dark continue --model: every branch point reports its own contact changes" * doctest::test_suite("fast")) {
+  // The resonant chain's site-centred breather at omega_b = 2.42 (contacts open every period) on 15
+  // sites: the first point is the solved breather, so its count is `dark solve`'s; each point's
+  // count is located on that point's own orbit (even: every contact opened in a period closes).
+  const std::vector<std::string> common{"--model", "models/resonant_chain.toml", "--branch", "optical", "--center",
+                                        "site", "--omega-b", "2.42", "--sites", "15", "--quiet", "--json"};
+  std::vector<std::string> solve{"dark", "solve"}, branch{"dark", "continue", "--points", "3", "--ds", "0.5"};
+  solve.insert(solve.end(), common.begin(), common.end());
+  branch.insert(branch.end(), common.begin(), common.end());
+  const auto s = run_lrchain(solve, source_dir);
+  const auto b = run_lrchain(branch, source_dir);
+  INFO(s.err << b.err);
+  REQUIRE(s.exit_code == 0);
+  REQUIRE(b.exit_code == 0);
+  const auto solved = nlohmann::json::parse(s.out), j = nlohmann::json::parse(b.out);
+  REQUIRE(j["branch_points"].size() == 3);
+  CHECK(j["branch_points"][0]["contact_changes_per_period"] == solved["contact_changes_per_period"]);
+  CHECK(j["contact_changes_per_period"] == solved["contact_changes_per_period"]);
+  double previous = 1e300;
+  for (const auto& point : j["branch_points"]) {
+    const long changes = point["contact_changes_per_period"].get<long>();
+    CHECK(changes > 0);
+    CHECK(changes % 2 == 0);
+    CHECK(point["omega_b"].get<double>() < previous);  // into the gap, away from the edge
+    previous = point["omega_b"].get<double>();
+  }
 }
 
 TEST_CASE("dark evolve --model: the paper chain's evolution files and figures" * doctest::test_suite("fast")) {
@@ -163,4 +203,24 @@ TEST_CASE("dark evolve --model: the paper chain's evolution files and figures" *
   CHECK(script.find("set ylabel 't (dimensionless)'") != std::string::npos);
   CHECK(script.find("set cblabel 'u0[n]'") != std::string::npos);
   fs::remove_all(out);
+}
+
+TEST_CASE("dark solve --model: a user's copy of the resonant chain (lattice code compiled at run time) locates the same contacts" *
+          doctest::test_suite("fast")) {
+  // A renamed copy of models/resonant_chain.toml outside models/: its lattice code, with the contact
+  // table, is generated and compiled into a fresh cache. Same equations, so the same bond and the same
+  // contact changes as the shipped model on 15 sites (18 per period, measured); E_b to the issue's 1e-10.
+  const fs::path dir = scratch("dark-user-contacts");
+  fs::create_directories(dir);
+  const auto [ja, jb] = lrchain::test::dark_solve_shipped_and_renamed(
+      source_dir, "resonant_chain", "my_resonant_chain", dir,
+      {"--branch", "optical", "--center", "site", "--omega-b", "2.42", "--sites", "15", "--quiet", "--json"});
+  CHECK(jb["model"]["name"] == "my_resonant_chain");
+  CHECK(jb["one_sided_contacts"] == ja["one_sided_contacts"]);
+  CHECK(jb["one_sided_contacts"] == nlohmann::json::array({"F(u[n+1] - u[n])"}));
+  CHECK(jb["contact_changes_per_period"].get<long>() > 0);
+  CHECK(jb["contact_changes_per_period"] == ja["contact_changes_per_period"]);
+  CHECK(jb["measures"]["E_b"].get<double>() < 1e-10);
+  CHECK(jb["measures"]["K_x"].get<double>() == doctest::Approx(ja["measures"]["K_x"].get<double>()).epsilon(1e-9));
+  fs::remove_all(dir);
 }

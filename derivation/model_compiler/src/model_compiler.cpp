@@ -35,7 +35,6 @@ std::string read_bytes(const fs::path& path) {
 }
 
 // The cache key's kind of lattice code: a new kernel ABI compiles the model file again.
-const std::string kLatticeCode = "lattice " + std::to_string(LRCHAIN_LATTICE_ABI_VERSION);
 
 // $XDG_CACHE_HOME/lrchain, else $HOME/.cache/lrchain.
 fs::path cache_directory() {
@@ -155,7 +154,7 @@ void compile_into_cache(const std::string& source_text, const std::vector<std::s
   }
 }
 
-// The cache entry of a model file's bytes for one kind of code (kEvaluatorCode, kLatticeCode).
+// The cache entry of a model file's bytes for one kind of code (kEvaluatorCode, lattice_code_kind()).
 fs::path cache_entry(const std::string& bytes, const std::string& kind, const std::string& prefix) {
   return cache_directory() / (prefix + model_hash_text(model_cache_key(bytes, model_compiler_path(), LRCHAIN_VERSION, kind)).substr(2) + ".so");
 }
@@ -209,6 +208,8 @@ std::uint64_t model_cache_key(const std::string& bytes, const std::string& compi
 
 std::string model_compiler_version() { return LRCHAIN_VERSION; }
 
+std::string lattice_code_kind() { return "lattice " + std::to_string(LRCHAIN_LATTICE_ABI_VERSION); }
+
 std::string model_compiler_path() {
   const char* chosen = std::getenv("LRCHAIN_MODEL_CXX");
   return chosen && *chosen ? chosen : LRCHAIN_CXX_COMPILER;
@@ -250,7 +251,7 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, 
 }
 
 void check_lattice_compiler(const fs::path& path) {
-  if (fs::exists(cache_entry(read_bytes(path), kLatticeCode, "lattice-"))) return;
+  if (fs::exists(cache_entry(read_bytes(path), lattice_code_kind(), "lattice-"))) return;
   const std::string compiler = model_compiler_path();
   if (!program_in_path(compiler))
     throw InputError("--model " + path.string() + ": lattice runs of a model file compile its lattice code with the C++ "
@@ -262,7 +263,7 @@ std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const fs::p
   const std::string bytes = read_bytes(path);
   // The model's name first (a bad file is the user's input error, reported before the cache is touched).
   const derivation::ModelFile file = derivation::parse_model_text(bytes, path.string());
-  const fs::path library = cache_entry(bytes, kLatticeCode, "lattice-");
+  const fs::path library = cache_entry(bytes, lattice_code_kind(), "lattice-");
   if (info) info->library = library;
   std::error_code ec;
   if (fs::exists(library, ec)) {

@@ -9,6 +9,7 @@
 
 #include "../model_files/model_expression.hpp"
 #include "c_printer.hpp"
+#include "contact_overlaps_text.hpp"
 #include "lattice_abi_text.hpp"
 #include "lrchain/errors.hpp"
 
@@ -27,6 +28,7 @@ struct Bond {
   int max_shift = 0;
   bool contact = false;
   ex contact_offset, contact_slope;  // contact(x) = offset + slope x
+  std::string name;            // a contact bond's call, e.g. "F(u[n+1] - u[n])"
   std::set<int> offsets;       // sites (relative to n) at which the forces use it
 };
 
@@ -76,13 +78,14 @@ class Generator {
       emit_form(os, f, exmap{}, "generic");
       if (!special.empty()) emit_form(os, f, special, "default_exponents");
       emit_entry_points(os, f, !special.empty(), special);
+      os << contact_text(f);
     }
     const bool energy = emit_energy(os, displacement, exmap{}, "generic");
     if (energy && !special.empty()) emit_energy(os, displacement, special, "default_exponents");
     if (energy) emit_energy_entry(os, displacement, !special.empty(), special);
     os << masses_text();
     os << "}  // namespace\n\n";
-    os << table_text(invariant, energy);
+    os << table_text(invariant, energy, forms);
     return os.str();
   }
 
@@ -185,7 +188,11 @@ class Generator {
           b.law = &F;
           b.argument = canonical;
           b.max_shift = hi - lo;
-          if (!F.contact.is_zero()) set_contact(b, F);
+          if (!F.contact.is_zero()) {
+            set_contact(b, F);
+            const ex displacement_argument = expand(call.argument.subs(variable_map(false, 0), subs_options::no_pattern));
+            b.name = contact_call_name(F.name, displacement_argument, m_.model.fields, {var_, kReach});
+          }
           form.bonds.push_back(b);
           it = form.bonds.end() - 1;
         }
@@ -642,7 +649,24 @@ class Generator {
     return os.str();
   }
 
-  std::string table_text(bool invariant, bool energy) const {
+  // The form's contact bonds as overlaps offset + slope * argument (contact_overlaps_text.hpp).
+  std::string contact_text(const Form& form) const {
+    std::vector<ContactOverlap> bonds;
+    for (const auto& b : form.bonds)
+      if (b.contact) bonds.push_back({b.name, b.contact_offset + b.contact_slope * b.argument});
+    return contact_overlaps_text(form.strain ? "strain" : "displacement", bonds, {var_, kReach},
+                                 [this](const ex& e) { return c(e, {}); }, parameter_locals("P"));
+  }
+
+  static std::string contacts_entry(const std::vector<Form>& forms, bool strain) {
+    for (const Form& f : forms)
+      if (f.strain == strain)
+        for (const auto& b : f.bonds)
+          if (b.contact) return strain ? "&strain_contacts" : "&displacement_contacts";
+    return "nullptr";
+  }
+
+  std::string table_text(bool invariant, bool energy, const std::vector<Form>& forms) const {
     std::ostringstream os;
     os << "static const char* const kParameterNames[] = {";
     for (const auto& p : m_.parameters) os << "\"" << p.name << "\", ";
@@ -652,7 +676,8 @@ class Generator {
        << m_.parameters.size() << ", kParameterNames, masses, workspace_size,\n"
        << "      displacement_accelerations, displacement_jacobian_action,\n"
        << "      " << (invariant ? "strain_accelerations, strain_jacobian_action" : "nullptr, nullptr") << ",\n"
-       << "      " << (energy ? "energy_density" : "nullptr") << "};\n"
+       << "      " << (energy ? "energy_density" : "nullptr") << ", " << contacts_entry(forms, false) << ", "
+       << contacts_entry(forms, true) << "};\n"
        << "  return &table;\n}\n";
     return os.str();
   }

@@ -42,6 +42,7 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
     pt.z0 = shooting.z_from_unknowns(u.head(k));
     shooting.jacobian_and_floquet(u.head(k), u(k), r, J, o.floquet ? &pt.floquet : nullptr);
     shooting.measure(pt.z0, pt.omega_b, pt.measures);
+    pt.contact_changes_per_period = shooting.contact_changes_per_period(pt.z0, pt.omega_b);
     pt.iterations = iterations;
     pt.residual = residual;
     const Eigen::VectorXd t = tangent(J, t_prev);

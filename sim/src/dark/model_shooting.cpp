@@ -129,7 +129,8 @@ ModelDarkShooting::ModelDarkShooting(const lrchain_lattice_kernels& kernels, std
     : orbit_(kernels, std::move(parameters), sites, mean_flow, options, std::move(bonds)), mean_flow_(mean_flow),
       mode_(mode) {}
 
-long ModelDarkShooting::contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const {
+std::optional<long> ModelDarkShooting::contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const {
+  if (orbit_.contact_bonds().empty()) return std::nullopt;
   std::vector<double> state(2 * std::size_t(orbit_.positions()), 0.0);
   std::copy(z0.data(), z0.data() + z0.size(), state.begin());
   const long before = orbit_.contact_changes();

@@ -43,8 +43,12 @@ void check_lattice_compiler(const std::filesystem::path& path);
 // shared extended-precision prologue (model_evaluator_support.hpp).
 inline constexpr const char* kEvaluatorCode = "evaluators 4";
 
+// Kind of the cached lattice code: "lattice V" with V the kernel table's LRCHAIN_LATTICE_ABI_VERSION,
+// so that a library of an older table is never loaded (the file is compiled again).
+std::string lattice_code_kind();
+
 // The cache key of a model file's bytes compiled by `compiler` for lrchain `version` into `kind` of
-// code (kEvaluatorCode, or the lattice code's): FNV-1a 64 of all four.
+// code (kEvaluatorCode, or lattice_code_kind()): FNV-1a 64 of all four.
 std::uint64_t model_cache_key(const std::string& bytes, const std::string& compiler, const std::string& version,
                               const std::string& kind);
 // The lrchain version the cache keys use (the project's version at build time).

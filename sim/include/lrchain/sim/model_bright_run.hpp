@@ -14,6 +14,7 @@
 // (ModelLattice) and compared with the ansatz field by field: E_f(t) = max_n |x_f - x_f^A| / max_n
 // |x_f(0)|, where x_f is the strain u_f[n] - u_f[n-1] (translation-invariant models) or the
 // displacement u_f[n] (on-site models).
+#include <atomic>
 #include <complex>
 #include <cstddef>
 #include <filesystem>
@@ -49,6 +50,9 @@ struct ModelBrightConfig {
   // The O(eps^2) terms (second harmonic, mean offsets, gradient terms) in the ansatz; false: first order only
   // (eq:focus_app as printed).
   bool second_order = true;
+  // Set (SIGINT): the run ends at its next step boundary (an observation time for the symplectic
+  // stepper) with lrchain::Interrupted.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // The ansatz of one model, branch, theta and detuning.

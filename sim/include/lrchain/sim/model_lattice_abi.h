@@ -16,7 +16,7 @@
 #ifndef LRCHAIN_MODEL_LATTICE_ABI_H
 #define LRCHAIN_MODEL_LATTICE_ABI_H
 
-#define LRCHAIN_LATTICE_ABI_VERSION 2
+#define LRCHAIN_LATTICE_ABI_VERSION 3
 
 #define LRCHAIN_LATTICE_ENDS_FIXED 0
 #define LRCHAIN_LATTICE_ENDS_PERIODIC 1
@@ -31,6 +31,20 @@ typedef void (*lrchain_lattice_energy_density)(const double* parameters, long si
                                                const double* u, const double* velocity, double* e,
                                                double* work);
 
+/* The one-sided contacts of one lattice form (a `[functions]` law with `contact`): contact bond j's
+ * overlap at site n is s_n = offsets[j] + sum_k coefficients[t] q[variables[t]][n + shifts[t]] over its
+ * term_counts[j] terms t (the terms of bond after bond), periodic in n; the contact is lost where
+ * s_n < 0, and the accelerations clamp exactly this s_n. term_counts[j] = -1: the overlap is not
+ * linear in the variables (no terms). forms() evaluates offsets and coefficients at the parameters. */
+struct lrchain_lattice_contacts {
+  int bonds;
+  const char* const* names; /* the law and its argument in the fields, e.g. "F(u[n+1] - u[n])" */
+  const int* term_counts;
+  const int* variables;
+  const int* shifts;
+  void (*forms)(const double* parameters, double* offsets, double* coefficients);
+};
+
 struct lrchain_lattice_kernels {
   int abi_version;
   const char* model_name;
@@ -44,6 +58,8 @@ struct lrchain_lattice_kernels {
   lrchain_lattice_accelerations strain_accelerations;     /* null for on-site models */
   lrchain_lattice_jacobian_action strain_jacobian_action; /* null for on-site models */
   lrchain_lattice_energy_density energy_density;          /* displacement form; null if no potential */
+  const struct lrchain_lattice_contacts* displacement_contacts; /* null: no one-sided contact */
+  const struct lrchain_lattice_contacts* strain_contacts;       /* null: none, or an on-site model */
 };
 
 #endif

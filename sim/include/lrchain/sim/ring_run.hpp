@@ -4,6 +4,7 @@
 // oscillates at omega + h U^2 / 4 + O(U^4) (NLS i A_tau = h |A|^2 A for a uniform envelope with
 // u_0 = eps (A E + c.c.), so U = 2 eps |A|; a ring carries no mean flow), and a small-amplitude
 // Gaussian wave packet's centre moves at c.
+#include <atomic>
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -29,6 +30,7 @@ struct RingRunConfig {
   double steps_per_period = 80;               // srkn11b steps per carrier period
   std::optional<double> packet_amplitude;     // default: a tenth of the smallest amplitude
   double packet_width = 24;                   // standard deviation of the packet's Gaussian envelope, in sites
+  const std::atomic<bool>* stop = nullptr;    // set (SIGINT): lrchain::Interrupted at the next sample
 };
 
 // Throws InvalidParameter naming the option (theta, sites, amplitudes, periods, ...).
@@ -58,18 +60,18 @@ struct RingRunResult {
 
 // Frequency of the plane wave U Re(K e^{i(n theta - omega t)}) on a periodic ring from the slope of
 // the phase of the first field's mode amplitude sum_n u_0[n] e^{-i n theta} (least squares over
-// `periods` carrier periods).
+// `periods` carrier periods). `stop` set: lrchain::Interrupted at the next sample (8 per period).
 double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
                               const BlochMode& mode, Index sites, Index mode_number, double amplitude,
-                              double periods, double steps_per_period);
+                              double periods, double steps_per_period, const std::atomic<bool>* stop = nullptr);
 
 // Centre speed of a Gaussian packet U exp(-(n-n0)^2/(2 w^2)) Re(K e^{i(n theta - omega t)}) moving
 // at c, from the centroid of sum_f m_f (u_f'^2 + omega^2 u_f^2) (the squared envelope); the
-// centre track (t, X) goes to `track`.
+// centre track (t, X) goes to `track`. `stop` set: lrchain::Interrupted at the next sample.
 double measure_packet_speed(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
                             const BlochMode& mode, double group_velocity, Index sites, Index mode_number,
                             double amplitude, double width, double duration, double steps_per_period,
-                            TimeSeries& track);
+                            TimeSeries& track, const std::atomic<bool>* stop = nullptr);
 
 RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernels, const RingRunConfig& c);
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "lrchain/sim/model_lattice_abi.h"
+
 namespace lrchain::sim::dark {
 
 struct ContactBondTerm {
@@ -21,6 +23,14 @@ struct ContactBond {
 };
 
 using ContactBonds = std::vector<ContactBond>;
+
+// The one-sided contacts of a model's generated lattice code (kernels.strain_contacts for the strain
+// form, displacement_contacts otherwise) at `parameters` (the model file's order): each contact bond's
+// linear form with its zero coefficients dropped and its lowest shift at 0; bonds with the same linear
+// form once. Empty for a smooth model. InputError naming the bond when an overlap is not linear in the
+// lattice variables (its sign changes cannot be located).
+ContactBonds model_contact_bonds(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                                 bool strain_form);
 
 // Overlaps s_n of every bond (bond-major, `sites` entries each) and their rates at positions q and
 // velocities qdot (each fields x sites, field-major).

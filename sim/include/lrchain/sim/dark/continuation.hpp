@@ -36,6 +36,7 @@ struct BranchPoint {
   int iterations = 0;      // corrector iterations
   double residual = 0;     // max|F|
   double tangent_omega = 0;  // d omega_b / ds at this point
+  std::optional<long> contact_changes_per_period;  // over one period of this point (nullopt: not located)
 };
 
 struct BranchResult {

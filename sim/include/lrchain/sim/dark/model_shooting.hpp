@@ -86,8 +86,8 @@ class ModelDarkShooting : public DarkShootingProblem {
   Eigen::MatrixXd monodromy(const Eigen::VectorXd& z0, double omega_b) const;
   // Advances an orbit state (for measures and evolution).
   OrbitAdvance advance() const;
-  // Contact changes over one period T_b of the orbit from Z(0) = z0 (0 for smooth models).
-  long contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const;
+  // Contact changes over one period T_b of the orbit from Z(0) = z0 (nullopt for a smooth model).
+  std::optional<long> contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const override;
 
  private:
   ModelDarkOrbit orbit_;

@@ -19,6 +19,7 @@
 // C_x = (x_0(0) + x_0(T_b/2))/2 = 0 at the far site i = 0 (eq:center, extrema at t = 0, T_b/2).
 #include <Eigen/Dense>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,9 @@ class DarkShootingProblem {
                                     Eigen::MatrixXd& jacobian, FloquetResult* floquet) const = 0;
   // Measures (eq:center, eq:amp, eq:l2norm, eq:relerr) of the breather Z(0) = z0.
   virtual void measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const = 0;
+  // Sign changes of the one-sided contacts' overlaps over one period T_b of the orbit from Z(0) = z0
+  // where the problem locates them (a model lattice with contacts); nullopt where it does not.
+  virtual std::optional<long> contact_changes_per_period(const Eigen::VectorXd&, double) const { return std::nullopt; }
 };
 
 class DarkShooting : public DarkShootingProblem {
