@@ -36,7 +36,10 @@ void run_and_report_model_bright(const ModelSelection& selection, const Model& m
     throw InputError("--out '" + out + "' exists and is not a directory");
   std::optional<sim::OutputLock> lock;
   if (!out.empty()) lock.emplace(out);
-  const sim::ModelBrightResult r = sim::run_model_bright(model, kernels, c);
+  const sim::ModelBrightResult r = run_until_signal([&](const std::atomic<bool>* stop) {
+    c.stop = stop;
+    return sim::run_model_bright(model, kernels, c);
+  });
   nlohmann::json j = sim::to_json(model, c, r);
   if (!name.empty()) j["name"] = name;
   j["model"] = model_json(model);

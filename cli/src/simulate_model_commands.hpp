@@ -8,7 +8,9 @@
 #include "lrchain/model.hpp"
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/ring_run.hpp"
+#include "lrchain/errors.hpp"
 #include "model_option.hpp"
+#include "stop_signals.hpp"
 
 namespace lrchain::cli {
 
@@ -21,6 +23,19 @@ struct ModelRunOutput {
 // Model-file runs and `simulate ring` write CSV and figures only: `--format hdf5` on `simulate` is
 // refused (exit 2) for them rather than ignored. `what` names the run in the message.
 void refuse_hdf5_format(const CLI::App& simulate, const std::string& what);
+
+// Calls run(stop) with SIGINT/SIGTERM handled: the model run polls `stop` and ends at its next step
+// boundary or sample; the command then exits 130/143 with one line naming the signal.
+template <class Run>
+auto run_until_signal(Run&& run) {
+  StopSignals signals;
+  try {
+    return run(StopSignals::flag());
+  } catch (const Interrupted& e) {
+    const int signal = StopSignals::received() != 0 ? StopSignals::received() : e.signal_number();
+    throw Interrupted(signal, std::string(e.what()) + " by " + StopSignals::name(signal));
+  }
+}
 
 // Adds `ring` to `simulate`.
 void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output);

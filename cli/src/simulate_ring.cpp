@@ -54,7 +54,10 @@ void run_and_report_ring(const ModelSelection& selection, const Model& model, si
     throw InputError("--out '" + out + "' exists and is not a directory");
   std::optional<sim::OutputLock> lock;
   if (!out.empty()) lock.emplace(out);
-  const sim::RingRunResult r = sim::run_ring(model, kernels, run);
+  const sim::RingRunResult r = run_until_signal([&](const std::atomic<bool>* stop) {
+    run.stop = stop;
+    return sim::run_ring(model, kernels, run);
+  });
   nlohmann::json j = sim::to_json(model, run, r);
   if (!name.empty()) j["name"] = name;
   j["model"] = model_json(model);

@@ -256,7 +256,7 @@ ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_ker
   } else {
     r.stats = integrate_observed(chain, s, times, observe, options, poll_stop);
   }
-  if (r.stats.stopped) throw Interrupted(SIGINT, fmt::format("interrupted by SIGINT at t = {}", r.stats.t_reached));
+  if (r.stats.stopped) throw Interrupted(SIGINT, fmt::format("interrupted at t = {}", r.stats.t_reached));
   r.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (r.stats.blew_up)
     throw NumericalFailure(fmt::format("{}: the bright-breather run blew up at t = {}", model.name(), r.stats.t_reached));

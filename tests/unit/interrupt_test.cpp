@@ -1,4 +1,4 @@
-// SIGTERM/SIGINT during `lrchain simulate bright`: exit 143/130 with the restart command on stderr,
+// SIGTERM/SIGINT during `lrchain simulate bright` (and model-file runs): exit 143/130 with the restart command on stderr,
 // every file in --out complete, and the restart (exit 0) gives the uninterrupted run's files byte
 // for byte (expected: the uninterrupted run itself). Also: a restart with changed physics or from a
 // damaged checkpoint is exit 2 naming the cause, and writes nothing.
@@ -207,4 +207,53 @@ TEST_CASE("dark continue: SIGTERM stops after the current branch point, writes t
   CHECK(std::size_t(std::count(csv.begin(), csv.end(), '\n')) == points + 1);
   for (const auto& e : fs::directory_iterator(dir / "out")) CHECK(e.path().filename().string()[0] != '.');
   fs::remove_all(dir);
+}
+
+namespace {
+
+// True once process `pid` catches `signal_number` (its SigCgt mask in /proc/PID/status), i.e. its
+// handlers are installed and the run is under way; false if it ended first or after `seconds`.
+bool catches_signal(int pid, int signal_number, int seconds) {
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+  while (std::chrono::steady_clock::now() < give_up) {
+    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+    if (!status) return false;
+    for (std::string line; std::getline(status, line);)
+      if (line.rfind("SigCgt:", 0) == 0 && (std::stoull(line.substr(7), nullptr, 16) >> (signal_number - 1) & 1ULL) != 0)
+        return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("SIGTERM/SIGINT during model-file runs: exit 143/130, one line naming the signal, nothing written") {
+  // Runs far longer than the test waits: the signal must end them at their next step or sample.
+  const std::vector<std::pair<std::vector<std::string>, int>> runs = {
+      {{"simulate", "bright", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2", "--sites",
+        "20001", "--periods", "20000"}, SIGTERM},
+      {{"simulate", "ring", "--model", "models/klein_gordon.toml", "--branch", "branch0", "--theta", "pi/2",
+        "--periods", "100000"}, SIGINT}};
+  for (const auto& [args, signal_number] : runs) {
+    const fs::path out = fs::temp_directory_path() / ("lrchain_model_interrupt_" + std::to_string(::getpid()));
+    fs::remove_all(out);
+    std::vector<std::string> argv = {LRCHAIN_CLI};
+    argv.insert(argv.end(), args.begin(), args.end());
+    argv.insert(argv.end(), {"--out", out.string()});
+    CAPTURE(args[1]);
+    lrchain::ProcessOptions o;
+    o.capture_stdout = o.capture_stderr = true;
+    o.working_directory = LRCHAIN_SOURCE_DIR;
+    lrchain::ChildProcess child(argv, o);
+    REQUIRE(catches_signal(child.pid(), signal_number, 120));
+    child.send_signal(signal_number);
+    const lrchain::ProcessResult r = child.wait();
+    CHECK(r.exited);
+    CHECK(r.exit_code == 128 + signal_number);
+    CHECK(r.output.empty());
+    CHECK(std::count(r.error_output.begin(), r.error_output.end(), '\n') == 1);
+    CHECK(r.error_output.find(signal_number == SIGTERM ? "SIGTERM" : "SIGINT") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
 }
