@@ -237,7 +237,7 @@ EmittedFunction harmonics_function(const ModelDerivation& m, const Symbols& s, c
   f.parameter_list = "double D1_in, double sigma_in, double omega_in, const double* q, double* out";
   f.local_outputs = "o";
   f.prologue = "  using real [[maybe_unused]] = " + real_type + ";\n"
-               "  const auto magnitude = [](real x) { return x < 0 ? -x : x; };\n" + extended_q(f, m, recompute_intermediates) +
+               "  [[maybe_unused]] const auto magnitude = [](real x) { return x < 0 ? -x : x; };\n" + extended_q(f, m, recompute_intermediates) +
                consistent_inputs(int(m.branches.size())) + "  real o[" + count + "];\n";
   f.epilogue = "  for (int k = 0; k < " + count + "; ++k) out[k] = static_cast<double>(o[k]);\n";
   return f;

@@ -99,7 +99,7 @@ inline void nls(double D1_in, double sigma_in, double omega_in, const double* q,
 // Per field f, out[5f..5f+4]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean A_{2,0,f}/|A_{1,1}|^2, gradient term of A_{2,1,f} per d_xi A_{1,1} (real, imaginary) (lrchain::HarmonicOutput).
 inline void harmonics(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
   using real [[maybe_unused]] = long double;
-  const auto magnitude = [](real x) { return x < 0 ? -x : x; };
+  [[maybe_unused]] const auto magnitude = [](real x) { return x < 0 ? -x : x; };
   long double parameters[2], intermediates[5];
   lrchain::model_evaluator::widen(q, parameters, 2);
   intermediates_extended(parameters, intermediates);

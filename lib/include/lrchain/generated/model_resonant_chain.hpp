@@ -166,7 +166,7 @@ inline void nls(double D1, double sigma, double omega, const double* q, double* 
 // Per field f, out[5f..5f+4]: second harmonic A_{2,2,f}/A_{1,1}^2 (real, imaginary part), mean A_{2,0,f}/|A_{1,1}|^2, gradient term of A_{2,1,f} per d_xi A_{1,1} (real, imaginary) (lrchain::HarmonicOutput).
 inline void harmonics(double D1_in, double sigma_in, double omega_in, const double* q, double* out) noexcept {
   using real [[maybe_unused]] = long double;
-  const auto magnitude = [](real x) { return x < 0 ? -x : x; };
+  [[maybe_unused]] const auto magnitude = [](real x) { return x < 0 ? -x : x; };
   real Q[7];
   lrchain::model_evaluator::widen(q, Q, 7);
   // D1, sigma and omega consistent in `real` (sin^2 + cos^2 = 1 for theta/2, det M = 0).
