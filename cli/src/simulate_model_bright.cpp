@@ -31,25 +31,15 @@ void run_and_report_model_bright(const ModelSelection& selection, const Model& m
   const LatticeCode code = lattice_kernels_for(selection, model);
   const lrchain_lattice_kernels& kernels = *code.kernels;
   const sim::ModelBrightAnsatz check(model, kernels, c.branch, c.theta, c.detuning, c.n0);  // focusing, detuning
-  std::error_code ec;
-  if (!out.empty() && std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
-    throw InputError("--out '" + out + "' exists and is not a directory");
-  std::optional<sim::OutputLock> lock;
+  std::optional<sim::OutputLock> lock;  // (refuses an --out that is not a directory)
   if (!out.empty()) lock.emplace(out);
   const sim::ModelBrightResult r = run_until_signal([&](const std::atomic<bool>* stop) {
     c.stop = stop;
     return sim::run_model_bright(model, kernels, c);
   });
-  nlohmann::json j = sim::to_json(model, c, r);
-  if (!name.empty()) j["name"] = name;
-  j["model"] = model_json(model);
-  j["model"]["lattice_code"] = lattice_code_json(code);
-  if (!out.empty()) {
-    j["out"] = out;
-    j["figures"] = sim::write_model_bright_outputs(out, r, j, *output.figures);
-  }
-  j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  std::cout << (*output.compact_json ? j.dump() : j.dump(2)) << std::endl;
+  print_model_run(sim::to_json(model, c, r), model, code, name, out, output, wall0, [&](const nlohmann::json& summary) {
+    return sim::write_model_bright_outputs(out, r, summary, *output.figures);
+  });
 }
 
 }  // namespace

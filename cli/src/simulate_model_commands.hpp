@@ -2,6 +2,9 @@
 // `lrchain simulate ring` (and the model-file runs of `simulate`): subcommands registered on the
 // `simulate` command by simulate_command.cpp.
 #include <CLI/CLI.hpp>
+#include <chrono>
+#include <iostream>
+#include <nlohmann/json.hpp>
 #include <memory>
 #include <string>
 
@@ -35,6 +38,24 @@ auto run_until_signal(Run&& run) {
     const int signal = StopSignals::received() != 0 ? StopSignals::received() : e.signal_number();
     throw Interrupted(signal, std::string(e.what()) + " by " + StopSignals::name(signal));
   }
+}
+
+// The JSON summary of a finished model run: `name` (when not empty), the model and its lattice
+// code; with `out` set, writes the run's files there (`write(summary)` returns the figures drawn);
+// then the wall time since `wall0`, printed as --json asks.
+template <class Write>
+void print_model_run(nlohmann::json j, const Model& model, const LatticeCode& code, const std::string& name,
+                     const std::string& out, const ModelRunOutput& output,
+                     std::chrono::steady_clock::time_point wall0, Write&& write) {
+  if (!name.empty()) j["name"] = name;
+  j["model"] = model_json(model);
+  j["model"]["lattice_code"] = lattice_code_json(code);
+  if (!out.empty()) {
+    j["out"] = out;
+    j["figures"] = write(j);
+  }
+  j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  std::cout << (*output.compact_json ? j.dump() : j.dump(2)) << std::endl;
 }
 
 // Adds `ring` to `simulate`.
