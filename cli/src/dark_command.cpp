@@ -47,18 +47,23 @@ struct DarkArgs {
   std::string branch = "optical", center = "bond", mode = "reversible";
   bool branch_given = false;  // --branch on the command line (a model's default: its defocusing edge)
   ModelSelection model;       // --model FILE --set NAME=VALUE (empty: the resonant chain through Params)
-  int sites = 101;
+  Index sites = 101;
   bool json_out = false, quiet = false, full_monodromy = false;
   std::string out;
-  int points = 100;
+  Index points = 100;
   double ds = 0.1, omega_min = 0, omega_max = 0;
   double t_end = 0;
-  int samples = 24;
+  Index samples = 24;
   double max_memory = 0;  // bytes (--max-memory); 0: the machine's available memory
   std::string format = "csv";  // --format hdf5: also OUT/result.h5 (solve, floquet, continue)
 };
 
 enum class DarkJob { solve, floquet, branch, evolve };
+
+// One line per Newton iteration on stderr.
+void print_newton_progress(const NewtonRecord& r) {
+  fmt::print(stderr, "newton {:2d}  max|F| = {:.3e}  max|step| = {:.3e}\n", r.iteration, r.residual, r.step);
+}
 
 // Checks every option of a dark job, its memory and output size, and --out, before any Newton
 // iteration and before anything is written (InvalidParameter/InputError: exit 2).
@@ -167,9 +172,7 @@ Solved solve(const DarkArgs& a) {
   DarkShooting shooting(a.p, a.sites, center, parse_shooting_mode(a.mode));
   NewtonOptions o;
   if (!a.quiet)
-    o.progress = [](const NewtonRecord& r) {
-      std::fprintf(stderr, "newton %2d  max|F| = %.3e  max|step| = %.3e\n", r.iteration, r.residual, r.step);
-    };
+    o.progress = print_newton_progress;
   NewtonResult res = newton_solve(shooting, shooting.unknowns_from_z(dark_seed(ansatz, center, a.sites)),
                                   a.omega_b, o);
   if (!res.converged) {
@@ -199,10 +202,10 @@ json base_json(const DarkArgs& a, const Solved& s) { return base_json(a, s.ansat
 
 void write_profile(const std::string& dir, const std::string& name, const Eigen::VectorXd& z0,
                    const Eigen::VectorXd& seed, const Eigen::VectorXd& zT) {
-  const int N = static_cast<int>(z0.size() / 2);
+  const Index N = z0.size() / 2;
   std::ostringstream os;
   os << "n,x0,y0,x_seed,y_seed,x_T,y_T\n";
-  for (int i = 0; i < N; ++i)
+  for (Index i = 0; i < N; ++i)
     os << fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", i - (N - 1) / 2, z0(i),
                       z0(N + i), seed(i), seed(N + i), zT(i), zT(N + i));
   sim::write_file_atomic(dir, name, os.str());
@@ -280,7 +283,7 @@ void run_solve(const DarkArgs& a, bool floquet) {
 }
 
 // A count, or null where there is none (a smooth model's contact changes).
-json count_json(const std::optional<long>& count) { return count ? json(*count) : json(nullptr); }
+json count_json(const std::optional<Index>& count) { return count ? json(*count) : json(nullptr); }
 
 // Continues a solved breather q0 away from the band edge omega_edge (Params or model shooting),
 // prints the JSON summary j completed with the branch and writes --out. `label` names the lattice
@@ -354,7 +357,7 @@ void continue_and_report(const DarkArgs& a, const DarkShootingProblem& shooting,
     sim::write_file_atomic(a.out, "branch.csv", csv.str());
     sim::write_file_atomic(a.out, "floquet_moduli.csv", mult.str());
     if (a.format == "hdf5")
-      sim::dark::write_dark_branch_hdf5(std::filesystem::path(a.out) / "result.h5", sim::dark::dark_branch_record(a.p, br, std::size_t(a.sites), o.floquet));
+      sim::dark::write_dark_branch_hdf5(std::filesystem::path(a.out) / "result.h5", sim::dark::dark_branch_record(a.p, br, a.sites, o.floquet));
     // The x range reaches the band edge, so that its line (omega_opt or omega_acs) is inside the frame.
     double lowest = omega_edge;
     for (const auto& b : br.points) lowest = std::min(lowest, b.omega_b);
@@ -425,18 +428,18 @@ struct EvolutionVariable {
 // evolution.gp (snapshots and space-time maps) and diagnostics.gp (E_b(t), position), summary.json.
 void write_evolution(const std::string& dir, const DarkEvolution& e, const std::vector<EvolutionVariable>& variables,
                      const std::string& title, json& summary) {
-  const int N = e.sites;
-  const int V = int(variables.size());
+  const Index N = e.sites;
+  const Index V = Index(variables.size());
   const sim::OutputLock lock(dir);
   sim::Figures figures(dir);
-  for (int field = 0; field < V; ++field) {
+  for (Index field = 0; field < V; ++field) {
     sim::SpaceTime st;
     st.quantity = variables[std::size_t(field)].name + "_n";
     st.first_label = -(N - 1) / 2;
-    st.sites = static_cast<std::size_t>(N);
+    st.sites = N;
     for (std::size_t m = 0; m < e.snapshots.size(); ++m) {
       st.times.push_back(static_cast<double>(m) * e.period);
-      for (int i = 0; i < N; ++i) st.values.push_back(static_cast<float>(e.snapshots[m](field * N + i)));
+      for (Index i = 0; i < N; ++i) st.values.push_back(static_cast<float>(e.snapshots[m](field * N + i)));
     }
     sim::write_spacetime_binary(dir, variables[std::size_t(field)].name + "_spacetime.bin", st);
   }
@@ -452,20 +455,20 @@ void write_evolution(const std::string& dir, const DarkEvolution& e, const std::
   for (const char* when : {"_0", "_T"})
     for (const auto& v : variables) sn << "," << v.name << when;
   sn << "\n";
-  for (int i = 0; i < N; ++i) {
+  for (Index i = 0; i < N; ++i) {
     sn << i - (N - 1) / 2;
     for (const Eigen::VectorXd* z : {&z0, &zT})
-      for (int field = 0; field < V; ++field) sn << fmt::format(",{:.17g}", (*z)(field * N + i));
+      for (Index field = 0; field < V; ++field) sn << fmt::format(",{:.17g}", (*z)(field * N + i));
     sn << "\n";
   }
   sim::write_file_atomic(dir, "snapshots.csv", sn.str());
   const double T = e.periods.back().t;
-  const double nmin = -(N - 1) / 2 - 0.5, nmax = (N - 1) / 2 + 0.5;
-  const double height = 0.94 / V;
+  const double nmin = double(-(N - 1) / 2) - 0.5, nmax = double((N - 1) / 2) + 0.5;
+  const double height = 0.94 / double(V);
   std::string maps, snapshots, right;
-  for (int k = 0; k < V; ++k) {
+  for (Index k = 0; k < V; ++k) {
     const EvolutionVariable& v = variables[std::size_t(k)];
-    const double origin = (V - 1 - k) * height;
+    const double origin = double(V - 1 - k) * height;
     maps += fmt::format("{}{}_n(m T_b)", k == 0 ? "" : ", ", v.name);
     snapshots += fmt::format(
         "set size 0.36,{0:g}\nset origin 0.0,{1:g}\nset ylabel '{2}' noenhanced\nset title '{3}_n' noenhanced\n"
@@ -488,7 +491,7 @@ void write_evolution(const std::string& dir, const DarkEvolution& e, const std::
                   "set ylabel 't (dimensionless)'\nset yrange [0:{1}]\n"
                   "{4}\nset colorbox\n{8}"
                   "unset multiplot\n",
-                  title, T, nmin, nmax, sim::viridis_palette, 450 * std::max(V, 2), maps, snapshots, right),
+                  title, T, nmin, nmax, sim::viridis_palette, 450 * std::max<Index>(V, 2), maps, snapshots, right),
       "evolution.png"});
   figures.draw({
       "diagnostics.gp",
@@ -644,9 +647,7 @@ json model_base_json(const DarkArgs& a, const ModelDarkJob& m, const NewtonResul
 NewtonResult model_newton(const DarkArgs& a, const ModelDarkJob& m, const ModelDarkShooting& shooting) {
   NewtonOptions o;
   if (!a.quiet)
-    o.progress = [](const NewtonRecord& r) {
-      std::fprintf(stderr, "newton %2d  max|F| = %.3e  max|step| = %.3e\n", r.iteration, r.residual, r.step);
-    };
+    o.progress = print_newton_progress;
   NewtonResult res = newton_solve(shooting, model_dark_seed(m.ansatz, parse_dark_center(a.center), a.sites), a.omega_b, o);
   if (!res.converged) {
     std::string hist;
@@ -674,7 +675,7 @@ void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
   }
   j["contact_changes_per_period"] = count_json(shooting.contact_changes_per_period(z0, a.omega_b));
   const std::vector<std::string> variables = model_variables(m);
-  const int N = a.sites;
+  const Index N = a.sites;
   if (job == DarkJob::evolve) {
     StopSignals signals;
     const DarkEvolution e = evolve_dark_orbit(shooting.advance(), z0, N, a.omega_b, a.t_end, a.samples, StopSignals::flag());
@@ -734,10 +735,10 @@ void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
     os << "n";
     for (const auto& v : variables) os << "," << v << "_0," << v << "_seed," << v << "_T";
     os << "\n";
-    for (int i = 0; i < N; ++i) {
+    for (Index i = 0; i < N; ++i) {
       os << i - (N - 1) / 2;
       for (std::size_t v = 0; v < variables.size(); ++v) {
-        const Eigen::Index at = Eigen::Index(v) * N + i;
+        const Index at = Index(v) * N + i;
         os << fmt::format(",{:.17g},{:.17g},{:.17g}", z0(at), seed(at), state[std::size_t(at)]);
       }
       os << "\n";

@@ -13,7 +13,7 @@ int main() {
   namespace dark = lrchain::sim::dark;
   const lrchain::Params p;  // alpha 3/2, delta0 4/9, kappa 1, rho 1/3
   const double omega_b = 2.42;
-  const int sites = 41;
+  const lrchain::Index sites = 41;
   const auto ansatz = lrchain::make_dark_breather_ansatz(p, lrchain::Branch::optical, omega_b);
   const dark::DarkShooting shooting(p, sites, lrchain::DarkCenter::bond, dark::ShootingMode::reversible);
   const auto seed = shooting.unknowns_from_z(dark::dark_seed(ansatz, lrchain::DarkCenter::bond, sites));

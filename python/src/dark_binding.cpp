@@ -32,14 +32,14 @@ struct DarkJob {
   double omega_b = 0;
   Branch edge = Branch::optical;
   DarkCenter center = DarkCenter::bond;
-  int sites = 101;
+  Index sites = 101;
   ShootingMode mode = ShootingMode::reversible;
   double tolerance = 1e-11;
-  int max_iterations = 20;
+  Index max_iterations = 20;
 };
 
-DarkJob make_job(const Params& p, double omega_b, const std::string& edge, const std::string& center, int sites,
-                 const std::string& mode, double tolerance, int max_iterations) {
+DarkJob make_job(const Params& p, double omega_b, const std::string& edge, const std::string& center, Index sites,
+                 const std::string& mode, double tolerance, Index max_iterations) {
   validate(p);
   DarkJob j{p, omega_b, parse_branch(edge), parse_dark_center(center), sites, parse_shooting_mode(mode),
             tolerance, max_iterations};
@@ -102,9 +102,9 @@ void require_converged(const DarkJob& j, const NewtonResult& r) {
 // The solution as a dict: profile x_n(0), y_n(0), the seed, Newton's history, the measures (Sec. 5.3).
 py::dict solution_dict(const DarkJob& j, const Solved& s, const DarkMeasures& m) {
   const Eigen::VectorXd z0 = s.shooting.z_from_unknowns(s.newton.q);
-  const int N = j.sites;
+  const Index N = j.sites;
   py::array_t<double> n(N);
-  for (int i = 0; i < N; ++i) n.mutable_at(i) = i - (N - 1) / 2;
+  for (Index i = 0; i < N; ++i) n.mutable_at(i) = i - (N - 1) / 2;
   py::dict d;
   d["n"] = n;
   d["x"] = Eigen::VectorXd(z0.head(N));
@@ -117,8 +117,8 @@ py::dict solution_dict(const DarkJob& j, const Solved& s, const DarkMeasures& m)
   return d;
 }
 
-py::dict solve_job(const Params& p, double omega_b, const std::string& edge, const std::string& center, int sites,
-                   const std::string& mode, double tolerance, int max_iterations, bool floquet, bool full_monodromy) {
+py::dict solve_job(const Params& p, double omega_b, const std::string& edge, const std::string& center, Index sites,
+                   const std::string& mode, double tolerance, Index max_iterations, bool floquet, bool full_monodromy) {
   const DarkJob j = make_job(p, omega_b, edge, center, sites, mode, tolerance, max_iterations);
   check_job_memory(j, floquet, 0);
   InterruptGuard guard;
@@ -147,8 +147,8 @@ py::dict solve_job(const Params& p, double omega_b, const std::string& edge, con
   return d;
 }
 
-py::dict continue_job(const Params& p, double omega_b, const std::string& edge, const std::string& center, int sites,
-                      const std::string& mode, double tolerance, int max_iterations, int points, double ds,
+py::dict continue_job(const Params& p, double omega_b, const std::string& edge, const std::string& center, Index sites,
+                      const std::string& mode, double tolerance, Index max_iterations, Index points, double ds,
                       double omega_min, std::optional<double> omega_max, bool floquet) {
   const DarkJob j = make_job(p, omega_b, edge, center, sites, mode, tolerance, max_iterations);
   if (points < 1) throw InvalidParameter("points", "must be an integer >= 1");
@@ -184,7 +184,7 @@ py::dict continue_job(const Params& p, double omega_b, const std::string& edge, 
     omega.mutable_at(i) = b.omega_b;
     tangent.mutable_at(i) = b.tangent_omega;
     residual.mutable_at(i) = b.residual;
-    iterations.mutable_at(i) = b.iterations;
+    iterations.mutable_at(i) = static_cast<int>(b.iterations);  // int32, as in the HDF5 file
     for (py::ssize_t n = 0; n < N; ++n) {
       x.mutable_at(i, n) = b.z0(n);
       y.mutable_at(i, n) = b.z0(N + n);
@@ -206,8 +206,8 @@ py::dict continue_job(const Params& p, double omega_b, const std::string& edge, 
   return d;
 }
 
-py::dict evolve_job(const Params& p, double omega_b, const std::string& edge, const std::string& center, int sites,
-                    const std::string& mode, double tolerance, int max_iterations, double t_end, int samples) {
+py::dict evolve_job(const Params& p, double omega_b, const std::string& edge, const std::string& center, Index sites,
+                    const std::string& mode, double tolerance, Index max_iterations, double t_end, Index samples) {
   const DarkJob j = make_job(p, omega_b, edge, center, sites, mode, tolerance, max_iterations);
   const double period = 2 * std::numbers::pi / omega_b;
   if (!(std::isfinite(t_end) && t_end >= period && t_end / period < 2e9))

@@ -35,18 +35,18 @@ struct ModelDarkJob {
   ModelDarkAnsatz ansatz;
   double omega_b;
   DarkCenter center;
-  int sites;
+  Index sites;
   ShootingMode mode;
   double tolerance;
-  int max_iterations;
+  Index max_iterations;
   ContactBonds contacts = {};  // one-sided contacts in the lattice form's variables (empty: a smooth model)
 };
 
 // The checks of `lrchain dark ... --model` (edge, omega_b, sites, Newton, memory) before anything runs;
 // `periods`: the evolution's periods (0 for the other jobs), for the memory estimate.
 ModelDarkJob make_job(const LoadedModel& loaded, double omega_b, const std::optional<std::string>& branch,
-                      const std::string& center, int sites, const std::string& mode, double tolerance,
-                      int max_iterations, double periods) {
+                      const std::string& center, Index sites, const std::string& mode, double tolerance,
+                      Index max_iterations, double periods) {
   const DarkCenter c = parse_dark_center(center);
   const ShootingMode m = parse_shooting_mode(mode);
   const lrchain_lattice_kernels& kernels = lattice_kernels(loaded);
@@ -97,7 +97,7 @@ NewtonResult solve(const ModelDarkJob& j, const ModelDarkShooting& shooting, con
 }
 
 // (fields, sites) array of a field-major vector of positions.
-py::array_t<double> by_field(const Eigen::VectorXd& z, int fields, int sites) {
+py::array_t<double> by_field(const Eigen::VectorXd& z, Index fields, Index sites) {
   py::array_t<double> a({py::ssize_t(fields), py::ssize_t(sites)});
   std::copy(z.data(), z.data() + z.size(), a.mutable_data());
   return a;
@@ -110,7 +110,7 @@ py::dict job_dict(const ModelDarkJob& j) {
   for (int f = 0; f < fields; ++f)
     variables.append(j.ansatz.mean_flow ? (f == 0 ? std::string("r") : fmt::format("w{}", f)) : fmt::format("u{}", f));
   py::array_t<double> n(j.sites);
-  for (int i = 0; i < j.sites; ++i) n.mutable_at(i) = i - (j.sites - 1) / 2;
+  for (Index i = 0; i < j.sites; ++i) n.mutable_at(i) = i - (j.sites - 1) / 2;
   py::dict d;
   d["model"] = py::module_::import("json").attr("loads")(model_summary_json(*j.loaded).dump());
   d["branch"] = j.loaded->definition->branch_names.at(j.ansatz.branch);
@@ -139,14 +139,14 @@ py::dict model_measures(const ModelDarkJob& j, const DarkMeasures& m) {
 }
 
 py::dict solve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
-                   int sites, const std::string& mode, double tolerance, int max_iterations, bool floquet) {
+                   Index sites, const std::string& mode, double tolerance, Index max_iterations, bool floquet) {
   const ModelDarkJob j = make_job(loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations, 0);
   const Eigen::VectorXd seed = model_dark_seed(j.ansatz, j.center, j.sites);
   InterruptGuard guard;
   auto [newton, m, f, changes] = guard.run([&] {
     const ModelDarkShooting shooting = make_shooting(j, guard.flag());
     NewtonResult r = solve(j, shooting, seed, guard.flag());
-    const std::optional<long> changes = shooting.contact_changes_per_period(r.q, j.omega_b);
+    const std::optional<Index> changes = shooting.contact_changes_per_period(r.q, j.omega_b);
     DarkMeasures m;
     shooting.measure(r.q, j.omega_b, m);
     FloquetResult f;
@@ -166,8 +166,8 @@ py::dict solve_job(const LoadedModel& loaded, double omega_b, std::optional<std:
 // Solve, then continue away from the edge as `lrchain dark continue --model` does: into the gap
 // (omega_b falling) below an edge, rising above one (h_tilde > 0), within [omega_min, omega_max].
 py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch,
-                      const std::string& center, int sites, const std::string& mode, double tolerance,
-                      int max_iterations, int points, double ds, double omega_min, std::optional<double> omega_max,
+                      const std::string& center, Index sites, const std::string& mode, double tolerance,
+                      Index max_iterations, Index points, double ds, double omega_min, std::optional<double> omega_max,
                       bool floquet) {
   const ModelDarkJob j = make_job(loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations, 0);
   if (points < 1) throw InvalidParameter("points", "must be an integer >= 1");
@@ -203,7 +203,7 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
     omega.mutable_at(i) = b.omega_b;
     tangent.mutable_at(i) = b.tangent_omega;
     residual.mutable_at(i) = b.residual;
-    iterations.mutable_at(i) = b.iterations;
+    iterations.mutable_at(i) = static_cast<int>(b.iterations);  // int32, as in the HDF5 file
     std::copy(b.z0.data(), b.z0.data() + fields * N, z.mutable_data(i, 0, 0));
     measure_rows.append(model_measures(j, b.measures));
     floquet_rows.append(floquet ? py::object(floquet_dict(b.floquet)) : py::object(py::none()));
@@ -226,7 +226,7 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
 
 // Solve, then integrate from Z(0) over floor(t_end / T_b) periods (`lrchain dark evolve --model`).
 py::dict evolve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
-                    int sites, const std::string& mode, double tolerance, int max_iterations, double t_end, int samples) {
+                    Index sites, const std::string& mode, double tolerance, Index max_iterations, double t_end, Index samples) {
   const double period = 2 * std::numbers::pi / omega_b;
   if (!(std::isfinite(t_end) && std::isfinite(period) && t_end >= period && t_end / period < 2e9))
     throw InvalidParameter("t_end", fmt::format("must be a finite time of at least one period T_b = 2 pi/omega_b = {:.6g}", period));

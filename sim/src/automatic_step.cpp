@@ -13,7 +13,7 @@ namespace lrchain::sim {
 namespace {
 
 constexpr double stability_fraction = 0.9;  // dt * omega_max at most this (well inside stability)
-constexpr int max_probe_runs = 4;
+constexpr Index max_probe_runs = 4;
 
 // Largest linear frequency of the resonant chain: the optical branch over theta in [0, pi].
 double largest_linear_frequency(const Params& p) {
@@ -26,10 +26,10 @@ double largest_linear_frequency(const Params& p) {
 
 // Max relative energy error over [0, probe_time] with `steps` equal steps per sample interval.
 double probe_energy_error(const DisplacementLattice& chain, const State& initial, double sample_interval,
-                          std::int64_t steps, double probe_time, StepperKind stepper) {
+                          Index steps, double probe_time, StepperKind stepper) {
   std::vector<double> times;
-  const auto samples = std::max<std::int64_t>(1, std::int64_t(std::ceil(probe_time / sample_interval - 1e-9)));
-  for (std::int64_t k = 0; k <= samples; ++k) times.push_back(double(k) * sample_interval);
+  const auto samples = std::max<Index>(1, Index(std::ceil(probe_time / sample_interval - 1e-9)));
+  for (Index k = 0; k <= samples; ++k) times.push_back(double(k) * sample_interval);
   IntegratorOptions o;
   o.stepper = stepper;
   o.dt = sample_interval / double(steps);
@@ -64,9 +64,9 @@ StepChoice choose_symplectic_step(const DisplacementLattice& chain, const State&
   StepChoice c;
   c.largest_linear_frequency = largest_linear_frequency(chain.params());
   const double longest = stability_fraction / c.largest_linear_frequency;
-  constexpr std::int64_t most_steps = detail::max_fixed_steps;
+  constexpr Index most_steps = detail::max_fixed_steps;
   const std::string what = "steps per sample interval of the automatic step";
-  std::int64_t steps = checked_count(sample_interval / longest, "dt", 1, most_steps, what);
+  Index steps = checked_count(sample_interval / longest, "dt", 1, most_steps, what);
   for (c.probe_runs = 1;; ++c.probe_runs) {
     c.probe_energy_error = probe_energy_error(chain, initial, sample_interval, steps, options.probe_time, stepper);
     if (c.probe_energy_error <= options.energy_error_target || c.probe_runs == max_probe_runs) break;

@@ -27,7 +27,7 @@ namespace {
 constexpr long max_sites = 1'000'000'000'000'000;  // N: 2N + 2 beads stay far from overflow
 
 // Sample intervals floor(periods / sample_every) of the run (validated: no overflow).
-std::int64_t sample_intervals(const BrightRunConfig& c) { return sim::sample_intervals(c.periods, c.sample_every, "periods"); }
+Index sample_intervals(const BrightRunConfig& c) { return sim::sample_intervals(c.periods, c.sample_every, "periods"); }
 
 }  // namespace
 
@@ -191,11 +191,11 @@ BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const 
 
   // Observation times: regular samples, plus the snapshot times.
   const double Tb = ansatz.period(), t_end = c.periods * Tb, h = c.sample_every * Tb;
-  const std::int64_t samples = sample_intervals(c);
+  const Index samples = sample_intervals(c);
   std::vector<double>& times = w.times;
   times.clear();
   times.reserve(static_cast<std::size_t>(samples) + 2);
-  for (std::int64_t k = 0; k <= samples; ++k) times.push_back(double(k) * h);
+  for (Index k = 0; k <= samples; ++k) times.push_back(double(k) * h);
   if (t_end - times.back() > 1e-9 * t_end) times.push_back(t_end);
   std::vector<double>& snap_times = w.snapshot_times;
   snap_times.clear();

@@ -29,7 +29,7 @@ namespace lrchain::sim {
 namespace {
 
 // Sample intervals floor(t_end / sample_every) of the run (validated: no overflow).
-std::int64_t sample_intervals(const DriveRunConfig& c) { return sim::sample_intervals(c.t_end, c.sample_every, "t-end"); }
+Index sample_intervals(const DriveRunConfig& c) { return sim::sample_intervals(c.t_end, c.sample_every, "t-end"); }
 
 }  // namespace
 
@@ -148,9 +148,9 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   State s(L.size(), 0.0);  // chain at rest
 
   std::vector<double> times;
-  const std::int64_t samples = sample_intervals(c);
+  const Index samples = sample_intervals(c);
   times.reserve(static_cast<std::size_t>(samples) + 2);
-  for (std::int64_t k = 0; k <= samples; ++k) times.push_back(double(k) * c.sample_every);
+  for (Index k = 0; k <= samples; ++k) times.push_back(double(k) * c.sample_every);
   if (c.t_end - times.back() > 1e-9 * c.t_end) times.push_back(c.t_end);
   std::vector<double> snap_times;
   for (double ts : snapshot_times_in_run(c))  // later ones belong to a continuation

@@ -188,8 +188,8 @@ void check_output_space(const ResourceEstimate& e, const std::filesystem::path& 
                                                   out_dir.string(), format_bytes(free), advice));
 }
 
-std::int64_t sample_intervals(double duration, double sample_every, const std::string& duration_parameter) {
-  constexpr std::int64_t max_samples = 1'000'000'000'000'000;  // far above any memory; no overflow
+Index sample_intervals(double duration, double sample_every, const std::string& duration_parameter) {
+  constexpr Index max_samples = 1'000'000'000'000'000;  // far above any memory; no overflow
   return checked_count(std::floor(duration / sample_every + 1e-9), duration_parameter, 1, max_samples,
                        "samples (" + duration_parameter + " / sample-every)");
 }

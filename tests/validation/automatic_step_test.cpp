@@ -22,7 +22,7 @@ BrightRunConfig with_default_integrator(const char* file) {
   return c;
 }
 
-void check_against_rkf78(BrightRunConfig c, std::int64_t expected_steps_per_sample) {
+void check_against_rkf78(BrightRunConfig c, Index expected_steps_per_sample) {
   const auto automatic = run_bright(c).summary;
   REQUIRE(automatic.step_choice.has_value());
   CHECK(automatic.integrator.stepper == StepperKind::srkn11b);

@@ -152,7 +152,7 @@ sim::dark::FloquetRecord floquet_of(const py::dict& f) {
   r.max_real = f["max_real"].cast<double>();
   r.max_period_doubling = f["max_period_doubling"].cast<double>();
   r.max_oscillatory = f["max_oscillatory"].cast<double>();
-  r.near_one = f["near_one"].cast<std::int64_t>();
+  r.near_one = f["near_one"].cast<Index>();
   r.pairing_defect = f["pairing_defect"].cast<double>();
   r.conjugation_defect = f["conjugation_defect"].cast<double>();
   r.log_det = f["log_det"].cast<double>();
@@ -184,9 +184,9 @@ void write_dark_branch(const std::string& path, const py::tuple& params, const p
   r.omega_b = vector_of<double>(d["omega_b"]);
   r.tangent_omega = vector_of<double>(d["tangent_omega"]);
   r.residual = vector_of<double>(d["residual"]);
-  r.iterations = vector_of<std::int32_t>(d["iterations"]);
+  r.iterations = vector_of<Index>(d["iterations"]);
   const auto x = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(d["x"]);
-  r.sites = x.ndim() == 2 ? std::size_t(x.shape(1)) : 0;
+  r.sites = x.ndim() == 2 ? Index(x.shape(1)) : 0;
   r.x = vector_of<double>(d["x"]);
   r.y = vector_of<double>(d["y"]);
   for (const auto& m : d["measures"].cast<py::list>()) r.measures.push_back(measures_of(m.cast<py::dict>()));

@@ -10,21 +10,21 @@
 namespace lrchain::sim::dark {
 
 // s_n = offset + sum_k c_k q[v_k][n + shift_k] on a periodic ring, and ds_n/dt from qdot.
-void contact_overlaps(const ContactBonds& bonds, int sites, const double* q, const double* qdot, double* overlap,
+void contact_overlaps(const ContactBonds& bonds, Index sites, const double* q, const double* qdot, double* overlap,
                       double* rate) {
-  const std::size_t N = std::size_t(sites);
+  const Index N = sites;
   for (std::size_t j = 0; j < bonds.size(); ++j) {
-    double* s = overlap + j * N;
-    double* ds = rate + j * N;
-    for (std::size_t n = 0; n < N; ++n) {
+    double* s = overlap + Index(j) * N;
+    double* ds = rate + Index(j) * N;
+    for (Index n = 0; n < N; ++n) {
       s[n] = bonds[j].offset;
       ds[n] = 0.0;
     }
     for (const auto& term : bonds[j].terms) {
-      const std::size_t base = std::size_t(term.variable) * N;
-      const long shift = ((long(term.shift) % long(N)) + long(N)) % long(N);
-      for (std::size_t n = 0; n < N; ++n) {
-        const std::size_t at = base + (n + std::size_t(shift)) % N;
+      const Index base = term.variable * N;
+      const Index shift = (term.shift % N + N) % N;
+      for (Index n = 0; n < N; ++n) {
+        const Index at = base + (n + shift) % N;
         s[n] += term.coefficient * q[at];
         ds[n] += term.coefficient * qdot[at];
       }
@@ -52,9 +52,9 @@ ContactBonds model_contact_bonds(const lrchain_lattice_kernels& kernels, const s
                        ": locating contact changes needs an overlap linear in the lattice variables");
     ContactBond bond{table->names[j], offsets[std::size_t(j)], {}};
     for (int k = 0; k < table->term_counts[j]; ++k, ++t)
-      if (coefficients[t] != 0.0) bond.terms.push_back({table->variables[t], table->shifts[t], coefficients[t]});
+      if (coefficients[t] != 0.0) bond.terms.push_back({Index{table->variables[t]}, Index{table->shifts[t]}, coefficients[t]});
     if (bond.terms.empty()) continue;  // a constant overlap never changes sign
-    int lowest = bond.terms.front().shift;
+    Index lowest = bond.terms.front().shift;
     for (const auto& term : bond.terms) lowest = std::min(lowest, term.shift);
     for (auto& term : bond.terms) term.shift -= lowest;
     const bool known = std::any_of(bonds.begin(), bonds.end(), [&](const ContactBond& b) {

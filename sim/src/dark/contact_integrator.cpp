@@ -35,13 +35,13 @@ class StrainContactSystem final : public ContactSystem {
  public:
   explicit StrainContactSystem(const StrainLatticeOrbit& orbit) : orbit_(orbit) {}
   Index dimension() const override { return orbit_.orbit_size(); }
-  int stiffness_count() const override { return orbit_.sites(); }
+  Index stiffness_count() const override { return orbit_.sites(); }
   void rhs(const double* s, double* ds, double* stiffness) const override { orbit_.rhs(s, ds, stiffness); }
-  int contact_count() const override { return orbit_.sites(); }
+  Index contact_count() const override { return orbit_.sites(); }
   void contacts(const double* s, double* value, double* rate) const override {
-    const int N = orbit_.sites();
+    const Index N = orbit_.sites();
     const double d0 = orbit_.params().delta0;
-    for (int n = 0; n < N; ++n) {
+    for (Index n = 0; n < N; ++n) {
       value[n] = s[n] - d0;
       rate[n] = s[2 * N + n];
     }
@@ -76,14 +76,14 @@ double ContactIntegrator::error_norm(const State& in, const State& out) const {
 }
 
 double ContactIntegrator::first_contact(double h) const {
-  const int N = system_.contact_count();
+  const Index N = system_.contact_count();
   const double ignore = 1e-11;  // a crossing at the very start: we are sitting on that kink
   // First time in (0, h] where the cubic Hermite interpolant of contact function n changes sign,
   // or -1. The cubic is split at its interior extrema so that a grazing contact (x_n crosses
   // delta0 and comes back within one step, equal signs at both ends) is found too.
-  auto crossing = [&](int n) -> double {
-    const double x0 = contact_in_[std::size_t(n)], x1 = contact_out_[std::size_t(n)];
-    const double v0 = rate_in_[std::size_t(n)], v1 = rate_out_[std::size_t(n)];
+  auto crossing = [&](std::size_t n) -> double {
+    const double x0 = contact_in_[n], x1 = contact_out_[n];
+    const double v0 = rate_in_[n], v1 = rate_out_[n];
     auto f = [&](double s) { return hermite(x0, v0, x1, v1, h, s); };
     auto changes = [](double a, double b) { return (a < 0.0 && b >= 0.0) || (a > 0.0 && b <= 0.0); };
     // Breakpoints: 0, the roots of p'(s) = A s^2 + B s + C in (0, 1) in increasing order, 1.
@@ -129,13 +129,13 @@ double ContactIntegrator::first_contact(double h) const {
     return -1.0;
   };
   double first = std::numeric_limits<double>::infinity();
-  for (int n = 0; n < N; ++n) {
+  for (std::size_t n = 0; n < std::size_t(N); ++n) {
     const double tc = crossing(n);
     if (tc > ignore && tc < first) first = tc;
   }
   if (!std::isfinite(first)) return h;
   double last = first;
-  for (int n = 0; n < N; ++n) {
+  for (std::size_t n = 0; n < std::size_t(N); ++n) {
     const double tc = crossing(n);
     if (tc > first && tc <= first + options_.group_window) last = std::max(last, tc);
   }
@@ -144,10 +144,10 @@ double ContactIntegrator::first_contact(double h) const {
 }
 
 double ContactIntegrator::time_to_contact() const {
-  const int N = system_.contact_count();
+  const std::size_t N = std::size_t(system_.contact_count());
   double tau = std::numeric_limits<double>::infinity();
-  for (int n = 0; n < N; ++n) {
-    const double gap = -contact_out_[std::size_t(n)], v = rate_out_[std::size_t(n)];
+  for (std::size_t n = 0; n < N; ++n) {
+    const double gap = -contact_out_[n], v = rate_out_[n];
     if (gap * v > 0.0) tau = std::min(tau, gap / v);  // moving towards the contact change
   }
   return tau;

@@ -33,7 +33,7 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
   double ds = o.ds;
-  int iterations = 0;
+  Index iterations = 0;
 
   // Accepts the converged point u: Jacobian (and Floquet propagator), measures, tangent.
   auto accept = [&](double residual) {
@@ -57,7 +57,7 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
   shooting.evaluate(u.head(k), u(k), r, nullptr);
   accept(r.lpNorm<Eigen::Infinity>());
 
-  while (static_cast<int>(out.points.size()) < o.max_points) {
+  while (Index(out.points.size()) < o.max_points) {
     if (o.stop && o.stop->load(std::memory_order_relaxed)) {
       out.interrupted = true;
       out.stop_reason = fmt::format("interrupted after {} points at omega_b = {:.6f}", out.points.size(), u(k));
@@ -75,7 +75,7 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
     u = u_prev + ds * t;
     const Eigen::VectorXd u_pred = u;
     iterations = 0;
-    for (int it = 0; it < o.max_corrector; ++it) {
+    for (Index it = 0; it < o.max_corrector; ++it) {
       shooting.evaluate(u.head(k), u(k), r, nullptr);
       res = r.lpNorm<Eigen::Infinity>();
       iterations = it;

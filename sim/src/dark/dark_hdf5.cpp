@@ -1,6 +1,8 @@
 // HDF5 files of dark breathers and their branches (dark/dark_hdf5.hpp), shared by the CLI and Python.
 #include "lrchain/sim/dark/dark_hdf5.hpp"
 
+#include <cstdint>
+
 #include <nlohmann/json.hpp>
 
 #include "../run_json.hpp"
@@ -24,7 +26,7 @@ void write_root(Hdf5TreeFile& file, const char* result_class, const Params& p) {
 
 const char* const measure_names[] = {"norm_squared", "K_x", "K_y", "C_x", "C_y", "E_b", "max_strain"};
 
-double measure(const DarkMeasures& m, int k) {
+double measure(const DarkMeasures& m, std::size_t k) {
   const double values[] = {m.norm_squared, m.K_x, m.K_y, m.C_x, m.C_y, m.E_b, m.max_strain};
   return values[k];
 }
@@ -32,7 +34,7 @@ double measure(const DarkMeasures& m, int k) {
 const char* const floquet_scalars[] = {"max_modulus", "max_real", "max_period_doubling", "max_oscillatory",
                                        "pairing_defect", "conjugation_defect", "log_det"};
 
-double floquet_scalar(const FloquetRecord& f, int k) {
+double floquet_scalar(const FloquetRecord& f, std::size_t k) {
   const double values[] = {f.max_modulus, f.max_real, f.max_period_doubling, f.max_oscillatory,
                            f.pairing_defect, f.conjugation_defect, f.log_det};
   return values[k];
@@ -63,7 +65,7 @@ DarkSolutionRecord dark_solution_record(const Params& p, double omega_b, double 
   return r;
 }
 
-DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch, std::size_t sites, bool floquet) {
+DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch, Index sites, bool floquet) {
   DarkBranchRecord r;
   r.params = p;
   r.sites = sites;
@@ -88,7 +90,8 @@ void write_dark_solution_hdf5(const std::filesystem::path& path, const DarkSolut
   file.write_attribute("/", "omega_b", s.omega_b);
   file.write_attribute("/", "omega_edge", s.omega_edge);
   std::vector<double> n(s.x.size());
-  for (std::size_t i = 0; i < n.size(); ++i) n[i] = double(long(i) - long(n.size() - 1) / 2);
+  const Index sites = Index(n.size());
+  for (Index i = 0; i < sites; ++i) n[std::size_t(i)] = double(i - (sites - 1) / 2);
   write_vector(file, "/n", n);
   write_vector(file, "/x", s.x);
   write_vector(file, "/y", s.y);
@@ -96,14 +99,14 @@ void write_dark_solution_hdf5(const std::filesystem::path& path, const DarkSolut
   write_vector(file, "/y_seed", s.y_seed);
   write_vector(file, "/newton_residuals", s.newton_residuals);
   file.create_group("/measures");
-  for (int k = 0; k < 7; ++k) file.write_attribute("/measures", measure_names[k], measure(s.measures, k));
+  for (std::size_t k = 0; k < 7; ++k) file.write_attribute("/measures", measure_names[k], measure(s.measures, k));
   if (s.floquet) {
     const FloquetRecord& f = *s.floquet;
     file.create_group("/floquet");
     file.write_dataset("/floquet/multipliers", Hdf5Element::complex128, f.multipliers.data(), {f.multipliers.size()});
     file.write_attribute("/floquet", "kind", f.kind);
-    for (int k = 0; k < 7; ++k) file.write_attribute("/floquet", floquet_scalars[k], floquet_scalar(f, k));
-    file.write_attribute("/floquet", "near_one", f.near_one);
+    for (std::size_t k = 0; k < 7; ++k) file.write_attribute("/floquet", floquet_scalars[k], floquet_scalar(f, k));
+    file.write_attribute("/floquet", "near_one", std::int64_t(f.near_one));
   }
   file.commit();
 }
@@ -115,15 +118,17 @@ void write_dark_branch_hdf5(const std::filesystem::path& path, const DarkBranchR
   write_vector(file, "/omega_b", b.omega_b);
   write_vector(file, "/tangent_omega", b.tangent_omega);
   write_vector(file, "/residual", b.residual);
-  file.write_dataset("/iterations", Hdf5Element::int32, b.iterations.data(), {points});
-  file.write_dataset("/x", Hdf5Element::float64, b.x.data(), {points, b.sites});
-  file.write_dataset("/y", Hdf5Element::float64, b.y.data(), {points, b.sites});
+  const std::vector<std::int32_t> iterations(b.iterations.begin(), b.iterations.end());
+  file.write_dataset("/iterations", Hdf5Element::int32, iterations.data(), {points});
+  const std::size_t sites = std::size_t(b.sites);
+  file.write_dataset("/x", Hdf5Element::float64, b.x.data(), {points, sites});
+  file.write_dataset("/y", Hdf5Element::float64, b.y.data(), {points, sites});
   if (b.turning_points.empty()) file.write_attribute("/", "turning_points", std::string("[]"));
   else write_vector(file, "/turning_points", b.turning_points);
   file.write_attribute("/", "stop_reason", b.stop_reason);
   file.create_group("/measures");
   if (points > 0)
-    for (int k = 0; k < 7; ++k) {
+    for (std::size_t k = 0; k < 7; ++k) {
       std::vector<double> v;
       for (const auto& m : b.measures) v.push_back(measure(m, k));
       write_vector(file, std::string("/measures/") + measure_names[k], v);
@@ -141,7 +146,7 @@ void write_dark_branch_hdf5(const std::filesystem::path& path, const DarkBranchR
     }
     file.write_dataset("/floquet/multipliers", Hdf5Element::complex128, all.data(), {points, width});
     write_json_tree(file, "/floquet", {{"kind", kinds}});
-    for (int k = 0; k < 7; ++k) {
+    for (std::size_t k = 0; k < 7; ++k) {
       std::vector<double> v;
       for (const auto& f : b.floquet) v.push_back(floquet_scalar(f, k));
       write_vector(file, std::string("/floquet/") + floquet_scalars[k], v);

@@ -29,16 +29,16 @@ double dark_dip_position(const Eigen::VectorXd& amplitude) {
 }
 
 // Direct integration of eq:Hertzd0S from (Z(0), 0) with per-period measures (eq:relerr, eq:center).
-DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, int sites, double omega_b,
-                                double t_end, int samples_per_period, const std::atomic<bool>* stop) {
+DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, Index sites, double omega_b,
+                                double t_end, Index samples_per_period, const std::atomic<bool>* stop) {
   if (!(omega_b > 0)) throw InvalidParameter("omega-b", "must be > 0");
   if (samples_per_period < 4) throw InvalidParameter("samples", "at least 4 samples per period");
-  const int N = sites;
+  const Index N = sites;
   const double period = 2.0 * std::numbers::pi / omega_b;
   if (!(t_end >= period && std::isfinite(t_end)))
     throw InvalidParameter("t-end", "must be a finite time of at least one period T_b = 2 pi/omega_b");
-  const int M = static_cast<int>(checked_count(std::floor(t_end / period), "t-end", 1,
-                                               std::numeric_limits<int>::max(), "periods (t-end / T_b)"));
+  const Index M = checked_count(std::floor(t_end / period), "t-end", 1, std::numeric_limits<int>::max(),
+                                "periods (t-end / T_b)");
   const Eigen::Index positions = z0.size();
   std::vector<double> s(static_cast<std::size_t>(2 * positions), 0.0);
   for (Eigen::Index i = 0; i < positions; ++i) s[static_cast<std::size_t>(i)] = z0(i);
@@ -53,14 +53,14 @@ DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::Vector
   out.max_strain = z0.head(N).maxCoeff();
   Eigen::VectorXd lo(N), hi(N);
   double previous = 0;
-  for (int m = 1; m <= M; ++m) {
+  for (Index m = 1; m <= M; ++m) {
     if (stop && stop->load(std::memory_order_relaxed)) break;
-    for (int n = 0; n < N; ++n) lo(n) = hi(n) = s[static_cast<std::size_t>(n)];
-    for (int k = 1; k <= samples_per_period; ++k) {
-      const double t0 = period * ((m - 1) + static_cast<double>(k - 1) / samples_per_period);
-      const double t1 = period * ((m - 1) + static_cast<double>(k) / samples_per_period);
+    for (Index n = 0; n < N; ++n) lo(n) = hi(n) = s[static_cast<std::size_t>(n)];
+    for (Index k = 1; k <= samples_per_period; ++k) {
+      const double t0 = period * (static_cast<double>(m - 1) + static_cast<double>(k - 1) / static_cast<double>(samples_per_period));
+      const double t1 = period * (static_cast<double>(m - 1) + static_cast<double>(k) / static_cast<double>(samples_per_period));
       advance(s, t0, t1);
-      for (int n = 0; n < N; ++n) {
+      for (Index n = 0; n < N; ++n) {
         const double x = s[static_cast<std::size_t>(n)];
         lo(n) = std::min(lo(n), x);
         hi(n) = std::max(hi(n), x);
@@ -70,7 +70,7 @@ DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::Vector
     out.snapshots.emplace_back(z);
     out.max_strain = std::max(out.max_strain, hi.maxCoeff());
     DarkEvolutionPeriod r;
-    r.t = m * period;
+    r.t = static_cast<double>(m) * period;
     r.E_b = (z - z0).cwiseAbs().maxCoeff() / zmax;
     r.C_x = 0.5 * (hi(0) + lo(0));
     r.K_x = 0.5 * (hi(0) - lo(0));
@@ -78,8 +78,9 @@ DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::Vector
     r.depth = amplitude.maxCoeff() - amplitude.minCoeff();
     double pos = dark_dip_position(amplitude);
     if (m > 1) {  // unwrap across the periodic ends
-      while (pos - previous > 0.5 * N) pos -= N;
-      while (pos - previous < -0.5 * N) pos += N;
+      const double ring = static_cast<double>(N);
+      while (pos - previous > 0.5 * ring) pos -= ring;
+      while (pos - previous < -0.5 * ring) pos += ring;
     }
     previous = pos;
     r.position = pos;
@@ -89,10 +90,10 @@ DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::Vector
 }
 
 DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
-                                   double t_end, int samples_per_period,
+                                   double t_end, Index samples_per_period,
                                    const ContactIntegrationOptions& integration,
                                    const std::atomic<bool>* stop) {
-  const int N = static_cast<int>(z0.size() / 2);
+  const Index N = z0.size() / 2;
   StrainLatticeOrbit orbit(p, N);
   ContactIntegrator integrator(orbit, integration);
   return evolve_dark_orbit([&](std::vector<double>& s, double t0, double t1) { integrator.integrate(s, t0, t1); },

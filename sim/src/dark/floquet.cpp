@@ -34,7 +34,7 @@ FloquetResult classify_multipliers(std::vector<std::complex<double>> lambda,
   for (std::size_t i = 0; i < n; ++i)
     if (std::abs(lambda[order[i]] - 1.0) <= o.symmetry_tolerance) {
       ++r.near_one;
-      if (static_cast<int>(i) < o.symmetry_multipliers) symmetry[order[i]] = true;
+      if (Index(i) < o.symmetry_multipliers) symmetry[order[i]] = true;
     }
   for (std::size_t i = 0; i < n; ++i) {
     const auto l = lambda[i];
@@ -81,15 +81,15 @@ FloquetResult floquet_reversible(const DarkShooting& shooting, const Eigen::Matr
                                  const FloquetOptions& o) {
   if (shooting.mode() != ShootingMode::reversible)
     throw std::invalid_argument("floquet_reversible: needs the reversible shooting propagator");
-  const int N = shooting.sites();
-  const Eigen::Index n2 = 2 * N, n4 = 4 * N;
+  const Index N = shooting.sites();
+  const Index n2 = 2 * N, n4 = 4 * N;
   if (A.rows() != n4 || A.cols() != n4) throw std::invalid_argument("floquet_reversible: 4N x 4N");
   // Involution applied to the right of X = A^{-1} W A: W = S (site) or R S (bond).
   Eigen::MatrixXd WA(n4, n2);  // only the first 2N columns of W A are needed for P
   const bool bond = shooting.center() == DarkCenter::bond;
   for (Eigen::Index row = 0; row < n4; ++row) {
     const Eigen::Index block = row / N;  // 0: x, 1: y, 2: xdot, 3: ydot
-    const int i = static_cast<int>(row % N);
+    const Index i = row % N;
     const Eigen::Index src = block * N + (bond ? shooting.reflect(i) : i);
     const double sign = block >= 2 ? -1.0 : 1.0;
     WA.row(row) = sign * A.block(src, 0, 1, n2);

@@ -25,29 +25,29 @@ double relative_error(const std::vector<double>& s, const Eigen::VectorXd& z0) {
 }
 }  // namespace
 
-DarkMeasures measure_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, int sites, double omega_b,
-                                int samples) {
-  const int N = sites;
-  const int fields = static_cast<int>(z0.size()) / N;
+DarkMeasures measure_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, Index sites, double omega_b,
+                                Index samples) {
+  const Index N = sites;
+  const Index fields = z0.size() / N;
   std::vector<double> s = initial_state(z0);
   const double period = 2.0 * std::numbers::pi / omega_b;
   std::vector<double> lo(static_cast<std::size_t>(fields)), hi(static_cast<std::size_t>(fields));
-  for (int f = 0; f < fields; ++f) lo[f] = hi[f] = s[static_cast<std::size_t>(f * N)];
+  for (Index f = 0; f < fields; ++f) lo[std::size_t(f)] = hi[std::size_t(f)] = s[static_cast<std::size_t>(f * N)];
   double strain_max = z0.head(N).maxCoeff();
-  for (int k = 1; k <= samples; ++k) {
+  for (Index k = 1; k <= samples; ++k) {
     advance(s, period * (k - 1) / samples, period * k / samples);
-    for (int f = 0; f < fields; ++f) {
-      lo[f] = std::min(lo[f], s[static_cast<std::size_t>(f * N)]);
-      hi[f] = std::max(hi[f], s[static_cast<std::size_t>(f * N)]);
+    for (Index f = 0; f < fields; ++f) {
+      lo[std::size_t(f)] = std::min(lo[std::size_t(f)], s[static_cast<std::size_t>(f * N)]);
+      hi[std::size_t(f)] = std::max(hi[std::size_t(f)], s[static_cast<std::size_t>(f * N)]);
     }
-    for (int n = 0; n < N; ++n) strain_max = std::max(strain_max, s[static_cast<std::size_t>(n)]);
+    for (Index n = 0; n < N; ++n) strain_max = std::max(strain_max, s[static_cast<std::size_t>(n)]);
   }
   DarkMeasures m;
   m.E_b = relative_error(s, z0);
   std::vector<double> centre(static_cast<std::size_t>(fields)), amplitude(static_cast<std::size_t>(fields));
-  for (int f = 0; f < fields; ++f) {
-    centre[f] = 0.5 * (hi[f] + lo[f]);     // eq:center
-    amplitude[f] = 0.5 * (hi[f] - lo[f]);  // eq:amp
+  for (Index f = 0; f < fields; ++f) {
+    centre[std::size_t(f)] = 0.5 * (hi[std::size_t(f)] + lo[std::size_t(f)]);     // eq:center
+    amplitude[std::size_t(f)] = 0.5 * (hi[std::size_t(f)] - lo[std::size_t(f)]);  // eq:amp
   }
   m.C_x = centre[0];
   m.K_x = amplitude[0];
@@ -57,16 +57,16 @@ DarkMeasures measure_dark_orbit(const OrbitAdvance& advance, const Eigen::Vector
   }
   m.max_strain = strain_max;
   double norm = 0;  // eq:l2norm
-  for (int n = 0; n < N; ++n)
-    for (int f = 0; f < fields; ++f)
-      norm += amplitude[f] * amplitude[f] - (z0(f * N + n) - centre[f]) * (z0(f * N + n) - centre[f]);
+  for (Index n = 0; n < N; ++n)
+    for (Index f = 0; f < fields; ++f)
+      norm += amplitude[std::size_t(f)] * amplitude[std::size_t(f)] - (z0(f * N + n) - centre[std::size_t(f)]) * (z0(f * N + n) - centre[std::size_t(f)]);
   m.norm_squared = norm;
   return m;
 }
 
 DarkMeasures measure_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
-                                   const ContactIntegrationOptions& integration, int samples) {
-  const int N = static_cast<int>(z0.size() / 2);
+                                   const ContactIntegrationOptions& integration, Index samples) {
+  const Index N = z0.size() / 2;
   StrainLatticeOrbit orbit(p, N);
   ContactIntegrator integrator(orbit, integration);
   return measure_dark_orbit([&](std::vector<double>& s, double t0, double t1) { integrator.integrate(s, t0, t1); },
@@ -76,16 +76,16 @@ DarkMeasures measure_dark_breather(const Params& p, const Eigen::VectorXd& z0, d
 std::vector<RelativeErrorSample> relative_error_history(const Params& p, const Eigen::VectorXd& z0,
                                                         double omega_b, double t_end,
                                                         const ContactIntegrationOptions& integration) {
-  const int N = static_cast<int>(z0.size() / 2);
+  const Index N = z0.size() / 2;
   StrainLatticeOrbit orbit(p, N);
   ContactIntegrator integrator(orbit, integration);
   std::vector<double> s = initial_state(z0);
   const double period = 2.0 * std::numbers::pi / omega_b;
-  const int periods = static_cast<int>(checked_count(std::floor(t_end / period), "t-end", 0,
-                                                     std::numeric_limits<int>::max(), "periods (t-end / T_b)"));
+  const Index periods = checked_count(std::floor(t_end / period), "t-end", 0, std::numeric_limits<int>::max(),
+                                      "periods (t-end / T_b)");
   std::vector<RelativeErrorSample> out;
   out.reserve(static_cast<std::size_t>(periods));
-  for (int m = 1; m <= periods; ++m) {
+  for (Index m = 1; m <= periods; ++m) {
     integrator.integrate(s, (m - 1) * period, m * period);
     out.push_back({m * period, relative_error(s, z0)});
   }
@@ -93,15 +93,15 @@ std::vector<RelativeErrorSample> relative_error_history(const Params& p, const E
 }
 
 std::vector<Eigen::VectorXd> dark_breather_evolution(const Params& p, const Eigen::VectorXd& z0,
-                                                     double dt, int steps,
+                                                     double dt, Index steps,
                                                      const ContactIntegrationOptions& integration) {
-  const int N = static_cast<int>(z0.size() / 2);
+  const Index N = z0.size() / 2;
   StrainLatticeOrbit orbit(p, N);
   ContactIntegrator integrator(orbit, integration);
   std::vector<double> s = initial_state(z0);
   std::vector<Eigen::VectorXd> out;
   out.push_back(z0);
-  for (int k = 1; k <= steps; ++k) {
+  for (Index k = 1; k <= steps; ++k) {
     integrator.integrate(s, (k - 1) * dt, k * dt);
     out.push_back(Eigen::Map<const Eigen::VectorXd>(s.data(), 2 * N));
   }

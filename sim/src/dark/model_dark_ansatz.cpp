@@ -117,7 +117,7 @@ ModelDarkAnsatz make_model_dark_ansatz(const Model& model, const lrchain_lattice
   return a;
 }
 
-void check_dark_sites(const ModelDarkAnsatz& a, int sites) {
+void check_dark_sites(const ModelDarkAnsatz& a, Index sites) {
   const bool pi_edge = a.theta != 0;
   if (sites < 9 || (sites % 2 == 1) != pi_edge)
     throw InvalidParameter("sites", pi_edge ? "must be an odd integer >= 9 at a theta = pi edge (a staggered dark "
@@ -127,25 +127,26 @@ void check_dark_sites(const ModelDarkAnsatz& a, int sites) {
 }
 
 // u_f[n] at t = 0 (theta = pi: one breather; theta = 0: the pair), in the lattice's variables.
-Eigen::VectorXd model_dark_seed(const ModelDarkAnsatz& a, DarkCenter center, int sites) {
+Eigen::VectorXd model_dark_seed(const ModelDarkAnsatz& a, DarkCenter center, Index sites) {
   check_dark_sites(a, sites);
   const double n0 = dark_center_n0(center);
-  const int half = a.theta != 0 ? (sites - 1) / 2 : 0;
+  const Index half = a.theta != 0 ? (sites - 1) / 2 : 0;
   const std::size_t fields = a.kernel.size();
-  const double n1 = 0.25 * sites + n0, n2 = n1 + 0.5 * sites;
-  auto u = [&](std::size_t f, int n) {
+  const double n1 = 0.25 * static_cast<double>(sites) + n0, n2 = n1 + 0.5 * static_cast<double>(sites);
+  auto u = [&](std::size_t f, Index n) {
     if (a.theta == 0) {
-      const double t1 = std::tanh(a.inverse_width * (n - n1)), t2 = std::tanh(a.inverse_width * (n - n2));
+      const double t1 = std::tanh(a.inverse_width * (static_cast<double>(n) - n1)),
+                 t2 = std::tanh(a.inverse_width * (static_cast<double>(n) - n2));
       return a.amplitude * (a.mean_factor * (t1 + t2) - 2.0 * a.kernel[f] * t1 * t2);
     }
     const double sign = (n % 2 == 0) ? 1.0 : -1.0;
-    return (a.mean_factor + 2.0 * sign * a.kernel[f]) * a.amplitude * std::tanh(a.inverse_width * (n - n0));
+    return (a.mean_factor + 2.0 * sign * a.kernel[f]) * a.amplitude * std::tanh(a.inverse_width * (static_cast<double>(n) - n0));
   };
-  Eigen::VectorXd z(static_cast<Eigen::Index>(fields) * sites);
-  for (int i = 0; i < sites; ++i) {
-    const int n = i - half;
+  Eigen::VectorXd z(static_cast<Index>(fields) * sites);
+  for (Index i = 0; i < sites; ++i) {
+    const Index n = i - half;
     for (std::size_t f = 0; f < fields; ++f) {
-      const Eigen::Index at = static_cast<Eigen::Index>(f) * sites + i;
+      const Index at = static_cast<Index>(f) * sites + i;
       if (!a.mean_flow)
         z(at) = u(f, n);
       else if (f == 0)

@@ -31,9 +31,9 @@ class ModelDarkOrbit::Contacts final : public ContactSystem {
  public:
   explicit Contacts(const ModelDarkOrbit& orbit) : orbit_(orbit) {}
   Index dimension() const override { return 2 * orbit_.positions(); }
-  int stiffness_count() const override { return 0; }
+  Index stiffness_count() const override { return 0; }
   void rhs(const double* s, double* ds, double*) const override { orbit_.rhs(s, ds); }
-  int contact_count() const override { return int(orbit_.bonds_.size()) * orbit_.sites(); }
+  Index contact_count() const override { return Index(orbit_.bonds_.size()) * orbit_.sites(); }
   void contacts(const double* s, double* value, double* rate) const override {
     contact_overlaps(orbit_.bonds_, orbit_.sites(), s, s + orbit_.positions(), value, rate);
   }
@@ -42,11 +42,11 @@ class ModelDarkOrbit::Contacts final : public ContactSystem {
   const ModelDarkOrbit& orbit_;
 };
 
-ModelDarkOrbit::ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites,
+ModelDarkOrbit::ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
                                bool mean_flow, ContactIntegrationOptions options, ContactBonds bonds)
-    : lattice_(kernels, std::move(parameters), std::size_t(std::max(sites, 2)), true,
+    : lattice_(kernels, std::move(parameters), std::max<Index>(sites, 2), true,
                mean_flow ? LatticeForm::strain : LatticeForm::displacement),
-      sites_(sites), positions_(Eigen::Index(lattice_.positions())), options_(options),
+      sites_(sites), positions_(lattice_.positions()), options_(options),
       steppers_(std::make_unique<Steppers>()), bonds_(std::move(bonds)) {
   if (sites < 9) throw InvalidParameter("sites", "must be >= 9, got " + std::to_string(sites));
   for (const auto& bond : bonds_)
@@ -61,7 +61,7 @@ ModelDarkOrbit::ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vect
 
 ModelDarkOrbit::~ModelDarkOrbit() = default;
 
-long ModelDarkOrbit::contact_changes() const {
+Index ModelDarkOrbit::contact_changes() const {
   return contact_integrator_ ? contact_integrator_->stats().contact_changes : 0;
 }
 
@@ -124,16 +124,16 @@ void ModelDarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi,
 }
 
 ModelDarkShooting::ModelDarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters,
-                                     int sites, bool mean_flow, ShootingMode mode, ContactIntegrationOptions options,
+                                     Index sites, bool mean_flow, ShootingMode mode, ContactIntegrationOptions options,
                                      ContactBonds bonds)
     : orbit_(kernels, std::move(parameters), sites, mean_flow, options, std::move(bonds)), mean_flow_(mean_flow),
       mode_(mode) {}
 
-std::optional<long> ModelDarkShooting::contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const {
+std::optional<Index> ModelDarkShooting::contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const {
   if (orbit_.contact_bonds().empty()) return std::nullopt;
   std::vector<double> state(2 * std::size_t(orbit_.positions()), 0.0);
   std::copy(z0.data(), z0.data() + z0.size(), state.begin());
-  const long before = orbit_.contact_changes();
+  const Index before = orbit_.contact_changes();
   orbit_.integrate(state, 0.0, 2.0 * std::numbers::pi / omega_b);
   return orbit_.contact_changes() - before;
 }
@@ -147,7 +147,6 @@ OrbitAdvance ModelDarkShooting::advance() const {
 // tau = T_b/2 or T_b: d state / d omega_b = -f(state) tau / omega_b).
 void ModelDarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
                                  Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator) const {
-  using Eigen::Index;
   const Index P = orbit_.positions(), n = 2 * P;
   const double period = 2.0 * std::numbers::pi / omega_b;
   std::vector<double> state(static_cast<std::size_t>(n), 0.0), f(static_cast<std::size_t>(n), 0.0);

@@ -18,7 +18,7 @@ ShootingMode parse_shooting_mode(std::string_view text) {
                                      std::string(text) + "'");
 }
 
-DarkShooting::DarkShooting(const Params& p, int sites, DarkCenter center, ShootingMode mode,
+DarkShooting::DarkShooting(const Params& p, Index sites, DarkCenter center, ShootingMode mode,
                            ContactIntegrationOptions integration)
     : p_(p), sites_(sites), center_(center), mode_(mode), integration_(integration) {
   validate(p);
@@ -26,15 +26,15 @@ DarkShooting::DarkShooting(const Params& p, int sites, DarkCenter center, Shooti
     throw InvalidParameter("sites", "must be odd and >= 9 (a staggered dark breather fits periodic "
                                     "ends only on an odd number of sites), got " +
                                         std::to_string(sites));
-  const int N = sites;
-  const int shift = center == DarkCenter::site ? 0 : 1;
+  const Index N = sites;
+  const Index shift = center == DarkCenter::site ? 0 : 1;
   reflection_.resize(static_cast<std::size_t>(N));
-  for (int i = 0; i < N; ++i) reflection_[static_cast<std::size_t>(i)] = ((N + shift - i) % N + N) % N;
+  for (Index i = 0; i < N; ++i) reflection_[static_cast<std::size_t>(i)] = ((N + shift - i) % N + N) % N;
   // Orthonormal R-even / R-odd bases for both fields.
   std::vector<Eigen::VectorXd> even, odd;
-  for (int field = 0; field < 2; ++field) {
-    for (int i = 0; i < N; ++i) {
-      const int r = reflect(i);
+  for (Index field = 0; field < 2; ++field) {
+    for (Index i = 0; i < N; ++i) {
+      const Index r = reflect(i);
       if (r < i) continue;
       Eigen::VectorXd e = Eigen::VectorXd::Zero(2 * N);
       if (r == i) {
@@ -68,8 +68,7 @@ double DarkShooting::shooting_time(double omega_b) const {
 
 void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
                             Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator) const {
-  using Eigen::Index;
-  const int N = sites_;
+  const Index N = sites_;
   const Index k = basis_.cols();
   const Index n2 = 2 * N, n4 = 4 * N;
   const bool full_phi = propagator != nullptr;
@@ -167,7 +166,7 @@ void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::Vec
     add(symmetric_.transpose() * qtr.s.tail(n2), j2);
     // C_x: x_0(T_b/2) = (R Z(0))_0 = x_{R(0)}(0).
     Eigen::VectorXd r(1);
-    const int r0 = reflect(0);
+    const Index r0 = reflect(0);
     r(0) = 0.5 * (z0(0) + z0(r0));
     Eigen::MatrixXd jc;
     if (jac) {
@@ -191,8 +190,8 @@ void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::Vec
       // Z(T_b/2) - R Z(0) = 0.
       Eigen::MatrixXd rb(n2, k);
       Eigen::VectorXd rz(n2);
-      for (int field = 0; field < 2; ++field)
-        for (int i = 0; i < N; ++i) {
+      for (Index field = 0; field < 2; ++field)
+        for (Index i = 0; i < N; ++i) {
           rb.row(field * N + i) = basis_.row(field * N + reflect(i));
           rz(field * N + i) = z0(field * N + reflect(i));
         }
@@ -222,9 +221,9 @@ NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q
   result.q = std::move(q0);
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
-  const Eigen::Index k = shooting.unknowns();
+  const Index k = shooting.unknowns();
   double first = -1;
-  for (int it = 0; it <= options.max_iterations; ++it) {
+  for (Index it = 0; it <= options.max_iterations; ++it) {
     shooting.evaluate(result.q, omega_b, r, &J);
     NewtonRecord rec;
     rec.iteration = it;
@@ -263,12 +262,12 @@ NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q
   return result;
 }
 
-Eigen::VectorXd dark_seed(const DarkBreatherAnsatz& ansatz, DarkCenter center, int sites) {
+Eigen::VectorXd dark_seed(const DarkBreatherAnsatz& ansatz, DarkCenter center, Index sites) {
   std::vector<double> x, y;
-  const int half = (sites - 1) / 2;
+  const Index half = (sites - 1) / 2;
   dark_breather_strains(ansatz, center, -half, sites, 0.0, x, y);
   Eigen::VectorXd z(2 * sites);
-  for (int i = 0; i < sites; ++i) {
+  for (Index i = 0; i < sites; ++i) {
     z(i) = x[static_cast<std::size_t>(i)];
     z(sites + i) = y[static_cast<std::size_t>(i)];
   }

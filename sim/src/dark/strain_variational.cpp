@@ -6,7 +6,7 @@
 
 namespace lrchain::sim::dark {
 
-StrainLatticeOrbit::StrainLatticeOrbit(const Params& p, int sites) : p_(p), sites_(sites) {
+StrainLatticeOrbit::StrainLatticeOrbit(const Params& p, Index sites) : p_(p), sites_(sites) {
   validate(p);
   if (sites < 3) throw InvalidParameter("sites", "must be >= 3 (periodic strain lattice)");
   three_halves_ = p.alpha == 1.5;
@@ -29,18 +29,18 @@ double StrainLatticeOrbit::stiffness(double r) const {
 // eq:Hertzd0S: xdd_n = V'(x_{n+1}) - 2V'(x_n) + V'(x_{n-1}) - kappa (x_n - y_n),
 //              rho ydd_n = kappa (x_n - y_n), periodic in n.
 void StrainLatticeOrbit::rhs(const double* s, double* ds, double* stiffness_out) const {
-  const int N = sites_;
+  const Index N = sites_;
   const double d0 = p_.delta0;
   double* f = force_.data();
   if (three_halves_) {
-    for (int n = 0; n < N; ++n) {
+    for (Index n = 0; n < N; ++n) {
       const double r = d0 - s[n];
       const double root = r > 0.0 ? std::sqrt(r) : 0.0;
       f[n] = -r * root;
       if (stiffness_out) stiffness_out[n] = 1.5 * root;
     }
   } else {
-    for (int n = 0; n < N; ++n) {
+    for (Index n = 0; n < N; ++n) {
       const double r = d0 - s[n];
       f[n] = r > 0.0 ? -std::pow(r, p_.alpha) : 0.0;
       if (stiffness_out) stiffness_out[n] = r > 0.0 ? p_.alpha * std::pow(r, p_.alpha - 1.0) : 0.0;
@@ -49,11 +49,11 @@ void StrainLatticeOrbit::rhs(const double* s, double* ds, double* stiffness_out)
   const double* x = s;
   const double* y = s + N;
   const double kappa = p_.kappa;
-  for (int n = 0; n < N; ++n) {
+  for (Index n = 0; n < N; ++n) {
     ds[n] = s[2 * N + n];
     ds[N + n] = s[3 * N + n];
   }
-  for (int n = 0; n < N; ++n) {
+  for (Index n = 0; n < N; ++n) {
     const double fp = f[n + 1 < N ? n + 1 : 0];
     const double fm = f[n > 0 ? n - 1 : N - 1];
     const double diff = x[n] - y[n];
@@ -62,18 +62,17 @@ void StrainLatticeOrbit::rhs(const double* s, double* ds, double* stiffness_out)
   }
 }
 
-void tangent_block_rhs(int N, int b, double kappa, double kappa_over_rho, const double* g,
+void tangent_block_rhs(Index N, Index B, double kappa, double kappa_over_rho, const double* g,
                        const double* s, double* ds) {
-  const std::size_t B = static_cast<std::size_t>(b);
   const double* dx = s;
   const double* dy = s + N * B;
   // d(dx)/dt, d(dy)/dt: copy the velocity rows.
-  for (std::size_t i = 0; i < 2 * N * B; ++i) ds[i] = s[2 * N * B + i];
+  for (Index i = 0; i < 2 * N * B; ++i) ds[i] = s[2 * N * B + i];
   double* ax = ds + 2 * N * B;
   double* ay = ds + 3 * N * B;
-  for (int n = 0; n < N; ++n) {
-    const int np = n + 1 < N ? n + 1 : 0;
-    const int nm = n > 0 ? n - 1 : N - 1;
+  for (Index n = 0; n < N; ++n) {
+    const Index np = n + 1 < N ? n + 1 : 0;
+    const Index nm = n > 0 ? n - 1 : N - 1;
     const double gp = g[np], g0 = -2.0 * g[n], gm = g[nm];
     const double* xp = dx + np * B;
     const double* x0 = dx + n * B;
@@ -82,7 +81,7 @@ void tangent_block_rhs(int N, int b, double kappa, double kappa_over_rho, const 
     double* axn = ax + n * B;
     double* ayn = ay + n * B;
 #pragma omp simd
-    for (std::size_t j = 0; j < B; ++j) {
+    for (Index j = 0; j < B; ++j) {
       const double diff = x0[j] - y0[j];
       axn[j] = gp * xp[j] + g0 * x0[j] + gm * xm[j] - kappa * diff;
       ayn[j] = kappa_over_rho * diff;

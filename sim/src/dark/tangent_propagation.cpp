@@ -11,14 +11,15 @@
 namespace lrchain::sim::dark {
 
 void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& record,
-                        Eigen::MatrixXd& phi, int block, const std::atomic<bool>* stop) {
+                        Eigen::MatrixXd& phi, Index block, const std::atomic<bool>* stop) {
   using State = std::vector<double>;
-  const int N = orbit.sites();
-  const Eigen::Index rows = 4 * N;
+  const Index N = orbit.sites();
+  const Index rows = 4 * N;
   if (phi.rows() != rows) throw std::invalid_argument("propagate_tangents: phi must have 4N rows");
   if (record.steps() == 0 || phi.cols() == 0) return;
-  const int m = static_cast<int>(phi.cols());
-  const int blocks = (m + block - 1) / block;
+  if (block < 1) throw std::invalid_argument("propagate_tangents: block must be >= 1");
+  const Index m = phi.cols();
+  const Index blocks = (m + block - 1) / block;
   const double kappa = orbit.params().kappa;
   const double kor = orbit.params().kappa / orbit.params().rho;
   bool stage_mismatch = false;
@@ -28,16 +29,16 @@ void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& reco
   {
     State s;
 #pragma omp for schedule(dynamic, 1)
-    for (int bi = 0; bi < blocks; ++bi) {
-      const int c0 = bi * block;
-      const int b = std::min(block, m - c0);
+    for (Index bi = 0; bi < blocks; ++bi) {
+      const Index c0 = bi * block;
+      const Index b = std::min(block, m - c0);
       // One stepper per block: Odeint sizes its stage storage on first use (blocks differ in size).
       boost::numeric::odeint::runge_kutta_fehlberg78<State> stepper;
       s.assign(static_cast<std::size_t>(rows * b), 0.0);
-      for (int j = 0; j < b; ++j)
-        for (Eigen::Index r = 0; r < rows; ++r) s[static_cast<std::size_t>(r * b + j)] = phi(r, c0 + j);
+      for (Index j = 0; j < b; ++j)
+        for (Index r = 0; r < rows; ++r) s[static_cast<std::size_t>(r * b + j)] = phi(r, c0 + j);
       Index step = 0;
-      int call = 0;
+      Index call = 0;
       auto sys = [&](const State& x, State& dx, double) {
         const double* g = record.stage(step, std::min(call, OrbitRecord::stages - 1));
         ++call;
@@ -52,8 +53,8 @@ void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& reco
         stepper.do_step(sys, s, record.t[static_cast<std::size_t>(step)], record.dt[static_cast<std::size_t>(step)]);
         if (call != OrbitRecord::stages) stage_mismatch = true;
       }
-      for (int j = 0; j < b; ++j)
-        for (Eigen::Index r = 0; r < rows; ++r) phi(r, c0 + j) = s[static_cast<std::size_t>(r * b + j)];
+      for (Index j = 0; j < b; ++j)
+        for (Index r = 0; r < rows; ++r) phi(r, c0 + j) = s[static_cast<std::size_t>(r * b + j)];
     }
   }
   if (interrupted) throw Interrupted(SIGINT, "interrupted by SIGINT");

@@ -185,9 +185,9 @@ JobResult run_dark(const Document& doc, const RunControl& control) {
   const auto [s, ansatz] = read_dark(doc);
   JobResult r;
   const DarkCenter center = parse_dark_center(s.center);
-  const dark::DarkShooting shooting(s.p, int(s.sites), center, dark::parse_shooting_mode(s.mode));
+  const dark::DarkShooting shooting(s.p, s.sites, center, dark::parse_shooting_mode(s.mode));
   const dark::NewtonResult newton = dark::newton_solve(
-      shooting, shooting.unknowns_from_z(dark::dark_seed(ansatz, center, int(s.sites))), ansatz.omega_b, {});
+      shooting, shooting.unknowns_from_z(dark::dark_seed(ansatz, center, s.sites)), ansatz.omega_b, {});
   if (!newton.converged) {
     r.status = PointStatus::numerical_failure;
     r.reason = fmt::format("Newton did not converge at omega_b = {} ({})", ansatz.omega_b, newton.failure);
@@ -195,7 +195,7 @@ JobResult run_dark(const Document& doc, const RunControl& control) {
   }
   dark::ContinuationOptions o;
   o.stop = control.stop;
-  o.max_points = int(s.points);
+  o.max_points = s.points;
   o.ds = s.ds;
   o.omega_min = s.omega_min;
   o.omega_max = s.omega_max > 0 ? s.omega_max : ansatz.omega;

@@ -3,11 +3,11 @@
 // written, and the check that refuses a job that does not fit (InvalidParameter -> exit 2):
 // the machine's available memory (MemAvailable of /proc/meminfo) or an explicit --max-memory,
 // and the free space of the output directory's file system.
-#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/sim/integrator_options.hpp"
 
 namespace lrchain::sim {
@@ -35,7 +35,7 @@ bool lattice_dominates(const LatticeRunSizes& s);
 
 // Sample intervals floor(duration / sample_every) of a run sampled on a regular grid, refused
 // (InvalidParameter naming `duration_parameter`) when the count overflows any memory.
-std::int64_t sample_intervals(double duration, double sample_every, const std::string& duration_parameter);
+Index sample_intervals(double duration, double sample_every, const std::string& duration_parameter);
 // The sizes of a run on a regular sample grid with space-time rows every `spacetime_every`.
 LatticeRunSizes sampled_run_sizes(double sites, double duration, double sample_every, double spacetime_every,
                                   double snapshots, StepperKind stepper, const std::string& duration_parameter);

@@ -1,7 +1,7 @@
 #pragma once
 // How the fixed step of a symplectic run was chosen for the user (automatic_step.hpp), as reported
 // with the run's results.
-#include <cstdint>
+#include "lrchain/index.hpp"
 
 namespace lrchain::sim {
 
@@ -12,10 +12,10 @@ struct AutomaticStepOptions {
 
 struct StepChoice {
   double dt = 0;                        // the chosen step (sample interval / steps_per_sample)
-  std::int64_t steps_per_sample = 0;
+  Index steps_per_sample = 0;
   double largest_linear_frequency = 0;  // max over branches and theta of omega(theta)
   double probe_energy_error = 0;        // measured with the chosen step over the probe run
-  int probe_runs = 0;
+  Index probe_runs = 0;
   double probe_seconds = 0;             // wall time of the probe runs
 };
 

@@ -6,13 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
 
 namespace lrchain::sim::dark {
 
 struct ContactBondTerm {
-  int variable = 0;  // field index of the lattice form (strain form: 0 is r, f >= 1 is w_f)
-  int shift = 0;     // site offset from n
+  Index variable = 0;  // field index of the lattice form (strain form: 0 is r, f >= 1 is w_f)
+  Index shift = 0;     // site offset from n
   double coefficient = 0;
 };
 
@@ -34,7 +35,7 @@ ContactBonds model_contact_bonds(const lrchain_lattice_kernels& kernels, const s
 
 // Overlaps s_n of every bond (bond-major, `sites` entries each) and their rates at positions q and
 // velocities qdot (each fields x sites, field-major).
-void contact_overlaps(const ContactBonds& bonds, int sites, const double* q, const double* qdot, double* overlap,
+void contact_overlaps(const ContactBonds& bonds, Index sites, const double* q, const double* qdot, double* overlap,
                       double* rate);
 
 }  // namespace lrchain::sim::dark

@@ -20,6 +20,7 @@
 #include <memory>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/sim/dark/strain_variational.hpp"
 
 namespace lrchain::sim::dark {
@@ -39,10 +40,10 @@ struct ContactIntegrationOptions {
 };
 
 struct ContactIntegrationStats {
-  long steps = 0;          // accepted steps
-  long rejected = 0;       // trial steps rejected (error test or a contact change inside)
-  long contact_cuts = 0;   // steps ended at a contact change (a group of them)
-  long contact_changes = 0;  // sign changes of contact functions over accepted steps
+  Index steps = 0;          // accepted steps
+  Index rejected = 0;       // trial steps rejected (error test or a contact change inside)
+  Index contact_cuts = 0;   // steps ended at a contact change (a group of them)
+  Index contact_changes = 0;  // sign changes of contact functions over accepted steps
 };
 
 // A first-order system whose right-hand side is smooth except where one of its contact functions
@@ -52,10 +53,10 @@ class ContactSystem {
   virtual ~ContactSystem() = default;
   virtual Index dimension() const = 0;
   // Entries written per stage into `stiffness` by rhs() (0: nothing recorded).
-  virtual int stiffness_count() const = 0;
+  virtual Index stiffness_count() const = 0;
   // ds = d/dt s; if stiffness != nullptr it receives stiffness_count() values.
   virtual void rhs(const double* s, double* ds, double* stiffness) const = 0;
-  virtual int contact_count() const = 0;
+  virtual Index contact_count() const = 0;
   // The contact functions at s and their time derivatives along the flow (linear in the positions,
   // so the rates follow from the velocities).
   virtual void contacts(const double* s, double* value, double* rate) const = 0;
@@ -63,12 +64,12 @@ class ContactSystem {
 
 // Accepted steps of one integration and the stage stiffnesses V''(x) (13 stages x N per step).
 struct OrbitRecord {
-  static constexpr int stages = 13;  // Runge-Kutta-Fehlberg 7(8)
-  int sites = 0;
+  static constexpr Index stages = 13;  // Runge-Kutta-Fehlberg 7(8)
+  Index sites = 0;
   std::vector<double> t, dt;
   std::vector<double> stiffness;  // [step][stage][site]
   Index steps() const { return static_cast<Index>(dt.size()); }
-  const double* stage(Index step, int stage) const { return stiffness.data() + (step * stages + stage) * sites; }
+  const double* stage(Index step, Index stage) const { return stiffness.data() + (step * stages + stage) * sites; }
   void clear() { t.clear(); dt.clear(); stiffness.clear(); }
 };
 
@@ -102,7 +103,7 @@ class ContactIntegrator {
   std::vector<double> out_, err_, trial_stiffness_;
   // Contact functions and rates at the start (in) and end (out) of the trial step.
   std::vector<double> contact_in_, rate_in_, contact_out_, rate_out_;
-  int calls_ = 0;
+  Index calls_ = 0;
   double last_t_ = -1e300, cap_ = 0, target_ = -1, contact_step_ = 0;
   bool recording_ = false;
 };

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/sim/dark/floquet.hpp"
 #include "lrchain/sim/dark/measures.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
@@ -18,12 +19,12 @@ struct ContinuationOptions {
   double ds = 0.02;          // initial arclength step in (q, omega_b)
   double ds_min = 1e-5;      // stop when the step falls below this
   double ds_max = 1.0;
-  int max_points = 100;
+  Index max_points = 100;
   double omega_min = 0;      // stop when omega_b leaves [omega_min, omega_max]
   double omega_max = 1e300;
   double direction = -1;     // initial sign of d omega_b (into the gap: -1)
   bool floquet = true;
-  int max_corrector = 12;
+  Index max_corrector = 12;
   double tolerance = 1e-11;  // max|F| at convergence
   const std::atomic<bool>* stop = nullptr;  // set (SIGINT/SIGTERM): end after the current point
 };
@@ -33,10 +34,10 @@ struct BranchPoint {
   Eigen::VectorXd z0;      // (x(0), y(0))
   DarkMeasures measures;
   FloquetResult floquet;   // empty multipliers if not requested
-  int iterations = 0;      // corrector iterations
+  Index iterations = 0;      // corrector iterations
   double residual = 0;     // max|F|
   double tangent_omega = 0;  // d omega_b / ds at this point
-  std::optional<long> contact_changes_per_period;  // over one period of this point (nullopt: not located)
+  std::optional<Index> contact_changes_per_period;  // over one period of this point (nullopt: not located)
 };
 
 struct BranchResult {

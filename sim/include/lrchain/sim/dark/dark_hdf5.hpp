@@ -14,7 +14,6 @@
 //   stop_reason; group measures with one dataset (P) per measure; with Floquet multipliers, group
 //   floquet: multipliers (P x 4N complex), one dataset (P) per scalar, attribute kind (JSON list).
 #include <complex>
-#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -22,6 +21,7 @@
 
 #include <Eigen/Dense>
 
+#include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
 #include "lrchain/sim/dark/floquet.hpp"
@@ -35,7 +35,7 @@ struct FloquetRecord {
   std::vector<std::complex<double>> multipliers;
   std::string kind;
   double max_modulus = 0, max_real = 0, max_period_doubling = 0, max_oscillatory = 0;
-  std::int64_t near_one = 0;
+  Index near_one = 0;
   double pairing_defect = 0, conjugation_defect = 0, log_det = 0;
 };
 FloquetRecord floquet_record(const FloquetResult& f);
@@ -55,16 +55,16 @@ DarkSolutionRecord dark_solution_record(const Params& p, double omega_b, double 
 
 struct DarkBranchRecord {
   Params params;
-  std::size_t sites = 0;
+  Index sites = 0;
   std::vector<double> omega_b, tangent_omega, residual;
-  std::vector<std::int32_t> iterations;
+  std::vector<Index> iterations;  // written as int32
   std::vector<double> x, y;  // points x sites, row-major
   std::vector<DarkMeasures> measures;
   std::vector<FloquetRecord> floquet;  // one per point, or empty (not computed)
   std::vector<double> turning_points;
   std::string stop_reason;
 };
-DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch, std::size_t sites, bool floquet);
+DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch, Index sites, bool floquet);
 
 // Writers (temporary name + rename; InputError naming `path` if its directory is missing or it is a directory).
 void write_dark_solution_hdf5(const std::filesystem::path& path, const DarkSolutionRecord& s);

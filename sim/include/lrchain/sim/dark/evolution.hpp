@@ -8,6 +8,7 @@
 #include <atomic>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
 #include "lrchain/sim/dark/measures.hpp"
@@ -24,7 +25,7 @@ struct DarkEvolutionPeriod {
 };
 
 struct DarkEvolution {
-  int sites = 0;
+  Index sites = 0;
   double period = 0;                      // T_b
   std::vector<Eigen::VectorXd> snapshots;  // Z(m T_b), m = 0..M (snapshots[0] = Z(0))
   std::vector<DarkEvolutionPeriod> periods;  // m = 1..M
@@ -37,14 +38,14 @@ double dark_dip_position(const Eigen::VectorXd& amplitude);
 
 // The same for any orbit: Z(0) = z0 holds the positions of all variables (`sites` per variable,
 // field-major); the amplitudes, centre and position use variable 0.
-DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, int sites, double omega_b,
-                                double t_end, int samples_per_period, const std::atomic<bool>* stop = nullptr);
+DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, Index sites, double omega_b,
+                                double t_end, Index samples_per_period, const std::atomic<bool>* stop = nullptr);
 
 // Integrates from Z(0) over floor(t_end / T_b) periods, sampling every site `samples_per_period`
 // times per period for the amplitudes A_n = (sup - inf)/2 of x_n(t) (the position measure).
 // When *stop is set (e.g. by SIGINT) the integration ends after the current period.
 DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
-                                   double t_end, int samples_per_period = 24,
+                                   double t_end, Index samples_per_period = 24,
                                    const ContactIntegrationOptions& integration = {},
                                    const std::atomic<bool>* stop = nullptr);
 

@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include "lrchain/index.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
 
 namespace lrchain::sim::dark {
@@ -16,7 +17,7 @@ struct FloquetOptions {
   double unit_tolerance = 1e-6;      // |lambda| > 1 + tol counts as unstable
   double real_tolerance = 1e-7;      // |Im lambda| <= tol |lambda| counts as real
   double symmetry_tolerance = 2e-3;  // the 4 multipliers this close to +1 are symmetry modes
-  int symmetry_multipliers = 4;      // phase/frequency and zero-mode (sum of strains) Jordan blocks
+  Index symmetry_multipliers = 4;      // phase/frequency and zero-mode (sum of strains) Jordan blocks
 };
 
 struct FloquetResult {
@@ -25,7 +26,7 @@ struct FloquetResult {
   double max_real = 1;             // largest |lambda| of real lambda > 1 (1 if none)
   double max_period_doubling = 1;  // largest |lambda| of real lambda < -1 (1 if none)
   double max_oscillatory = 1;      // largest |lambda| of non-real lambda off the circle (1 if none)
-  int near_one = 0;                // multipliers within symmetry_tolerance of +1
+  Index near_one = 0;                // multipliers within symmetry_tolerance of +1
   double pairing_defect = 0;       // max_i min_j |lambda_j - 1/conj(lambda_i)| / max(1,|1/lambda_i|)
   double conjugation_defect = 0;   // max_i min_j |lambda_j - conj(lambda_i)|
   double log_det = 0;              // sum log|lambda| (0 for the volume-preserving flow)

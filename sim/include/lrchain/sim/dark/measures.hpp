@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
 
@@ -25,13 +26,13 @@ using OrbitAdvance = std::function<void(std::vector<double>& state, double t0, d
 // The measures of one period of an orbit from Z(0) = z0 (positions of `fields` variables of `sites`
 // sites each, field-major; Zdot(0) = 0): variable 0 gives K_x, C_x and max_strain, variable 1 (if
 // any) K_y, C_y; the l2 norm sums over all variables.
-DarkMeasures measure_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, int sites, double omega_b,
-                                int samples = 400);
+DarkMeasures measure_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, Index sites, double omega_b,
+                                Index samples = 400);
 
 // Integrates one period from Z(0) (Zdot(0) = 0), sampling x_0, y_0 at >= `samples` times.
 DarkMeasures measure_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
                                    const ContactIntegrationOptions& integration = {},
-                                   int samples = 400);
+                                   Index samples = 400);
 
 struct RelativeErrorSample {
   double t;    // m T_b
@@ -45,7 +46,7 @@ std::vector<RelativeErrorSample> relative_error_history(const Params& p, const E
 
 // Snapshots Z(t_k) of a direct integration (for space-time figures), t_k = k * dt, k = 0..steps.
 std::vector<Eigen::VectorXd> dark_breather_evolution(const Params& p, const Eigen::VectorXd& z0,
-                                                     double dt, int steps,
+                                                     double dt, Index steps,
                                                      const ContactIntegrationOptions& integration = {});
 
 }  // namespace lrchain::sim::dark

@@ -18,6 +18,7 @@
 
 #include <Eigen/Dense>
 
+#include "lrchain/index.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
@@ -55,11 +56,11 @@ ModelDarkAnsatz make_model_dark_ansatz(const Model& model, const lrchain_lattice
                                        const ModelDarkEdge& edge, double omega_b);
 
 // InvalidParameter("sites", ...) unless `sites` >= 9 fits the edge: odd at theta = pi, even at 0.
-void check_dark_sites(const ModelDarkAnsatz& ansatz, int sites);
+void check_dark_sites(const ModelDarkAnsatz& ansatz, Index sites);
 
 // Z(0) on a periodic ring of `sites` (theta = pi: centre in the middle, n = i - (sites - 1)/2;
 // theta = 0: the pair) in the lattice's variables: strains r[n] = u_0[n] - u_0[n-1],
 // w_f[n] = u_f[n] - u_0[n] (mean flow) or displacements u_f[n], field-major.
-Eigen::VectorXd model_dark_seed(const ModelDarkAnsatz& ansatz, DarkCenter center, int sites);
+Eigen::VectorXd model_dark_seed(const ModelDarkAnsatz& ansatz, DarkCenter center, Index sites);
 
 }  // namespace lrchain::sim::dark

@@ -18,6 +18,7 @@
 #include <memory>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/sim/dark/contact_bonds.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
 #include "lrchain/sim/dark/measures.hpp"
@@ -31,18 +32,18 @@ class ModelDarkOrbit {
  public:
   // Throws InvalidParameter("sites") unless sites >= 9 (check_dark_sites checks the parity).
   // `bonds`: the model's one-sided contacts in the lattice form's variables (empty: a smooth model).
-  ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites, bool mean_flow,
+  ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites, bool mean_flow,
                  ContactIntegrationOptions options = {}, ContactBonds bonds = {});
   ~ModelDarkOrbit();
   ModelDarkOrbit(const ModelDarkOrbit&) = delete;  // its contact integrator refers to it
   ModelDarkOrbit& operator=(const ModelDarkOrbit&) = delete;
-  int sites() const { return sites_; }
-  Eigen::Index positions() const { return positions_; }  // fields x sites
+  Index sites() const { return sites_; }
+  Index positions() const { return positions_; }  // fields x sites
   const ModelLattice& lattice() const { return lattice_; }
   const ContactIntegrationOptions& options() const { return options_; }
   const ContactBonds& contact_bonds() const { return bonds_; }
   // Contact changes located by the integrations since the orbit was made (0 for smooth models).
-  long contact_changes() const;
+  Index contact_changes() const;
 
   // Integrates [q qdot] (2 positions() entries) from t0 to t1 with error control (RKF78).
   void integrate(std::vector<double>& state, double t0, double t1) const;
@@ -55,8 +56,8 @@ class ModelDarkOrbit {
   struct Steppers;
   class Contacts;  // the lattice as a ContactSystem
   ModelLattice lattice_;
-  int sites_;
-  Eigen::Index positions_;
+  Index sites_;
+  Index positions_;
   ContactIntegrationOptions options_;
   std::unique_ptr<Steppers> steppers_;
   ContactBonds bonds_;
@@ -68,10 +69,10 @@ class ModelDarkOrbit {
 
 class ModelDarkShooting : public DarkShootingProblem {
  public:
-  ModelDarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, int sites, bool mean_flow,
+  ModelDarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites, bool mean_flow,
                     ShootingMode mode, ContactIntegrationOptions options = {}, ContactBonds bonds = {});
-  int sites() const { return orbit_.sites(); }
-  int unknowns() const override { return static_cast<int>(orbit_.positions()); }
+  Index sites() const { return orbit_.sites(); }
+  Index unknowns() const override { return orbit_.positions(); }
   Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const override { return q; }
   ShootingMode mode() const { return mode_; }
   bool mean_flow() const { return mean_flow_; }
@@ -87,7 +88,7 @@ class ModelDarkShooting : public DarkShootingProblem {
   // Advances an orbit state (for measures and evolution).
   OrbitAdvance advance() const;
   // Contact changes over one period T_b of the orbit from Z(0) = z0 (nullopt for a smooth model).
-  std::optional<long> contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const override;
+  std::optional<Index> contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const override;
 
  private:
   ModelDarkOrbit orbit_;

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "lrchain/index.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
@@ -42,7 +43,7 @@ struct DarkMeasures;
 class DarkShootingProblem {
  public:
   virtual ~DarkShootingProblem() = default;
-  virtual int unknowns() const = 0;
+  virtual Index unknowns() const = 0;
   virtual Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const = 0;
   // Residual F(q, omega_b); if jacobian != nullptr also [dF/dq | dF/domega_b] (unknowns()+1 cols).
   virtual void evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
@@ -54,23 +55,23 @@ class DarkShootingProblem {
   virtual void measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const = 0;
   // Sign changes of the one-sided contacts' overlaps over one period T_b of the orbit from Z(0) = z0
   // where the problem locates them (a model lattice with contacts); nullopt where it does not.
-  virtual std::optional<long> contact_changes_per_period(const Eigen::VectorXd&, double) const { return std::nullopt; }
+  virtual std::optional<Index> contact_changes_per_period(const Eigen::VectorXd&, double) const { return std::nullopt; }
 };
 
 class DarkShooting : public DarkShootingProblem {
  public:
   // Throws InvalidParameter("sites") unless sites is odd and >= 9 (staggered waves on a ring).
-  DarkShooting(const Params& p, int sites, DarkCenter center, ShootingMode mode,
+  DarkShooting(const Params& p, Index sites, DarkCenter center, ShootingMode mode,
                ContactIntegrationOptions integration = {});
 
-  int sites() const { return sites_; }
-  int unknowns() const override { return static_cast<int>(basis_.cols()); }
+  Index sites() const { return sites_; }
+  Index unknowns() const override { return basis_.cols(); }
   DarkCenter center() const { return center_; }
   ShootingMode mode() const { return mode_; }
   const Params& params() const { return p_; }
   const ContactIntegrationOptions& integration() const { return integration_; }
   // Reflection of the family: site index i -> R(i).
-  int reflect(int i) const { return reflection_[static_cast<std::size_t>(i)]; }
+  Index reflect(Index i) const { return reflection_[static_cast<std::size_t>(i)]; }
 
   Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const override { return basis_ * q; }
   // Least-squares projection onto the family's subspace (symmetrises a seed).
@@ -92,25 +93,25 @@ class DarkShooting : public DarkShootingProblem {
 
  private:
   Params p_;
-  int sites_;
+  Index sites_;
   DarkCenter center_;
   ShootingMode mode_;
   ContactIntegrationOptions integration_;
-  std::vector<int> reflection_;
+  std::vector<Index> reflection_;
   Eigen::MatrixXd basis_;       // 2N x k: Z(0) = basis_ q
   Eigen::MatrixXd symmetric_;   // 2N x (N+1): R-even orthonormal basis (x and y fields)
   Eigen::MatrixXd antisymmetric_;  // 2N x (N-1): R-odd orthonormal basis
 };
 
 struct NewtonRecord {
-  int iteration = 0;
+  Index iteration = 0;
   double residual = 0;  // max-norm of F before the step
   double step = 0;      // max-norm of the Newton step taken after it (0 for the last)
 };
 
 struct NewtonOptions {
   double tolerance = 1e-11;  // converged when max|F| <= tolerance
-  int max_iterations = 20;
+  Index max_iterations = 20;
   std::function<void(const NewtonRecord&)> progress;  // e.g. print to stderr
 };
 
@@ -126,6 +127,6 @@ NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q
                           const NewtonOptions& options);
 
 // Seed Z(0) from eq:xy_app at t = 0 on the array (centre in the middle, n_phys = i - (N-1)/2).
-Eigen::VectorXd dark_seed(const DarkBreatherAnsatz& ansatz, DarkCenter center, int sites);
+Eigen::VectorXd dark_seed(const DarkBreatherAnsatz& ansatz, DarkCenter center, Index sites);
 
 }  // namespace lrchain::sim::dark

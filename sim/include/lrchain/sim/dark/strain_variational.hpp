@@ -19,10 +19,10 @@ namespace lrchain::sim::dark {
 class StrainLatticeOrbit {
  public:
   // Throws InvalidParameter for invalid params or sites < 3.
-  StrainLatticeOrbit(const Params& p, int sites);
+  StrainLatticeOrbit(const Params& p, Index sites);
 
-  int sites() const { return sites_; }
-  Index orbit_size() const { return 4 * Index{sites_}; }
+  Index sites() const { return sites_; }
+  Index orbit_size() const { return 4 * sites_; }
   const Params& params() const { return p_; }
 
   // ds = d/dt s (eq:Hertzd0S, periodic ends). If stiffness_out != nullptr it also receives
@@ -35,7 +35,7 @@ class StrainLatticeOrbit {
 
  private:
   Params p_;
-  int sites_;
+  Index sites_;
   bool three_halves_;
   double kappa_over_rho_;
   mutable std::vector<double> force_;
@@ -44,7 +44,7 @@ class StrainLatticeOrbit {
 // Variational equations for a block of b tangent vectors, row-major [4N][b]:
 // d(dx)/dt = dxdot, d(dxdot)/dt = Lap(g dx) - kappa (dx - dy), rho d(dydot)/dt = kappa (dx - dy),
 // with g = V''(x(t)) given per site. No allocation.
-void tangent_block_rhs(int sites, int block, double kappa, double kappa_over_rho, const double* g,
+void tangent_block_rhs(Index sites, Index block, double kappa, double kappa_over_rho, const double* g,
                        const double* s, double* ds);
 
 }  // namespace lrchain::sim::dark

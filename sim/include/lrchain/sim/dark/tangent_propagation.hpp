@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <atomic>
 
+#include "lrchain/index.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
 #include "lrchain/sim/dark/strain_variational.hpp"
 
@@ -14,6 +15,6 @@ namespace lrchain::sim::dark {
 // block: columns integrated together (row-major [4N][block] state; 8-16 keeps the stages in cache).
 // Throws Interrupted once *stop is set (checked at every step of every block).
 void propagate_tangents(const StrainLatticeOrbit& orbit, const OrbitRecord& record,
-                        Eigen::MatrixXd& phi, int block = 8, const std::atomic<bool>* stop = nullptr);
+                        Eigen::MatrixXd& phi, Index block = 8, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace lrchain::sim::dark
