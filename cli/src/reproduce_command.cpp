@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "figure_format_option.hpp"
 #include "help_text.hpp"
+#include "options.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/figure_format.hpp"
@@ -268,7 +269,7 @@ void register_reproduce(CLI::App& app) {
   quick->excludes(full);
   sub->add_option("--out", a->out, "report directory (default lrchain-report; must be new, empty or an earlier report, which is replaced; "
                   "never the current directory or a parent of it)")->type_name("DIR");
-  sub->add_option("--jobs", a->jobs, "steps run at the same time (default 0: one per core)");
+  add_integer(*sub, "--jobs", a->jobs, 0, 64, "steps run at the same time, in [0, 64] (default 0: one per core)");
   sub->add_option("--only", a->only, "run only these steps, comma-separated ids from --list (default: every step)")
       ->delimiter(',')->type_name("ID,...");
   sub->add_flag("--list", a->list, "list the steps and exit");

@@ -23,7 +23,7 @@ const std::map<std::string, std::vector<std::string>>& base_commands() {
   static const std::map<std::string, std::vector<std::string>> bases = {
       {"coeffs", {"--theta", "pi/2", "--branch", "optical", "--json"}},
       {"regime intervals", {"--samples", "64"}},
-      {"regime map", {"--out", "@OUT@", "--nx", "8", "--ny", "8", "--no-curves", "--no-png"}},
+      {"regime map", {"--out", "@OUT@", "--nx", "8", "--ny", "8", "--no-curves", "--no-figures"}},
       {"regime thresholds", {"--scan", "10"}},
       {"simulate bright",
        {"--branch", "optical", "--theta", "pi/2", "--sites", "101", "--periods", "1", "--sample-every", "0.25",
