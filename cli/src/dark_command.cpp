@@ -123,7 +123,7 @@ void add_common(CLI::App& sub, DarkArgs& a) {
               "odd number of lattice sites per field x, y (periodic ends; default 101)");
   sub.add_option("--mode", a.mode, "shooting: reversible (half/quarter period) | full (whole period, a check) (default reversible)")
       ->check(CLI::IsMember({"reversible", "full"}).description(""))
-      ->type_name("MODE");
+      ->type_name("reversible|full");
   sub.add_flag("--json", a.json_out, "print the JSON summary on one line (default: indented)");
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr (default: progress shown)");
   sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures (default: none, only the JSON on stdout)")
@@ -787,19 +787,19 @@ void register_dark(CLI::App& app) {
               "continuation in omega_b, Floquet stability");
   dark->require_subcommand(1);
   add_examples(*dark, {"lrchain dark continue --rho 1/3 --branch optical --omega-b 2.42 --points 12 --out out/dark",
-                       "lrchain dark solve --model models/klein_gordon.toml --set b=-1/2 --omega-b 1.17 --sites 61"});
+                       "lrchain dark solve --model klein_gordon --set b=-1/2 --omega-b 1.17 --sites 61"});
   auto args = std::make_shared<DarkArgs>();
   auto* solve_cmd = dark->add_subcommand("solve", "Newton solve from the eq:xy_app seed");
   add_common(*solve_cmd, *args);
   add_examples(*solve_cmd, {"lrchain dark solve --rho 1/3 --branch optical --center bond --omega-b 2.44 --out out/dark-solve",
-                            "lrchain dark solve --model models/klein_gordon.toml --set b=-1/2 --omega-b 1.17 --sites 61"});
+                            "lrchain dark solve --model klein_gordon --set b=-1/2 --omega-b 1.17 --sites 61"});
   solve_cmd->callback([args, solve_cmd] { dispatch(*args, DarkJob::solve, *solve_cmd); });
   auto* floq = dark->add_subcommand("floquet", "Solve, then the Floquet multipliers of the monodromy matrix (Sec. 5.4)");
   add_common(*floq, *args);
   floq->add_flag("--full-monodromy", args->full_monodromy,
                  "integrate the full period (check of the reversible reduction)");
   add_examples(*floq, {"lrchain dark floquet --rho 1/3 --center bond --omega-b 2.44 --sites 51",
-                       "lrchain dark floquet --model models/diatomic_chain.toml --omega-b 1.33 --sites 41"});
+                       "lrchain dark floquet --model diatomic_chain --omega-b 1.33 --sites 41"});
   floq->callback([args, floq] { dispatch(*args, DarkJob::floquet, *floq); });
   auto* cont = dark->add_subcommand(
       "continue", "Pseudo-arclength continuation in omega_b through turning points, Floquet at every point");

@@ -838,7 +838,7 @@ void register_regime(CLI::App& app) {
       ->expected(2)
       ->type_name("NUM");
   th->add_option("--branch", ta->branch, "with --model: a branch name (default: every branch)")->type_name("NAME");
-  add_examples(*th, {"lrchain regime thresholds", "lrchain regime thresholds --model models/fput.toml --axis b --axis-range 0.1 2"});
+  add_examples(*th, {"lrchain regime thresholds", "lrchain regime thresholds --model fput --axis b --axis-range 0.1 2"});
   th->callback([ta, th] {
     if (ta->model.file.empty()) {
       if (!ta->model.set.empty() || !ta->axis.empty() || !ta->axis_range.empty() || !ta->branch.empty())

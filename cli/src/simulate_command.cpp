@@ -337,7 +337,7 @@ void register_simulate(CLI::App& app) {
     register_simulate_ring(*sim_cmd, {out, compact, figures});
     CLI::App& ring = *sim_cmd->get_subcommand("ring");
     add_output_options(ring, outputs, false, subcommand_out);
-    add_examples(ring, {"lrchain simulate ring --model models/fput.toml --branch acoustic --theta pi/2 --out out/ring-fput"});
+    add_examples(ring, {"lrchain simulate ring --model fput --branch acoustic --theta pi/2 --out out/ring-fput"});
   }
   add_examples(*sim_cmd, {"lrchain simulate --config examples/exp1_optical_pi2.toml --out out/exp1",
                           "lrchain simulate --config examples/models/fput_bright.toml --out out/fput"});

@@ -63,7 +63,7 @@ TEST_CASE("a misspelled option is named with the closest option, before any 'is 
   check_refused("coeffs --xyzzy 1", "lrchain coeffs: unknown option --xyzzy (see lrchain coeffs --help)");
 }
 
-TEST_CASE("a misspelled subcommand is named with the closest subcommand; a stray value is named") {
+TEST_CASE("a misspelled subcommand is named with the closest subcommand, and a stray value is named") {
   check_refused("simulat bright", "lrchain: unknown subcommand 'simulat'; did you mean simulate?");
   check_refused("dark sovle", "lrchain dark: unknown subcommand 'sovle'; did you mean solve?");
   check_refused("regime xyz", "lrchain regime: unknown subcommand 'xyz'; give one of: intervals, map, thresholds "
@@ -128,7 +128,7 @@ TEST_CASE("coeffs --table --json holds every branch's rows, the same numbers as 
   CHECK(row["regime"] == c["regime"]);
 }
 
-TEST_CASE("list and integer options take every number syntax; an overflow guard is not shown as a bound") {
+TEST_CASE("list and integer options take every number syntax, and an overflow guard is not shown as a bound") {
   // pi reaches the run's check as 3.14159...: outside a 3-period run, so refused naming the value.
   check_refused("simulate bright --branch optical --theta pi/2 --sites 21 --periods 3 --snapshots 0 pi",
                 "snapshot time 3.141592653589793 T_b", false);
@@ -158,4 +158,23 @@ TEST_CASE("every dark subcommand's help ends with its examples and the exit code
     CHECK(commands >= 1);
     CHECK((after.rfind("Examples:", 0) == 0) == (commands > 1));
   }
+}
+
+TEST_CASE("--model NAME is a shipped model by its name, and an unknown name lists the shipped models") {
+  // Expected: the same model given as its file in the source tree (this lrchain runs from its build
+  // tree, so NAME resolves to that file).
+  const auto by_name = run_lrchain(words("coeffs --model klein_gordon --branch branch0 --theta pi/2 --json"));
+  const auto by_file = run_lrchain({"coeffs", "--model", LRCHAIN_SOURCE_DIR "/models/klein_gordon.toml", "--branch",
+                                    "branch0", "--theta", "pi/2", "--json"});
+  REQUIRE(by_name.exit_code == 0);
+  REQUIRE(by_file.exit_code == 0);
+  const auto a = nlohmann::json::parse(by_name.out), b = nlohmann::json::parse(by_file.out);
+  CHECK(a["model"]["name"] == "klein_gordon");
+  CHECK(a["omega"].get<double>() == b["omega"].get<double>());
+  CHECK(a["h"].get<double>() == b["h"].get<double>());
+  check_refused("coeffs --model klein_gordn --branch branch0 --theta pi/2",
+                "lrchain: --model klein_gordn: no such file or shipped model; the shipped models are ", false);
+  const auto r = run_lrchain(words("coeffs --model klein_gordn --branch branch0 --theta pi/2"));
+  for (const char* name : {"diatomic_chain", "fput", "klein_gordon", "resonant_chain"})
+    CHECK(r.err.find(name) != std::string::npos);
 }
