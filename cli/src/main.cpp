@@ -41,7 +41,9 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);
     // A misspelled option or subcommand is named first: CLI11 checks required options before it
     // complains about words it did not take, and the "missing" option is usually the misspelled one.
-    if (const std::string unknown = lrchain::cli::unknown_argument_message(app); !unknown.empty()) {
+    // (Not when an option got too few values: CLI11 names that option, e.g. --rho-range 0.1 -inf.)
+    const std::string unknown = e.get_name() == "ArgumentMismatch" ? "" : lrchain::cli::unknown_argument_message(app);
+    if (!unknown.empty()) {
       std::fprintf(stderr, "%s\n", unknown.c_str());
       return lrchain::exit_code::invalid_input;
     }

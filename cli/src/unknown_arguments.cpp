@@ -1,6 +1,7 @@
 #include "unknown_arguments.hpp"
 
 #include <cctype>
+#include <cstdlib>
 #include <vector>
 
 #include "lrchain/config/strict_toml.hpp"
@@ -9,10 +10,15 @@ namespace lrchain::cli {
 
 namespace {
 
-// "-x", "--name", "--name=value" (not "-1", a negative number given where no value was expected).
+// "-x", "--name", "--name=value"; not a negative number such as "-1", "-inf" or "-pi/2" (a value
+// given where none was expected).
 bool is_option_word(const std::string& word) {
-  return word.size() > 1 && word[0] == '-' &&
-         (word[1] == '-' || std::isalpha(static_cast<unsigned char>(word[1])) != 0);
+  if (word.size() < 2 || word[0] != '-') return false;
+  if (word[1] == '-') return true;
+  char* end = nullptr;
+  std::strtod(word.c_str(), &end);
+  const bool number = end != word.c_str() || word.rfind("-pi", 0) == 0;
+  return !number && std::isalpha(static_cast<unsigned char>(word[1])) != 0;
 }
 
 // The option names (without dashes) `cmd` accepts: its own and, through fallthrough, its parents'.
