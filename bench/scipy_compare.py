@@ -3,7 +3,7 @@
 breather, theta = pi/2, N = 500, 200 T_b) between lrchain and SciPy, start to finish, each process
 timed from spawn to exit (median of REPEATS runs, interleaved):
   * lrchain simulate --config examples/exp1_optical_pi2.toml --no-figures
-  * lrchain simulate --no-figures bright --branch optical --theta pi/2 (default options: automatic srkn11b step)
+  * lrchain simulate --no-figures --out DIR bright --branch optical --theta pi/2 (default options: automatic srkn11b step)
   * /usr/bin/python3 bench/scipy_exp1.py: solve_ivp DOP853 at rtol 1e-10, E_x/E_y at every T_b/4
 The ansatz constants of the SciPy run come from lrchain's summary JSON (not timed). Prints a JSON
 report with the load average before and after each run. Run from the source directory:

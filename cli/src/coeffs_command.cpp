@@ -92,41 +92,73 @@ void print_model_text(const NlsCoefficients& c, const Model& m, std::size_t bran
   fmt::print("  {:<15} {}\n", "regime", to_string(c.regime));
 }
 
-// The table of every branch of a model at the wavenumbers of print_table.
-void print_model_table(const Model& m) {
-  const auto& d = m.definition();
-  fmt::print("NLS coefficients of model {}\n", d.name);
-  const std::vector<std::pair<const char*, double>> thetas = {
-      {"pi/8", std::numbers::pi / 8}, {"pi/4", std::numbers::pi / 4},      {"pi/2", std::numbers::pi / 2},
+// The wavenumbers of the --table rows, with their labels.
+const std::vector<std::pair<const char*, double>>& table_thetas() {
+  static const std::vector<std::pair<const char*, double>> thetas = {
+      {"pi/8", std::numbers::pi / 8},      {"pi/4", std::numbers::pi / 4},      {"pi/2", std::numbers::pi / 2},
       {"3pi/5", 3 * std::numbers::pi / 5}, {"3pi/4", 3 * std::numbers::pi / 4}, {"pi", std::numbers::pi}};
+  return thetas;
+}
+
+// One branch of the --table output: its coefficients at table_thetas().
+struct TableBranch {
+  std::string name;
+  bool mean_flow = true;  // false: on-site model, no lambda
+  std::vector<NlsCoefficients> rows;
+};
+
+// The table of the resonant chain at `p`: optical, then acoustic (the specialised evaluators).
+std::vector<TableBranch> resonant_chain_table(const Params& p) {
+  std::vector<TableBranch> table;
+  for (Branch b : {Branch::optical, Branch::acoustic}) {
+    table.push_back({std::string(to_string(b)), true, {}});
+    for (const auto& [label, theta] : table_thetas()) table.back().rows.push_back(coefficients(p, b, theta));
+  }
+  return table;
+}
+
+// The table of every branch of a model, the highest first.
+std::vector<TableBranch> model_table(const Model& m) {
+  const auto& d = m.definition();
+  std::vector<TableBranch> table;
   for (std::size_t b = d.branch_names.size(); b-- > 0;) {
-    fmt::print("\n{} branch\n{:>7} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}  {}\n", d.branch_names[b], "theta",
+    table.push_back({d.branch_names[b], d.mean_flow, {}});
+    for (const auto& [label, theta] : table_thetas()) table.back().rows.push_back(coefficients(m, b, theta));
+  }
+  return table;
+}
+
+// --table as text: `title`, then per branch one aligned row per wavenumber.
+void print_table(const std::string& title, const std::vector<TableBranch>& table) {
+  fmt::print("{}\n", title);
+  for (const TableBranch& branch : table) {
+    fmt::print("\n{} branch\n{:>7} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}  {}\n", branch.name, "theta",
                "omega", "c", "omega''", "beta", "h", "lambda", "h_tilde", "regime");
-    for (const auto& [label, theta] : thetas) {
-      const NlsCoefficients c = coefficients(m, b, theta);
-      fmt::print("{:>7}{}{}{}{}{}{}{}  {}\n", label, cell(c.omega), cell(c.group_velocity), cell(c.curvature),
-                 cell(c.beta), cell(c.h), d.mean_flow ? cell(c.lambda) : fmt::format(" {:>12}", "none"), cell(c.h_tilde),
-                 to_string(c.regime));
+    for (std::size_t i = 0; i < branch.rows.size(); ++i) {
+      const NlsCoefficients& c = branch.rows[i];
+      fmt::print("{:>7}{}{}{}{}{}{}{}  {}\n", table_thetas()[i].first, cell(c.omega), cell(c.group_velocity),
+                 cell(c.curvature), cell(c.beta), cell(c.h), branch.mean_flow ? cell(c.lambda) : fmt::format(" {:>12}", "none"),
+                 cell(c.h_tilde), to_string(c.regime));
     }
   }
 }
 
-// The main job's table: both branches at theta = pi/8, pi/4, pi/2, 3pi/5, 3pi/4, pi.
-void print_table(const Params& p) {
-  fmt::print("NLS coefficients, alpha={:g}, delta0={:.6g}, kappa={:g}, rho={:.6g} (derived by lrchain-derive)\n",
-             p.alpha, p.delta0, p.kappa, p.rho);
-  const std::vector<std::pair<const char*, double>> thetas = {
-      {"pi/8", std::numbers::pi / 8}, {"pi/4", std::numbers::pi / 4},      {"pi/2", std::numbers::pi / 2},
-      {"3pi/5", 3 * std::numbers::pi / 5}, {"3pi/4", 3 * std::numbers::pi / 4}, {"pi", std::numbers::pi}};
-  for (Branch b : {Branch::optical, Branch::acoustic}) {
-    fmt::print("\n{} branch\n{:>7} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}  {}\n", to_string(b), "theta",
-               "omega", "c", "omega''", "beta", "h", "lambda", "h_tilde", "regime");
-    for (const auto& [label, theta] : thetas) {
-      const NlsCoefficients c = coefficients(p, b, theta);
-      fmt::print("{:>7}{}{}{}{}{}{}{}  {}\n", label, cell(c.omega), cell(c.group_velocity), cell(c.curvature),
-                 cell(c.beta), cell(c.h), cell(c.lambda), cell(c.h_tilde), to_string(c.regime));
+// --table --json: {"model", "branches": [{"branch", "rows": [coefficients with "theta_label"]}], "provenance"}
+// on one line; lambda is null for an on-site model.
+void print_table_json(const Model& model, const std::vector<TableBranch>& table) {
+  nlohmann::json branches = nlohmann::json::array();
+  for (const TableBranch& branch : table) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (std::size_t i = 0; i < branch.rows.size(); ++i) {
+      nlohmann::json row = to_json(branch.rows[i]);
+      row["theta_label"] = table_thetas()[i].first;
+      if (!branch.mean_flow) row["lambda"] = nullptr;
+      rows.push_back(row);
     }
+    branches.push_back({{"branch", branch.name}, {"rows", rows}});
   }
+  const nlohmann::json j{{"model", model_json(model)}, {"branches", branches}, {"provenance", provenance_json()}};
+  std::printf("%s\n", j.dump().c_str());
 }
 
 }  // namespace
@@ -147,24 +179,31 @@ void register_coeffs(CLI::App& app) {
       ->type_name("NAME");
   cmd->add_flag("--json", opts->json,
                 "print one JSON object on one line instead of the text: theta, branch, the coefficients (singular "
-                "ones as null), the model with its parameter values, provenance");
+                "ones as null), the model with its parameter values, provenance; with --table every branch's rows");
   cmd->add_flag("--table", opts->table, "print the table of every branch at theta = pi/8 ... pi instead");
   add_examples(*cmd, {"lrchain coeffs --branch optical --theta pi/2 --rho 1/3",
                       "lrchain coeffs --branch acoustic --theta 3*pi/5 --rho 1 --json",
-                      "lrchain coeffs --table --rho 10"});
+                      "lrchain coeffs --table --rho 10", "lrchain coeffs --table --json"});
   cmd->callback([opts, cmd] {
+    if (opts->table)  // the table has its own wavenumbers and every branch
+      for (const char* name : {"--theta", "--branch"})
+        if (cmd->count(name) > 0)
+          throw InputError(std::string(name) + " is not used with --table (it lists every branch at theta = pi/8 ... pi)");
     if (opts->model.file.empty()) validate(opts->params);  // the resonant chain's own messages
     const Model model = load_selected_model(opts->model, *cmd, opts->params);
     const bool resonant_chain = model.name() == "resonant_chain";
     if (resonant_chain)  // the specialised evaluators (and the paper's text) for the resonant chain
       opts->params = Params{model.parameter("alpha"), model.parameter("delta0"), model.parameter("kappa"), model.parameter("rho")};
     if (opts->table) {
-      if (resonant_chain) {
-        validate(opts->params);
-        print_table(opts->params);
-      } else {
-        print_model_table(model);
-      }
+      if (resonant_chain) validate(opts->params);
+      const std::vector<TableBranch> table = resonant_chain ? resonant_chain_table(opts->params) : model_table(model);
+      if (opts->json) print_table_json(model, table);
+      else if (resonant_chain)
+        print_table(fmt::format("NLS coefficients, alpha={:g}, delta0={:.6g}, kappa={:g}, rho={:.6g} (derived by "
+                                "lrchain-derive)", opts->params.alpha, opts->params.delta0, opts->params.kappa,
+                                opts->params.rho), table);
+      else
+        print_table("NLS coefficients of model " + model.name(), table);
       return;
     }
     if (std::isnan(opts->theta)) throw InvalidParameter("theta", "is required: a wavenumber in (-pi, pi]");

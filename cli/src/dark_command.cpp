@@ -121,15 +121,18 @@ void add_common(CLI::App& sub, DarkArgs& a) {
   add_model_file_options(sub, a.model);
   sub.get_option("--set")->description("model parameter, repeatable: --set w0=2 --set b=-1/2 (default: the model "
                                        "file's defaults; with --model only)");
-  sub.add_option("--center", a.center, "family: bond (n0 = 1/2) | site (n0 = 0) (default bond)")->check(CLI::IsMember({"bond", "site"}));
+  sub.add_option("--center", a.center, "family: bond (n0 = 1/2) | site (n0 = 0) (default bond)")
+      ->check(CLI::IsMember({"bond", "site"}).description(""))
+      ->type_name("bond|site");
   add_integer(sub, "--sites", a.sites, 9, std::numeric_limits<int>::max(),
               "odd number of lattice sites per field x, y (periodic ends; default 101)");
   sub.add_option("--mode", a.mode, "shooting: reversible (half/quarter period) | full (whole period, a check) (default reversible)")
       ->check(CLI::IsMember({"reversible", "full"}).description(""))
-      ->type_name("MODE");
+      ->type_name("reversible|full");
   sub.add_flag("--json", a.json_out, "print the JSON summary on one line (default: indented)");
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr (default: progress shown)");
-  sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures (default: none, only the JSON on stdout)");
+  sub.add_option("--out", a.out, "output directory for CSV data and gnuplot figures (default: none, only the JSON on stdout)")
+      ->type_name("DIR");
   add_max_memory(sub, a.max_memory);
   add_figure_format(sub);
 }
@@ -764,6 +767,7 @@ void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
 
 // The resonant chain through Params, or (--model) any model file.
 void dispatch(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
+  refuse_without_out(cmd, a.out, {"--format", "--figure-format"});
   if (a.model.file.empty()) {
     if (!a.model.set.empty()) throw InputError("--set takes the parameters of a --model FILE; give --model");
     if (job == DarkJob::branch) run_continue(a);
@@ -784,19 +788,19 @@ void register_dark(CLI::App& app) {
               "continuation in omega_b, Floquet stability");
   dark->require_subcommand(1);
   add_examples(*dark, {"lrchain dark continue --rho 1/3 --branch optical --omega-b 2.42 --points 12 --out out/dark",
-                       "lrchain dark solve --model models/klein_gordon.toml --set b=-1/2 --omega-b 1.17 --sites 61"});
+                       "lrchain dark solve --model klein_gordon --set b=-1/2 --omega-b 1.17 --sites 61"});
   auto args = std::make_shared<DarkArgs>();
   auto* solve_cmd = dark->add_subcommand("solve", "Newton solve from the eq:xy_app seed");
   add_common(*solve_cmd, *args);
-  solve_cmd->footer("Example:\n  lrchain dark solve --rho 1/3 --branch optical --center bond --omega-b 2.44 --out out/dark-solve\n"
-                    "  lrchain dark solve --model models/klein_gordon.toml --set b=-1/2 --omega-b 1.17 --sites 61");
+  add_examples(*solve_cmd, {"lrchain dark solve --rho 1/3 --branch optical --center bond --omega-b 2.44 --out out/dark-solve",
+                            "lrchain dark solve --model klein_gordon --set b=-1/2 --omega-b 1.17 --sites 61"});
   solve_cmd->callback([args, solve_cmd] { dispatch(*args, DarkJob::solve, *solve_cmd); });
   auto* floq = dark->add_subcommand("floquet", "Solve, then the Floquet multipliers of the monodromy matrix (Sec. 5.4)");
   add_common(*floq, *args);
   floq->add_flag("--full-monodromy", args->full_monodromy,
                  "integrate the full period (check of the reversible reduction)");
-  floq->footer("Example:\n  lrchain dark floquet --rho 1/3 --center bond --omega-b 2.44 --sites 51\n"
-               "  lrchain dark floquet --model models/diatomic_chain.toml --omega-b 1.33 --sites 41");
+  add_examples(*floq, {"lrchain dark floquet --rho 1/3 --center bond --omega-b 2.44 --sites 51",
+                       "lrchain dark floquet --model diatomic_chain --omega-b 1.33 --sites 41"});
   floq->callback([args, floq] { dispatch(*args, DarkJob::floquet, *floq); });
   auto* cont = dark->add_subcommand(
       "continue", "Pseudo-arclength continuation in omega_b through turning points, Floquet at every point");
@@ -805,7 +809,7 @@ void register_dark(CLI::App& app) {
   add_number(*cont, "--ds", args->ds, "initial pseudo-arclength step in (Z(0), omega_b), dimensionless, adapted between 1e-5 and 1 (default 0.1)");
   add_number(*cont, "--omega-min", args->omega_min, "stop when omega_b falls below this (dimensionless frequency; default 0)");
   add_number(*cont, "--omega-max", args->omega_max, "stop when omega_b rises above this (dimensionless frequency, at most twice the top of the optical band; default: the band edge omega(pi))");
-  cont->footer("Example:\n  lrchain dark continue --rho 1/3 --branch optical --center bond --omega-b 2.44 --points 10 --out out/dark");
+  add_examples(*cont, {"lrchain dark continue --rho 1/3 --branch optical --center bond --omega-b 2.44 --points 10 --out out/dark"});
   cont->callback([args, cont] { dispatch(*args, DarkJob::branch, *cont); });
   auto* evo = dark->add_subcommand(
       "evolve", "Solve, then integrate eq:Hertzd0S from the solution: space-time x_n, y_n, E_b(t), breather position (Figs. 21, 22, 25)");
@@ -813,13 +817,14 @@ void register_dark(CLI::App& app) {
   add_number(*evo, "--t-end", args->t_end, "integration time (dimensionless, time unit of Sec. 2), at least one period T_b (required)")->required();
   add_integer(*evo, "--samples", args->samples, 4, 1'000'000,
               "samples of x_n(t) per period for the amplitudes of the position measure (default 24, >= 4)");
-  evo->footer("Example:\n  lrchain dark evolve --rho 1/3 --center bond --omega-b 2.44 --t-end 500 --out out/dark-evolve");
+  add_examples(*evo, {"lrchain dark evolve --rho 1/3 --center bond --omega-b 2.44 --t-end 500 --out out/dark-evolve"});
   evo->callback([args, evo] { dispatch(*args, DarkJob::evolve, *evo); });
   for (auto* sub : {solve_cmd, floq, cont})
     sub->add_option("--format", args->format,
                     "data files in --out: csv (CSV and figures; default) or hdf5 (also result.h5: profiles or the "
                     "branch, Floquet multipliers as complex numbers; not with --model)")
-        ->check(CLI::IsMember({"csv", "hdf5"}));
+        ->check(CLI::IsMember({"csv", "hdf5"}).description(""))
+        ->type_name("csv|hdf5");
 }
 
 }  // namespace lrchain::cli

@@ -14,6 +14,7 @@
 #include "help_text.hpp"
 #include "lrchain/derivation/model_derivation.hpp"
 #include "lrchain/errors.hpp"
+#include "shipped_data.hpp"
 
 namespace lrchain::cli {
 
@@ -91,13 +92,17 @@ void register_derive(CLI::App& app) {
       "Derive the NLS coefficients of a lattice model file (docs/models.md): the case (mean flow or on-site),\n"
       "the branches, c, gamma, omega'', beta, h, lambda, h_tilde in symbolic form, and the check report.\n"
       "Exit 1 when a check fails, 2 for a bad model file or parameter value.");
-  cmd->add_option("--model", opts->model, "model file (TOML), e.g. models/klein_gordon.toml")->required()->type_name("FILE");
+  cmd->add_option_function<std::string>(
+         "--model", [opts](const std::string& text) { opts->model = resolve_model_argument(text); },
+         "model file (TOML), or the name of a shipped model, e.g. klein_gordon")
+      ->required()
+      ->type_name("FILE");
   cmd->add_option("--set", opts->set, "parameter value, repeatable: --set rho=1/3 --set kappa=2 (default: the model file's "
                   "defaults)")->type_name("NAME=VALUE");
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the text report (default: text)");
   cmd->add_flag("--latex", opts->latex, "write expressions in LaTeX (default: plain text)");
-  add_examples(*cmd, {"lrchain derive --model models/klein_gordon.toml",
-                      "lrchain derive --model models/fput.toml --set a=1/4 --set b=1/2 --json"});
+  add_examples(*cmd, {"lrchain derive --model klein_gordon",
+                      "lrchain derive --model fput --set a=1/4 --set b=1/2 --json"});
   cmd->callback([opts] {
     const derivation::Symbols symbols;
     derivation::ModelFile file = derivation::load_model_file(opts->model);

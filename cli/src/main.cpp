@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "help_text.hpp"
+#include "unknown_arguments.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/exit_codes.hpp"
 #include "lrchain/provenance.hpp"
@@ -38,12 +39,22 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help exits 0; usage errors exit 2 with CLI11's one-line message.
     if (e.get_exit_code() == 0) return app.exit(e);
+    // A misspelled option or subcommand is named first: CLI11 checks required options before it
+    // complains about words it did not take, and the "missing" option is usually the misspelled one.
+    // (Not when an option got too few values: CLI11 names that option, e.g. --rho-range 0.1 -inf.)
+    const std::string unknown = e.get_name() == "ArgumentMismatch" ? "" : lrchain::cli::unknown_argument_message(app);
+    if (!unknown.empty()) {
+      std::fprintf(stderr, "%s\n", unknown.c_str());
+      return lrchain::exit_code::invalid_input;
+    }
     // A command that needs a subcommand names the ones it has.
     const std::string missing = e.get_name() == "RequiredError" ? lrchain::cli::missing_subcommand_message(app) : "";
     std::fprintf(stderr, "%s\n", missing.empty() ? ("lrchain: " + std::string(e.what())).c_str() : missing.c_str());
     return lrchain::exit_code::invalid_input;
   } catch (const lrchain::InputError& e) {
-    std::fprintf(stderr, "lrchain: %s\n", e.what());
+    // (an option's value is checked while the command line is read: a misspelled word wins here too)
+    const std::string unknown = lrchain::cli::unknown_argument_message(app);
+    std::fprintf(stderr, "%s\n", unknown.empty() ? ("lrchain: " + std::string(e.what())).c_str() : unknown.c_str());
     return lrchain::exit_code::invalid_input;
   } catch (const lrchain::NumericalFailure& e) {
     std::fprintf(stderr, "lrchain: numerical failure: %s\n", e.what());

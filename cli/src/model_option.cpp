@@ -8,6 +8,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/numeric_parse.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
+#include "shipped_data.hpp"
 #ifdef LRCHAIN_WITH_MODEL_COMPILER
 #include "lrchain/model_compiler.hpp"
 #endif
@@ -32,8 +33,10 @@ std::vector<std::pair<std::string, double>> set_values(const std::vector<std::st
 }  // namespace
 
 void add_model_file_options(CLI::App& cmd, ModelSelection& selection) {
-  cmd.add_option("--model", selection.file,
-                 "lattice model file (docs/models.md), e.g. models/klein_gordon.toml (default: the resonant chain)")
+  cmd.add_option_function<std::string>(
+         "--model", [&selection](const std::string& text) { selection.file = resolve_model_argument(text); },
+         "lattice model: a model file (docs/models.md), or the name of a shipped model, e.g. klein_gordon or "
+         "fput (default: the resonant chain)")
       ->type_name("FILE");
   cmd.add_option("--set", selection.set, "model parameter, repeatable: --set w0=2 --set b=1/3 (default: the model file's defaults)")->type_name("NAME=VALUE");
 }

@@ -5,10 +5,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "lrchain/checked_number.hpp"
+#include "lrchain/errors.hpp"
 #include "lrchain/numeric_parse.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
@@ -26,17 +29,41 @@ inline CLI::Option* add_number(CLI::App& app, const std::string& name, double& t
   return opt;
 }
 
-// Adds --name taking an integer in [min, max] into `target`; integral values written as numbers,
-// e.g. 1e3, are accepted (lrchain::checked_integer), fractions, NaN, inf and overflow are not.
+// Adds --name taking one or more numbers, each parsed like add_number, into `target` (replacing
+// its default), e.g. --snapshots 0 pi 2e3.
+inline CLI::Option* add_number_list(CLI::App& app, const std::string& name, std::vector<double>& target,
+                                    const std::string& description) {
+  const std::string param = name.substr(name.find_first_not_of('-'));
+  auto* opt = app.add_option_function<std::vector<std::string>>(
+      name,
+      [&target, param](const std::vector<std::string>& texts) {
+        target.clear();
+        for (const auto& text : texts) target.push_back(parse_number(text, param));
+      },
+      description);
+  opt->type_name("NUM");
+  return opt;
+}
+
+// The integer written in `text` (any number syntax: 1e3, 2*500) for --param in [min, max]
+// (lrchain::checked_integer). Where `max` only guards against overflow (at least 2^31 - 1) a
+// refusal states the lower bound alone: "must be an integer >= 5".
+inline std::int64_t option_integer(const std::string& text, const std::string& param, std::int64_t min,
+                                   std::int64_t max) {
+  const double v = parse_number(text, param);
+  if (max >= std::numeric_limits<std::int32_t>::max() && !(std::isfinite(v) && v == std::floor(v) && v >= double(min)))
+    throw InvalidParameter(param, "must be an integer >= " + std::to_string(min));
+  return checked_integer(v, param, min, max);
+}
+
+// Adds --name taking an integer in [min, max] into `target` (option_integer): integral values
+// written as numbers, e.g. 1e3, are accepted, fractions, NaN, inf and overflow are not.
 template <class Int>
 CLI::Option* add_integer(CLI::App& app, const std::string& name, Int& target, std::int64_t min,
                          std::int64_t max, const std::string& description) {
   const std::string param = name.substr(name.find_first_not_of('-'));
   auto* opt = app.add_option_function<std::string>(
-      name,
-      [&target, param, min, max](const std::string& text) {
-        target = static_cast<Int>(checked_integer(parse_number(text, param), param, min, max));
-      },
+      name, [&target, param, min, max](const std::string& text) { target = static_cast<Int>(option_integer(text, param, min, max)); },
       description);
   opt->type_name("INT");
   return opt;
@@ -51,6 +78,24 @@ inline CLI::Option* add_max_memory(CLI::App& app, double& bytes) {
       "this machine has available)");
   opt->type_name("SIZE");
   return opt;
+}
+
+// The option --name as given to `cmd` or, before the subcommand, to a command above it (`simulate
+// --out DIR bright` and `simulate bright --out DIR` are the same run); nullptr when not given.
+inline const CLI::Option* given_option(const CLI::App& cmd, const std::string& name) {
+  for (const CLI::App* at = &cmd; at != nullptr; at = at->get_parent())
+    if (const CLI::Option* option = at->get_option_no_throw(name); option != nullptr && option->count() > 0)
+      return option;
+  return nullptr;
+}
+
+// Refuses (exit 2) the options among `names` that only shape the files written to --out when the
+// run writes no files (`out` empty): given alone they would do nothing.
+inline void refuse_without_out(const CLI::App& cmd, const std::string& out, std::initializer_list<const char*> names) {
+  if (!out.empty()) return;
+  for (const char* name : names)
+    if (given_option(cmd, name) != nullptr)
+      throw InputError(std::string(name) + " needs --out DIR: it only changes the files written there");
 }
 
 // A default value as the help shows it: the paper's fractions as fractions, else %g.

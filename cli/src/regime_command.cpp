@@ -199,7 +199,7 @@ struct MapArgs {
   double max_memory = 0;  // bytes (--max-memory); 0: the machine's available memory
   bool delta0_log = false;
   bool no_curves = false;
-  bool no_png = false;
+  bool no_figures = false;
 };
 
 std::vector<Branch> branches_of(const std::string& text) {
@@ -305,7 +305,7 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir, sim::Figures& figures)
   write_file(dir, "regime_theta-rho.gp", gp.str());
   files.push_back("regime_theta-rho.gp");
   json out = {{"plane", "theta-rho"}, {"params", params_json(a.p)}, {"panels", panels}};
-  if (!a.no_png) {
+  if (!a.no_figures) {
     const bool ok = figures.draw_written("regime_theta-rho.gp", "regime_theta-rho.png");
     if (ok) files.push_back(sim::figure_file_name("regime_theta-rho.png"));
     out["png"] = ok;
@@ -434,7 +434,7 @@ json map_delta0_omega(const MapArgs& a, const fs::path& dir, sim::Figures& figur
               {"map_seconds", map_s},
               {"focusing_band_count", transitions},
               {"boundary_polylines", curves_info}};
-  if (!a.no_png) {
+  if (!a.no_figures) {
     const bool ok = figures.draw_written("regime_" + tag + ".gp", "regime_" + tag + ".png");
     if (ok) files.push_back(sim::figure_file_name("regime_" + tag + ".png"));
     out["png"] = ok;
@@ -548,7 +548,7 @@ json map_model(const MapArgs& a, const Model& m, const ModelMapPlan& plan, const
   write_file(dir, script, gp.str());
   files.push_back(script);
   json out = {{"plane", plane}, {"axis", plan.axis}, {"model", model_json(m)}, {"panels", panels}};
-  if (!a.no_png) {
+  if (!a.no_figures) {
     const bool ok = figures.draw_written(script, "regime_" + plane + ".png");
     if (ok) files.push_back("regime_" + plane + ".png");
     out["png"] = ok;
@@ -573,6 +573,12 @@ void validate_map(const MapArgs& a) {
   if (a.plane != "theta-rho" && a.plane != "delta0-omega")
     throw InvalidParameter("plane", "must be 'theta-rho' or 'delta0-omega', got '" + a.plane + "'");
   const auto branches = branches_of(a.branch);
+  // The options of the other plane would do nothing.
+  if (a.plane == "theta-rho" && (!a.delta0_range.empty() || !a.omega_range.empty() || a.delta0_log))
+    throw InputError(std::string(!a.delta0_range.empty() ? "--delta0-range" : !a.omega_range.empty() ? "--omega-range" : "--delta0-log") +
+                     " belongs to --plane delta0-omega; the theta-rho plane takes --rho-range");
+  if (a.plane == "delta0-omega" && !a.rho_range.empty())
+    throw InputError("--rho-range belongs to --plane theta-rho; the delta0-omega plane takes --delta0-range and --omega-range");
   if (a.plane == "theta-rho") {
     for (const double r : range_or(a.rho_range, {0.01, 30.0}, "rho-range")) {
       check_in_range(r, rho_range, "rho-range");  // each end inside rho's range (lrchain/params.hpp)
@@ -613,8 +619,9 @@ void run_model_map(const MapArgs& a, const Model& m) {
     throw InvalidParameter("plane", "with --model: 'theta-parameter' (the default; choose the parameter with --axis)" +
                                         std::string(m.name() == "resonant_chain" ? " or 'delta0-omega'" : "") +
                                         ", got '" + a.plane + "'");
-  if (!a.rho_range.empty() || !a.delta0_range.empty() || !a.omega_range.empty())
-    throw InvalidParameter("axis-range", "with --model the range of the x axis is --axis-range lo hi");
+  if (!a.rho_range.empty() || !a.delta0_range.empty() || !a.omega_range.empty() || a.delta0_log)
+    throw InvalidParameter("axis-range", "with --model the range of the x axis is --axis-range lo hi (no --rho-range, "
+                                         "--delta0-range, --omega-range, --delta0-log)");
   const ModelMapPlan plan = plan_model_map(a, m);
   validate_map_output(a, double(plan.branches.size()));
   const fs::path dir(a.out);
@@ -755,7 +762,8 @@ void register_regime(CLI::App& app) {
   add_model_file_options(*in, ia->model);
   in->add_option("--branch", ia->branch,
                  "optical or acoustic (default optical); with --model: the model's branch names (default optical, or "
-                 "its only branch)");
+                 "its only branch)")
+      ->type_name("NAME");
   add_integer(*in, "--samples", ia->samples, 8, 10'000'000,
               "theta samples used to bracket the zeros (default 2048)");
   in->add_flag("--json", ia->json_flag, "print the JSON on one line (default: indented)");
@@ -781,24 +789,31 @@ void register_regime(CLI::App& app) {
       ->type_name("NAME");
   mp->add_option("--axis-range", ma->axis_range,
                  "with --model: lo hi of the --axis parameter (default: its declared range when bounded)")
-      ->expected(2);
-  mp->add_option("--plane", ma->plane, "theta-rho (default) or delta0-omega");
+      ->expected(2)
+      ->type_name("NUM");
+  mp->add_option("--plane", ma->plane, "theta-rho (default) or delta0-omega")->type_name("NAME");
   mp->add_option("--branch", ma->branch,
-                 "optical, acoustic or both (default both; theta-rho only); with --model: a branch name or both/all");
+                 "optical, acoustic or both (default both); with --model: a branch name or both/all")
+      ->type_name("NAME");
   mp->add_option("--out", ma->out, "output directory (created)")->required()->type_name("DIR");
   mp->add_option("--rho-range", ma->rho_range,
-                 "theta-rho: rho lo hi (default 0.01 30 for optical or both, 0.01 2.5 for acoustic)")->expected(2);
-  mp->add_option("--delta0-range", ma->delta0_range, "delta0-omega: delta0 lo hi (default 0.001 1)")->expected(2);
+                 "theta-rho: rho lo hi (default 0.01 30 for optical or both, 0.01 2.5 for acoustic)")
+      ->expected(2)
+      ->type_name("NUM");
+  mp->add_option("--delta0-range", ma->delta0_range, "delta0-omega: delta0 lo hi (default 0.001 1)")
+      ->expected(2)
+      ->type_name("NUM");
   mp->add_option("--omega-range", ma->omega_range,
                  "delta0-omega: omega lo hi, each in [0, twice the top of the optical band] (default: the band over the delta0 range)")
-      ->expected(2);
-  mp->add_flag("--delta0-log", ma->delta0_log, "delta0-omega: logarithmic delta0 axis");
+      ->expected(2)
+      ->type_name("NUM");
+  mp->add_flag("--delta0-log", ma->delta0_log, "delta0-omega: logarithmic delta0 axis (default: linear)");
   add_integer(*mp, "--nx", ma->res_x, 2, 20000, "pixels along x (rho or delta0), default 600");
   add_integer(*mp, "--ny", ma->res_y, 2, 20000, "pixels along y (theta or omega), default 600");
   add_max_memory(*mp, ma->max_memory);
   add_figure_format(*mp);
   mp->add_flag("--no-curves", ma->no_curves, "skip tracing the boundary curves");
-  mp->add_flag("--no-png", ma->no_png, "write the .gp script but do not run gnuplot");
+  mp->add_flag("--no-figures", ma->no_figures, "write the data and .gp scripts but draw no figures (no gnuplot run; default: figures)");
   add_examples(*mp, {"lrchain regime map --plane theta-rho --branch both --out out/fig2",
                       "lrchain regime map --plane delta0-omega --branch optical --rho 3 --out out/fig4"});
   mp->callback([ma, mp] { run_map_command(*ma, *mp); });
@@ -820,9 +835,10 @@ void register_regime(CLI::App& app) {
   th->add_option("--axis", ta->axis, "with --model: the scanned parameter (default rho / the model's first)")
       ->type_name("NAME");
   th->add_option("--axis-range", ta->axis_range, "with --model: lo hi of the scan (default: its declared range when bounded)")
-      ->expected(2);
-  th->add_option("--branch", ta->branch, "with --model: a branch name (default: every branch)");
-  add_examples(*th, {"lrchain regime thresholds", "lrchain regime thresholds --model models/fput.toml --axis b --axis-range 0.1 2"});
+      ->expected(2)
+      ->type_name("NUM");
+  th->add_option("--branch", ta->branch, "with --model: a branch name (default: every branch)")->type_name("NAME");
+  add_examples(*th, {"lrchain regime thresholds", "lrchain regime thresholds --model fput --axis b --axis-range 0.1 2"});
   th->callback([ta, th] {
     if (ta->model.file.empty()) {
       if (!ta->model.set.empty() || !ta->axis.empty() || !ta->axis_range.empty() || !ta->branch.empty())

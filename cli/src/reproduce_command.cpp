@@ -15,6 +15,8 @@
 #include "commands.hpp"
 #include "figure_format_option.hpp"
 #include "help_text.hpp"
+#include "options.hpp"
+#include "shipped_data.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/figure_format.hpp"
@@ -40,8 +42,9 @@ struct ReproduceArgs {
   std::vector<std::string> only;
 };
 
-// First existing path among: the option, the source tree, <prefix>/share/lrchain/<rel>; a given
-// path must be a directory (`directory`) or a regular file (otherwise).
+// First existing path among: the option, <rel> in the shipped data (<prefix>/share/lrchain, or the
+// source tree of a build tree's lrchain); a given path must be a directory (`directory`) or a
+// regular file (otherwise).
 fs::path locate(const std::string& given, const std::string& rel, const std::string& option, bool directory) {
   if (!given.empty()) {
     if (!fs::exists(given)) throw InvalidParameter(option, "'" + given + "' does not exist");
@@ -51,17 +54,8 @@ fs::path locate(const std::string& given, const std::string& rel, const std::str
       throw InvalidParameter(option, "'" + given + "' is not a regular file");
     return fs::absolute(given);
   }
-  // Next to a build tree's lrchain, the file lrchain-source-tree names the source tree (written by
-  // cli/CMakeLists.txt, not installed); an installed lrchain uses <prefix>/share/lrchain.
-  const fs::path exe_dir = current_executable().parent_path();
-  std::vector<fs::path> candidates;
-  if (std::ifstream tree{exe_dir / "lrchain-source-tree"}; tree) {
-    std::string source_dir;
-    if (std::getline(tree, source_dir) && !source_dir.empty()) candidates.push_back(fs::path(source_dir) / rel);
-  }
-  candidates.push_back(exe_dir.parent_path() / "share/lrchain" / rel);
-  for (const fs::path& p : candidates)
-    if (fs::exists(p)) return p;
+  for (const fs::path& root : shipped_data_roots())  // shipped_data.hpp
+    if (fs::exists(root / rel)) return root / rel;
   throw InvalidParameter(option, "cannot find " + rel + " (give " + option + ")");
 }
 
@@ -268,14 +262,14 @@ void register_reproduce(CLI::App& app) {
   quick->excludes(full);
   sub->add_option("--out", a->out, "report directory (default lrchain-report; must be new, empty or an earlier report, which is replaced; "
                   "never the current directory or a parent of it)")->type_name("DIR");
-  sub->add_option("--jobs", a->jobs, "steps run at the same time (default 0: one per core)");
+  add_integer(*sub, "--jobs", a->jobs, 0, 64, "steps run at the same time, in [0, 64] (default 0: one per core)");
   sub->add_option("--only", a->only, "run only these steps, comma-separated ids from --list (default: every step)")
       ->delimiter(',')->type_name("ID,...");
   sub->add_flag("--list", a->list, "list the steps and exit");
-  sub->add_option("--examples", a->examples, "directory of the experiment configs (default: the source tree's examples/, "
-                  "else the installed share/lrchain/examples)")->type_name("DIR");
-  sub->add_option("--errata", a->errata, "docs/paper-errata.md to include (default: the source tree's, else the installed "
-                  "share/lrchain/docs/paper-errata.md)")->type_name("FILE");
+  sub->add_option("--examples", a->examples, "directory of the experiment configs (default: the installed share/lrchain/examples, "
+                  "or the source tree's examples/ for lrchain run from its build tree)")->type_name("DIR");
+  sub->add_option("--errata", a->errata, "docs/paper-errata.md to include (default: the installed share/lrchain/docs/paper-errata.md, "
+                  "or the source tree's for lrchain run from its build tree)")->type_name("FILE");
   add_figure_format(*sub);
   add_examples(*sub, {"lrchain reproduce --quick --out report", "lrchain reproduce --only exp1,dark_solutions --out report-part",
                       "lrchain reproduce --full --jobs 2 --out report-full"});

@@ -247,7 +247,7 @@ void add_strain_sites(CLI::App& app, long& half_width) {
   auto* opt = app.add_option_function<std::string>(
       "--sites",
       [&half_width](const std::string& text) {
-        const std::int64_t sites = checked_integer(parse_number(text, "sites"), "sites", 5, 2'000'000'000'000'001);
+        const std::int64_t sites = option_integer(text, "sites", 5, 2'000'000'000'000'001);
         if (sites % 2 == 0)
           throw InvalidParameter("sites", "must be odd: the strain sites are n = -N..N, 2N + 1 of them (got " +
                                               std::to_string(sites) + ")");
@@ -260,7 +260,7 @@ void add_strain_sites(CLI::App& app, long& half_width) {
 // --stepper, --abs-tol, --rel-tol, --dt; with o.automatic_dt the fixed-step steppers choose their
 // step themselves unless --dt is given (the callback clears automatic_dt then).
 void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::string& stepper) {
-  app.add_option("--stepper", stepper, "rkf78, dopri5, symplectic (McLachlan 4), srkn11b, srkn14a (Blanes-Moan 6) or ss17 (McLachlan 8); default " + stepper);
+  app.add_option("--stepper", stepper, "rkf78, dopri5, symplectic (McLachlan 4), srkn11b, srkn14a (Blanes-Moan 6) or ss17 (McLachlan 8); default " + stepper)->type_name("NAME");
   add_number(app, "--abs-tol", o.abs_tol, "absolute local error tolerance (default 1e-12)");
   add_number(app, "--rel-tol", o.rel_tol, "relative local error tolerance (default 1e-12)");
   add_number(app, "--dt", o.dt,
@@ -268,6 +268,45 @@ void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::strin
                  ? "largest step of the fixed-step steppers (default: chosen by a 2 T_b probe run so that the "
                    "relative energy error stays below 2e-10), or the initial step of the adaptive ones (default 0.05)"
                  : "initial step (adaptive) or fixed/maximal step (symplectic, srkn*), default 0.05");
+}
+
+// The storage of the options every `simulate` run shares; each command registers those it honours
+// (add_output_options), and `simulate` all of them, so they may come before or after the subcommand.
+struct SimulateOutputs {
+  std::shared_ptr<std::string> out = std::make_shared<std::string>();
+  std::shared_ptr<ReportStyle> style = std::make_shared<ReportStyle>();
+  std::shared_ptr<std::string> restart = std::make_shared<std::string>();
+  std::shared_ptr<std::string> checkpoint = std::make_shared<std::string>();
+  std::shared_ptr<double> max_memory = std::make_shared<double>(0.0);
+};
+
+constexpr const char* subcommand_out =
+    "output directory for data and figures (default: none, only the JSON summary is printed)";
+
+// Adds --out (described by `out_help`), --json, --no-figures, --figure-format to `cmd`; with
+// `lattice_run` (the resonant chain's runs and --config) also --format, --restart, --checkpoint and
+// --max-memory. All write `o`.
+void add_output_options(CLI::App& cmd, const SimulateOutputs& o, bool lattice_run, const std::string& out_help) {
+  cmd.add_option("--out", *o.out, out_help)->type_name("DIR");
+  cmd.add_flag("--json", o.style->compact_json, "print the JSON summary on one line (default: indented)");
+  cmd.add_flag_callback("--no-figures", [style = o.style] { style->figures = false; },
+                        "write the data and summary.json to --out but no figures (no gnuplot run; default: figures)");
+  add_figure_format(cmd);
+  if (!lattice_run) return;
+  cmd.add_option("--format", o.style->format,
+                 "data files in --out: csv (CSV, float32 space-time files and figures; default) or hdf5 "
+                 "(result.h5 with the series, fields, snapshots and summary; no figures)")
+      ->check(CLI::IsMember({"csv", "hdf5"}).description(""))
+      ->type_name("csv|hdf5");
+  cmd.add_option("--restart", *o.restart,
+                 "continue the run from this checkpoint file (written with the same physics, lattice and stepper; "
+                 "the outputs cover the whole run; default: none, a new run)")
+      ->type_name("FILE");
+  cmd.add_option("--checkpoint", *o.checkpoint,
+                 "checkpoint file, written periodically, at the end and on SIGINT/SIGTERM (default OUT/checkpoint.bin: "
+                 "on SIGINT/SIGTERM, and periodically with --checkpoint-every)")
+      ->type_name("FILE");
+  add_max_memory(cmd, *o.max_memory);
 }
 
 }  // namespace
@@ -279,41 +318,26 @@ void register_simulate(CLI::App& app) {
       "ansatz (Sec. 4.2), the boundary-driven chain (Sec. 4.3), the modulated wave (Sec. 5.1), or one "
       "experiment config (examples/*.toml). Times in the units of Sec. 2; data and figures go to --out.");
   auto config = std::make_shared<std::string>();
-  auto out = std::make_shared<std::string>();
-  auto style = std::make_shared<ReportStyle>();
   sim_cmd->add_option("--config", *config,
                       "run the experiment in this TOML file (docs/configs.md, examples/*.toml; default: none, "
                       "give a subcommand instead)")->type_name("FILE");
-  sim_cmd->add_option("--out", *out,
-                      "output directory for data and figures (default: a config's [output] dir; for a subcommand "
-                      "none: only the JSON summary is printed)")->type_name("DIR");
-  sim_cmd->add_flag("--json", style->compact_json, "print the JSON summary on one line (default: indented)");
-  sim_cmd->add_flag("--no-figures{false}", style->figures,
-                    "write the data and summary.json to --out but no figures (no gnuplot run)");
-  auto restart = std::make_shared<std::string>();
-  auto checkpoint = std::make_shared<std::string>();
-  sim_cmd->add_option("--restart", *restart,
-                      "continue the run from this checkpoint file (written with the same physics, "
-                      "lattice and stepper; the outputs cover the whole run; default: none, a new run)")->type_name("FILE");
-  sim_cmd->add_option("--checkpoint", *checkpoint,
-                      "checkpoint file, written periodically, at the end and on SIGINT/SIGTERM "
-                      "(default OUT/checkpoint.bin: on SIGINT/SIGTERM, and periodically with --checkpoint-every)")
-      ->type_name("FILE");
-  auto max_memory = std::make_shared<double>(0.0);
-  add_max_memory(*sim_cmd, *max_memory);
-  add_figure_format(*sim_cmd);
-  sim_cmd->add_option("--format", style->format,
-                      "data files in --out: csv (CSV, float32 space-time files and figures; default) or hdf5 "
-                      "(result.h5 with the series, fields, snapshots and summary; no figures)")
-      ->check(CLI::IsMember({"csv", "hdf5"}));
+  const SimulateOutputs outputs;
+  const auto out = outputs.out;
+  const auto style = outputs.style;
+  const auto restart = outputs.restart;
+  const auto checkpoint = outputs.checkpoint;
+  const auto max_memory = outputs.max_memory;
+  add_output_options(*sim_cmd, outputs, true,
+                     "output directory for data and figures (default: a config's [output] dir)");
   sim_cmd->require_subcommand(0, 1);
   {
-    // `simulate ring` (simulate_ring.cpp) reports through --out, --json and --no-figures too.
+    // `simulate ring` (simulate_ring.cpp) reports through --out, --json, --no-figures and --figure-format.
     auto compact = std::shared_ptr<bool>(style, &style->compact_json);
     auto figures = std::shared_ptr<bool>(style, &style->figures);
     register_simulate_ring(*sim_cmd, {out, compact, figures});
-    add_examples(*sim_cmd->get_subcommand("ring"),
-                 {"lrchain simulate ring --model models/fput.toml --branch acoustic --theta pi/2 --out out/ring-fput"});
+    CLI::App& ring = *sim_cmd->get_subcommand("ring");
+    add_output_options(ring, outputs, false, subcommand_out);
+    add_examples(ring, {"lrchain simulate ring --model fput --branch acoustic --theta pi/2 --out out/ring-fput"});
   }
   add_examples(*sim_cmd, {"lrchain simulate --config examples/exp1_optical_pi2.toml --out out/exp1",
                           "lrchain simulate --config examples/models/fput_bright.toml --out out/fput"});
@@ -321,7 +345,6 @@ void register_simulate(CLI::App& app) {
   // simulate bright
   auto cfg = std::make_shared<sim::BrightRunConfig>();
   auto stepper = std::make_shared<std::string>("srkn11b");
-  auto snapshots = std::make_shared<std::vector<double>>();
   auto* bright = sim_cmd->add_subcommand(
       "bright", "Lattice run from the NLS bright breather (eq:focus_app, eq:focus_ini), Sec. 4.2");
   auto bright_branch = std::make_shared<std::string>();
@@ -342,26 +365,26 @@ void register_simulate(CLI::App& app) {
              "energy-density row interval in T_b (default 1)");
   add_number(*bright, "--error-window", cfg->error_window_end,
              "also report max E_x, E_y for t <= this time (default: none, the whole run only)");
-  bright->add_option("--snapshots", *snapshots, "snapshot times in T_b (default 0 50.125 200)");
+  add_number_list(*bright, "--snapshots", cfg->snapshot_periods, "snapshot times in T_b (default 0 50.125 200)");
   bright->add_flag("--ansatz-ends", cfg->ansatz_ends,
                    "end beads follow the ansatz (emitting boundary conditions, Sec. 4.2)");
   add_number(*bright, "--checkpoint-every", cfg->checkpoint_every,
              "periods T_b between checkpoints (default 0: only on SIGINT/SIGTERM)");
   add_integrator_options(*bright, cfg->integrator, *stepper);
+  add_output_options(*bright, outputs, true, subcommand_out);
   add_examples(*bright, {"lrchain simulate bright --branch optical --theta pi/2 --rho 1/3 --sites 1001 --periods 200 --out out/exp1"});
-  bright->fallthrough();  // --out, --json may follow the subcommand
   bright->callback([=] {
     if (!bright_model->file.empty()) {  // any model file: simulate_model_bright.cpp
-      run_model_bright_command(*bright_model, *bright_branch, *cfg, *bright, *sim_cmd,
+      run_model_bright_command(*bright_model, *bright_branch, *cfg, *bright,
                                {out, std::shared_ptr<bool>(style, &style->compact_json),
                                 std::shared_ptr<bool>(style, &style->figures)});
       return;
     }
     if (!bright_model->set.empty()) throw InputError("--set needs --model FILE (the resonant chain takes --rho, --kappa, ...)");
+    refuse_ignored_options(*bright, *out, {}, "");
     cfg->branch = parse_branch(*bright_branch);
     cfg->integrator.stepper = sim::parse_stepper(*stepper);
     if (bright->count("--dt") > 0) cfg->integrator.automatic_dt = false;
-    if (!snapshots->empty()) cfg->snapshot_periods = *snapshots;
     cfg->restart_file = *restart;
     cfg->checkpoint_file = *checkpoint;
     cfg->max_memory = *max_memory;
@@ -385,7 +408,7 @@ void register_simulate(CLI::App& app) {
   add_number(*drive, "--t-end", dcfg->t_end, "final time (default 2400)");
   add_number(*drive, "--sample-every", dcfg->sample_every, "series interval (default 1)");
   add_number(*drive, "--spacetime-every", dcfg->spacetime_every, "e_n row interval (default 2)");
-  drive->add_option("--snapshots", dcfg->snapshot_times, "snapshot times (default 779.9 2400)");
+  add_number_list(*drive, "--snapshots", dcfg->snapshot_times, "snapshot times (default 779.9 2400)");
   add_number(*drive, "--front-fraction", dcfg->front_fraction,
              "front = last n with e_n > this * max e_n (default 0.1)");
   add_number(*drive, "--front-fit-start", dcfg->front_fit_start, "front-speed fit from (default 100)");
@@ -394,9 +417,10 @@ void register_simulate(CLI::App& app) {
              "time between checkpoints (default 0: only on SIGINT/SIGTERM)");
   dcfg->integrator = sim::DriveRunConfig{}.integrator;
   add_integrator_options(*drive, dcfg->integrator, *dstepper);
+  add_output_options(*drive, outputs, true, subcommand_out);
   add_examples(*drive, {"lrchain simulate drive --rho 10 --sites 2000 --omega0 2.1 --t-end 2400 --out out/exp6"});
-  drive->fallthrough();
   drive->callback([=] {
+    refuse_ignored_options(*drive, *out, {}, "");
     dcfg->integrator.stepper = sim::parse_stepper(*dstepper);
     dcfg->restart_file = *restart;
     dcfg->checkpoint_file = *checkpoint;
@@ -419,7 +443,7 @@ void register_simulate(CLI::App& app) {
   add_number(*mod, "--modulation-depth", mcfg->b, "modulation depth b of eq:cimi (default 0.01; TOML key b)");
   add_number(*mod, "--t-end", mcfg->t_end, "final time (default 45000)");
   add_number(*mod, "--sample-every", mcfg->sample_every, "series and e_n row interval (default 10)");
-  mod->add_option("--snapshots", mcfg->snapshot_times, "snapshot times (default 0 17100 32400)");
+  add_number_list(*mod, "--snapshots", mcfg->snapshot_times, "snapshot times (default 0 17100 32400)");
   add_number(*mod, "--contrast-threshold", mcfg->contrast_threshold,
              "instability when (max-min)/mean of smoothed e_n exceeds this (default 0.2)");
   add_number(*mod, "--speed-fit-start", mcfg->speed_fit_start, "dark-speed fit from (default 30000)");
@@ -427,9 +451,10 @@ void register_simulate(CLI::App& app) {
   add_number(*mod, "--checkpoint-every", mcfg->checkpoint_every,
              "time between checkpoints (default 1000, 0: none)");
   add_integrator_options(*mod, mcfg->integrator, *mstepper);
+  add_output_options(*mod, outputs, true, subcommand_out);
   add_examples(*mod, {"lrchain simulate modulated --sites 401 --theta-waves 252 --t-end 45000 --out out/exp7"});
-  mod->fallthrough();
   mod->callback([=] {
+    refuse_ignored_options(*mod, *out, {}, "");
     mcfg->integrator.stepper = sim::parse_stepper(*mstepper);
     mcfg->restart_file = *restart;
     mcfg->checkpoint_file = *checkpoint;
@@ -450,6 +475,7 @@ void register_simulate(CLI::App& app) {
       dc.run.restart_file = *restart;
       dc.run.checkpoint_file = *checkpoint;
       dc.run.max_memory = *max_memory;
+      refuse_without_out(*sim_cmd, !out->empty() ? *out : dc.out_dir, output_file_options);
       run_drive_and_report(dc.run, !out->empty() ? *out : dc.out_dir, *style);
       return;
     }
@@ -458,6 +484,7 @@ void register_simulate(CLI::App& app) {
       mc.run.restart_file = *restart;
       mc.run.checkpoint_file = *checkpoint;
       mc.run.max_memory = *max_memory;
+      refuse_without_out(*sim_cmd, !out->empty() ? *out : mc.out_dir, output_file_options);
       run_modulated_and_report(mc.run, !out->empty() ? *out : mc.out_dir, *style);
       return;
     }
@@ -466,6 +493,7 @@ void register_simulate(CLI::App& app) {
     ec.bright.restart_file = *restart;
     ec.bright.checkpoint_file = *checkpoint;
     ec.bright.max_memory = *max_memory;
+    refuse_without_out(*sim_cmd, dir, output_file_options);
     if (ec.experiment == "bright") run_bright_and_report(ec.bright, dir, *style);
   });
 }

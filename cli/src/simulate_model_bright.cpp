@@ -13,6 +13,7 @@
 #include "lrchain/sim/model_experiment_config.hpp"
 #include "lrchain/sim/output_lock.hpp"
 #include "model_option.hpp"
+#include "options.hpp"
 #include "simulate_model_commands.hpp"
 
 namespace lrchain::cli {
@@ -44,14 +45,23 @@ void run_and_report_model_bright(const ModelSelection& selection, const Model& m
 
 }  // namespace
 
-void refuse_hdf5_format(const CLI::App& simulate, const std::string& what) {
-  const CLI::Option* format = simulate.get_option_no_throw("--format");
-  if (format != nullptr && format->count() > 0 && format->as<std::string>() == "hdf5")
+void refuse_hdf5_format(const CLI::App& cmd, const std::string& what) {
+  const CLI::Option* format = given_option(cmd, "--format");
+  if (format != nullptr && format->as<std::string>() == "hdf5")
     throw InputError("--format hdf5 is not available for " + what + " (it writes CSV and figures; use --format csv)");
 }
 
+void refuse_ignored_options(const CLI::App& cmd, const std::string& out, std::initializer_list<const char*> unavailable,
+                            const std::string& what) {
+  if (given_option(cmd, "--config") != nullptr)
+    throw InputError("--config runs the experiment in its file; give it without the subcommand " + cmd.get_name());
+  for (const char* name : unavailable)
+    if (given_option(cmd, name) != nullptr) throw InputError(std::string(name) + " is not available with " + what);
+  refuse_without_out(cmd, out, output_file_options);
+}
+
 void run_model_bright_command(const ModelSelection& selection, const std::string& branch,
-                              const sim::BrightRunConfig& bright, const CLI::App& cmd, const CLI::App& simulate,
+                              const sim::BrightRunConfig& bright, const CLI::App& cmd,
                               const ModelRunOutput& output) {
   // Options of the resonant chain's run that the model run does not have.
   for (const char* name : {"--snapshots", "--spacetime-every", "--error-window", "--checkpoint-every",
@@ -59,9 +69,8 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
     if (cmd.count(name) > 0)
       throw InputError(std::string(name) + " is not available with --model (model bright runs use srkn11b, or rkf78 "
                                            "with --ansatz-ends; see lrchain simulate bright --help)");
-  for (const char* name : {"--restart", "--checkpoint"})
-    if (simulate.count(name) > 0) throw InputError(std::string(name) + " is not available with simulate bright --model");
-  refuse_hdf5_format(simulate, "simulate bright --model");
+  refuse_ignored_options(cmd, *output.out, {"--restart", "--checkpoint", "--max-memory"}, "simulate bright --model");
+  refuse_hdf5_format(cmd, "simulate bright --model");
   const Model model = load_selected_model(selection, cmd, bright.params, true);
   sim::ModelBrightConfig c;
   c.theta = bright.theta;
@@ -80,10 +89,11 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
 bool run_model_config(const std::string& file, const CLI::App& simulate, const ModelRunOutput& output) {
   const config::Document doc = config::Document::from_file(file);
   if (!sim::is_model_experiment(doc)) return false;
-  for (const char* name : {"--restart", "--checkpoint"})
+  for (const char* name : {"--restart", "--checkpoint", "--max-memory"})
     if (simulate.count(name) > 0) throw InputError(std::string(name) + " is not available with a model-file config");
   refuse_hdf5_format(simulate, "a model-file config");
   const sim::ModelExperimentConfig mc = sim::load_model_experiment_config(doc);
+  refuse_without_out(simulate, !output.out->empty() ? *output.out : mc.out_dir, output_file_options);
   ModelSelection selection;
   selection.file = mc.model_file;
   for (const auto& [name, value] : mc.parameters) selection.set.push_back(fmt::format("{}={:.17g}", name, value));

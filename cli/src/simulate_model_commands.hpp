@@ -23,9 +23,18 @@ struct ModelRunOutput {
   std::shared_ptr<bool> compact_json, figures;
 };
 
-// Model-file runs and `simulate ring` write CSV and figures only: `--format hdf5` on `simulate` is
-// refused (exit 2) for them rather than ignored. `what` names the run in the message.
-void refuse_hdf5_format(const CLI::App& simulate, const std::string& what);
+// The options that only shape the files a run writes to --out (refused without --out).
+inline constexpr std::initializer_list<const char*> output_file_options = {"--no-figures", "--figure-format", "--format"};
+
+// Model-file runs write CSV and figures only: `--format hdf5` given to `cmd` or before it to
+// `simulate` is refused (exit 2) for them rather than ignored. `what` names the run in the message.
+void refuse_hdf5_format(const CLI::App& cmd, const std::string& what);
+
+// Refuses (exit 2), before anything is done, what the `simulate` subcommand `cmd` would ignore:
+// --config given with it, the output_file_options without --out (`out` empty), and the options
+// among `unavailable` given to `simulate` before the subcommand, which this run (`what`) lacks.
+void refuse_ignored_options(const CLI::App& cmd, const std::string& out, std::initializer_list<const char*> unavailable,
+                            const std::string& what);
 
 // Calls run(stop) with SIGINT/SIGTERM handled: the model run polls `stop` and ends at its next step
 // boundary or sample; the command then exits 130/143 with one line naming the signal.
@@ -62,10 +71,9 @@ void print_model_run(nlohmann::json j, const Model& model, const LatticeCode& co
 void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output);
 
 // `simulate bright --model FILE`: the run of simulate_model_bright.cpp with the bright options
-// (`bright`, given on `cmd`); options the model run lacks are refused (exit 2).
+// (`bright`, given on `cmd` or before it on `simulate`); options the model run lacks are refused (exit 2).
 void run_model_bright_command(const ModelSelection& selection, const std::string& branch,
-                              const sim::BrightRunConfig& bright, const CLI::App& cmd, const CLI::App& simulate,
-                              const ModelRunOutput& output);
+                              const sim::BrightRunConfig& bright, const CLI::App& cmd, const ModelRunOutput& output);
 
 // Checks a ring run of `model` on `branch` (options, theta on the ring, --out) before anything is
 // written, then runs it, writes `out` (none when empty) and prints the JSON summary (with `name`

@@ -22,19 +22,14 @@ struct RingOptions {
   ModelSelection model;
   std::string branch;
   sim::RingRunConfig run;
-  std::vector<std::string> amplitudes;
 };
 
 // `simulate ring` from its options: the amplitudes parsed, then run_and_report_ring.
 void run_ring_command(const RingOptions& o, const CLI::App& cmd, const ModelRunOutput& output) {
-  refuse_hdf5_format(*cmd.get_parent(), "simulate ring");
+  refuse_ignored_options(cmd, *output.out, {"--restart", "--checkpoint", "--max-memory", "--format"},
+                         "simulate ring");
   const Model model = load_selected_model(o.model, cmd, Params{}, true);
-  sim::RingRunConfig run = o.run;
-  if (!o.amplitudes.empty()) {
-    run.amplitudes.clear();
-    for (const auto& a : o.amplitudes) run.amplitudes.push_back(parse_number(a, "amplitudes"));
-  }
-  run_and_report_ring(o.model, model, run, o.branch, *output.out, output, "");
+  run_and_report_ring(o.model, model, o.run, o.branch, *output.out, output, "");
 }
 
 }  // namespace
@@ -66,10 +61,9 @@ void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output) {
       "ring", "Plane waves of a model on a periodic ring: frequency vs amplitude against omega + h U^2/4, and a "
               "small wave packet's speed against c (the derived coefficients checked by the lattice itself)");
   add_model_file_options(*ring, o->model);
-  ring->add_option("--branch", o->branch, "branch name of the model (acoustic, optical, branch0, ...)")->required()->type_name("B");
+  ring->add_option("--branch", o->branch, "branch name of the model (acoustic, optical, branch0, ...)")->required()->type_name("NAME");
   add_number(*ring, "--theta", o->run.theta, "carrier wavenumber 2 pi k / N in (0, pi], e.g. pi/2")->required();
-  ring->add_option("--amplitudes", o->amplitudes, "plane-wave amplitudes U of the first field (default 0.02 0.01)")
-      ->type_name("U ...");
+  add_number_list(*ring, "--amplitudes", o->run.amplitudes, "plane-wave amplitudes U of the first field (default 0.02 0.01)");
   add_integer(*ring, "--sites", o->run.sites, 8, 1'000'000,
               "ring size N (default: the smallest N >= 8 with theta N / (2 pi) whole)");
   add_number(*ring, "--periods", o->run.periods, "carrier periods per frequency measurement (default 400)");
@@ -77,9 +71,8 @@ void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output) {
   ring->add_option_function<std::string>(
           "--packet-amplitude", [o](const std::string& text) { o->run.packet_amplitude = parse_number(text, "packet-amplitude"); },
           "wave-packet amplitude in (0, 10] (default: a tenth of the smallest --amplitudes)")
-      ->type_name("A");
+      ->type_name("NUM");
   add_number(*ring, "--packet-width", o->run.packet_width, "Gaussian width of the packet in sites (default 24)");
-  ring->fallthrough();
   ring->callback([o, ring, output] { run_ring_command(*o, *ring, output); });
 }
 

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "help_text.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/sweep/sweep_config.hpp"
 #include "lrchain/sim/sweep/sweep_figure.hpp"
@@ -105,7 +106,7 @@ void register_sweep(CLI::App& app) {
   cmd->add_flag("--retry-failed", a->retry_failed, "when resuming, run the points recorded as failed again");
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
   cmd->add_flag("--json", a->compact, "print the JSON summary on one line (default: indented)");
-  cmd->footer("Example:\n  lrchain sweep --config examples/sweeps/regime_intervals_rho.toml --threads 2\n\n" + cmd->get_footer());
+  add_examples(*cmd, {"lrchain sweep --config examples/sweeps/regime_intervals_rho.toml --threads 2"});
   cmd->callback([a] { run_sweep_command(*a); });
 }
 

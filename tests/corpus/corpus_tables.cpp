@@ -23,7 +23,7 @@ const std::map<std::string, std::vector<std::string>>& base_commands() {
   static const std::map<std::string, std::vector<std::string>> bases = {
       {"coeffs", {"--theta", "pi/2", "--branch", "optical", "--json"}},
       {"regime intervals", {"--samples", "64"}},
-      {"regime map", {"--out", "@OUT@", "--nx", "8", "--ny", "8", "--no-curves", "--no-png"}},
+      {"regime map", {"--out", "@OUT@", "--nx", "8", "--ny", "8", "--no-curves", "--no-figures"}},
       {"regime thresholds", {"--scan", "10"}},
       {"simulate bright",
        {"--branch", "optical", "--theta", "pi/2", "--sites", "101", "--periods", "1", "--sample-every", "0.25",
@@ -53,13 +53,14 @@ const std::map<std::string, std::vector<std::string>>& option_context() {
   static const std::map<std::string, std::vector<std::string>> context = {
       {"delta0-range", {"--plane", "delta0-omega"}},
       {"omega-range", {"--plane", "delta0-omega"}},
+      {"axis-range", {"--model", LRCHAIN_SOURCE_DIR "/models/fput.toml", "--axis", "b"}},  // a model's axis
   };
   return context;
 }
 
 const std::map<std::string, std::string>& pair_partner() {
   static const std::map<std::string, std::string> partner = {
-      {"rho-range", "0.1"}, {"delta0-range", "0.01"}, {"omega-range", "0.5"}};
+      {"rho-range", "0.1"}, {"delta0-range", "0.01"}, {"omega-range", "0.5"}, {"axis-range", "0.1"}};
   return partner;
 }
 
@@ -94,6 +95,7 @@ const std::set<BadValue>& possibly_valid(const std::string& name) {
       {"to", {minus_one, zero, huge}},
       {"checkpoint-seconds", {huge}},        // any positive time between rewrites of the results file
       {"csv-max-points", {zero}},            // 0: no CSV view
+      {"axis-range", {huge, huge_pi}},       // fput's b may take any value: [0.1, 1e308] is a valid axis
   };
   static const std::set<BadValue> none;
   const auto it = table.find(name);

@@ -24,7 +24,7 @@ def test_model_bright_equals_cli(cli, source_dir):
     model_file = source_dir / "models" / "fput.toml"
     r = lrchain.simulate.bright(model=lrchain.load_model(model_file), **FPUT_BRIGHT)
     expected = cli("simulate", "bright", "--model", model_file, "--branch", "acoustic", "--theta", "pi/2",
-                   "--sites", 2001, "--periods", 10, "--json", "--no-figures")
+                   "--sites", 2001, "--periods", 10, "--json")
     for key in ("max_E_x", "energy0", "max_relative_energy_drift", "centre_speed"):
         _close(r.summary[key], expected[key])
     _close(r.summary["ansatz"]["omega_b"], expected["ansatz"]["omega_b"])
@@ -48,7 +48,7 @@ def test_model_bright_positional_model_and_two_fields(cli, source_dir):
     model = lrchain.Model(model_file)
     r = lrchain.simulate.bright(model, "optical", 3 * np.pi / 4, sites=101, periods=4)
     expected = cli("simulate", "bright", "--model", model_file, "--branch", "optical", "--theta", "3*pi/4",
-                   "--sites", 101, "--periods", 4, "--json", "--no-figures")
+                   "--sites", 101, "--periods", 4, "--json")
     assert len(r.E) == 2
     _close(r.E_x.max(), expected["max_E"][0])
     _close(r.E_y.max(), expected["max_E"][1])
@@ -83,7 +83,7 @@ def test_ring_equals_cli(cli, source_dir):
     model_file = source_dir / "models" / "fput.toml"
     r = lrchain.simulate.ring(lrchain.load_model(model_file), "acoustic", np.pi / 2, periods=100, packet_width=12)
     expected = cli("simulate", "ring", "--model", model_file, "--branch", "acoustic", "--theta", "pi/2",
-                   "--periods", 100, "--packet-width", 12, "--json", "--no-figures")
+                   "--periods", 100, "--packet-width", 12, "--json")
     for python, row in zip(r.measured_frequency, expected["amplitudes"]):
         _close(python, row["measured_frequency"])
     _close(r.summary["packet"]["measured_speed"], expected["packet"]["measured_speed"])
@@ -162,7 +162,7 @@ def test_user_model_file_in_tmp_dir(tmp_path, monkeypatch, cli):
     assert r.summary["model"]["lattice_code"]["from_cache"] is False
     assert list((tmp_path / "cache" / "lrchain").glob("lattice-*.so"))
     expected = cli("simulate", "bright", "--model", path, "--branch", "branch0", "--theta", "3*pi/4", "--sites", 201,
-                   "--periods", 10, "--json", "--no-figures")
+                   "--periods", 10, "--json")
     assert expected["model"]["lattice_code"]["from_cache"] is True  # the library Python compiled
     for key in ("max_E_x", "energy0", "max_relative_energy_drift"):
         _close(r.summary[key], expected[key])

@@ -64,7 +64,7 @@ TEST_CASE("a scratch model file goes through regime map, intervals and threshold
   const std::vector<std::string> env{"XDG_CACHE_HOME=" + (dir / "cache").string()};
   const std::string model = (dir / "quartic_chain.toml").string();
   const auto r = run_lrchain({"regime", "map", "--model", model, "--axis", "K", "--axis-range", "0.05", "2", "--nx",
-                              "60", "--ny", "80", "--no-png", "--out", (dir / "map").string()},
+                              "60", "--ny", "80", "--no-figures", "--out", (dir / "map").string()},
                              {}, env);
   INFO(r.err);
   REQUIRE(r.exit_code == 0);

@@ -41,9 +41,10 @@ TEST_CASE("model simulate: bad options exit 2 naming the option, before anything
                  "3*pi/4", "--detuning", "-1e-4"}, "detuning");
   check_refused({"simulate", "bright", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
                  "--rho", "1"}, "--rho");
-  // HDF5 output is written for the resonant chain's runs only: refused, not ignored.
+  // HDF5 output is written for the resonant chain's runs only: refused, not ignored (ring has no
+  // --format at all; bright has it for the resonant chain).
   check_refused({"simulate", "ring", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
-                 "--format", "hdf5"}, "--format hdf5");
+                 "--format", "hdf5"}, "unknown option --format");
   check_refused({"simulate", "bright", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
                  "--format", "hdf5"}, "--format hdf5");
 }
