@@ -83,7 +83,12 @@ TEST_CASE("config run checks: theta, amplitude, omega0 name file:line, table and
   // A two-key check (ramp_rate <= omega0) names the key as the file spells it.
   e = located_error(drive_config + "omega0 = 2.2\nramp_rate = 3\n", "cfg/ramp.toml");
   CHECK(std::string(e.what()).starts_with("invalid value for 'ramp_rate' in [drive] at cfg/ramp.toml:7: must be in (0, omega0]"));
-  // A value the file does not hold (the default) keeps the unlocated message naming the parameter.
+  // A key the file does not hold (amplitude's default 0.06 against delta0 = 0.01) keeps the message
+  // naming the parameter, unlocated; a valid file loads.
+  CHECK_THROWS_WITH_AS(lrchain::sim::load_drive_config(Document::from_text(
+                           "experiment = \"drive\"\n[model]\ndelta0 = 0.01\n[drive]\nbeads = 100\n", "d.toml")),
+                       doctest::Contains("invalid amplitude: must be a finite number in (0, delta0] = (0, 0.01]"),
+                       lrchain::InvalidParameter);
   CHECK_NOTHROW(lrchain::sim::load_experiment_config(Document::from_text(bright_config + "theta = 1\n", "ok.toml")));
 }
 
