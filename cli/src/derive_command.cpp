@@ -14,6 +14,7 @@
 #include "help_text.hpp"
 #include "lrchain/derivation/model_derivation.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/provenance_json.hpp"
 #include "shipped_data.hpp"
 
 namespace lrchain::cli {
@@ -80,6 +81,7 @@ nlohmann::json to_json(const derivation::ModelDerivation& m, const derivation::S
   j["passed"] = m.passed();
   j["derive_seconds"] = m.derive_seconds;
   j["check_seconds"] = m.check_seconds;
+  j["provenance"] = provenance_json();
   return j;
 }
 

@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "help_text.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/sweep/sweep_config.hpp"
 #include "lrchain/sim/sweep/sweep_figure.hpp"
 #include "lrchain/sim/sweep/sweep_run.hpp"
@@ -82,6 +83,7 @@ void run_sweep_command(const SweepArguments& a) {
   j["ranks"] = ranks;
   j["interrupted"] = r.interrupted;
   j["seconds"] = r.seconds;
+  j["provenance"] = provenance_json();
   std::cout << (a.compact ? j.dump() : j.dump(2)) << std::endl;
   if (r.interrupted) {
     const int signal_number = StopSignals::received();

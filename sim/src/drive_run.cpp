@@ -39,6 +39,13 @@ std::vector<double> snapshot_times_in_run(const DriveRunConfig& c) {
 
 namespace {
 
+// InvalidParameter("omega0") unless omega0 lies in the optical band (omega_+(0), omega_+(pi)] (eq:disp1d).
+void check_optical_band(const Params& p, double omega0) {
+  const double wa = dispersion_omega(p, Branch::optical, 0.0), wb = dispersion_omega(p, Branch::optical, M_PI);
+  if (!(omega0 > wa && omega0 <= wb))
+    throw InvalidParameter("omega0", fmt::format("must lie in the optical band ({:.6g}, {:.6g}]", wa, wb));
+}
+
 // The sizes the run's memory and output grow with.
 LatticeRunSizes run_sizes(const DriveRunConfig& c) {
   return sampled_run_sizes(double(c.beads), c.t_end, c.sample_every, c.spacetime_every,
@@ -54,6 +61,7 @@ void validate(const DriveRunConfig& c) {
   if (c.beads < 10) throw InvalidParameter("beads", "must be an integer >= 10");
   check_drive_amplitude(c.amplitude, c.params.delta0);
   if (!(c.omega0 > 0 && std::isfinite(c.omega0))) throw InvalidParameter("omega0", "must be a finite number > 0");
+  check_optical_band(c.params, c.omega0);
   if (!(c.ramp_rate > 0 && c.ramp_rate <= c.omega0))
     throw InvalidParameter("ramp-rate", "must be in (0, omega0]: the envelope chi(t) varies slowly against the carrier");
   if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t-end", "must be a finite number > 0");
@@ -94,10 +102,8 @@ namespace {
 
 // theta in (0, pi] with omega_+(theta) = omega0 (eq:disp1d; omega_+ increases on [0, pi]).
 double optical_wavenumber(const Params& p, double omega0) {
+  check_optical_band(p, omega0);
   double a = 0, b = M_PI;
-  const double wa = dispersion_omega(p, Branch::optical, a), wb = dispersion_omega(p, Branch::optical, b);
-  if (!(omega0 > wa && omega0 <= wb))
-    throw InvalidParameter("omega0", fmt::format("must lie in the optical band ({:.6g}, {:.6g}]", wa, wb));
   for (int k = 0; k < 200 && b - a > 1e-15; ++k) {
     const double m = 0.5 * (a + b);
     (dispersion_omega(p, Branch::optical, m) < omega0 ? a : b) = m;

@@ -2,6 +2,7 @@
 #include "lrchain/sim/experiment_config.hpp"
 
 #include "lrchain/sim/more_experiment_config.hpp"
+#include "located_validation.hpp"
 #include "toml_reading.hpp"
 
 namespace lrchain::sim {
@@ -43,7 +44,7 @@ ExperimentConfig load_experiment_config(const config::Document& doc) {
   c.name = config::config_name(root);
   config::read_common(root, c.bright.params, c.bright.integrator, c.out_dir);
   read_bright(*root.table("bright"), c.bright);  // a required table
-  validate(c.bright);
+  config::validate_located(root, "bright", [&c] { validate(c.bright); });
   return c;
 }
 

@@ -3,6 +3,7 @@
 #include "lrchain/sim/more_experiment_config.hpp"
 
 #include "lrchain/sim/experiment_config.hpp"
+#include "located_validation.hpp"
 #include "toml_reading.hpp"
 
 namespace lrchain::sim {
@@ -42,7 +43,7 @@ DriveExperiment load_drive_config(const config::Document& doc) {
     d->read("front_fit_end", x.run.front_fit_end);
     d->read("checkpoint_every", x.run.checkpoint_every);
   }
-  validate(x.run);
+  config::validate_located(root, "drive", [&x] { validate(x.run); });
   return x;
 }
 
@@ -66,7 +67,7 @@ ModulatedExperiment load_modulated_config(const config::Document& doc) {
     d->read("speed_fit_end", x.run.speed_fit_end);
     d->read("checkpoint_every", x.run.checkpoint_every);
   }
-  validate(x.run);
+  config::validate_located(root, "modulated", [&x] { validate(x.run); });
   return x;
 }
 

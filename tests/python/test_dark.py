@@ -50,3 +50,10 @@ def test_newton_failure_raises_numerical_failure():
     # From the seed Newton needs 4 steps at omega_b = 2.42 (the CLI's residual history above).
     with pytest.raises(lrchain.NumericalFailure, match="Newton did not converge at omega_b = 2.42"):
         lrchain.dark.solve(lrchain.Params(), omega_b=2.42, max_iterations=1)
+
+
+def test_collapse_to_the_zero_state_raises_numerical_failure():
+    # At omega_b = 1.6, far below the optical edge sqrt(6), Newton on 21 sites from the seed reaches
+    # Z(0) = 0 (max strain ~5e-17): a zero of the shooting residual but no breather.
+    with pytest.raises(lrchain.NumericalFailure, match="converged to the trivial state"):
+        lrchain.dark.solve(lrchain.Params(), omega_b=1.6, sites=21)

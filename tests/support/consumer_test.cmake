@@ -7,7 +7,9 @@
 #     20 T_b bright run stays within E_x < 0.05 with energy drift < 1e-9 (exp1: 0.0245 over 200 T_b);
 #  3. every installed header compiles on its own (the public headers include no private one);
 #  4. the exported targets name no absolute include path, and the installed lrchain binary holds
-#     no path of the source or build tree.
+#     no path of the source or build tree;
+#  5. without HDF5 (no pkg-config), find_package(lrchain COMPONENTS sim) of the static package fails
+#     at find_package with a message naming HDF5, not later when CMake generates the build.
 include(${CMAKE_CURRENT_LIST_DIR}/consumer_checks.cmake)
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
@@ -51,4 +53,18 @@ endforeach()
 file(STRINGS ${prefix}/bin/lrchain strings REGEX "${SOURCE_DIR}")
 if(strings)
   message(FATAL_ERROR "the installed lrchain holds the source tree's path: ${strings}")
+endif()
+
+# 5. the static sim component without HDF5
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer_sim -B ${WORK_DIR}/build-no-hdf5
+                        -DCMAKE_PREFIX_PATH=${prefix} -DPKG_CONFIG_EXECUTABLE=${WORK_DIR}/no-such-pkg-config
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0)
+  message(FATAL_ERROR "find_package(lrchain COMPONENTS sim) succeeded without pkg-config (no HDF5):\n${out}\n${err}")
+endif()
+string(REGEX REPLACE "[ \n]+" " " err_one_line "${err}")  # CMake wraps the reason it prints
+expect_in("${err_one_line}" "needs HDF5's C library, which pkg-config did not find")
+string(FIND "${err}" "was not found" pos)  # "Target ... links to PkgConfig::HDF5 but the target was not found"
+if(NOT pos EQUAL -1)
+  message(FATAL_ERROR "a missing HDF5 surfaced at generation, not at find_package:\n${err}")
 endif()

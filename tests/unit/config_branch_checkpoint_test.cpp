@@ -32,8 +32,9 @@ TEST_CASE("config: bright and drive runs take checkpoint_every, checked like the
   const auto negative = Document::from_text("experiment = \"drive\"\n[drive]\ncheckpoint_every = -1\n", "d.toml");
   CHECK_THROWS_WITH_AS(lrchain::sim::load_drive_config(negative), doctest::Contains("checkpoint_every"),
                        lrchain::config::ConfigError);
-  // Below sample_every (1 by default): the cross-key check of validate(DriveRunConfig).
+  // Below sample_every (1 by default): the cross-key check of validate(DriveRunConfig), located.
   const auto dense = Document::from_text("experiment = \"drive\"\n[drive]\ncheckpoint_every = 0.5\n", "d.toml");
-  CHECK_THROWS_WITH_AS(lrchain::sim::load_drive_config(dense), doctest::Contains("checkpoint-every"),
-                       lrchain::InvalidParameter);
+  CHECK_THROWS_WITH_AS(lrchain::sim::load_drive_config(dense),
+                       doctest::Contains("'checkpoint_every' in [drive] at d.toml:3: must be 0 (none) or"),
+                       lrchain::config::ConfigError);
 }

@@ -33,6 +33,7 @@ TEST_CASE("dark Newton: bond-centred optical breather at omega_b = 2.42 (Fig. 17
   DarkShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
   const auto res = newton_solve(sh, sh.unknowns_from_z(dark_seed(a, DarkCenter::bond, N)), wb, {});
   REQUIRE(res.converged);
+  CHECK(res.failure.empty());      // a breather, not the trivial state (dark_trivial_state_test.cpp)
   CHECK(res.history.size() <= 7);  // quadratic convergence from the seed
   const Eigen::VectorXd z0 = sh.z_from_unknowns(res.q);
   const auto m = measure_dark_breather(p, z0, wb);

@@ -63,7 +63,7 @@ TEST_CASE("dark solve --figure-format svg and pdf draw SVG and PDF files — a b
   fs::remove_all(base);
   for (const std::string format : {"svg", "pdf"}) {
     const fs::path out = base / format;
-    const auto run = run_lrchain({"dark", "solve", "--omega-b", "2.3", "--sites", "41", "--quiet", "--figure-format",
+    const auto run = run_lrchain({"dark", "solve", "--omega-b", "2.42", "--sites", "41", "--quiet", "--figure-format",
                                   format, "--out", out.string()});
     INFO(run.err);
     REQUIRE(run.exit_code == 0);

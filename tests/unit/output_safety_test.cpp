@@ -127,7 +127,7 @@ TEST_CASE("figures are drawn into a directory whose name is shell syntax, and no
   const std::vector<Job> jobs = {
       {with_out(small_bright, name), {"snapshots.png", "energy.png"}},  // the name itself as --out
       {{"regime", "map", "--nx", "20", "--ny", "20", "--no-curves", "--out", name + "/map"}, {"regime_theta-rho.png"}},
-      {{"dark", "solve", "--omega-b", "2.3", "--sites", "41", "--quiet", "--out", name + "/dark"}, {"profile.png"}},
+      {{"dark", "solve", "--omega-b", "2.42", "--sites", "41", "--quiet", "--out", name + "/dark"}, {"profile.png"}},
   };
   for (const auto& job : jobs) {
     const auto run = run_lrchain(job.args, base);  // relative --out, run inside base
@@ -168,7 +168,7 @@ TEST_CASE("without gnuplot: exit 0, data written, one warning naming the figures
     CHECK(hidden_files(base / "bright").empty());
   }
   SUBCASE("dark solve and regime map: the JSON lists the figures as skipped") {
-    const auto dark = run_lrchain({"dark", "solve", "--omega-b", "2.3", "--sites", "41", "--quiet", "--out",
+    const auto dark = run_lrchain({"dark", "solve", "--omega-b", "2.42", "--sites", "41", "--quiet", "--out",
                                    (base / "dark").string()}, {}, no_gnuplot);
     REQUIRE(dark.exit_code == 0);
     CHECK(count_lines(dark.err) == 1);

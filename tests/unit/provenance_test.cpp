@@ -3,6 +3,8 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 #include <regex>
 
@@ -73,4 +75,28 @@ TEST_CASE("provenance: `lrchain --version` prints the version and commit — sum
   const auto r = run_lrchain({"regime", "intervals", "--rho", "1/3", "--branch", "acoustic"});
   REQUIRE(r.exit_code == 0);
   CHECK(nlohmann::json::parse(r.out)["provenance"]["command_line"][2] == "intervals");
+}
+
+TEST_CASE("provenance: `lrchain sweep --json` carries it next to its own keys") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-sweep-provenance-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(fs::path(LRCHAIN_SOURCE_DIR) / "examples" / "sweeps" / "base" / "regime_intervals.toml",
+                dir / "base.toml");
+  // Two points of the shipped regime-intervals sweep (a fraction of a second each).
+  std::ofstream(dir / "sweep.toml") << "job = \"regime intervals\"\nbase = \"base.toml\"\noutput = \"out.h5\"\n"
+                                       "[[axis]]\nparameter = \"model.rho\"\nfrom = 0.2\nto = 2\ncount = 2\n";
+  const auto r = run_lrchain({"sweep", "--config", (dir / "sweep.toml").string(), "--threads", "1", "--quiet", "--json"}, dir);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["points"] == 2);
+  CHECK(j["finished"] == 2);
+  CHECK(j["job"] == "regime intervals");
+  REQUIRE(j.contains("provenance"));
+  CHECK(j["provenance"]["lrchain_version"] == LRCHAIN_VERSION_STRING);
+  REQUIRE(j["provenance"]["command_line"].size() == 8);
+  CHECK(j["provenance"]["command_line"][1] == "sweep");
+  CHECK(j["provenance"]["command_line"][7] == "--json");
+  fs::remove_all(dir);
 }

@@ -122,7 +122,9 @@ struct NewtonResult {
   std::string failure;  // why not converged
 };
 
-// Newton (least squares, column-pivoting QR) on F(., omega_b) = 0 from q0 (Sec. 5.3).
+// Newton (least squares, column-pivoting QR) on F(., omega_b) = 0 from q0 (Sec. 5.3). A zero of F
+// whose amplitude max|z - mean(z)| fell below 1e-8 of the seed's is the trivial state, no breather:
+// reported as not converged, failure "converged to the trivial state ...".
 NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q0, double omega_b,
                           const NewtonOptions& options);
 
