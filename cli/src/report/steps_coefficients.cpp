@@ -57,10 +57,16 @@ std::vector<double> figure_thetas_over_pi(const Params& p) {
       if (!std::isfinite(left) || !std::isfinite(right) || left * right >= 0 ||
           std::min(std::abs(left), std::abs(right)) <= 0.1)
         continue;
+      // 1/h_tilde is 0 where the coefficient is singular (not finite): that is the pole.
+      const auto inverse = [&](double x) {
+        const double v = h(std::clamp(x, t[i - 1], t[i]));
+        return std::isfinite(v) ? 1.0 / v : 0.0;
+      };
       std::uintmax_t iterations = 100;
-      const auto bracket = boost::math::tools::toms748_solve([&](double x) { return 1.0 / h(x); }, t[i - 1], t[i],
+      const auto bracket = boost::math::tools::toms748_solve(inverse, t[i - 1], t[i],
                                                              boost::math::tools::eps_tolerance<double>(45), iterations);
       const double pole = 0.5 * (bracket.first + bracket.second);
+      if (!std::isfinite(pole)) continue;
       for (const double distance : {3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6})
         for (const double x : {pole - distance, pole + distance})
           if (x > t[i - 1] && x < t[i]) near_poles.push_back(x);
