@@ -17,6 +17,7 @@
 #include "commands.hpp"
 #include "lrchain/sim/dark/dark_hdf5.hpp"
 #include "figure_format_option.hpp"
+#include "figure_text.hpp"
 #include "help_text.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
@@ -225,11 +226,11 @@ void write_multipliers(const std::string& dir, const std::string& stem, const Fl
   for (auto l : f.multipliers) reach = std::max(reach, std::abs(l));
   figures.draw({stem + ".gp",
                       fmt::format("if (!exists(\"outfile\")) outfile = '{0}.png'\n"
-                                  "set terminal pngcairo size 700,700 noenhanced\nset output outfile\n"
+                                  "set terminal pngcairo size 700,700\nset output outfile\n"
                                   "set datafile separator ','\nset size ratio -1\nset key off\n"
                                   "set xrange [-{2:.6g}:{2:.6g}]\nset yrange [-{2:.6g}:{2:.6g}]\n"
                                   "set xlabel 'Re λ'\nset ylabel 'Im λ'\n"
-                                  "set title 'Floquet multipliers λ, ω_b = {1:.5f} (grey: unit circle)'\n"
+                                  "set title 'Floquet multipliers λ, ω_{{b}} = {1:.5f} (grey: unit circle)'\n"
                                   "set parametric\nset trange [0:2*pi]\n"
                                   "plot cos(t),sin(t) lc 'gray', '{0}.csv' skip 1 using 1:2 with points pt 7 ps 0.8\n",
                                   stem, omega_b, 1.08 * reach),
@@ -267,13 +268,13 @@ void run_solve(const DarkArgs& a, bool floquet) {
     write_profile(a.out, "profile.csv", z0, seed, evo.back());
     figures.draw({"profile.gp",
                         fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
-                                    "set terminal pngcairo size 1000,700 noenhanced\nset output outfile\n"
+                                    "set terminal pngcairo size 1000,700\nset output outfile\n"
                                     "set datafile separator ','\nset xlabel 'site n'\n"
-                                    "set ylabel 'strains x_n, y_n (dimensionless)'\nset key outside\n"
-                                    "set title 'dark breather ({} centred), ω_b = {:.5f}: Z(0), Z(T_b), seed eq. (48)'\n"
-                                    "plot 'profile.csv' skip 1 u 1:2 w lp pt 3 t 'x_n(0)', '' skip 1 u 1:6 w p pt 4 ps 1.5 t 'x_n(T_b)', "
-                                    "'' skip 1 u 1:4 w p pt 6 t 'x seed', '' skip 1 u 1:3 w lp pt 3 t 'y_n(0)', "
-                                    "'' skip 1 u 1:7 w p pt 4 ps 1.5 t 'y_n(T_b)', '' skip 1 u 1:5 w p pt 6 t 'y seed'\n",
+                                    "set ylabel 'strains x_{{n}}, y_{{n}} (dimensionless)'\nset key outside\n"
+                                    "set title 'dark breather ({} centred), ω_{{b}} = {:.5f}: Z(0), Z(T_{{b}}), seed eq. (48)'\n"
+                                    "plot 'profile.csv' skip 1 u 1:2 w lp pt 3 t 'x_{{n}}(0)', '' skip 1 u 1:6 w p pt 4 ps 1.5 t 'x_{{n}}(T_{{b}})', "
+                                    "'' skip 1 u 1:4 w p pt 6 t 'x seed', '' skip 1 u 1:3 w lp pt 3 t 'y_{{n}}(0)', "
+                                    "'' skip 1 u 1:7 w p pt 4 ps 1.5 t 'y_{{n}}(T_{{b}})', '' skip 1 u 1:5 w p pt 6 t 'y seed'\n",
                                     a.center, a.omega_b),
                         "profile.png"});
     if (floquet) write_multipliers(a.out, "multipliers", f, a.omega_b, figures);
@@ -367,27 +368,28 @@ void continue_and_report(const DarkArgs& a, const DarkShootingProblem& shooting,
     const double margin = 0.03 * std::max(omega_edge - lowest, 1e-3);
     figures.draw({"branch.gp",
                         fmt::format("if (!exists(\"outfile\")) outfile = 'branch.png'\n"
-                                    "set terminal pngcairo size 900,650 noenhanced\nset output outfile\n"
-                                    "set datafile separator ','\nset xlabel 'breather frequency ω_b'\n"
-                                    "set ylabel 'renormalised l2 norm squared, eq. (51)'\n"
+                                    "set terminal pngcairo size 900,650\nset output outfile\n"
+                                    "set datafile separator ','\nset xlabel 'breather frequency ω_{{b}}'\n"
+                                    "set ylabel 'renormalised ℓ^{{2}} norm squared, eq. (51)'\n"
                                     "set xrange [{4:.8g}:{5:.8g}]\nset key top left\n"
                                     "set arrow from {0},graph 0 to {0},graph 1 nohead lc 'black'\n"
                                     "set label 'band edge {0:.4f}' at {0},graph 0.96 right offset -0.5,0\n"
                                     "set title '{1} {2}-centred dark breathers, {3} (red: real instability)'\n"
                                     "plot 'branch.csv' skip 1 u 1:2 w l lc 'blue' t 'branch', "
                                     "'' skip 1 u 1:(strstrt(strcol(8),'real') > 0 ? $2 : 1/0) w p pt 7 lc 'red' t 'real instability'\n",
-                                    omega_edge, a.branch, a.center, label, lowest - margin, omega_edge + margin),
+                                    omega_edge, a.branch, a.center, gnuplot_literal(label), lowest - margin,
+                                    omega_edge + margin),
                         "branch.png"});
     // One panel per part of the branch that was computed (before / after the first turning point);
     // a part without multipliers off the unit circle says so instead of showing an empty frame.
     const bool turned = part >= 1;
     std::string moduli = fmt::format(
         "if (!exists(\"outfile\")) outfile = 'floquet_moduli.png'\n"
-        "set terminal pngcairo size 1000,{3} noenhanced\nset output outfile\n"
-        "set datafile separator ','\nset xlabel 'breather frequency ω_b'\nset ylabel 'Floquet modulus |λ|'\n"
+        "set terminal pngcairo size 1000,{3}\nset output outfile\n"
+        "set datafile separator ','\nset xlabel 'breather frequency ω_{{b}}'\nset ylabel 'Floquet modulus |λ|'\n"
         "set offsets 0, 0, graph 0.1, 0\nset key off\n"
         "set multiplot layout {4},1 title '{0} {1}-centred, {2}: Floquet moduli |λ| > 1 (blue: complex, red: real > 0, green: real < 0)'\n",
-        a.branch, a.center, label, turned ? 700 : 400, turned ? 2 : 1);
+        a.branch, a.center, gnuplot_literal(label), turned ? 700 : 400, turned ? 2 : 1);
     for (int p = 0; p < (turned ? 2 : 1); ++p) {
       const std::string select = p == 0 ? "$4==0" : "$4>=1";
       moduli += fmt::format("set title '{}'\n", p == 0 ? "weakly nonlinear (before the turning point)"
@@ -418,7 +420,7 @@ void continue_and_report(const DarkArgs& a, const DarkShootingProblem& shooting,
 void run_continue(const DarkArgs& a) {
   validate_job(a, DarkJob::branch);
   Solved s = solve(a);
-  continue_and_report(a, s.shooting, s.newton.q, s.ansatz.omega, base_json(a, s), fmt::format("ρ = {:g}", a.p.rho));
+  continue_and_report(a, s.shooting, s.newton.q, s.ansatz.omega, base_json(a, s), fmt::format("ρ = {:.4g}", a.p.rho));
 }
 
 // One lattice variable of an evolution's files: its name (x, r, u0, ...) and axis label.
@@ -472,23 +474,24 @@ void write_evolution(const std::string& dir, const DarkEvolution& e, const std::
   for (Index k = 0; k < V; ++k) {
     const EvolutionVariable& v = variables[std::size_t(k)];
     const double origin = double(V - 1 - k) * height;
-    maps += fmt::format("{}{}_n(m T_b)", k == 0 ? "" : ", ", v.name);
+    const std::string name = gnuplot_literal(v.name);  // v.label is enhanced text ("strain x_{n}")
+    maps += fmt::format("{}{}_{{n}}(m T_{{b}})", k == 0 ? "" : ", ", name);
     snapshots += fmt::format(
-        "set size 0.36,{0:g}\nset origin 0.0,{1:g}\nset ylabel '{2}' noenhanced\nset title '{3}_n' noenhanced\n"
+        "set size 0.36,{0:g}\nset origin 0.0,{1:g}\nset ylabel '{2}'\nset title '{3}_{{n}}'\n"
         "plot 'snapshots.csv' skip 1 u 1:{4} w lp pt 3 lc 'red' t 't = 0', '' skip 1 u 1:{5} w lp pt 4 lc 'blue' t 't = {6:.1f}'\n",
-        height, origin, v.label, v.name, 2 + k, 2 + V + k, T);
-    right += fmt::format("set size 0.64,{0:g}\nset origin 0.36,{1:g}\nset cblabel '{2}' noenhanced\n"
-                         "set title '{3}_n(t), t = m T_b' noenhanced\n"
-                         "plot '{3}_spacetime.bin' binary matrix with image notitle\n",
-                         height, origin, v.label, v.name);
+        height, origin, v.label, name, 2 + k, 2 + V + k, T);
+    right += fmt::format("set size 0.64,{0:g}\nset origin 0.36,{1:g}\nset cblabel '{2}'\n"
+                         "set title '{3}_{{n}}(t), t = m T_{{b}}'\n"
+                         "plot '{4}_spacetime.bin' binary matrix with image notitle\n",
+                         height, origin, v.label, name, v.name);
   }
   figures.draw({
       "evolution.gp",
       fmt::format("if (!exists(\"outfile\")) outfile = 'evolution.png'\n"
                   "set terminal pngcairo size 1500,{5}\nset output outfile\n"
                   "set datafile separator ','\n"
-                  "set multiplot title '{0}: snapshots at t = 0 and t = {1:.1f} (left), space-time {6} (right)' noenhanced\n"
-                  "set key outside below horizontal\nset xrange [{2}:{3}]\nset xlabel 'site n'\n"
+                  "set multiplot title '{0}: snapshots at t = 0 and t = {1:.1f} (left), space-time {6} (right)'\n"
+                  "set key outside top center horizontal\nset xrange [{2}:{3}]\nset xlabel 'site n'\n"
                   "{7}"
                   "set datafile separator whitespace\n"
                   "set ylabel 't (dimensionless)'\nset yrange [0:{1}]\n"
@@ -501,12 +504,12 @@ void write_evolution(const std::string& dir, const DarkEvolution& e, const std::
       fmt::format("if (!exists(\"outfile\")) outfile = 'diagnostics.png'\n"
                   "set terminal pngcairo size 1000,800\nset output outfile\n"
                   "set datafile separator ','\nset xlabel 't (dimensionless)'\n"
-                  "set multiplot layout 2,1 title '{0}' noenhanced\n"
-                  "set logscale y\nset format y '%.0e'\nset ylabel 'E_b(t), eq. (52)' noenhanced\n"
-                  "set title 'relative error E_b(m T_b)' noenhanced\n"
+                  "set multiplot layout 2,1 title '{0}'\n"
+                  "set logscale y\nset format y '%.0e'\nset ylabel 'E_{{b}}(t), eq. (52)'\n"
+                  "set title 'relative error E_{{b}}(m T_{{b}})'\n"
                   "plot 'evolution.csv' skip 1 u 1:($2 > 1e-16 ? $2 : 1e-16) w l lc 'blue' notitle\n"
                   "unset logscale y\nset format y '%g'\nset ylabel 'site n'\n"
-                  "set title 'breather position (amplitude dip over each period; unwrapped)' noenhanced\n"
+                  "set title 'breather position (amplitude dip over each period; unwrapped)'\n"
                   "plot 'evolution.csv' skip 1 u 1:5 w l lc 'red' notitle\n"
                   "unset multiplot\n",
                   title),
@@ -545,8 +548,8 @@ void run_evolve(const DarkArgs& a) {
   j["max_strain"] = e.max_strain;
   j["samples_per_period"] = a.samples;
   if (!a.out.empty())
-    write_evolution(a.out, e, {{"x", "strain x_n"}, {"y", "strain y_n"}},
-                    fmt::format("{} {}-centred dark breather, ρ = {:g}, ω_b = {:g}", a.branch, a.center, a.p.rho, a.omega_b),
+    write_evolution(a.out, e, {{"x", "strain x_{n}"}, {"y", "strain y_{n}"}},
+                    fmt::format("{} {}-centred dark breather, ρ = {:.4g}, ω_{{b}} = {:g}", a.branch, a.center, a.p.rho, a.omega_b),
                     j);
   std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
 }
@@ -706,10 +709,11 @@ void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
     if (!a.out.empty()) {
       std::vector<EvolutionVariable> fields;
       const std::vector<std::string> meanings = model_variable_meanings(m);
-      for (std::size_t v = 0; v < variables.size(); ++v) fields.push_back({variables[v], meanings[v]});
+      for (std::size_t v = 0; v < variables.size(); ++v) fields.push_back({variables[v], gnuplot_literal(meanings[v])});
       write_evolution(a.out, e, fields,
-                      fmt::format("{} {} {}-centred dark breather, ω_b = {:g}", m.model.name(),
-                                  m.model.definition().branch_names.at(m.ansatz.branch), a.center, a.omega_b),
+                      fmt::format("{} {} {}-centred dark breather, ω_{{b}} = {:g}", gnuplot_literal(m.model.name()),
+                                  gnuplot_literal(m.model.definition().branch_names.at(m.ansatz.branch)), a.center,
+                                  a.omega_b),
                       j);
     }
     std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
@@ -750,14 +754,14 @@ void run_model_job(const DarkArgs& a, DarkJob job, const CLI::App& cmd) {
     std::string plot = "plot ";
     for (std::size_t v = 0; v < variables.size(); ++v)
       plot += fmt::format("{0}'profile.csv' skip 1 u 1:{1} w lp pt 3 t '{2}(0)', '' skip 1 u 1:{3} w p pt 4 ps 1.5 t "
-                          "'{2}(T_b)', '' skip 1 u 1:{4} w p pt 6 t '{2} seed'",
-                          v == 0 ? "" : ", ", 2 + 3 * v, variables[v], 4 + 3 * v, 3 + 3 * v);
+                          "'{2}(T_{{b}})', '' skip 1 u 1:{4} w p pt 6 t '{2} seed'",
+                          v == 0 ? "" : ", ", 2 + 3 * v, gnuplot_literal(variables[v]), 4 + 3 * v, 3 + 3 * v);
     figures.draw({"profile.gp",
                   fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
-                              "set terminal pngcairo size 1000,700 noenhanced\nset output outfile\n"
+                              "set terminal pngcairo size 1000,700\nset output outfile\n"
                               "set datafile separator ','\nset xlabel 'site n'\nset ylabel 'lattice variables: strains or displacements (model units)'\n"
-                              "set key outside\nset title '{} dark breather ({} centred), ω_b = {:.5f}: Z(0), Z(T_b), seed'\n{}\n",
-                              m.model.name(), a.center, a.omega_b, plot),
+                              "set key outside\nset title '{} dark breather ({} centred), ω_{{b}} = {:.5f}: Z(0), Z(T_{{b}}), seed'\n{}\n",
+                              gnuplot_literal(m.model.name()), a.center, a.omega_b, plot),
                   "profile.png"});
     if (job == DarkJob::floquet) write_multipliers(a.out, "multipliers", f, a.omega_b, figures);
     figures.finish(j);

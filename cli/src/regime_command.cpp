@@ -121,8 +121,8 @@ std::string cause_style(BoundaryCause c) {
 }
 std::string cause_title(BoundaryCause c) {
   switch (c) {
-    case BoundaryCause::curvature_zero: return "{/Symbol w}''=0";
-    case BoundaryCause::nonresonance2: return "c^2(1+{/Symbol r})=K_2 (nonres. 2)";
+    case BoundaryCause::curvature_zero: return "ω″=0";
+    case BoundaryCause::nonresonance2: return "c^2(1+ρ)=K_2 (nonres. 2)";
     case BoundaryCause::nonresonance1: return "nonres. 1 violated";
     case BoundaryCause::h_tilde_zero: return "h̃=0";
     case BoundaryCause::band_edge: return "band edge";
@@ -227,7 +227,7 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir, sim::Figures& figures)
      << "set terminal pngcairo size " << 700 * bs.size() << ",620 font 'DejaVu Sans,11'\n"
      << "set output outfile\nset datafile separator ','\n" << kPalette
      << "set multiplot\n"
-     << "set xlabel '{/Symbol r}'\nset ylabel '{/Symbol q}'\n"
+     << "set xlabel 'ρ'\nset ylabel 'θ'\n"
         "set key top right opaque box font ',9'\n";
   const double panel_w = 1.0 / static_cast<double>(bs.size());
   for (std::size_t k = 0; k < bs.size(); ++k) {
@@ -249,8 +249,8 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir, sim::Figures& figures)
     const bool inset = b == Branch::acoustic && rr[0] < 0.3 && rr[1] > 0.35;
     const double in_lo = std::max(rr[0], 0.04), in_hi = 0.35, in_theta = 1.6;
     gp << "set origin " << k * panel_w << ",0\nset size " << panel_w << ",1\n"
-       << "set title '" << bn << " branch ({/Symbol a}=" << a.p.alpha << ", {/Symbol d}_0="
-       << a.p.delta0 << ", {/Symbol k}=" << a.p.kappa << ")'\n"
+       << fmt::format("set title '{} branch (α = {:.4g}, δ_0 = {:.4g}, κ = {:.4g})'\n", bn, a.p.alpha, a.p.delta0,
+                      a.p.kappa)
        << "set xrange [" << rr[0] << ":" << rr[1] << "]\nset yrange [0:pi]\n"
        << (b == Branch::acoustic ? "set key bottom left\n" : "set key top right\n");
     if (inset)
@@ -289,7 +289,7 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir, sim::Figures& figures)
          << "set xrange [" << in_lo << ":" << in_hi << "]\nset yrange [" << in_theta << ":pi]\n"
          << "set xtics 0.1 font ',8'\nset ytics 0.5 font ',8'\n"
          << zplot << "\n"
-         << "set xlabel '{/Symbol r}'\nset ylabel '{/Symbol q}'\nset key\nset xtics auto\n"
+         << "set xlabel 'ρ'\nset ylabel 'θ'\nset key\nset xtics auto\n"
             "set ytics auto\n";
     }
     int focusing = 0;
@@ -388,18 +388,18 @@ json map_delta0_omega(const MapArgs& a, const fs::path& dir, sim::Figures& figur
      << "set multiplot layout 2,1 margins 0.12,0.96,0.07,0.95 spacing 0,0.12\n"
      << (a.delta0_log ? "set logscale x\n" : "") << "set xrange [" << dr[0] << ":" << dr[1]
      << "]\nset yrange [" << wr[0] << ":" << wr[1] << "]\n"
-     << "set xlabel '{/Symbol d}_0'\nset ylabel '{/Symbol w}'\n"
-     << "set title \"" << bn << " band, {/Symbol r}=" << a.p.rho << ", {/Symbol k}=" << a.p.kappa
-     << ", {/Symbol a}=" << a.p.alpha << ": hatched = focusing ({/Symbol w}''h̃ < 0)\"\n"
+     << "set xlabel 'δ_0'\nset ylabel 'ω'\n"
+     << fmt::format("set title \"{} band, ρ = {:.4g}, κ = {:.4g}, α = {:.4g}: hatched = focusing (ω″h̃ < 0)\"\n", bn,
+                    a.p.rho, a.p.kappa, a.p.alpha)
      << "set key top left opaque box font ',9'\n"
      << "plot 'intervals_" << tag
      << ".csv' using 1:(($2+$3)/2):8:9:2:3 with boxxyerror fs pattern 4 noborder lc rgb "
         "'#cc3366' title 'focusing', \\\n"
      << "  'band_edges_" << tag << ".csv' using 1:3 with lines lc rgb '#000000' dt 3 lw 2 title "
-     << (b == Branch::optical ? "'{/Symbol w}_+({/Symbol p})'" : "'{/Symbol w}_{−}({/Symbol p})'");
+     << (b == Branch::optical ? "'ω_+(π)'" : "'ω_{−}(π)'");
   if (b == Branch::optical)
     gp << ", \\\n  'band_edges_" << tag
-       << ".csv' using 1:2 with lines lc rgb '#ff0000' lw 2 title '{/Symbol w}_+(0)'";
+       << ".csv' using 1:2 with lines lc rgb '#ff0000' lw 2 title 'ω_+(0)'";
   json curves_info = json::object();
   if (!a.no_curves) {
     const auto t1 = std::chrono::steady_clock::now();
@@ -496,7 +496,7 @@ json map_model(const MapArgs& a, const Model& m, const ModelMapPlan& plan, const
      << "if (!exists('outfile')) outfile = 'regime_" << plane << ".png'\n"
      << "set terminal pngcairo size " << 700 * plan.branches.size() << ",620 font 'DejaVu Sans,11'\n"
      << "set output outfile\nset datafile separator ','\n" << kPalette
-     << "set multiplot\nset xlabel '" << plan.axis << "'\nset ylabel '{/Symbol q}'\n"
+     << "set multiplot\nset xlabel '" << plan.axis << "'\nset ylabel 'θ'\n"
      << "set key top right opaque box font ',9'\n";
   const double panel_w = 1.0 / static_cast<double>(plan.branches.size());
   for (std::size_t k = 0; k < plan.branches.size(); ++k) {

@@ -24,6 +24,7 @@
 #include "lrchain/sim/output_lock.hpp"
 #include "report/html_report.hpp"
 #include "report/lrchain_process.hpp"
+#include "report/published_paths.hpp"
 #include "report/steps.hpp"
 
 
@@ -216,6 +217,7 @@ void run_reproduce(const ReproduceArgs& a) {
   for (auto& section : sections)
     for (auto& figure : section.figures) figure.file = sim::figure_file_name(figure.file);
   info.total_seconds = elapsed();
+  report::point_json_files_at(partial, out);  // the runs' JSON files name DIR, not DIR.partial
   write_html_report(ctx.out, sections, info);
   if (fs::exists(out)) {
     if (!fs::is_empty(out) && !has_report_marker(out))

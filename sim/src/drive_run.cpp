@@ -315,7 +315,7 @@ set ylabel "t (dimensionless)"
 set logscale cb
 set cbrange [{:.3e}:{:.3e}]
 {}
-set cblabel "energy density e_n, eq. (40)" noenhanced
+set cblabel "energy density e_{{n}}, eq. (40)"
 set rmargin at screen 0.40
 set format cb "%.0e"
 set xrange [1:{:.1f}]

@@ -37,7 +37,7 @@ std::shared_ptr<const TableSchema> bright_table() {
        number("sample_every", positive, number_text(d.sample_every), "E_x, E_y, energy, centre sampled every this many T_b"),
        number("spacetime_every", positive, number_text(d.spacetime_every), "an energy density row every this many T_b"),
        numbers("snapshot_periods", non_negative, numbers_text(d.snapshot_periods), "snapshot times in T_b"),
-       integer("centre_window", 1, max_sites, std::to_string(d.centre_window), "sites m of the energy centre (eq. ectr)"),
+       integer("centre_window", 1, max_sites, std::to_string(d.centre_window), "sites m of the energy centre (eq. (41))"),
        number("error_window_end", NumberRange::any(), "none",
               "also report max E_x, E_y over times t <= this (when > 0)"),
        boolean("ansatz_ends", d.ansatz_ends ? "true" : "false", "end beads follow the ansatz (emitting ends)"),

@@ -335,7 +335,7 @@ set multiplot layout 1,2
 set xlabel "site n"
 set ylabel "t (dimensionless)"
 {}
-set cblabel "energy density e_n, eq. (40)" noenhanced
+set cblabel "energy density e_{{n}}, eq. (40)"
 set rmargin at screen 0.40
 set cbrange [0:{:.3e}]
 set autoscale fix
@@ -347,7 +347,7 @@ set autoscale
 set datafile separator ","
 set xlabel "t (dimensionless)"
 set ylabel "contrast (max e - min e)/mean e"
-set y2label "site of the minimum of e_n" noenhanced
+set y2label "site of the minimum of e_{{n}}"
 set y2tics
 set ytics nomirror
 set yrange [0:*]
@@ -355,7 +355,7 @@ set offsets 0, 0, graph 0.12, 0
 set key top left opaque box
 {}plot 'series.csv' using 1:3 skip 1 with lines lw 1.2 title "contrast", \
      {:g} with lines dt 2 lw 1.5 lc rgb "black" title "threshold {:g}", \
-     'series.csv' using 1:4 skip 1 axes x1y2 with dots lc rgb "red" title "min-e site"
+     'series.csv' using 1:4 skip 1 axes x1y2 with points pt 7 ps 0.2 lc rgb "red" title "min-e site"
 unset multiplot
 )GP",
                      viridis_palette, 2 * emean,

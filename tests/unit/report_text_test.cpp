@@ -7,6 +7,9 @@
 #include <regex>
 #include <sstream>
 
+#include "lrchain/params.hpp"
+#include "lrchain/process.hpp"
+#include "lrchain/sim/experiment_config.hpp"
 #include "report/latex_numbering.hpp"
 #include "report/markdown_html.hpp"
 #include "report/report.hpp"
@@ -132,5 +135,38 @@ TEST_CASE("markdown: GitHub tables keep their columns with escaped pipes — hea
     CHECK(n == 3);
   }
   CHECK(rows == 3);
-  CHECK(html.find("||x_n(0)||_inf") != std::string::npos);
+  CHECK(html.find("||x<sub>n</sub>(0)||_inf") != std::string::npos);
+}
+
+TEST_CASE("errata page: ASCII subscripts of the text rendered, code and long names left alone") {
+  CHECK(html_subscripts("E_x and E_y, ω_b = 2.2, ω_opt, ‖x_n(0)‖∞") ==
+        "E<sub>x</sub> and E<sub>y</sub>, ω<sub>b</sub> = 2.2, ω<sub>opt</sub>, ‖x<sub>n</sub>(0)‖∞");
+  CHECK(html_subscripts("<code>x_n</code> max_E_x trailing_structure <a href=\"a_b.html\">T_b</a>") ==
+        "<code>x_n</code> max_E_x trailing_structure <a href=\"a_b.html\">T<sub>b</sub></a>");
+  CHECK(markdown_to_html("E_x (`E_x`)\n") == "<p>E<sub>x</sub> (<code>E_x</code>)</p>\n");
+}
+
+TEST_CASE("texts users read outside the report cite equations by number, not by LaTeX label") {
+  // docs/configs.md (generated from the schema), the parameter ranges (error messages) and the
+  // subcommands' help: "eq. (43)", never "eq:cimi" or "eq. cimi".
+  const std::regex label(R"((eq|fig)s?(:|\. )[A-Za-z])");
+  std::vector<std::pair<std::string, std::string>> texts = {{"config reference", lrchain::sim::experiment_configs_markdown()}};
+  for (const auto& range : lrchain::model_parameter_ranges()) texts.push_back({range.name, range.meaning});
+  texts.push_back({"epsilon", lrchain::modulation_amplitude_range.meaning});
+  for (const std::vector<std::string> sub : std::vector<std::vector<std::string>>{
+           {"simulate", "modulated"}, {"simulate", "bright"}, {"simulate", "drive"}, {"coeffs"}, {"dark", "evolve"}}) {
+    std::vector<std::string> argv{LRCHAIN_CLI};
+    argv.insert(argv.end(), sub.begin(), sub.end());
+    argv.push_back("--help");
+    lrchain::ProcessOptions o;
+    o.capture_stdout = true;
+    const auto r = lrchain::run_program(argv, o);
+    REQUIRE(r.exit_code == 0);
+    texts.push_back({sub.back() + " --help", r.output});
+  }
+  for (const auto& [where, text] : texts) {
+    std::smatch m;
+    INFO(where, ": ", std::regex_search(text, m, label) ? m.str() + m.suffix().str().substr(0, 30) : "");
+    CHECK_FALSE(std::regex_search(text, label));
+  }
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "markdown_html.hpp"
+#include "rich_text.hpp"
 
 namespace lrchain::report {
 
@@ -89,7 +90,7 @@ std::string markdown_to_html(const std::string& markdown) {
     pos = it->position() + it->length();
   }
   out.append(html, pos);
-  return out;
+  return html_subscripts(out);
 }
 
 }  // namespace lrchain::report

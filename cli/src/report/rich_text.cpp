@@ -1,6 +1,7 @@
 // ASCII physics names and LaTeX labels -> HTML (rich_text.hpp).
 #include "rich_text.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <optional>
@@ -115,6 +116,70 @@ std::string rich_text(const std::string& text) {
     }
     out += html_escape(std::string(1, text[i]));
     ++i;
+  }
+  return out;
+}
+
+namespace {
+
+bool is_ascii_alnum(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); }
+bool is_ascii_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+
+// Start of the subscript base that ends just before text[underscore], or npos if there is none: one or
+// two ASCII letters, or one Greek letter (UTF-8 lead byte 0xCE or 0xCF), not preceded by a letter,
+// digit or underscore.
+std::size_t subscript_base(const std::string& text, std::size_t underscore) {
+  std::size_t start = underscore;
+  while (start > 0 && is_ascii_alnum(text[start - 1])) --start;
+  const std::size_t length = underscore - start;
+  if (length == 0 && underscore >= 2) {
+    const auto lead = static_cast<unsigned char>(text[underscore - 2]);
+    if (lead == 0xCE || lead == 0xCF) start = underscore - 2;
+  } else if (length > 2 || !is_ascii_alpha(text[start])) {
+    return std::string::npos;
+  }
+  if (start == underscore) return std::string::npos;
+  if (start > 0 && (is_ascii_alnum(text[start - 1]) || text[start - 1] == '_')) return std::string::npos;
+  return start;
+}
+
+// A run of HTML-escaped text between tags, with its subscripts rendered.
+std::string text_subscripts(const std::string& text) {
+  std::string out;
+  std::size_t copied = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '_' || subscript_base(text, i) == std::string::npos) continue;
+    std::size_t end = i + 1;
+    while (end < text.size() && is_ascii_alnum(text[end])) ++end;
+    const bool word = end > i + 1 && end - i - 1 <= 4 && (end == text.size() || text[end] != '_');
+    if (!word) continue;
+    out.append(text, copied, i - copied);
+    out += "<sub>" + text.substr(i + 1, end - i - 1) + "</sub>";
+    copied = end;
+    i = end - 1;
+  }
+  return out + text.substr(copied);
+}
+
+}  // namespace
+
+std::string html_subscripts(const std::string& html) {
+  std::string out;
+  int verbatim = 0;  // inside <code> or <pre>
+  for (std::size_t i = 0; i < html.size();) {
+    if (html[i] == '<') {
+      const std::size_t close = html.find('>', i);
+      const std::string tag = html.substr(i, close == std::string::npos ? std::string::npos : close - i + 1);
+      if (tag.rfind("<code", 0) == 0 || tag.rfind("<pre", 0) == 0) ++verbatim;
+      if ((tag.rfind("</code", 0) == 0 || tag.rfind("</pre", 0) == 0) && verbatim > 0) --verbatim;
+      out += tag;
+      i += tag.size();
+      continue;
+    }
+    const std::size_t next = std::min(html.find('<', i), html.size());
+    const std::string text = html.substr(i, next - i);
+    out += verbatim > 0 ? text : text_subscripts(text);
+    i = next;
   }
   return out;
 }

@@ -9,6 +9,12 @@ namespace lrchain::report {
 
 std::string rich_text(const std::string& text);
 
+// Rendered HTML (the errata page) with the ASCII subscripts of its text shown as subscripts:
+// x_n, E_x, T_b, ω_b, ω_opt -> x<sub>n</sub>, ...; a base of one or two ASCII letters or one Greek
+// letter, a subscript of up to four letters or digits. Tags, <code> and <pre> are left as they are,
+// and so are longer names (max_E_x).
+std::string html_subscripts(const std::string& html);
+
 // Plain text (help, tables) with the LaTeX labels replaced by the compiled paper's numbers
 // ("eq:disp1d" -> "eq. (7)", "fig:focus3" -> "Fig. 7"); unknown labels and everything else unchanged.
 std::string plain_citations(const std::string& text);

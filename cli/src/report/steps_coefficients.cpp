@@ -1,12 +1,14 @@
 // Reproduce step: the frequencies, periods and group velocities the paper quotes (Secs. 4-5),
 // from the coefficient library (generated from the GiNaC derivation), and the analogues of
 // Fig. 1 (dispersion branches) and Fig. 3 (c, omega'', h_tilde versus theta).
+#include <algorithm>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <vector>
 
 #include "lrchain/ansatz/bright_breather.hpp"
 #include "lrchain/coefficients.hpp"
@@ -40,6 +42,41 @@ double ansatz_strain_sup(const BrightBreatherAnsatz& a, long N) {
   return m;
 }
 
+// theta/pi of the coefficient figures: 600 uniform samples, plus samples closing in on each pole
+// of h_tilde (a sign change between samples that are not both near 0, located as a zero of
+// 1/h_tilde by TOMS 748), so that the curve leaves the frame at a pole instead of ending at the
+// last uniform sample (rho = 10 near theta/pi = 0.117 is narrower than the sampling).
+std::vector<double> figure_thetas_over_pi(const Params& p) {
+  std::vector<double> t;
+  for (int i = 1; i <= 600; ++i) t.push_back(i / 600.0);
+  std::vector<double> near_poles;
+  for (const Branch b : {Branch::optical, Branch::acoustic}) {
+    const auto h = [&](double x) { return coefficients(p, b, pi * x).h_tilde; };
+    for (std::size_t i = 1; i < t.size(); ++i) {
+      const double left = h(t[i - 1]), right = h(t[i]);
+      if (!std::isfinite(left) || !std::isfinite(right) || left * right >= 0 ||
+          std::min(std::abs(left), std::abs(right)) <= 0.1)
+        continue;
+      // 1/h_tilde is 0 where the coefficient is singular (not finite): that is the pole.
+      const auto inverse = [&](double x) {
+        const double v = h(std::clamp(x, t[i - 1], t[i]));
+        return std::isfinite(v) ? 1.0 / v : 0.0;
+      };
+      std::uintmax_t iterations = 100;
+      const auto bracket = boost::math::tools::toms748_solve(inverse, t[i - 1], t[i],
+                                                             boost::math::tools::eps_tolerance<double>(45), iterations);
+      const double pole = 0.5 * (bracket.first + bracket.second);
+      if (!std::isfinite(pole)) continue;
+      for (const double distance : {3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6})
+        for (const double x : {pole - distance, pole + distance})
+          if (x > t[i - 1] && x < t[i]) near_poles.push_back(x);
+    }
+  }
+  t.insert(t.end(), near_poles.begin(), near_poles.end());
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
 void write_figures(const std::filesystem::path& dir, Section& s) {
   sim::ensure_directory(dir);
   // Fig. 1: the two branches at rho = 1/3; Fig. 3: c, omega'', h_tilde for rho = 1/3 and 10.
@@ -47,12 +84,12 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
     std::ostringstream csv;
     csv << "theta_over_pi,omega_opt,omega_ac,c_opt,c_ac,curv_opt,curv_ac,htilde_opt,htilde_ac\n";
     const Params p = with(rho);
-    for (int i = 1; i <= 600; ++i) {
-      const double th = pi * i / 600.0;
+    for (const double theta_over_pi : figure_thetas_over_pi(p)) {
+      const double th = pi * theta_over_pi;
       const auto o = coefficients(p, Branch::optical, th);
       const auto a = coefficients(p, Branch::acoustic, th);
       auto v = [](double d) { return std::isfinite(d) ? fmt::format("{:.10g}", d) : std::string("NaN"); };
-      csv << fmt::format("{:.6f},{},{},{},{},{},{},{},{}\n", th / pi, v(o.omega), v(a.omega),
+      csv << fmt::format("{:.9g},{},{},{},{},{},{},{},{}\n", th / pi, v(o.omega), v(a.omega),
                          v(o.group_velocity), v(a.group_velocity), v(o.curvature), v(a.curvature),
                          v(o.h_tilde), v(a.h_tilde));
     }
@@ -75,13 +112,13 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
       "set output outfile\nset datafile separator ','\nset multiplot layout 1,2\n"
       "set xlabel 'wavenumber θ/π'\nset ylabel 'c, ω″, h̃ (dimensionless)'\nset yrange [-3:3]\n"
       "set key bottom left font ',8'\nset grid\n"
-      // h̃ has poles (breakdown of the non-resonance conditions): values beyond the frame, and a
-      // sample where h̃ changes sign between values not both near 0 (a pole narrower than the
-      // sampling, rho = 10 near theta/pi = 0.12), are left out of the line, which breaks it there
-      // instead of drawing a spike through the pole; the CSV keeps every value.
+      // h̃ has poles (breakdown of the non-resonance conditions; the CSV samples close in on
+      // each): the first sample past a pole, where h̃ changes sign between values not both near 0,
+      // is left out of the line, which breaks it there instead of joining +inf to -inf; the line
+      // leaves the frame on both sides. The CSV keeps every value.
       "pole(v, p) = v * p < 0 && (abs(v) < abs(p) ? abs(v) : abs(p)) > 0.1\n"
-      "h8(v) = (p8 = last8, last8 = v, abs(v) >= 3 || pole(v, p8) ? NaN : v)\n"
-      "h9(v) = (p9 = last9, last9 = v, abs(v) >= 3 || pole(v, p9) ? NaN : v)\n";
+      "h8(v) = (p8 = last8, last8 = v, pole(v, p8) ? NaN : v)\n"
+      "h9(v) = (p9 = last9, last9 = v, pole(v, p9) ? NaN : v)\n";
   for (const auto& [tag, label] : {std::pair{"rho_1_3", "ρ = 1/3"}, std::pair{"rho_10", "ρ = 10"}}) {
     gp += fmt::format(
         "set title \"c (green), ω″ (red), h̃ (blue): {}; optical solid, acoustic dashed\"\n"

@@ -54,8 +54,16 @@ std::string branch_facts(const json& j, const CsvTable& t) {
 }
 
 struct BranchFigures {
-  std::string branch_figure, branch_caption, moduli_figure, moduli_caption;
+  std::string branch_figure, branch_caption, moduli_figure;
 };
+
+// floquet_moduli.png draws a second (bottom) panel only for a branch continued past its turning point.
+std::string moduli_caption(bool past_turning_point) {
+  return std::string("Moduli of the Floquet multipliers outside the unit circle versus omega_b, ") +
+         (past_turning_point ? "weakly (top) and strongly (bottom) nonlinear parts"
+                             : "weakly nonlinear part only (this run stops before the turning point)") +
+         "; blue complex, red real > 0, green real < 0.";
+}
 
 // A section for one continued branch: runs it, states what was computed, adds both figures.
 Section branch_section(const StepContext& ctx, const std::string& id, const std::string& title,
@@ -70,13 +78,10 @@ Section branch_section(const StepContext& ctx, const std::string& id, const std:
                                          quick_sites, run.quick_points, run.full_points));
   const std::string dir = "dark/" + run.sub + "/";
   s.figures.push_back({dir + "branch.png", figures.branch_figure, figures.branch_caption});
-  s.figures.push_back({dir + "floquet_moduli.png", figures.moduli_figure, figures.moduli_caption});
+  const bool turned = !summary.value("turning_points", json::array()).empty();
+  s.figures.push_back({dir + "floquet_moduli.png", figures.moduli_figure, moduli_caption(turned)});
   return s;
 }
-
-const std::string moduli_legend =
-    "Moduli of the Floquet multipliers outside the unit circle versus omega_b, weakly (top) and strongly (bottom) "
-    "nonlinear parts; blue complex, red real > 0, green real < 0.";
 
 Section solutions(const StepContext& ctx) {
   Section s;
@@ -120,7 +125,7 @@ Section optical_bond(const StepContext& ctx) {
       {"fig:r03_norm, left",
        "Renormalised l2 norm (eq:l2norm) of bond-centred optical dark breathers versus omega_b; red: real "
        "instability; vertical line: omega_opt = 2.4495.",
-       "fig:opt_floq_r03, left", moduli_legend},
+       "fig:opt_floq_r03, left"},
       t, j);
   double turning = not_computed;
   for (const auto& tp : j.value("turning_points", json::array()))
@@ -139,7 +144,7 @@ Section optical_site(const StepContext& ctx) {
                         {"optical_site_rho_1_3", "1/3", "optical", "site", "2.44", 45, 140},
                         {"fig:r03_norm, right",
                          "Renormalised l2 norm of site-centred optical dark breathers versus omega_b; red: real instability.",
-                         "fig:opt_floq_r03, right", moduli_legend},
+                         "fig:opt_floq_r03, right"},
                         t, j);
 }
 
@@ -150,7 +155,7 @@ Section acoustic_bond(const StepContext& ctx) {
                         {"acoustic_bond_rho_1_3", "1/3", "acoustic", "bond", "1.41", 50, 150},
                         {"fig:acs_floq_bc_r03, left",
                          "Renormalised l2 norm of bond-centred acoustic dark breathers versus omega_b (omega_acs = 1.4142).",
-                         "fig:acs_floq_bc_r03, right", moduli_legend},
+                         "fig:acs_floq_bc_r03, right"},
                         t, j);
 }
 
@@ -179,7 +184,7 @@ Section rho1(const StepContext& ctx, const std::string& center) {
       {"fig:r1_norm, " + side,
        "Renormalised l2 norm of " + center + "-centred optical dark breathers, rho = 1 (omega_opt = 2.2882); red: "
        "real instability.",
-       "fig:opt_floq_r1, " + side, moduli_legend},
+       "fig:opt_floq_r1, " + side},
       t, j);
   double at = not_computed;
   const double max_real = real_multiplier_near(t, 2.207, at);
@@ -198,7 +203,7 @@ Section rho10_optical(const StepContext& ctx) {
                              {"optical_bond_rho_10", "10", "optical", "bond", "2.235", 20, 120},
                              {"Sec. 5.3 (no figure in the paper)",
                               "Renormalised l2 norm of bond-centred optical dark breathers, rho = 10 (omega_opt = 2.2406).",
-                              "Sec. 5.4 (no figure in the paper)", moduli_legend},
+                              "Sec. 5.4 (no figure in the paper)"},
                              t, j);
   // "the oscillatory instability appears to set in already in the immediate vicinity of the
   // linear limit at the edge of the optical band": the first branch point, 0.0056 below the edge.
@@ -217,7 +222,7 @@ Section rho01_acoustic(const StepContext& ctx) {
                              {"acoustic_bond_rho_0.1", "0.1", "acoustic", "bond", "1.85", 36, 150},
                              {"Sec. 5.3 (no figure in the paper)",
                               "Renormalised l2 norm of bond-centred acoustic dark breathers, rho = 0.1 (omega_acs = 1.8625).",
-                              "Sec. 5.4 (no figure in the paper)", moduli_legend},
+                              "Sec. 5.4 (no figure in the paper)"},
                              t, j);
   // "the real instability of some of the weakly nonlinear solutions is again more significant
   // than the oscillatory instability": weakly nonlinear points where max real > max oscillatory.

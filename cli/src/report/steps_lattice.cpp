@@ -42,7 +42,10 @@ Section exp6(const StepContext& ctx) {
                                    "a train of breathers", Claim::above, 1, json_number(j, "final_peaks"),
                                    "local maxima of 3-site smoothed e_n above 10 % of the maximum"));
   add_figures(s, s.id,
-                       {{"energy.png", "fig:spatio", "Energy density e_n(t) of the driven chain (left) and a zoom."},
+                       {{"energy.png", "fig:spatio",
+                         "Left: energy density e_n(t) of the driven chain (logarithmic colour scale) with n = c_+ t "
+                         "(white dashed); right: the front (last site with e_n above 10 % of its maximum), the "
+                         "participation number of e_n, and c_+ t."},
                         {"snapshots.png", "fig:spatio:stab1",
                          "Bead velocities du_n/dt at t = 779.9 (periodic wave) and t = 2400 (travelling multibreather)."}});
   return s;
@@ -76,7 +79,10 @@ Section exp7(const StepContext& ctx) {
   add_figures(s, s.id,
                        {{"snapshots.png", "fig:midarkb, velocity panels",
                          "Bead velocities du_n/dt at t = 0, 17100 (short-wavelength instability) and 32400 (dark breather)."},
-                        {"energy.png", "fig:midarkb, bottom right", "Energy density e_n(t) in grey levels."}});
+                        {"energy.png", "fig:midarkb, bottom right",
+                         "Left: energy density e_n(t) (viridis colour scale); right: the contrast (max e - min e)/mean e "
+                         "of the smoothed e_n with the threshold (dashed) and the onset time (dotted), and the site of "
+                         "the minimum of e_n (red dots, right axis)."}});
   return s;
 }
 

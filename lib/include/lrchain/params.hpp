@@ -47,10 +47,11 @@ inline constexpr PhysicalRange kappa_range{
 // frequency shrink like rho^(-1/2), so at 1e4 one period of the slow branch is already 100 times
 // the bead's period.
 inline constexpr PhysicalRange rho_range{"rho", 0.0, 1.0e4, true, false, "mass ratio m2/m1 of resonator to bead"};
-// The small amplitude epsilon of the modulated wave (eq. cimi), the expansion parameter of the
-// multiple-scale analysis: at most 1 (the paper uses 0.03).
+// The small amplitude epsilon of the modulated wave (eq:cimi), the expansion parameter of the
+// multiple-scale analysis: at most 1 (the paper uses 0.03). The meaning is shown to users as it is
+// (error messages, docs/configs.md), so it cites the compiled paper's number, eq. (43).
 inline constexpr PhysicalRange modulation_amplitude_range{
-    "epsilon", 0.0, 1.0, true, false, "small amplitude of the modulated wave (eq. cimi)"};
+    "epsilon", 0.0, 1.0, true, false, "small amplitude of the modulated wave (eq. (43))"};
 
 // The four model parameters' ranges, in the order alpha, delta0, kappa, rho.
 const std::vector<PhysicalRange>& model_parameter_ranges();
