@@ -153,7 +153,7 @@ TEST_CASE("texts users read outside the report cite equations by number, not by 
   std::vector<std::pair<std::string, std::string>> texts = {{"config reference", lrchain::sim::experiment_configs_markdown()}};
   for (const auto& range : lrchain::model_parameter_ranges()) texts.push_back({range.name, range.meaning});
   texts.push_back({"epsilon", lrchain::modulation_amplitude_range.meaning});
-  for (const std::vector<std::string> sub : std::vector<std::vector<std::string>>{
+  for (const std::vector<std::string>& sub : std::vector<std::vector<std::string>>{
            {"simulate", "modulated"}, {"simulate", "bright"}, {"simulate", "drive"}, {"coeffs"}, {"dark", "evolve"}}) {
     std::vector<std::string> argv{LRCHAIN_CLI};
     argv.insert(argv.end(), sub.begin(), sub.end());
