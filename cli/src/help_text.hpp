@@ -20,7 +20,13 @@ inline std::string exit_codes_text() {
 // Sets the help footer of `cmd` to its examples (one command line each) and the exit codes.
 inline void add_examples(CLI::App& cmd, std::initializer_list<std::string> examples) {
   std::string text = examples.size() > 1 ? "Examples:\n" : "Example:\n";
-  for (const auto& e : examples) text += "  " + e + "\n";
+  bool example_files = false;
+  for (const auto& e : examples) {
+    text += "  " + e + "\n";
+    example_files = example_files || e.find(" examples/") != std::string::npos;
+  }
+  if (example_files)
+    text += "(examples/ is the source tree's; an installed lrchain has it in <prefix>/share/lrchain/examples)\n";
   cmd.footer(text + "\n" + exit_codes_text());
 }
 
