@@ -180,10 +180,7 @@ Solved solve(const DarkArgs& a) {
   NewtonResult res = newton_solve(shooting, shooting.unknowns_from_z(dark_seed(ansatz, center, a.sites)),
                                   a.omega_b, o);
   if (!res.converged) {
-    std::string hist;
-    for (const auto& r : res.history) hist += fmt::format(" {:.3e}", r.residual);
-    const std::string message = "Newton did not converge at omega_b = " + fmt::format("{}", a.omega_b) +
-                                " (" + res.failure + "); residual history:" + hist;
+    const std::string message = newton_failure_message(res, a.omega_b);
     json j = base_json(a, ansatz, res);
     j["failure"] = {{"kind", "newton"}, {"message", message}};
     std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
@@ -656,10 +653,7 @@ NewtonResult model_newton(const DarkArgs& a, const ModelDarkJob& m, const ModelD
     o.progress = print_newton_progress;
   NewtonResult res = newton_solve(shooting, model_dark_seed(m.ansatz, parse_dark_center(a.center), a.sites), a.omega_b, o);
   if (!res.converged) {
-    std::string hist;
-    for (const auto& r : res.history) hist += fmt::format(" {:.3e}", r.residual);
-    const std::string message = fmt::format("Newton did not converge at omega_b = {} ({}); residual history:{}",
-                                            a.omega_b, res.failure, hist);
+    const std::string message = newton_failure_message(res, a.omega_b);
     json j = model_base_json(a, m, res);
     j["failure"] = {{"kind", "newton"}, {"message", message}};
     std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());

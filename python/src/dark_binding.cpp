@@ -93,10 +93,7 @@ Solved solve(const DarkJob& j, const std::atomic<bool>* stop) {
 // Throws NumericalFailure with the residual history if Newton did not converge.
 void require_converged(const DarkJob& j, const NewtonResult& r) {
   if (r.converged) return;
-  std::string history;
-  for (const auto& rec : r.history) history += fmt::format(" {:.3e}", rec.residual);
-  throw NumericalFailure(fmt::format("Newton did not converge at omega_b = {} ({}); residual history:{}", j.omega_b,
-                                     r.failure, history));
+  throw NumericalFailure(sim::dark::newton_failure_message(r, j.omega_b));
 }
 
 // The solution as a dict: profile x_n(0), y_n(0), the seed, Newton's history, the measures (Sec. 5.3).

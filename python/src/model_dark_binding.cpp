@@ -87,12 +87,7 @@ NewtonResult solve(const ModelDarkJob& j, const ModelDarkShooting& shooting, con
     if (stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
   };
   NewtonResult r = newton_solve(shooting, seed, j.omega_b, o);
-  if (!r.converged) {
-    std::string history;
-    for (const auto& rec : r.history) history += fmt::format(" {:.3e}", rec.residual);
-    throw NumericalFailure(fmt::format("Newton did not converge at omega_b = {} ({}); residual history:{}", j.omega_b,
-                                       r.failure, history));
-  }
+  if (!r.converged) throw NumericalFailure(sim::dark::newton_failure_message(r, j.omega_b));
   return r;
 }
 

@@ -48,7 +48,7 @@ def test_evolve_stays_on_the_orbit():
 
 def test_newton_failure_raises_numerical_failure():
     # From the seed Newton needs 4 steps at omega_b = 2.42 (the CLI's residual history above).
-    with pytest.raises(lrchain.NumericalFailure, match="Newton did not converge at omega_b = 2.42"):
+    with pytest.raises(lrchain.NumericalFailure, match="Newton found no breather at omega_b = 2.42"):
         lrchain.dark.solve(lrchain.Params(), omega_b=2.42, max_iterations=1)
 
 

@@ -24,3 +24,12 @@ TEST_CASE("dark Newton: a solve that collapses to the zero state is not a breath
   CHECK_FALSE(res.converged);
   CHECK(res.failure.find("converged to the trivial state") != std::string::npos);
 }
+
+TEST_CASE("dark Newton: the failure message names omega_b, the reason and the residual history") {
+  NewtonResult res;
+  res.failure = "no convergence in 20 iterations";
+  res.history = {{0, 3.188, 1.0}, {1, 1.208e-3, 0.0}};
+  CHECK(newton_failure_message(res, 2.42) ==
+        "Newton found no breather at omega_b = 2.42: no convergence in 20 iterations; residual history: 3.188e+00 "
+        "1.208e-03");
+}

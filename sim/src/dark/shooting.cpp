@@ -4,6 +4,8 @@
 #include <numbers>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/dark/tangent_propagation.hpp"
 
@@ -279,6 +281,13 @@ NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q
     result.q += step;
   }
   return result;
+}
+
+std::string newton_failure_message(const NewtonResult& result, double omega_b) {
+  std::string history;
+  for (const auto& record : result.history) history += fmt::format(" {:.3e}", record.residual);
+  return fmt::format("Newton found no breather at omega_b = {}: {}; residual history:{}", omega_b, result.failure,
+                     history);
 }
 
 Eigen::VectorXd dark_seed(const DarkBreatherAnsatz& ansatz, DarkCenter center, Index sites) {

@@ -190,7 +190,7 @@ JobResult run_dark(const Document& doc, const RunControl& control) {
       shooting, shooting.unknowns_from_z(dark::dark_seed(ansatz, center, s.sites)), ansatz.omega_b, {});
   if (!newton.converged) {
     r.status = PointStatus::numerical_failure;
-    r.reason = fmt::format("Newton did not converge at omega_b = {} ({})", ansatz.omega_b, newton.failure);
+    r.reason = fmt::format("Newton found no breather at omega_b = {}: {}", ansatz.omega_b, newton.failure);
     return r;
   }
   dark::ContinuationOptions o;

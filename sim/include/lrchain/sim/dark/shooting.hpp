@@ -128,6 +128,10 @@ struct NewtonResult {
 NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q0, double omega_b,
                           const NewtonOptions& options);
 
+// The message of a solve that did not converge: "Newton found no breather at omega_b = 1.6:
+// <failure>; residual history: 3.188e+00 1.208e+00 ...".
+std::string newton_failure_message(const NewtonResult& result, double omega_b);
+
 // Seed Z(0) from eq:xy_app at t = 0 on the array (centre in the middle, n_phys = i - (N-1)/2).
 Eigen::VectorXd dark_seed(const DarkBreatherAnsatz& ansatz, DarkCenter center, Index sites);
 
