@@ -4,6 +4,8 @@
 #include <fstream>
 #include <system_error>
 
+#include <fmt/format.h>
+
 #include "lrchain/errors.hpp"
 #include "report/lrchain_process.hpp"
 
@@ -40,9 +42,8 @@ std::string resolve_model_argument(const std::string& text) {
     throw InputError("--model " + text + ": no such file, and no shipped models were found (share/lrchain/models "
                      "beside this lrchain); give the path of a model file");
   std::sort(shipped.begin(), shipped.end());
-  std::string names;
-  for (const auto& name : shipped) names += (names.empty() ? "" : ", ") + name;
-  throw InputError("--model " + text + ": no such file or shipped model; the shipped models are " + names);
+  throw InputError(fmt::format("--model {}: no such file or shipped model; the shipped models are {}", text,
+                               fmt::join(shipped, ", ")));
 }
 
 }  // namespace lrchain::cli

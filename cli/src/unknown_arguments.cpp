@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "lrchain/config/strict_toml.hpp"
 
 namespace lrchain::cli {
@@ -70,9 +72,7 @@ std::string unknown_argument_message(const CLI::App& app) {
   const std::vector<std::string> names = subcommand_names(deepest);
   if (!names.empty()) {  // a command that needs its subcommand got a word that names none
     const std::string guess = config::closest_match(word, names);
-    std::string list;
-    for (const auto& name : names) list += (list.empty() ? "" : ", ") + name;
-    if (guess.empty()) return path + ": unknown subcommand '" + word + "'; give one of: " + list + see;
+    if (guess.empty()) return path + ": unknown subcommand '" + word + "'; give one of: " + fmt::format("{}", fmt::join(names, ", ")) + see;
     return path + ": unknown subcommand '" + word + "'; did you mean " + guess + "?";
   }
   return path + ": unexpected argument '" + word + "': every value follows its --option" + see;
