@@ -101,7 +101,7 @@ void register_derive(CLI::App& app) {
       ->type_name("FILE");
   cmd->add_option("--set", opts->set, "parameter value, repeatable: --set rho=1/3 --set kappa=2 (default: the model file's "
                   "defaults)")->type_name("NAME=VALUE");
-  cmd->add_flag("--json", opts->json, "print one JSON object instead of the text report (default: text)");
+  cmd->add_flag("--json", opts->json, "print one JSON object on one line instead of the text report (default: text)");
   cmd->add_flag("--latex", opts->latex, "write expressions in LaTeX (default: plain text)");
   add_examples(*cmd, {"lrchain derive --model klein_gordon",
                       "lrchain derive --model fput --set a=1/4 --set b=1/2 --json"});
@@ -110,7 +110,7 @@ void register_derive(CLI::App& app) {
     derivation::ModelFile file = derivation::load_model_file(opts->model);
     const GiNaC::exmap values = derivation::parameter_values(file, overrides(opts->set));
     const auto m = derivation::derive_model(std::move(file), values, symbols);
-    if (opts->json) std::printf("%s\n", to_json(*m, symbols, opts->latex).dump(2).c_str());
+    if (opts->json) std::printf("%s\n", to_json(*m, symbols, opts->latex).dump().c_str());
     else std::fputs(derivation::model_report(*m, symbols, opts->latex).c_str(), stdout);
     if (!m->passed()) throw std::runtime_error("model " + m->file.name + ": a derivation check failed (see the report)");
   });

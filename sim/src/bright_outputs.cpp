@@ -108,7 +108,7 @@ std::string snapshots_script(const BrightRunResult& r) {
                         ox, oy, width, height, ox + width, oy + height, percent_scale ? "0.06" : "*",
                         percent_scale ? "0.03" : "autofreq")
           : "";
-  return fmt::format(R"GP(# Snapshots of x_n, y_n (lattice, solid lines) vs the NLS ansatz eq:focus_app (black dashed), and E_x, E_y.
+  return fmt::format(R"GP(# Snapshots of x_n, y_n (lattice, solid lines) vs the NLS ansatz eq. (38) (black dashed), and E_x, E_y.
 if (!exists("outfile")) outfile = 'snapshots.png'
 set terminal pngcairo size 1400,1100 font ",11"
 set output outfile
@@ -143,7 +143,7 @@ std::string energy_script(const BrightRunResult& r) {
     for (float v : f.values) emax = std::max(emax, v);
   if (!(emax > 0)) emax = 1;
   const std::string every = r.record.fields.empty() ? "" : image_every(r.record.fields.front());
-  return fmt::format(R"GP(# Left: energy density e_n(t) (eq:edensity), log colour scale. Right: energy centre X(t) (eq:ectr).
+  return fmt::format(R"GP(# Left: energy density e_n(t) (eq. (40)), log colour scale. Right: energy centre X(t) (eq. (41)).
 if (!exists("outfile")) outfile = 'energy.png'
 set terminal pngcairo size 1400,600 font ",11"
 set output outfile

@@ -304,7 +304,7 @@ std::string drive_energy_script(const DriveRunResult& r) {
   for (const auto& f : r.record.fields)
     for (float v : f.values) emax = std::max(emax, v);
   if (!(emax > 0)) emax = 1;
-  return fmt::format(R"GP(# Energy density e_n(t) (eq:edensity) of the driven chain (Fig. 14 left), with n = c_+ t
+  return fmt::format(R"GP(# Energy density e_n(t) (eq. (40)) of the driven chain (Fig. 14 left), with n = c_+ t
 # (dashed), and the front of the wave pattern (right).
 if (!exists("outfile")) outfile = 'energy.png'
 set terminal pngcairo size 1400,650 font ",11"

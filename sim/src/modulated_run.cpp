@@ -325,7 +325,7 @@ std::string modulated_energy_script(const ModulatedRunResult& r, const nlohmann:
     onset = fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dt 3 lw 1.5 lc rgb 'dark-green' front\n"
                         "set label 'onset t = {0:.0f}' at {0}, graph 0.93 offset 0.5,0 tc rgb 'dark-green' front\n",
                         summary["instability_time"].get<double>());
-  return fmt::format(R"GP(# Energy density e_n(t) (eq:edensity) on the periodic chain (Fig. 16 bottom right), and the
+  return fmt::format(R"GP(# Energy density e_n(t) (eq. (40)) on the periodic chain (Fig. 16 bottom right), and the
 # contrast (max-min)/mean of the running-mean e_n with the position of its minimum (dark-breather centre);
 # dashed: the contrast threshold, dotted: the onset time (first contrast above it).
 if (!exists("outfile")) outfile = 'energy.png'

@@ -391,7 +391,7 @@ void add_sweep_config_cases(const std::filesystem::path& corpus_dir, Corpus& cor
   const std::string base_text = read_file(corpus_dir / base_name);
   if (base_text.empty()) corpus.errors.push_back("no " + base_name + " in " + corpus_dir.string());
   std::set<std::string> seen;  // table/key covered by an earlier file
-  for (const std::string file : sweep_config_files()) {
+  for (const std::string& file : sweep_config_files()) {
     const std::string text = read_file(corpus_dir / file);
     const auto lines = lines_of(text);
     toml::table root;

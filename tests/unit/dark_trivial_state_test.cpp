@@ -3,9 +3,12 @@
 // solve of dark_breather_test.cpp converges with an empty failure.)
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/sim/dark/continuation.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
 
 using namespace lrchain;
@@ -32,4 +35,47 @@ TEST_CASE("dark Newton: the failure message names omega_b, the reason and the re
   CHECK(newton_failure_message(res, 2.42) ==
         "Newton found no breather at omega_b = 2.42: no convergence in 20 iterations; residual history: 3.188e+00 "
         "1.208e-03");
+}
+
+namespace {
+// A one-unknown problem whose breather branch q = omega_b - 1 (state Z = (q, -q), amplitude |q|) ends
+// on the trivial state q = 0 for omega_b <= 1: F(q, omega_b) = q - max(omega_b - 1, 0).
+class BranchIntoTrivialState : public DarkShootingProblem {
+ public:
+  Index unknowns() const override { return 1; }
+  Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const override {
+    return Eigen::Vector2d(q(0), -q(0));
+  }
+  void evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual, Eigen::MatrixXd* jacobian,
+                Eigen::MatrixXd*) const override {
+    residual = Eigen::VectorXd::Constant(1, q(0) - std::max(omega_b - 1, 0.0));
+    if (jacobian) *jacobian = Eigen::RowVector2d(1.0, omega_b > 1 ? -1.0 : 0.0);
+  }
+  void jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
+                            Eigen::MatrixXd& jacobian, FloquetResult*) const override {
+    evaluate(q, omega_b, residual, &jacobian, nullptr);
+  }
+  void measure(const Eigen::VectorXd&, double, DarkMeasures&) const override {}
+};
+}  // namespace
+
+TEST_CASE("dark continuation: a branch that lands on the trivial state stops there") {
+  // From q = 0.5 at omega_b = 1.5 toward smaller omega_b the breather branch reaches q = 0 at
+  // omega_b = 1; past it every zero of F is the uniform state. Without the check the branch would run
+  // on to omega_min = 0 with zero-amplitude "breathers".
+  const BranchIntoTrivialState problem;
+  ContinuationOptions o;
+  o.ds = 0.1;
+  o.ds_max = 0.1;
+  o.max_points = 100;
+  o.omega_min = 0;
+  const BranchResult branch = continue_branch(problem, Eigen::VectorXd::Constant(1, 0.5), 1.5, o);
+  INFO("stop reason: ", branch.stop_reason);
+  CHECK(branch.stop_reason.find("trivial (uniform) state") != std::string::npos);
+  REQUIRE_FALSE(branch.points.empty());
+  for (const BranchPoint& point : branch.points) {
+    CHECK(point.omega_b > 1 - 1e-9);                                             // all on the breather side
+    CHECK(std::abs(point.z0(0) - (point.omega_b - 1)) < 1e-9);                   // q = omega_b - 1
+  }
+  CHECK(branch.points.back().omega_b < 1.1 + 1e-9);  // it followed the branch down to the last step before 1
 }

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <regex>
 #include <iterator>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -52,13 +53,19 @@ TEST_CASE("reproduce --quick: complete report, rendered by headless Chromium") {
   }
   // The report is built in DIR.partial and renamed: no file of the finished report may name that
   // directory (summary.json "out", "checkpoint_file", "command_line" are pointed at DIR).
-  std::vector<std::string> naming_partial;
+  std::vector<std::string> naming_partial, citing_labels;
+  const std::regex latex_label(R"((eq|fig|sec|tab):[A-Za-z])");
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
     if (!entry.is_regular_file()) continue;
     std::ifstream in(entry.path(), std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (bytes.find(".partial") != std::string::npos) naming_partial.push_back(entry.path().string());
+    // A figure script cites the paper by number (eq. (40)), never by its LaTeX label (eq:edensity).
+    if (entry.path().extension() == ".gp" && std::regex_search(bytes, latex_label))
+      citing_labels.push_back(entry.path().string());
   }
+  INFO("figure scripts citing a LaTeX label: ", citing_labels.size(), citing_labels.empty() ? "" : ", e.g. " + citing_labels.front());
+  CHECK(citing_labels.empty());
   INFO("files naming DIR.partial: ", naming_partial.size(), naming_partial.empty() ? "" : ", e.g. " + naming_partial.front());
   CHECK(naming_partial.empty());
   const auto exp6 = nlohmann::json::parse(std::ifstream(dir / "exp6" / "summary.json"));

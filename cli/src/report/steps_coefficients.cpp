@@ -103,8 +103,8 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
                       "set output outfile\nset datafile separator ','\n"
                       "set xlabel 'wavenumber θ/π'\nset ylabel 'frequency ω (dimensionless)'\nset key bottom right\n"
                       "set title 'Dispersion relation, eq. (7): ρ = 1/3, δ0 = 4/9, κ = 1'\n"
-                      "plot 'coefficients_rho_1_3.csv' u 1:2 w l lw 2 t 'optical ω+', "
-                      "'' u 1:3 w l lw 2 dt 2 t 'acoustic ω−'\n",
+                      "plot 'coefficients_rho_1_3.csv' u 1:2 w l lw 2 t 'optical ω₊', "
+                      "'' u 1:3 w l lw 2 dt 2 t 'acoustic ω₋'\n",
                       "dispersion.png"});
   std::string gp =
       "if (!exists(\"outfile\")) outfile = 'coefficients.png'\n"
@@ -123,9 +123,9 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
     gp += fmt::format(
         "set title \"c (green), ω″ (red), h̃ (blue): {}; optical solid, acoustic dashed\"\n"
         "last8 = NaN; last9 = NaN\n"
-        "plot '{f}' u 1:4 w l lc rgb '#1a9850' lw 2 t 'c+', '{f}' u 1:5 w l lc rgb '#1a9850' dt 2 lw 2 t 'c−', "
-        "'{f}' u 1:6 w l lc rgb '#d73027' lw 2 t 'ω″+', '{f}' u 1:7 w l lc rgb '#d73027' dt 2 lw 2 t 'ω″−', "
-        "'{f}' u 1:(h8($8)) w l lc rgb '#4575b4' lw 2 t 'h̃+', '{f}' u 1:(h9($9)) w l lc rgb '#4575b4' dt 2 lw 2 t 'h̃−'\n",
+        "plot '{f}' u 1:4 w l lc rgb '#1a9850' lw 2 t 'c₊', '{f}' u 1:5 w l lc rgb '#1a9850' dt 2 lw 2 t 'c₋', "
+        "'{f}' u 1:6 w l lc rgb '#d73027' lw 2 t 'ω″₊', '{f}' u 1:7 w l lc rgb '#d73027' dt 2 lw 2 t 'ω″₋', "
+        "'{f}' u 1:(h8($8)) w l lc rgb '#4575b4' lw 2 t 'h̃₊', '{f}' u 1:(h9($9)) w l lc rgb '#4575b4' dt 2 lw 2 t 'h̃₋'\n",
         label, fmt::arg("f", std::string("coefficients_") + tag + ".csv"));
   }
   gp += "unset multiplot\n";

@@ -181,10 +181,11 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
   rate_out_.resize(contacts);
   if (options_.locate_contacts && contacts > 0) system_.contacts(state.data(), contact_in_.data(), rate_in_.data());
   double t = t0;
-  double h = std::min(h_, options_.max_step);
-  // Grading cap after a contact change and a located contact change ahead (absolute time):
-  // carried over when this call continues the previous one.
+  // The step size, the grading cap after a contact change and a located contact change ahead
+  // (absolute time) are carried over when this call continues the previous one; a call from
+  // another time starts afresh, so its steps do not depend on what the integrator did before.
   const bool continued = t0 == last_t_;
+  double h = std::min(continued ? h_ : options_.initial_step, options_.max_step);
   double cap = continued ? cap_ : options_.max_step;
   double target = continued ? target_ : -1.0;
   double contact_step = continued ? contact_step_ : options_.contact_step;

@@ -56,6 +56,7 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
 
   shooting.evaluate(u.head(k), u(k), r, nullptr);
   accept(r.lpNorm<Eigen::Infinity>());
+  const double first_amplitude = state_amplitude(shooting, q0);
 
   while (Index(out.points.size()) < o.max_points) {
     if (o.stop && o.stop->load(std::memory_order_relaxed)) {
@@ -107,6 +108,13 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
         return out;
       }
       continue;
+    }
+    // The uniform state solves F = 0 at every omega_b: a corrector that lands on it has left the
+    // breather branch, and its points are not breathers.
+    if (state_amplitude(shooting, u.head(k)) <= trivial_state_ratio * first_amplitude) {
+      out.stop_reason = fmt::format("the branch reached the trivial (uniform) state at omega_b = {:.6f}: the "
+                                    "breather's amplitude vanished", u(k));
+      return out;
     }
     if (u(k) < o.omega_min || u(k) > o.omega_max) {
       out.stop_reason = fmt::format("omega_b = {:.6f} left [{:g}, {:g}]", u(k), o.omega_min, o.omega_max);

@@ -217,18 +217,17 @@ void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::Vec
   }
 }
 
-namespace {
-// Amplitude of the state Z(0) = B q: max_i |z_i - mean(z)|, zero for the trivial (uniform) state.
 double state_amplitude(const DarkShootingProblem& shooting, const Eigen::VectorXd& q) {
   const Eigen::VectorXd z = shooting.z_from_unknowns(q);
   return z.size() == 0 ? 0.0 : (z.array() - z.mean()).abs().maxCoeff();
 }
 
+namespace {
 // Empty if Z(0) = B q is a breather; why not if its amplitude collapsed to round-off (<= 1e-8) of the
 // seed's: Newton found the trivial zero of F, not a breather.
 std::string trivial_state_failure(const DarkShootingProblem& shooting, const Eigen::VectorXd& q,
                                   double seed_amplitude) {
-  if (state_amplitude(shooting, q) > 1e-8 * seed_amplitude) return {};
+  if (state_amplitude(shooting, q) > trivial_state_ratio * seed_amplitude) return {};
   return "converged to the trivial state (no breather at this omega_b and sites); try more sites or "
          "omega_b closer to the band edge";
 }

@@ -47,7 +47,9 @@ struct BranchResult {
   bool interrupted = false;  // ended by ContinuationOptions::stop
 };
 
-// Continues from a converged solution q0 at omega0. on_point is called after each point.
+// Continues from a converged solution q0 at omega0. on_point is called after each point. Stops (with
+// stop_reason) after max_points, when omega_b leaves the window, when the step falls below ds_min,
+// or when the corrector lands on the trivial state (amplitude <= trivial_state_ratio of q0's).
 BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::VectorXd& q0, double omega0,
                              const ContinuationOptions& options,
                              const std::function<void(const BranchPoint&)>& on_point = {});

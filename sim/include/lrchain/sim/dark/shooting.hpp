@@ -122,6 +122,13 @@ struct NewtonResult {
   std::string failure;  // why not converged
 };
 
+// Amplitude max_i |z_i - mean(z)| of the state Z(0) = B q; zero for the trivial (uniform) state,
+// which solves F = 0 at every omega_b.
+double state_amplitude(const DarkShootingProblem& shooting, const Eigen::VectorXd& q);
+
+// A zero of F whose amplitude fell to this fraction of a breather's is the trivial state.
+inline constexpr double trivial_state_ratio = 1e-8;
+
 // Newton (least squares, column-pivoting QR) on F(., omega_b) = 0 from q0 (Sec. 5.3). A zero of F
 // whose amplitude max|z - mean(z)| fell below 1e-8 of the seed's is the trivial state, no breather:
 // reported as not converged, failure "converged to the trivial state ...".
