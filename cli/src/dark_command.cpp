@@ -189,11 +189,11 @@ Solved solve(const DarkArgs& a) {
   return {std::move(shooting), ansatz, std::move(res)};
 }
 
-// The options, the band edge and the Newton history of a dark job; "failure" null unless set.
+// The model, the options, the band edge and the Newton history of a dark job; "failure" null unless set.
 json base_json(const DarkArgs& a, const DarkBreatherAnsatz& ansatz, const NewtonResult& newton) {
   json hist = json::array();
   for (const auto& r : newton.history) hist.push_back(r.residual);
-  return {{"rho", a.p.rho}, {"kappa", a.p.kappa}, {"delta0", a.p.delta0}, {"alpha", a.p.alpha},
+  return {{"model", model_json(resonant_chain_model(a.p))},
           {"branch", a.branch}, {"center", a.center}, {"sites", a.sites}, {"mode", a.mode},
           {"omega_b", a.omega_b}, {"omega_edge", ansatz.omega},
           {"newton_converged", newton.converged}, {"newton_residuals", hist}, {"failure", nullptr},

@@ -41,10 +41,6 @@ void add_model_file_options(CLI::App& cmd, ModelSelection& selection) {
   cmd.add_option("--set", selection.set, "model parameter, repeatable: --set w0=2 --set b=1/3 (default: the model file's defaults)")->type_name("NAME=VALUE");
 }
 
-Model resonant_chain_model(const Params& p) {
-  return shipped_model("resonant_chain", {{"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}});
-}
-
 Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, const Params& aliases, bool lattice_run) {
   std::vector<std::pair<std::string, double>> values;
   std::shared_ptr<const ModelDefinition> definition;
@@ -122,13 +118,6 @@ nlohmann::json lattice_code_json(const LatticeCode& code) {
   j["from_cache"] = code.compiled_in ? nlohmann::json(nullptr) : nlohmann::json(code.from_cache);
   j["library"] = code.compiled_in ? nlohmann::json(nullptr) : nlohmann::json(code.library);
   return j;
-}
-
-nlohmann::json model_json(const Model& model) {
-  nlohmann::json parameters = nlohmann::json::object();
-  const auto& d = model.definition();
-  for (std::size_t i = 0; i < d.parameters.size(); ++i) parameters[d.parameters[i].name] = model.inputs()[i];
-  return {{"name", d.name}, {"file_hash", model_hash_text(d.file_hash)}, {"parameters", parameters}};
 }
 
 }  // namespace lrchain::cli

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lrchain/model.hpp"
+#include "lrchain/model_json.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
 
@@ -45,11 +46,5 @@ LatticeCode lattice_kernels_for(const ModelSelection& selection, const Model& mo
 
 // {"compiled_in", "from_cache", "library", "seconds"} of `code`.
 nlohmann::json lattice_code_json(const LatticeCode& code);
-
-// The resonant chain at `p` as a Model (the shipped definition).
-Model resonant_chain_model(const Params& p);
-
-// {"name", "file_hash", "parameters": {name: value, ...}} for JSON output.
-nlohmann::json model_json(const Model& model);
 
 }  // namespace lrchain::cli

@@ -56,10 +56,6 @@ void write_file(const fs::path& dir, const std::string& name, const std::string&
   fs::rename(tmp, target);
 }
 
-json params_json(const Params& p) {
-  return {{"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}};
-}
-
 json interval_json(const FocusingInterval& i) {
   return {{"lo", i.lo},
           {"hi", i.hi},
@@ -166,7 +162,7 @@ void run_intervals(const IntervalsArgs& a, const CLI::App& cmd) {
     const Params p = resonant_params(model);
     const Branch b = parse_branch(a.branch.empty() ? "optical" : a.branch);
     s = regime_structure(regime_functions(p, b), {a.samples, 1e-12});
-    out = {{"branch", std::string(to_string(b))}, {"params", params_json(p)}};
+    out = {{"branch", std::string(to_string(b))}};
   } else {
     const Index b = model_branch(model, a.branch);
     s = regime_structure(regime_functions(model, b), {a.samples, 1e-12});
@@ -304,7 +300,7 @@ json map_theta_rho(const MapArgs& a, const fs::path& dir, sim::Figures& figures)
   gp << "unset multiplot\n";
   write_file(dir, "regime_theta-rho.gp", gp.str());
   files.push_back("regime_theta-rho.gp");
-  json out = {{"plane", "theta-rho"}, {"params", params_json(a.p)}, {"panels", panels}};
+  json out = {{"plane", "theta-rho"}, {"panels", panels}};
   if (!a.no_figures) {
     const bool ok = figures.draw_written("regime_theta-rho.gp", "regime_theta-rho.png");
     if (ok) files.push_back(sim::figure_file_name("regime_theta-rho.png"));
@@ -427,7 +423,6 @@ json map_delta0_omega(const MapArgs& a, const fs::path& dir, sim::Figures& figur
   files.push_back("regime_" + tag + ".gp");
   json out = {{"plane", "delta0-omega"},
               {"branch", bn},
-              {"params", params_json(a.p)},
               {"delta0_range", dr},
               {"omega_range", wr},
               {"resolution", {a.res_x, a.res_y}},
@@ -729,7 +724,7 @@ void run_thresholds(int scan_points, bool compact) {
     scenarios.push_back({{"name", s.name},
                          {"branch", std::string(to_string(s.branch))},
                          {"axis", std::string(to_string(s.axis))},
-                         {"params", params_json(s.base)},
+                         {"model", model_json(resonant_chain_model(s.base))},
                          {"scan", {{"lo", s.scan.lo}, {"hi", s.scan.hi}, {"points", s.scan.n}}},
                          {"paper_text", s.paper_text},
                          {"paper_values", matched},

@@ -2,8 +2,8 @@
 
 Simulation results (bright, drive, modulated) are written by the C++ library's writer, the same file
 ``lrchain simulate ... --format hdf5`` writes: root attributes ``lrchain_result``, ``lrchain_version``,
-``git_commit``, ``model``, ``parameters`` (JSON); the series as datasets (``t``, ``E_x``, ...,
-``centre``), the ``energy_density`` group (``n``, ``t``, float32 ``values``), ``snapshots/<k>`` (attributes
+``git_commit``, ``model`` (the summary's model object as JSON text: name, file_hash, parameters); the
+series as datasets (``t``, ``E_x``, ..., ``centre``), the ``energy_density`` group (``n``, ``t``, float32 ``values``), ``snapshots/<k>`` (attributes
 ``t``, ``tag``; group ``columns``), the ``summary`` tree and the optional per-sample fields (``x``, ``y``
 or ``u``, ``v``).
 

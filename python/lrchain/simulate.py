@@ -97,7 +97,8 @@ class BrightResult(_SimulationHDF5):
     max-norm), ``energy`` and ``centre`` (energy centre X(t)) at every sample; ``energy_density``
     e_n(t) (a :class:`SpaceTime` on the beads); ``snapshots``; ``x``, ``y``: the strains x_n(t),
     y_n(t) at every sample when asked for (``record_strains=True``), else None; ``summary``: the
-    same numbers as the JSON of ``lrchain simulate`` (omega_b, period, max_Ex, max_Ey, ...).
+    same JSON as ``lrchain simulate`` (``model`` {name, file_hash, parameters}, ``sites``, ``ansatz``,
+    ``max_E_x``, ``max_E_y``, ...).
     ``to_hdf5(path)`` writes it all to an HDF5 file (:mod:`lrchain.hdf5`).
     """
 

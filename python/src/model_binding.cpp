@@ -13,6 +13,7 @@
 #include "coefficient_arrays.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/model.hpp"
+#include "lrchain/model_json.hpp"
 #include "loaded_model.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 #include "model_capsule.hpp"
@@ -175,13 +176,12 @@ const lrchain_lattice_kernels& lattice_kernels(const LoadedModel& m) {
 }
 
 nlohmann::json model_summary_json(const LoadedModel& m) {
-  nlohmann::json parameters = nlohmann::json::object();
-  const auto& d = *m.definition;
-  for (std::size_t i = 0; i < d.parameters.size(); ++i) parameters[d.parameters[i].name] = m.model.inputs()[i];
   nlohmann::json code{{"compiled_in", m.lattice_compiled_in}};
   code["from_cache"] = m.lattice_compiled_in ? nlohmann::json(nullptr) : nlohmann::json(m.lattice_from_cache);
   code["library"] = m.lattice_compiled_in ? nlohmann::json(nullptr) : nlohmann::json(m.lattice_library);
-  return {{"name", d.name}, {"file_hash", model_hash_text(d.file_hash)}, {"parameters", parameters}, {"lattice_code", code}};
+  nlohmann::json j = model_json(m.model);
+  j["lattice_code"] = code;
+  return j;
 }
 
 void register_model(py::module_& m) {

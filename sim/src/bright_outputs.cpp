@@ -16,10 +16,10 @@ nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
   nlohmann::json j;
   j["experiment"] = "bright";
   j["provenance"] = provenance_json();
-  j["params"] = params_json(c.params);
+  j["model"] = model_json(resonant_chain_model(c.params));
   j["branch"] = std::string(to_string(c.branch));
   j["theta"] = c.theta;
-  j["N"] = c.N;
+  j["sites"] = 2 * c.N + 1;  // n = -N..N, as --sites takes it
   j["periods"] = c.periods;
   j["ansatz_ends"] = c.ansatz_ends;
   j["integrator"] = integrator_json(s.integrator);

@@ -279,10 +279,10 @@ nlohmann::json to_json(const DriveRunConfig& c, const DriveRunSummary& s) {
   nlohmann::json j;
   j["experiment"] = "drive";
   j["provenance"] = provenance_json();
-  j["params"] = params_json(c.params);
-  j["beads"] = c.beads;
+  j["model"] = model_json(resonant_chain_model(c.params));
+  j["sites"] = c.beads;
   j["drive"] = {{"amplitude", c.amplitude}, {"omega0", c.omega0}, {"ramp_rate", c.ramp_rate},
-                {"t_m", c.t_m}};
+                {"switch_off_time", c.t_m}};
   j["integrator"] = integrator_json(c.integrator);
   j["theta"] = s.theta;
   j["group_velocity"] = s.group_velocity;

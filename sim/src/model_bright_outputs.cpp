@@ -15,7 +15,7 @@ nlohmann::json to_json(const Model& model, const ModelBrightConfig& c, const Mod
   j["provenance"] = provenance_json();
   j["branch"] = model.definition().branch_names.at(c.branch);
   j["theta"] = c.theta;
-  j["N"] = c.N;
+  j["sites"] = 2 * c.N + 1;  // n = -N..N, as --sites takes it
   j["periods"] = c.periods;
   j["form"] = r.mean_flow ? "strain" : "displacement";
   j["ansatz_ends"] = r.ansatz_ends;

@@ -291,9 +291,9 @@ nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s
   j["experiment"] = "modulated";
   j["provenance"] = provenance_json();
   j["name"] = c.name;
-  j["params"] = params_json(c.params);
-  j["N"] = c.N;
-  j["initial"] = {{"epsilon", c.epsilon}, {"theta0", s.theta0}, {"omega", s.omega}, {"b", c.b}};
+  j["model"] = model_json(resonant_chain_model(c.params));
+  j["sites"] = c.N;
+  j["initial"] = {{"epsilon", c.epsilon}, {"theta0", s.theta0}, {"omega", s.omega}, {"modulation_depth", c.b}};
   j["integrator"] = integrator_json(c.integrator);
   j["group_velocity"] = s.group_velocity;
   j["t_start"] = s.t_start;

@@ -156,10 +156,7 @@ void write_provenance_attributes(Hdf5TreeFile& file, const json& summary) {
   const json provenance = summary.value("provenance", json::object());
   const json commit = provenance.value("git_commit", json(nullptr));
   file.write_attribute("/", "git_commit", commit.is_string() ? commit.get<std::string>() : std::string("unknown"));
-  const json model = summary.value("model", json(nullptr));
-  file.write_attribute("/", "model", model.is_string() ? model.get<std::string>()
-                                                       : std::string("locally_resonant_granular_chain"));
-  file.write_attribute("/", "parameters", summary.value("params", json::object()).dump());
+  file.write_attribute("/", "model", summary.value("model", json(nullptr)).dump());
 }
 
 void write_simulation_hdf5(const std::filesystem::path& path, SimulationKind kind, const RunRecord& record,

@@ -5,10 +5,6 @@
 
 namespace lrchain::sim {
 
-nlohmann::json params_json(const Params& p) {
-  return {{"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}};
-}
-
 nlohmann::json integrator_json(const IntegratorOptions& o) {
   return {{"stepper", std::string(to_string(o.stepper))},
           {"abs_tol", o.abs_tol},

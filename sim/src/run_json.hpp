@@ -1,17 +1,16 @@
 #pragma once
-// JSON pieces shared by the run summaries (bright, drive, modulated): model parameters,
-// integrator options, and the run status (time reached, interrupt, blow-up, work, solve time).
+// JSON pieces shared by the run summaries (bright, drive, modulated): the model object
+// (lrchain/model_json.hpp), integrator options, and the run status (time reached, interrupt, blow-up, work, solve time).
 // Private to sim/src.
 #include <optional>
 
 #include <nlohmann/json.hpp>
 
-#include "lrchain/params.hpp"
+#include "lrchain/model_json.hpp"
 #include "lrchain/sim/integrator.hpp"
 
 namespace lrchain::sim {
 
-nlohmann::json params_json(const Params& p);
 nlohmann::json integrator_json(const IntegratorOptions& o);
 // Sets t_end, interrupted, blew_up, failure (null, or the blow-up: kind, t, site, field, message),
 // steps, rhs_evaluations, solve_seconds.

@@ -141,8 +141,11 @@ def test_cli_hdf5_equals_python_to_hdf5(tmp_path, cli, kind, cli_args, python_ru
         summary = json.loads((tmp_path / "cli" / "summary.json").read_text())
         assert f.attrs["lrchain_version"] == summary["provenance"]["lrchain_version"]
         assert f.attrs["git_commit"] == (summary["provenance"]["git_commit"] or "unknown")
-        assert f.attrs["model"] == "locally_resonant_granular_chain"
-        assert json.loads(f.attrs["parameters"])["rho"] == f["summary/params"].attrs["rho"]
+        # The root attribute "model" is the summary's model object as JSON text.
+        assert json.loads(f.attrs["model"]) == summary["model"]
+        assert summary["model"]["name"] == "resonant_chain"
+        assert f["summary/model/parameters"].attrs["rho"] == summary["model"]["parameters"]["rho"]
+        assert "parameters" not in f.attrs and "params" not in f["summary"]
         assert f["energy_density/values"].dtype == np.float32
 
 
@@ -160,6 +163,9 @@ def test_cli_dark_hdf5_equals_python_to_hdf5(tmp_path, cli, command, python_run)
     compared = _assert_same_file(tmp_path / "cli" / "result.h5", tmp_path / "python.h5")
     assert compared >= 12
     with h5py.File(tmp_path / "cli" / "result.h5", "r") as f:
-        assert json.loads(f.attrs["parameters"]) == {"alpha": 1.5, "delta0": 4 / 9, "kappa": 1.0, "rho": 1 / 3}
+        model = json.loads(f.attrs["model"])
+        assert model["name"] == "resonant_chain" and model["file_hash"].startswith("0x")
+        assert model["parameters"] == {"alpha": 1.5, "delta0": 4 / 9, "kappa": 1.0, "rho": 1 / 3}
+        assert "parameters" not in f.attrs
         if "floquet" in f:
             assert f["floquet/multipliers"].dtype == np.complex128

@@ -39,6 +39,10 @@ def test_model_bright_equals_cli(cli, source_dir):
     assert r.summary["max_E_x"] < 0.05  # the NLS breather holds over 10 T_b (measured 0.79 %)
     assert r.t.shape == r.energy.shape == r.centre.shape == r.E_x.shape
     assert r.summary["model"]["name"] == "fput" and r.summary["model"]["lattice_code"]["compiled_in"] is True
+    # The model object of the CLI (name, file_hash, parameters) plus lattice_code; the size as --sites.
+    assert {k: v for k, v in r.summary["model"].items() if k != "lattice_code"} == \
+        {k: v for k, v in expected["model"].items() if k != "lattice_code"}
+    assert r.summary["sites"] == 2001 and "N" not in r.summary
 
 
 def test_model_bright_positional_model_and_two_fields(cli, source_dir):

@@ -56,6 +56,11 @@ def test_record_strains_and_observer():
                                 observer=observer)
     assert r.x.values.shape == (len(r.t), 121) and r.y.values.shape == (len(r.t), 121)
     assert r.x.n[0] == -60 and r.x.n[-1] == 60
+    # The summary names the size as the keyword does and echoes the model as `lrchain coeffs --json`.
+    assert r.summary["sites"] == 121 and "N" not in r.summary and "params" not in r.summary
+    assert r.summary["model"]["name"] == "resonant_chain"
+    assert r.summary["model"]["parameters"] == pytest.approx({"alpha": 1.5, "delta0": 4 / 9, "kappa": 1.0, "rho": 1 / 3},
+                                                             rel=1e-15)
     assert [s[0] for s in seen] == list(r.t)
     assert np.array_equal(seen[-1][1], r.x.values[-1])
     # The observer's e_n sums to the recorded energy at every sample.
@@ -82,6 +87,9 @@ def test_drive_short_run():
     # Energy enters through the driven first bead: zero at t = 0, positive afterwards.
     assert r.energy[0] == 0 and r.energy[-1] > 0
     assert r.summary["t_end"] == pytest.approx(60)
+    assert r.summary["sites"] == 200 and r.summary["drive"]["switch_off_time"] == pytest.approx(40)
+    assert r.summary["model"]["parameters"]["rho"] == pytest.approx(10, rel=1e-15)  # drive's default rho
+    assert not {"beads", "params"} & set(r.summary) and "t_m" not in r.summary["drive"]
 
 
 def test_modulated_short_run():
@@ -89,3 +97,7 @@ def test_modulated_short_run():
     assert len(r.t) == 21 and r.energy_density.values.shape == (21, 101)
     # The symplectic stepper conserves the energy of the periodic chain closely.
     assert np.max(np.abs(r.energy / r.energy[0] - 1)) < 1e-6
+    assert r.summary["sites"] == 101 and "N" not in r.summary
+    assert r.summary["initial"]["modulation_depth"] == pytest.approx(0.01, rel=1e-15)  # the library default
+    assert "b" not in r.summary["initial"] and "params" not in r.summary
+    assert r.summary["model"]["parameters"]["delta0"] == pytest.approx(0.27, rel=1e-15)

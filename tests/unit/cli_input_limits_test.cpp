@@ -160,10 +160,10 @@ TEST_CASE("an --out that is a file is exit 2 with the file untouched") {
 }
 
 TEST_CASE("integer options accept integral values such as 1e3 and refuse fractions") {
-  // --sites 2N + 1 = 201 strain sites: the run's half-width N = 100 (its summary's "N").
+  // --sites 2.01e2 = 201 strain sites n = -100..100: the summary's "sites" is the value given.
   const Job j = run_lrchain(with(bright, {"--sites", "2.01e2", "--periods", "2", "--json"}));
   REQUIRE(j.exit_code == 0);
-  CHECK(nlohmann::json::parse(j.out)["N"] == 100);
+  CHECK(nlohmann::json::parse(j.out)["sites"] == 201);
   check_refused(with(bright, {"--sites", "100.5"}), "sites");
   check_refused(with(bright, {"--sites", "1e300"}), "sites");
   check_refused(with(bright, {"--sites", "200"}), "sites");  // even: not n = -N..N

@@ -1,5 +1,6 @@
 // Reproduce steps: the bright-breather experiments 1-5 of Sec. 4.2-4.3 (Figs. 6-13): the lattice
 // started from the NLS ansatz (eq:focus_app, eq:focus_ini) and compared with it.
+#include <cstdint>
 #include <fmt/format.h>
 
 #include "experiment_runs.hpp"
@@ -18,7 +19,7 @@ std::string run_facts(const json& s) {
                                 : std::string("energy not conserved (driven ends)");
   return fmt::format("Run: N = {} (strain sites -N..N), {} T_b = {:.2f} time units, {} stepper (tol {:g}, dt {:g}); "
                      "{}; {} RHS evaluations, {:.2f} s solve.",
-                     s.value("N", 0), s.value("periods", 0.0), s.value("t_end", 0.0),
+                     (s.value("sites", std::int64_t{1}) - 1) / 2, s.value("periods", 0.0), s.value("t_end", 0.0),
                      s["integrator"].value("stepper", std::string("?")), s["integrator"].value("rel_tol", 0.0),
                      s["integrator"].value("dt", 0.0), drift, s.value("rhs_evaluations", 0), s.value("solve_seconds", 0.0));
 }
@@ -31,7 +32,7 @@ void add_figures(Section& s, const std::string& id, const std::string& snap_fig,
 
 // c_+ at the run's carrier wavenumber and model parameters (from its summary.json).
 double optical_group_velocity(const json& j) {
-  const json& p = j["params"];
+  const json& p = j["model"]["parameters"];
   const Params params{p["alpha"].get<double>(), p["delta0"].get<double>(), p["kappa"].get<double>(),
                       p["rho"].get<double>()};
   return coefficients(params, Branch::optical, j["theta"].get<double>()).group_velocity;

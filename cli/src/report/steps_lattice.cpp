@@ -26,7 +26,7 @@ Section exp6(const StepContext& ctx) {
   s.intro = fmt::format(
       "Paper's size and length: {} beads, clamped end, u_0(t) = A0 sin(omega0 t) chi(t), t <= {}; {} stepper "
       "(tol {:g}), {} RHS evaluations, {:.1f} s solve.",
-      j.value("beads", 0), j.value("t_end", 0.0), j["integrator"].value("stepper", std::string("?")),
+      j.value("sites", 0), j.value("t_end", 0.0), j["integrator"].value("stepper", std::string("?")),
       j["integrator"].value("rel_tol", 0.0), j.value("rhs_evaluations", 0), j.value("solve_seconds", 0.0));
   s.rows.push_back(with_tolerance_source(
       equals_row("front speed of the driven wave / c_+(theta)", "Sec. 4.3", "~ 1 (pattern between n = 0 and c_+ t)", 1.0,
@@ -66,7 +66,7 @@ Section exp7(const StepContext& ctx) {
       "energy drift {:.1e}, {:.1f} s solve.",
       ctx.full ? "Paper's length (t <= 45000)." : "Quick run: t <= 33000 instead of 45000 (covers the instability and "
                                                   "the dark-breather window; not the late turbulent regime).",
-      j.value("N", 0), j["integrator"].value("stepper", std::string("?")), j["integrator"].value("dt", 0.0),
+      j.value("sites", 0), j["integrator"].value("stepper", std::string("?")), j["integrator"].value("dt", 0.0),
       j.value("max_relative_energy_drift", 0.0), j.value("solve_seconds", 0.0));
   s.rows.push_back(with_tolerance_source(
       equals_row("onset of the oscillatory instability", "Sec. 5.1", "t ~ 16300", 16300, json_number(j, "instability_time"),

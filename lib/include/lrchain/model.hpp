@@ -129,6 +129,9 @@ class Model {
 // The shipped model `name` (InputError if there is none) with the given parameter values.
 Model shipped_model(std::string_view name, const std::vector<std::pair<std::string, double>>& values = {});
 
+// The resonant chain (the shipped model "resonant_chain") at `p`: the paper's chain as a Model.
+Model resonant_chain_model(const Params& p);
+
 // "0x" + 16 hex digits.
 std::string model_hash_text(std::uint64_t hash);
 

@@ -47,6 +47,10 @@ Model shipped_model(std::string_view name, const std::vector<std::pair<std::stri
   return Model(std::shared_ptr<const ModelDefinition>(std::shared_ptr<const ModelDefinition>(), d), values);
 }
 
+Model resonant_chain_model(const Params& p) {
+  return shipped_model("resonant_chain", {{"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}});
+}
+
 // Defaults, overrides checked against their ranges, then the evaluator's intermediates.
 Model::Model(std::shared_ptr<const ModelDefinition> definition, const std::vector<std::pair<std::string, double>>& values)
     : definition_(std::move(definition)) {

@@ -18,10 +18,10 @@ void write_vector(Hdf5TreeFile& file, const std::string& path, const std::vector
   file.write_dataset(path, Hdf5Element::float64, v.data(), {v.size()});
 }
 
-// The root attributes of a dark result: what it is, and its provenance and parameters.
+// The root attributes of a dark result: what it is, and its provenance and model.
 void write_root(Hdf5TreeFile& file, const char* result_class, const Params& p) {
   file.write_attribute("/", "lrchain_result", std::string(result_class));
-  write_provenance_attributes(file, {{"params", params_json(p)}, {"provenance", lrchain::provenance_json()}});
+  write_provenance_attributes(file, {{"model", model_json(resonant_chain_model(p))}, {"provenance", lrchain::provenance_json()}});
 }
 
 const char* const measure_names[] = {"norm_squared", "K_x", "K_y", "C_x", "C_y", "E_b", "max_strain"};

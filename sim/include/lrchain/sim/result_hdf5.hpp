@@ -4,7 +4,8 @@
 //
 // Layout of a bright / drive / modulated run (written to a temporary name, then renamed):
 //   root attributes    lrchain_result ("BrightResult", "DriveResult", "ModulatedResult"),
-//                      lrchain_version, git_commit, model, parameters (the model parameters as JSON)
+//                      lrchain_version, git_commit, model (JSON text: {"name", "file_hash",
+//                      "parameters": {alpha, delta0, kappa, rho}}, as the summary's "model")
 //   /<column>          the sampled series, float64, one per column (bright: t, E_x, E_y, energy,
 //                      centre; drive: t, energy, front, participation, u0; modulated: t, energy,
 //                      contrast, dark_centre, dark_unwrapped)
@@ -60,8 +61,8 @@ std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, co
 // Writes `j` below the group `group` ("" for the root) with the summary's rules (layout above).
 void write_json_tree(Hdf5TreeFile& file, const std::string& group, const nlohmann::json& j);
 
-// The provenance attributes of the root (lrchain_version, git_commit, model, parameters) from a
-// JSON summary holding "provenance" and "params" (or "model").
+// The provenance attributes of the root (lrchain_version, git_commit, model) from a JSON summary
+// holding "provenance" and "model" (lrchain/model_json.hpp; the attribute is its JSON text).
 void write_provenance_attributes(Hdf5TreeFile& file, const nlohmann::json& summary);
 
 }  // namespace lrchain::sim

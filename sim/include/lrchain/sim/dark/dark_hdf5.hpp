@@ -3,7 +3,7 @@
 // solve|floquet|continue --format hdf5` and by Python's `result.to_hdf5(path)` (same file, h5py reads it).
 //
 // Root attributes of both: lrchain_result ("DarkSolution" or "Branch"), lrchain_version, git_commit,
-// model, parameters (the model parameters as JSON).
+// model (JSON text: {"name": "resonant_chain", "file_hash", "parameters": {alpha, delta0, kappa, rho}}).
 // A solution: attributes omega_b, omega_edge; datasets n, x, y, x_seed, y_seed, newton_residuals;
 //   group measures (attributes norm_squared, K_x, K_y, C_x, C_y, E_b, max_strain); with Floquet
 //   multipliers, group floquet: dataset multipliers (complex, h5py's {r, i}), attributes kind,
