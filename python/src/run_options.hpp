@@ -1,6 +1,7 @@
 #pragma once
 // Options of a run given from Python as a dict {field name: value}: each known key is assigned to its
-// field of the C++ config, an unknown key is a TypeError naming the allowed ones.
+// field of the C++ config, a renamed key is a TypeError naming its new name, another unknown key a
+// TypeError naming the allowed ones.
 #include <map>
 #include <optional>
 #include <string>
@@ -18,8 +19,15 @@ namespace lrchain::python {
 using OptionTarget = std::variant<double*, std::optional<double>*, long*, std::size_t*, bool*, std::string*, std::vector<double>*,
                                   Params*, Branch*, sim::StepperKind*>;
 
+// A key that was renamed, as config keys are (lrchain::config::RenamedKey): the old name is refused
+// naming the new one, and `note` when the meaning changed too.
+struct RenamedOption {
+  std::string old_name, new_name;
+  std::string note = {};
+};
+
 // Assigns options[key] to *targets.at(key) for every key of options.
 void assign_options(const pybind11::dict& options, const std::map<std::string, OptionTarget>& targets,
-                    const char* function);
+                    const char* function, const std::vector<RenamedOption>& renamed = {});
 
 }  // namespace lrchain::python

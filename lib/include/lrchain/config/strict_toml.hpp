@@ -94,6 +94,13 @@ KeySchema table(std::string name, std::shared_ptr<const TableSchema> schema);   
 KeySchema tables(std::string name, std::shared_ptr<const TableSchema> schema);   // [[name]]
 KeySchema anything(std::string name);                                              // ValueType::any
 
+// A key that was renamed: the old name is an error naming the new one, followed by `note` when the
+// meaning changed too ("the number of strain sites 2N + 1 (the old N was the half-width)").
+struct RenamedKey {
+  std::string old_name, new_name;
+  std::string note = {};
+};
+
 // The keys allowed in one table. `other_keys`, when set, is the schema of every key not listed
 // (user-named entries such as a model's parameters); its name is ignored. Otherwise an unlisted
 // key is an error.
@@ -101,8 +108,8 @@ struct TableSchema {
   std::string meaning;
   std::vector<KeySchema> keys;
   std::optional<KeySchema> other_keys;
-  // Keys that were renamed: {old, new}. The old key is an error naming the new one.
-  std::vector<std::pair<std::string, std::string>> renamed = {};
+  // Keys that were renamed: {old, new} or {old, new, note}. The old key is an error naming the new one.
+  std::vector<RenamedKey> renamed = {};
 
   const KeySchema* find(std::string_view key) const;  // listed key, else other_keys, else nullptr
 };
