@@ -92,6 +92,19 @@ TEST_CASE("config run checks: theta, amplitude, omega0 name file:line, table and
   CHECK_NOTHROW(lrchain::sim::load_experiment_config(Document::from_text(bright_config + "theta = 1\n", "ok.toml")));
 }
 
+TEST_CASE("config run checks: the run's checks of sites and switch_off_time name the keys as the file spells them") {
+  // 1000 strain sites: sites = 2N + 1 is odd.
+  ConfigError e = located_error(bright_config.substr(0, bright_config.find("sites")) + "sites = 1000\ntheta = 1\n",
+                                "cfg/sites.toml");
+  CHECK(std::string(e.what()) == "invalid value for 'sites' in [bright] at cfg/sites.toml:5: must be an odd integer in "
+                                 "[5, 2000000000000001]: the strain sites are n = -N..N, 2N + 1 of them (got 1000)");
+  CHECK(e.key() == "sites");
+  // A switch-off time no continuation of the run can reach (sampling_checks.cpp).
+  e = located_error(drive_config + "switch_off_time = 1e12\n", "cfg/t.toml");
+  CHECK(std::string(e.what()).starts_with("invalid value for 'switch_off_time' in [drive] at cfg/t.toml:6: must be at most"));
+  CHECK(e.key() == "switch_off_time");
+}
+
 TEST_CASE("config run checks: `lrchain simulate --config` with theta = \"4\" exits 2 naming file:line, writes nothing") {
   const fs::path dir = fs::temp_directory_path() / ("lrchain-config-located-" + std::to_string(::getpid()));
   fs::remove_all(dir);
