@@ -114,10 +114,11 @@ def test_run_option_dicts_take_the_config_keys_and_refuse_the_old_ones(run, opti
 
 
 def test_bright_sites_is_the_odd_count_in_the_compiled_run_too():
-    # sites = 2N + 1 reaches the run as the half-width N: 61 sites are n = -30..30 (the summary's N).
+    # sites = 2N + 1 reaches the run as the half-width N: 61 strain sites are n = -30..30 (the snapshot's n).
     r = lrchain._lrchain.simulate_bright({"sites": 61, "theta": math.pi / 2, "periods": 1.0, "spacetime_every": 0.5,
                                          "snapshot_periods": [0.0]}, False, None)
-    assert '"N":30' in r["summary_json"].replace(" ", "")
+    n = r["record"]["snapshots"][0]["columns"]["n"]
+    assert len(n) == 61 and n[0] == -30 and n[-1] == 30
     with pytest.raises(lrchain.InvalidParameterError, match=r"must be an odd integer in \[5, 2000000000000001\]") as err:
         lrchain._lrchain.simulate_bright({"sites": 60}, False, None)
     assert err.value.parameter == "sites"
