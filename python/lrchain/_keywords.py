@@ -23,9 +23,10 @@ def renamed(**old_to_new):
     return wrap
 
 
-def python_names(call, **renames):
-    """``call()``, with an InvalidParameterError's parameter given its Python keyword's name:
-    ``renames`` {library name: keyword}, and the library's hyphens as underscores (t-end -> t_end)."""
+def python_names(call):
+    """``call()``, with an InvalidParameterError's parameter given its Python keyword's name: the
+    library's option spelling with hyphens as underscores (t-end -> t_end, switch-off-time ->
+    switch_off_time)."""
     from .errors import InvalidParameterError
 
     try:
@@ -34,7 +35,7 @@ def python_names(call, **renames):
         old = e.parameter
         if old is None:
             raise
-        new = renames.get(old, old.replace("-", "_"))
+        new = old.replace("-", "_")
         if new == old:
             raise
         message = str(e)
