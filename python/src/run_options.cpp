@@ -24,7 +24,7 @@ const char* type_name() {
 }  // namespace
 
 void assign_options(const py::dict& options, const std::map<std::string, OptionTarget>& targets,
-                    const char* function, const std::vector<RenamedOption>& renamed) {
+                    const char* function, const std::vector<config::RenamedKey>& renamed) {
   for (auto [key, value] : options) {
     const std::string name = py::str(key);
     const auto it = targets.find(name);

@@ -10,6 +10,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include "lrchain/config/renamed_key.hpp"
 #include "lrchain/dispersion.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/integrator.hpp"
@@ -19,15 +20,8 @@ namespace lrchain::python {
 using OptionTarget = std::variant<double*, std::optional<double>*, long*, std::size_t*, bool*, std::string*, std::vector<double>*,
                                   Params*, Branch*, sim::StepperKind*>;
 
-// A key that was renamed, as config keys are (lrchain::config::RenamedKey): the old name is refused
-// naming the new one, and `note` when the meaning changed too.
-struct RenamedOption {
-  std::string old_name, new_name;
-  std::string note = {};
-};
-
 // Assigns options[key] to *targets.at(key) for every key of options.
 void assign_options(const pybind11::dict& options, const std::map<std::string, OptionTarget>& targets,
-                    const char* function, const std::vector<RenamedOption>& renamed = {});
+                    const char* function, const std::vector<config::RenamedKey>& renamed = {});
 
 }  // namespace lrchain::python

@@ -21,6 +21,7 @@
 
 #include <toml++/toml.h>
 
+#include "lrchain/config/renamed_key.hpp"
 #include "lrchain/errors.hpp"
 
 namespace lrchain::config {
@@ -93,13 +94,6 @@ KeySchema strings(std::string name, std::string default_text, std::string meanin
 KeySchema table(std::string name, std::shared_ptr<const TableSchema> schema);    // [name]
 KeySchema tables(std::string name, std::shared_ptr<const TableSchema> schema);   // [[name]]
 KeySchema anything(std::string name);                                              // ValueType::any
-
-// A key that was renamed: the old name is an error naming the new one, followed by `note` when the
-// meaning changed too ("the number of strain sites 2N + 1 (the old N was the half-width)").
-struct RenamedKey {
-  std::string old_name, new_name;
-  std::string note = {};
-};
 
 // The keys allowed in one table. `other_keys`, when set, is the schema of every key not listed
 // (user-named entries such as a model's parameters); its name is ignored. Otherwise an unlisted
