@@ -30,6 +30,7 @@
 #include "lrchain/sim/output_lock.hpp"
 #include "lrchain/sim/experiment_config.hpp"
 #include "lrchain/sim/more_experiment_config.hpp"
+#include "lrchain/sim/strain_sites.hpp"
 #include "help_text.hpp"
 #include "options.hpp"
 #include "simulate_model_commands.hpp"
@@ -154,39 +155,18 @@ sim::RunControl make_control(ProgressBar& bar) {
 }
 
 // How a run reports: the JSON summary on one line (--json), figures drawn or not (--no-figures).
-// `option_names`: the run's names (N, beads, t-m, b) of what the subcommand's options spell out
-// (sites, switch-off-time, modulation-depth), so that a refusal names the option the user gave;
-// empty for a --config run, whose refusals name the TOML key.
 struct ReportStyle {
   bool compact_json = false;
   bool figures = true;
   std::string format = "csv";  // --format: csv (data files and figures) or hdf5 (result.h5)
-  std::vector<std::pair<std::string, std::string>> option_names;
 };
 
-// The style of a subcommand run whose options have other names than the run's (run name, option).
-ReportStyle with_option_names(ReportStyle style, std::vector<std::pair<std::string, std::string>> names) {
-  style.option_names = std::move(names);
-  return style;
-}
-
-// Validates a run before anything is written: every option, counts, memory, the output directory;
-// a refusal names the option the user gave (--sites where the run says N or beads).
+// Validates a run before anything is written: every option, counts, memory, the output directory.
+// A refusal names the option (or, for a --config run, the config key) by the run's name for it.
 template <class Config>
-void validate_run(const Config& cfg, const std::string& out, const ReportStyle& style) {
-  try {
-    sim::validate(cfg);
-    check_output(cfg, out);
-  } catch (const InvalidParameter& e) {
-    for (const auto& [name, option] : style.option_names) {
-      if (e.parameter() != name) continue;
-      std::string message = std::string(e.what()).substr(("invalid " + name + ": ").size());
-      for (std::size_t at; (at = message.find("lower " + name)) != std::string::npos;)
-        message.replace(at, 6 + name.size(), "lower --" + option);
-      throw InvalidParameter(option, message);
-    }
-    throw;
-  }
+void validate_run(const Config& cfg, const std::string& out) {
+  sim::validate(cfg);
+  check_output(cfg, out);
 }
 
 // Runs one experiment with SIGINT/SIGTERM handling, writes its JSON summary and outputs (also when
@@ -195,7 +175,7 @@ void validate_run(const Config& cfg, const std::string& out, const ReportStyle& 
 template <class Config, class Run, class Write>
 void run_and_report(const Config& cfg, const std::string& out, const ReportStyle& style, Run run, Write write) {
   const auto wall0 = std::chrono::steady_clock::now();
-  validate_run(cfg, out, style);  // every option, counts and memory: before anything is created
+  validate_run(cfg, out);  // every option, counts and memory: before anything is created
   std::optional<sim::OutputLock> lock;  // one run per --out, taken after validation
   if (!out.empty()) lock.emplace(out);
   refuse_earlier_checkpoint(cfg);  // (after the lock: a run still writing it is named by the lock)
@@ -242,18 +222,15 @@ void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& ou
 }
 
 // --sites of a bright run: the odd number 2N + 1 of strain sites n = -N..N, kept as the half-width N
-// of the run (and of the TOML key N); refused (exit 2) when even or out of [5, 2e15 + 1].
+// of the run; refused (exit 2) when even or out of [5, 2e15 + 1] (sim::bright_sites).
 void add_strain_sites(CLI::App& app, long& half_width) {
   auto* opt = app.add_option_function<std::string>(
       "--sites",
       [&half_width](const std::string& text) {
-        const std::int64_t sites = option_integer(text, "sites", 5, 2'000'000'000'000'001);
-        if (sites % 2 == 0)
-          throw InvalidParameter("sites", "must be odd: the strain sites are n = -N..N, 2N + 1 of them (got " +
-                                              std::to_string(sites) + ")");
-        half_width = static_cast<long>((sites - 1) / 2);
+        half_width = sim::strain_half_width(option_integer(text, "sites", sim::bright_sites.least, sim::bright_sites.most),
+                                            sim::bright_sites);
       },
-      "odd number of strain sites 2N + 1, n = -N..N (default 1001, N = 500; TOML key N is the half-width)");
+      "odd number of strain sites 2N + 1, n = -N..N (default 1001, N = 500)");
   opt->type_name("INT");
 }
 
@@ -388,7 +365,7 @@ void register_simulate(CLI::App& app) {
     cfg->restart_file = *restart;
     cfg->checkpoint_file = *checkpoint;
     cfg->max_memory = *max_memory;
-    run_bright_and_report(*cfg, *out, with_option_names(*style, {{"N", "sites"}}));
+    run_bright_and_report(*cfg, *out, *style);
   });
 
   // simulate drive (experiment 6, Sec. 4.3)
@@ -400,11 +377,11 @@ void register_simulate(CLI::App& app) {
   add_model_options(*drive, dcfg->params, false);
   add_integer(*drive, "--sites", dcfg->beads, 10, std::numeric_limits<std::int64_t>::max(),
               "lattice sites: beads n = 1..sites, each with its resonator, driven at n = 0, far end clamped "
-              "(default 2000; TOML key beads)");
+              "(default 2000)");
   add_number(*drive, "--amplitude", dcfg->amplitude, "A0, in (0, delta0] (default 0.06)");
   add_number(*drive, "--omega0", dcfg->omega0, "driving frequency, in the optical band (default 2.1)");
   add_number(*drive, "--ramp-rate", dcfg->ramp_rate, "r of chi(t) (default 0.046)");
-  add_number(*drive, "--switch-off-time", dcfg->t_m, "switch-off time t_m of chi(t) (default 700; TOML key t_m)");
+  add_number(*drive, "--switch-off-time", dcfg->t_m, "switch-off time t_m of chi(t) (default 700)");
   add_number(*drive, "--t-end", dcfg->t_end, "final time (default 2400)");
   add_number(*drive, "--sample-every", dcfg->sample_every, "series interval (default 1)");
   add_number(*drive, "--spacetime-every", dcfg->spacetime_every, "e_n row interval (default 2)");
@@ -425,7 +402,7 @@ void register_simulate(CLI::App& app) {
     dcfg->restart_file = *restart;
     dcfg->checkpoint_file = *checkpoint;
     dcfg->max_memory = *max_memory;
-    run_drive_and_report(*dcfg, *out, with_option_names(*style, {{"beads", "sites"}, {"t-m", "switch-off-time"}}));
+    run_drive_and_report(*dcfg, *out, *style);
   });
 
   // simulate modulated (experiment 7, Sec. 5.1)
@@ -437,10 +414,10 @@ void register_simulate(CLI::App& app) {
   mcfg->params.delta0 = 0.27;
   add_model_options(*mod, mcfg->params, false);
   add_integer(*mod, "--sites", mcfg->N, 8, std::numeric_limits<std::int64_t>::max(),
-              "lattice sites N of the periodic chain, n = 0..N-1 (default 401; TOML key N)");
+              "lattice sites N of the periodic chain, n = 0..N-1 (default 401)");
   add_parameter(*mod, "--epsilon", mcfg->epsilon, modulation_amplitude_range, "default 0.03");
   add_number(*mod, "--theta-waves", mcfg->theta_waves, "carrier theta0 = this * pi / N, N = --sites (default 252)");
-  add_number(*mod, "--modulation-depth", mcfg->b, "modulation depth b of eq:cimi (default 0.01; TOML key b)");
+  add_number(*mod, "--modulation-depth", mcfg->b, "modulation depth b of eq:cimi (default 0.01)");
   add_number(*mod, "--t-end", mcfg->t_end, "final time (default 45000)");
   add_number(*mod, "--sample-every", mcfg->sample_every, "series and e_n row interval (default 10)");
   add_number_list(*mod, "--snapshots", mcfg->snapshot_times, "snapshot times (default 0 17100 32400)");
@@ -459,7 +436,7 @@ void register_simulate(CLI::App& app) {
     mcfg->restart_file = *restart;
     mcfg->checkpoint_file = *checkpoint;
     mcfg->max_memory = *max_memory;
-    run_modulated_and_report(*mcfg, *out, with_option_names(*style, {{"N", "sites"}, {"b", "modulation-depth"}}));
+    run_modulated_and_report(*mcfg, *out, *style);
   });
 
   sim_cmd->callback([=] {

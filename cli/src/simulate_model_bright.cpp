@@ -81,8 +81,6 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
   c.sample_every = bright.sample_every;
   c.ansatz_ends = bright.ansatz_ends;
   if (cmd.count("--dt") > 0) c.dt = bright.integrator.dt;
-  if (c.N < 10 || c.N > 50'000'000)  // sim::validate's bound on N, in the option's terms
-    throw InvalidParameter("sites", "a model bright run takes an odd number of strain sites 2N + 1 in [21, 100000001]");
   run_and_report_model_bright(selection, model, c, branch, *output.out, output, "");
 }
 

@@ -23,23 +23,10 @@ def renamed(**old_to_new):
     return wrap
 
 
-def odd_sites(sites, least, most):
-    """The half-width N of ``sites`` = 2N + 1 strain sites (n = -N..N), checked as the command's
-    ``--sites`` is: an odd integer in [least, most]; InvalidParameterError naming ``sites``."""
-    from .errors import InvalidParameterError
-
-    if isinstance(sites, bool) or not isinstance(sites, int) and not (hasattr(sites, "__index__")):
-        raise InvalidParameterError(f"invalid sites: must be an integer, not {type(sites).__name__}", "sites")
-    sites = int(sites)
-    if not least <= sites <= most or sites % 2 == 0:
-        raise InvalidParameterError(f"invalid sites: must be an odd integer in [{least}, {most}]: the strain sites "
-                                    f"are n = -N..N, 2N + 1 of them (got {sites})", "sites")
-    return (sites - 1) // 2
-
-
-def python_names(call, **renames):
-    """``call()``, with an InvalidParameterError's parameter given its Python keyword's name:
-    ``renames`` {library name: keyword}, and the library's hyphens as underscores (t-end -> t_end)."""
+def python_names(call):
+    """``call()``, with an InvalidParameterError's parameter given its Python keyword's name: the
+    library's option spelling with hyphens as underscores (t-end -> t_end, switch-off-time ->
+    switch_off_time)."""
     from .errors import InvalidParameterError
 
     try:
@@ -48,7 +35,7 @@ def python_names(call, **renames):
         old = e.parameter
         if old is None:
             raise
-        new = renames.get(old, old.replace("-", "_"))
+        new = old.replace("-", "_")
         if new == old:
             raise
         message = str(e)

@@ -24,7 +24,7 @@ from math import pi
 import numpy as np
 
 from . import _lrchain
-from ._keywords import checked_model, odd_sites, python_names, renamed
+from ._keywords import checked_model, python_names, renamed
 from ._lrchain import Model, Params
 from .errors import InputError
 from .hdf5 import write_simulation
@@ -158,21 +158,20 @@ def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=
             if value is not None:
                 raise InputError(f"{name} is not available with model= (model bright runs use srkn11b, or rkf78 "
                                  f"with ansatz_ends=True; see help(lrchain.simulate.bright))")
-        options = _options(theta=theta, n0=n0, N=None if sites is None else odd_sites(sites, 21, 100_000_001),
-                           periods=periods, sample_every=sample_every, dt=dt, ansatz_ends=ansatz_ends)
+        options = _options(theta=theta, n0=n0, sites=sites, periods=periods, sample_every=sample_every, dt=dt,
+                           ansatz_ends=ansatz_ends)
         if detuning is not None:
             options["detuning"] = detuning
         out = python_names(lambda: _lrchain.simulate_model_bright(model, branch, options))
         return _model_bright_result(out)
-    options = _options(params=params, branch=branch, theta=theta, n0=n0,
-                       N=None if sites is None else odd_sites(sites, 5, 2_000_000_000_000_001), periods=periods,
+    options = _options(params=params, branch=branch, theta=theta, n0=n0, sites=sites, periods=periods,
                        sample_every=sample_every, spacetime_every=spacetime_every,
                        snapshot_periods=None if snapshot_periods is None else list(snapshot_periods),
                        centre_window=centre_window, error_window_end=error_window_end, ansatz_ends=ansatz_ends,
                        stepper=stepper, abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
     if detuning is not None:
         options["detuning"] = detuning
-    out = python_names(lambda: _lrchain.simulate_bright(options, record_strains, observer), N="sites")
+    out = python_names(lambda: _lrchain.simulate_bright(options, record_strains, observer))
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "x_n", "y_n")
     return BrightResult(t=series["t"], E_x=series["E_x"], E_y=series["E_y"], energy=series["energy"],
@@ -302,13 +301,12 @@ def drive(params=None, *, sites=None, amplitude=None, omega0=None, ramp_rate=Non
     delta0=4/9, kappa=1), sites=2000, amplitude=0.06, omega0=2.1, ramp_rate=0.046,
     switch_off_time=700 (t_m of chi(t)), t_end=2400, sample_every=1, spacetime_every=2, stepper
     rkf78 at 1e-10. Returns :class:`DriveResult`."""
-    options = _options(params=params, beads=sites, amplitude=amplitude, omega0=omega0, ramp_rate=ramp_rate,
-                       t_m=switch_off_time, t_end=t_end, sample_every=sample_every, spacetime_every=spacetime_every,
+    options = _options(params=params, sites=sites, amplitude=amplitude, omega0=omega0, ramp_rate=ramp_rate,
+                       switch_off_time=switch_off_time, t_end=t_end, sample_every=sample_every, spacetime_every=spacetime_every,
                        snapshot_times=None if snapshot_times is None else list(snapshot_times),
                        front_fraction=front_fraction, front_fit_start=front_fit_start, front_fit_end=front_fit_end,
                        stepper=stepper, abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
-    out = python_names(lambda: _lrchain.simulate_drive(options, record_displacements, observer), beads="sites",
-                       t_m="switch_off_time", **{"t-m": "switch_off_time"})
+    out = python_names(lambda: _lrchain.simulate_drive(options, record_displacements, observer))
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "u_n", "v_n")
     return DriveResult(t=series["t"], energy=series["energy"], front=series["front"],
@@ -352,14 +350,14 @@ def modulated(params=None, *, sites=None, epsilon=None, theta_waves=None, modula
     acoustic wave (eq. cimi). Library defaults: params delta0=0.27, rho=0.32, sites=401,
     epsilon=0.03, theta_waves=252, modulation_depth=0.01 (b of eq. cimi), t_end=45000,
     sample_every=10, symplectic stepper with dt=0.05. Returns :class:`ModulatedResult`."""
-    options = _options(params=params, N=sites, epsilon=epsilon, theta_waves=theta_waves, b=modulation_depth,
+    options = _options(params=params, sites=sites, epsilon=epsilon, theta_waves=theta_waves,
+                       modulation_depth=modulation_depth,
                        t_end=t_end, sample_every=sample_every,
                        snapshot_times=None if snapshot_times is None else list(snapshot_times),
                        contrast_threshold=contrast_threshold, dark_window=dark_window,
                        speed_fit_start=speed_fit_start, speed_fit_end=speed_fit_end, stepper=stepper,
                        abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
-    out = python_names(lambda: _lrchain.simulate_modulated(options, record_displacements, observer), N="sites",
-                       b="modulation_depth")
+    out = python_names(lambda: _lrchain.simulate_modulated(options, record_displacements, observer))
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "u_n", "v_n")
     return ModulatedResult(t=series["t"], energy=series["energy"], contrast=series["contrast"],

@@ -12,6 +12,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/model_bright_run.hpp"
 #include "lrchain/sim/ring_run.hpp"
+#include "lrchain/sim/strain_sites.hpp"
 #include "run_options.hpp"
 #include "run_record_arrays.hpp"
 
@@ -24,16 +25,18 @@ using namespace lrchain::sim;
 
 // The bright breather of a model (the checks and order of `lrchain simulate bright --model`):
 // branch, options, theta on the branch, focusing and detuning, then the run. options: theta,
-// detuning, n0, N, periods, sample_every, dt, ansatz_ends.
+// detuning, n0, sites (2N + 1), periods, sample_every, dt, ansatz_ends.
 py::dict model_bright(const LoadedModel& loaded, const std::string& branch, const py::dict& options) {
   const Model& model = loaded.model;
   ModelBrightConfig c;
   std::optional<double> detuning;
+  long sites = long(strain_site_count(c.N));
   std::map<std::string, OptionTarget> t{{"theta", &c.theta},   {"detuning", &detuning},
-                                        {"n0", &c.n0},         {"N", &c.N},
+                                        {"n0", &c.n0},         {"sites", &sites},
                                         {"periods", &c.periods}, {"sample_every", &c.sample_every},
                                         {"dt", &c.dt},         {"ansatz_ends", &c.ansatz_ends}};
-  assign_options(options, t, "bright");
+  assign_options(options, t, "bright", {{"N", "sites", half_width_renamed_note}});
+  c.N = strain_half_width(sites, model_bright_sites);
   c.detuning = detuning;
   c.branch = model.branch(branch);
   validate(c);

@@ -24,10 +24,14 @@ const char* type_name() {
 }  // namespace
 
 void assign_options(const py::dict& options, const std::map<std::string, OptionTarget>& targets,
-                    const char* function) {
+                    const char* function, const std::vector<config::RenamedKey>& renamed) {
   for (auto [key, value] : options) {
     const std::string name = py::str(key);
     const auto it = targets.find(name);
+    for (const auto& r : renamed)
+      if (it == targets.end() && name == r.old_name)
+        throw py::type_error(std::string(function) + "() got the option '" + name + "', which is now '" + r.new_name +
+                             "'" + (r.note.empty() ? "" : ", " + r.note));
     if (it == targets.end()) {
       std::string allowed;
       for (const auto& [k, target] : targets) allowed += (allowed.empty() ? "" : ", ") + k;

@@ -10,6 +10,7 @@
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/drive_run.hpp"
 #include "lrchain/sim/modulated_run.hpp"
+#include "lrchain/sim/strain_sites.hpp"
 #include "run_options.hpp"
 #include "run_record_arrays.hpp"
 
@@ -48,14 +49,16 @@ py::dict run_python(const Config& config, Run run, bool record_fields, const py:
 
 py::dict bright(const py::dict& options, bool record_strains, const py::object& observer) {
   BrightRunConfig c;
+  long sites = long(strain_site_count(c.N));
   std::map<std::string, OptionTarget> t{
       {"params", &c.params}, {"branch", &c.branch}, {"theta", &c.theta}, {"detuning", &c.detuning},
-      {"n0", &c.n0}, {"N", &c.N}, {"periods", &c.periods}, {"sample_every", &c.sample_every},
+      {"n0", &c.n0}, {"sites", &sites}, {"periods", &c.periods}, {"sample_every", &c.sample_every},
       {"spacetime_every", &c.spacetime_every}, {"snapshot_periods", &c.snapshot_periods},
       {"centre_window", &c.centre_window}, {"error_window_end", &c.error_window_end},
       {"ansatz_ends", &c.ansatz_ends}, {"max_memory", &c.max_memory}};
   add_integrator(t, c.integrator);
-  assign_options(options, t, "bright");
+  assign_options(options, t, "bright", {{"N", "sites", half_width_renamed_note}});
+  c.N = strain_half_width(sites, bright_sites);
   return run_python(c, [](const BrightRunConfig& cfg, const RunControl& rc) { return run_bright(cfg, rc); },
                     record_strains, observer);
 }
@@ -63,13 +66,13 @@ py::dict bright(const py::dict& options, bool record_strains, const py::object& 
 py::dict drive(const py::dict& options, bool record_displacements, const py::object& observer) {
   DriveRunConfig c;
   std::map<std::string, OptionTarget> t{
-      {"params", &c.params}, {"beads", &c.beads}, {"amplitude", &c.amplitude}, {"omega0", &c.omega0},
-      {"ramp_rate", &c.ramp_rate}, {"t_m", &c.t_m}, {"t_end", &c.t_end}, {"sample_every", &c.sample_every},
+      {"params", &c.params}, {"sites", &c.beads}, {"amplitude", &c.amplitude}, {"omega0", &c.omega0},
+      {"ramp_rate", &c.ramp_rate}, {"switch_off_time", &c.t_m}, {"t_end", &c.t_end}, {"sample_every", &c.sample_every},
       {"spacetime_every", &c.spacetime_every}, {"snapshot_times", &c.snapshot_times},
       {"front_fraction", &c.front_fraction}, {"front_fit_start", &c.front_fit_start},
       {"front_fit_end", &c.front_fit_end}, {"max_memory", &c.max_memory}};
   add_integrator(t, c.integrator);
-  assign_options(options, t, "drive");
+  assign_options(options, t, "drive", {{"beads", "sites"}, {"t_m", "switch_off_time"}});
   return run_python(c, [](const DriveRunConfig& cfg, const RunControl& rc) { return run_drive(cfg, rc); },
                     record_displacements, observer);
 }
@@ -78,13 +81,13 @@ py::dict modulated(const py::dict& options, bool record_displacements, const py:
   ModulatedRunConfig c;
   c.checkpoint_every = 0;  // no checkpoint files from Python
   std::map<std::string, OptionTarget> t{
-      {"params", &c.params}, {"N", &c.N}, {"epsilon", &c.epsilon}, {"theta_waves", &c.theta_waves},
-      {"b", &c.b}, {"t_end", &c.t_end}, {"sample_every", &c.sample_every},
+      {"params", &c.params}, {"sites", &c.N}, {"epsilon", &c.epsilon}, {"theta_waves", &c.theta_waves},
+      {"modulation_depth", &c.b}, {"t_end", &c.t_end}, {"sample_every", &c.sample_every},
       {"snapshot_times", &c.snapshot_times}, {"contrast_threshold", &c.contrast_threshold},
       {"dark_window", &c.dark_window}, {"speed_fit_start", &c.speed_fit_start},
       {"speed_fit_end", &c.speed_fit_end}, {"max_memory", &c.max_memory}};
   add_integrator(t, c.integrator);
-  assign_options(options, t, "modulated");
+  assign_options(options, t, "modulated", {{"N", "sites"}, {"b", "modulation_depth"}});
   return run_python(c, [](const ModulatedRunConfig& cfg, const RunControl& rc) { return run_modulated(cfg, rc); },
                     record_displacements, observer);
 }

@@ -17,6 +17,7 @@
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"
+#include "lrchain/sim/strain_sites.hpp"
 #include "restart.hpp"
 #include "sampling_checks.hpp"
 
@@ -49,7 +50,7 @@ ResourceEstimate estimate_resources(const BrightRunConfig& c) { return estimate_
 
 void validate(const BrightRunConfig& c) {
   validate(c.params);
-  if (c.N < 2 || c.N > max_sites) throw InvalidParameter("N", "must be an integer in [2, 1e15]");
+  if (c.N < 2 || c.N > max_sites) throw InvalidParameter("sites", strain_sites_rule(bright_sites, strain_site_count(c.N)));
   if (!(c.periods > 0 && std::isfinite(c.periods)))
     throw InvalidParameter("periods", "must be a finite number > 0 (units of T_b)");
   validate_sampling({c.periods, "periods", true, c.sample_every, c.spacetime_every, c.checkpoint_every,
@@ -62,8 +63,8 @@ void validate(const BrightRunConfig& c) {
                      }, c.max_memory});
   if (!(c.theta > 0 && c.theta <= M_PI)) throw InvalidParameter("theta", "the carrier wavenumber must be in (0, pi]");
   if (!(std::isfinite(c.n0) && std::abs(c.n0) <= double(c.N)))
-    throw InvalidParameter("n0", fmt::format("the initial centre must be a site of the lattice, in [-N, N] = [{}, {}]",
-                                             -c.N, c.N));
+    throw InvalidParameter("n0", fmt::format("the initial centre must be a site of the lattice, in [-N, N] = [{}, {}] "
+                                             "(sites = 2N + 1 = {})", -c.N, c.N, strain_site_count(c.N)));
   if (c.detuning) checked_finite(*c.detuning, "detuning");
   checked_finite(c.error_window_end, "error-window");
   if (c.centre_window < 1) throw InvalidParameter("centre-window", "must be >= 1");
@@ -80,8 +81,8 @@ void validate(const BrightRunConfig& c) {
                                                              run_length));
   const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
   const bool lattice = lattice_dominates(sizes);
-  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "N" : "periods",
-               lattice ? "lower N" : "lower periods or raise sample-every and spacetime-every");
+  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "periods",
+               lattice ? "lower sites" : "lower periods or raise sample-every and spacetime-every");
 }
 
 
@@ -219,7 +220,7 @@ BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const 
   identity.add("theta", c.theta);
   identity.add("detuning", c.detuning ? fmt::format("{}", *c.detuning) : std::string("default"));
   identity.add("n0", c.n0);
-  identity.add("N", N);
+  identity.add("N", N, {"sites", [](long half_width) { return long(strain_site_count(half_width)); }});
   identity.add("ansatz_ends", c.ansatz_ends ? "true" : "false");
   identity.add("sample_every", c.sample_every);
   identity.add("spacetime_every", c.spacetime_every);

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <boost/crc.hpp>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -219,6 +220,14 @@ void TrajectoryIdentity::add(const std::string& key, long value) {
 void TrajectoryIdentity::add(const std::string& key, const std::string& value) {
   items_.emplace_back(key, value);
 }
+void TrajectoryIdentity::add(const std::string& key, double value, ShownAs shown) {
+  add(key, value);
+  shown_.emplace_back(key, std::move(shown));
+}
+void TrajectoryIdentity::add(const std::string& key, long value, ShownAs shown) {
+  add(key, value);
+  shown_.emplace_back(key, std::move(shown));
+}
 void TrajectoryIdentity::add_state_hash(const std::string& key, const State& state) {
   items_.emplace_back(key, fmt::format("fnv1a64:{:016x}", fnv1a64(state.data(), state.size() * sizeof(double))));
 }
@@ -227,6 +236,19 @@ std::string TrajectoryIdentity::text() const {
   std::string t = std::string("lrchain_version = ") + LRCHAIN_VERSION + "\n";
   for (const auto& [k, v] : items_) t += k + " = " + v + "\n";
   return t;
+}
+
+std::string TrajectoryIdentity::shown(const std::string& key, const std::string& value) const {
+  for (const auto& [k, s] : shown_) {
+    if (k != key) continue;
+    if (!s.value) return s.name + " = " + value;
+    long recorded = 0;
+    const char* end = value.data() + value.size();
+    const auto [at, error] = std::from_chars(value.data(), end, recorded);
+    if (error == std::errc() && at == end) return s.name + " = " + std::to_string(s.value(recorded));
+    break;  // not a long: shown as recorded
+  }
+  return key + " = " + value;
 }
 
 double Checkpoint::accumulator(const fs::path& file, const std::string& name) const {
@@ -351,8 +373,8 @@ void check_same_trajectory(const fs::path& file, const Checkpoint& c, const Traj
       throw InvalidParameter("restart", fmt::format("checkpoint '{}' does not record {} (it was written "
                                                     "for another kind of run)", file.string(), key));
     if (*old != value)
-      throw InvalidParameter("restart", fmt::format("checkpoint '{}' was written with {} = {}, this run "
-                                                    "has {} = {}", file.string(), key, *old, key, value));
+      throw InvalidParameter("restart", fmt::format("checkpoint '{}' was written with {}, this run has {}",
+                                                    file.string(), run.shown(key, *old), run.shown(key, value)));
   }
   if (stored.size() != current.size())
     throw InvalidParameter("restart", fmt::format("checkpoint '{}' records {} items, this run {}",

@@ -58,7 +58,7 @@ ResourceEstimate estimate_resources(const DriveRunConfig& c) { return estimate_l
 
 void validate(const DriveRunConfig& c) {
   validate(c.params);
-  if (c.beads < 10) throw InvalidParameter("beads", "must be an integer >= 10");
+  if (c.beads < 10) throw InvalidParameter("sites", "must be an integer >= 10");
   check_drive_amplitude(c.amplitude, c.params.delta0);
   if (!(c.omega0 > 0 && std::isfinite(c.omega0))) throw InvalidParameter("omega0", "must be a finite number > 0");
   check_optical_band(c.params, c.omega0);
@@ -69,7 +69,7 @@ void validate(const DriveRunConfig& c) {
                      snapshot_times_in_run(c),
                      (c.checkpoint_at_end && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
                      "snapshot_times",
-                     {{"t-m", c.t_m}, {"front-fit-start", c.front_fit_start}, {"front-fit-end", c.front_fit_end}},
+                     {{"switch-off-time", c.t_m}, {"front-fit-start", c.front_fit_start}, {"front-fit-end", c.front_fit_end}},
                      [&c](double t_end) {
                        DriveRunConfig longer = c;
                        longer.t_end = t_end;
@@ -77,7 +77,7 @@ void validate(const DriveRunConfig& c) {
                      }, c.max_memory});
   if (!(c.front_fraction > 0 && c.front_fraction < 1))
     throw InvalidParameter("front-fraction", "must be in (0, 1)");
-  checked_finite(c.t_m, "t-m");
+  checked_finite(c.t_m, "switch-off-time");
   checked_finite(c.front_fit_start, "front-fit-start");
   checked_finite(c.front_fit_end, "front-fit-end");
   if (!(c.front_fit_end > c.front_fit_start))
@@ -89,8 +89,8 @@ void validate(const DriveRunConfig& c) {
     throw InvalidParameter("stepper", "the driven chain is not autonomous: use rkf78 or dopri5");
   const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
   const bool lattice = lattice_dominates(sizes);
-  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "beads" : "t-end",
-               lattice ? "lower beads" : "lower t-end or raise sample-every and spacetime-every");
+  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "t-end",
+               lattice ? "lower sites" : "lower t-end or raise sample-every and spacetime-every");
 }
 
 // chi(t) = tanh(r t) (1 - tanh(r (t - t_m))) / 2 (Sec. 4.3).
@@ -174,11 +174,11 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
 
   // What defines the trajectory and its record; a restart must match every item.
   TrajectoryIdentity identity = base_identity("drive", c.params, c.integrator);
-  identity.add("beads", c.beads);
+  identity.add("beads", c.beads, {"sites"});
   identity.add("amplitude", c.amplitude);
   identity.add("omega0", c.omega0);
   identity.add("ramp_rate", c.ramp_rate);
-  identity.add("t_m", c.t_m);
+  identity.add("t_m", c.t_m, {"switch_off_time"});
   identity.add("sample_every", c.sample_every);
   identity.add("spacetime_every", c.spacetime_every);
   identity.add("front_fraction", c.front_fraction);

@@ -2,6 +2,7 @@
 #include "lrchain/sim/experiment_config.hpp"
 
 #include "lrchain/sim/more_experiment_config.hpp"
+#include "lrchain/sim/strain_sites.hpp"
 #include "located_validation.hpp"
 #include "toml_reading.hpp"
 
@@ -9,6 +10,8 @@ namespace lrchain::sim {
 
 namespace {
 
+// Reads [bright] into `c`, all but `sites`, which the caller converts (strain_half_width) where its
+// refusal is reported at the file's line.
 void read_bright(const config::CheckedTable& t, BrightRunConfig& c) {
   std::string branch;
   if (t.read("branch", branch)) c.branch = parse_branch(branch);
@@ -16,7 +19,6 @@ void read_bright(const config::CheckedTable& t, BrightRunConfig& c) {
   double d = 0;
   if (t.read("detuning", d)) c.detuning = d;
   t.read("n0", c.n0);
-  t.read("N", c.N);
   t.read("periods", c.periods);
   t.read("sample_every", c.sample_every);
   t.read("spacetime_every", c.spacetime_every);
@@ -43,8 +45,14 @@ ExperimentConfig load_experiment_config(const config::Document& doc) {
   c.experiment = kind;
   c.name = config::config_name(root);
   config::read_common(root, c.bright.params, c.bright.integrator, c.out_dir);
-  read_bright(*root.table("bright"), c.bright);  // a required table
-  config::validate_located(root, "bright", [&c] { validate(c.bright); });
+  const config::CheckedTable bright = *root.table("bright");  // a required table
+  read_bright(bright, c.bright);
+  std::int64_t sites = 0;
+  const bool has_sites = bright.read("sites", sites);
+  config::validate_located(root, "bright", [&] {
+    if (has_sites) c.bright.N = strain_half_width(sites, bright_sites);
+    validate(c.bright);
+  });
   return c;
 }
 

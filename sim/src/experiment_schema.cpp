@@ -4,6 +4,7 @@
 
 #include "lrchain/sim/experiment_config.hpp"
 #include "lrchain/sim/more_experiment_config.hpp"
+#include "lrchain/sim/strain_sites.hpp"
 #include "toml_reading.hpp"
 
 namespace lrchain::sim {
@@ -12,7 +13,7 @@ namespace {
 
 using namespace lrchain::config;
 
-constexpr std::int64_t max_sites = 50'000'000;  // lattice sizes (as validate(BrightRunConfig))
+constexpr std::int64_t max_sites = 50'000'000;  // lattice sizes of the drive and modulated chains, n0, windows
 
 std::string numbers_text(const std::vector<double>& values) {
   std::string s = "[";
@@ -31,8 +32,9 @@ std::shared_ptr<const TableSchema> bright_table() {
        number("theta", NumberRange::any(), "", "carrier wavenumber theta").require(),
        number("detuning", NumberRange::any(), "sign(h_tilde) 1e-4", "omega_b - omega"),
        number("n0", NumberRange::between(-double(max_sites), double(max_sites), false, false), number_text(d.n0),
-              "initial centre (site), in [-N, N]"),
-       integer("N", 2, max_sites, std::to_string(d.N), "strain sites n = -N..N"),
+              "initial centre (site), in [-N, N] with sites = 2N + 1"),
+       integer("sites", bright_sites.least, bright_sites.most, std::to_string(strain_site_count(d.N)),
+               "odd number of strain sites 2N + 1, n = -N..N"),
        number("periods", positive, number_text(d.periods), "run length in breather periods T_b"),
        number("sample_every", positive, number_text(d.sample_every), "E_x, E_y, energy, centre sampled every this many T_b"),
        number("spacetime_every", positive, number_text(d.spacetime_every), "an energy density row every this many T_b"),
@@ -47,7 +49,8 @@ std::shared_ptr<const TableSchema> bright_table() {
               "sites between the breather's centre and the searched region"),
        number("checkpoint_every", non_negative, number_text(d.checkpoint_every),
               "T_b between checkpoints (0: only on SIGINT/SIGTERM; > 0 also writes one at the end)")},
-      std::nullopt});
+      std::nullopt,
+      {{"N", "sites", half_width_renamed_note}}});
 }
 
 // [drive] of Sec. 4.3 (DriveRunConfig).
@@ -56,12 +59,12 @@ std::shared_ptr<const TableSchema> drive_table() {
   const auto positive = NumberRange::positive(), non_negative = NumberRange::non_negative();
   return std::make_shared<const TableSchema>(TableSchema{
       "a chain at rest driven at its first bead (Sec. 4.3)",
-      {integer("beads", 10, max_sites, std::to_string(d.beads), "beads n = 1..beads, far end clamped"),
+      {integer("sites", 10, max_sites, std::to_string(d.beads), "beads n = 1..sites, far end clamped"),
        number("amplitude", config::range_of(delta0_range), number_text(d.amplitude),
               "driving amplitude A0, at most the precompression overlap delta0"),
        number("omega0", positive, number_text(d.omega0), "driving frequency"),
        number("ramp_rate", positive, number_text(d.ramp_rate), "r of the envelope chi(t)"),
-       number("t_m", non_negative, number_text(d.t_m), "switch-off time of chi(t)"),
+       number("switch_off_time", non_negative, number_text(d.t_m), "switch-off time t_m of chi(t)"),
        number("t_end", positive, number_text(d.t_end), "run length"),
        number("sample_every", positive, number_text(d.sample_every), "series sampled every this time"),
        number("spacetime_every", positive, number_text(d.spacetime_every), "an energy density row every this time"),
@@ -72,7 +75,8 @@ std::shared_ptr<const TableSchema> drive_table() {
        number("front_fit_end", positive, number_text(d.front_fit_end), "end of the front-speed fit"),
        number("checkpoint_every", non_negative, number_text(d.checkpoint_every),
               "time between checkpoints (0: only on SIGINT/SIGTERM; > 0 also writes one at the end)")},
-      std::nullopt});
+      std::nullopt,
+      {{"beads", "sites"}, {"t_m", "switch_off_time"}}});
 }
 
 // [modulated] of Sec. 5.1 (ModulatedRunConfig).
@@ -81,11 +85,12 @@ std::shared_ptr<const TableSchema> modulated_table() {
   const auto positive = NumberRange::positive(), non_negative = NumberRange::non_negative();
   return std::make_shared<const TableSchema>(TableSchema{
       "a periodic chain started from a modulated acoustic wave (Sec. 5.1)",
-      {integer("N", 8, max_sites, std::to_string(d.N), "sites of the periodic chain"),
+      {integer("sites", 8, max_sites, std::to_string(d.N), "sites N of the periodic chain, n = 0..N-1"),
        number("epsilon", config::range_of(modulation_amplitude_range), number_text(d.epsilon),
               modulation_amplitude_range.meaning),
        number("theta_waves", positive, number_text(d.theta_waves), "carrier theta0 = theta_waves pi / N"),
-       number("b", NumberRange::between(0, 1, false, true), number_text(d.b), "modulation depth"),
+       number("modulation_depth", NumberRange::between(0, 1, false, true), number_text(d.b),
+              "modulation depth b of eq. (43)"),
        number("t_end", positive, number_text(d.t_end), "run length"),
        number("sample_every", positive, number_text(d.sample_every), "series and energy density rows every this time"),
        numbers("snapshot_times", non_negative, numbers_text(d.snapshot_times), "velocity snapshot times"),
@@ -96,7 +101,8 @@ std::shared_ptr<const TableSchema> modulated_table() {
        number("speed_fit_end", non_negative, number_text(d.speed_fit_end), "end of the dark-breather speed fit"),
        number("checkpoint_every", non_negative, number_text(d.checkpoint_every),
               "time between checkpoints (0: none)")},
-      std::nullopt});
+      std::nullopt,
+      {{"N", "sites"}, {"b", "modulation_depth"}}});
 }
 
 }  // namespace
@@ -131,6 +137,10 @@ std::string experiment_configs_markdown() {
       if (k.type != ValueType::table) continue;
       md += "\n`[" + k.name + "]`" + (k.required ? " (required)" : "") + ": " + k.table->meaning + ".\n\n" +
             markdown_table(*k.table);
+      if (k.table->renamed.empty()) continue;
+      md += "\nRenamed keys of `[" + k.name + "]` (an old key is an error naming the new one):\n\n";
+      for (const auto& r : k.table->renamed)
+        md += "- `" + r.old_name + "`: use `" + r.new_name + "`" + (r.note.empty() ? "" : ", " + r.note) + "\n";
     }
     md += "\n";
   }

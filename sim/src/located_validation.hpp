@@ -3,7 +3,7 @@
 // the file gave is reported at its place: an InvalidParameter naming a key of the config becomes a
 // ConfigError "invalid value for 'theta' in [bright] at run.toml:5: <what is allowed>" (exit 2), as
 // the schema's own range checks are. Private to sim/src (experiment_config.cpp,
-// more_experiment_config.cpp).
+// more_experiment_config.cpp, model_experiment_config.cpp).
 #include <functional>
 #include <string>
 
@@ -16,5 +16,8 @@ namespace lrchain::sim::config {
 // [integrator] is rethrown as a ConfigError at that key's line; any other error passes unchanged.
 void validate_located(const lrchain::config::CheckedTable& root, const std::string& experiment_table,
                       const std::function<void()>& validate);
+
+// The same for the keys of one table (a model config's [bright], whose top level has no [model]).
+void validate_located(const lrchain::config::CheckedTable& table, const std::function<void()>& validate);
 
 }  // namespace lrchain::sim::config

@@ -15,6 +15,7 @@
 #include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/model_lattice.hpp"
+#include "lrchain/sim/strain_sites.hpp"
 #include "model_lattice/driven_ends_lattice.hpp"
 
 namespace lrchain::sim {
@@ -77,12 +78,14 @@ void ModelBrightAnsatz::field(Index f, double n, double t, double& u, double& u_
 
 void validate(const ModelBrightConfig& c) {
   if (!(c.theta > 0 && c.theta <= std::numbers::pi)) throw InvalidParameter("theta", "the carrier wavenumber must be in (0, pi]");
-  if (c.N < 10 || c.N > 50'000'000) throw InvalidParameter("N", "must be an integer in [10, 5e7]");
+  if (c.N < 10 || c.N > 50'000'000)
+    throw InvalidParameter("sites", strain_sites_rule(model_bright_sites, strain_site_count(c.N)));
   if (!(c.periods > 0 && c.periods <= 1e6)) throw InvalidParameter("periods", "must be in (0, 1e6] (units of T_b)");
   if (!(c.sample_every > 0 && c.sample_every <= c.periods && c.periods / c.sample_every <= 1e6))
     throw InvalidParameter("sample-every", "must be in (0, periods] with at most 1e6 samples");
   if (!(std::isfinite(c.n0) && std::abs(c.n0) <= double(c.N)))
-    throw InvalidParameter("n0", fmt::format("the initial centre must be in [-N, N] = [{}, {}]", -c.N, c.N));
+    throw InvalidParameter("n0", fmt::format("the initial centre must be in [-N, N] = [{}, {}] (sites = 2N + 1 = {})", -c.N,
+                                             c.N, strain_site_count(c.N)));
   if (!(c.steps_per_period == 0 || (c.steps_per_period >= 8 && c.steps_per_period <= 1e4)))
     throw InvalidParameter("steps-per-period", "must be in [8, 1e4] (0: 24)");
   if (!(c.dt >= 0 && std::isfinite(c.dt))) throw InvalidParameter("dt", "must be a finite step > 0");

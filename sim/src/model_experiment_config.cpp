@@ -1,6 +1,8 @@
 // Bright-breather and ring configs of any model file (model_experiment_config.hpp).
 #include "lrchain/sim/model_experiment_config.hpp"
 
+#include "located_validation.hpp"
+#include "lrchain/sim/strain_sites.hpp"
 #include "toml_reading.hpp"
 
 namespace lrchain::sim {
@@ -19,14 +21,16 @@ std::shared_ptr<const TableSchema> model_bright_table() {
        number("theta", NumberRange::between(0, 3.141592653589793, true, false), "", "carrier wavenumber theta in (0, pi]")
            .require(),
        number("detuning", NumberRange::any(), "sign(h_tilde) 1e-4", "omega_b - omega"),
-       number("n0", NumberRange::any(), number_text(d.n0), "initial centre (site), in [-N, N]"),
-       integer("N", 10, 50'000'000, std::to_string(d.N), "sites n = -N..N"),
+       number("n0", NumberRange::any(), number_text(d.n0), "initial centre (site), in [-N, N] with sites = 2N + 1"),
+       integer("sites", model_bright_sites.least, model_bright_sites.most, std::to_string(strain_site_count(d.N)),
+               "odd number of strain sites 2N + 1, n = -N..N"),
        number("periods", positive, number_text(d.periods), "run length in breather periods T_b"),
        number("sample_every", positive, number_text(d.sample_every), "E, energy and centre sampled every this many T_b"),
        number("dt", positive, "2 pi / (24 omega_max)", "srkn11b step (omega_max: the fastest linear mode)"),
        boolean("ansatz_ends", d.ansatz_ends ? "true" : "false",
                "the sites beyond both ends follow the ansatz (emitting ends; integrated with rkf78)")},
-      std::nullopt});
+      std::nullopt,
+      {{"N", "sites", half_width_renamed_note}}});
 }
 
 // [ring] of a model config: the options of RingRunConfig (the ranges of sim::validate).
@@ -74,7 +78,9 @@ void read_bright(const CheckedTable& bright, ModelExperimentConfig& c) {
   double d = 0;
   if (bright.read("detuning", d)) c.bright.detuning = d;
   bright.read("n0", c.bright.n0);
-  bright.read("N", c.bright.N);
+  std::int64_t sites = 0;
+  if (bright.read("sites", sites))
+    config::validate_located(bright, [&] { c.bright.N = strain_half_width(sites, model_bright_sites); });
   bright.read("periods", c.bright.periods);
   bright.read("sample_every", c.bright.sample_every);
   bright.read("dt", c.bright.dt);

@@ -70,11 +70,11 @@ ResourceEstimate estimate_resources(const ModulatedRunConfig& c) { return estima
 
 void validate(const ModulatedRunConfig& c) {
   validate(c.params);
-  if (c.N < 8) throw InvalidParameter("N", "must be an integer >= 8");
+  if (c.N < 8) throw InvalidParameter("sites", "must be an integer >= 8");
   check_in_range(c.epsilon, modulation_amplitude_range);
   if (!(c.theta_waves > 0 && c.theta_waves < double(c.N)))
-    throw InvalidParameter("theta-waves", "theta0 = theta_waves*pi/N must lie in (0, pi)");
-  if (!(c.b >= 0 && c.b < 1)) throw InvalidParameter("b", "must be in [0, 1)");
+    throw InvalidParameter("theta-waves", "theta0 = theta_waves*pi/sites must lie in (0, pi)");
+  if (!(c.b >= 0 && c.b < 1)) throw InvalidParameter("modulation-depth", "must be in [0, 1)");
   if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t-end", "must be a finite number > 0");
   validate_sampling({c.t_end, "t_end", false, c.sample_every, std::nullopt, c.checkpoint_every,
                      snapshot_times_in_run(c),
@@ -85,10 +85,11 @@ void validate(const ModulatedRunConfig& c) {
                        longer.t_end = t_end;
                        return run_sizes(longer);
                      }, c.max_memory});
-  if (c.dark_window < 1 || c.dark_window >= c.N) throw InvalidParameter("dark-window", "must be in [1, N)");
+  if (c.dark_window < 1 || c.dark_window >= c.N) throw InvalidParameter("dark-window", "must be in [1, sites)");
   // (max e - min e)/mean e <= N for any energy density e >= 0 on N sites.
   if (!(c.contrast_threshold > 0 && c.contrast_threshold <= double(c.N)))
-    throw InvalidParameter("contrast-threshold", "must be in (0, N]: the contrast (max e - min e)/mean e never exceeds N");
+    throw InvalidParameter("contrast-threshold",
+                           "must be in (0, sites]: the contrast (max e - min e)/mean e never exceeds the number of sites");
   checked_finite(c.speed_fit_start, "speed-fit-start");
   checked_finite(c.speed_fit_end, "speed-fit-end");
   if (!(c.speed_fit_end > c.speed_fit_start))
@@ -98,8 +99,8 @@ void validate(const ModulatedRunConfig& c) {
   validate_step_within_run(c.integrator, c.t_end);
   validate_step_count(c.integrator, c.t_end);
   const bool lattice = lattice_dominates(sizes);
-  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "N" : "sample-every",
-               lattice ? "lower N" : "lower t-end or raise sample-every");
+  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "sample-every",
+               lattice ? "lower sites" : "lower t-end or raise sample-every");
 }
 
 // eq:cimi with omega = omega_-(theta0), theta0 = theta_waves pi / N.
@@ -171,10 +172,10 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
 
   // What defines the trajectory and its record; a restart must match every item.
   TrajectoryIdentity identity = base_identity("modulated", c.params, c.integrator);
-  identity.add("N", c.N);
+  identity.add("N", c.N, {"sites"});
   identity.add("epsilon", c.epsilon);
   identity.add("theta_waves", c.theta_waves);
-  identity.add("b", c.b);
+  identity.add("b", c.b, {"modulation_depth"});
   identity.add("sample_every", c.sample_every);
   identity.add("dark_window", c.dark_window);
   identity.add("contrast_threshold", c.contrast_threshold);

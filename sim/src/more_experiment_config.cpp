@@ -29,11 +29,11 @@ DriveExperiment load_drive_config(const config::Document& doc) {
   config::read_common(root, x.run.params, x.run.integrator, x.out_dir);
   {
     const auto d = root.table("drive");  // a required table
-    d->read("beads", x.run.beads);
+    d->read("sites", x.run.beads);
     d->read("amplitude", x.run.amplitude);
     d->read("omega0", x.run.omega0);
     d->read("ramp_rate", x.run.ramp_rate);
-    d->read("t_m", x.run.t_m);
+    d->read("switch_off_time", x.run.t_m);
     d->read("t_end", x.run.t_end);
     d->read("sample_every", x.run.sample_every);
     d->read("spacetime_every", x.run.spacetime_every);
@@ -54,10 +54,10 @@ ModulatedExperiment load_modulated_config(const config::Document& doc) {
   config::read_common(root, x.run.params, x.run.integrator, x.out_dir);
   {
     const auto d = root.table("modulated");  // a required table
-    d->read("N", x.run.N);
+    d->read("sites", x.run.N);
     d->read("epsilon", x.run.epsilon);
     d->read("theta_waves", x.run.theta_waves);
-    d->read("b", x.run.b);
+    d->read("modulation_depth", x.run.b);
     d->read("t_end", x.run.t_end);
     d->read("sample_every", x.run.sample_every);
     d->read("snapshot_times", x.run.snapshot_times);

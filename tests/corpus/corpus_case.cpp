@@ -11,10 +11,20 @@
 
 #include "corpus_tables.hpp"
 #include "lrchain/numeric_parse.hpp"
+#include "lrchain/sim/experiment_config.hpp"
 
 namespace lrchain::corpus {
 
 namespace {
+
+// The keys of [table] in a config of `kind` that were renamed (the schema's RenamedKey list); none
+// for a kind or table the schema does not know.
+std::vector<config::RenamedKey> renamed_keys(const std::string& kind, const std::string& table) {
+  const auto kinds = sim::experiment_kinds();
+  if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) return {};
+  const config::KeySchema* t = sim::experiment_schema(kind).find(table);
+  return t && t->table ? t->table->renamed : std::vector<config::RenamedKey>{};
+}
 
 const HelpCommand* find_command(const std::vector<HelpCommand>& commands, const std::string& joined) {
   for (const auto& c : commands)
@@ -294,7 +304,7 @@ void add_config_cases(const std::filesystem::path& examples, const std::vector<H
         corpus.cases.push_back(std::move(k));
       }
       // The same value under a misspelt key, on the line after the real one.
-      // Keys the config could hold: the file's and the subcommand's options (n0 is close to N).
+      // Keys the config could hold: the file's and the subcommand's options.
       std::set<std::string> possible = e.siblings;
       if (command)
         for (const auto& o : command->options) {
@@ -316,6 +326,23 @@ void add_config_cases(const std::filesystem::path& examples, const std::vector<H
       k.description = where + ": unknown key '" + typo + "' at line " + std::to_string(line) +
                       " (must name it, the file:line and suggest '" + e.key + "')";
       corpus.cases.push_back(std::move(k));
+      // The key under each old name it had (with its value): refused, naming the new key.
+      for (const auto& r : renamed_keys(kind, e.table)) {
+        if (r.new_name != e.key) continue;
+        auto old_lines = lines;
+        const int at = static_cast<int>(node.source().begin.line);
+        old_lines[at - 1] = r.old_name + " = " + node_text(lines, node);
+        CorpusCase o;
+        o.category = "config renamed key";
+        o.value = "renamed";
+        o.files = {{base, join_lines(old_lines)}};
+        o.args = args;
+        o.names = {r.old_name, e.key};
+        o.substrings = {base + ":" + std::to_string(at), "was renamed"};
+        o.description = where + ": the old key '" + r.old_name + "' at line " + std::to_string(at) +
+                        " (must name it, the file:line and the new key '" + e.key + "')";
+        corpus.cases.push_back(std::move(o));
+      }
     }
   }
 }

@@ -79,12 +79,10 @@ const std::set<BadValue>& possibly_valid(const std::string& name) {
       {"trailing-fit-start", {zero}},        // 0: no trailing-structure fit (the default)
       {"snapshots", {zero}},                 // a snapshot at t = 0 is the initial state
       {"rel-tol", {zero}},                   // pure absolute error control
-      {"t-m", {minus_one, zero}},            // chi(t) is defined for any switch-off time (config key t_m)
-      {"switch-off-time", {minus_one, zero}},  // the option of t_m
+      {"switch-off-time", {minus_one, zero}},  // chi(t) is defined for any switch-off time t_m
       {"front-fit-start", {minus_one, zero}},  // a fit window opening before the run starts at t = 0
       {"speed-fit-start", {minus_one, zero}},
-      {"b", {zero}},                         // no modulation (config key b)
-      {"modulation-depth", {zero}},          // the option of b
+      {"modulation-depth", {zero}},          // b = 0: no modulation
       {"omega-min", {minus_one, zero}},      // lower stop of the continuation (default 0)
       {"omega-max", {minus_one, zero}},      // <= 0 today means "the band edge"
       {"ds", {minus_one}},                   // the sign of the first step may pick the direction

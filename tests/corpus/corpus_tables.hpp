@@ -32,7 +32,7 @@ const std::map<std::string, std::string>& pair_partner();
 // Options that take numbers although their help types them as TEXT.
 const std::set<std::string>& numeric_text_options();
 
-// Values that may be valid for an option or config key (dash form, e.g. "t-m", "snapshots"),
+// Values that may be valid for an option or config key (dash form, e.g. "switch-off-time", "snapshots"),
 // although its help states no range that says so. These cases are not run.
 const std::set<BadValue>& possibly_valid(const std::string& name);
 

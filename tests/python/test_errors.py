@@ -99,6 +99,31 @@ def test_old_keyword_names_raise_naming_the_new_one(call, old, new):
         call()
 
 
+@pytest.mark.parametrize("run, options, old, new", [
+    ("simulate_bright", {"N": 40}, "N", "sites', the number of strain sites 2N \\+ 1"),
+    ("simulate_drive", {"beads": 50}, "beads", "sites"),
+    ("simulate_drive", {"t_m": 2.0}, "t_m", "switch_off_time"),
+    ("simulate_modulated", {"N": 21}, "N", "sites"),
+    ("simulate_modulated", {"b": 0.1}, "b", "modulation_depth"),
+])
+def test_run_option_dicts_take_the_config_keys_and_refuse_the_old_ones(run, options, old, new):
+    # The option dicts of the compiled runs have the config files' keys; an old key is refused naming
+    # the new one, as in a config file.
+    with pytest.raises(TypeError, match=f"got the option '{old}', which is now '{new}"):
+        getattr(lrchain._lrchain, run)(options, False, None)
+
+
+def test_bright_sites_is_the_odd_count_in_the_compiled_run_too():
+    # sites = 2N + 1 reaches the run as the half-width N: 61 strain sites are n = -30..30 (the snapshot's n).
+    r = lrchain._lrchain.simulate_bright({"sites": 61, "theta": math.pi / 2, "periods": 1.0, "spacetime_every": 0.5,
+                                         "snapshot_periods": [0.0]}, False, None)
+    n = r["record"]["snapshots"][0]["columns"]["n"]
+    assert len(n) == 61 and n[0] == -30 and n[-1] == 30
+    with pytest.raises(lrchain.InvalidParameterError, match=r"must be an odd integer in \[5, 2000000000000001\]") as err:
+        lrchain._lrchain.simulate_bright({"sites": 60}, False, None)
+    assert err.value.parameter == "sites"
+
+
 def test_dark_options():
     with pytest.raises(lrchain.InvalidParameterError, match="odd") as err:
         lrchain.dark.solve(sites=100)

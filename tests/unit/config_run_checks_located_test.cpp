@@ -48,7 +48,7 @@ const std::string bright_config =
     "[model]\n"                  // 2
     "rho = \"1/3\"\n"            // 3
     "[bright]\n"                 // 4
-    "N = 60\n";                  // 5
+    "sites = 121\n";             // 5
 
 // Exp. 6's model (the DriveRunConfig defaults: rho = 10, delta0 = 4/9).
 const std::string drive_config =
@@ -56,7 +56,7 @@ const std::string drive_config =
     "[model]\n"                 // 2
     "delta0 = \"4/9\"\n"        // 3
     "[drive]\n"                 // 4
-    "beads = 100\n";            // 5
+    "sites = 100\n";            // 5
 
 }  // namespace
 
@@ -86,10 +86,23 @@ TEST_CASE("config run checks: theta, amplitude, omega0 name file:line, table and
   // A key the file does not hold (amplitude's default 0.06 against delta0 = 0.01) keeps the message
   // naming the parameter, unlocated; a valid file loads.
   CHECK_THROWS_WITH_AS(lrchain::sim::load_drive_config(Document::from_text(
-                           "experiment = \"drive\"\n[model]\ndelta0 = 0.01\n[drive]\nbeads = 100\n", "d.toml")),
+                           "experiment = \"drive\"\n[model]\ndelta0 = 0.01\n[drive]\nsites = 100\n", "d.toml")),
                        doctest::Contains("invalid amplitude: must be a finite number in (0, delta0] = (0, 0.01]"),
                        lrchain::InvalidParameter);
   CHECK_NOTHROW(lrchain::sim::load_experiment_config(Document::from_text(bright_config + "theta = 1\n", "ok.toml")));
+}
+
+TEST_CASE("config run checks: the run's checks of sites and switch_off_time name the keys as the file spells them") {
+  // 1000 strain sites: sites = 2N + 1 is odd.
+  ConfigError e = located_error(bright_config.substr(0, bright_config.find("sites")) + "sites = 1000\ntheta = 1\n",
+                                "cfg/sites.toml");
+  CHECK(std::string(e.what()) == "invalid value for 'sites' in [bright] at cfg/sites.toml:5: must be an odd integer in "
+                                 "[5, 2000000000000001]: the strain sites are n = -N..N, 2N + 1 of them (got 1000)");
+  CHECK(e.key() == "sites");
+  // A switch-off time no continuation of the run can reach (sampling_checks.cpp).
+  e = located_error(drive_config + "switch_off_time = 1e12\n", "cfg/t.toml");
+  CHECK(std::string(e.what()).starts_with("invalid value for 'switch_off_time' in [drive] at cfg/t.toml:6: must be at most"));
+  CHECK(e.key() == "switch_off_time");
 }
 
 TEST_CASE("config run checks: `lrchain simulate --config` with theta = \"4\" exits 2 naming file:line, writes nothing") {

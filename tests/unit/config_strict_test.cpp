@@ -86,7 +86,7 @@ TEST_CASE("config: an unknown key names file, line, table and the closest valid 
 TEST_CASE("config: an unknown table, or another experiment's table, is an error") {
   CHECK(load_error("experiment = \"bright\"\n[modle]\nrho = 1\n[bright]\ntheta = 1\n", "a.toml") ==
         "unknown table [modle] at a.toml:2; did you mean [model]?");
-  CHECK(load_error("experiment = \"bright\"\n[bright]\ntheta = 1\n[drive]\nbeads = 10\n", "a.toml") ==
+  CHECK(load_error("experiment = \"bright\"\n[bright]\ntheta = 1\n[drive]\nsites = 10\n", "a.toml") ==
         "unknown table [drive] at a.toml:4; allowed here: 'experiment', 'name', [model], [bright], [integrator], "
         "[output]");
 }
@@ -110,14 +110,14 @@ TEST_CASE("config: wrong types name the key, the line and the expected type") {
 TEST_CASE("config: values out of range, NaN and inf name the key and the allowed range") {
   CHECK(load_error(drive_head + "amplitude = inf\n", "exp6.toml") ==
         "invalid value for 'amplitude' in [drive] at exp6.toml:4: expected a finite number in (0, 10]; got inf");
-  CHECK(load_error(drive_head + "t_m = nan\n", "exp6.toml") ==
-        "invalid value for 't_m' in [drive] at exp6.toml:4: expected a finite number >= 0; got nan");
+  CHECK(load_error(drive_head + "switch_off_time = nan\n", "exp6.toml") ==
+        "invalid value for 'switch_off_time' in [drive] at exp6.toml:4: expected a finite number >= 0; got nan");
   CHECK(load_error(drive_head + "t_end = \"1e400\"\n", "exp6.toml") ==
         "invalid value for 't_end' in [drive] at exp6.toml:4: expected a finite number > 0; got \"1e400\"");
   CHECK(load_error(modulated_head + "epsilon = -inf\n", "exp7.toml") ==
         "invalid value for 'epsilon' in [modulated] at exp7.toml:4: expected a finite number in (0, 1]; got -inf");
-  CHECK(load_error(modulated_head + "b = 1\n", "exp7.toml") ==
-        "invalid value for 'b' in [modulated] at exp7.toml:4: expected a finite number in [0, 1); got 1");
+  CHECK(load_error(modulated_head + "modulation_depth = 1\n", "exp7.toml") ==
+        "invalid value for 'modulation_depth' in [modulated] at exp7.toml:4: expected a finite number in [0, 1); got 1");
   CHECK(load_error(drive_head + "snapshot_times = [1, -2]\n", "exp6.toml") ==
         "invalid value for 'snapshot_times' in [drive] at exp6.toml:4: element 2: expected an array of finite "
         "numbers >= 0; got -2");
@@ -133,22 +133,47 @@ TEST_CASE("config: values out of range, NaN and inf name the key and the allowed
 }
 
 TEST_CASE("config: integers go through checked_integer (1e3 is 1000 — fractions, huge values refused)") {
-  CHECK(load_error(bright_head + "[bright]\ntheta = 1\nN = 1.5\n", "a.toml") ==
-        "invalid value for 'N' in [bright] at a.toml:8: expected an integer in [2, 50000000]; got 1.5");
-  CHECK(load_error(bright_head + "[bright]\ntheta = 1\nN = 1e300\n", "a.toml") ==
-        "invalid value for 'N' in [bright] at a.toml:8: expected an integer in [2, 50000000]; got 1e+300");
-  CHECK(load_error(bright_head + "[bright]\ntheta = 1\nN = 9223372036854775807\n", "a.toml") ==
-        "invalid value for 'N' in [bright] at a.toml:8: expected an integer in [2, 50000000]; got "
-        "9223372036854775807");
+  // (value written, value shown): a fraction, a huge float, the largest int64
+  for (const auto& [value, shown] : {std::pair<std::string, std::string>{"1.5", "1.5"}, {"1e300", "1e+300"},
+                                     {"9223372036854775807", "9223372036854775807"}})
+    CHECK(load_error(drive_head + "sites = " + value + "\n", "a.toml") ==
+          "invalid value for 'sites' in [drive] at a.toml:4: expected an integer in [10, 50000000]; got " + shown);
   for (const char* thousand : {"1e3", "1000", "\"1e3\"", "1000.0"}) {
-    const auto c = lrchain::sim::load_experiment_config(
-        Document::from_text(bright_head + "[bright]\ntheta = 1\nN = " + thousand + "\n", "a.toml"));
-    CHECK(c.bright.N == 1000);
+    const auto c = lrchain::sim::load_drive_config(Document::from_text(drive_head + "sites = " + thousand + "\n", "a.toml"));
+    CHECK(c.run.beads == 1000);
   }
 }
 
+TEST_CASE("config: [bright] sites is the odd number of strain sites 2N + 1, refused in the user's terms") {
+  CHECK(load_error(bright_head + "[bright]\ntheta = 1\nsites = 3\n", "a.toml") ==
+        "invalid value for 'sites' in [bright] at a.toml:8: expected an integer in [5, 2000000000000001]; got 3");
+  CHECK(load_error(bright_head + "[bright]\ntheta = 1\nsites = 1000\n", "a.toml") ==
+        "invalid value for 'sites' in [bright] at a.toml:8: must be an odd integer in [5, 2000000000000001]: the "
+        "strain sites are n = -N..N, 2N + 1 of them (got 1000)");
+  // sites = 2N + 1: 1001 sites are n = -500..500, however the integer is written.
+  const auto half_width = [](const std::string& line) {
+    return lrchain::sim::load_experiment_config(
+               Document::from_text(bright_head + "[bright]\ntheta = 1\n" + line, "a.toml")).bright.N;
+  };
+  CHECK(half_width("sites = 1001\n") == 500);
+  CHECK(half_width("sites = \"1.001e3\"\n") == 500);
+  CHECK(half_width("") == lrchain::sim::BrightRunConfig{}.N);
+}
+
+TEST_CASE("config: the old keys N, beads, t_m, b are refused, naming the new key (and the new meaning of sites)") {
+  CHECK(load_error(bright_head + "[bright]\ntheta = 1\nN = 500\n", "a.toml") ==
+        "key 'N' in [bright] at a.toml:8 was renamed: use 'sites', the number of strain sites 2N + 1 (the old N was "
+        "the half-width)");
+  CHECK(load_error(drive_head + "beads = 100\n", "d.toml") == "key 'beads' in [drive] at d.toml:4 was renamed: use 'sites'");
+  CHECK(load_error(drive_head + "t_m = 100\n", "d.toml") ==
+        "key 't_m' in [drive] at d.toml:4 was renamed: use 'switch_off_time'");
+  CHECK(load_error(modulated_head + "N = 401\n", "m.toml") == "key 'N' in [modulated] at m.toml:4 was renamed: use 'sites'");
+  CHECK(load_error(modulated_head + "b = 0.01\n", "m.toml") ==
+        "key 'b' in [modulated] at m.toml:4 was renamed: use 'modulation_depth'");
+}
+
 TEST_CASE("config: missing keys and kinds") {
-  CHECK(load_error(bright_head + "[bright]\nN = 10\n", "a.toml") ==
+  CHECK(load_error(bright_head + "[bright]\nsites = 11\n", "a.toml") ==
         "missing key 'theta' in [bright] at a.toml:6: expected a finite number");
   CHECK(load_error(bright_head, "a.toml") == "missing table [bright] in a.toml");
   CHECK(load_error("name = \"x\"\n", "a.toml") ==
@@ -457,4 +482,18 @@ TEST_CASE("config: a renamed key is an error naming its new name, with file and 
   CHECK(message("[dark]\nbranch = \"acoustic\"\n") == "no error");
   // A renamed key is not offered as a guess for a typo of another key.
   CHECK(message("[dark]\nbranh = \"acoustic\"\n") == "unknown key 'branh' in [dark] at s.toml:2; did you mean 'branch'?");
+}
+
+TEST_CASE("config: a renamed key whose meaning changed says so after the new name") {
+  using namespace lrchain::config;
+  const auto lattice = std::make_shared<const TableSchema>(TableSchema{
+      "a lattice", {integer("sites", 5, 99, "11", "")}, std::nullopt, {{"N", "sites", "the number of sites 2N + 1"}}});
+  const TableSchema root{"a run", {table("lattice", lattice)}, std::nullopt};
+  try {
+    check(Document::from_text("[lattice]\n\nN = 5\n", "r.toml"), root);
+    FAIL("the old key was accepted");
+  } catch (const ConfigError& e) {
+    CHECK(std::string(e.what()) == "key 'N' in [lattice] at r.toml:3 was renamed: use 'sites', the number of sites 2N + 1");
+    CHECK(e.key() == "N");
+  }
 }

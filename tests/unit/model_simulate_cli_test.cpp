@@ -91,6 +91,32 @@ TEST_CASE("model simulate: the shipped model configs pass their schema — unkno
                        lrchain::config::ConfigError);
 }
 
+TEST_CASE("model simulate: a model config's [bright] sites is the odd count 2N + 1 — the old key N is refused" *
+          doctest::test_suite("fast")) {
+  const std::string head = "experiment = \"bright\"\nmodel = \"models/fput.toml\"\n[bright]\nbranch = \"acoustic\"\n"
+                           "theta = \"pi/2\"\n";  // lines 1-5
+  const auto load = [&](const std::string& line) {
+    return lrchain::sim::load_model_experiment_config(lrchain::config::Document::from_text(head + line, "m.toml"));
+  };
+  const auto error = [&](const std::string& line) {
+    try {
+      load(line);
+    } catch (const lrchain::config::ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("loaded");
+  };
+  CHECK(load("sites = 21\n").bright.N == 10);  // n = -10..10
+  CHECK(load("").bright.N == lrchain::sim::ModelBrightConfig{}.N);
+  CHECK(error("sites = 100\n") ==
+        "invalid value for 'sites' in [bright] at m.toml:6: must be an odd integer in [21, 100000001]: the strain "
+        "sites are n = -N..N, 2N + 1 of them (got 100)");
+  CHECK(error("sites = 19\n") == "invalid value for 'sites' in [bright] at m.toml:6: expected an integer in [21, "
+                                  "100000001]; got 19");
+  CHECK(error("N = 500\n") == "key 'N' in [bright] at m.toml:6 was renamed: use 'sites', the number of strain sites "
+                              "2N + 1 (the old N was the half-width)");
+}
+
 TEST_CASE("model simulate: a ring config gives the numbers of the same ring run from options" * doctest::test_suite("fast")) {
   // Two routes to one run: examples/models/homogeneous_chain_ring.toml and the same values as
   // options. The shift's disagreement with h U^2/4 is O(U^2): about 4x smaller at U/2.

@@ -90,16 +90,16 @@ TEST_CASE("memory limits name the lattice size or the sampling, whichever domina
   BrightRunConfig b = small_bright();
   CHECK(refused_parameter([&] { validate(b); }).empty());
   b.N = 1'000'000'000;  // 2e9 beads: terabytes
-  CHECK(refused_parameter([&] { validate(b); }) == "N");
+  CHECK(refused_parameter([&] { validate(b); }) == "sites");
   b = small_bright();
   b.sample_every = b.spacetime_every = 1e-9;  // 4e9 samples and space-time rows
   CHECK(refused_parameter([&] { validate(b); }) == "periods");
   b = small_bright();
   b.max_memory = 100'000;  // bytes: below the 0.2 MB estimate (0.12 MB for the state and rkf78 stages)
-  CHECK(refused_parameter([&] { validate(b); }) == "N");
+  CHECK(refused_parameter([&] { validate(b); }) == "sites");
   DriveRunConfig d;
   d.beads = 10'000'000'000;
-  CHECK(refused_parameter([&] { validate(d); }) == "beads");
+  CHECK(refused_parameter([&] { validate(d); }) == "sites");
   ModulatedRunConfig m;
   m.checkpoint_every = 1e-7;
   CHECK(refused_parameter([&] { validate(m); }) == "checkpoint-every");

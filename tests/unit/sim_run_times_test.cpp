@@ -53,7 +53,7 @@ DriveRunConfig short_drive() {
 
 }  // namespace
 
-TEST_CASE("drive: t_m and the fit window beyond t_end are accepted up to the reach, refused past it") {
+TEST_CASE("drive: the switch-off time and the fit window beyond t_end are accepted up to the reach, refused past it") {
   DriveRunConfig d = short_drive();
   CHECK_NOTHROW(validate(d));
   // The paper's window [100, 700] and t_m = 700 on a run of 60: beyond the end, well within reach
@@ -62,9 +62,9 @@ TEST_CASE("drive: t_m and the fit window beyond t_end are accepted up to the rea
   d.front_fit_end = 700;
   d.t_m = 700;
   CHECK_NOTHROW(validate(d));
-  for (const char* option : {"t-m", "front-fit-end"}) {
+  for (const char* option : {"switch-off-time", "front-fit-end"}) {
     DriveRunConfig huge = short_drive();
-    (std::string(option) == "t-m" ? huge.t_m : huge.front_fit_end) = 1e308;
+    (std::string(option) == "switch-off-time" ? huge.t_m : huge.front_fit_end) = 1e308;
     const auto [parameter, message] = refusal([&] { validate(huge); });
     CHECK(parameter == option);
     // The largest time the message gives is accepted, 1 % more is not (the bisection's
@@ -72,9 +72,9 @@ TEST_CASE("drive: t_m and the fit window beyond t_end are accepted up to the rea
     const double reach = largest_allowed(message, "at most ");
     CHECK(reach > d.t_end);
     DriveRunConfig edge = short_drive();
-    (std::string(option) == "t-m" ? edge.t_m : edge.front_fit_end) = reach;
+    (std::string(option) == "switch-off-time" ? edge.t_m : edge.front_fit_end) = reach;
     CHECK_NOTHROW(validate(edge));
-    (std::string(option) == "t-m" ? edge.t_m : edge.front_fit_end) = 1.01 * reach;
+    (std::string(option) == "switch-off-time" ? edge.t_m : edge.front_fit_end) = 1.01 * reach;
     CHECK(refusal([&] { validate(edge); }).first == option);
   }
 }

@@ -43,14 +43,14 @@ fs::path scratch(const std::string& name) {
 
 void write(const fs::path& f, const std::string& text) { std::ofstream(f) << text; }
 
-// A short optical bright run of the paper's chain (exp1's stepper settings, N = 60, 10 T_b).
+// A short optical bright run of the paper's chain (exp1's stepper settings, 121 sites, 10 T_b).
 const char* base_config = R"(experiment = "bright"
 [model]
 rho = "1/3"
 [bright]
 branch = "optical"
 theta = "pi/2"
-N = 60
+sites = 121
 periods = 10
 sample_every = 0.25
 spacetime_every = 1.0
@@ -139,9 +139,9 @@ TEST_CASE("sweep: a failing point is recorded with its reason and the sweep fini
 
 TEST_CASE("sweep: stopped by SIGINT and run again, it gives the uninterrupted results — a changed config refuses to resume") {
   const fs::path d = scratch("resume");
-  // Longer runs (N = 200, 100 T_b: tens of ms each) so that the signal comes mid-way.
+  // Longer runs (401 sites, 100 T_b: tens of ms each) so that the signal comes mid-way.
   std::string longer = base_config;
-  longer.replace(longer.find("N = 60"), 6, "N = 200");
+  longer.replace(longer.find("sites = 121"), 11, "sites = 401");
   longer.replace(longer.find("periods = 10"), 12, "periods = 100");
   write(d / "base.toml", longer);
   // 8 x 5 points, one thread, the file rewritten every 0.05 s.
@@ -196,6 +196,9 @@ TEST_CASE("sweep: bad sweep files exit 2 naming the key, and write nothing") {
   const Case cases[] = {
       {"job = \"brigth\"\n" + head + axis, "'job'"},                                            // unknown job
       {"job = \"bright\"\n" + head + "[[axis]]\nparameter = \"bright.thta\"\nvalues = [1]\n", "did you mean 'bright.theta'"},
+      // a renamed key: named with its new name and, for bright.N, its new meaning
+      {"job = \"bright\"\n" + head + "[[axis]]\nparameter = \"bright.N\"\nvalues = [50]\n",
+       "'bright.N' was renamed: use 'bright.sites', the number of strain sites 2N + 1"},
       {"job = \"bright\"\n" + head + "[[axis]]\nparameter = \"bright.theta\"\nvalues = []\n", "'values'"},  // empty list
       {"job = \"bright\"\n" + head + "[[axis]]\nparameter = \"bright.theta\"\nfrom = 1\nto = 2\ncount = 0\n", "'count'"},
       {"job = \"bright\"\n" + head + "[[axis]]\nparameter = \"bright.theta\"\nfrom = 1\nto = 1\ncount = 3\n", "empty"},

@@ -150,10 +150,10 @@ class Checker {
 
   void unknown(const toml::key& key, const toml::node& value, const TableSchema& schema, const std::string& path) {
     const long line = key.source().begin.line ? long(key.source().begin.line) : line_of(value);
-    for (const auto& [old_name, new_name] : schema.renamed)
-      if (key.str() == old_name) {
-        add(line, "key '" + old_name + "' " + in_table(path) + " at " + location(source_, line) + " was renamed: use '" +
-                      new_name + "'",
+    for (const auto& r : schema.renamed)
+      if (key.str() == r.old_name) {
+        add(line, "key '" + r.old_name + "' " + in_table(path) + " at " + location(source_, line) + " was renamed: use '" +
+                      r.new_name + "'" + (r.note.empty() ? "" : ", " + r.note),
             path, key.str());
         return;
       }

@@ -187,6 +187,17 @@ bool Job::has_parameter(const std::string& parameter) const {
   return false;
 }
 
+std::optional<config::RenamedKey> Job::renamed_parameter(const std::string& parameter) const {
+  const auto& schema = is_study_kind(kind_) ? study_schema(kind_) : experiment_schema(kind_);
+  for (const auto& table : schema.keys) {
+    if (table.type != config::ValueType::table) continue;
+    for (const auto& r : table.table->renamed)
+      if (parameter == table.name + "." + r.old_name)
+        return config::RenamedKey{parameter, table.name + "." + r.new_name, r.note};
+  }
+  return std::nullopt;
+}
+
 JobResult Job::run(const Overrides& overrides, const RunControl& control) const {
   JobWorkspace workspace;
   return run(overrides, control, workspace);

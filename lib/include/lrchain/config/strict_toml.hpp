@@ -21,6 +21,7 @@
 
 #include <toml++/toml.h>
 
+#include "lrchain/config/renamed_key.hpp"
 #include "lrchain/errors.hpp"
 
 namespace lrchain::config {
@@ -101,8 +102,8 @@ struct TableSchema {
   std::string meaning;
   std::vector<KeySchema> keys;
   std::optional<KeySchema> other_keys;
-  // Keys that were renamed: {old, new}. The old key is an error naming the new one.
-  std::vector<std::pair<std::string, std::string>> renamed = {};
+  // Keys that were renamed: {old, new} or {old, new, note}. The old key is an error naming the new one.
+  std::vector<RenamedKey> renamed = {};
 
   const KeySchema* find(std::string_view key) const;  // listed key, else other_keys, else nullptr
 };

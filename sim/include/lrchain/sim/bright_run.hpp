@@ -32,7 +32,7 @@ struct BrightRunConfig {
   double theta = 0;
   std::optional<double> detuning;  // omega_b - omega; default sign(h_tilde) 1e-4
   double n0 = 0;                   // initial centre
-  Index N = 500;                   // strain sites n = -N..N
+  Index N = 500;                   // strain sites n = -N..N (`sites` = 2N + 1 to the user: strain_sites.hpp)
   double periods = 200;            // run length in T_b
   double sample_every = 0.25;      // E_x, E_y, energy, centre sampled every this many T_b
   double spacetime_every = 1.0;    // energy density row every this many T_b

@@ -20,6 +20,7 @@
 //   uint32 CRC-32 of every byte before it
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,20 +30,35 @@
 
 namespace lrchain::sim {
 
+// How a restart mismatch names an item whose recorded key is not what the user sets: the config
+// key / option name, and for a long item recorded in other terms, its value in the user's terms
+// (the bright run records the half-width N, the user sets sites = 2N + 1).
+struct ShownAs {
+  std::string name;
+  std::function<long(long)> value = {};  // empty: the recorded value
+};
+
 // What defines a trajectory, as ordered key = value items; doubles print in the shortest form that
-// reads back to the same bits.
+// reads back to the same bits. The keys stay as written by earlier versions, so that their
+// checkpoints still restart; ShownAs gives the name a mismatch message uses.
 class TrajectoryIdentity {
  public:
   void add(const std::string& key, double value);
   void add(const std::string& key, long value);
+  void add(const std::string& key, double value, ShownAs shown);
+  void add(const std::string& key, long value, ShownAs shown);
   void add(const std::string& key, const std::string& value);
   void add(const std::string& key, const char* value) { add(key, std::string(value)); }
   void add_state_hash(const std::string& key, const State& state);  // FNV-1a 64 of its bytes
   const std::vector<std::pair<std::string, std::string>>& items() const { return items_; }
   std::string text() const;  // "lrchain_version = ...\nkey = value\n..."
+  // The item `key` with the recorded text `value` as the user names it: "sites = 1001" for
+  // N = 500 added with ShownAs{"sites", 2N + 1}; "key = value" for an item added without one.
+  std::string shown(const std::string& key, const std::string& value) const;
 
  private:
   std::vector<std::pair<std::string, std::string>> items_;
+  std::vector<std::pair<std::string, ShownAs>> shown_;
 };
 
 struct Checkpoint {
@@ -72,8 +88,9 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c, co
 // hash, finite state, time >= 0). Throws InputError naming the file and what is wrong.
 Checkpoint read_checkpoint(const std::filesystem::path& file);
 
-// Throws InvalidParameter("restart", ...) naming the first item that differs, e.g. "checkpoint
-// 'c.bin' was written with rho = 0.3333333333333333, this run has rho = 0.5".
+// Throws InvalidParameter("restart", ...) naming the first item that differs as the run shows it
+// (TrajectoryIdentity::shown), e.g. "checkpoint 'c.bin' was written with rho = 0.3333333333333333,
+// this run has rho = 0.5", or "... with sites = 1001, this run has sites = 801".
 void check_same_trajectory(const std::filesystem::path& file, const Checkpoint& c,
                            const TrajectoryIdentity& run);
 

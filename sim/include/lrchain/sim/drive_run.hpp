@@ -22,11 +22,11 @@ inline std::vector<double> default_drive_snapshot_times() { return {779.9, 2400}
 
 struct DriveRunConfig {
   Params params{1.5, 4.0 / 9.0, 1.0, 10.0};
-  Index beads = 2000;           // n = 1..beads, u_{beads+1} = 0 (clamped)
+  Index beads = 2000;           // n = 1..beads, u_{beads+1} = 0 (clamped); the user's `sites`
   double amplitude = 0.06;      // A0
   double omega0 = 2.1;          // driving frequency
   double ramp_rate = 0.046;     // r of chi(t)
-  double t_m = 700;             // switch-off time of chi(t)
+  double t_m = 700;             // switch-off time of chi(t); the user's `switch_off_time`
   double t_end = 2400;
   double sample_every = 1.0;    // series (energy, front, participation)
   double spacetime_every = 2.0; // rows of e_n(t)

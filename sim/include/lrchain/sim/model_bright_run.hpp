@@ -37,7 +37,7 @@ struct ModelBrightConfig {
   double theta = 0;
   std::optional<double> detuning;  // omega_b - omega; default sign(h_tilde) 1e-4
   double n0 = 0;
-  Index N = 500;                   // sites n = -N..N
+  Index N = 500;                   // sites n = -N..N (`sites` = 2N + 1 to the user: strain_sites.hpp)
   double periods = 200;            // run length in T_b
   double sample_every = 0.25;      // in T_b
   double steps_per_period = 0;     // srkn11b steps per period of the fastest linear mode (0: 24)

@@ -24,10 +24,10 @@ inline std::vector<double> default_modulated_snapshot_times() { return {0, 17100
 struct ModulatedRunConfig {
   std::string name = "modulated";
   Params params{1.5, 0.27, 1.0, 0.32};
-  Index N = 401;                      // periodic chain, n = 0..N-1
+  Index N = 401;                      // periodic chain, n = 0..N-1; the user's `sites`
   double epsilon = 0.03;              // eq:cimi amplitude
   double theta_waves = 252;           // theta0 = theta_waves * pi / N
-  double b = 0.01;                    // modulation depth
+  double b = 0.01;                    // modulation depth; the user's `modulation_depth`
   double t_end = 45000;
   double sample_every = 10;           // series rows and e_n(t) rows
   // Snapshot times, each in [0, t_end]; the default list keeps only those inside a shorter run.

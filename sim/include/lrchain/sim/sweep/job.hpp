@@ -6,6 +6,7 @@
 // job's schema). No process is spawned and nothing is written: the run yields the job's summary
 // scalars, for some jobs a table of rows (one per branch point, per interval), and a status.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -55,6 +56,9 @@ class Job {
   // The parameters a point may override: "table.key" for every number or integer key.
   std::vector<std::string> parameters() const;
   bool has_parameter(const std::string& parameter) const;
+  // A parameter whose key was renamed ("bright.N"): its old and new "table.key" and the note of
+  // the schema's RenamedKey; nullopt for any other name.
+  std::optional<config::RenamedKey> renamed_parameter(const std::string& parameter) const;
 
   // Runs one point. Never throws for a bad point: a value the config layer or the run's checks
   // refuse gives status `invalid`, a blow-up `blew_up`; `control.stop` ends the run early with
