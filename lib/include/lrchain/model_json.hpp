@@ -8,7 +8,7 @@
 
 namespace lrchain {
 
-// {"name", "file_hash" ("0x" + 16 hex digits), "parameters": {name: value} in the file's order}.
+// {"name", "file_hash" ("0x" + 16 hex digits), "parameters": {name: value}} (keys sorted by name).
 inline nlohmann::json model_json(const Model& model) {
   nlohmann::json parameters = nlohmann::json::object();
   const auto& d = model.definition();
