@@ -30,8 +30,7 @@ void assign_options(const py::dict& options, const std::map<std::string, OptionT
     const auto it = targets.find(name);
     for (const auto& r : renamed)
       if (it == targets.end() && name == r.old_name)
-        throw py::type_error(std::string(function) + "() got the option '" + name + "', which is now '" + r.new_name +
-                             "'" + (r.note.empty() ? "" : ", " + r.note));
+        throw py::type_error(std::string(function) + "() got the option '" + name + "', which is now " + r.replacement());
     if (it == targets.end()) {
       std::string allowed;
       for (const auto& [k, target] : targets) allowed += (allowed.empty() ? "" : ", ") + k;

@@ -152,8 +152,8 @@ class Checker {
     const long line = key.source().begin.line ? long(key.source().begin.line) : line_of(value);
     for (const auto& r : schema.renamed)
       if (key.str() == r.old_name) {
-        add(line, "key '" + r.old_name + "' " + in_table(path) + " at " + location(source_, line) + " was renamed: use '" +
-                      r.new_name + "'" + (r.note.empty() ? "" : ", " + r.note),
+        add(line, "key '" + r.old_name + "' " + in_table(path) + " at " + location(source_, line) + " was renamed: use " +
+                      r.replacement(),
             path, key.str());
         return;
       }

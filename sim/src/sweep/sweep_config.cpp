@@ -173,8 +173,7 @@ SweepConfig load_sweep_config(const std::filesystem::path& file) {
     a.read("parameter", axis.parameter);
     if (const auto renamed = job.renamed_parameter(axis.parameter))
       throw error_at(a, "[[axis]]", "parameter",
-                     fmt::format("'{}' was renamed: use '{}'{}", renamed->old_name, renamed->new_name,
-                                 renamed->note.empty() ? "" : ", " + renamed->note));
+                     fmt::format("'{}' was renamed: use {}", renamed->old_name, renamed->replacement()));
     if (!job.has_parameter(axis.parameter)) {
       const std::string near = closest_match(axis.parameter, job.parameters());
       throw error_at(a, "[[axis]]", "parameter",

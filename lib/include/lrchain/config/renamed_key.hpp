@@ -9,6 +9,9 @@ namespace lrchain::config {
 struct RenamedKey {
   std::string old_name, new_name;
   std::string note = {};
+
+  // What a message offers instead of the old name: "'sites', <note>" (or "'sites'" without a note).
+  std::string replacement() const { return "'" + new_name + "'" + (note.empty() ? "" : ", " + note); }
 };
 
 }  // namespace lrchain::config
