@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -221,16 +222,19 @@ void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& ou
                  [](const std::string& d, const auto& r, const auto& j, bool f) { return sim::write_modulated_outputs(d, r, j, f); });
 }
 
-// --sites of a bright run: the odd number 2N + 1 of strain sites n = -N..N, kept as the half-width N
-// of the run; refused (exit 2) when even or out of [5, 2e15 + 1] (sim::bright_sites).
-void add_strain_sites(CLI::App& app, long& half_width) {
+// --sites of a bright run: the odd number 2N + 1 of strain sites n = -N..N, kept as given; the run
+// takes its half-width N with its own range (sim::bright_sites, or sim::model_bright_sites with
+// --model), so that an even or out-of-range count is refused (exit 2) with the range that applies.
+void add_strain_sites(CLI::App& app, std::int64_t& sites) {
   auto* opt = app.add_option_function<std::string>(
       "--sites",
-      [&half_width](const std::string& text) {
-        half_width = sim::strain_half_width(option_integer(text, "sites", sim::bright_sites.least, sim::bright_sites.most),
-                                            sim::bright_sites);
+      [&sites](const std::string& text) {
+        const double v = parse_number(text, "sites");
+        if (!(std::isfinite(v) && v == std::floor(v) && std::abs(v) <= 9e18))
+          throw InvalidParameter("sites", "must be an odd integer: the strain sites are n = -N..N, 2N + 1 of them");
+        sites = static_cast<std::int64_t>(v);
       },
-      "odd number of strain sites 2N + 1, n = -N..N (default 1001, N = 500)");
+      "odd number of strain sites 2N + 1, n = -N..N (default 1001, N = 500; with --model 21 or more)");
   opt->type_name("INT");
 }
 
@@ -238,13 +242,15 @@ void add_strain_sites(CLI::App& app, long& half_width) {
 // step themselves unless --dt is given (the callback clears automatic_dt then).
 void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::string& stepper) {
   app.add_option("--stepper", stepper, "rkf78, dopri5, symplectic (McLachlan 4), srkn11b, srkn14a (Blanes-Moan 6) or ss17 (McLachlan 8); default " + stepper)->type_name("NAME");
-  add_number(app, "--abs-tol", o.abs_tol, "absolute local error tolerance (default 1e-12)");
-  add_number(app, "--rel-tol", o.rel_tol, "relative local error tolerance (default 1e-12)");
+  // The defaults shown are the run configuration's (the drive's tolerances are 1e-10, the others' 1e-12).
+  add_number(app, "--abs-tol", o.abs_tol, fmt::format("absolute local error tolerance (default {:g})", o.abs_tol));
+  add_number(app, "--rel-tol", o.rel_tol, fmt::format("relative local error tolerance (default {:g})", o.rel_tol));
   add_number(app, "--dt", o.dt,
              o.automatic_dt
-                 ? "largest step of the fixed-step steppers (default: chosen by a 2 T_b probe run so that the "
-                   "relative energy error stays below 2e-10), or the initial step of the adaptive ones (default 0.05)"
-                 : "initial step (adaptive) or fixed/maximal step (symplectic, srkn*), default 0.05");
+                 ? fmt::format("largest step of the fixed-step steppers (default: chosen by a 2 T_b probe run so that "
+                               "the relative energy error stays below 2e-10), or the initial step of the adaptive ones "
+                               "(default {:g})", o.dt)
+                 : fmt::format("initial step (adaptive) or fixed/maximal step (symplectic, srkn*), default {:g}", o.dt));
 }
 
 // The storage of the options every `simulate` run shares; each command registers those it honours
@@ -335,7 +341,8 @@ void register_simulate(CLI::App& app) {
     cfg->detuning = parse_number(s, "detuning");
   }, "omega_b - omega (default sign(h_tilde)*1e-4)")->type_name("NUM");
   add_number(*bright, "--n0", cfg->n0, "initial breather centre n0, |n0| <= N = (sites - 1)/2 (default 0)");
-  add_strain_sites(*bright, cfg->N);
+  auto bright_sites = std::make_shared<std::int64_t>(sim::strain_site_count(cfg->N));
+  add_strain_sites(*bright, *bright_sites);
   add_number(*bright, "--periods", cfg->periods, "run length in breather periods T_b (default 200)");
   add_number(*bright, "--sample-every", cfg->sample_every, "sampling interval in T_b (default 0.25)");
   add_number(*bright, "--spacetime-every", cfg->spacetime_every,
@@ -352,6 +359,7 @@ void register_simulate(CLI::App& app) {
   add_examples(*bright, {"lrchain simulate bright --branch optical --theta pi/2 --rho 1/3 --sites 1001 --periods 200 --out out/exp1"});
   bright->callback([=] {
     if (!bright_model->file.empty()) {  // any model file: simulate_model_bright.cpp
+      cfg->N = sim::strain_half_width(*bright_sites, sim::model_bright_sites);
       run_model_bright_command(*bright_model, *bright_branch, *cfg, *bright,
                                {out, std::shared_ptr<bool>(style, &style->compact_json),
                                 std::shared_ptr<bool>(style, &style->figures)});
@@ -359,6 +367,7 @@ void register_simulate(CLI::App& app) {
     }
     if (!bright_model->set.empty()) throw InputError("--set needs --model FILE (the resonant chain takes --rho, --kappa, ...)");
     refuse_ignored_options(*bright, *out, {}, "");
+    cfg->N = sim::strain_half_width(*bright_sites, sim::bright_sites);
     cfg->branch = parse_branch(*bright_branch);
     cfg->integrator.stepper = sim::parse_stepper(*stepper);
     if (bright->count("--dt") > 0) cfg->integrator.automatic_dt = false;

@@ -8,6 +8,7 @@
 
 #include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "lrchain/sim/strain_sites.hpp"
 #include "run_json.hpp"
 
 namespace lrchain::sim {
@@ -19,7 +20,7 @@ nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
   j["model"] = model_json(resonant_chain_model(c.params));
   j["branch"] = std::string(to_string(c.branch));
   j["theta"] = c.theta;
-  j["sites"] = 2 * c.N + 1;  // n = -N..N, as --sites takes it
+  j["sites"] = strain_site_count(c.N);  // n = -N..N, as --sites takes it
   j["periods"] = c.periods;
   j["ansatz_ends"] = c.ansatz_ends;
   j["integrator"] = integrator_json(s.integrator);

@@ -25,7 +25,6 @@ namespace lrchain::sim {
 
 namespace {
 
-constexpr long max_sites = 1'000'000'000'000'000;  // N: 2N + 2 beads stay far from overflow
 
 // Sample intervals floor(periods / sample_every) of the run (validated: no overflow).
 Index sample_intervals(const BrightRunConfig& c) { return sim::sample_intervals(c.periods, c.sample_every, "periods"); }
@@ -50,7 +49,7 @@ ResourceEstimate estimate_resources(const BrightRunConfig& c) { return estimate_
 
 void validate(const BrightRunConfig& c) {
   validate(c.params);
-  if (c.N < 2 || c.N > max_sites) throw InvalidParameter("sites", strain_sites_rule(bright_sites, strain_site_count(c.N)));
+  check_half_width(c.N, bright_sites);
   if (!(c.periods > 0 && std::isfinite(c.periods)))
     throw InvalidParameter("periods", "must be a finite number > 0 (units of T_b)");
   validate_sampling({c.periods, "periods", true, c.sample_every, c.spacetime_every, c.checkpoint_every,

@@ -77,7 +77,8 @@ void validate(const DriveRunConfig& c) {
                      }, c.max_memory});
   if (!(c.front_fraction > 0 && c.front_fraction < 1))
     throw InvalidParameter("front-fraction", "must be in (0, 1)");
-  checked_finite(c.t_m, "switch-off-time");
+  if (!(c.t_m >= 0 && std::isfinite(c.t_m)))
+    throw InvalidParameter("switch-off-time", "must be a finite number >= 0 (the time chi(t) starts to ramp down)");
   checked_finite(c.front_fit_start, "front-fit-start");
   checked_finite(c.front_fit_end, "front-fit-end");
   if (!(c.front_fit_end > c.front_fit_start))

@@ -6,6 +6,7 @@
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/model_bright_run.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "lrchain/sim/strain_sites.hpp"
 
 namespace lrchain::sim {
 
@@ -15,7 +16,7 @@ nlohmann::json to_json(const Model& model, const ModelBrightConfig& c, const Mod
   j["provenance"] = provenance_json();
   j["branch"] = model.definition().branch_names.at(c.branch);
   j["theta"] = c.theta;
-  j["sites"] = 2 * c.N + 1;  // n = -N..N, as --sites takes it
+  j["sites"] = strain_site_count(c.N);  // n = -N..N, as --sites takes it
   j["periods"] = c.periods;
   j["form"] = r.mean_flow ? "strain" : "displacement";
   j["ansatz_ends"] = r.ansatz_ends;

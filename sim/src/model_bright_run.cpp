@@ -78,8 +78,7 @@ void ModelBrightAnsatz::field(Index f, double n, double t, double& u, double& u_
 
 void validate(const ModelBrightConfig& c) {
   if (!(c.theta > 0 && c.theta <= std::numbers::pi)) throw InvalidParameter("theta", "the carrier wavenumber must be in (0, pi]");
-  if (c.N < 10 || c.N > 50'000'000)
-    throw InvalidParameter("sites", strain_sites_rule(model_bright_sites, strain_site_count(c.N)));
+  check_half_width(c.N, model_bright_sites);
   if (!(c.periods > 0 && c.periods <= 1e6)) throw InvalidParameter("periods", "must be in (0, 1e6] (units of T_b)");
   if (!(c.sample_every > 0 && c.sample_every <= c.periods && c.periods / c.sample_every <= 1e6))
     throw InvalidParameter("sample-every", "must be in (0, periods] with at most 1e6 samples");

@@ -2,6 +2,7 @@
 #include "lrchain/sim/model_experiment_config.hpp"
 
 #include "located_validation.hpp"
+#include "lrchain/sim/model_bright_run.hpp"
 #include "lrchain/sim/strain_sites.hpp"
 #include "toml_reading.hpp"
 
@@ -85,6 +86,8 @@ void read_bright(const CheckedTable& bright, ModelExperimentConfig& c) {
   bright.read("sample_every", c.bright.sample_every);
   bright.read("dt", c.bright.dt);
   bright.read("ansatz_ends", c.bright.ansatz_ends);
+  // The run's own checks (n0 within the lattice, ...) at the line of the key they refuse.
+  config::validate_located(bright, [&] { validate(c.bright); });
 }
 
 void read_ring(const CheckedTable& ring, ModelExperimentConfig& c) {

@@ -115,6 +115,9 @@ TEST_CASE("model simulate: a model config's [bright] sites is the odd count 2N +
                                   "100000001]; got 19");
   CHECK(error("N = 500\n") == "key 'N' in [bright] at m.toml:6 was renamed: use 'sites', the number of strain sites "
                               "2N + 1 (the old N was the half-width)");
+  // The run's own checks are located too: n0 = 11 lies outside n = -10..10 of 21 sites.
+  CHECK(error("sites = 21\nn0 = 11\n") == "invalid value for 'n0' in [bright] at m.toml:7: the initial centre must be "
+                                           "in [-N, N] = [-10, 10] (sites = 2N + 1 = 21)");
 }
 
 TEST_CASE("model simulate: a ring config gives the numbers of the same ring run from options" * doctest::test_suite("fast")) {

@@ -169,3 +169,31 @@ TEST_CASE("parse_memory_size reads binary units and refuses anything else") {
   CHECK(format_bytes(48e9) == "48 GB");
   CHECK(format_bytes(1.5e6) == "1.5 MB");
 }
+
+TEST_CASE("a bright run's lattice size is refused in sites = 2N + 1, also where 2N + 1 overflows") {
+  BrightRunConfig b = small_bright();
+  b.N = 1;  // 3 sites, below the 5 of bright_sites
+  try {
+    validate(b);
+    FAIL("3 sites accepted");
+  } catch (const InvalidParameter& e) {
+    CHECK(std::string(e.what()).find("must be an odd integer in [5, 2000000000000001]") != std::string::npos);
+    CHECK(std::string(e.what()).find("(got 3)") != std::string::npos);
+  }
+  b.N = std::numeric_limits<Index>::max();  // 2N + 1 does not fit: the message gives N itself
+  try {
+    validate(b);
+    FAIL("N = max accepted");
+  } catch (const InvalidParameter& e) {
+    CHECK(e.parameter() == "sites");
+    CHECK(std::string(e.what()).find("(got N = 9223372036854775807)") != std::string::npos);
+  }
+}
+
+TEST_CASE("the drive's switch-off time is a finite time >= 0 from options and Python as from a config") {
+  DriveRunConfig d;
+  d.t_m = 0;  // chi(t) switched off from the start: allowed (the config key's range is >= 0)
+  CHECK(refused_parameter([&] { validate(d); }) != "switch-off-time");
+  d.t_m = -1;
+  CHECK(refused_parameter([&] { validate(d); }) == "switch-off-time");
+}

@@ -17,9 +17,10 @@ std::string run_facts(const json& s) {
   const std::string drift = s.contains("max_relative_energy_drift")
                                 ? fmt::format("relative energy drift {:.1e}", s["max_relative_energy_drift"].get<double>())
                                 : std::string("energy not conserved (driven ends)");
-  return fmt::format("Run: N = {} (strain sites -N..N), {} T_b = {:.2f} time units, {} stepper (tol {:g}, dt {:g}); "
+  const auto sites = s.at("sites").get<std::int64_t>();
+  return fmt::format("Run: {} strain sites (n = -N..N, N = {}), {} T_b = {:.2f} time units, {} stepper (tol {:g}, dt {:g}); "
                      "{}; {} RHS evaluations, {:.2f} s solve.",
-                     (s.value("sites", std::int64_t{1}) - 1) / 2, s.value("periods", 0.0), s.value("t_end", 0.0),
+                     sites, (sites - 1) / 2, s.value("periods", 0.0), s.value("t_end", 0.0),
                      s["integrator"].value("stepper", std::string("?")), s["integrator"].value("rel_tol", 0.0),
                      s["integrator"].value("dt", 0.0), drift, s.value("rhs_evaluations", 0), s.value("solve_seconds", 0.0));
 }
