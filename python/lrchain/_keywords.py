@@ -5,17 +5,22 @@ name raises a TypeError naming the new one, never silently accepted."""
 import functools
 
 
-def renamed(**old_to_new):
-    """Decorator: calling the function with an old keyword (``old=...``) raises TypeError naming the
-    new one; the signature and docstring are the function's own."""
+def renamed(table):
+    """Decorator: calling the function with an old keyword of the config table ``table`` ("bright",
+    "drive", "modulated", "dark": the table with the function's options, whose schema lists the
+    renamed keys) raises TypeError naming the new one, and what changed besides the name; the
+    signature and docstring are the function's own."""
+    from ._lrchain import renamed_options
+
+    renames = renamed_options(table)  # (old, new, "'new', <note>")
 
     def wrap(function):
         @functools.wraps(function)
         def call(*args, **kwargs):
-            for old, new in old_to_new.items():
+            for old, new, replacement in renames:
                 if old in kwargs:
                     raise TypeError(f"{function.__name__}() got the keyword argument '{old}', which is now "
-                                    f"'{new}' (as in the lrchain command); use {new}=")
+                                    f"{replacement}; use {new}= (the lrchain command's name)")
             return function(*args, **kwargs)
 
         return call

@@ -1,5 +1,5 @@
 """Exact stationary dark breathers (Sec. 5.3-5.4 of the paper): time-periodic solutions of the strain
-lattice with periodic ends, found by shooting Newton from the NLS approximation (eq. xy_app),
+lattice with periodic ends, found by shooting Newton from the NLS approximation (eq. (48)),
 continued in the frequency omega_b, with their Floquet multipliers and direct evolution.
 
 Every function starts from ``solve``'s arguments: ``params``, ``omega_b`` (on the gap side of the
@@ -125,10 +125,10 @@ def _job(params, model, omega_b, branch, function):
         ("optical" if branch is None else branch)
 
 
-@renamed(edge="branch")
+@renamed("dark")
 def solve(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
           tolerance=1e-11, max_iterations=20, *, model=None):
-    """Newton (least squares) from the eq. xy_app seed (omega_b default 2.42, branch "optical");
+    """Newton (least squares) from the seed of eq. (48) (omega_b default 2.42, branch "optical");
     returns :class:`DarkSolution`. With ``model``: the model's seed at its defocusing edge; returns
     :class:`ModelDarkSolution`."""
     params, model, omega_b, branch = _job(params, model, omega_b, branch, "solve")
@@ -140,7 +140,7 @@ def solve(params=None, omega_b=None, branch=None, center="bond", sites=101, mode
     return _solution(params, omega_b, d)
 
 
-@renamed(edge="branch")
+@renamed("dark")
 def floquet(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
             tolerance=1e-11, max_iterations=20, full_monodromy=False, *, model=None):
     """Solve, then the Floquet multipliers of the monodromy matrix (from the reversible reduction,
@@ -262,7 +262,7 @@ class Branch(HDF5Mixin):
                 f"{len(self.turning_points)} turning points; {self.stop_reason})")
 
 
-@renamed(edge="branch")
+@renamed("dark")
 def continue_branch(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
                     tolerance=1e-11, max_iterations=20, points=100, ds=0.1, omega_min=0.0, omega_max=None,
                     floquet=True, *, model=None):
@@ -341,7 +341,7 @@ class Evolution(HDF5Mixin):
         return f"Evolution({len(self.t)} periods to t = {self.t[-1]:g}, max E_b = {self.E_b.max():.3g})"
 
 
-@renamed(edge="branch")
+@renamed("dark")
 def evolve(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
            tolerance=1e-11, max_iterations=20, t_end=None, samples=24, *, model=None):
     """Solve, then integrate from Z(0) over floor(t_end / T_b) periods (default: 10 periods),

@@ -122,7 +122,7 @@ class BrightResult(_SimulationHDF5):
                 f"max E_x = {self.summary['max_E_x']:.4g}, max E_y = {self.summary['max_E_y']:.4g})")
 
 
-@renamed(N="sites")
+@renamed("bright")
 def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=None, n0=None, sites=None,
            periods=None, sample_every=None, spacetime_every=None, snapshot_periods=None, centre_window=None,
            error_window_end=None, ansatz_ends=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
@@ -132,9 +132,13 @@ def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=
     periods T_b, as ``lrchain simulate bright``.
 
     Library defaults: sites=1001, periods=200, sample_every=0.25 and spacetime_every=1 (units of T_b),
-    snapshot_periods=(0, 50.125, 200) (those inside the run), centre_window=100, stepper "rkf78"
-    with abs_tol = rel_tol = 1e-12, dt=0.05 (other steppers: dopri5, symplectic, srkn11b, srkn14a,
-    ss17; dt is the fixed/maximal step of the symplectic ones). ``detuning`` = omega_b - omega
+    snapshot_periods=(0, 50.125, 200) (those inside the run), centre_window=100, stepper "srkn11b"
+    (Blanes-Moan, order 6) with its step chosen automatically: a probe run over the first 2 T_b
+    measures the energy error, and the step is the largest that keeps it below 2e-10 (and
+    dt * omega_max <= 0.9); giving ``dt`` fixes the step instead. With ``ansatz_ends=True`` the
+    chain is not autonomous and the default stepper is the adaptive "rkf78". Other steppers:
+    rkf78, dopri5 (adaptive: abs_tol = rel_tol = 1e-12 by default, dt the first step, 0.05 by
+    default), symplectic, srkn14a, ss17 (fixed step dt). ``detuning`` = omega_b - omega
     (default sign(h_tilde) 1e-4). ``record_strains`` keeps x_n(t), y_n(t) at every sample.
     Returns :class:`BrightResult`.
 
@@ -291,7 +295,7 @@ class DriveResult(_SimulationHDF5):
         return f"DriveResult({len(self.t)} samples to t = {self.t[-1]:g}, final energy {self.energy[-1]:.6g})"
 
 
-@renamed(beads="sites", t_m="switch_off_time")
+@renamed("drive")
 def drive(params=None, *, sites=None, amplitude=None, omega0=None, ramp_rate=None, switch_off_time=None, t_end=None,
           sample_every=None, spacetime_every=None, snapshot_times=None, front_fraction=None,
           front_fit_start=None, front_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
@@ -341,14 +345,14 @@ class ModulatedResult(_SimulationHDF5):
         return f"ModulatedResult({len(self.t)} samples to t = {self.t[-1]:g})"
 
 
-@renamed(N="sites", b="modulation_depth")
+@renamed("modulated")
 def modulated(params=None, *, sites=None, epsilon=None, theta_waves=None, modulation_depth=None, t_end=None,
               sample_every=None, snapshot_times=None, contrast_threshold=None, dark_window=None,
               speed_fit_start=None, speed_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
               max_memory=None, record_displacements=False, observer=None):
     """Periodic chain of ``sites`` sites (``lrchain simulate modulated``) started from the modulated
-    acoustic wave (eq. cimi). Library defaults: params delta0=0.27, rho=0.32, sites=401,
-    epsilon=0.03, theta_waves=252, modulation_depth=0.01 (b of eq. cimi), t_end=45000,
+    acoustic wave (eq. (43)). Library defaults: params delta0=0.27, rho=0.32, sites=401,
+    epsilon=0.03, theta_waves=252, modulation_depth=0.01 (b of eq. (43)), t_end=45000,
     sample_every=10, symplectic stepper with dt=0.05. Returns :class:`ModulatedResult`."""
     options = _options(params=params, sites=sites, epsilon=epsilon, theta_waves=theta_waves,
                        modulation_depth=modulation_depth,

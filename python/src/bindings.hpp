@@ -13,5 +13,6 @@ void register_simulate(pybind11::module_& m);      // simulate_binding.cpp: brig
 void register_dark(pybind11::module_& m);          // dark_binding.cpp: exact dark breathers
 void register_model_simulate(pybind11::module_& m);  // model_simulate_binding.cpp: model bright, ring
 void register_model_dark(pybind11::module_& m);      // model_dark_binding.cpp: model dark breathers
+void register_renamed_options(pybind11::module_& m);  // renamed_options.cpp: renamed keyword arguments
 
 }  // namespace lrchain::python

@@ -13,6 +13,7 @@
 #include "lrchain/sim/model_bright_run.hpp"
 #include "lrchain/sim/ring_run.hpp"
 #include "lrchain/sim/strain_sites.hpp"
+#include "renamed_options.hpp"
 #include "run_options.hpp"
 #include "run_record_arrays.hpp"
 
@@ -35,7 +36,7 @@ py::dict model_bright(const LoadedModel& loaded, const std::string& branch, cons
                                         {"n0", &c.n0},         {"sites", &sites},
                                         {"periods", &c.periods}, {"sample_every", &c.sample_every},
                                         {"dt", &c.dt},         {"ansatz_ends", &c.ansatz_ends}};
-  assign_options(options, t, "bright", {{"N", "sites", half_width_renamed_note}});
+  assign_options(options, t, "bright", renamed_options("model bright"));
   c.N = strain_half_width(sites, model_bright_sites);
   c.detuning = detuning;
   c.branch = model.branch(branch);

@@ -12,4 +12,5 @@ PYBIND11_MODULE(_lrchain, m) {
   lrchain::python::register_dark(m);
   lrchain::python::register_model_simulate(m);
   lrchain::python::register_model_dark(m);
+  lrchain::python::register_renamed_options(m);
 }

@@ -11,6 +11,7 @@
 #include "lrchain/sim/drive_run.hpp"
 #include "lrchain/sim/modulated_run.hpp"
 #include "lrchain/sim/strain_sites.hpp"
+#include "renamed_options.hpp"
 #include "run_options.hpp"
 #include "run_record_arrays.hpp"
 
@@ -57,7 +58,8 @@ py::dict bright(const py::dict& options, bool record_strains, const py::object& 
       {"centre_window", &c.centre_window}, {"error_window_end", &c.error_window_end},
       {"ansatz_ends", &c.ansatz_ends}, {"max_memory", &c.max_memory}};
   add_integrator(t, c.integrator);
-  assign_options(options, t, "bright", {{"N", "sites", half_width_renamed_note}});
+  assign_options(options, t, "bright", renamed_options("bright"));
+  if (options.contains("dt")) c.integrator.automatic_dt = false;  // a given step is used, as --dt
   c.N = strain_half_width(sites, bright_sites);
   return run_python(c, [](const BrightRunConfig& cfg, const RunControl& rc) { return run_bright(cfg, rc); },
                     record_strains, observer);
@@ -72,7 +74,7 @@ py::dict drive(const py::dict& options, bool record_displacements, const py::obj
       {"front_fraction", &c.front_fraction}, {"front_fit_start", &c.front_fit_start},
       {"front_fit_end", &c.front_fit_end}, {"max_memory", &c.max_memory}};
   add_integrator(t, c.integrator);
-  assign_options(options, t, "drive", {{"beads", "sites"}, {"t_m", "switch_off_time"}});
+  assign_options(options, t, "drive", renamed_options("drive"));
   return run_python(c, [](const DriveRunConfig& cfg, const RunControl& rc) { return run_drive(cfg, rc); },
                     record_displacements, observer);
 }
@@ -87,7 +89,7 @@ py::dict modulated(const py::dict& options, bool record_displacements, const py:
       {"dark_window", &c.dark_window}, {"speed_fit_start", &c.speed_fit_start},
       {"speed_fit_end", &c.speed_fit_end}, {"max_memory", &c.max_memory}};
   add_integrator(t, c.integrator);
-  assign_options(options, t, "modulated", {{"N", "sites"}, {"b", "modulation_depth"}});
+  assign_options(options, t, "modulated", renamed_options("modulated"));
   return run_python(c, [](const ModulatedRunConfig& cfg, const RunControl& rc) { return run_modulated(cfg, rc); },
                     record_displacements, observer);
 }

@@ -99,6 +99,47 @@ def test_old_keyword_names_raise_naming_the_new_one(call, old, new):
         call()
 
 
+# The note of the config key's rename (sim/include/lrchain/sim/strain_sites.hpp): sites is 2N + 1, so
+# bright(N=500) must not be retyped as sites=500 or 501, which would run half the lattice.
+HALF_WIDTH_NOTE = "the number of strain sites 2N + 1 (the old N was the half-width)"
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: lrchain.simulate.bright(N=500),
+     f"bright() got the keyword argument 'N', which is now 'sites', {HALF_WIDTH_NOTE}; use sites="),
+    (lambda: lrchain.simulate.bright(lrchain.load_model("fput"), "acoustic", N=500),
+     f"bright() got the keyword argument 'N', which is now 'sites', {HALF_WIDTH_NOTE}; use sites="),
+    (lambda: lrchain.simulate.drive(beads=50), "drive() got the keyword argument 'beads', which is now 'sites'; use sites="),
+    (lambda: lrchain.simulate.drive(t_m=2),
+     "drive() got the keyword argument 't_m', which is now 'switch_off_time'; use switch_off_time="),
+    (lambda: lrchain.simulate.modulated(N=21),
+     "modulated() got the keyword argument 'N', which is now 'sites'; use sites="),
+    (lambda: lrchain.simulate.modulated(b=0.1),
+     "modulated() got the keyword argument 'b', which is now 'modulation_depth'; use modulation_depth="),
+])
+def test_old_keyword_message_says_what_changed_besides_the_name(call, message):
+    # The messages come from the config schemas' renamed lists, notes included; only bright's N
+    # changed meaning (half-width -> odd count), so only its message carries "2N + 1".
+    with pytest.raises(TypeError) as err:
+        call()
+    assert str(err.value).startswith(message)
+    assert ("2N + 1" in str(err.value)) == ("2N + 1" in message)
+
+
+def test_renamed_options_are_the_config_schemas_lists():
+    # One list per table, read from the schema that refuses the old config keys (docs/configs.md).
+    note = f"'sites', {HALF_WIDTH_NOTE}"
+    assert lrchain._lrchain.renamed_options("bright") == [("N", "sites", note)]
+    assert lrchain._lrchain.renamed_options("model bright") == [("N", "sites", note)]
+    assert lrchain._lrchain.renamed_options("drive") == [("beads", "sites", "'sites'"),
+                                                         ("t_m", "switch_off_time", "'switch_off_time'")]
+    assert lrchain._lrchain.renamed_options("modulated") == [("N", "sites", "'sites'"),
+                                                             ("b", "modulation_depth", "'modulation_depth'")]
+    assert lrchain._lrchain.renamed_options("dark") == [("edge", "branch", "'branch'")]
+    with pytest.raises(ValueError, match="no table"):
+        lrchain._lrchain.renamed_options("ring")
+
+
 @pytest.mark.parametrize("run, options, old, new", [
     ("simulate_bright", {"N": 40}, "N", "sites', the number of strain sites 2N \\+ 1"),
     ("simulate_drive", {"beads": 50}, "beads", "sites"),

@@ -101,3 +101,17 @@ def test_modulated_short_run():
     assert r.summary["initial"]["modulation_depth"] == pytest.approx(0.01, rel=1e-15)  # the library default
     assert "b" not in r.summary["initial"] and "params" not in r.summary
     assert r.summary["model"]["parameters"]["delta0"] == pytest.approx(0.27, rel=1e-15)
+
+
+def test_bright_dt_fixes_the_step_of_the_default_stepper():
+    # The default srkn11b chooses its step from an energy-error probe unless dt is given, as with
+    # `lrchain simulate bright --dt`: a given dt is the step used (the summary's integrator.dt), not
+    # replaced by the probe's choice.
+    small = dict(sites=61, theta=np.pi / 2, periods=2.0, spacetime_every=0.5, snapshot_periods=[0.0])
+    given = lrchain.simulate.bright(dt=0.2, **small).summary
+    assert given["integrator"] == {"stepper": "srkn11b", "dt": 0.2, "abs_tol": 1e-12, "rel_tol": 1e-12}
+    assert given["step_choice"] is None
+    chosen = lrchain.simulate.bright(**small).summary
+    assert chosen["integrator"]["stepper"] == "srkn11b"
+    assert chosen["step_choice"]["method"] == "energy-error probe"
+    assert chosen["integrator"]["dt"] != 0.2
