@@ -8,6 +8,7 @@
 #include <numbers>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 #include "lrchain/ansatz/bright_breather.hpp"
@@ -111,7 +112,7 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
       "set terminal pngcairo size 1100,500 font 'DejaVu Sans,10' noenhanced\n"
       "set output outfile\nset datafile separator ','\nset multiplot layout 1,2\n"
       "set xlabel 'wavenumber θ/π'\nset ylabel 'c, ω″, h̃ (dimensionless)'\nset yrange [-3:3]\n"
-      "set key bottom left font ',8'\nset grid\n"
+      "set key font ',8'\nset grid\n"
       // h̃ has poles (breakdown of the non-resonance conditions; the CSV samples close in on
       // each): the first sample past a pole, where h̃ changes sign between values not both near 0,
       // is left out of the line, which breaks it there instead of joining +inf to -inf; the line
@@ -119,14 +120,17 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
       "pole(v, p) = v * p < 0 && (abs(v) < abs(p) ? abs(v) : abs(p)) > 0.1\n"
       "h8(v) = (p8 = last8, last8 = v, pole(v, p8) ? NaN : v)\n"
       "h9(v) = (p9 = last9, last9 = v, pole(v, p9) ? NaN : v)\n";
-  for (const auto& [tag, label] : {std::pair{"rho_1_3", "ρ = 1/3"}, std::pair{"rho_10", "ρ = 10"}}) {
+  // The key where the curves leave room: bottom left at rho = 1/3, bottom right at rho = 10 (whose
+  // h̃ pole sits near theta = 0.11 pi).
+  for (const auto& [tag, label, corner] : {std::tuple{"rho_1_3", "ρ = 1/3", "left"}, std::tuple{"rho_10", "ρ = 10", "right"}}) {
     gp += fmt::format(
+        "set key bottom {}\n"
         "set title \"c (green), ω″ (red), h̃ (blue): {}; optical solid, acoustic dashed\"\n"
         "last8 = NaN; last9 = NaN\n"
         "plot '{f}' u 1:4 w l lc rgb '#1a9850' lw 2 t 'c₊', '{f}' u 1:5 w l lc rgb '#1a9850' dt 2 lw 2 t 'c₋', "
         "'{f}' u 1:6 w l lc rgb '#d73027' lw 2 t 'ω″₊', '{f}' u 1:7 w l lc rgb '#d73027' dt 2 lw 2 t 'ω″₋', "
         "'{f}' u 1:(h8($8)) w l lc rgb '#4575b4' lw 2 t 'h̃₊', '{f}' u 1:(h9($9)) w l lc rgb '#4575b4' dt 2 lw 2 t 'h̃₋'\n",
-        label, fmt::arg("f", std::string("coefficients_") + tag + ".csv"));
+        corner, label, fmt::arg("f", std::string("coefficients_") + tag + ".csv"));
   }
   gp += "unset multiplot\n";
   figures.draw({"coefficients.gp", gp, "coefficients.png"});
