@@ -18,7 +18,7 @@ PACKAGES=(build-essential cmake pkg-config git
   libomp-dev gnuplot-nox fonts-dejavu-core
   libhdf5-dev libopenmpi-dev openmpi-bin
   python3-dev pybind11-dev python3-pybind11 python3-numpy
-  libcmark-gfm-dev libcmark-gfm-extensions-dev)
+  libcmark-gfm-dev libcmark-gfm-extensions-dev libssl-dev)
 if [[ "${LRCHAIN_TEST_TOOLS:-0}" == 1 ]]; then
   PACKAGES+=(chromium python3-pytest python3-h5py python3-matplotlib)
 fi
