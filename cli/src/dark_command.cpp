@@ -22,6 +22,7 @@
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/checked_number.hpp"
+#include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/frequency_band.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
@@ -92,8 +93,7 @@ void validate_job(const DarkArgs& a, DarkJob job) {
     if (!(std::isfinite(a.t_end) && a.t_end >= period))
       throw InvalidParameter("t-end", fmt::format("must be a finite time >= one period T_b = 2 pi/omega_b = {:.6g} "
                                                   "(dimensionless time of Sec. 2)", period));
-    periods = double(checked_count(std::floor(a.t_end / period), "t-end", 1,
-                                   std::numeric_limits<int>::max(), "periods (t-end / T_b)"));
+    periods = double(config::checked_option_count(a.t_end, period, config::dark_periods, "t-end"));
   }
   const sim::ResourceEstimate e =
       sim::estimate_dark_breather(a.sites, job == DarkJob::floquet || job == DarkJob::branch, shooting_time, periods);
@@ -125,7 +125,7 @@ void add_common(CLI::App& sub, DarkArgs& a) {
   sub.add_option("--center", a.center, "family: bond (n0 = 1/2) | site (n0 = 0) (default bond)")
       ->check(CLI::IsMember({"bond", "site"}).description(""))
       ->type_name("bond|site");
-  add_integer(sub, "--sites", a.sites, 9, std::numeric_limits<int>::max(),
+  add_integer(sub, "--sites", a.sites, config::dark_sites.least, config::dark_sites.most,
               "odd number of lattice sites per field x, y (periodic ends; default 101)");
   sub.add_option("--mode", a.mode, "shooting: reversible (half/quarter period) | full (whole period, a check) (default reversible)")
       ->check(CLI::IsMember({"reversible", "full"}).description(""))
@@ -589,8 +589,7 @@ ModelDarkJob validate_model_job(const DarkArgs& a, DarkJob job, const CLI::App& 
   if (job == DarkJob::evolve) {
     if (!(std::isfinite(a.t_end) && a.t_end >= period))
       throw InvalidParameter("t-end", fmt::format("must be a finite time >= one period T_b = 2 pi/omega_b = {:.6g}", period));
-    periods = double(checked_count(std::floor(a.t_end / period), "t-end", 1, std::numeric_limits<int>::max(),
-                                   "periods (t-end / T_b)"));
+    periods = double(config::checked_option_count(a.t_end, period, config::dark_periods, "t-end"));
   }
   // The estimate counts two fields per site: scale the sites to the model's number of fields.
   const double sites = double(a.sites) * double(kernels.fields) / 2.0;
@@ -803,7 +802,7 @@ void register_dark(CLI::App& app) {
   auto* cont = dark->add_subcommand(
       "continue", "Pseudo-arclength continuation in omega_b through turning points, Floquet at every point");
   add_common(*cont, *args);
-  add_integer(*cont, "--points", args->points, 1, 1'000'000, "maximum number of branch points, the first included (default 100; e.g. --points 10 for a quick run)");
+  add_integer(*cont, "--points", args->points, config::dark_points.least, config::dark_points.most, "maximum number of branch points, the first included (default 100; e.g. --points 10 for a quick run)");
   add_number(*cont, "--ds", args->ds, "initial pseudo-arclength step in (Z(0), omega_b), dimensionless, adapted between 1e-5 and 1 (default 0.1)");
   add_number(*cont, "--omega-min", args->omega_min, "stop when omega_b falls below this (dimensionless frequency; default 0)");
   add_number(*cont, "--omega-max", args->omega_max, "stop when omega_b rises above this (dimensionless frequency, at most twice the top of the optical band; default: the band edge omega(pi))");
@@ -813,7 +812,7 @@ void register_dark(CLI::App& app) {
       "evolve", "Solve, then integrate eq:Hertzd0S from the solution: space-time x_n, y_n, E_b(t), breather position (Figs. 21, 22, 25)");
   add_common(*evo, *args);
   add_number(*evo, "--t-end", args->t_end, "integration time (dimensionless, time unit of Sec. 2), at least one period T_b (required)")->required();
-  add_integer(*evo, "--samples", args->samples, 4, 1'000'000,
+  add_integer(*evo, "--samples", args->samples, config::dark_samples.least, config::dark_samples.most,
               "samples of x_n(t) per period for the amplitudes of the position measure (default 24, >= 4)");
   add_examples(*evo, {"lrchain dark evolve --rho 1/3 --center bond --omega-b 2.44 --t-end 500 --out out/dark-evolve"});
   evo->callback([args, evo] { dispatch(*args, DarkJob::evolve, *evo); });

@@ -17,6 +17,7 @@
 
 #include "commands.hpp"
 #include "figure_format_option.hpp"
+#include "lrchain/config/option_caps.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/boundary_curves.hpp"
@@ -759,7 +760,7 @@ void register_regime(CLI::App& app) {
                  "optical or acoustic (default optical); with --model: the model's branch names (default optical, or "
                  "its only branch)")
       ->type_name("NAME");
-  add_integer(*in, "--samples", ia->samples, 8, 10'000'000,
+  add_integer(*in, "--samples", ia->samples, config::intervals_samples.least, config::intervals_samples.most,
               "theta samples used to bracket the zeros (default 2048)");
   in->add_flag("--json", ia->json_flag, "print the JSON on one line (default: indented)");
   add_examples(*in, {"lrchain regime intervals --branch acoustic --rho 1 --delta0 4/9"});
@@ -803,8 +804,8 @@ void register_regime(CLI::App& app) {
       ->expected(2)
       ->type_name("NUM");
   mp->add_flag("--delta0-log", ma->delta0_log, "delta0-omega: logarithmic delta0 axis (default: linear)");
-  add_integer(*mp, "--nx", ma->res_x, 2, 20000, "pixels along x (rho or delta0), default 600");
-  add_integer(*mp, "--ny", ma->res_y, 2, 20000, "pixels along y (theta or omega), default 600");
+  add_integer(*mp, "--nx", ma->res_x, config::map_pixels_x.least, config::map_pixels_x.most, "pixels along x (rho or delta0), default 600");
+  add_integer(*mp, "--ny", ma->res_y, config::map_pixels_y.least, config::map_pixels_y.most, "pixels along y (theta or omega), default 600");
   add_max_memory(*mp, ma->max_memory);
   add_figure_format(*mp);
   mp->add_flag("--no-curves", ma->no_curves, "skip tracing the boundary curves");

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/output_lock.hpp"
 #include "lrchain/sim/ring_run.hpp"
@@ -64,7 +65,7 @@ void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output) {
   ring->add_option("--branch", o->branch, "branch name of the model (acoustic, optical, branch0, ...)")->required()->type_name("NAME");
   add_number(*ring, "--theta", o->run.theta, "carrier wavenumber 2 pi k / N in (0, pi], e.g. pi/2")->required();
   add_number_list(*ring, "--amplitudes", o->run.amplitudes, "plane-wave amplitudes U of the first field (default 0.02 0.01)");
-  add_integer(*ring, "--sites", o->run.sites, 8, 1'000'000,
+  add_integer(*ring, "--sites", o->run.sites, config::ring_sites.least, config::ring_sites.most,
               "ring size N (default: the smallest N >= 8 with theta N / (2 pi) whole)");
   add_number(*ring, "--periods", o->run.periods, "carrier periods per frequency measurement (default 400)");
   add_number(*ring, "--steps-per-period", o->run.steps_per_period, "srkn11b steps per carrier period (default 80)");

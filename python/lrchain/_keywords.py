@@ -58,3 +58,30 @@ def checked_model(model):
         raise InvalidParameterError(f"invalid model: must be an lrchain.Model (lrchain.load_model(file or name)), "
                                     f"not {type(model).__name__}", "model")
     return model
+
+
+def real_numbers(function):
+    """Decorator: an argument of the function that is complex (a complex number, a numpy complex scalar
+    or array, or a list/tuple holding one) raises InvalidParameterError naming it, before the call;
+    numpy would otherwise drop the imaginary part with only a warning."""
+    import inspect
+
+    from ._lrchain import refuse_complex
+
+    signature = inspect.signature(function)
+
+    @functools.wraps(function)
+    def call(*args, **kwargs):
+        try:
+            bound = signature.bind_partial(*args, **kwargs)
+        except TypeError:
+            return function(*args, **kwargs)  # the function's own message for a wrong call
+        for name, value in bound.arguments.items():
+            if signature.parameters[name].kind is inspect.Parameter.VAR_KEYWORD:
+                for key, item in value.items():
+                    refuse_complex(item, key)
+            else:
+                refuse_complex(value, name)
+        return function(*args, **kwargs)
+
+    return call

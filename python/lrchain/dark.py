@@ -17,15 +17,15 @@ stops it within one integration step and raises ``KeyboardInterrupt``.
 """
 
 from dataclasses import asdict, dataclass, fields
-import os
+import json
 
 import numpy as np
 
 from . import _lrchain
-from ._keywords import checked_model, python_names, renamed
+from ._keywords import checked_model, python_names, real_numbers, renamed
 from ._lrchain import Model, Params
 from .errors import InputError
-from .hdf5 import HDF5Mixin
+from .hdf5 import HDF5Mixin, checked_destination, tree_of
 
 
 @dataclass(frozen=True)
@@ -91,7 +91,7 @@ class DarkSolution(HDF5Mixin):
         --format hdf5`` writes (layout: :mod:`lrchain.hdf5`)."""
         from . import _hdf5
 
-        _hdf5.write_dark_solution(os.fspath(path), _params_tuple(self.params), _plain(self))
+        _hdf5.write_dark_solution(checked_destination(path), _params_tuple(self.params), _plain(self))
 
     def __repr__(self):
         f = f", {self.floquet!r}" if self.floquet else ""
@@ -126,6 +126,7 @@ def _job(params, model, omega_b, branch, function):
 
 
 @renamed("dark")
+@real_numbers
 def solve(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
           tolerance=1e-11, max_iterations=20, *, model=None):
     """Newton (least squares) from the seed of eq. (48) (omega_b default 2.42, branch "optical");
@@ -141,6 +142,7 @@ def solve(params=None, omega_b=None, branch=None, center="bond", sites=101, mode
 
 
 @renamed("dark")
+@real_numbers
 def floquet(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
             tolerance=1e-11, max_iterations=20, full_monodromy=False, *, model=None):
     """Solve, then the Floquet multipliers of the monodromy matrix (from the reversible reduction,
@@ -160,7 +162,7 @@ def floquet(params=None, omega_b=None, branch=None, center="bond", sites=101, mo
 
 
 @dataclass(frozen=True, repr=False)
-class _ModelEdge:
+class _ModelEdge(HDF5Mixin):
     """The band edge and the model every model-file dark result reports: ``branch``, ``theta``,
     ``omega_edge``, ``curvature``, ``h_tilde``, ``lambda_`` (None without mean flow),
     ``lattice_form``, ``model`` (name, file_hash, parameters, lattice_code) and
@@ -176,6 +178,15 @@ class _ModelEdge:
     lattice_form: str
     model: dict
     one_sided_contacts: tuple
+
+    def _hdf5_tree(self):
+        """The result's fields as the tree :mod:`lrchain.hdf5` writes (``to_hdf5(path)``), with
+        ``lambda_`` stored as ``lambda`` (omitted without mean flow) and ``model`` as JSON text, as in
+        the resonant chain's dark files."""
+        tree = {f.name: tree_of(getattr(self, f.name)) for f in fields(self)}
+        tree["lambda"] = tree.pop("lambda_")
+        tree["model"] = json.dumps(self.model)
+        return tree
 
 
 @dataclass(frozen=True, repr=False)
@@ -243,7 +254,7 @@ class Branch(HDF5Mixin):
         array; layout: :mod:`lrchain.hdf5`)."""
         from . import _hdf5
 
-        _hdf5.write_dark_branch(os.fspath(path), _params_tuple(self.params), _plain(self))
+        _hdf5.write_dark_branch(checked_destination(path), _params_tuple(self.params), _plain(self))
 
     @property
     def norm_squared(self):
@@ -263,6 +274,7 @@ class Branch(HDF5Mixin):
 
 
 @renamed("dark")
+@real_numbers
 def continue_branch(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
                     tolerance=1e-11, max_iterations=20, points=100, ds=0.1, omega_min=0.0, omega_max=None,
                     floquet=True, *, model=None):
@@ -342,6 +354,7 @@ class Evolution(HDF5Mixin):
 
 
 @renamed("dark")
+@real_numbers
 def evolve(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
            tolerance=1e-11, max_iterations=20, t_end=None, samples=24, *, model=None):
     """Solve, then integrate from Z(0) over floor(t_end / T_b) periods (default: 10 periods),

@@ -13,15 +13,40 @@ and strings are attributes of the enclosing group. Lists of results become group
 lists of numbers become datasets, lists of strings a JSON attribute. Complex arrays (Floquet
 multipliers) are stored as h5py's complex compound. The root's attributes ``lrchain_result`` (the
 result's class) and ``lrchain_version`` say what wrote the file. The file is written under a
-temporary name and renamed into place.
+temporary name and renamed into place; ``path`` must be a new name or an existing regular file (an
+existing directory, FIFO, device or socket raises :class:`lrchain.InputError` and is left as it is).
 """
 
 import dataclasses
 import json
 import numbers
 import os
+import stat
 
 import numpy as np
+
+from .errors import InputError
+
+_NOT_REGULAR = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISCHR, "a character device"),
+                (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"))
+
+
+def checked_destination(path):
+    """``path`` (a str) if ``to_hdf5`` may write it: a new name or an existing regular file, which the
+    writer replaces by renaming its temporary file over it. InputError for anything else that exists
+    (directory, FIFO, device, socket: renaming over it would replace it); every ``to_hdf5`` calls this."""
+    path = os.fspath(path)
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        return path
+    except OSError as e:
+        raise InputError(f"to_hdf5: {path}: cannot be examined ({e.strerror})") from None
+    if stat.S_ISREG(mode):
+        return path
+    kind = next((text for test, text in _NOT_REGULAR if test(mode)), "not a regular file")
+    raise InputError(f"to_hdf5: {path} exists and is {kind}, not a regular file: give the name of a new or a "
+                     f"regular file (nothing was written)")
 
 
 def _array(values):
@@ -29,14 +54,14 @@ def _array(values):
     return a.astype(np.int8) if a.dtype == np.bool_ else a
 
 
-def _tree(value):
+def tree_of(value):
     """The dict/array/scalar tree of a result value (see the module's docstring)."""
     if hasattr(value, "_hdf5_tree"):
         return value._hdf5_tree()
     if dataclasses.is_dataclass(value):
-        return {f.name: _tree(getattr(value, f.name)) for f in dataclasses.fields(value)}
+        return {f.name: tree_of(getattr(value, f.name)) for f in dataclasses.fields(value)}
     if isinstance(value, dict):
-        return {str(k): _tree(v) for k, v in value.items()}
+        return {str(k): tree_of(v) for k, v in value.items()}
     if isinstance(value, np.ndarray):
         return _array(value)
     if isinstance(value, (list, tuple)):
@@ -44,7 +69,7 @@ def _tree(value):
             return _array(value)
         if all(isinstance(v, str) for v in value):
             return json.dumps(list(value))
-        return {str(i): _tree(v) for i, v in enumerate(value)}
+        return {str(i): tree_of(v) for i, v in enumerate(value)}
     if isinstance(value, (np.generic,)):
         return value.item()
     return value
@@ -54,10 +79,10 @@ def write(path, result):
     """Writes ``result`` (a result object of lrchain) to the HDF5 file ``path``."""
     from . import _hdf5  # links libhdf5: loaded on first use only
 
-    tree = _tree(result)
+    tree = tree_of(result)
     tree["lrchain_result"] = type(result).__name__
     tree["lrchain_version"] = _hdf5.version
-    _hdf5.write_hdf5(os.fspath(path), tree)
+    _hdf5.write_hdf5(checked_destination(path), tree)
 
 
 def write_simulation(path, kind, series, energy_density, snapshots, summary, fields):
@@ -67,7 +92,7 @@ def write_simulation(path, kind, series, energy_density, snapshots, summary, fie
     from . import _hdf5
 
     e = energy_density
-    _hdf5.write_simulation(os.fspath(path), kind, series, (e.quantity, e.n, e.t, e.values),
+    _hdf5.write_simulation(checked_destination(path), kind, series, (e.quantity, e.n, e.t, e.values),
                            [(s.t, s.tag, s.columns) for s in snapshots], json.dumps(summary),
                            [(name, f.quantity, f.n, f.t, f.values) for name, f in fields])
 

@@ -3,11 +3,13 @@
 import os
 
 from . import _lrchain
+from ._keywords import real_numbers
 from ._lrchain import Model
 
 SHIPPED_MODELS = _lrchain.shipped_models
 
 
+@real_numbers
 def load_model(source, **parameters):
     """The model of a model file, with ``parameters`` overriding the file's defaults.
 

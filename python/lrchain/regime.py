@@ -14,6 +14,7 @@ from math import pi
 import numpy as np
 
 from . import _lrchain
+from ._keywords import real_numbers
 
 #: Pixel values of the maps.
 OUTSIDE, DEFOCUSING, FOCUSING, SINGULAR = -1, 0, 1, 2
@@ -43,6 +44,7 @@ class Intervals:
         return f"Intervals({parts or 'none'})"
 
 
+@real_numbers
 def intervals(params, branch, samples=2048, tolerance=1e-12):
     """Focusing theta-intervals of ``branch`` (omega'' h_tilde < 0), found by root finding on the
     smooth functions whose signs decide the regime; each end accurate to ``tolerance``."""
@@ -74,6 +76,7 @@ class RegimeMap:
                 f"focusing fraction {focusing:.3f})")
 
 
+@real_numbers
 def theta_rho_map(params, branch, rho=(0.01, 30.0, 600), theta=None, rho_log=False):
     """Fig. 2: the regime at (rho_i, theta_j); the other parameters from ``params``.
 
@@ -86,6 +89,7 @@ def theta_rho_map(params, branch, rho=(0.01, 30.0, 600), theta=None, rho_log=Fal
     return RegimeMap(d["x"], d["y"], d["values"], "rho", "theta")
 
 
+@real_numbers
 def delta0_omega_map(params, branch, delta0=(0.001, 1.0, 600), omega=None, delta0_log=False):
     """Figs. 4-5: the regime at (delta0_i, omega_j), theta from omega on the branch; pixels outside the
     band at delta0_i are OUTSIDE. ``omega`` = (lo, hi, n), by default the band of ``params``."""
@@ -109,6 +113,7 @@ class BoundaryCurve:
         return f"BoundaryCurve({self.cause}, {len(self.points)} points)"
 
 
+@real_numbers
 def boundary_curves(params, branch, axis="rho", lo=0.01, hi=30.0, omega_plane=False):
     """Boundary curves between focusing and defocusing regions in the (axis, theta) plane for the
     parameter ``axis`` ("rho" or "delta0") in [lo, hi], traced by pseudo-arclength continuation;
@@ -117,6 +122,7 @@ def boundary_curves(params, branch, axis="rho", lo=0.01, hi=30.0, omega_plane=Fa
             for cause, points in _lrchain.boundary_curves(params, branch, axis, lo, hi, omega_plane)]
 
 
+@real_numbers
 def frequency_band(params, branch):
     """(lo, hi) of the linear band: optical [omega_+(0), omega_+(pi)], acoustic [0, omega_-(pi)]."""
     return _lrchain.frequency_band(params, branch)

@@ -24,10 +24,10 @@ from math import pi
 import numpy as np
 
 from . import _lrchain
-from ._keywords import checked_model, python_names, renamed
+from ._keywords import checked_model, python_names, real_numbers, renamed
 from ._lrchain import Model, Params
 from .errors import InputError
-from .hdf5 import write_simulation
+from .hdf5 import HDF5Mixin, write_simulation
 
 
 @dataclass(frozen=True)
@@ -123,6 +123,7 @@ class BrightResult(_SimulationHDF5):
 
 
 @renamed("bright")
+@real_numbers
 def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=None, n0=None, sites=None,
            periods=None, sample_every=None, spacetime_every=None, snapshot_periods=None, centre_window=None,
            error_window_end=None, ansatz_ends=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
@@ -185,7 +186,7 @@ def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=
 
 
 @dataclass(frozen=True, repr=False)
-class ModelBrightResult:
+class ModelBrightResult(HDF5Mixin):
     """A bright-breather run of a model file (``lrchain simulate bright --model``).
 
     ``t``, ``energy``, ``centre`` (energy centre X(t)) at every sample; ``E`` a tuple with, per field f,
@@ -222,7 +223,7 @@ def _model_bright_result(out):
 
 
 @dataclass(frozen=True, repr=False)
-class RingResult:
+class RingResult(HDF5Mixin):
     """Plane waves of a model on a periodic ring (``lrchain simulate ring``): per amplitude U
     (``amplitude``) the ``measured_frequency`` and ``predicted_frequency`` omega + h U^2/4, their
     shifts from omega and ``relative_disagreement`` of the shifts (nan where h vanishes); the wave
@@ -244,6 +245,7 @@ class RingResult:
                 f"disagreement {', '.join(f'{d:.3g}' for d in self.relative_disagreement)})")
 
 
+@real_numbers
 def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, steps_per_period=None,
          packet_amplitude=None, packet_width=None):
     """``lrchain simulate ring --model FILE``: plane waves of amplitude U (``amplitudes``, default
@@ -296,6 +298,7 @@ class DriveResult(_SimulationHDF5):
 
 
 @renamed("drive")
+@real_numbers
 def drive(params=None, *, sites=None, amplitude=None, omega0=None, ramp_rate=None, switch_off_time=None, t_end=None,
           sample_every=None, spacetime_every=None, snapshot_times=None, front_fraction=None,
           front_fit_start=None, front_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
@@ -346,6 +349,7 @@ class ModulatedResult(_SimulationHDF5):
 
 
 @renamed("modulated")
+@real_numbers
 def modulated(params=None, *, sites=None, epsilon=None, theta_waves=None, modulation_depth=None, t_end=None,
               sample_every=None, snapshot_times=None, contrast_threshold=None, dark_window=None,
               speed_fit_start=None, speed_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,

@@ -14,6 +14,7 @@
 #include "dark_arrays.hpp"
 #include "interrupt_guard.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
 #include "lrchain/sim/dark/evolution.hpp"
@@ -44,6 +45,7 @@ DarkJob make_job(const Params& p, double omega_b, const std::string& edge, const
   DarkJob j{p, omega_b, parse_branch(edge), parse_dark_center(center), sites, parse_shooting_mode(mode),
             tolerance, max_iterations};
   make_dark_breather_ansatz(p, j.edge, omega_b);  // checks omega_b against the edge
+  config::checked_option(double(sites), config::dark_sites, "sites");
   if (sites < 9 || sites % 2 == 0)
     throw InvalidParameter("sites", "must be an odd integer >= 9 (a staggered dark breather fits periodic "
                                     "ends only on an odd number of sites)");
@@ -148,7 +150,7 @@ py::dict continue_job(const Params& p, double omega_b, const std::string& edge, 
                       const std::string& mode, double tolerance, Index max_iterations, Index points, double ds,
                       double omega_min, std::optional<double> omega_max, bool floquet) {
   const DarkJob j = make_job(p, omega_b, edge, center, sites, mode, tolerance, max_iterations);
-  if (points < 1) throw InvalidParameter("points", "must be an integer >= 1");
+  config::checked_option(double(points), config::dark_points, "points");
   try {
     validate_continuation_window(p, omega_b, ds, omega_min, omega_max);
   } catch (const InvalidParameter& e) {  // the library names CLI options: omega-max -> omega_max
@@ -207,10 +209,11 @@ py::dict evolve_job(const Params& p, double omega_b, const std::string& edge, co
                     const std::string& mode, double tolerance, Index max_iterations, double t_end, Index samples) {
   const DarkJob j = make_job(p, omega_b, edge, center, sites, mode, tolerance, max_iterations);
   const double period = 2 * std::numbers::pi / omega_b;
-  if (!(std::isfinite(t_end) && t_end >= period && t_end / period < 2e9))
+  if (!(std::isfinite(t_end) && t_end >= period))
     throw InvalidParameter("t_end", "must be a finite time of at least one period T_b = 2 pi/omega_b (dimensionless "
                                     "time of Sec. 2)");
-  if (samples < 4) throw InvalidParameter("samples", "must be an integer >= 4");
+  config::checked_option_count(t_end, period, config::dark_periods, "t_end");
+  config::checked_option(double(samples), config::dark_samples, "samples");
   check_job_memory(j, false, std::floor(t_end / period));
   InterruptGuard guard;
   DarkEvolution e = guard.run([&] {

@@ -13,6 +13,7 @@
 #include "dark_arrays.hpp"
 #include "interrupt_guard.hpp"
 #include "loaded_model.hpp"
+#include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
 #include "lrchain/sim/dark/evolution.hpp"
@@ -59,6 +60,7 @@ ModelDarkJob make_job(const LoadedModel& loaded, double omega_b, const std::opti
     const std::string text = e.what();
     throw InvalidParameter("omega_b", text.substr(text.find(": ") + 2));
   }
+  config::checked_option(double(sites), config::dark_sites, "sites");
   check_dark_sites(j.ansatz, sites);
   j.contacts = model_contact_bonds(kernels, sim::lattice_parameters(loaded.model), j.ansatz.mean_flow);
   if (!(tolerance > 0 && tolerance < 1)) throw InvalidParameter("tolerance", "must be in (0, 1)");
@@ -165,7 +167,7 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
                       Index max_iterations, Index points, double ds, double omega_min, std::optional<double> omega_max,
                       bool floquet) {
   const ModelDarkJob j = make_job(loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations, 0);
-  if (points < 1) throw InvalidParameter("points", "must be an integer >= 1");
+  config::checked_option(double(points), config::dark_points, "points");
   if (!(std::isfinite(ds) && ds > 0 && ds <= 1)) throw InvalidParameter("ds", "must be in (0, 1] (it adapts within [1e-5, 1])");
   if (!std::isfinite(omega_min) || !(omega_min < omega_b)) throw InvalidParameter("omega_min", "must be a finite number below omega_b");
   if (omega_max && !(std::isfinite(*omega_max) && *omega_max > omega_b))
@@ -223,9 +225,10 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
 py::dict evolve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
                     Index sites, const std::string& mode, double tolerance, Index max_iterations, double t_end, Index samples) {
   const double period = 2 * std::numbers::pi / omega_b;
-  if (!(std::isfinite(t_end) && std::isfinite(period) && t_end >= period && t_end / period < 2e9))
+  if (!(std::isfinite(t_end) && std::isfinite(period) && t_end >= period))
     throw InvalidParameter("t_end", fmt::format("must be a finite time of at least one period T_b = 2 pi/omega_b = {:.6g}", period));
-  if (samples < 4) throw InvalidParameter("samples", "must be an integer >= 4");
+  config::checked_option_count(t_end, period, config::dark_periods, "t_end");
+  config::checked_option(double(samples), config::dark_samples, "samples");
   const ModelDarkJob j = make_job(loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations,
                                   std::floor(t_end / period));
   const Eigen::VectorXd seed = model_dark_seed(j.ansatz, j.center, j.sites);

@@ -3,11 +3,24 @@
 #include <pybind11/operators.h>
 
 #include "bindings.hpp"
+#include "real_numbers.hpp"
 #include "lrchain/params.hpp"
 
 namespace py = pybind11;
 
 namespace lrchain::python {
+
+namespace {
+// A parameter's value as a double: complex refused, a value that is not a number a TypeError.
+double number_of(const py::handle& value, const std::string& name) {
+  try {
+    return real_number(value, name);
+  } catch (const py::cast_error&) {
+    throw py::type_error("Params: " + name + " must be a number, not " +
+                         std::string(py::str(value.get_type().attr("__name__"))));
+  }
+}
+}  // namespace
 
 void register_params(py::module_& m) {
   py::class_<Params>(m, "Params", R"doc(
@@ -16,8 +29,9 @@ Hertz exponent alpha > 1, precompression overlap delta0 > 0, resonator spring ka
 mass ratio rho = m2/m1 > 0. The defaults are the paper's (alpha=3/2, delta0=4/9, kappa=1,
 rho=1/3). Immutable; use replace(...) for a changed copy. Invalid values raise
 InvalidParameterError (a ValueError) naming the parameter and its valid range.)doc")
-      .def(py::init([](double alpha, double delta0, double kappa, double rho) {
-             const Params p{alpha, delta0, kappa, rho};
+      .def(py::init([](const py::object& alpha, const py::object& delta0, const py::object& kappa, const py::object& rho) {
+             const Params p{number_of(alpha, "alpha"), number_of(delta0, "delta0"), number_of(kappa, "kappa"),
+                            number_of(rho, "rho")};
              validate(p);
              return p;
            }),
@@ -40,7 +54,7 @@ InvalidParameterError (a ValueError) naming the parameter and its valid range.)d
             Params q = p;
             for (auto [key, value] : changes) {
               const std::string name = py::str(key);
-              const double v = value.cast<double>();
+              const double v = number_of(value, name);
               if (name == "alpha") q.alpha = v;
               else if (name == "delta0") q.delta0 = v;
               else if (name == "kappa") q.kappa = v;

@@ -4,7 +4,9 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/index.hpp"
 #include "lrchain/regime/boundary_curves.hpp"
 #include "lrchain/regime/focusing_intervals.hpp"
 #include "lrchain/regime/frequency_band.hpp"
@@ -24,10 +26,10 @@ py::array_t<double> axis_values(const GridAxis& a) {
 }
 
 // Roots of the four smooth functions along (0, pi] and the focusing intervals between them.
-py::dict structure(const Params& p, const std::string& branch, int samples, double tolerance) {
+py::dict structure(const Params& p, const std::string& branch, Index samples, double tolerance) {
   validate(p);
   const Branch b = parse_branch(branch);
-  if (samples < 8) throw InvalidParameter("samples", "must be an integer >= 8");
+  config::checked_option(double(samples), config::intervals_samples, "samples");
   if (!(tolerance > 0 && tolerance < 1e-2)) throw InvalidParameter("tolerance", "must be in (0, 1e-2)");
   RegimeStructure s;
   {
@@ -67,9 +69,11 @@ py::dict map_arrays(const RegimeMap& m) {
   return d;
 }
 
-py::dict rho_map(const Params& base, const std::string& branch, double rho_lo, double rho_hi, int nx,
-                 double theta_lo, double theta_hi, int ny, bool rho_log) {
+py::dict rho_map(const Params& base, const std::string& branch, double rho_lo, double rho_hi, Index nx,
+                 double theta_lo, double theta_hi, Index ny, bool rho_log) {
   const Branch b = parse_branch(branch);
+  config::checked_option(double(nx), config::map_pixels_x, "rho");  // (lo, hi, n): n pixels
+  config::checked_option(double(ny), config::map_pixels_y, "theta");
   const GridAxis rho{rho_lo, rho_hi, nx, rho_log}, theta{theta_lo, theta_hi, ny};
   RegimeMap m;
   {
@@ -79,9 +83,11 @@ py::dict rho_map(const Params& base, const std::string& branch, double rho_lo, d
   return map_arrays(m);
 }
 
-py::dict omega_map(const Params& base, const std::string& branch, double delta0_lo, double delta0_hi, int nx,
-                   double omega_lo, double omega_hi, int ny, bool delta0_log) {
+py::dict omega_map(const Params& base, const std::string& branch, double delta0_lo, double delta0_hi, Index nx,
+                   double omega_lo, double omega_hi, Index ny, bool delta0_log) {
   const Branch b = parse_branch(branch);
+  config::checked_option(double(nx), config::map_pixels_x, "delta0");  // (lo, hi, n): n pixels
+  config::checked_option(double(ny), config::map_pixels_y, "omega");
   const GridAxis delta0{delta0_lo, delta0_hi, nx, delta0_log}, omega{omega_lo, omega_hi, ny};
   RegimeMap m;
   {

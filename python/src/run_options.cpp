@@ -5,6 +5,7 @@
 
 #include "lrchain/dispersion.hpp"
 #include "lrchain/errors.hpp"
+#include "real_numbers.hpp"
 
 namespace py = pybind11;
 
@@ -37,6 +38,7 @@ void assign_options(const py::dict& options, const std::map<std::string, OptionT
       throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name +
                            "' (allowed: " + allowed + ")");
     }
+    refuse_complex(value, name);  // never truncated to its real part
     std::visit(
         [&](auto* field) {
           using T = std::remove_pointer_t<decltype(field)>;

@@ -12,6 +12,7 @@
 #include "lrchain/checked_number.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/integrator.hpp"
+#include "lrchain/config/option_caps.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/model_lattice.hpp"
 
@@ -19,7 +20,6 @@ namespace lrchain::sim {
 
 namespace {
 
-constexpr long kMaxRingSites = 1'000'000;
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // k with theta = 2 pi k / sites (to 1e-9), or -1.
@@ -65,8 +65,9 @@ Index ring_sites(const RingRunConfig& c) {
 
 void validate(const RingRunConfig& c) {
   if (!(c.theta > 0 && c.theta <= std::numbers::pi)) throw InvalidParameter("theta", "the carrier wavenumber must be in (0, pi]");
-  if (c.sites != 0 && (c.sites < 8 || c.sites > kMaxRingSites))
-    throw InvalidParameter("sites", fmt::format("the ring needs 8 to {} sites", kMaxRingSites));
+  if (c.sites != 0 && (c.sites < config::ring_sites.least || c.sites > config::ring_sites.most))
+    throw InvalidParameter("sites", fmt::format("the ring needs {} to {} sites", config::ring_sites.least,
+                                                config::ring_sites.most));
   const long sites = ring_sites(c);
   if (sites == 0)
     throw InvalidParameter("theta", fmt::format("{} is not 2 pi k / N for any ring of N <= 4096 sites; give theta as "
