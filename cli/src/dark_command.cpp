@@ -5,7 +5,6 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 #include <cstdio>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
