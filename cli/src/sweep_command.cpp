@@ -12,8 +12,10 @@
 #include "help_text.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/provenance_json.hpp"
+#include "lrchain/sim/sweep/side_files.hpp"
 #include "lrchain/sim/sweep/sweep_config.hpp"
 #include "lrchain/sim/sweep/sweep_figure.hpp"
+#include "lrchain/sim/sweep/sweep_memory.hpp"
 #include "lrchain/sim/sweep/sweep_run.hpp"
 #include "options.hpp"
 #include "stop_signals.hpp"
@@ -34,8 +36,12 @@ struct SweepArguments {
 // Loads and checks everything, runs the sweep (resuming from its results file), prints a JSON
 // summary; an interrupted sweep ends with exit 130/143 after its results so far are written.
 void run_sweep_command(const SweepArguments& a) {
-  sim::sweep::SweepConfig c = sim::sweep::load_sweep_config(a.config);
-  if (!a.output.empty()) c.output = a.output;
+  sim::sweep::SweepConfig c = sim::sweep::load_sweep_config(a.config, sim::sweep::launcher_ranks_on_this_node());
+  if (!a.output.empty()) {
+    if (const std::string problem = sim::sweep::output_problem(a.output, !c.figure.empty()); !problem.empty())
+      throw InvalidParameter("--output", problem);
+    c.output = a.output;
+  }
   const sim::sweep::Job job = sim::sweep::make_job(c);
   sim::sweep::SweepRunOptions o;
   o.threads = a.threads;
@@ -64,8 +70,11 @@ void run_sweep_command(const SweepArguments& a) {
   j["figures"] = nlohmann::json::array();
   if (!c.figure.empty() && !r.interrupted) {
     const auto results = sim::sweep::read_results(c.output, c, job);
+    const auto figure_files = sim::sweep::sweep_figure_files(c);
+    sim::sweep::mark_side_files_pending(c, figure_files);
     j["figures"] = c.figure == "stability" && c.job == "dark continue" ? sim::sweep::write_stability_figure(c, results)
                                                                         : sim::sweep::write_sweep_figures(c, job, results, c.figure);
+    sim::sweep::record_side_files(c, figure_files);
   }
   j["name"] = c.name;
   j["job"] = c.job;

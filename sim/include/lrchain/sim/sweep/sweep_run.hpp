@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "lrchain/sim/sweep/job.hpp"
@@ -43,7 +44,8 @@ void run_points(const Job& job, const SweepConfig& c, PointQueue& queue, int thr
 class ResultsKeeper {
  public:
   // Resumes from c.output when it exists (InputError naming what changed if it belongs to another
-  // sweep); creates the output's directory.
+  // sweep, or the first damaged point); refuses a side file of the user's (side_files.hpp); creates
+  // the output's directory.
   ResultsKeeper(const SweepConfig& c, const Job& job, const SweepRunOptions& o);
   const std::vector<std::size_t>& todo() const noexcept { return todo_; }  // in point order
   std::size_t resumed() const noexcept { return resumed_; }                // finished before this run
@@ -63,6 +65,7 @@ class ResultsKeeper {
   std::mutex mutex_;
   std::chrono::steady_clock::time_point last_write_;
   SweepProgress progress_;
+  std::vector<std::string> csv_files_;  // the CSV views written next to the results (side_files.hpp)
 };
 
 struct SweepOutcome {
