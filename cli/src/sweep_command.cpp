@@ -7,6 +7,7 @@
 
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #include "commands.hpp"
 #include "help_text.hpp"
@@ -49,6 +50,7 @@ void run_sweep_command(const SweepArguments& a) {
   o.progress = !a.quiet;
   StopSignals signals;
   o.stop = StopSignals::flag();
+  o.stop_signal = &StopSignals::received;
   sim::sweep::SweepOutcome r;
   int rank = 0, ranks = 1;
 #ifdef LRCHAIN_WITH_MPI
@@ -59,13 +61,20 @@ void run_sweep_command(const SweepArguments& a) {
     ranks = mpi->size();
     o.progress = o.progress && rank == 0;
     r = sim::sweep::run_sweep_mpi(*mpi, c, job, o);
+    if (r.lost_ranks > 0) mpi->abandon();
   } else {
     r = sim::sweep::run_sweep(c, job, o);
   }
 #else
   r = sim::sweep::run_sweep(c, job, o);
 #endif
-  if (rank != 0) return;
+  if (rank != 0) {
+    // A rank stopped by a signal ends as rank 0 does (rank 0 reports the sweep).
+    if (r.interrupted && StopSignals::received() != 0)
+      throw Interrupted(StopSignals::received(), fmt::format("rank {} interrupted by {}; rank 0 wrote the results so far", rank,
+                                                             StopSignals::name(StopSignals::received())));
+    return;
+  }
   nlohmann::json j;
   j["figures"] = nlohmann::json::array();
   if (!c.figure.empty() && !r.interrupted) {
@@ -91,14 +100,24 @@ void run_sweep_command(const SweepArguments& a) {
   j["resumed"] = r.resumed;
   j["ranks"] = ranks;
   j["interrupted"] = r.interrupted;
+  j["missing"] = r.missing;
+  j["missing_points"] = r.missing_points;  // the first 1000 points not run (status "missing" in the results)
+  j["lost_ranks"] = r.lost_ranks;
   j["seconds"] = r.seconds;
   j["provenance"] = provenance_json();
   std::cout << (a.compact ? j.dump() : j.dump(2)) << std::endl;
   if (r.interrupted) {
-    const int signal_number = StopSignals::received();
-    throw Interrupted(signal_number, fmt::format("interrupted by {} after {} of {} points; the results so far are in '{}'; "
+    // A signal here or on another rank: exit 128 + signal; a rank lost without one: exit 1.
+    const int signal_number = StopSignals::received() != 0 ? StopSignals::received() : r.stop_signal;
+    if (signal_number <= 0)
+      throw std::runtime_error(fmt::format("{} of {} points are missing: {} rank(s) stopped without sending their results; the "
+                                           "results so far are in '{}'; run the same command again to continue",
+                                           r.missing, r.points, r.lost_ranks, c.output.string()));
+    throw Interrupted(signal_number, fmt::format("interrupted by {}{} after {} of {} points; the results so far are in '{}'; "
                                                  "run the same command again to continue",
-                                                 StopSignals::name(signal_number), r.finished, r.points, c.output.string()));
+                                                 StopSignals::name(signal_number),
+                                                 StopSignals::received() != 0 ? "" : " on another rank", r.finished, r.points,
+                                                 c.output.string()));
   }
 }
 

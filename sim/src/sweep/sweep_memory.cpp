@@ -18,7 +18,7 @@ double sweep_point_bytes(const SweepMemorySizes& s) {
                         8;
   // A write gathers the reasons' pointers and each row column; a read holds every reason string
   // (HDF5 allocates each, at least 32 bytes), the stored checksums and the rows once more.
-  const double buffers = 8 + 32 + double(sizeof(Sha256Digest)) + (8 + 8 * s.row_columns + 8) * s.rows_per_point;
+  const double buffers = 8 + 32 + double(sizeof(Sha256Digest)) + 1 + (8 + 8 * s.row_columns + 8) * s.rows_per_point;
   return record + buffers;
 }
 

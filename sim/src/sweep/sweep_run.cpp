@@ -124,6 +124,12 @@ SweepOutcome outcome_of(const ResultsKeeper& keeper, std::size_t ran, bool inter
   o.resumed = keeper.resumed();
   o.interrupted = interrupted;
   o.seconds = seconds;
+  const auto& status = keeper.results().status;
+  for (std::size_t p = 0; p < status.size(); ++p) {
+    if (status[p] != std::int8_t(PointStatus::missing)) continue;
+    ++o.missing;
+    if (o.missing_points.size() < 1000) o.missing_points.push_back(p);
+  }
   return o;
 }
 
@@ -134,8 +140,10 @@ SweepOutcome run_sweep(const SweepConfig& c, const Job& job, const SweepRunOptio
   run_points(job, c, queue, o.threads, o.stop);
   keeper.write_final();
   const bool interrupted = keeper.results().finished() < keeper.results().points && o.stop && o.stop->load();
-  return outcome_of(keeper, queue.ran(), interrupted,
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  SweepOutcome out = outcome_of(keeper, queue.ran(), interrupted,
+                                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  if (interrupted && o.stop_signal) out.stop_signal = o.stop_signal();
+  return out;
 }
 
 }  // namespace lrchain::sim::sweep

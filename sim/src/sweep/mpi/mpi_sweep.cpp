@@ -13,6 +13,7 @@
 #include <cstring>
 #include <deque>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -39,10 +40,12 @@ T take(const std::vector<char>& b, std::size_t& at) {
   return v;
 }
 
-// A request: want-more flag, then (point, status, wall time, scalars, reason, rows) per finished point.
-std::vector<char> pack_request(bool want_more, const std::vector<std::pair<std::size_t, JobResult>>& done) {
+// A request: want-more flag, the signal that stopped the sender (0: none, -1: stopped, signal
+// unknown), then (point, status, wall time, scalars, reason, rows) per finished point.
+std::vector<char> pack_request(bool want_more, int stopped_by, const std::vector<std::pair<std::size_t, JobResult>>& done) {
   std::vector<char> b;
   put<std::uint8_t>(b, want_more ? 1 : 0);
+  put<std::int32_t>(b, stopped_by);
   put<std::uint64_t>(b, done.size());
   for (const auto& [point, r] : done) {
     put<std::uint64_t>(b, point);
@@ -86,21 +89,33 @@ class Coordinator final : public PointQueue {
     ++ran_;
     serve();
   }
-  // Serves until every other rank has sent its last results.
-  void drain() {
+  // Serves until every other rank has sent its last results. Once this rank is stopped by a signal
+  // (mpirun passes SIGTERM on and kills 1 s later; a rank that died sends nothing), it waits at
+  // most `grace` for them, so that the results so far are written in time; the ranks still silent
+  // then are counted as lost.
+  void drain(std::chrono::milliseconds grace = std::chrono::milliseconds(300)) {
+    std::optional<std::chrono::steady_clock::time_point> give_up;
     for (;;) {
       {
         std::lock_guard<std::mutex> lock(mutex_);
         serve();
         if (finals_ == ranks_ - 1) return;
+        if (stop_ && stop_->load() && !give_up) give_up = std::chrono::steady_clock::now() + grace;
+        if (give_up && std::chrono::steady_clock::now() >= *give_up) {
+          lost_ = ranks_ - 1 - finals_;
+          return;
+        }
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
   }
   std::size_t ran() const { return ran_; }
+  int lost_ranks() const { return lost_; }
+  // The signal another rank reported it was stopped by (0: none; -1: stopped, signal unknown).
+  int remote_stop() const { return remote_stop_; }
 
  private:
-  bool stopped() const { return stop_ && stop_->load(); }
+  bool stopped() const { return (stop_ && stop_->load()) || remote_stop_ != 0; }
 
   // Handles every pending request (called with mutex_ held).
   void serve() {
@@ -112,6 +127,8 @@ class Coordinator final : public PointQueue {
       const std::vector<char> b = receive_bytes(status.MPI_SOURCE, tag_request, status);
       std::size_t at = 0;
       const bool want_more = take<std::uint8_t>(b, at) != 0;
+      // A rank stopped by a signal stops the sweep: no more points are handed out, here or there.
+      if (const auto stopped_by = take<std::int32_t>(b, at); stopped_by != 0 && remote_stop_ == 0) remote_stop_ = stopped_by;
       const auto count = take<std::uint64_t>(b, at);
       for (std::uint64_t k = 0; k < count; ++k) {
         const auto point = std::size_t(take<std::uint64_t>(b, at));
@@ -147,13 +164,14 @@ class Coordinator final : public PointQueue {
   const std::atomic<bool>* stop_;
   std::mutex mutex_;
   std::size_t next_ = 0, ran_ = 0;
-  int finals_ = 0;
+  int finals_ = 0, lost_ = 0, remote_stop_ = 0;
 };
 
 // Ranks > 0: points come from rank 0 in chunks; the next chunk is asked for when the last point
 // of the current one is taken, so it arrives while that point runs.
 class Worker final : public PointQueue {
  public:
+  Worker(const std::atomic<bool>* stop, int (*stop_signal)()) : stop_(stop), stop_signal_(stop_signal) {}
   std::optional<std::size_t> next() override {
     std::lock_guard<std::mutex> lock(mutex_);
     if (local_.empty() && !no_more_) {
@@ -175,7 +193,7 @@ class Worker final : public PointQueue {
   void finish() {
     std::lock_guard<std::mutex> lock(mutex_);
     if (asked_) wait_for_chunk();
-    const auto b = pack_request(false, done_);
+    const auto b = pack_request(false, stopped_by(), done_);
     MPI_Send(b.data(), int(b.size()), MPI_BYTE, 0, tag_request, MPI_COMM_WORLD);
     done_.clear();
   }
@@ -183,7 +201,7 @@ class Worker final : public PointQueue {
 
  private:
   void ask() {
-    const auto b = pack_request(true, done_);
+    const auto b = pack_request(true, stopped_by(), done_);
     MPI_Send(b.data(), int(b.size()), MPI_BYTE, 0, tag_request, MPI_COMM_WORLD);
     done_.clear();
     asked_ = true;
@@ -200,6 +218,15 @@ class Worker final : public PointQueue {
     local_.insert(local_.end(), points.begin(), points.end());
   }
 
+  // What this rank tells rank 0 about its stop flag (pack_request).
+  int stopped_by() const {
+    if (!stop_ || !stop_->load()) return 0;
+    const int signal_number = stop_signal_ ? stop_signal_() : 0;
+    return signal_number != 0 ? signal_number : -1;
+  }
+
+  const std::atomic<bool>* stop_;
+  int (*stop_signal_)();
   std::mutex mutex_;
   std::deque<std::size_t> local_;
   std::vector<std::pair<std::size_t, JobResult>> done_;
@@ -228,7 +255,9 @@ MpiSession::MpiSession() {
   MPI_Comm_free(&node);
 }
 
-MpiSession::~MpiSession() { MPI_Finalize(); }
+MpiSession::~MpiSession() {
+  if (!abandoned_) MPI_Finalize();
+}
 
 SweepOutcome run_sweep_mpi(const MpiSession& mpi, const SweepConfig& c, const Job& job, const SweepRunOptions& o) {
   const auto start = std::chrono::steady_clock::now();
@@ -242,17 +271,25 @@ SweepOutcome run_sweep_mpi(const MpiSession& mpi, const SweepConfig& c, const Jo
     run_points(job, c, queue, threads, o.stop);
     queue.drain();
     keeper.write_final();
-    const bool interrupted = keeper.results().finished() < keeper.results().points && o.stop && o.stop->load();
-    MPI_Barrier(MPI_COMM_WORLD);
-    return outcome_of(keeper, queue.ran(), interrupted, seconds());
+    // Every point handed out comes back unless a rank was stopped or lost: then points are missing
+    // and the sweep says so, whichever rank it was.
+    const bool interrupted = keeper.results().finished() < keeper.results().points;
+    // A lost rank would never reach the barrier.
+    if (queue.lost_ranks() == 0) MPI_Barrier(MPI_COMM_WORLD);
+    SweepOutcome out = outcome_of(keeper, queue.ran(), interrupted, seconds());
+    out.lost_ranks = queue.lost_ranks();
+    const int here = o.stop && o.stop->load() && o.stop_signal ? o.stop_signal() : 0;
+    out.stop_signal = here != 0 ? here : std::max(queue.remote_stop(), 0);
+    return out;
   }
-  Worker queue;
+  Worker queue(o.stop, o.stop_signal);
   run_points(job, c, queue, threads, o.stop);
   queue.finish();
   MPI_Barrier(MPI_COMM_WORLD);
   SweepOutcome out;
   out.ran = queue.ran();
   out.interrupted = o.stop && o.stop->load();
+  if (out.interrupted && o.stop_signal) out.stop_signal = o.stop_signal();
   out.seconds = seconds();
   return out;
 }

@@ -24,6 +24,7 @@ struct SweepRunOptions {
   int threads = 0;                           // per process; 0: OpenMP's default
   bool retry_failed = false;                 // rerun points a resumed file records as failed
   const std::atomic<bool>* stop = nullptr;   // set (SIGINT/SIGTERM): finish no more points, write, return
+  int (*stop_signal)() = nullptr;            // the signal that set `stop` (0 or absent: unknown)
   bool progress = true;                      // progress on stderr
 };
 
@@ -70,7 +71,11 @@ class ResultsKeeper {
 
 struct SweepOutcome {
   std::size_t points = 0, finished = 0, failed = 0, ran = 0, resumed = 0;
-  bool interrupted = false;
+  bool interrupted = false;  // points are missing: a signal, here or on another rank, or a lost rank
+  int stop_signal = 0;       // the signal that stopped this or another rank (0: none or unknown)
+  int lost_ranks = 0;        // MPI ranks that never sent their last results
+  std::size_t missing = 0;   // points not run
+  std::vector<std::size_t> missing_points;  // the first 1000 of them, in order
   double seconds = 0;
 };
 // Summary of a keeper after its run.
