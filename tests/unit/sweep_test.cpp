@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 
 #include <chrono>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -237,6 +239,73 @@ TEST_CASE("sweep: mpirun -n 2 gives the 1-rank threaded results bit for bit") {
   CHECK(j["finished"] == 12);
   const SweepConfig c = load_sweep_config(d / "ranks.toml");
   check_same(threads, read_results(c.output, c, make_job(c).scalar_names()));
+  fs::remove_all(d);
+}
+
+namespace {
+
+// The pid of the process whose command line contains `needle` and whose environment says it is
+// MPI rank `rank` (Open MPI's OMPI_COMM_WORLD_RANK); 0 if there is none (yet).
+int pid_of_rank(const std::string& needle, int rank) {
+  const std::string wanted = "OMPI_COMM_WORLD_RANK=" + std::to_string(rank);
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string name = e.path().filename().string();
+    if (name.empty() || !std::all_of(name.begin(), name.end(), ::isdigit)) continue;
+    std::ifstream cmd(e.path() / "cmdline", std::ios::binary), env(e.path() / "environ", std::ios::binary);
+    const std::string cmdline{std::istreambuf_iterator<char>(cmd), std::istreambuf_iterator<char>()};
+    if (cmdline.find(needle) == std::string::npos || cmdline.rfind("mpirun", 0) == 0) continue;
+    for (std::string entry; std::getline(env, entry, '\0');)
+      if (entry == wanted) return std::stoi(name);
+  }
+  return 0;
+}
+
+}  // namespace
+
+TEST_CASE("sweep: under mpirun -n 2, SIGTERM to rank 1 stops the sweep with exit 143, interrupted and the missing points listed") {
+  REQUIRE_MESSAGE(lrchain::program_in_path("mpirun"), "this build has MPI: mpirun (openmpi-bin) must be installed");
+  const fs::path d = scratch("mpi-term");
+  // Points of tens of ms (401 sites, 100 T_b), 8 x 5 of them: the signal comes mid-way.
+  std::string longer = base_config;
+  longer.replace(longer.find("sites = 121"), 11, "sites = 401");
+  longer.replace(longer.find("periods = 10"), 12, "periods = 100");
+  write(d / "base.toml", longer);
+  write(d / "term.toml", "job = \"bright\"\nbase = \"base.toml\"\noutput = \"" + (d / "term.h5").string() +
+                             "\"\ncheckpoint_seconds = 0.05\n[[axis]]\nparameter = \"bright.theta\"\nfrom = 1.2\nto = 1.8\ncount = 8\n"
+                             "[[axis]]\nparameter = \"bright.n0\"\nvalues = [0, 0.25, 0.5, 0.75, 1]\n");
+  lrchain::ProcessOptions o;
+  o.capture_stdout = o.capture_stderr = true;
+  lrchain::ChildProcess mpirun({"mpirun", "-n", "2", "--oversubscribe", "--allow-run-as-root", LRCHAIN_CLI, "sweep", "--config",
+                                (d / "term.toml").string(), "--json", "--quiet", "--threads", "1"},
+                               o);
+  // Once rank 0 has written its first checkpoint, both ranks are running points.
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  int rank1 = 0;
+  while (std::chrono::steady_clock::now() < give_up && (!fs::exists(d / "term.h5") || !rank1)) {
+    rank1 = pid_of_rank((d / "term.toml").string(), 1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  REQUIRE(rank1 > 0);
+  REQUIRE(::kill(rank1, SIGTERM) == 0);
+  const auto r = mpirun.wait();
+  // Before: exit 0, "interrupted": false and the points rank 1 held silently absent.
+  CHECK(r.exit_code == 143);
+  const auto j = nlohmann::json::parse(r.output);
+  CHECK(j["interrupted"] == true);
+  const SweepConfig c = load_sweep_config(d / "term.toml");
+  const SweepResults res = read_results(c.output, c, make_job(c).scalar_names());
+  CHECK(j["missing"] == res.points - res.finished());
+  CHECK(j["missing"].get<std::size_t>() > 0);
+  std::vector<std::size_t> missing;
+  for (std::size_t p = 0; p < res.points; ++p)
+    if (res.status[p] == std::int8_t(PointStatus::missing)) missing.push_back(p);
+  CHECK(j["missing_points"].get<std::vector<std::size_t>>() == missing);
+  CHECK(r.error_output.find("interrupted by SIGTERM on another rank") != std::string::npos);
+  // Run again (as the message says), it completes the sweep.
+  const auto again = lrchain::test::run_command({"mpirun", "-n", "2", "--oversubscribe", "--allow-run-as-root", LRCHAIN_CLI,
+                                                 "sweep", "--config", (d / "term.toml").string(), "--json", "--quiet", "--threads", "1"});
+  REQUIRE_MESSAGE(again.exit_code == 0, again.err);
+  CHECK(nlohmann::json::parse(again.out)["finished"] == 40);
   fs::remove_all(d);
 }
 #endif

@@ -14,6 +14,7 @@
 #include "lrchain/sim/gnuplot_text.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "lrchain/sim/sweep/side_files.hpp"
 
 namespace lrchain::sim::sweep {
 
@@ -54,10 +55,6 @@ void draw_figures(const std::filesystem::path& dir, const std::vector<FigureScri
   for (const auto& f : figures) files.push_back(f.script);
   for (const auto& png : drawn.drawn()) files.push_back(png);
   if (!drawn.warning().empty()) fmt::print(stderr, "{}\n", drawn.warning());
-}
-
-std::filesystem::path directory_of(const std::filesystem::path& output) {
-  return output.has_parent_path() ? output.parent_path() : std::filesystem::path(".");
 }
 
 // The second axis is drawn on a log scale: one sign throughout and at least a decade.
@@ -107,7 +104,7 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
   const bool y_log = second_axis_log(y);
   const double sign = y_negative ? -1.0 : 1.0;  // of the values drawn
   const std::string stem = c.output.stem().string() + "_" + scalar;
-  const std::filesystem::path dir = directory_of(c.output);
+  const std::filesystem::path dir = output_directory(c);
 
   std::ostringstream data;
   data << "# " << x.parameter << ' ' << (y_negative ? "-" : "") << y.parameter << " log10(" << scalar << ")\n";
@@ -185,7 +182,7 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
                     stability = index_of(r.row_names, "stability"), part = index_of(r.row_names, "part");
   const std::size_t turning = index_of(r.scalar_names, "first_turning_point"), edge = index_of(r.scalar_names, "omega_edge");
   const std::string stem = c.output.stem().string() + "_stability";
-  const std::filesystem::path dir = directory_of(c.output);
+  const std::filesystem::path dir = output_directory(c);
   std::ostringstream points, marks;
   points << "# drawn " << x.parameter << ", omega_b, class (0 stable, 1 real-unstable, 2 oscillatory-unstable), part, "
          << x.parameter << "\n";
