@@ -5,6 +5,7 @@ namespace lrchain::sim {
 
 std::string gnuplot_text(std::string_view text, GnuplotTextMode mode) {
   static constexpr std::string_view replacement = "\xEF\xBF\xBD";  // U+FFFD in UTF-8
+  static constexpr std::string_view apostrophe = "\xE2\x80\x99";   // U+2019 in UTF-8
   static constexpr std::string_view enhanced_specials = "\\_^@&~{}";
   std::string out;
   out.reserve(text.size() + 8);
@@ -13,7 +14,7 @@ std::string gnuplot_text(std::string_view text, GnuplotTextMode mode) {
     if (byte < 0x20 || byte == 0x7F)
       out += replacement;
     else if (c == '\'')
-      out += "''";
+      out += apostrophe;
     else if (mode == GnuplotTextMode::enhanced && enhanced_specials.find(c) != std::string_view::npos)
       out += {'\\', c};
     else

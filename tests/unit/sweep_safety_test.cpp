@@ -23,20 +23,15 @@
 #include "lrchain/sim/sweep/results_file.hpp"
 #include "lrchain/sim/sweep/sweep_config.hpp"
 #include "../support/run_lrchain.hpp"
+#include "sweep_test_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace lrchain::sim::sweep;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("lrchain-sweep-safety-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-void write(const fs::path& f, const std::string& text) { std::ofstream(f, std::ios::binary) << text; }
+fs::path scratch(const std::string& name) { return lrchain::test::sweep_scratch("sweep-safety", name); }
+void write(const fs::path& f, const std::string& text) { lrchain::test::write_text(f, text); }
 
 std::string slurp(const fs::path& f) {
   std::ifstream in(f, std::ios::binary);
@@ -45,22 +40,7 @@ std::string slurp(const fs::path& f) {
   return s.str();
 }
 
-// A short optical bright run of the paper's chain (as in sweep_test.cpp).
-const char* base_config = R"(experiment = "bright"
-[model]
-rho = "1/3"
-[bright]
-branch = "optical"
-theta = "pi/2"
-sites = 121
-periods = 10
-sample_every = 0.25
-spacetime_every = 1.0
-snapshot_periods = [0.0]
-[integrator]
-stepper = "srkn11b"
-dt = 0.37
-)";
+const char* const base_config = lrchain::test::short_bright_base;
 
 // A 2 x 2 grid over theta and a decade of detunings with a figure of max_Ex; `name_line` and the
 // output as given.
@@ -98,23 +78,24 @@ std::string double_bytes(double v) {
 TEST_CASE("sweep safety: a hostile name never runs in gnuplot, neither during the sweep nor when the script is re-run") {
   const fs::path d = scratch("gnuplot");
   write(d / "base.toml", base_config);
-  // The name closes gnuplot's quote and calls system(); the output's name starts with '<' (gnuplot
-  // reads `plot '<cmd'` as a shell command's output).
-  write(d / "s.toml", figure_sweep(R"(name = "x'; system('touch PWNED1'); print '")", "out/<touch PWNED2.h5"));
+  // The name closes gnuplot's quote and calls system().
+  write(d / "s.toml", figure_sweep(R"(name = "x'; system('touch PWNED1'); print '")", "out/r.h5"));
   const auto r = lrchain::test::run_lrchain({"sweep", "--config", "s.toml", "--quiet", "--json"}, d);
   REQUIRE_MESSAGE(r.exit_code == 0, r.err);
-  const std::string script = slurp(d / "out" / "<touch PWNED2_max_Ex.gp");
-  CHECK(script.find("set title 'x''; system(''touch PWNED1''); print '': log10(max_Ex)") != std::string::npos);
-  CHECK(script.find("splot './<touch PWNED2_max_Ex.dat'") != std::string::npos);
+  const std::string script = slurp(d / "out" / "r_max_Ex.gp");
+  const std::string apostrophe = "\xE2\x80\x99";  // U+2019, how a quote is shown (gnuplot_text.hpp)
+  CHECK(script.find("set title 'x" + apostrophe + "; system(" + apostrophe + "touch PWNED1" + apostrophe + "); print " + apostrophe +
+                    ": log10(max_Ex)") != std::string::npos);
+  CHECK(script.find("splot './r_max_Ex.dat'") != std::string::npos);
   if (lrchain::program_in_path("gnuplot")) {
-    CHECK(fs::exists(d / "out" / "<touch PWNED2_max_Ex.png"));  // the figure is drawn all the same
+    CHECK(fs::exists(d / "out" / "r_max_Ex.png"));  // the figure is drawn all the same
     lrchain::ProcessOptions o;
     o.working_directory = d / "out";
     o.capture_stderr = true;
-    CHECK(lrchain::run_program({"gnuplot", "<touch PWNED2_max_Ex.gp"}, o).ok());
+    CHECK(lrchain::run_program({"gnuplot", "r_max_Ex.gp"}, o).ok());
   }
   for (const fs::path& where : {d, d / "out"})
-    for (const char* marker : {"PWNED1", "PWNED2", "PWNED2_max_Ex.dat"}) CHECK(!fs::exists(where / marker));
+    CHECK(!fs::exists(where / "PWNED1"));
   fs::remove_all(d);
 }
 
@@ -131,6 +112,8 @@ TEST_CASE("sweep safety: a control character in the name, the output or --output
       {figure_sweep(R"(name = "a\u0000b")", "out/r.h5"), {}, "'name' in the top level at s.toml:2: contains the control character 0x00"},
       {figure_sweep("", "out/r\\r.h5"), {}, "'output' in the top level at s.toml:4: contains the control character 0x0D"},
       {figure_sweep("", "out/r'.h5"), {}, "'output' in the top level at s.toml:4: the figure's files are named after it"},
+      // gnuplot reads a file argument or `plot '<cmd'` starting with '<' as a shell command.
+      {figure_sweep("", "out/<touch PWNED.h5"), {}, "'output' in the top level at s.toml:4: the figure's files are named after it"},
       {figure_sweep("", "out/r.h5"), {"--output", "out/a\nb.h5"}, "invalid --output: contains the control character 0x0A"},
   };
   for (const auto& k : cases) {
@@ -238,6 +221,6 @@ TEST_CASE("sweep safety: an axis of 1e9 values is refused from its count, before
                       "from = 1.2\nto = 1.8\ncount = 100000\n[[axis]]\nparameter = \"bright.n0\"\nfrom = 0\nto = 1\ncount = 100000\n");
   const auto grid = lrchain::test::run_command({"prlimit", "--as=1073741824", LRCHAIN_CLI, "sweep", "--config", "s.toml", "--quiet"}, d);
   CHECK(grid.exit_code == 2);
-  CHECK_MESSAGE(grid.err.find("s.toml:14: the grid has more than 1e9 points") != std::string::npos, grid.err);
+  CHECK_MESSAGE(grid.err.find("s.toml:13: the grid has more than 1e9 points") != std::string::npos, grid.err);
   fs::remove_all(d);
 }

@@ -29,38 +29,16 @@
 #include "lrchain/sim/sweep/sweep_config.hpp"
 #include "lrchain/sim/sweep/sweep_run.hpp"
 #include "../support/run_lrchain.hpp"
+#include "sweep_test_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace lrchain::sim::sweep;
 
 namespace {
 
-// A fresh scratch directory for one test.
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("lrchain-sweep-test-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-void write(const fs::path& f, const std::string& text) { std::ofstream(f) << text; }
-
-// A short optical bright run of the paper's chain (exp1's stepper settings, 121 sites, 10 T_b).
-const char* base_config = R"(experiment = "bright"
-[model]
-rho = "1/3"
-[bright]
-branch = "optical"
-theta = "pi/2"
-sites = 121
-periods = 10
-sample_every = 0.25
-spacetime_every = 1.0
-snapshot_periods = [0.0]
-[integrator]
-stepper = "srkn11b"
-dt = 0.37
-)";
+fs::path scratch(const std::string& name) { return lrchain::test::sweep_scratch("sweep-test", name); }
+void write(const fs::path& f, const std::string& text) { lrchain::test::write_text(f, text); }
+const char* const base_config = lrchain::test::short_bright_base;
 
 // theta across part of the focusing interval x detuning over a decade: 4 x 3 points.
 std::string grid_sweep(const std::string& output, double checkpoint_seconds = 30) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -166,9 +167,11 @@ std::string output_problem(const std::filesystem::path& output, bool figure) {
   if (text.empty()) return "give a file name";
   if (std::string p = control_character_problem(text); !p.empty()) return p;
   if (!output.has_filename()) return "give a file name, not a directory";
-  // The figures' files are named after the output, and gnuplot is told their names in quotes.
-  if (figure && output.filename().string().find_first_of("'\\") != std::string::npos)
-    return "the figure's files are named after it: give a file name without quotes or backslashes";
+  // The figures' files are named after the output: gnuplot is told their names in quotes and as
+  // its arguments, where a name starting with '<' or '|' is a shell command and '-' an option.
+  const std::string name = output.filename().string();
+  if (figure && (name.find_first_of("'\\") != std::string::npos || std::string_view("<|-").find(name.front()) != std::string_view::npos))
+    return "the figure's files are named after it: give a file name without quotes or backslashes, not starting with '<', '|' or '-'";
   return {};
 }
 
