@@ -240,6 +240,24 @@ int pid_of_rank(const std::string& needle, int rank) {
 
 }  // namespace
 
+TEST_CASE("sweep: under mpirun -n 2, a refused output ends every rank with exit 2 and replaces nothing") {
+  REQUIRE_MESSAGE(lrchain::program_in_path("mpirun"), "this build has MPI: mpirun (openmpi-bin) must be installed");
+  const fs::path d = scratch("mpi-refused");
+  write(d / "base.toml", base_config);
+  write(d / "s.toml", grid_sweep((d / "s.h5").string()));
+  write(d / "s.csv", "the user's own table\n");  // where the sweep's CSV view would go
+  const auto r = lrchain::test::run_command({"mpirun", "-n", "2", "--oversubscribe", "--allow-run-as-root", LRCHAIN_CLI, "sweep",
+                                             "--config", (d / "s.toml").string(), "--quiet", "--threads", "1"});
+  // Before: the sweep ran and replaced s.csv (exit 0); a refusal on rank 0 alone left rank 1
+  // waiting for points forever.
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("s.csv' exists and was not written by this sweep") != std::string::npos);
+  std::ifstream in(d / "s.csv");
+  CHECK(std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()} == "the user's own table\n");
+  CHECK(!fs::exists(d / "s.h5"));
+  fs::remove_all(d);
+}
+
 TEST_CASE("sweep: under mpirun -n 2, SIGTERM to rank 1 stops the sweep with exit 143, interrupted and the missing points listed") {
   REQUIRE_MESSAGE(lrchain::program_in_path("mpirun"), "this build has MPI: mpirun (openmpi-bin) must be installed");
   const fs::path d = scratch("mpi-term");

@@ -60,6 +60,11 @@ std::string file_sha256(const fs::path& file) {
   return sha256_hex(bytes.str());
 }
 
+// Where a side file is, as the messages name it ("out/r.csv", or "r.csv" beside a bare output name).
+fs::path side_file_path(const SweepConfig& c, const std::string& name) {
+  return c.output.has_parent_path() ? c.output.parent_path() / name : fs::path(name);
+}
+
 }  // namespace
 
 fs::path output_directory(const SweepConfig& c) {
@@ -87,7 +92,7 @@ std::vector<std::string> sweep_side_files(const SweepConfig& c, const Job& job) 
 void check_side_files(const SweepConfig& c, const Job& job) {
   const auto written = read_manifest(c);
   for (const auto& name : sweep_side_files(c, job)) {
-    const fs::path path = output_directory(c) / name;
+    const fs::path path = side_file_path(c, name);
     std::error_code ec;
     if (!fs::exists(fs::symlink_status(path, ec))) continue;
     const auto it = written.find(name);
@@ -111,7 +116,7 @@ void record_side_files(const SweepConfig& c, const std::vector<std::string>& nam
   if (names.empty()) return;
   auto files = read_manifest(c);
   for (const auto& n : names) {
-    const fs::path path = output_directory(c) / n;
+    const fs::path path = side_file_path(c, n);
     std::error_code ec;
     if (fs::is_regular_file(fs::symlink_status(path, ec)))
       files[n] = file_sha256(path);

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <deque>
+#include <exception>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -266,7 +267,19 @@ SweepOutcome run_sweep_mpi(const MpiSession& mpi, const SweepConfig& c, const Jo
   if (!mpi.threads_allowed()) threads = 1;
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   if (mpi.rank() == 0) {
-    ResultsKeeper keeper(c, job, o);
+    // The keeper refuses a results file or side file before any point runs (exit 2): every rank
+    // learns it here, so that none waits for points that never come and all finalize.
+    std::optional<ResultsKeeper> kept;
+    std::exception_ptr refusal;
+    try {
+      kept.emplace(c, job, o);
+    } catch (...) {
+      refusal = std::current_exception();
+    }
+    int go = refusal ? 0 : 1;
+    MPI_Bcast(&go, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (refusal) std::rethrow_exception(refusal);
+    ResultsKeeper& keeper = *kept;
     Coordinator queue(keeper, mpi.size(), o.stop);
     run_points(job, c, queue, threads, o.stop);
     queue.drain();
@@ -282,6 +295,9 @@ SweepOutcome run_sweep_mpi(const MpiSession& mpi, const SweepConfig& c, const Jo
     out.stop_signal = here != 0 ? here : std::max(queue.remote_stop(), 0);
     return out;
   }
+  int go = 0;
+  MPI_Bcast(&go, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (!go) return SweepOutcome{};  // rank 0 refused the sweep and says why
   Worker queue(o.stop, o.stop_signal);
   run_points(job, c, queue, threads, o.stop);
   queue.finish();
