@@ -17,7 +17,6 @@
 
 #include "commands.hpp"
 #include "figure_format_option.hpp"
-#include "figure_text.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/boundary_curves.hpp"
@@ -30,6 +29,7 @@
 #include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/output_lock.hpp"
+#include "figure_text.hpp"
 #include "help_text.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
