@@ -4,17 +4,14 @@
 // ("diatomic_chain") is shown as written.
 #include <string>
 
+#include "lrchain/sim/gnuplot_text.hpp"
+
 namespace lrchain::cli {
 
-// `text` for a single-quoted gnuplot string in enhanced mode, shown literally: the characters
-// enhanced text interprets (_ ^ @ & ~ { }) are escaped and a quote is doubled.
+// `text` for a single-quoted gnuplot string in enhanced mode, shown literally (the project's one
+// escaping function, lrchain/sim/gnuplot_text.hpp).
 inline std::string gnuplot_literal(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '_' || c == '^' || c == '@' || c == '&' || c == '~' || c == '{' || c == '}') out += '\\';
-    out += c == '\'' ? std::string("''") : std::string(1, c);
-  }
-  return out;
+  return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced);
 }
 
 }  // namespace lrchain::cli

@@ -30,6 +30,7 @@
 #include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/output_lock.hpp"
+#include "figure_text.hpp"
 #include "help_text.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
@@ -486,13 +487,13 @@ json map_model(const MapArgs& a, const Model& m, const ModelMapPlan& plan, const
   json files = json::array(), panels = json::array();
   const std::string plane = "theta-" + plan.axis;
   std::ostringstream gp;
-  gp << "# Regime map sign(omega'' h_tilde) of model " << m.name() << " over (" << plan.axis
+  gp << "# Regime map sign(omega'' h_tilde) of model " << sim::gnuplot_string(m.name()) << " over (" << plan.axis
      << ", theta).\n# Pink: focusing (omega'' h_tilde < 0), white: defocusing, grey: no frequency. Re-run: gnuplot "
      << "regime_" << plane << ".gp\n"
      << "if (!exists('outfile')) outfile = 'regime_" << plane << ".png'\n"
      << "set terminal pngcairo size " << 700 * plan.branches.size() << ",620 font 'DejaVu Sans,11'\n"
      << "set output outfile\nset datafile separator ','\n" << kPalette
-     << "set multiplot\nset xlabel '" << plan.axis << "'\nset ylabel 'θ'\n"
+     << "set multiplot\nset xlabel '" << gnuplot_literal(plan.axis) << "'\nset ylabel 'θ'\n"
      << "set key top right opaque box font ',9'\n";
   const double panel_w = 1.0 / static_cast<double>(plan.branches.size());
   for (std::size_t k = 0; k < plan.branches.size(); ++k) {
@@ -508,7 +509,7 @@ json map_model(const MapArgs& a, const Model& m, const ModelMapPlan& plan, const
     write_file(dir, mapfile, map_csv(pixels, plan.axis.c_str(), "theta"));
     files.push_back(mapfile);
     gp << "set origin " << k * panel_w << ",0\nset size " << panel_w << ",1\n"
-       << "set title '" << m.name() << ", " << bn << " branch'\n"
+       << "set title '" << gnuplot_literal(m.name()) << ", " << gnuplot_literal(bn) << " branch'\n"
        << "set xrange [" << rr[0] << ":" << rr[1] << "]\nset yrange [0:pi]\n";
     std::ostringstream plot;
     plot << "plot '" << mapfile << "' using 1:2:3 with image notitle";

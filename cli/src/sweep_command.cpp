@@ -7,13 +7,16 @@
 
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #include "commands.hpp"
 #include "help_text.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/provenance_json.hpp"
+#include "lrchain/sim/sweep/side_files.hpp"
 #include "lrchain/sim/sweep/sweep_config.hpp"
 #include "lrchain/sim/sweep/sweep_figure.hpp"
+#include "lrchain/sim/sweep/sweep_memory.hpp"
 #include "lrchain/sim/sweep/sweep_run.hpp"
 #include "options.hpp"
 #include "stop_signals.hpp"
@@ -34,8 +37,12 @@ struct SweepArguments {
 // Loads and checks everything, runs the sweep (resuming from its results file), prints a JSON
 // summary; an interrupted sweep ends with exit 130/143 after its results so far are written.
 void run_sweep_command(const SweepArguments& a) {
-  sim::sweep::SweepConfig c = sim::sweep::load_sweep_config(a.config);
-  if (!a.output.empty()) c.output = a.output;
+  sim::sweep::SweepConfig c = sim::sweep::load_sweep_config(a.config, sim::sweep::launcher_ranks_on_this_node());
+  if (!a.output.empty()) {
+    if (const std::string problem = sim::sweep::output_problem(a.output, !c.figure.empty()); !problem.empty())
+      throw InvalidParameter("--output", problem);
+    c.output = a.output;
+  }
   const sim::sweep::Job job = sim::sweep::make_job(c);
   sim::sweep::SweepRunOptions o;
   o.threads = a.threads;
@@ -43,6 +50,7 @@ void run_sweep_command(const SweepArguments& a) {
   o.progress = !a.quiet;
   StopSignals signals;
   o.stop = StopSignals::flag();
+  o.stop_signal = &StopSignals::received;
   sim::sweep::SweepOutcome r;
   int rank = 0, ranks = 1;
 #ifdef LRCHAIN_WITH_MPI
@@ -53,19 +61,29 @@ void run_sweep_command(const SweepArguments& a) {
     ranks = mpi->size();
     o.progress = o.progress && rank == 0;
     r = sim::sweep::run_sweep_mpi(*mpi, c, job, o);
+    if (r.lost_ranks > 0) mpi->abandon();
   } else {
     r = sim::sweep::run_sweep(c, job, o);
   }
 #else
   r = sim::sweep::run_sweep(c, job, o);
 #endif
-  if (rank != 0) return;
+  if (rank != 0) {
+    // A rank stopped by a signal ends as rank 0 does (rank 0 reports the sweep).
+    if (r.interrupted && StopSignals::received() != 0)
+      throw Interrupted(StopSignals::received(), fmt::format("rank {} interrupted by {}; rank 0 wrote the results so far", rank,
+                                                             StopSignals::name(StopSignals::received())));
+    return;
+  }
   nlohmann::json j;
   j["figures"] = nlohmann::json::array();
   if (!c.figure.empty() && !r.interrupted) {
     const auto results = sim::sweep::read_results(c.output, c, job);
+    const auto figure_files = sim::sweep::sweep_figure_files(c);
+    sim::sweep::mark_side_files_pending(c, figure_files);
     j["figures"] = c.figure == "stability" && c.job == "dark continue" ? sim::sweep::write_stability_figure(c, results)
                                                                         : sim::sweep::write_sweep_figures(c, job, results, c.figure);
+    sim::sweep::record_side_files(c, figure_files);
   }
   j["name"] = c.name;
   j["job"] = c.job;
@@ -82,14 +100,24 @@ void run_sweep_command(const SweepArguments& a) {
   j["resumed"] = r.resumed;
   j["ranks"] = ranks;
   j["interrupted"] = r.interrupted;
+  j["missing"] = r.missing;
+  j["missing_points"] = r.missing_points;  // the first 1000 points not run (status "missing" in the results)
+  j["lost_ranks"] = r.lost_ranks;
   j["seconds"] = r.seconds;
   j["provenance"] = provenance_json();
   std::cout << (a.compact ? j.dump() : j.dump(2)) << std::endl;
   if (r.interrupted) {
-    const int signal_number = StopSignals::received();
-    throw Interrupted(signal_number, fmt::format("interrupted by {} after {} of {} points; the results so far are in '{}'; "
+    // A signal here or on another rank: exit 128 + signal; a rank lost without one: exit 1.
+    const int signal_number = StopSignals::received() != 0 ? StopSignals::received() : r.stop_signal;
+    if (signal_number <= 0)
+      throw std::runtime_error(fmt::format("{} of {} points are missing: {} rank(s) stopped without sending their results; the "
+                                           "results so far are in '{}'; run the same command again to continue",
+                                           r.missing, r.points, r.lost_ranks, c.output.string()));
+    throw Interrupted(signal_number, fmt::format("interrupted by {}{} after {} of {} points; the results so far are in '{}'; "
                                                  "run the same command again to continue",
-                                                 StopSignals::name(signal_number), r.finished, r.points, c.output.string()));
+                                                 StopSignals::name(signal_number),
+                                                 StopSignals::received() != 0 ? "" : " on another rank", r.finished, r.points,
+                                                 c.output.string()));
   }
 }
 

@@ -20,20 +20,15 @@
 #include "lrchain/sim/sweep/sweep_config.hpp"
 #include "lrchain/sim/sweep/sweep_run.hpp"
 #include "../support/run_lrchain.hpp"
+#include "sweep_test_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace lrchain::sim::sweep;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("lrchain-sweep-study-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-void write(const fs::path& f, const std::string& text) { std::ofstream(f) << text; }
+fs::path scratch(const std::string& name) { return lrchain::test::sweep_scratch("sweep-study", name); }
+void write(const fs::path& f, const std::string& text) { lrchain::test::write_text(f, text); }
 
 // A short bond-centred branch of the paper's chain on 21 sites from omega_b = 2.44 (edge 2.44949).
 const char* dark_base = R"(experiment = "dark continue"

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 
 #include <chrono>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -27,38 +29,16 @@
 #include "lrchain/sim/sweep/sweep_config.hpp"
 #include "lrchain/sim/sweep/sweep_run.hpp"
 #include "../support/run_lrchain.hpp"
+#include "sweep_test_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace lrchain::sim::sweep;
 
 namespace {
 
-// A fresh scratch directory for one test.
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("lrchain-sweep-test-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-void write(const fs::path& f, const std::string& text) { std::ofstream(f) << text; }
-
-// A short optical bright run of the paper's chain (exp1's stepper settings, 121 sites, 10 T_b).
-const char* base_config = R"(experiment = "bright"
-[model]
-rho = "1/3"
-[bright]
-branch = "optical"
-theta = "pi/2"
-sites = 121
-periods = 10
-sample_every = 0.25
-spacetime_every = 1.0
-snapshot_periods = [0.0]
-[integrator]
-stepper = "srkn11b"
-dt = 0.37
-)";
+fs::path scratch(const std::string& name) { return lrchain::test::sweep_scratch("sweep-test", name); }
+void write(const fs::path& f, const std::string& text) { lrchain::test::write_text(f, text); }
+const char* const base_config = lrchain::test::short_bright_base;
 
 // theta across part of the focusing interval x detuning over a decade: 4 x 3 points.
 std::string grid_sweep(const std::string& output, double checkpoint_seconds = 30) {
@@ -237,6 +217,91 @@ TEST_CASE("sweep: mpirun -n 2 gives the 1-rank threaded results bit for bit") {
   CHECK(j["finished"] == 12);
   const SweepConfig c = load_sweep_config(d / "ranks.toml");
   check_same(threads, read_results(c.output, c, make_job(c).scalar_names()));
+  fs::remove_all(d);
+}
+
+namespace {
+
+// The pid of the process whose command line contains `needle` and whose environment says it is
+// MPI rank `rank` (Open MPI's OMPI_COMM_WORLD_RANK); 0 if there is none (yet).
+int pid_of_rank(const std::string& needle, int rank) {
+  const std::string wanted = "OMPI_COMM_WORLD_RANK=" + std::to_string(rank);
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string name = e.path().filename().string();
+    if (name.empty() || !std::all_of(name.begin(), name.end(), ::isdigit)) continue;
+    std::ifstream cmd(e.path() / "cmdline", std::ios::binary), env(e.path() / "environ", std::ios::binary);
+    const std::string cmdline{std::istreambuf_iterator<char>(cmd), std::istreambuf_iterator<char>()};
+    if (cmdline.find(needle) == std::string::npos || cmdline.rfind("mpirun", 0) == 0) continue;
+    for (std::string entry; std::getline(env, entry, '\0');)
+      if (entry == wanted) return std::stoi(name);
+  }
+  return 0;
+}
+
+}  // namespace
+
+TEST_CASE("sweep: under mpirun -n 2, a refused output ends every rank with exit 2 and replaces nothing") {
+  REQUIRE_MESSAGE(lrchain::program_in_path("mpirun"), "this build has MPI: mpirun (openmpi-bin) must be installed");
+  const fs::path d = scratch("mpi-refused");
+  write(d / "base.toml", base_config);
+  write(d / "s.toml", grid_sweep((d / "s.h5").string()));
+  write(d / "s.csv", "the user's own table\n");  // where the sweep's CSV view would go
+  const auto r = lrchain::test::run_command({"mpirun", "-n", "2", "--oversubscribe", "--allow-run-as-root", LRCHAIN_CLI, "sweep",
+                                             "--config", (d / "s.toml").string(), "--quiet", "--threads", "1"});
+  // Before: the sweep ran and replaced s.csv (exit 0); a refusal on rank 0 alone left rank 1
+  // waiting for points forever.
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("s.csv' exists and was not written by this sweep") != std::string::npos);
+  std::ifstream in(d / "s.csv");
+  CHECK(std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()} == "the user's own table\n");
+  CHECK(!fs::exists(d / "s.h5"));
+  fs::remove_all(d);
+}
+
+TEST_CASE("sweep: under mpirun -n 2, SIGTERM to rank 1 stops the sweep with exit 143, interrupted and the missing points listed") {
+  REQUIRE_MESSAGE(lrchain::program_in_path("mpirun"), "this build has MPI: mpirun (openmpi-bin) must be installed");
+  const fs::path d = scratch("mpi-term");
+  // Points of tens of ms (401 sites, 100 T_b), 8 x 5 of them: the signal comes mid-way.
+  std::string longer = base_config;
+  longer.replace(longer.find("sites = 121"), 11, "sites = 401");
+  longer.replace(longer.find("periods = 10"), 12, "periods = 100");
+  write(d / "base.toml", longer);
+  write(d / "term.toml", "job = \"bright\"\nbase = \"base.toml\"\noutput = \"" + (d / "term.h5").string() +
+                             "\"\ncheckpoint_seconds = 0.05\n[[axis]]\nparameter = \"bright.theta\"\nfrom = 1.2\nto = 1.8\ncount = 8\n"
+                             "[[axis]]\nparameter = \"bright.n0\"\nvalues = [0, 0.25, 0.5, 0.75, 1]\n");
+  lrchain::ProcessOptions o;
+  o.capture_stdout = o.capture_stderr = true;
+  lrchain::ChildProcess mpirun({"mpirun", "-n", "2", "--oversubscribe", "--allow-run-as-root", LRCHAIN_CLI, "sweep", "--config",
+                                (d / "term.toml").string(), "--json", "--quiet", "--threads", "1"},
+                               o);
+  // Once rank 0 has written its first checkpoint, both ranks are running points.
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  int rank1 = 0;
+  while (std::chrono::steady_clock::now() < give_up && (!fs::exists(d / "term.h5") || !rank1)) {
+    rank1 = pid_of_rank((d / "term.toml").string(), 1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  REQUIRE(rank1 > 0);
+  REQUIRE(::kill(rank1, SIGTERM) == 0);
+  const auto r = mpirun.wait();
+  // Before: exit 0, "interrupted": false and the points rank 1 held silently absent.
+  CHECK(r.exit_code == 143);
+  const auto j = nlohmann::json::parse(r.output);
+  CHECK(j["interrupted"] == true);
+  const SweepConfig c = load_sweep_config(d / "term.toml");
+  const SweepResults res = read_results(c.output, c, make_job(c).scalar_names());
+  CHECK(j["missing"] == res.points - res.finished());
+  CHECK(j["missing"].get<std::size_t>() > 0);
+  std::vector<std::size_t> missing;
+  for (std::size_t p = 0; p < res.points; ++p)
+    if (res.status[p] == std::int8_t(PointStatus::missing)) missing.push_back(p);
+  CHECK(j["missing_points"].get<std::vector<std::size_t>>() == missing);
+  CHECK(r.error_output.find("interrupted by SIGTERM on another rank") != std::string::npos);
+  // Run again (as the message says), it completes the sweep.
+  const auto again = lrchain::test::run_command({"mpirun", "-n", "2", "--oversubscribe", "--allow-run-as-root", LRCHAIN_CLI,
+                                                 "sweep", "--config", (d / "term.toml").string(), "--json", "--quiet", "--threads", "1"});
+  REQUIRE_MESSAGE(again.exit_code == 0, again.err);
+  CHECK(nlohmann::json::parse(again.out)["finished"] == 40);
   fs::remove_all(d);
 }
 #endif

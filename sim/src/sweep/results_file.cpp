@@ -14,6 +14,7 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/provenance.hpp"
+#include "point_checksum.hpp"
 
 namespace lrchain::sim::sweep {
 
@@ -152,7 +153,8 @@ SweepResults::SweepResults(std::vector<std::string> names, std::size_t n, std::v
       reasons(n),
       row_names(std::move(row_columns)),
       rows_legend(std::move(legend)),
-      rows(row_names.empty() ? 0 : n) {}
+      rows(row_names.empty() ? 0 : n),
+      checksums_(n, Sha256Digest{}) {}
 
 SweepResults::SweepResults(const Job& job, std::size_t n)
     : SweepResults(job.scalar_names(), n, job.row_names(), job.rows_legend()) {}
@@ -163,6 +165,16 @@ void SweepResults::set(std::size_t point, const JobResult& r) {
   wall_seconds[point] = r.wall_seconds;
   reasons[point] = r.reason;
   if (!row_names.empty()) rows[point] = r.rows;
+  checksums_[point] = point_checksum(*this, point);
+}
+
+const std::vector<Sha256Digest>& SweepResults::checksums() const {
+  // About 1 microsecond per point, on all threads (each point's entry is its own).
+  const auto n = std::int64_t(points);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t p = 0; p < n; ++p)
+    if (checksums_[std::size_t(p)] == Sha256Digest{}) checksums_[std::size_t(p)] = point_checksum(*this, std::size_t(p));
+  return checksums_;
 }
 
 std::size_t SweepResults::finished() const {
@@ -244,6 +256,11 @@ void write_results(const std::filesystem::path& file, const SweepConfig& c, cons
     for (const auto& s : r.reasons) reasons.push_back(s.c_str());
     write_dataset(f, "reason", utf8_string_type(), dims, reasons.data());
     if (!r.row_names.empty()) write_rows(f, r);
+    write_dataset(f, "checksum", H5T_NATIVE_UINT8, {hsize_t(r.points), hsize_t(32)}, r.checksums().data());
+    {
+      const Handle d(H5Dopen2(f, "checksum", H5P_DEFAULT), H5Dclose, "open dataset checksum");
+      write_attribute(d, "legend", "per point, SHA-256 of its record: index, status, wall time, scalars, reason, rows");
+    }
     const Handle id(H5Gcreate2(f, "identity", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create group identity");
     for (const auto& [k, v] : sweep_identity(c, r.scalar_names, r.row_names)) write_attribute(id, k, v);
     check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flush '" + tmp.string() + "'");
@@ -252,6 +269,36 @@ void write_results(const std::filesystem::path& file, const SweepConfig& c, cons
 }
 
 namespace {
+
+// "point 5 (bright.theta = 1.4, bright.detuning = -0.0001)".
+std::string point_text(const SweepConfig& c, std::size_t point) {
+  std::string values;
+  for (const auto& [parameter, value] : c.overrides(point)) values += fmt::format("{}{} = {}", values.empty() ? "" : ", ", parameter, value);
+  return fmt::format("point {} ({})", point, values);
+}
+
+// Refuses results whose status codes are unknown or whose records do not match their checksums,
+// naming the first bad point.
+void verify_records(hid_t f, const std::string& name, const SweepConfig& c, const SweepResults& r) {
+  const auto refuse = [&](std::size_t p, const std::string& what) {
+    return InputError(fmt::format("'{}' is damaged: {} {}; remove the file or choose another output to start over", name,
+                                  point_text(c, p), what));
+  };
+  for (std::size_t p = 0; p < r.points; ++p)
+    if (r.status[p] < std::int8_t(PointStatus::missing) || r.status[p] > std::int8_t(PointStatus::invalid))
+      throw refuse(p, fmt::format("has status code {}, not one of {}", int(r.status[p]), status_legend()));
+  std::vector<Sha256Digest> stored(r.points);
+  if (!read_dataset(f, "checksum", H5T_NATIVE_UINT8, r.points * 32, stored.data()))
+    throw InputError("'" + name + "' has no checksums of its records (written by an older lrchain, or damaged); "
+                     "remove the file or choose another output to start over");
+  // Checked on all threads; the first point that differs is named.
+  const auto n = std::int64_t(r.points);
+  std::vector<std::uint8_t> differs(r.points, 0);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t p = 0; p < n; ++p) differs[std::size_t(p)] = point_checksum(r, std::size_t(p)) != stored[std::size_t(p)];
+  for (std::size_t p = 0; p < r.points; ++p)
+    if (differs[p]) throw refuse(p, "does not match its SHA-256 checksum");
+}
 
 // Fills the empty results `r` of the sweep from its file (read_results).
 SweepResults read_into(const std::filesystem::path& file, const SweepConfig& c, SweepResults r) {
@@ -285,18 +332,31 @@ SweepResults read_into(const std::filesystem::path& file, const SweepConfig& c, 
   }
   ok = ok && (r.row_names.empty() || read_rows(f, r));
   if (!ok) throw InputError("'" + name + "' is an incomplete sweep results file; remove it or choose another output");
+  verify_records(f, name, c, r);
   return r;
+}
+
+// read_into, with HDF5's failures on a truncated or damaged file as InputError naming it.
+SweepResults read_checked(const std::filesystem::path& file, const SweepConfig& c, SweepResults r) {
+  try {
+    return read_into(file, c, std::move(r));
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError("'" + file.string() + "' is truncated or damaged (" + e.what() +
+                     "); remove the file or choose another output to start over");
+  }
 }
 
 }  // namespace
 
 SweepResults read_results(const std::filesystem::path& file, const SweepConfig& c,
                           const std::vector<std::string>& scalar_names) {
-  return read_into(file, c, SweepResults(scalar_names, c.points()));
+  return read_checked(file, c, SweepResults(scalar_names, c.points()));
 }
 
 SweepResults read_results(const std::filesystem::path& file, const SweepConfig& c, const Job& job) {
-  return read_into(file, c, SweepResults(job, c.points()));
+  return read_checked(file, c, SweepResults(job, c.points()));
 }
 
 void write_results_csv(const std::filesystem::path& file, const SweepConfig& c, const SweepResults& r) {

@@ -11,8 +11,10 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/focusing_intervals.hpp"
 #include "lrchain/sim/experiment_config.hpp"
+#include "lrchain/sim/gnuplot_text.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "lrchain/sim/sweep/side_files.hpp"
 
 namespace lrchain::sim::sweep {
 
@@ -55,8 +57,17 @@ void draw_figures(const std::filesystem::path& dir, const std::vector<FigureScri
   if (!drawn.warning().empty()) fmt::print(stderr, "{}\n", drawn.warning());
 }
 
-std::filesystem::path directory_of(const std::filesystem::path& output) {
-  return output.has_parent_path() ? output.parent_path() : std::filesystem::path(".");
+// The second axis is drawn on a log scale: one sign throughout and at least a decade.
+bool second_axis_log(const Axis& y) {
+  const bool y_negative = std::all_of(y.values.begin(), y.values.end(), [](double v) { return v < 0; });
+  return std::all_of(y.values.begin(), y.values.end(), [&](double v) { return y_negative ? v < 0 : v > 0; }) &&
+         std::abs(y.values.back() / y.values.front()) >= 10;
+}
+
+// A bright sweep over theta and a log range of detunings also gets the fitted exponent's figure.
+bool draws_detuning_exponent(const SweepConfig& c) {
+  return c.job == "bright" && c.axes.size() == 2 && c.axes[0].parameter == "bright.theta" &&
+         c.axes[1].parameter == "bright.detuning" && second_axis_log(c.axes[1]);
 }
 
 std::size_t index_of(const std::vector<std::string>& names, const std::string& name) {
@@ -66,6 +77,19 @@ std::size_t index_of(const std::vector<std::string>& names, const std::string& n
 }
 
 }  // namespace
+
+std::vector<std::string> sweep_figure_files(const SweepConfig& c) {
+  if (c.figure.empty()) return {};
+  if (c.figure == "stability" && c.job == "dark continue") {
+    const std::string stem = c.output.stem().string() + "_stability";
+    return {stem + ".dat", stem + "_marks.dat", stem + ".gp", stem + ".png"};
+  }
+  const std::string stem = c.output.stem().string() + "_" + c.figure;
+  std::vector<std::string> files{stem + ".dat", stem + ".gp", stem + ".png"};
+  if (draws_detuning_exponent(c))
+    files.insert(files.end(), {stem + "_exponent.csv", stem + "_exponent.gp", stem + "_exponent.png"});
+  return files;
+}
 
 std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& job, const SweepResults& r,
                                              const std::string& scalar) {
@@ -77,11 +101,10 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
   const Axis &x = c.axes[0], &y = c.axes[1];
   // A negative axis (the detuning on a branch with h_tilde < 0) is drawn by its magnitude.
   const bool y_negative = std::all_of(y.values.begin(), y.values.end(), [](double v) { return v < 0; });
-  const bool y_log = std::all_of(y.values.begin(), y.values.end(), [&](double v) { return y_negative ? v < 0 : v > 0; }) &&
-                     std::abs(y.values.back() / y.values.front()) >= 10;
+  const bool y_log = second_axis_log(y);
   const double sign = y_negative ? -1.0 : 1.0;  // of the values drawn
   const std::string stem = c.output.stem().string() + "_" + scalar;
-  const std::filesystem::path dir = directory_of(c.output);
+  const std::filesystem::path dir = output_directory(c);
 
   std::ostringstream data;
   data << "# " << x.parameter << ' ' << (y_negative ? "-" : "") << y.parameter << " log10(" << scalar << ")\n";
@@ -96,28 +119,30 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
   write_file_atomic(dir, stem + ".dat", data.str());
   std::vector<std::string> files{stem + ".dat"};
 
+  // Every text that comes from the sweep file (its name, the output's name, the axes) goes into the
+  // script as a gnuplot string (gnuplot_text.hpp), never as script text.
+  const std::string x_name = gnuplot_text(x.parameter), y_name = gnuplot_text(y.parameter), value = gnuplot_text(scalar);
   std::ostringstream gp;
-  gp << "# log10(" << scalar << ") over (" << x.parameter << ", " << y.parameter << ") from " << c.output.filename().string()
-     << ". Re-run: gnuplot " << stem << ".gp\n"
-     << "if (!exists(\"outfile\")) outfile = '" << stem << ".png'\n"
+  gp << "# log10(" << value << ") over (" << x_name << ", " << y_name << ") from " << gnuplot_string(c.output.filename().string())
+     << ". Re-run: gnuplot " << gnuplot_file_name(stem + ".gp") << "\n"
+     << "if (!exists(\"outfile\")) outfile = " << gnuplot_file_name(stem + ".png") << "\n"
      << "set terminal pngcairo size 900,640 noenhanced\nset output outfile\n"
-     << "set xlabel '" << x.parameter << "'\nset ylabel '" << (y_negative ? "|" + y.parameter + "|" : y.parameter) << "'\n"
-     << "set cblabel 'log10(" << scalar << ")'\nset palette rgbformulae 33,13,10\nset view map\n"
+     << "set xlabel '" << x_name << "'\nset ylabel '" << (y_negative ? "|" + y_name + "|" : y_name) << "'\n"
+     << "set cblabel 'log10(" << value << ")'\nset palette rgbformulae 33,13,10\nset view map\n"
      << (y_log ? "set logscale y\nset format y '1e%L'\n" : "")
      << fmt::format("set yrange [{}:{}]\n", std::min(sign * y.values.front(), sign * y.values.back()),
                     std::max(sign * y.values.front(), sign * y.values.back()))
-     << "set title '" << c.name << ": log10(" << scalar
-     << "); dashed: focusing interval ends'\n";
+     << "set title '" << gnuplot_text(c.name) << ": log10(" << value << "); dashed: focusing interval ends'\n";
   const bool theta_axis = c.job == "bright" && x.parameter == "bright.theta";
   if (theta_axis)
     for (double b : focusing_boundaries(job))
       if (b >= std::min(x.values.front(), x.values.back()) && b <= std::max(x.values.front(), x.values.back()))
         gp << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dashtype 2 linewidth 2 front\n", b);
   gp << "set xrange [" << std::min(x.values.front(), x.values.back()) << ":" << std::max(x.values.front(), x.values.back())
-     << "]\nsplot '" << stem << ".dat' using 1:2:3 with pm3d notitle\n";
+     << "]\nsplot " << gnuplot_file_name(stem + ".dat") << " using 1:2:3 with pm3d notitle\n";
   std::vector<FigureScript> figures{{stem + ".gp", gp.str(), stem + ".png"}};
 
-  if (theta_axis && y.parameter == "bright.detuning" && y_log) {
+  if (draws_detuning_exponent(c)) {
     const auto p = fitted_exponents(x, y, r, s);
     std::ostringstream csv;
     csv << x.parameter << ",exponent\n";
@@ -125,11 +150,12 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
     write_file_atomic(dir, stem + "_exponent.csv", csv.str());
     files.push_back(stem + "_exponent.csv");
     std::ostringstream g2;
-    g2 << "# Exponent p of " << scalar << " ~ |detuning|^p fitted per theta. Re-run: gnuplot " << stem << "_exponent.gp\n"
-       << "if (!exists(\"outfile\")) outfile = '" << stem << "_exponent.png'\n"
+    g2 << "# Exponent p of " << value << " ~ |detuning|^p fitted per theta. Re-run: gnuplot "
+       << gnuplot_file_name(stem + "_exponent.gp") << "\n"
+       << "if (!exists(\"outfile\")) outfile = " << gnuplot_file_name(stem + "_exponent.png") << "\n"
        << "set terminal pngcairo size 800,500 noenhanced\nset output outfile\nset datafile separator ','\n"
-       << "set xlabel '" << x.parameter << "'\nset ylabel 'p in " << scalar << " ~ |detuning|^p'\nset grid\n"
-       << "plot '" << stem << "_exponent.csv' using 1:2 every ::1 with linespoints pointtype 7 notitle\n";
+       << "set xlabel '" << x_name << "'\nset ylabel 'p in " << value << " ~ |detuning|^p'\nset grid\n"
+       << "plot " << gnuplot_file_name(stem + "_exponent.csv") << " using 1:2 every ::1 with linespoints pointtype 7 notitle\n";
     figures.push_back({stem + "_exponent.gp", g2.str(), stem + "_exponent.png"});
   }
   draw_figures(dir, figures, files);
@@ -156,7 +182,7 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
                     stability = index_of(r.row_names, "stability"), part = index_of(r.row_names, "part");
   const std::size_t turning = index_of(r.scalar_names, "first_turning_point"), edge = index_of(r.scalar_names, "omega_edge");
   const std::string stem = c.output.stem().string() + "_stability";
-  const std::filesystem::path dir = directory_of(c.output);
+  const std::filesystem::path dir = output_directory(c);
   std::ostringstream points, marks;
   points << "# drawn " << x.parameter << ", omega_b, class (0 stable, 1 real-unstable, 2 oscillatory-unstable), part, "
          << x.parameter << "\n";
@@ -176,20 +202,21 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
   write_file_atomic(dir, stem + "_marks.dat", marks.str());
   std::vector<std::string> files{stem + ".dat", stem + "_marks.dat"};
   const auto [lo, hi] = std::minmax_element(x.values.begin(), x.values.end());
+  const std::string x_name = gnuplot_text(x.parameter);
   std::ostringstream gp;
-  gp << "# Dark-breather branches in the (" << x.parameter << ", omega_b) plane from " << c.output.filename().string()
-     << ". Re-run: gnuplot " << stem << ".gp\n"
-     << "if (!exists(\"outfile\")) outfile = '" << stem << ".png'\n"
+  gp << "# Dark-breather branches in the (" << x_name << ", omega_b) plane from " << gnuplot_string(c.output.filename().string())
+     << ". Re-run: gnuplot " << gnuplot_file_name(stem + ".gp") << "\n"
+     << "if (!exists(\"outfile\")) outfile = " << gnuplot_file_name(stem + ".png") << "\n"
      << "set terminal pngcairo size 1000,700 noenhanced\nset output outfile\n"
-     << "set xlabel '" << x.parameter << " (points left of each value: before the first turning point; right: after)'\n"
+     << "set xlabel '" << x_name << " (points left of each value: before the first turning point; right: after)'\n"
      << "set ylabel 'omega_b'\nset key outside right top\nset grid\n"
      << (x_log ? "set logscale x\n" : "")
      << fmt::format("set xrange [{}:{}]\n", shifted(*lo, -3), shifted(*hi, 3))
-     << "set title '" << c.name << ": dark-breather branches and their Floquet stability'\n"
-     << "plot '" << stem << ".dat' using 1:($3 == 0 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#009900' title 'stable', \\\n"
+     << "set title '" << gnuplot_text(c.name) << ": dark-breather branches and their Floquet stability'\n"
+     << "plot " << gnuplot_file_name(stem + ".dat") << " using 1:($3 == 0 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#009900' title 'stable', \\\n"
      << "     '' using 1:($3 == 1 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#dd0000' title 'real-unstable', \\\n"
      << "     '' using 1:($3 == 2 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#0000dd' title 'oscillatory-unstable', \\\n"
-     << "     '" << stem << "_marks.dat' using 1:2 with points pointtype 2 pointsize 2 lw 2 lc rgb 'black' title 'turning point', \\\n"
+     << "     " << gnuplot_file_name(stem + "_marks.dat") << " using 1:2 with points pointtype 2 pointsize 2 lw 2 lc rgb 'black' title 'turning point', \\\n"
      << "     '' using 1:3 with lines dashtype 2 lc rgb 'gray40' title 'band edge omega(pi)'\n";
   draw_figures(dir, {{stem + ".gp", gp.str(), stem + ".png"}}, files);
   return files;

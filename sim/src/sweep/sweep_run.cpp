@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/sim/sweep/side_files.hpp"
 
 namespace lrchain::sim::sweep {
 
@@ -56,7 +57,9 @@ ResultsKeeper::ResultsKeeper(const SweepConfig& c, const Job& job, const SweepRu
     : config_(c),
       results_(job, c.points()),
       last_write_(std::chrono::steady_clock::now()),
-      progress_(0, 0, false) {
+      progress_(0, 0, false),
+      csv_files_(csv_view_files(c, job)) {
+  check_side_files(c, job);
   std::error_code ec;
   if (std::filesystem::exists(c.output, ec)) {
     if (std::filesystem::is_directory(c.output, ec))
@@ -103,9 +106,11 @@ std::filesystem::path ResultsKeeper::rows_csv_path() const {
 void ResultsKeeper::write_final() {
   std::lock_guard<std::mutex> lock(mutex_);
   write_results(config_.output, config_, results_);
-  if (results_.points <= config_.csv_max_points) {
+  if (!csv_files_.empty()) {
+    mark_side_files_pending(config_, csv_files_);
     write_results_csv(csv_path(), config_, results_);
     if (!results_.row_names.empty()) write_rows_csv(rows_csv_path(), config_, results_);
+    record_side_files(config_, csv_files_);
   }
   progress_.finish(results_.finished());
 }
@@ -119,6 +124,12 @@ SweepOutcome outcome_of(const ResultsKeeper& keeper, std::size_t ran, bool inter
   o.resumed = keeper.resumed();
   o.interrupted = interrupted;
   o.seconds = seconds;
+  const auto& status = keeper.results().status;
+  for (std::size_t p = 0; p < status.size(); ++p) {
+    if (status[p] != std::int8_t(PointStatus::missing)) continue;
+    ++o.missing;
+    if (o.missing_points.size() < 1000) o.missing_points.push_back(p);
+  }
   return o;
 }
 
@@ -129,8 +140,10 @@ SweepOutcome run_sweep(const SweepConfig& c, const Job& job, const SweepRunOptio
   run_points(job, c, queue, o.threads, o.stop);
   keeper.write_final();
   const bool interrupted = keeper.results().finished() < keeper.results().points && o.stop && o.stop->load();
-  return outcome_of(keeper, queue.ran(), interrupted,
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  SweepOutcome out = outcome_of(keeper, queue.ran(), interrupted,
+                                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  if (interrupted && o.stop_signal) out.stop_signal = o.stop_signal();
+  return out;
 }
 
 }  // namespace lrchain::sim::sweep

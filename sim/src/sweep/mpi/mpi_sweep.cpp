@@ -12,7 +12,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <deque>
+#include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -39,10 +41,12 @@ T take(const std::vector<char>& b, std::size_t& at) {
   return v;
 }
 
-// A request: want-more flag, then (point, status, wall time, scalars, reason, rows) per finished point.
-std::vector<char> pack_request(bool want_more, const std::vector<std::pair<std::size_t, JobResult>>& done) {
+// A request: want-more flag, the signal that stopped the sender (0: none, -1: stopped, signal
+// unknown), then (point, status, wall time, scalars, reason, rows) per finished point.
+std::vector<char> pack_request(bool want_more, int stopped_by, const std::vector<std::pair<std::size_t, JobResult>>& done) {
   std::vector<char> b;
   put<std::uint8_t>(b, want_more ? 1 : 0);
+  put<std::int32_t>(b, stopped_by);
   put<std::uint64_t>(b, done.size());
   for (const auto& [point, r] : done) {
     put<std::uint64_t>(b, point);
@@ -86,21 +90,33 @@ class Coordinator final : public PointQueue {
     ++ran_;
     serve();
   }
-  // Serves until every other rank has sent its last results.
-  void drain() {
+  // Serves until every other rank has sent its last results. Once this rank is stopped by a signal
+  // (mpirun passes SIGTERM on and kills 1 s later; a rank that died sends nothing), it waits at
+  // most `grace` for them, so that the results so far are written in time; the ranks still silent
+  // then are counted as lost.
+  void drain(std::chrono::milliseconds grace = std::chrono::milliseconds(300)) {
+    std::optional<std::chrono::steady_clock::time_point> give_up;
     for (;;) {
       {
         std::lock_guard<std::mutex> lock(mutex_);
         serve();
         if (finals_ == ranks_ - 1) return;
+        if (stop_ && stop_->load() && !give_up) give_up = std::chrono::steady_clock::now() + grace;
+        if (give_up && std::chrono::steady_clock::now() >= *give_up) {
+          lost_ = ranks_ - 1 - finals_;
+          return;
+        }
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
   }
   std::size_t ran() const { return ran_; }
+  int lost_ranks() const { return lost_; }
+  // The signal another rank reported it was stopped by (0: none; -1: stopped, signal unknown).
+  int remote_stop() const { return remote_stop_; }
 
  private:
-  bool stopped() const { return stop_ && stop_->load(); }
+  bool stopped() const { return (stop_ && stop_->load()) || remote_stop_ != 0; }
 
   // Handles every pending request (called with mutex_ held).
   void serve() {
@@ -112,6 +128,8 @@ class Coordinator final : public PointQueue {
       const std::vector<char> b = receive_bytes(status.MPI_SOURCE, tag_request, status);
       std::size_t at = 0;
       const bool want_more = take<std::uint8_t>(b, at) != 0;
+      // A rank stopped by a signal stops the sweep: no more points are handed out, here or there.
+      if (const auto stopped_by = take<std::int32_t>(b, at); stopped_by != 0 && remote_stop_ == 0) remote_stop_ = stopped_by;
       const auto count = take<std::uint64_t>(b, at);
       for (std::uint64_t k = 0; k < count; ++k) {
         const auto point = std::size_t(take<std::uint64_t>(b, at));
@@ -147,13 +165,14 @@ class Coordinator final : public PointQueue {
   const std::atomic<bool>* stop_;
   std::mutex mutex_;
   std::size_t next_ = 0, ran_ = 0;
-  int finals_ = 0;
+  int finals_ = 0, lost_ = 0, remote_stop_ = 0;
 };
 
 // Ranks > 0: points come from rank 0 in chunks; the next chunk is asked for when the last point
 // of the current one is taken, so it arrives while that point runs.
 class Worker final : public PointQueue {
  public:
+  Worker(const std::atomic<bool>* stop, int (*stop_signal)()) : stop_(stop), stop_signal_(stop_signal) {}
   std::optional<std::size_t> next() override {
     std::lock_guard<std::mutex> lock(mutex_);
     if (local_.empty() && !no_more_) {
@@ -175,7 +194,7 @@ class Worker final : public PointQueue {
   void finish() {
     std::lock_guard<std::mutex> lock(mutex_);
     if (asked_) wait_for_chunk();
-    const auto b = pack_request(false, done_);
+    const auto b = pack_request(false, stopped_by(), done_);
     MPI_Send(b.data(), int(b.size()), MPI_BYTE, 0, tag_request, MPI_COMM_WORLD);
     done_.clear();
   }
@@ -183,7 +202,7 @@ class Worker final : public PointQueue {
 
  private:
   void ask() {
-    const auto b = pack_request(true, done_);
+    const auto b = pack_request(true, stopped_by(), done_);
     MPI_Send(b.data(), int(b.size()), MPI_BYTE, 0, tag_request, MPI_COMM_WORLD);
     done_.clear();
     asked_ = true;
@@ -200,6 +219,15 @@ class Worker final : public PointQueue {
     local_.insert(local_.end(), points.begin(), points.end());
   }
 
+  // What this rank tells rank 0 about its stop flag (pack_request).
+  int stopped_by() const {
+    if (!stop_ || !stop_->load()) return 0;
+    const int signal_number = stop_signal_ ? stop_signal_() : 0;
+    return signal_number != 0 ? signal_number : -1;
+  }
+
+  const std::atomic<bool>* stop_;
+  int (*stop_signal_)();
   std::mutex mutex_;
   std::deque<std::size_t> local_;
   std::vector<std::pair<std::size_t, JobResult>> done_;
@@ -228,7 +256,9 @@ MpiSession::MpiSession() {
   MPI_Comm_free(&node);
 }
 
-MpiSession::~MpiSession() { MPI_Finalize(); }
+MpiSession::~MpiSession() {
+  if (!abandoned_) MPI_Finalize();
+}
 
 SweepOutcome run_sweep_mpi(const MpiSession& mpi, const SweepConfig& c, const Job& job, const SweepRunOptions& o) {
   const auto start = std::chrono::steady_clock::now();
@@ -237,22 +267,45 @@ SweepOutcome run_sweep_mpi(const MpiSession& mpi, const SweepConfig& c, const Jo
   if (!mpi.threads_allowed()) threads = 1;
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   if (mpi.rank() == 0) {
-    ResultsKeeper keeper(c, job, o);
+    // The keeper refuses a results file or side file before any point runs (exit 2): every rank
+    // learns it here, so that none waits for points that never come and all finalize.
+    std::optional<ResultsKeeper> kept;
+    std::exception_ptr refusal;
+    try {
+      kept.emplace(c, job, o);
+    } catch (...) {
+      refusal = std::current_exception();
+    }
+    int go = refusal ? 0 : 1;
+    MPI_Bcast(&go, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (refusal) std::rethrow_exception(refusal);
+    ResultsKeeper& keeper = *kept;
     Coordinator queue(keeper, mpi.size(), o.stop);
     run_points(job, c, queue, threads, o.stop);
     queue.drain();
     keeper.write_final();
-    const bool interrupted = keeper.results().finished() < keeper.results().points && o.stop && o.stop->load();
-    MPI_Barrier(MPI_COMM_WORLD);
-    return outcome_of(keeper, queue.ran(), interrupted, seconds());
+    // Every point handed out comes back unless a rank was stopped or lost: then points are missing
+    // and the sweep says so, whichever rank it was.
+    const bool interrupted = keeper.results().finished() < keeper.results().points;
+    // A lost rank would never reach the barrier.
+    if (queue.lost_ranks() == 0) MPI_Barrier(MPI_COMM_WORLD);
+    SweepOutcome out = outcome_of(keeper, queue.ran(), interrupted, seconds());
+    out.lost_ranks = queue.lost_ranks();
+    const int here = o.stop && o.stop->load() && o.stop_signal ? o.stop_signal() : 0;
+    out.stop_signal = here != 0 ? here : std::max(queue.remote_stop(), 0);
+    return out;
   }
-  Worker queue;
+  int go = 0;
+  MPI_Bcast(&go, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (!go) return SweepOutcome{};  // rank 0 refused the sweep and says why
+  Worker queue(o.stop, o.stop_signal);
   run_points(job, c, queue, threads, o.stop);
   queue.finish();
   MPI_Barrier(MPI_COMM_WORLD);
   SweepOutcome out;
   out.ran = queue.ran();
   out.interrupted = o.stop && o.stop->load();
+  if (out.interrupted && o.stop_signal) out.stop_signal = o.stop_signal();
   out.seconds = seconds();
   return out;
 }

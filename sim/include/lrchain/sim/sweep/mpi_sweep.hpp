@@ -24,10 +24,13 @@ class MpiSession {
   int size() const noexcept { return size_; }
   int ranks_on_this_node() const noexcept { return local_size_; }
   bool threads_allowed() const noexcept { return threads_allowed_; }  // MPI_THREAD_SERIALIZED provided
+  // After a rank was lost: MPI_Finalize would wait for it forever, so the destructor skips it (the
+  // launcher ends the job).
+  void abandon() noexcept { abandoned_ = true; }
 
  private:
   int rank_ = 0, size_ = 1, local_size_ = 1;
-  bool threads_allowed_ = false;
+  bool threads_allowed_ = false, abandoned_ = false;
 };
 
 // Runs the sweep on every rank of the session; rank 0 writes the results. The outcome is rank 0's

@@ -8,6 +8,8 @@
 //   /rows/point, /rows/<column>  jobs with rows (Job::row_names()): the rows of all points, in
 //                          point order, the point each belongs to, the columns' meaning in the
 //                          group's attribute `legend`
+//   /checksum              per point, the SHA-256 (32 bytes) of its record: index, status, wall
+//                          time, scalars, reason, rows; verified when a sweep resumes
 //   /identity (attributes) what a resumed sweep must match: job, base config, layout, axes
 //   root attributes        provenance (lrchain version, git commit, compiler, build type, date;
 //                          lrchain/provenance.hpp), the sweep and base configs
@@ -19,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "lrchain/sha256.hpp"
 #include "lrchain/sim/sweep/job.hpp"
 #include "lrchain/sim/sweep/sweep_config.hpp"
 
@@ -42,6 +45,12 @@ struct SweepResults {
   void set(std::size_t point, const JobResult& r);
   std::size_t finished() const;  // points whose status is not `missing`
   std::size_t failed() const;    // finished but not ok
+  // The SHA-256 of every point's record (/checksum), computed when first needed and again when a
+  // point is set.
+  const std::vector<Sha256Digest>& checksums() const;
+
+ private:
+  mutable std::vector<Sha256Digest> checksums_;  // all-zero: not computed yet
 };
 
 // (name, value) pairs of the library's provenance (lrchain/provenance.hpp): lrchain version, git
@@ -54,7 +63,9 @@ std::vector<std::pair<std::string, std::string>> sweep_identity(const SweepConfi
 // Writes the whole results file (temporary name + rename). std::runtime_error if it cannot.
 void write_results(const std::filesystem::path& file, const SweepConfig& c, const SweepResults& r);
 // Reads the results of an earlier run of the same sweep; InputError naming what changed when the
-// file belongs to another sweep, or is not a sweep results file.
+// file belongs to another sweep, or is not a sweep results file; InputError naming the file and
+// the first bad point when a record does not match its checksum or has an unknown status code, or
+// when the file is truncated or damaged.
 SweepResults read_results(const std::filesystem::path& file, const SweepConfig& c,
                           const std::vector<std::string>& scalar_names);
 SweepResults read_results(const std::filesystem::path& file, const SweepConfig& c, const Job& job);

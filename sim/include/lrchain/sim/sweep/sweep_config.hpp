@@ -44,8 +44,13 @@ std::string sweep_config_markdown();
 
 // Reads and checks a sweep file and its base config: ConfigError (exit 2) naming the file, line and
 // key for an unknown key, an unknown job or axis parameter, an empty range, list axes of different
-// lengths, a base config of another job.
-SweepConfig load_sweep_config(const std::filesystem::path& file);
+// lengths, a base config of another job, a control character in a name, and a sweep whose results
+// need more than the available memory with `ranks_on_node` ranks on rank 0's node (checked from the
+// axes' counts before their values are generated; sweep_memory.hpp).
+SweepConfig load_sweep_config(const std::filesystem::path& file, int ranks_on_node = 1);
+// Why `output` cannot be a sweep's results file name (a control character, no file name, with a
+// figure a quote or backslash in its name), or "" when it can.
+std::string output_problem(const std::filesystem::path& output, bool figure);
 // The job of a loaded sweep (its base config, checked).
 Job make_job(const SweepConfig& c);
 

@@ -13,6 +13,10 @@
 
 namespace lrchain::sim::sweep {
 
+// The names of every file the sweep's figure writes into the output's directory (none without a
+// figure).
+std::vector<std::string> sweep_figure_files(const SweepConfig& c);
+
 // Writes the data, scripts and PNGs (when gnuplot is installed) into the output's directory;
 // returns the files written. InputError if the sweep is not a two-axis grid or `scalar` is unknown.
 std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& job, const SweepResults& r,

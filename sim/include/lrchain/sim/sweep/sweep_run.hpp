@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "lrchain/sim/sweep/job.hpp"
@@ -23,6 +24,7 @@ struct SweepRunOptions {
   int threads = 0;                           // per process; 0: OpenMP's default
   bool retry_failed = false;                 // rerun points a resumed file records as failed
   const std::atomic<bool>* stop = nullptr;   // set (SIGINT/SIGTERM): finish no more points, write, return
+  int (*stop_signal)() = nullptr;            // the signal that set `stop` (0 or absent: unknown)
   bool progress = true;                      // progress on stderr
 };
 
@@ -43,7 +45,8 @@ void run_points(const Job& job, const SweepConfig& c, PointQueue& queue, int thr
 class ResultsKeeper {
  public:
   // Resumes from c.output when it exists (InputError naming what changed if it belongs to another
-  // sweep); creates the output's directory.
+  // sweep, or the first damaged point); refuses a side file of the user's (side_files.hpp); creates
+  // the output's directory.
   ResultsKeeper(const SweepConfig& c, const Job& job, const SweepRunOptions& o);
   const std::vector<std::size_t>& todo() const noexcept { return todo_; }  // in point order
   std::size_t resumed() const noexcept { return resumed_; }                // finished before this run
@@ -63,11 +66,16 @@ class ResultsKeeper {
   std::mutex mutex_;
   std::chrono::steady_clock::time_point last_write_;
   SweepProgress progress_;
+  std::vector<std::string> csv_files_;  // the CSV views written next to the results (side_files.hpp)
 };
 
 struct SweepOutcome {
   std::size_t points = 0, finished = 0, failed = 0, ran = 0, resumed = 0;
-  bool interrupted = false;
+  bool interrupted = false;  // points are missing: a signal, here or on another rank, or a lost rank
+  int stop_signal = 0;       // the signal that stopped this or another rank (0: none or unknown)
+  int lost_ranks = 0;        // MPI ranks that never sent their last results
+  std::size_t missing = 0;   // points not run
+  std::vector<std::size_t> missing_points;  // the first 1000 of them, in order
   double seconds = 0;
 };
 // Summary of a keeper after its run.
