@@ -9,8 +9,10 @@
 #include "lrchain/config/unicode_guard.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/model.hpp"
+#include "lrchain/sha256.hpp"
 #include "model_expression.hpp"
 #include "model_parameters.hpp"
+#include "model_strings.hpp"
 #include "strict_keys.hpp"
 
 namespace lrchain::derivation {
@@ -57,10 +59,12 @@ class Loader {
     try {
       root_ = toml::parse(text, file);
     } catch (const toml::parse_error& e) {
-      throw InputError(file + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
+      throw InputError(file + ":" + std::to_string(e.source().begin.line) + ": " + printable(e.description()));
     }
+    refuse_unsafe_strings(root_, file);
     out_.path = file;
     out_.hash = fnv1a_64(text);
+    out_.sha256 = sha256_hex(text);
   }
 
   ModelFile run() {
@@ -280,22 +284,21 @@ class Loader {
 }  // namespace
 
 // Any other failure of GiNaC on the file's expressions is the file's fault too: exit 2 naming it.
+// Messages (and ModelFile::path, which only names the file) show `path` with its bytes outside printable ASCII as \xNN when it has a
+// control character or invalid UTF-8 (one line on stderr whatever the path).
 ModelFile parse_model_text(const std::string& text, const std::string& path) {
+  const std::string shown = unsafe_string_reason(path).empty() ? path : printable(path);
   try {
-    return Loader(text, path).run();
+    return Loader(text, shown).run();
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {
-    throw InputError(path + ": the model's expressions cannot be evaluated: " + e.what());
+    throw InputError(shown + ": the model's expressions cannot be evaluated: " + e.what());
   }
 }
 
 ModelFile load_model_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot read the model file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_model_text(ss.str(), path.string());
+  return parse_model_text(read_model_file_bytes(path.string()), path.string());
 }
 
 }  // namespace lrchain::derivation

@@ -47,7 +47,8 @@ struct NamedIntermediate {
 
 struct ModelFile {
   std::string path, name, description;
-  std::uint64_t hash = 0;  // FNV-1a 64 of the file's bytes
+  std::uint64_t hash = 0;  // FNV-1a 64 of the file's bytes (displayed)
+  std::string sha256;      // SHA-256 (hex) of the file's bytes (its identity)
   std::vector<ModelParameter> parameters;
   std::vector<ModelFunction> functions;
   std::vector<NamedIntermediate> intermediates;
