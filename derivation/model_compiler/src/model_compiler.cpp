@@ -84,6 +84,23 @@ CacheEntry cache_entry(const std::string& bytes, const std::string& kind, const 
           prefix + model_cache_key(bytes, compiler + "\n" + compiler_version(compiler), LRCHAIN_VERSION, kind)};
 }
 
+// `make()` (emitting code with GiNaC) with a failure of the symbolic engine reported as the file's
+// input error, naming its first force.
+template <class Make>
+std::string emitted(const derivation::ModelFile& file, const std::string& what, Make make) {
+  try {
+    return make();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    const std::string message = e.what();
+    throw InputError((file.first_force_where.empty() ? file.path : file.first_force_where) + ": the " + what +
+                     " of model " + file.name + " cannot be generated (" + message.substr(0, message.find('\n')) + ")");
+  }
+}
+
 // The object's recorded model-file SHA-256 is the file's (else std::runtime_error).
 void check_file_sha256(void* handle, const std::string& file_sha256, const fs::path& library) {
   const auto* recorded = static_cast<const char*>(dlsym(handle, kFileShaSymbol));
@@ -189,7 +206,8 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, 
     }
     return d;
   }
-  compile_into_entry(shared_object_source(*m, symbols), compiler, {"-O2"}, entry, "the evaluators of " + shown);
+  const std::string source = emitted(m->file, "evaluators", [&] { return shared_object_source(*m, symbols); });
+  compile_into_entry(source, compiler, {"-O2"}, entry, "the evaluators of " + shown);
   void* handle = open_verified_object(entry, &library);
   if (info) info->from_cache = false, info->library = library;
   if (!handle) throw std::runtime_error("cannot load " + library.string() + " just compiled: " + dlerror_text());
@@ -225,7 +243,8 @@ std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const fs::p
   }
   check_lattice_compiler(path);
   // -O3 as the shipped kernels (Release build); the kernels' own attributes pick the vector width.
-  compile_into_entry(derivation::lattice_source(file) + file_sha256_definition(file_sha256), model_compiler_path(),
+  const std::string source = emitted(file, "lattice code", [&] { return derivation::lattice_source(file); });
+  compile_into_entry(source + file_sha256_definition(file_sha256), model_compiler_path(),
                      {"-O3", "-DNDEBUG"}, entry, "the lattice code of " + file.path);
   void* handle = open_verified_object(entry, &library);
   if (info) info->from_cache = false, info->library = library;

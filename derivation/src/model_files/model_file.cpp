@@ -184,6 +184,7 @@ class Loader {
         throw InputError(where + ": function " + f.name + " has no Taylor expansion about its equilibrium " +
                          f.argument + " = " + to_text(r0) + " (" + e.what() + ")");
       }
+      out_.divisors.push_back({where, f.name + "'(" + to_text(r0) + ") of function " + f.name, c[1]});
       if (!f.taylor_names.empty()) name_intermediates(f, r0, c, where);
       const ex x = call.argument - r0;
       replacement[call.placeholder] = c[0] + c[1] * x + c[2] * pow(x, 2) + c[3] * pow(x, 3);
@@ -258,8 +259,10 @@ class Loader {
       mass_context.where = (t.contains("mass") ? at(file_, *t.get("mass")) : at(file_, t)) + ": mass of field " + field;
       const ex mass = parse_model_expression(out_.mass_text.back(), mass_context, calls);
       if (mass.is_zero()) throw InputError(mass_context.where + ": the mass must not be zero");
+      out_.divisors.push_back({mass_context.where, "the mass", mass});
       out_.force_text.push_back(text_of(t, "force", file_, "field " + field));
       const std::string where = at(file_, *t.get("force")) + ": force of field " + field;
+      if (out_.first_force_where.empty()) out_.first_force_where = where;
       context.where = where;
       calls.clear();
       const ex force = expand_calls(parse_model_expression(out_.force_text.back(), context, calls), calls, where);
