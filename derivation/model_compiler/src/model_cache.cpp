@@ -197,9 +197,9 @@ void* open_verified_object(const CacheEntry& entry, fs::path* library) {
   const Descriptor object = verified_object(directory.get(), entry, &name);
   if (!object) return nullptr;
   if (library) *library = entry.directory / name;
-  // Loaded through the descriptor that was hashed: the same file, whatever is renamed meanwhile.
-  const std::string via = "/proc/self/fd/" + std::to_string(object.get());
-  return ::dlopen(fs::exists(via) ? via.c_str() : (entry.directory / name).c_str(), RTLD_NOW | RTLD_LOCAL);
+  // By its path (a /proc/self/fd/N name would be taken by dlopen for an earlier object that had the
+  // same descriptor number): only this user can change the directory between the check and the load.
+  return ::dlopen((entry.directory / name).c_str(), RTLD_NOW | RTLD_LOCAL);
 }
 
 bool has_verified_object(const CacheEntry& entry) {
