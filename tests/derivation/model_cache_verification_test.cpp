@@ -19,29 +19,15 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/model_compiler.hpp"
+#include "scratch_cache.hpp"
 
 namespace fs = std::filesystem;
 using namespace lrchain;
 
 namespace {
 
-struct Scratch {
-  fs::path dir;
-  std::string old_cache;
-  Scratch() {
-    dir = fs::temp_directory_path() / ("lrchain-cache-test-" + std::to_string(::getpid()) + "-" + std::to_string(std::rand()));
-    fs::create_directories(dir);
-    if (const char* c = std::getenv("XDG_CACHE_HOME")) old_cache = c;
-    ::setenv("XDG_CACHE_HOME", (dir / "cache").c_str(), 1);
-  }
-  ~Scratch() {
-    if (old_cache.empty()) ::unsetenv("XDG_CACHE_HOME");
-    else ::setenv("XDG_CACHE_HOME", old_cache.c_str(), 1);
-    std::error_code ec;
-    fs::permissions(dir / "cache", fs::perms::owner_all, ec);
-    fs::remove_all(dir, ec);
-  }
-  fs::path cache() const { return dir / "cache" / "lrchain"; }
+struct Scratch : test::ScratchCache {
+  Scratch() : ScratchCache("lrchain-cache-test") {}
 };
 
 // models/<shipped>.toml under the name `name` at `path`.

@@ -18,6 +18,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/model_compiler.hpp"
+#include "scratch_cache.hpp"
 
 namespace fs = std::filesystem;
 using namespace lrchain;
@@ -69,24 +70,21 @@ const std::vector<Field> kFields{{"name", 1, &Strings::name},
 // Control characters as TOML escapes: newline, carriage return, NUL, tab, escape, DEL, other C0.
 const std::vector<std::string> kControls{"\\n", "\\r", "\\u0000", "\\t", "\\u001b", "\\u007f", "\\u0001", "\\r\\n"};
 
-struct Scratch {
-  fs::path dir;
-  std::string old_cache;
-  Scratch() {
-    dir = fs::temp_directory_path() / ("lrchain-hostile-" + std::to_string(::getpid()) + "-" + std::to_string(std::rand()));
-    fs::create_directories(dir);
-    if (const char* c = std::getenv("XDG_CACHE_HOME")) old_cache = c;
-    ::setenv("XDG_CACHE_HOME", (dir / "cache").c_str(), 1);
-  }
-  ~Scratch() {
-    if (old_cache.empty()) ::unsetenv("XDG_CACHE_HOME");
-    else ::setenv("XDG_CACHE_HOME", old_cache.c_str(), 1);
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
+struct Scratch : test::ScratchCache {
+  Scratch() : ScratchCache("lrchain-hostile") {}
 };
 
 void write(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+// The message of the InputError that parse_model_text throws for `text` ("" when it accepts it).
+std::string refusal(const std::string& text) {
+  try {
+    derivation::parse_model_text(text, "hostile.toml");
+    return "";
+  } catch (const InputError& e) {
+    return e.what();
+  }
+}
 
 bool one_printable_line(const std::string& message) {
   for (const char c : message)
@@ -105,17 +103,12 @@ TEST_CASE("model files: a control character in any string or key is refused nami
       s.*field.member = s.*field.member + control + "x";
       CAPTURE(field.key);
       CAPTURE(control);
-      try {
-        derivation::parse_model_text(model_text(s), "hostile.toml");
-        FAIL("accepted");
-      } catch (const InputError& e) {
-        const std::string message = e.what();
-        CAPTURE(message);
-        CHECK(message.find("hostile.toml:" + std::to_string(field.line) + ":") == 0);
-        CHECK(message.find("key " + field.key) != std::string::npos);
-        CHECK(message.find("control character") != std::string::npos);
-        CHECK(one_printable_line(message));
-      }
+      const std::string message = refusal(model_text(s));
+      CAPTURE(message);
+      CHECK(message.find("hostile.toml:" + std::to_string(field.line) + ":") == 0);
+      CHECK(message.find("key " + field.key) != std::string::npos);
+      CHECK(message.find("control character") != std::string::npos);
+      CHECK(one_printable_line(message));
       ++cases;
     }
   }
@@ -131,15 +124,10 @@ TEST_CASE("model files: bytes that are not UTF-8 are refused with a one-line mes
     Strings s;
     s.description = "caf" + bad + "e";
     CAPTURE(s.description);
-    try {
-      derivation::parse_model_text(model_text(s), "hostile.toml");
-      FAIL("accepted");
-    } catch (const InputError& e) {
-      const std::string message = e.what();
-      CAPTURE(message);
-      CHECK(message.find("hostile.toml:2") == 0);
-      CHECK(one_printable_line(message));
-    }
+    const std::string message = refusal(model_text(s));
+    CAPTURE(message);
+    CHECK(message.find("hostile.toml:2") == 0);
+    CHECK(one_printable_line(message));
   }
   Strings fine;
   fine.description = "caf\\u00e9 \xc3\xa9";  // an escape and raw UTF-8: allowed
@@ -168,7 +156,7 @@ TEST_CASE("model files: a description written as C++ runs nothing, adds no param
   CHECK(!fs::exists(scratch.dir / "cache" / "lrchain"));  // nothing compiled
 }
 
-TEST_CASE("model files: a path written as C++ is never emitted; awkward legal strings round-trip" * doctest::timeout(600)) {
+TEST_CASE("model files: a path written as C++ is never emitted, and awkward legal strings round-trip" * doctest::timeout(600)) {
   if (!model_compiler_available()) return;
   Scratch scratch;
   // The marker is relative (a file name cannot hold '/'): the working directory is the scratch one.
