@@ -92,11 +92,13 @@ TEST_CASE("model derivation: a failure of the symbolic engine names file:line in
                          doctest::Contains("bounded.toml:12: force of field u: F'(0) of function F is zero at these parameter values"),
                          InputError);
   }
-  // A division by zero at the default a = 1/4.
+  // A division by zero at the default a = 1/4, in F's expression (line 8).
   {
     derivation::ModelFile file = derivation::parse_model_text(model_with_law("r + a/(a - 1/4)*r^2"), "bounded.toml");
     const auto values = derivation::parameter_values(file, {});
     CHECK_THROWS_WITH_AS(derivation::derive_model(std::move(file), values, symbols),
-                         doctest::Contains("bounded.toml:12: force of field u: "), InputError);
+                         doctest::Contains("bounded.toml:8: function F: the expression of function F cannot be evaluated at "
+                                           "these parameter values (power::eval(): division by zero)"),
+                         InputError);
   }
 }

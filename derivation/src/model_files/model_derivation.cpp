@@ -26,7 +26,7 @@ std::string blame(const ModelFile& file, const exmap& values, const std::string&
   for (const auto& d : file.divisors) {
     try {
       const ex v = evalf(d.value.subs(values, subs_options::no_pattern));
-      if (v.is_zero())
+      if (d.divisor && v.is_zero())
         return d.where + ": " + d.what + " is zero at these parameter values, so model " + file.name +
                " has no linear waves to expand about (" + first_line(what) + ")";
     } catch (const std::exception& e) {

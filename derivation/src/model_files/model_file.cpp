@@ -148,6 +148,7 @@ class Loader {
       f.expression_text = text_of(t, "expression", file_, "function " + f.name);
       context.where = at(file_, *t.get("expression")) + ": function " + f.name;
       f.expression = parse_model_expression(f.expression_text, context, calls);
+      out_.divisors.push_back({context.where, "the expression of function " + f.name, f.expression, false});
       if (t.contains("contact")) {
         f.contact_text = text_of(t, "contact", file_, "function " + f.name);
         context.where = at(file_, *t.get("contact")) + ": contact of function " + f.name;

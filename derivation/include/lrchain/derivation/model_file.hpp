@@ -45,13 +45,14 @@ struct NamedIntermediate {
   GiNaC::ex value;  // in the parameters
 };
 
-// An expression of the file that the derivation divides by (a field's mass, the linear stiffness
-// F'(r0) of a named law at its equilibrium), with where it is written: blamed when the derivation
-// fails at the parameter values.
+// An expression of the file that the derivation evaluates at the parameter values (a function's
+// expression) or divides by (a field's mass, the linear stiffness F'(r0) of a named law at its
+// equilibrium), with where it is written: blamed when the derivation fails at the parameter values.
 struct DivisorTerm {
-  std::string where;  // "file:line: force of field u" / "file:line: mass of field u"
-  std::string what;   // "F'(r0) of function F" / "the mass"
-  GiNaC::ex value;    // in the parameters
+  std::string where;     // "file:line: force of field u" / "file:line: mass of field u"
+  std::string what;      // "F'(r0) of function F" / "the mass"
+  GiNaC::ex value;       // in the parameters (and a function's argument)
+  bool divisor = true;   // false: only its value must exist (a function's expression)
 };
 
 struct ModelFile {
