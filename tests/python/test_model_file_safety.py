@@ -69,3 +69,28 @@ def test_ginac_fallback_warns_as_the_cli_does(tmp_path, monkeypatch):
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # compiled: no warning
         lrchain.load_model(path)
+
+
+def test_a_path_written_as_cpp_runs_nothing(tmp_path, monkeypatch, source_dir):
+    # A directory and file name that end a // comment and run a command in a static initialiser (the
+    # old emitted code printed the path into a comment): loading the model, its coefficients and a
+    # ring run (the lattice code compiled too) create no marker; the numbers are fput's.
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    monkeypatch.chdir(tmp_path)  # the marker's relative path
+
+    def payload(k):
+        return (f'\n#include <cstdlib>\nstatic int lrchain_marker_{k} = std::system("touch marker");\n'
+                f'#define LRCHAIN_REST_{k} ')
+
+    directory = tmp_path / ("d" + payload(1))
+    directory.mkdir()
+    path = directory / ("m" + payload(2) + ".toml")
+    text = (source_dir / "models" / "fput.toml").read_text().replace('name = "fput"', 'name = "fput_path"')
+    path.write_text(text)
+    model = lrchain.load_model(path)
+    shipped = lrchain.load_model("fput")
+    mine, reference = (lrchain.coefficients(m, "acoustic", 1.0) for m in (model, shipped))
+    assert mine.gamma == pytest.approx(reference.gamma, rel=1e-12)
+    ring = lrchain.simulate.ring(model, "acoustic", 1.5707963267948966, periods=10, packet_width=12)
+    assert ring is not None
+    assert not (tmp_path / "marker").exists()
