@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "help_text.hpp"
 #include "lrchain/derivation/model_derivation.hpp"
+#include "lrchain/derivation/symbolic_lock.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "shipped_data.hpp"
@@ -106,6 +107,7 @@ void register_derive(CLI::App& app) {
   add_examples(*cmd, {"lrchain derive --model klein_gordon",
                       "lrchain derive --model fput --set a=1/4 --set b=1/2 --json"});
   cmd->callback([opts] {
+    const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());  // GiNaC: one thread at a time
     const derivation::Symbols symbols;
     derivation::ModelFile file = derivation::load_model_file(opts->model);
     const GiNaC::exmap values = derivation::parameter_values(file, overrides(opts->set));

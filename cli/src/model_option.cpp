@@ -1,9 +1,7 @@
 #include "model_option.hpp"
 
 #include <chrono>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "lrchain/errors.hpp"
 #include "lrchain/numeric_parse.hpp"
@@ -49,22 +47,19 @@ Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, 
   if (selection.file.empty()) {
     definition = shipped(find_shipped_model("resonant_chain"));
   } else {
-    std::ifstream in(selection.file, std::ios::binary);
-    if (!in) throw InputError("--model " + selection.file + ": cannot read the model file");
-    std::stringstream bytes;
-    bytes << in.rdbuf();
-    const std::uint64_t hash = fnv1a_64(bytes.str());
-    for (const auto& m : shipped_models())
-      if (m.file_hash == hash) definition = shipped(&m);
+    std::string bytes;
+    try {
+      bytes = read_model_file_bytes(selection.file);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--model ") + e.what());
+    }
+    if (const ModelDefinition* m = find_shipped_model_by_bytes(bytes)) definition = shipped(m);
 #ifdef LRCHAIN_WITH_MODEL_COMPILER
     if (!definition) {
       if (lattice_run) check_lattice_compiler(selection.file);
       CompiledModelInfo info;
       definition = compile_model_file(selection.file, &info);
-      if (!info.fallback_reason.empty())
-        std::cerr << "lrchain: warning: model " << definition->name << " is evaluated through GiNaC in double "
-                  << "precision, far slower than compiled code, because " << info.fallback_reason
-                  << "; install it (Debian: apt install g++) to compile the model once into the cache\n";
+      if (!info.fallback_reason.empty()) std::cerr << "lrchain: warning: " << model_fallback_warning(definition->name, info) << "\n";
     }
 #else
     if (!definition)

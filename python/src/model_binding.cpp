@@ -4,9 +4,7 @@
 // `lrchain coeffs --model FILE` does), cached per user.
 #include <filesystem>
 #include <fmt/format.h>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
@@ -14,6 +12,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/model_json.hpp"
+#include "lrchain/sha256.hpp"
 #include "loaded_model.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 #include "model_capsule.hpp"
@@ -46,14 +45,14 @@ std::shared_ptr<const ModelDefinition> find_shipped_definition(const std::string
     throw InputError("load_model: no shipped model '" + source + "' (shipped: " + shipped_names() +
                      ") and no such file");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in || fs::is_directory(path)) throw InputError("load_model: " + source + ": cannot read the model file");
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  const std::uint64_t hash = fnv1a_64(bytes.str());
-  for (const auto& m : shipped_models())
-    if (m.file_hash == hash) return shipped(&m);
-  return nullptr;
+  std::string bytes;
+  try {
+    bytes = read_model_file_bytes(source);
+  } catch (const InputError& e) {
+    throw InputError(std::string("load_model: ") + e.what());
+  }
+  const ModelDefinition* d = find_shipped_model_by_bytes(bytes);
+  return d ? shipped(d) : nullptr;
 }
 
 // A user's model file derived and compiled at run time by lrchain._model_compiler (with the GIL;
@@ -97,10 +96,12 @@ LoadedModel load_model(const py::object& source_path, const py::kwargs& paramete
 // The lattice code of a user's model file, compiled at run time by lrchain._model_compiler.
 std::shared_ptr<const lrchain_lattice_kernels> compile_user_lattice(const LoadedModel& m) {
 #ifdef LRCHAIN_WITH_MODEL_COMPILER
-  std::ifstream in(m.source, std::ios::binary);
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  if (!in || fnv1a_64(bytes.str()) != m.definition->file_hash)
+  std::string bytes;
+  try {
+    bytes = read_model_file_bytes(m.source);
+  } catch (const InputError&) {
+  }
+  if (bytes.empty() || sha256_hex(bytes) != m.definition->file_sha256)
     throw InputError("model " + m.model.name() + ": the file " + m.source +
                      " changed (or went) since it was loaded; load it again with lrchain.load_model");
   const py::tuple compiled = py::module_::import("lrchain._model_compiler").attr("compile_lattice")(m.source);
@@ -116,7 +117,7 @@ std::shared_ptr<const lrchain_lattice_kernels> compile_user_lattice(const Loaded
 
 bool is_resonant_chain(const ModelDefinition& d) {
   const ModelDefinition* shipped = find_shipped_model("resonant_chain");
-  return shipped && d.file_hash == shipped->file_hash;
+  return shipped && d.file_sha256 == shipped->file_sha256;
 }
 
 Params resonant_chain_params(const Model& m) {

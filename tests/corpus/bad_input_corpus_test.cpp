@@ -97,6 +97,7 @@ TEST_CASE("bad-input corpus: every bad option value, config key and file exits 2
   add_config_cases(std::filesystem::path(LRCHAIN_SOURCE_DIR) / "examples", commands, corpus);
   add_file_cases(commands, corpus);
   add_sweep_config_cases(std::filesystem::path(LRCHAIN_SOURCE_DIR) / "tests" / "corpus", corpus);
+  add_model_file_cases(corpus);
   for (const auto& e : corpus.errors) std::cout << "corpus generation: " << e << "\n";
   CHECK(corpus.errors.empty());
 

@@ -43,5 +43,9 @@ void add_file_cases(const std::vector<HelpCommand>& commands, Corpus& corpus);
 // -1, 0, 1e308 and the empty string, and misspelt; the base config they name missing, empty,
 // binary, malformed or a directory.
 void add_sweep_config_cases(const std::filesystem::path& corpus_dir, Corpus& corpus);
+// Hostile model files (model_file_cases.cpp): control characters and invalid UTF-8 in every string,
+// a device, a directory or an oversized file, unbounded expressions and a zero stiffness, through
+// coeffs, derive, simulate ring and dark solve --model.
+void add_model_file_cases(Corpus& corpus);
 
 }  // namespace lrchain::corpus

@@ -1,5 +1,7 @@
-// The user-model cache key (model_compiler.hpp): it changes with the file's bytes, the compiler, the
-// lrchain version and the kind of emitted code, so a cached shared object is never reused across any.
+// The user-model cache key (model_compiler.hpp): a SHA-256 (64 hex digits) that changes with the
+// file's bytes, the compiler, the lrchain version and the kind of emitted code, so a cached shared
+// object is never reused across any; its fields are length-prefixed, so moving bytes from one field
+// to the next changes it too.
 #include <doctest/doctest.h>
 
 #include <string>
@@ -17,6 +19,9 @@ TEST_CASE("the model cache key depends on the file, the compiler, the lrchain ve
   CHECK(key != model_cache_key(bytes, compiler, version + ".1", kEvaluatorCode));
   CHECK(key != model_cache_key(bytes, compiler, version, "evaluators 2"));  // the emitter before harmonics()
   CHECK(!version.empty());
+  CHECK(key.size() == 64);
+  CHECK(key.find_first_not_of("0123456789abcdef") == std::string::npos);
+  CHECK(model_cache_key("ab", "c", version, kEvaluatorCode) != model_cache_key("a", "bc", version, kEvaluatorCode));
 }
 
 TEST_CASE("the lattice code's cache entry names the kernel table's ABI version") {

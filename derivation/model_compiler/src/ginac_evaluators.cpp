@@ -100,9 +100,17 @@ GinacModelEvaluators::GinacModelEvaluators(const derivation::ModelDerivation& m,
   harmonics_ = prepare(functions.at(3));
 }
 
+GinacModelEvaluators::~GinacModelEvaluators() {
+  const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
+  intermediates_ = {};
+  dispersion_ = {};
+  nls_ = {};
+  harmonics_ = {};
+}
+
 // Inputs and earlier outputs substituted as double-precision numbers, each output evaluated by evalf.
 void GinacModelEvaluators::run(const Function& f, const Arrays& a) const {
-  const std::lock_guard<std::mutex> lock(mutex_);
+  const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
   exmap values;
   for (const auto& [symbol, slot] : f.inputs) values[symbol] = numeric(read(slot, a));
   evaluate_outputs(f, values, a, false);
@@ -163,7 +171,7 @@ void GinacModelEvaluators::harmonics(double D1, double sigma, double omega, cons
 // on det M = 0, then every output of f (nls or harmonics) at kNlsDigits digits.
 void GinacModelEvaluators::run_consistent(const Function& f, double D1, double sigma, double omega, const double* q,
                                           double* out) const {
-  const std::lock_guard<std::mutex> lock(mutex_);
+  const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
   struct DigitsScope {  // restores GiNaC's global precision on every exit
     long saved = Digits;
     ~DigitsScope() { Digits = saved; }

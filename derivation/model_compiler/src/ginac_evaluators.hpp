@@ -2,7 +2,7 @@
 // A derived model's evaluators computed by GiNaC (evalf): the fallback for a user model when no
 // C++ compiler is available. The same expressions as the emitted C++ (model_evaluator_definitions),
 // substituted and evaluated per call; nls() from consistent inputs at 40 digits, as the emitted
-// extended-precision nls.
+// extended-precision nls. Each call holds the process-wide symbolic_engine_mutex().
 #include <ginac/ginac.h>
 
 #include <mutex>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lrchain/derivation/model_derivation.hpp"
+#include "lrchain/derivation/symbolic_lock.hpp"
 #include "lrchain/model.hpp"
 
 namespace lrchain {
@@ -17,6 +18,8 @@ namespace lrchain {
 class GinacModelEvaluators final : public ModelEvaluatorObject {
  public:
   GinacModelEvaluators(const derivation::ModelDerivation& m, const derivation::Symbols& s);
+  // Releases the expressions under the lock (their reference counts are GiNaC's shared state).
+  ~GinacModelEvaluators() override;
   void intermediates(const double* parameters, double* q) const override;
   void dispersion(double D1, double sigma, const double* q, double* coefficients) const override;
   void nls(double D1, double sigma, double omega, const double* q, double* out) const override;
@@ -56,7 +59,6 @@ class GinacModelEvaluators final : public ModelEvaluatorObject {
 
   Function intermediates_, dispersion_, nls_, harmonics_;
   std::size_t parameter_count_ = 0;
-  mutable std::mutex mutex_;  // GiNaC's reference counts are not thread-safe
 };
 
 }  // namespace lrchain

@@ -3,21 +3,23 @@
 #include <dlfcn.h>
 #include <unistd.h>
 
-#include <chrono>
-#include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <random>
-#include <sstream>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
 #include "evaluator_support_text.hpp"
 #include "ginac_evaluators.hpp"
+#include "lrchain/derivation/c_string_literal.hpp"
 #include "lrchain/derivation/lattice_codegen.hpp"
 #include "lrchain/derivation/model_emission.hpp"
+#include "lrchain/derivation/symbolic_lock.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/process.hpp"
+#include "lrchain/sha256.hpp"
+#include "model_cache.hpp"
+#include "model_metadata.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
 
 namespace fs = std::filesystem;
@@ -26,94 +28,31 @@ namespace lrchain {
 
 namespace {
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot read the model file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+// The last dlerror(), or a sentence when there is none.
+std::string dlerror_text() {
+  const char* e = dlerror();
+  return e ? e : "no error reported";
 }
 
-// The cache key's kind of lattice code: a new kernel ABI compiles the model file again.
+// A symbol of the model-file SHA-256 both kinds of object carry: checked after loading, so an entry
+// holding another file's object (copied over, say) is a miss, never another model's numbers.
+constexpr const char* kFileShaSymbol = "lrchain_model_file_sha256";
 
-// $XDG_CACHE_HOME/lrchain, else $HOME/.cache/lrchain.
-fs::path cache_directory() {
-  const char* xdg = std::getenv("XDG_CACHE_HOME");
-  if (xdg && *xdg && fs::path(xdg).is_absolute()) return fs::path(xdg) / "lrchain";
-  const char* home = std::getenv("HOME");
-  if (!home || !*home) throw std::runtime_error("cannot place the model cache: neither XDG_CACHE_HOME nor HOME is set");
-  return fs::path(home) / ".cache" / "lrchain";
+std::string file_sha256_definition(const std::string& file_sha256) {
+  return "\nextern \"C\" const char " + std::string(kFileShaSymbol) + "[] = " + derivation::c_string_literal(file_sha256) + ";\n";
 }
 
-std::string number(double v) {
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
-  return buffer;
-}
-
-// The model's description, one item per line (read back by parse_metadata).
-std::string metadata(const derivation::ModelDerivation& m) {
-  std::ostringstream out;
-  out << "name " << m.file.name << "\ndescription " << m.file.description << "\nhash " << m.file.hash
-      << "\nmean_flow " << m.coefficients.mean_flow << "\ndegree " << m.branches.size() << "\n";
-  for (const auto& p : m.file.parameters) {
-    const auto& r = p.range;
-    out << "parameter " << p.name << " " << number(p.default_value.to_double()) << " " << r.has_lower << " "
-        << (r.has_lower ? number(r.lower.to_double()) : "0") << " " << r.lower_closed << " " << r.has_upper << " "
-        << (r.has_upper ? number(r.upper.to_double()) : "0") << " " << r.upper_closed << " " << r.text << "\n";
-  }
-  for (const auto& i : m.file.intermediates) out << "intermediate " << i.name << "\n";
-  for (const auto& b : m.branches) out << "branch " << b.name << "\n";
-  return out.str();
-}
-
-ModelDefinition parse_metadata(const std::string& text) {
-  ModelDefinition d;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream fields(line);
-    std::string key;
-    fields >> key;
-    std::string rest;
-    std::getline(fields >> std::ws, rest);
-    std::istringstream values(rest);
-    if (key == "name") d.name = rest;
-    else if (key == "description") d.description = rest;
-    else if (key == "hash") values >> d.file_hash;
-    else if (key == "mean_flow") values >> d.mean_flow;
-    else if (key == "degree") values >> d.degree;
-    else if (key == "intermediate") d.intermediates.push_back(rest);
-    else if (key == "branch") d.branch_names.push_back(rest);
-    else if (key == "parameter") {
-      ModelParameter p;
-      values >> p.name >> p.default_value >> p.has_lower >> p.lower >> p.lower_closed >> p.has_upper >> p.upper >> p.upper_closed;
-      std::getline(values >> std::ws, p.range_text);
-      d.parameters.push_back(p);
-    }
-  }
-  return d;
-}
-
-// C++ string literal of `text`.
-std::string literal(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '\n') out += "\\n\"\n\"";
-    else if (c == '"' || c == '\\') out += std::string("\\") + c;
-    else out += c;
-  }
-  return out + "\"";
-}
-
-// Self-contained source of the shared object: the evaluators and C entry points.
+// Self-contained source of the shared object: the evaluators and C entry points. Nothing of the
+// model file reaches it as text but identifiers and parsed expressions; its description (JSON) and
+// hash only as C string literals (derivation::c_string_literal).
 std::string shared_object_source(const derivation::ModelDerivation& m, const derivation::Symbols& s) {
-  return "// lrchain model " + m.file.name + ", emitted from " + m.file.path + "\n#include <cmath>\n" +
+  return std::string("// lrchain model evaluators, compiled at run time by lrchain. Do not edit.\n#include <cmath>\n") +
          model_compiler_detail::evaluator_support_text + "\nnamespace lrchain_model {\n\n" +
          derivation::model_evaluator_functions(m, s) +
          "\n}  // namespace lrchain_model\n\n"
-         "extern \"C\" const char lrchain_model_metadata[] = " + literal(metadata(m)) + ";\n\n"
-         "extern \"C\" {\n"
+         "extern \"C\" const char lrchain_model_metadata[] = " + derivation::c_string_literal(model_metadata_json(m)) + ";\n" +
+         file_sha256_definition(m.file.sha256) +
+         "\nextern \"C\" {\n"
          "void lrchain_model_intermediates(const double* p, double* q) { lrchain_model::intermediates(p, q); }\n"
          "void lrchain_model_dispersion(double D1, double sigma, const double* q, double* w) { lrchain_model::dispersion(D1, sigma, q, w); }\n"
          "void lrchain_model_nls(double D1, double sigma, double omega, const double* q, double* out) { lrchain_model::nls(D1, sigma, omega, q, out); }\n"
@@ -121,42 +60,52 @@ std::string shared_object_source(const derivation::ModelDerivation& m, const der
          "}\n";
 }
 
-// Compiles `source` into the shared object `library` in `directory`: written and compiled under a
-// unique temporary name, then renamed into place, so concurrent processes never see a partial file.
-void compile_into_cache(const std::string& source_text, const std::vector<std::string>& optimisation,
-                        const fs::path& directory, const fs::path& library, const std::string& what) {
-  std::error_code ec;
-  fs::create_directories(directory, ec);
-  if (ec) throw std::runtime_error("cannot create the model cache " + directory.string() + ": " + ec.message());
-  std::random_device random;
-  const std::string stem = ".model-" + std::to_string(::getpid()) + "-" + std::to_string(random());
-  const fs::path source = directory / (stem + ".cpp"), object = directory / (stem + ".so");
-  {
-    std::ofstream out(source, std::ios::binary);
-    out << source_text;
-    if (!out) throw std::runtime_error("cannot write " + source.string());
+// The first line of `compiler --version` (part of the cache key), once per compiler and process.
+std::string compiler_version(const std::string& compiler) {
+  static std::map<std::string, std::string> known;
+  static std::mutex mutex;
+  const std::lock_guard<std::mutex> lock(mutex);
+  const auto it = known.find(compiler);
+  if (it != known.end()) return it->second;
+  std::string version;
+  if (program_in_path(compiler)) {
+    ProcessOptions options;
+    options.capture_stdout = true;
+    const ProcessResult r = run_program({compiler, "--version"}, options);
+    if (r.ok()) version = r.output.substr(0, r.output.find('\n'));
   }
-  ProcessOptions options;
-  options.capture_stderr = true;
-  std::vector<std::string> argv{model_compiler_path(), "-std=c++17"};
-  argv.insert(argv.end(), optimisation.begin(), optimisation.end());
-  argv.insert(argv.end(), {"-fPIC", "-shared", "-o", object.string(), source.string()});
-  const ProcessResult r = run_program(argv, options);
-  fs::remove(source, ec);
-  if (!r.ok()) {
-    fs::remove(object, ec);
-    throw std::runtime_error("compiling " + what + " failed: " + r.error_output.substr(0, r.error_output.find('\n')));
-  }
-  fs::rename(object, library, ec);
-  if (ec) {
-    fs::remove(object, ec);
-    throw std::runtime_error("cannot place " + library.string() + " in the model cache");
-  }
+  return known[compiler] = version;
 }
 
 // The cache entry of a model file's bytes for one kind of code (kEvaluatorCode, lattice_code_kind()).
-fs::path cache_entry(const std::string& bytes, const std::string& kind, const std::string& prefix) {
-  return cache_directory() / (prefix + model_hash_text(model_cache_key(bytes, model_compiler_path(), LRCHAIN_VERSION, kind)).substr(2) + ".so");
+CacheEntry cache_entry(const std::string& bytes, const std::string& kind, const std::string& prefix) {
+  const std::string compiler = model_compiler_path();
+  return {model_cache_directory(),
+          prefix + model_cache_key(bytes, compiler + "\n" + compiler_version(compiler), LRCHAIN_VERSION, kind)};
+}
+
+// `make()` (emitting code with GiNaC) with a failure of the symbolic engine reported as the file's
+// input error, naming its first force.
+template <class Make>
+std::string emitted(const derivation::ModelFile& file, const std::string& what, Make make) {
+  try {
+    return make();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    const std::string message = e.what();
+    throw InputError((file.first_force_where.empty() ? file.path : file.first_force_where) + ": the " + what +
+                     " of model " + file.name + " cannot be generated (" + message.substr(0, message.find('\n')) + ")");
+  }
+}
+
+// The object's recorded model-file SHA-256 is the file's (else std::runtime_error).
+void check_file_sha256(void* handle, const std::string& file_sha256, const fs::path& library) {
+  const auto* recorded = static_cast<const char*>(dlsym(handle, kFileShaSymbol));
+  if (!recorded || file_sha256 != recorded)
+    throw std::runtime_error(library.string() + ": an object of another model file");
 }
 
 template <class Function>
@@ -166,28 +115,27 @@ Function symbol(void* handle, const char* name, const fs::path& library) {
   return reinterpret_cast<Function>(p);
 }
 
-// Loads a cached shared object as a model definition (the handle lives as long as the definition).
-std::shared_ptr<const ModelDefinition> load_library(const fs::path& library) {
-  void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (!handle) throw std::runtime_error("cannot load " + library.string() + ": " + dlerror());
+// A loaded model object as a model definition (the handle lives as long as the definition).
+std::shared_ptr<const ModelDefinition> load_library(void* handle, const fs::path& library, const std::string& file_sha256) {
   std::shared_ptr<void> owner(handle, [](void* h) { dlclose(h); });
+  check_file_sha256(handle, file_sha256, library);
   const auto* text = static_cast<const char*>(dlsym(handle, "lrchain_model_metadata"));
   if (!text) throw std::runtime_error(library.string() + ": no model description");
-  auto d = std::make_shared<ModelDefinition>(parse_metadata(text));
+  auto d = std::make_shared<ModelDefinition>(parse_model_metadata(text, library.string()));
   d->evaluators.intermediates = symbol<void (*)(const double*, double*)>(handle, "lrchain_model_intermediates", library);
   d->evaluators.dispersion = symbol<void (*)(double, double, const double*, double*)>(handle, "lrchain_model_dispersion", library);
   d->evaluators.nls = symbol<void (*)(double, double, double, const double*, double*)>(handle, "lrchain_model_nls", library);
   d->evaluators.harmonics = symbol<void (*)(double, double, double, const double*, double*)>(handle, "lrchain_model_harmonics", library);
-  if (d->name.empty() || d->branch_names.empty()) throw std::runtime_error(library.string() + ": no model description");
+  if (d->file_sha256 != file_sha256) throw std::runtime_error(library.string() + ": an object of another model file");
   d->keep_alive = owner;
   return d;
 }
 
-// Loads a cached lattice library and checks its kernel table against the model file's name.
-std::shared_ptr<const lrchain_lattice_kernels> load_lattice_library(const fs::path& library, const std::string& name) {
-  void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (!handle) throw std::runtime_error("cannot load " + library.string() + ": " + dlerror());
+// A loaded lattice library, its kernel table checked against the model file's name and hash.
+std::shared_ptr<const lrchain_lattice_kernels> load_lattice_library(void* handle, const fs::path& library,
+                                                                    const std::string& name, const std::string& file_sha256) {
   std::shared_ptr<void> owner(handle, [](void* h) { dlclose(h); });
+  check_file_sha256(handle, file_sha256, library);
   const auto entry = symbol<const lrchain_lattice_kernels* (*)()>(handle, ("lrchain_lattice_" + name).c_str(), library);
   const lrchain_lattice_kernels* kernels = entry();
   if (!kernels || kernels->abi_version != LRCHAIN_LATTICE_ABI_VERSION)
@@ -201,9 +149,11 @@ std::shared_ptr<const lrchain_lattice_kernels> load_lattice_library(const fs::pa
 
 }  // namespace
 
-std::uint64_t model_cache_key(const std::string& bytes, const std::string& compiler, const std::string& version,
-                              const std::string& kind) {
-  return fnv1a_64(compiler + "\n" + version + "\n" + kind + "\n", fnv1a_64(bytes));
+std::string model_cache_key(const std::string& bytes, const std::string& compiler, const std::string& version,
+                            const std::string& kind) {
+  Sha256Builder key;
+  key.field("lrchain model cache key 2").field(bytes).field(compiler).field(version).field(kind);
+  return key.hex();
 }
 
 std::string model_compiler_version() { return LRCHAIN_VERSION; }
@@ -217,28 +167,38 @@ std::string model_compiler_path() {
 
 bool model_compiler_available() { return program_in_path(model_compiler_path()); }
 
+std::string model_fallback_warning(const std::string& model_name, const CompiledModelInfo& info) {
+  return "model " + model_name + " is evaluated through GiNaC in double precision, far slower than compiled code, because " +
+         info.fallback_reason + "; install it (Debian: apt install g++) to compile the model once into the cache";
+}
+
 std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, CompiledModelInfo* info) {
-  const std::string bytes = read_bytes(path);
+  const std::string bytes = read_model_file_bytes(path.string());
+  const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
   const std::string compiler = model_compiler_path();
-  const fs::path library = cache_entry(bytes, kEvaluatorCode, "model-");
-  const fs::path directory = library.parent_path();
-  if (info) info->library = library;
-  std::error_code ec;
-  if (fs::exists(library, ec)) {
-    if (info) info->from_cache = true;
-    return load_library(library);
+  const std::string file_sha256 = sha256_hex(bytes);
+  const CacheEntry entry = cache_entry(bytes, kEvaluatorCode, "model-");
+  fs::path library;
+  if (void* handle = open_verified_object(entry, &library)) {
+    if (info) info->from_cache = true, info->library = library;
+    try {
+      return load_library(handle, library, file_sha256);
+    } catch (const std::runtime_error&) {
+      if (info) info->from_cache = false;  // not this file's object: compiled again below
+    }
   }
   // Derive (a bad file or a failing check is the user's input error) before touching the cache.
   const derivation::Symbols symbols;
   derivation::ModelFile file = derivation::parse_model_text(bytes, path.string());
+  const std::string shown = file.path;
   const auto values = derivation::parameter_values(file, {});
   const auto m = derivation::derive_model(std::move(file), values, symbols);
   if (!m->passed())
-    throw InputError(path.string() + ": a derivation check failed for model " + m->file.name +
-                     " (see `lrchain derive --model " + path.string() + "`)");
+    throw InputError(shown + ": a derivation check failed for model " + m->file.name + " (see `lrchain derive --model " +
+                     shown + "`)");
   if (!program_in_path(compiler)) {
     // No compiler: the derived expressions evaluated by GiNaC in double precision instead.
-    auto d = std::make_shared<ModelDefinition>(parse_metadata(metadata(*m)));
+    auto d = std::make_shared<ModelDefinition>(parse_model_metadata(model_metadata_json(*m), "the derived model"));
     d->evaluators.object = std::make_shared<GinacModelEvaluators>(*m, symbols);
     if (info) {
       info->library.clear();
@@ -246,12 +206,18 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, 
     }
     return d;
   }
-  compile_into_cache(shared_object_source(*m, symbols), {"-O2"}, directory, library, "the evaluators of " + path.string());
-  return load_library(library);
+  const std::string source = emitted(m->file, "evaluators", [&] { return shared_object_source(*m, symbols); });
+  compile_into_entry(source, compiler, {"-O2"}, entry, "the evaluators of " + shown);
+  void* handle = open_verified_object(entry, &library);
+  if (info) info->from_cache = false, info->library = library;
+  if (!handle) throw std::runtime_error("cannot load " + library.string() + " just compiled: " + dlerror_text());
+  return load_library(handle, library, file_sha256);
 }
 
 void check_lattice_compiler(const fs::path& path) {
-  if (fs::exists(cache_entry(read_bytes(path), lattice_code_kind(), "lattice-"))) return;
+  const std::string bytes = read_model_file_bytes(path.string());
+  const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
+  if (has_verified_object(cache_entry(bytes, lattice_code_kind(), "lattice-"))) return;
   const std::string compiler = model_compiler_path();
   if (!program_in_path(compiler))
     throw InputError("--model " + path.string() + ": lattice runs of a model file compile its lattice code with the C++ "
@@ -260,21 +226,30 @@ void check_lattice_compiler(const fs::path& path) {
 }
 
 std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const fs::path& path, CompiledModelInfo* info) {
-  const std::string bytes = read_bytes(path);
+  const std::string bytes = read_model_file_bytes(path.string());
+  const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
+  const std::string file_sha256 = sha256_hex(bytes);
   // The model's name first (a bad file is the user's input error, reported before the cache is touched).
   const derivation::ModelFile file = derivation::parse_model_text(bytes, path.string());
-  const fs::path library = cache_entry(bytes, lattice_code_kind(), "lattice-");
-  if (info) info->library = library;
-  std::error_code ec;
-  if (fs::exists(library, ec)) {
-    if (info) info->from_cache = true;
-    return load_lattice_library(library, file.name);
+  const CacheEntry entry = cache_entry(bytes, lattice_code_kind(), "lattice-");
+  fs::path library;
+  if (void* handle = open_verified_object(entry, &library)) {
+    if (info) info->from_cache = true, info->library = library;
+    try {
+      return load_lattice_library(handle, library, file.name, file_sha256);
+    } catch (const std::runtime_error&) {
+      if (info) info->from_cache = false;  // not this file's object: compiled again below
+    }
   }
   check_lattice_compiler(path);
   // -O3 as the shipped kernels (Release build); the kernels' own attributes pick the vector width.
-  compile_into_cache(derivation::lattice_source(file), {"-O3", "-DNDEBUG"}, library.parent_path(), library,
-                     "the lattice code of " + path.string());
-  return load_lattice_library(library, file.name);
+  const std::string source = emitted(file, "lattice code", [&] { return derivation::lattice_source(file); });
+  compile_into_entry(source + file_sha256_definition(file_sha256), model_compiler_path(),
+                     {"-O3", "-DNDEBUG"}, entry, "the lattice code of " + file.path);
+  void* handle = open_verified_object(entry, &library);
+  if (info) info->from_cache = false, info->library = library;
+  if (!handle) throw std::runtime_error("cannot load " + library.string() + " just compiled: " + dlerror_text());
+  return load_lattice_library(handle, library, file.name, file_sha256);
 }
 
 }  // namespace lrchain

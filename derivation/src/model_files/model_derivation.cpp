@@ -16,7 +16,48 @@ bool ModelDerivation::passed() const {
   return true;
 }
 
+namespace {
+
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+// The sentence for a failure of the symbolic engine while deriving `file` at `values`: the first
+// mass or linear stiffness that is zero or undefined there, else the first force, named file:line.
+std::string blame(const ModelFile& file, const exmap& values, const std::string& what) {
+  for (const auto& d : file.divisors) {
+    try {
+      const ex v = evalf(d.value.subs(values, subs_options::no_pattern));
+      if (d.divisor && v.is_zero())
+        return d.where + ": " + d.what + " is zero at these parameter values, so model " + file.name +
+               " has no linear waves to expand about (" + first_line(what) + ")";
+    } catch (const std::exception& e) {
+      return d.where + ": " + d.what + " cannot be evaluated at these parameter values (" + first_line(e.what()) + ")";
+    }
+  }
+  return (file.first_force_where.empty() ? file.path : file.first_force_where) + ": model " + file.name +
+         " cannot be derived at these parameter values (" + first_line(what) + ")";
+}
+
+std::unique_ptr<ModelDerivation> derive_checked(ModelFile file, const exmap& values, const Symbols& s);
+
+}  // namespace
+
+// Failures of GiNaC/CLN inside (a division by zero, a pole, an overflow) are the file's: InputError.
 std::unique_ptr<ModelDerivation> derive_model(ModelFile file, const exmap& values, const Symbols& s) {
+  const ModelFile copy = file;
+  try {
+    return derive_checked(std::move(file), values, s);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(blame(copy, values, e.what()));
+  }
+}
+
+namespace {
+
+std::unique_ptr<ModelDerivation> derive_checked(ModelFile file, const exmap& values, const Symbols& s) {
   auto m = std::make_unique<ModelDerivation>();
   m->file = std::move(file);
   m->values = values;
@@ -39,6 +80,8 @@ std::unique_ptr<ModelDerivation> derive_model(ModelFile file, const exmap& value
   m->check_seconds = std::chrono::duration<double>(t2 - t1).count();
   return m;
 }
+
+}  // namespace
 
 std::vector<std::pair<std::string, ex>> symbolic_coefficients(const ModelDerivation& m, const Symbols& s) {
   const DerivedCoefficients& d = m.coefficients;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "lrchain/derivation/branches.hpp"
+#include "lrchain/derivation/c_string_literal.hpp"
 #include "lrchain/derivation/emit_cpp.hpp"
 
 namespace lrchain::derivation {
@@ -363,15 +364,6 @@ std::string number_text(double v) {
   return buffer;
 }
 
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char ch : s) {
-    if (ch == '"' || ch == '\\') out += '\\';
-    out += ch;
-  }
-  return out + "\"";
-}
-
 }  // namespace
 
 double evaluator_cancellation(const ModelDerivation& m, const Symbols& s) {
@@ -457,19 +449,20 @@ std::string model_definition_function(const ModelDerivation& m) {
   out << "// The model's description for lrchain::Model (parameters, ranges, branches, evaluators).\n"
          "inline lrchain::ModelDefinition definition() {\n"
          "  lrchain::ModelDefinition d;\n"
-      << "  d.name = " << quoted(m.file.name) << ";\n"
-      << "  d.description = " << quoted(m.file.description) << ";\n"
-      << "  d.file_hash = " << hash_text(m.file.hash) << "ull;\n";
+      << "  d.name = " << c_string_literal(m.file.name) << ";\n"
+      << "  d.description = " << c_string_literal(m.file.description) << ";\n"
+      << "  d.file_hash = " << hash_text(m.file.hash) << "ull;\n"
+      << "  d.file_sha256 = " << c_string_literal(m.file.sha256) << ";\n";
   for (const auto& p : m.file.parameters) {
     const auto& r = p.range;
-    out << "  d.parameters.push_back({" << quoted(p.name) << ", " << quoted(r.text) << ", "
+    out << "  d.parameters.push_back({" << c_string_literal(p.name) << ", " << c_string_literal(r.text) << ", "
         << number_text(p.default_value.to_double()) << ", " << (r.has_lower ? "true" : "false") << ", "
         << (r.has_upper ? "true" : "false") << ", " << (r.lower_closed ? "true" : "false") << ", "
         << (r.upper_closed ? "true" : "false") << ", " << (r.has_lower ? number_text(r.lower.to_double()) : "0") << ", "
         << (r.has_upper ? number_text(r.upper.to_double()) : "0") << "});\n";
   }
-  for (const auto& i : m.file.intermediates) out << "  d.intermediates.push_back(" << quoted(i.name) << ");\n";
-  for (const auto& b : m.branches) out << "  d.branch_names.push_back(" << quoted(b.name) << ");\n";
+  for (const auto& i : m.file.intermediates) out << "  d.intermediates.push_back(" << c_string_literal(i.name) << ");\n";
+  for (const auto& b : m.branches) out << "  d.branch_names.push_back(" << c_string_literal(b.name) << ");\n";
   out << "  d.mean_flow = " << (m.coefficients.mean_flow ? "true" : "false") << ";\n"
       << "  d.degree = " << m.branches.size() << ";\n"
       << "  d.evaluators = {&intermediates, &dispersion, &nls, &harmonics, nullptr};\n"

@@ -1,5 +1,7 @@
 #include "model_expression.hpp"
 
+#include "expression_bounds.hpp"
+
 #include <cctype>
 #include <cstdlib>
 #include <regex>
@@ -148,6 +150,7 @@ class Translator {
 
  public:
   ex parse(const std::string& plain) const {
+    if (const std::string problem = expression_bound_problem(plain); !problem.empty()) fail(problem);
     try {
       parser reader(table_, /*strict=*/true);
       return reader(plain);

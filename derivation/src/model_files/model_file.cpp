@@ -9,8 +9,10 @@
 #include "lrchain/config/unicode_guard.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/model.hpp"
+#include "lrchain/sha256.hpp"
 #include "model_expression.hpp"
 #include "model_parameters.hpp"
+#include "model_strings.hpp"
 #include "strict_keys.hpp"
 
 namespace lrchain::derivation {
@@ -57,10 +59,12 @@ class Loader {
     try {
       root_ = toml::parse(text, file);
     } catch (const toml::parse_error& e) {
-      throw InputError(file + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
+      throw InputError(file + ":" + std::to_string(e.source().begin.line) + ": " + printable(e.description()));
     }
+    refuse_unsafe_strings(root_, file);
     out_.path = file;
     out_.hash = fnv1a_64(text);
+    out_.sha256 = sha256_hex(text);
   }
 
   ModelFile run() {
@@ -144,6 +148,7 @@ class Loader {
       f.expression_text = text_of(t, "expression", file_, "function " + f.name);
       context.where = at(file_, *t.get("expression")) + ": function " + f.name;
       f.expression = parse_model_expression(f.expression_text, context, calls);
+      out_.divisors.push_back({context.where, "the expression of function " + f.name, f.expression, false});
       if (t.contains("contact")) {
         f.contact_text = text_of(t, "contact", file_, "function " + f.name);
         context.where = at(file_, *t.get("contact")) + ": contact of function " + f.name;
@@ -180,6 +185,7 @@ class Loader {
         throw InputError(where + ": function " + f.name + " has no Taylor expansion about its equilibrium " +
                          f.argument + " = " + to_text(r0) + " (" + e.what() + ")");
       }
+      out_.divisors.push_back({where, f.name + "'(" + to_text(r0) + ") of function " + f.name, c[1]});
       if (!f.taylor_names.empty()) name_intermediates(f, r0, c, where);
       const ex x = call.argument - r0;
       replacement[call.placeholder] = c[0] + c[1] * x + c[2] * pow(x, 2) + c[3] * pow(x, 3);
@@ -254,8 +260,10 @@ class Loader {
       mass_context.where = (t.contains("mass") ? at(file_, *t.get("mass")) : at(file_, t)) + ": mass of field " + field;
       const ex mass = parse_model_expression(out_.mass_text.back(), mass_context, calls);
       if (mass.is_zero()) throw InputError(mass_context.where + ": the mass must not be zero");
+      out_.divisors.push_back({mass_context.where, "the mass", mass});
       out_.force_text.push_back(text_of(t, "force", file_, "field " + field));
       const std::string where = at(file_, *t.get("force")) + ": force of field " + field;
+      if (out_.first_force_where.empty()) out_.first_force_where = where;
       context.where = where;
       calls.clear();
       const ex force = expand_calls(parse_model_expression(out_.force_text.back(), context, calls), calls, where);
@@ -280,22 +288,21 @@ class Loader {
 }  // namespace
 
 // Any other failure of GiNaC on the file's expressions is the file's fault too: exit 2 naming it.
+// Messages (and ModelFile::path, which only names the file) show `path` with its bytes outside printable ASCII as \xNN when it has a
+// control character or invalid UTF-8 (one line on stderr whatever the path).
 ModelFile parse_model_text(const std::string& text, const std::string& path) {
+  const std::string shown = unsafe_string_reason(path).empty() ? path : printable(path);
   try {
-    return Loader(text, path).run();
+    return Loader(text, shown).run();
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {
-    throw InputError(path + ": the model's expressions cannot be evaluated: " + e.what());
+    throw InputError(shown + ": the model's expressions cannot be evaluated: " + e.what());
   }
 }
 
 ModelFile load_model_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot read the model file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_model_text(ss.str(), path.string());
+  return parse_model_text(read_model_file_bytes(path.string()), path.string());
 }
 
 }  // namespace lrchain::derivation

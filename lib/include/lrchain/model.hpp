@@ -90,7 +90,8 @@ struct ModelParameter {
 // Everything the numerics need about one model.
 struct ModelDefinition {
   std::string name, description;
-  std::uint64_t file_hash = 0;  // FNV-1a 64 of the model file's bytes
+  std::uint64_t file_hash = 0;  // FNV-1a 64 of the model file's bytes (displayed; not an identity)
+  std::string file_sha256;      // SHA-256 (hex) of the model file's bytes: what identifies the file
   std::vector<ModelParameter> parameters;
   std::vector<std::string> intermediates;  // names of the named Taylor coefficients (q after the parameters)
   std::vector<std::string> branch_names;   // in increasing frequency
@@ -135,8 +136,19 @@ Model resonant_chain_model(const Params& p);
 // "0x" + 16 hex digits.
 std::string model_hash_text(std::uint64_t hash);
 
-// FNV-1a 64 of `bytes` (continuing from `hash`): the hash model files are identified by.
+// FNV-1a 64 of `bytes` (continuing from `hash`): the short hash model files are shown with (JSON
+// "file_hash"); files are identified by file_sha256.
 std::uint64_t fnv1a_64(std::string_view bytes, std::uint64_t hash = 14695981039346656037ull);
+
+// The largest model file lrchain reads (bytes); the shipped ones are under 4 KiB.
+inline constexpr std::size_t kMaxModelFileBytes = 1 << 20;
+
+// The bytes of the model file `path`, read by every front end: InputError naming the file unless it
+// is a regular file (not a directory, FIFO, device or socket) of at most kMaxModelFileBytes.
+std::string read_model_file_bytes(const std::string& path);
+
+// The shipped model whose file has the bytes `bytes` (compared by SHA-256), or nullptr.
+const ModelDefinition* find_shipped_model_by_bytes(std::string_view bytes);
 
 // NLS coefficients of `model` on branch `branch` (index into branch_names) at theta in (-pi, pi]:
 // omega is the branch's root of det M = 0 in omega^2. lambda is NaN (no mean flow) for on-site

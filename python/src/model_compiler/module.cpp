@@ -12,17 +12,24 @@ namespace py = pybind11;
 namespace {
 
 // The compiled definition of the model file at `path` as a capsule (model_capsule.hpp). A bad model
-// file raises lrchain.InputError (a ValueError); a missing or failing compiler RuntimeError.
+// file raises lrchain.InputError (a ValueError); a missing or failing compiler RuntimeError. Without
+// a compiler (the GiNaC fallback) it warns (RuntimeWarning) as the CLI does on stderr.
+// The GIL is released only around the C++ compile path, which touches no Python object and holds
+// the process-wide lock of the symbolic engine itself (model_compiler.hpp).
 py::capsule compile(const std::string& path) {
   lrchain::python::ModelDefinitionHandle definition;
+  lrchain::CompiledModelInfo info;
   try {
     py::gil_scoped_release release;  // deriving and compiling takes seconds
-    definition = lrchain::compile_model_file(path);
+    definition = lrchain::compile_model_file(path, &info);
   } catch (const lrchain::InputError& e) {
     const py::object input_error = py::module_::import("lrchain.errors").attr("InputError");
     PyErr_SetString(input_error.ptr(), e.what());
     throw py::error_already_set();
   }
+  if (!info.fallback_reason.empty() &&
+      PyErr_WarnEx(PyExc_RuntimeWarning, lrchain::model_fallback_warning(definition->name, info).c_str(), 2) != 0)
+    throw py::error_already_set();
   return py::capsule(new lrchain::python::ModelDefinitionHandle(std::move(definition)),
                      lrchain::python::kModelCapsuleName, [](PyObject* capsule) {
                        delete static_cast<lrchain::python::ModelDefinitionHandle*>(

@@ -98,7 +98,7 @@ std::vector<double> lattice_parameters(const Model& model) {
 const lrchain_lattice_kernels* compiled_in_lattice_kernels(const Model& model) {
   const lrchain_lattice_kernels* kernels = shipped_lattice_kernels(model.name());
   const ModelDefinition* shipped = find_shipped_model(model.name());
-  return kernels && shipped && shipped->file_hash == model.file_hash() ? kernels : nullptr;
+  return kernels && shipped && shipped->file_sha256 == model.definition().file_sha256 ? kernels : nullptr;
 }
 
 const lrchain_lattice_kernels& lattice_kernels_of(const Model& model) {

@@ -45,13 +45,26 @@ struct NamedIntermediate {
   GiNaC::ex value;  // in the parameters
 };
 
+// An expression of the file that the derivation evaluates at the parameter values (a function's
+// expression) or divides by (a field's mass, the linear stiffness F'(r0) of a named law at its
+// equilibrium), with where it is written: blamed when the derivation fails at the parameter values.
+struct DivisorTerm {
+  std::string where;     // "file:line: force of field u" / "file:line: mass of field u"
+  std::string what;      // "F'(r0) of function F" / "the mass"
+  GiNaC::ex value;       // in the parameters (and a function's argument)
+  bool divisor = true;   // false: only its value must exist (a function's expression)
+};
+
 struct ModelFile {
   std::string path, name, description;
-  std::uint64_t hash = 0;  // FNV-1a 64 of the file's bytes
+  std::uint64_t hash = 0;  // FNV-1a 64 of the file's bytes (displayed)
+  std::string sha256;      // SHA-256 (hex) of the file's bytes (its identity)
   std::vector<ModelParameter> parameters;
   std::vector<ModelFunction> functions;
   std::vector<NamedIntermediate> intermediates;
   std::vector<std::string> mass_text, force_text;  // as written, one per field
+  std::vector<DivisorTerm> divisors;               // masses and linear stiffnesses, in file order
+  std::string first_force_where;                   // "file:line: force of field u" of the first field
   LatticeModel model;                              // what the engine derives
 };
 

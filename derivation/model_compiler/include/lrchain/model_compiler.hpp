@@ -1,8 +1,11 @@
 #pragma once
 // Run-time compilation of a user's model file (docs/models.md): derive it, emit its evaluators as
 // C++, compile them with the compiler lrchain was built with into a per-user cache
-// ($XDG_CACHE_HOME/lrchain, default ~/.cache/lrchain) keyed by the file's bytes, the compiler and
-// the lrchain version, and load the shared object. A second call with the same file reuses it.
+// ($XDG_CACHE_HOME/lrchain, default ~/.cache/lrchain) keyed by a SHA-256 of the file's bytes, the
+// compiler and its version, the lrchain version and the kind of code, and load the shared object
+// once the cache and the object pass their checks (model_cache.hpp). A second call with the same
+// file reuses it. Every function here holds derivation::symbolic_engine_mutex() (GiNaC is not
+// thread-safe), so any front end may call them from several threads.
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -21,8 +24,8 @@ struct CompiledModelInfo {
 
 // The model of `path` with compiled evaluators; when the compiler is not installed, with the derived
 // expressions evaluated by GiNaC in double precision instead (info->fallback_reason says so).
-// Throws InputError for a bad model file (a failing derivation check included) and
-// std::runtime_error when the compiler fails.
+// Throws InputError for a bad model file (a failing derivation check included; the file read by
+// read_model_file_bytes) or an unsafe cache directory, and std::runtime_error when the compiler fails.
 std::shared_ptr<const ModelDefinition> compile_model_file(const std::filesystem::path& path,
                                                           CompiledModelInfo* info = nullptr);
 
@@ -47,10 +50,11 @@ inline constexpr const char* kEvaluatorCode = "evaluators 4";
 // so that a library of an older table is never loaded (the file is compiled again).
 std::string lattice_code_kind();
 
-// The cache key of a model file's bytes compiled by `compiler` for lrchain `version` into `kind` of
-// code (kEvaluatorCode, or lattice_code_kind()): FNV-1a 64 of all four.
-std::uint64_t model_cache_key(const std::string& bytes, const std::string& compiler, const std::string& version,
-                              const std::string& kind);
+// The cache key of a model file's bytes compiled by `compiler` (its path and version line) for
+// lrchain `version` into `kind` of code (kEvaluatorCode, or lattice_code_kind()): the SHA-256 (64
+// hex digits) of the four as length-prefixed fields.
+std::string model_cache_key(const std::string& bytes, const std::string& compiler, const std::string& version,
+                            const std::string& kind);
 // The lrchain version the cache keys use (the project's version at build time).
 std::string model_compiler_version();
 
@@ -58,5 +62,8 @@ std::string model_compiler_version();
 // can be run.
 std::string model_compiler_path();
 bool model_compiler_available();
+
+// The warning every front end gives when `info` says the model was not compiled (fallback_reason).
+std::string model_fallback_warning(const std::string& model_name, const CompiledModelInfo& info);
 
 }  // namespace lrchain

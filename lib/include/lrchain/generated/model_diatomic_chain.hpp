@@ -174,6 +174,7 @@ inline lrchain::ModelDefinition definition() {
   d.name = "diatomic_chain";
   d.description = "diatomic granular chain with precompression (alternating masses 1 and m)";
   d.file_hash = 0xe672bce94294c28bull;
+  d.file_sha256 = "55f97d6d66103d8ed722e92c80204e3a95f965681f9dae7edcdfa218ba01bd79";
   d.parameters.push_back({"alpha", "(1, inf)", 1.5, true, false, false, false, 1, 0});
   d.parameters.push_back({"delta0", "(0, inf)", 0.44444444444444442, true, false, false, false, 0, 0});
   d.parameters.push_back({"m", "(0, inf)", 2, true, false, false, false, 0, 0});

@@ -113,6 +113,7 @@ inline lrchain::ModelDefinition definition() {
   d.name = "fput";
   d.description = "Fermi-Pasta-Ulam-Tsingou chain, F(r) = r + a r^2 + b r^3";
   d.file_hash = 0x5b104df96318551eull;
+  d.file_sha256 = "86c9509c74b41ccb40cc5f2e683d3285b3974ca32ae45e05e7d84a0b3eb05fb8";
   d.parameters.push_back({"a", "(-inf, inf)", 0.25, false, false, false, false, 0, 0});
   d.parameters.push_back({"b", "(-inf, inf)", 0.5, false, false, false, false, 0, 0});
   d.branch_names.push_back("acoustic");

@@ -126,6 +126,7 @@ inline lrchain::ModelDefinition definition() {
   d.name = "homogeneous_chain";
   d.description = "homogeneous granular chain with precompression (Hertz contacts)";
   d.file_hash = 0xda8db417c80f8ee3ull;
+  d.file_sha256 = "c75a941b5500101ce5fbc113d23d428e9e713f83779e2aa814aef17fb93b2728";
   d.parameters.push_back({"alpha", "(1, inf)", 1.5, true, false, false, false, 1, 0});
   d.parameters.push_back({"delta0", "(0, inf)", 0.44444444444444442, true, false, false, false, 0, 0});
   d.intermediates.push_back("K2");

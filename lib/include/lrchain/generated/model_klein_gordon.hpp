@@ -116,6 +116,7 @@ inline lrchain::ModelDefinition definition() {
   d.name = "klein_gordon";
   d.description = "discrete Klein-Gordon chain with an anharmonic on-site force";
   d.file_hash = 0x82ca43664d77dcabull;
+  d.file_sha256 = "a45b1b1347353afdbbfaab0915b77a7890fbb9b83de4a8224b0772235e934b6c";
   d.parameters.push_back({"C", "[0, inf)", 0.10000000000000001, true, false, true, false, 0, 0});
   d.parameters.push_back({"w0", "(0, inf)", 1, true, false, false, false, 0, 0});
   d.parameters.push_back({"a", "(-inf, inf)", 0.25, false, false, false, false, 0, 0});

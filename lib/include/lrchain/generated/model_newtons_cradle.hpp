@@ -126,6 +126,7 @@ inline lrchain::ModelDefinition definition() {
   d.name = "newtons_cradle";
   d.description = "Newton's cradle: Hertz chain with precompression and a harmonic on-site force";
   d.file_hash = 0xf44ebca9cfecb16dull;
+  d.file_sha256 = "443eaaa9e6a3af562bfa7d9e318933cac63a868cae6496858eb61438b1d08494";
   d.parameters.push_back({"alpha", "(1, inf)", 1.5, true, false, false, false, 1, 0});
   d.parameters.push_back({"delta0", "(0, inf)", 0.44444444444444442, true, false, false, false, 0, 0});
   d.parameters.push_back({"w0", "(0, inf)", 1, true, false, false, false, 0, 0});

@@ -199,6 +199,7 @@ inline lrchain::ModelDefinition definition() {
   d.name = "resonant_chain";
   d.description = "locally resonant granular chain with precompression (Hertz contacts, linear resonators)";
   d.file_hash = 0x505810b6d7d1235full;
+  d.file_sha256 = "2e3879764492a3bc35a8cd17fc98f1317553854db4d0fc1b318641172ec10e83";
   d.parameters.push_back({"alpha", "(1, 5]", 1.5, true, true, false, true, 1, 5});
   d.parameters.push_back({"delta0", "(0, 10]", 0.44444444444444442, true, true, false, true, 0, 10});
   d.parameters.push_back({"kappa", "(0, 10000]", 1, true, true, false, true, 0, 10000});

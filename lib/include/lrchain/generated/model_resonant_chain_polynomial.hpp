@@ -157,6 +157,7 @@ inline lrchain::ModelDefinition definition() {
   d.name = "resonant_chain_polynomial";
   d.description = "locally resonant chain with polynomial bond forces and nonlinear resonators";
   d.file_hash = 0xd6c25d1014f797ccull;
+  d.file_sha256 = "273d52b01dd940f5e01ff088c1c3b344a1700499d3e7a5380fd24d46b9b54478";
   d.parameters.push_back({"k1", "(0, inf)", 1, true, false, false, false, 0, 0});
   d.parameters.push_back({"b1", "(-inf, inf)", -0.25, false, false, false, false, 0, 0});
   d.parameters.push_back({"g1", "(-inf, inf)", 0.125, false, false, false, false, 0, 0});

@@ -1,0 +1,270 @@
+#include "model_cache.hpp"
+
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <random>
+#include <stdexcept>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/process.hpp"
+#include "lrchain/sha256.hpp"
+
+namespace fs = std::filesystem;
+
+namespace lrchain {
+
+namespace {
+
+constexpr std::size_t kMaxObjectBytes = std::size_t(256) << 20;  // far above any emitted model
+
+// Closes a descriptor on every path out.
+class Descriptor {
+ public:
+  explicit Descriptor(int fd = -1) : fd_(fd) {}
+  Descriptor(Descriptor&& other) noexcept : fd_(other.fd_) { other.fd_ = -1; }
+  Descriptor& operator=(Descriptor&& other) noexcept {
+    std::swap(fd_, other.fd_);
+    return *this;
+  }
+  ~Descriptor() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  int get() const { return fd_; }
+  explicit operator bool() const { return fd_ >= 0; }
+
+ private:
+  int fd_;
+};
+
+std::string octal_mode(mode_t mode) {
+  char buffer[8];
+  std::snprintf(buffer, sizeof buffer, "%04o", unsigned(mode & 07777));
+  return buffer;
+}
+
+// The parent of the cache (XDG_CACHE_HOME or ~/.cache), when it exists: ours or root's, and not
+// world-writable unless ours (else another user could have put the cache directory there).
+void check_cache_parent(const fs::path& parent) {
+  struct stat s{};
+  if (::stat(parent.c_str(), &s) != 0) return;  // created (as ours) when the first model is compiled
+  if (s.st_uid != ::geteuid() && s.st_uid != 0)
+    throw InputError("the model cache's directory " + parent.string() + " belongs to another user (uid " +
+                     std::to_string(s.st_uid) + "); set XDG_CACHE_HOME to a directory of your own");
+  if ((s.st_mode & S_IWOTH) && s.st_uid != ::geteuid())
+    throw InputError("the model cache's directory " + parent.string() + " is writable by every user and not yours (mode " +
+                     octal_mode(s.st_mode) + "); set XDG_CACHE_HOME to a directory of your own");
+}
+
+// An open cache directory: a directory of ours that neither group nor others can write.
+void check_cache_directory(int fd, const fs::path& directory) {
+  struct stat s{};
+  if (::fstat(fd, &s) != 0 || !S_ISDIR(s.st_mode))
+    throw InputError("the model cache " + directory.string() + " is not a directory; delete it or set XDG_CACHE_HOME");
+  if (s.st_uid != ::geteuid())
+    throw InputError("the model cache " + directory.string() + " belongs to another user (uid " + std::to_string(s.st_uid) +
+                     "); set XDG_CACHE_HOME to a directory of your own");
+  if (s.st_mode & (S_IWGRP | S_IWOTH))
+    throw InputError("the model cache " + directory.string() + " is writable by group or others (mode " +
+                     octal_mode(s.st_mode) + "); run chmod go-w on it or set XDG_CACHE_HOME to a directory of your own");
+}
+
+// The cache directory, checked; with `create`, made (mode 0700) when missing, else an empty
+// descriptor when missing.
+Descriptor open_cache_directory(bool create) {
+  const fs::path directory = model_cache_directory();
+  check_cache_parent(directory.parent_path());
+  if (create) {
+    std::error_code ec;
+    fs::create_directories(directory.parent_path(), ec);
+    if (ec) throw std::runtime_error("cannot create the model cache " + directory.string() + ": " + ec.message());
+    if (::mkdir(directory.c_str(), 0700) != 0 && errno != EEXIST)
+      throw std::runtime_error("cannot create the model cache " + directory.string() + ": " + std::strerror(errno));
+  }
+  Descriptor fd(::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  if (!fd) {
+    if (!create && (errno == ENOENT)) return fd;
+    throw InputError("the model cache " + directory.string() + " cannot be opened as a directory (" + std::strerror(errno) +
+                     "); delete it or set XDG_CACHE_HOME");
+  }
+  check_cache_directory(fd.get(), directory);
+  return fd;
+}
+
+// A file of the cache opened without following links: a regular file of ours that neither group
+// nor others can write, of 1 to `max_bytes` bytes; else an empty descriptor.
+Descriptor open_cache_file(int directory, const std::string& name, std::size_t max_bytes, std::size_t* size) {
+  Descriptor fd(::openat(directory, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC));
+  if (!fd) return fd;
+  struct stat s{};
+  if (::fstat(fd.get(), &s) != 0 || !S_ISREG(s.st_mode) || s.st_uid != ::geteuid() || (s.st_mode & (S_IWGRP | S_IWOTH)) ||
+      s.st_size <= 0 || std::size_t(s.st_size) > max_bytes)
+    return Descriptor();
+  *size = std::size_t(s.st_size);
+  return fd;
+}
+
+// SHA-256 (hex) of what `fd` holds from its start, or nullopt when it cannot be read in full.
+std::optional<std::string> content_sha256(int fd, std::size_t size, std::string* bytes = nullptr) {
+  Sha256Builder hash;
+  std::vector<char> buffer(1 << 16);
+  std::size_t total = 0;
+  for (;;) {
+    const ssize_t n = ::pread(fd, buffer.data(), buffer.size(), off_t(total));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return std::nullopt;
+    if (n == 0) break;
+    hash.raw(buffer.data(), std::size_t(n));
+    if (bytes) bytes->append(buffer.data(), std::size_t(n));
+    total += std::size_t(n);
+  }
+  if (total != size) return std::nullopt;
+  return hash.hex();
+}
+
+bool is_sha256_hex(const std::string& text) {
+  return text.size() == 64 && text.find_first_not_of("0123456789abcdef") == std::string::npos;
+}
+
+std::string object_name(const CacheEntry& entry, const std::string& object_sha256) {
+  return entry.stem + "." + object_sha256.substr(0, 16) + ".so";
+}
+
+// The entry's object, opened and checked against its manifest; an empty descriptor on a miss.
+Descriptor verified_object(int directory, const CacheEntry& entry, std::string* name) {
+  std::size_t size = 0;
+  const Descriptor manifest = open_cache_file(directory, entry.stem + ".manifest", 65, &size);
+  if (!manifest) return Descriptor();
+  std::string recorded;
+  if (!content_sha256(manifest.get(), size, &recorded)) return Descriptor();
+  if (!recorded.empty() && recorded.back() == '\n') recorded.pop_back();
+  if (!is_sha256_hex(recorded)) return Descriptor();
+  *name = object_name(entry, recorded);
+  Descriptor object = open_cache_file(directory, *name, kMaxObjectBytes, &size);
+  if (!object) return Descriptor();
+  const auto actual = content_sha256(object.get(), size);
+  if (!actual || *actual != recorded) return Descriptor();
+  return object;
+}
+
+// Writes `text` to a new file `name` of `directory` (mode 0644; fails if it exists).
+void write_new_file(int directory, const std::string& name, const std::string& text, const fs::path& shown) {
+  Descriptor fd(::openat(directory, name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644));
+  if (!fd) throw std::runtime_error("cannot write " + shown.string() + ": " + std::strerror(errno));
+  std::size_t written = 0;
+  while (written < text.size()) {
+    const ssize_t n = ::write(fd.get(), text.data() + written, text.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw std::runtime_error("cannot write " + shown.string() + ": " + std::strerror(errno));
+    written += std::size_t(n);
+  }
+}
+
+// Removes the entry's objects other than `keep` (superseded; a process that loaded one keeps its mapping).
+void remove_superseded_objects(const fs::path& directory, const CacheEntry& entry, const std::string& keep) {
+  std::error_code ec;
+  for (fs::directory_iterator it(directory, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name != keep && name.rfind(entry.stem + ".", 0) == 0 && name.size() > 3 &&
+        name.compare(name.size() - 3, 3, ".so") == 0 && it->is_regular_file(ec))
+      fs::remove(it->path(), ec);
+  }
+}
+
+}  // namespace
+
+fs::path model_cache_directory() {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg && *xdg && fs::path(xdg).is_absolute()) return fs::path(xdg) / "lrchain";
+  const char* home = std::getenv("HOME");
+  if (!home || !*home) throw std::runtime_error("cannot place the model cache: neither XDG_CACHE_HOME nor HOME is set");
+  return fs::path(home) / ".cache" / "lrchain";
+}
+
+void* open_verified_object(const CacheEntry& entry, fs::path* library) {
+  if (library) *library = entry.directory / entry.stem;
+  const Descriptor directory = open_cache_directory(false);
+  if (!directory) return nullptr;
+  std::string name;
+  const Descriptor object = verified_object(directory.get(), entry, &name);
+  if (!object) return nullptr;
+  if (library) *library = entry.directory / name;
+  // By its path (a /proc/self/fd/N name would be taken by dlopen for an earlier object that had the
+  // same descriptor number): only this user can change the directory between the check and the load.
+  return ::dlopen((entry.directory / name).c_str(), RTLD_NOW | RTLD_LOCAL);
+}
+
+bool has_verified_object(const CacheEntry& entry) {
+  const Descriptor directory = open_cache_directory(false);
+  std::string name;
+  return directory && verified_object(directory.get(), entry, &name);
+}
+
+int remove_stale_temporaries(const fs::path& directory) {
+  int removed = 0;
+  std::error_code ec;
+  for (fs::directory_iterator it(directory, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(".model-", 0) != 0) continue;
+    const std::size_t start = 7, stop = name.find('-', start);
+    if (stop == std::string::npos || stop == start || name.find_first_not_of("0123456789", start) != stop) continue;
+    const long pid = std::strtol(name.c_str() + start, nullptr, 10);
+    if (pid <= 0 || pid == ::getpid() || ::kill(pid_t(pid), 0) == 0 || errno != ESRCH) continue;
+    std::error_code removal;
+    if (!it->is_directory(removal) && fs::remove(it->path(), removal)) ++removed;
+  }
+  return removed;
+}
+
+void compile_into_entry(const std::string& source_text, const std::string& compiler, const std::vector<std::string>& options,
+                        const CacheEntry& entry, const std::string& what) {
+  const Descriptor directory = open_cache_directory(true);
+  remove_stale_temporaries(entry.directory);
+  std::random_device random;
+  const std::string stem = ".model-" + std::to_string(::getpid()) + "-" + std::to_string(random());
+  const fs::path source = entry.directory / (stem + ".cpp"), object = entry.directory / (stem + ".so");
+  write_new_file(directory.get(), stem + ".cpp", source_text, source);
+  ProcessOptions process;
+  process.capture_stderr = true;
+  std::vector<std::string> argv{compiler, "-std=c++17"};
+  argv.insert(argv.end(), options.begin(), options.end());
+  argv.insert(argv.end(), {"-fPIC", "-shared", "-o", object.string(), source.string()});
+  const ProcessResult r = run_program(argv, process);
+  std::error_code ec;
+  fs::remove(source, ec);
+  const auto fail = [&](const std::string& why) {
+    fs::remove(object, ec);
+    throw std::runtime_error(why);
+  };
+  if (!r.ok()) fail("compiling " + what + " failed: " + r.error_output.substr(0, r.error_output.find('\n')));
+  if (::fchmodat(directory.get(), (stem + ".so").c_str(), 0755, 0) != 0) fail("cannot set the mode of " + object.string());
+  std::size_t size = 0;
+  std::optional<std::string> digest;
+  {
+    const Descriptor compiled = open_cache_file(directory.get(), stem + ".so", kMaxObjectBytes, &size);
+    if (compiled) digest = content_sha256(compiled.get(), size);
+  }
+  if (!digest) fail("the compiler wrote no readable object for " + what);
+  const std::string name = object_name(entry, *digest);
+  if (::renameat(directory.get(), (stem + ".so").c_str(), directory.get(), name.c_str()) != 0)
+    fail("cannot place " + (entry.directory / name).string() + " in the model cache (" + std::strerror(errno) +
+         "); delete what is at that path");
+  // The manifest last, atomically: a reader sees the old entry or the complete new one.
+  write_new_file(directory.get(), stem + ".manifest", *digest + "\n", entry.directory / (stem + ".manifest"));
+  if (::renameat(directory.get(), (stem + ".manifest").c_str(), directory.get(), (entry.stem + ".manifest").c_str()) != 0) {
+    ::unlinkat(directory.get(), (stem + ".manifest").c_str(), 0);
+    throw InputError("cannot write the manifest " + (entry.directory / (entry.stem + ".manifest")).string() + " (" +
+                     std::strerror(errno) + "); delete what is at that path");
+  }
+  remove_superseded_objects(entry.directory, entry, name);
+}
+
+}  // namespace lrchain

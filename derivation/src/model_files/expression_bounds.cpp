@@ -1,0 +1,198 @@
+#include "expression_bounds.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <vector>
+
+namespace lrchain::derivation {
+
+namespace {
+
+// What is known of a subexpression: whether it is a number, its size (log10 of an upper bound of
+// numerator and denominator; parameters counted as up to 10), its value when it is a number, and
+// its degree in the fields.
+struct Bound {
+  bool number = false;
+  double digits = 0;   // log10 of the largest of |numerator|, denominator
+  double value = 0;    // its value (may be inf)
+  double degree = 0;   // upper bound on the degree of the polynomial it expands to
+};
+
+struct Broken : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::string text_of(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", v);
+  return buffer;
+}
+
+class Estimator {
+ public:
+  explicit Estimator(const std::string& text) : text_(text) {}
+
+  Bound run() {
+    const Bound b = sum();
+    return b;
+  }
+
+ private:
+  void skip() {
+    while (i_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[i_]))) ++i_;
+  }
+  bool take(char c) {
+    skip();
+    if (i_ < text_.size() && text_[i_] == c) {
+      ++i_;
+      return true;
+    }
+    return false;
+  }
+
+  static void check(const Bound& b) {
+    if (b.digits > kMaxNumberDigits)
+      throw Broken("a power that reaches about 10^" + text_of(b.digits) + " (more than " + text_of(kMaxNumberDigits) +
+                   " digits, parameters counted as up to 10) is too large for exact arithmetic");
+    if (b.degree > kMaxPolynomialDegree)
+      throw Broken("a power of degree " + text_of(b.degree) + " in the fields or arguments (more than " +
+                   text_of(kMaxPolynomialDegree) + "); forces are used to cubic order");
+  }
+
+  Bound sum() {
+    Bound b = product();
+    while (true) {
+      skip();
+      if (i_ >= text_.size() || (text_[i_] != '+' && text_[i_] != '-')) return b;
+      const bool minus = text_[i_++] == '-';
+      const Bound r = product();
+      b = {b.number && r.number, std::max(b.digits, r.digits) + 0.31, minus ? b.value - r.value : b.value + r.value,
+           std::max(b.degree, r.degree)};
+      check(b);
+    }
+  }
+
+  Bound product() {
+    Bound b = unary();
+    while (true) {
+      skip();
+      if (i_ >= text_.size() || (text_[i_] != '*' && text_[i_] != '/')) return b;
+      const bool divide = text_[i_++] == '/';
+      const Bound r = unary();
+      b = {b.number && r.number, b.digits + r.digits, divide ? b.value / r.value : b.value * r.value, b.degree + r.degree};
+      check(b);
+    }
+  }
+
+  Bound unary() {
+    if (take('-')) {
+      Bound b = unary();
+      b.value = -b.value;
+      return b;
+    }
+    if (take('+')) return unary();
+    return power();
+  }
+
+  // a^b (right-associative as GiNaC's parser reads it).
+  Bound power() {
+    const Bound base = primary();
+    if (!take('^')) return base;
+    const Bound exponent = unary();
+    return raise(base, exponent);
+  }
+
+  static Bound raise(const Bound& base, const Bound& exponent) {
+    Bound b;
+    if (exponent.number) {
+      const double e = std::isfinite(exponent.value) ? std::abs(exponent.value) : HUGE_VAL;
+      b.number = base.number;
+      b.digits = base.digits * e;
+      b.value = std::pow(base.value, exponent.value);
+      b.degree = base.degree * e;
+      // A number to a huge power, or a field to one: e itself may be the problem (x^(10^10)).
+      if (e > 1e6) b.digits = b.degree = HUGE_VAL;
+    } else {
+      b.degree = base.degree;  // a symbolic exponent (r^alpha): never expanded
+      b.digits = base.digits;
+    }
+    if (base.number && base.digits == 0 && std::abs(base.value) == 1) b.digits = b.degree = 0;  // 1^e, (-1)^e
+    check(b);
+    return b;
+  }
+
+  Bound primary() {
+    skip();
+    if (i_ >= text_.size()) return {};
+    const char c = text_[i_];
+    if (c == '(') {
+      ++i_;
+      const Bound b = sum();
+      take(')');
+      return b;
+    }
+    if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+      const std::size_t start = i_;
+      while (i_ < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[i_])) || text_[i_] == '.')) ++i_;
+      const std::string digits = text_.substr(start, i_ - start);
+      Bound b;
+      b.number = true;
+      b.digits = double(digits.size());
+      b.value = std::strtod(digits.c_str(), nullptr);
+      if (std::isfinite(b.value) && b.value > 0) b.digits = std::max(0.0, std::log10(b.value));
+      check(b);
+      return b;
+    }
+    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+      const std::size_t start = i_;
+      while (i_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[i_])) || text_[i_] == '_')) ++i_;
+      const std::string name = text_.substr(start, i_ - start);
+      // Fields (shift_*) have degree 1, a call of a named law (call_*) its cubic Taylor polynomial,
+      // a parameter or argument degree 0 and a value counted as up to 10.
+      if (!take('(')) {
+        if (name.rfind("shift_", 0) == 0) return {false, 0, 0, 1};
+        if (name.rfind("call_", 0) == 0) return {false, 0, 0, 3};
+        return {false, 1, 0, 0};
+      }
+      std::vector<Bound> arguments{sum()};
+      while (take(',')) arguments.push_back(sum());
+      take(')');
+      return call(name, arguments);
+    }
+    ++i_;  // anything else is GiNaC's parser's to refuse
+    return {};
+  }
+
+  static Bound call(const std::string& name, const std::vector<Bound>& a) {
+    if (name == "pow" && a.size() == 2) return raise(a[0], a[1]);
+    if ((name == "exp" || name == "sinh" || name == "cosh") && a[0].number &&
+        !(std::abs(a[0].value) <= kMaxExponentialArgument))
+      throw Broken(name + " of a number beyond " + text_of(kMaxExponentialArgument) + " overflows double precision");
+    // sqrt, exp, log, trigonometric: Taylor-expanded (degree 1 before expansion), or a number.
+    Bound b;
+    b.number = a[0].number;
+    b.digits = a[0].digits;
+    b.value = 1;
+    b.degree = a[0].degree > 0 ? 1 : 0;
+    if (name == "sqrt") b.degree = a[0].degree / 2;
+    return b;
+  }
+
+  const std::string& text_;
+  std::size_t i_ = 0;
+};
+
+}  // namespace
+
+std::string expression_bound_problem(const std::string& plain) {
+  try {
+    Estimator(plain).run();
+    return {};
+  } catch (const Broken& e) {
+    return e.what();
+  }
+}
+
+}  // namespace lrchain::derivation

@@ -1,0 +1,21 @@
+#pragma once
+// Every string of a model file (keys included) is one line of text: no control characters (C0,
+// DEL, so no newline, carriage return or NUL) and valid UTF-8 (docs/models.md).
+#include <string>
+#include <string_view>
+
+#include <toml++/toml.h>
+
+namespace lrchain::derivation {
+
+// Throws InputError "FILE:LINE: key K: ..." at the first key or string value of `root` (at any
+// depth, arrays included) that has a control character or is not valid UTF-8.
+void refuse_unsafe_strings(const toml::table& root, const std::string& file);
+
+// Why `text` is not one line of valid UTF-8 ("a control character (byte 0x0a)", ...), or "" when it is.
+std::string unsafe_string_reason(std::string_view text);
+
+// `text` for a one-line message: printable ASCII as is, every other byte as \xNN.
+std::string printable(std::string_view text);
+
+}  // namespace lrchain::derivation
