@@ -73,24 +73,28 @@ TEST_CASE("files of an earlier run in --out are kept and listed as stale_files i
 
 TEST_CASE("a huge --sites is blamed on --sites, not on --checkpoint-every or --switch-off-time") {
   const auto bright = run_lrchain(words("simulate bright --branch optical --theta pi/2 --sites 2000000001 --periods 200 "
-                                        "--checkpoint-every 100 --max-memory 1G"));
+                                        "--checkpoint-every 300 --max-memory 1G"));
   CHECK(bright.exit_code == 2);
   CHECK(bright.err.rfind("lrchain: invalid sites", 0) == 0);
-  const auto drive = run_lrchain(words("simulate drive --sites 2000000000 --t-end 100 --switch-off-time 50 --max-memory 1G"));
+  const auto drive = run_lrchain(words("simulate drive --sites 2000000000 --t-end 100 --switch-off-time 500 --front-fit-start 10 "
+                                         "--front-fit-end 90 --max-memory 1G"));
   CHECK(drive.exit_code == 2);
   CHECK(drive.err.rfind("lrchain: invalid sites", 0) == 0);
 }
 
 TEST_CASE("regime intervals on a branch with no real frequency is exit 2 saying so") {
   const fs::path dir = scratch("regime");
-  // F(r) = -r + r^3: omega^2 = -4 sin^2(theta/2) < 0 on all of (0, pi]: an unstable chain.
-  std::ofstream(dir / "unstable.toml") << "name = \"unstable\"\ndescription = \"negative stiffness\"\n\n[parameters]\n"
-                                          "b = { default = \"1\", description = \"cubic coefficient\" }\n\n"
-                                          "[functions.F]\nargument = \"r\"\nexpression = \"-r + b*r^3\"\n\n"
-                                          "[[field]]\nname = \"u\"\nmass = \"1\"\n"
-                                          "force = \"F(u[n+1] - u[n]) - F(u[n] - u[n-1])\"\n";
-  const auto r = run_lrchain(words("regime intervals --model " + (dir / "unstable.toml").string()));
+  // F(r) = k r + b r^3 with k = -1 set on the command line (the file's default k = 1 loads):
+  // omega^2 = 4 k sin^2(theta/2) < 0 on all of (0, pi], an unstable chain.
+  std::ofstream(dir / "soft.toml") << "name = \"soft\"\ndescription = \"negative stiffness\"\n\n[parameters]\n"
+                                      "k = { default = \"1\", description = \"linear stiffness\" }\n"
+                                      "b = { default = \"1\", description = \"cubic coefficient\" }\n\n"
+                                      "[functions.F]\nargument = \"r\"\nexpression = \"k*r + b*r^3\"\n\n"
+                                      "[[field]]\nname = \"u\"\nmass = \"1\"\n"
+                                      "force = \"F(u[n+1] - u[n]) - F(u[n] - u[n-1])\"\n";
+  const auto r = run_lrchain(words("regime intervals --model " + (dir / "soft.toml").string() + " --set k=-1"));
   CHECK(r.exit_code == 2);
+  CAPTURE(r.err);
   CHECK(r.err.find("no real positive frequency") != std::string::npos);
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   CHECK(r.out.empty());

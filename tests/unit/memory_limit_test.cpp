@@ -71,10 +71,10 @@ TEST_CASE("available_memory: cgroup v1 memory.limit_in_bytes, also where the gro
 TEST_CASE("CLI: a 9.4 GB bright run under a 6 GB RLIMIT_AS is exit 2 naming --sites, at once") {
   using namespace lrchain::test;
   if (!lrchain::program_in_path("prlimit")) return;  // util-linux
-  // 13.2e6 strain sites: ~9.4 GB by estimate_lattice_run (rkf78: ~700 bytes a site).
+  // 10.3e6 strain sites: ~9.3 GB by estimate_lattice_run (rkf78: ~900 bytes a site).
   const auto start = std::chrono::steady_clock::now();
   const auto r = run_command({"prlimit", "--as=6000000000", "--", LRCHAIN_CLI, "simulate", "bright", "--branch", "optical",
-                              "--theta", "pi/2", "--sites", "13200001", "--periods", "1", "--stepper", "rkf78"});
+                              "--theta", "pi/2", "--sites", "10300001", "--periods", "1", "--stepper", "rkf78"});
   CHECK(r.exit_code == 2);
   CHECK(r.err.find("invalid sites") != std::string::npos);
   CHECK(r.err.find("RLIMIT_AS") != std::string::npos);
