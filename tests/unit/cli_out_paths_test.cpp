@@ -14,18 +14,14 @@
 #include <string>
 
 #include "../support/run_lrchain.hpp"
+#include "../support/scratch_dir.hpp"
 
 using namespace lrchain::test;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("lrchain-out-paths-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return lrchain::test::scratch_directory("out-paths-" + name); }
 
 const std::string kSmallBright = "simulate bright --branch optical --theta pi/2 --sites 101 --periods 2 --no-figures ";
 

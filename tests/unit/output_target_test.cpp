@@ -15,6 +15,7 @@
 #include <string>
 
 #include "../support/run_lrchain.hpp"
+#include "../support/scratch_dir.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/output_target.hpp"
 #include "lrchain/sim/checkpoint.hpp"
@@ -26,12 +27,7 @@ using namespace lrchain;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("lrchain-target-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return lrchain::test::scratch_directory("target-" + name); }
 
 // The three kinds of non-regular target made in `dir` under `name` (a FIFO, a directory, a
 // symbolic link to /dev/null), each checked by `still_there` after the writer ran.
