@@ -628,10 +628,12 @@ void run_model_map(const MapArgs& a, const Model& m) {
   validate_map_output(a, double(plan.branches.size()));
   const fs::path dir(a.out);
   const sim::OutputLock lock(dir);
+  const sim::OutputListing earlier = sim::list_output_files(dir);  // files of an earlier run
   sim::Figures figures(dir);
   json out = map_model(a, m, plan, dir, figures);
   out["out"] = fs::absolute(dir).string();
   figures.finish(out);
+  sim::record_stale_files(dir, earlier, out);
   out["provenance"] = provenance_json();
   std::cout << out.dump(2) << '\n';
 }
@@ -640,6 +642,7 @@ void run_map(const MapArgs& a) {
   validate_map(a);
   const fs::path dir(a.out);
   const sim::OutputLock lock(dir);
+  const sim::OutputListing earlier = sim::list_output_files(dir);  // files of an earlier run
   sim::Figures figures(dir);
   json out;
   if (a.plane == "theta-rho")
@@ -659,6 +662,7 @@ void run_map(const MapArgs& a) {
   out["out"] = fs::absolute(dir).string();
   out["model"] = model_json(resonant_chain_model(a.p));
   figures.finish(out);
+  sim::record_stale_files(dir, earlier, out);
   out["provenance"] = provenance_json();
   std::cout << out.dump(2) << '\n';
 }

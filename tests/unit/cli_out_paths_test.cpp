@@ -67,6 +67,16 @@ TEST_CASE("files of an earlier run in --out are kept and listed as stale_files i
   fs::remove_all(dir);
 }
 
+TEST_CASE("regime map lists the files of an earlier run in --out as stale_files") {
+  const fs::path dir = scratch("stale-map");
+  std::ofstream(dir / "old_map.csv") << "x\n";
+  const auto r = run_lrchain(words("regime map --nx 40 --ny 40 --no-curves --no-figures --out " + dir.string()));
+  REQUIRE(r.exit_code == 0);
+  CHECK(nlohmann::json::parse(r.out)["stale_files"] == nlohmann::json::array({"old_map.csv"}));
+  CHECK(fs::exists(dir / "old_map.csv"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a huge --sites is blamed on --sites, not on --checkpoint-every or --switch-off-time") {
   const auto bright = run_lrchain(words("simulate bright --branch optical --theta pi/2 --sites 2000000001 --periods 200 "
                                         "--checkpoint-every 300 --max-memory 1G"));
