@@ -45,17 +45,10 @@ namespace fs = std::filesystem;
 
 // ---- output helpers -------------------------------------------------------------------------
 
-// Writes text to dir/name through a temporary name and a rename (never a truncated result).
+// Writes text to dir/name through a temporary name and a rename (never a truncated result, never
+// over a device, FIFO or directory: sim::write_file_atomic).
 void write_file(const fs::path& dir, const std::string& name, const std::string& text) {
-  const fs::path target = dir / name;
-  const fs::path tmp = dir / ("." + name + ".tmp" + std::to_string(::getpid()));
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    out << text;
-    if (!out.flush()) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, target);
+  sim::write_file_atomic(dir, name, text);
 }
 
 json interval_json(const FocusingInterval& i) {
@@ -155,6 +148,19 @@ Index model_branch(const Model& m, const std::string& name) {
   return m.branch("optical");
 }
 
+// Refuses (InvalidParameter("branch")) a branch with no real positive frequency at any of `samples`
+// thetas in (0, pi] (regime_functions is NaN there: omega^2 <= 0, an unstable lattice at these
+// parameters): it has no regimes, and an empty list of intervals would read as "defocusing".
+void refuse_branch_without_real_frequency(const Model& model, Index branch, int samples) {
+  const RegimeFunctions f = regime_functions(model, branch);
+  for (int k = 1; k <= samples; ++k)
+    if (!std::isnan(f(M_PI * double(k) / double(samples)).curvature)) return;
+  const std::string& name = model.definition().branch_names[static_cast<std::size_t>(branch)];
+  throw InvalidParameter("branch", "branch '" + name + "' of model '" + model.name() +
+                                       "' has no real positive frequency on (0, pi] at these parameters (omega^2 <= 0: "
+                                       "the lattice is unstable), so it has no focusing or defocusing regimes");
+}
+
 void run_intervals(const IntervalsArgs& a, const CLI::App& cmd) {
   if (a.model.file.empty()) validate(a.p);  // the resonant chain's own messages
   const Model model = load_selected_model(a.model, cmd, a.p);
@@ -167,6 +173,7 @@ void run_intervals(const IntervalsArgs& a, const CLI::App& cmd) {
     out = {{"branch", std::string(to_string(b))}};
   } else {
     const Index b = model_branch(model, a.branch);
+    refuse_branch_without_real_frequency(model, b, a.samples);
     s = regime_structure(regime_functions(model, b), {a.samples, 1e-12});
     out = {{"branch", model.definition().branch_names[static_cast<std::size_t>(b)]}};
   }
@@ -623,10 +630,12 @@ void run_model_map(const MapArgs& a, const Model& m) {
   validate_map_output(a, double(plan.branches.size()));
   const fs::path dir(a.out);
   const sim::OutputLock lock(dir);
+  const sim::OutputListing earlier = sim::list_output_files(dir);  // files of an earlier run
   sim::Figures figures(dir);
   json out = map_model(a, m, plan, dir, figures);
   out["out"] = fs::absolute(dir).string();
   figures.finish(out);
+  sim::record_stale_files(dir, earlier, out);
   out["provenance"] = provenance_json();
   std::cout << out.dump(2) << '\n';
 }
@@ -635,6 +644,7 @@ void run_map(const MapArgs& a) {
   validate_map(a);
   const fs::path dir(a.out);
   const sim::OutputLock lock(dir);
+  const sim::OutputListing earlier = sim::list_output_files(dir);  // files of an earlier run
   sim::Figures figures(dir);
   json out;
   if (a.plane == "theta-rho")
@@ -654,6 +664,7 @@ void run_map(const MapArgs& a) {
   out["out"] = fs::absolute(dir).string();
   out["model"] = model_json(resonant_chain_model(a.p));
   figures.finish(out);
+  sim::record_stale_files(dir, earlier, out);
   out["provenance"] = provenance_json();
   std::cout << out.dump(2) << '\n';
 }

@@ -25,6 +25,7 @@
 #include "figure_format_option.hpp"
 #include "lrchain/sim/result_hdf5.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/output_target.hpp"
 #include "lrchain/sim/bright_outputs.hpp"
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/output_files.hpp"
@@ -106,13 +107,30 @@ void refuse_earlier_checkpoint(const Config& cfg) {
                                              cfg.checkpoint_file + ", or move it away, or choose another --out");
 }
 
-// Refuses (exit 2) a checkpoint path that is a directory, an --out that is not a directory or
+// Refuses (exit 2) a checkpoint path that is a directory, a device, FIFO or socket, or in a
+// directory that does not exist (other than --out), an --out that is not a directory or
 // where the run's output would not fit, before anything is written.
 template <class Config>
 void check_output(const Config& cfg, const std::string& out) {
   std::error_code ec;
-  if (!cfg.checkpoint_file.empty() && std::filesystem::is_directory(cfg.checkpoint_file, ec))
-    throw InvalidParameter("checkpoint", "'" + cfg.checkpoint_file + "' is a directory; give a file name");
+  if (!cfg.checkpoint_file.empty()) {
+    namespace fs = std::filesystem;
+    if (fs::is_directory(cfg.checkpoint_file, ec))
+      throw InvalidParameter("checkpoint", "'" + cfg.checkpoint_file + "' is a directory; give a file name");
+    try {
+      check_output_target(cfg.checkpoint_file);
+    } catch (const InputError& e) {
+      throw InvalidParameter("checkpoint", e.what());
+    }
+    // Its directory must exist (nothing is created for it), unless it is --out, which the run makes.
+    const fs::path file(cfg.checkpoint_file);
+    const fs::path directory = file.has_parent_path() ? file.parent_path() : fs::path(".");
+    const bool is_out = !out.empty() && (directory == fs::path(out) || fs::weakly_canonical(directory, ec) ==
+                                                                           fs::weakly_canonical(fs::path(out), ec));
+    if (!is_out && !fs::is_directory(directory, ec))
+      throw InvalidParameter("checkpoint", "the directory '" + directory.string() + "' of '" + cfg.checkpoint_file +
+                                               "' does not exist; create it first (lrchain creates only --out)");
+  }
   if (out.empty()) return;
   if (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
     throw InputError("--out '" + out + "' exists and is not a directory");
@@ -180,6 +198,7 @@ void run_and_report(const Config& cfg, const std::string& out, const ReportStyle
   std::optional<sim::OutputLock> lock;  // one run per --out, taken after validation
   if (!out.empty()) lock.emplace(out);
   refuse_earlier_checkpoint(cfg);  // (after the lock: a run still writing it is named by the lock)
+  const sim::OutputListing earlier = out.empty() ? sim::OutputListing{} : sim::list_output_files(out);
   StopSignals signals;
   ProgressBar bar;
   const sim::RunControl control = make_control(bar);
@@ -191,6 +210,12 @@ void run_and_report(const Config& cfg, const std::string& out, const ReportStyle
   if (!out.empty()) {
     j["out"] = out;
     j["figures"] = style.format == "hdf5" ? sim::write_hdf5_outputs(out, r, j) : write(out, r, j, style.figures);
+    // Files of an earlier run this one did not write (never its checkpoint or restart file).
+    std::vector<std::string> keep;
+    for (const std::string& f : {cfg.checkpoint_file, cfg.restart_file})
+      if (!f.empty() && std::filesystem::path(f).parent_path() == std::filesystem::path(out))
+        keep.push_back(std::filesystem::path(f).filename().string());
+    sim::record_stale_files(out, earlier, j, keep);
   }
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::cout << (style.compact_json ? j.dump() : j.dump(2)) << std::endl;

@@ -34,11 +34,12 @@ void run_and_report_model_bright(const ModelSelection& selection, const Model& m
   const sim::ModelBrightAnsatz check(model, kernels, c.branch, c.theta, c.detuning, c.n0);  // focusing, detuning
   std::optional<sim::OutputLock> lock;  // (refuses an --out that is not a directory)
   if (!out.empty()) lock.emplace(out);
+  const sim::OutputListing earlier = out.empty() ? sim::OutputListing{} : sim::list_output_files(out);
   const sim::ModelBrightResult r = run_until_signal([&](const std::atomic<bool>* stop) {
     c.stop = stop;
     return sim::run_model_bright(model, kernels, c);
   });
-  print_model_run(sim::to_json(model, c, r), model, code, name, out, output, wall0, [&](const nlohmann::json& summary) {
+  print_model_run(sim::to_json(model, c, r), model, code, name, out, output, wall0, earlier, [&](const nlohmann::json& summary) {
     return sim::write_model_bright_outputs(out, r, summary, *output.figures);
   });
 }

@@ -47,11 +47,12 @@ void run_and_report_ring(const ModelSelection& selection, const Model& model, si
   sim::bloch_mode(model, kernels, run.branch, run.theta);
   std::optional<sim::OutputLock> lock;  // (refuses an --out that is not a directory)
   if (!out.empty()) lock.emplace(out);
+  const sim::OutputListing earlier = out.empty() ? sim::OutputListing{} : sim::list_output_files(out);
   const sim::RingRunResult r = run_until_signal([&](const std::atomic<bool>* stop) {
     run.stop = stop;
     return sim::run_ring(model, kernels, run);
   });
-  print_model_run(sim::to_json(model, run, r), model, code, name, out, output, wall0, [&](const nlohmann::json& summary) {
+  print_model_run(sim::to_json(model, run, r), model, code, name, out, output, wall0, earlier, [&](const nlohmann::json& summary) {
     return sim::write_ring_outputs(out, r, summary, *output.figures);
   });
 }

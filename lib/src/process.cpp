@@ -1,10 +1,12 @@
-// Spawning programs with an argv (process.hpp): posix_spawnp, optional pipes, no shell.
+// Spawning programs with an argv (process.hpp): fork + execve, optional pipes, no shell; the child
+// dies with its parent (PR_SET_PDEATHSIG).
 #include "lrchain/process.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <spawn.h>
+#include <pthread.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -71,53 +73,129 @@ void drain(int out_fd, int err_fd, std::string& out, std::string& err) {
 
 }  // namespace
 
+namespace {
+
+// Where execvp would look for `program`: itself when it has a '/', else each PATH directory
+// (the caller's PATH; "." for an empty entry), in order.
+std::vector<std::string> program_candidates(const std::string& program) {
+  if (program.find('/') != std::string::npos) return {program};
+  const char* path = std::getenv("PATH");
+  const std::string dirs = path ? path : "/usr/bin:/bin";
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= dirs.size()) {
+    const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+    out.push_back((end > start ? dirs.substr(start, end - start) : std::string(".")) + "/" + program);
+    start = end + 1;
+  }
+  return out;
+}
+
+// In the forked child (async-signal-safe calls only): reports errno on `error_fd` and exits 127.
+[[noreturn]] void child_fails(int error_fd) {
+  const int e = errno;
+  [[maybe_unused]] const ssize_t w = ::write(error_fd, &e, sizeof e);
+  ::_exit(127);
+}
+
+// In the forked child: puts `path` opened with `flags` at descriptor `fd`.
+void open_at(const char* path, int flags, int fd, int error_fd) {
+  const int opened = ::open(path, flags | O_CLOEXEC, 0644);
+  if (opened < 0 || ::dup2(opened, fd) < 0) child_fails(error_fd);
+  ::close(opened);
+}
+
+}  // namespace
+
+// fork, then in the child (async-signal-safe calls only, everything allocated before the fork):
+// default signal dispositions, the process group, PR_SET_PDEATHSIG, directory, descriptors, the
+// caller's signal mask emptied, execve over the PATH candidates. An exec failure's errno comes
+// back through a close-on-exec pipe, so a program that cannot start is an exception here.
 ChildProcess::ChildProcess(const std::vector<std::string>& argv_in, const ProcessOptions& o) {
   if (argv_in.empty()) throw std::invalid_argument("run_program: empty argv");
-  std::vector<std::string> args = argv_in, env = child_environment(o);
+  std::vector<std::string> args = argv_in, env = child_environment(o), programs = program_candidates(argv_in[0]);
   auto argv = c_strings(args), envp = c_strings(env);
+  const std::string directory = o.working_directory.string();
+  const std::string out_file = o.stdout_file ? o.stdout_file->string() : std::string();
+  const std::string err_file = o.stderr_file ? o.stderr_file->string() : std::string();
 
-  int out_pipe[2] = {-1, -1}, err_pipe[2] = {-1, -1};
-  if (o.capture_stdout && ::pipe2(out_pipe, O_CLOEXEC) != 0) throw std::runtime_error("pipe failed");
-  if (o.capture_stderr && ::pipe2(err_pipe, O_CLOEXEC) != 0) throw std::runtime_error("pipe failed");
-
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  if (!o.working_directory.empty())
-    posix_spawn_file_actions_addchdir_np(&fa, o.working_directory.c_str());
-  if (o.stdin_null) posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-  if (o.capture_stdout) posix_spawn_file_actions_adddup2(&fa, out_pipe[1], 1);
-  else if (o.stdout_file)
-    posix_spawn_file_actions_addopen(&fa, 1, o.stdout_file->c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (o.capture_stderr) posix_spawn_file_actions_adddup2(&fa, err_pipe[1], 2);
-  else if (o.stderr_file)
-    posix_spawn_file_actions_addopen(&fa, 2, o.stderr_file->c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-
-  // The child starts with default signal dispositions and an empty mask, whatever the caller set.
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  sigset_t all, none;
-  sigfillset(&all);
-  sigemptyset(&none);
-  posix_spawnattr_setsigdefault(&attr, &all);
-  posix_spawnattr_setsigmask(&attr, &none);
-  short flags = POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK;
-  if (o.own_process_group) {
-    posix_spawnattr_setpgroup(&attr, 0);  // a new group whose id is the child's pid
-    flags |= POSIX_SPAWN_SETPGROUP;
-  }
-  posix_spawnattr_setflags(&attr, flags);
-
-  pid_t pid = -1;
-  const int rc = ::posix_spawnp(&pid, argv[0], &fa, &attr, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&fa);
-  posix_spawnattr_destroy(&attr);
-  for (int fd : {out_pipe[1], err_pipe[1]})
-    if (fd >= 0) ::close(fd);
-  if (rc != 0) {
-    for (int fd : {out_pipe[0], err_pipe[0]})
+  int out_pipe[2] = {-1, -1}, err_pipe[2] = {-1, -1}, error_pipe[2] = {-1, -1};
+  const auto close_all = [&] {
+    for (int fd : {out_pipe[0], out_pipe[1], err_pipe[0], err_pipe[1], error_pipe[0], error_pipe[1]})
       if (fd >= 0) ::close(fd);
-    throw std::runtime_error("cannot start '" + argv_in[0] + "': " + std::strerror(rc));
+  };
+  if ((o.capture_stdout && ::pipe2(out_pipe, O_CLOEXEC) != 0) ||
+      (o.capture_stderr && ::pipe2(err_pipe, O_CLOEXEC) != 0) || ::pipe2(error_pipe, O_CLOEXEC) != 0) {
+    close_all();
+    throw std::runtime_error("pipe failed");
   }
+
+  // No signal handler of the caller may run in the child before it resets them.
+  sigset_t all, caller_mask;
+  sigfillset(&all);
+  ::pthread_sigmask(SIG_SETMASK, &all, &caller_mask);
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int error_fd = error_pipe[1];
+    struct sigaction default_action {};
+    default_action.sa_handler = SIG_DFL;
+    for (int signal_number = 1; signal_number < NSIG; ++signal_number)
+      ::sigaction(signal_number, &default_action, nullptr);  // (fails harmlessly for KILL, STOP)
+    if (o.own_process_group && ::setpgid(0, 0) != 0) child_fails(error_fd);
+    // Dies with the thread that started it (the caller waits for it there): a SIGKILLed lrchain
+    // leaves no child writing into its outputs. If the parent is already gone, stop here.
+    if (::prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) child_fails(error_fd);
+    if (::getppid() != parent) ::_exit(127);
+    if (!directory.empty() && ::chdir(directory.c_str()) != 0) child_fails(error_fd);
+    if (o.stdin_null) open_at("/dev/null", O_RDONLY, 0, error_fd);
+    if (o.capture_stdout) {
+      if (::dup2(out_pipe[1], 1) < 0) child_fails(error_fd);
+    } else if (o.stdout_file) {
+      open_at(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 1, error_fd);
+    }
+    if (o.capture_stderr) {
+      if (::dup2(err_pipe[1], 2) < 0) child_fails(error_fd);
+    } else if (o.stderr_file) {
+      open_at(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 2, error_fd);
+    }
+    sigset_t none;
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
+    // execvp's search: go on past a candidate that is missing or not executable.
+    int failure = ENOENT;
+    for (const auto& program : programs) {
+      ::execve(program.c_str(), argv.data(), envp.data());
+      if (errno != ENOENT && errno != ENOTDIR) failure = errno;
+      if (errno != ENOENT && errno != ENOTDIR && errno != EACCES) break;
+    }
+    errno = failure;
+    child_fails(error_fd);
+  }
+  const int fork_errno = errno;
+  ::pthread_sigmask(SIG_SETMASK, &caller_mask, nullptr);
+  for (int* fd : {&out_pipe[1], &err_pipe[1], &error_pipe[1]})
+    if (*fd >= 0) {
+      ::close(*fd);
+      *fd = -1;
+    }
+  int child_errno = 0;
+  if (pid > 0) {
+    ssize_t n;
+    while ((n = ::read(error_pipe[0], &child_errno, sizeof child_errno)) < 0 && errno == EINTR) {
+    }
+    if (n != ssize_t(sizeof child_errno)) child_errno = 0;  // closed by the exec: started
+  }
+  ::close(error_pipe[0]);
+  error_pipe[0] = -1;
+  if (pid < 0 || child_errno != 0) {
+    if (pid > 0)
+      while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+      }
+    close_all();
+    throw std::runtime_error("cannot start '" + argv_in[0] + "': " + std::strerror(pid < 0 ? fork_errno : child_errno));
+  }
+  if (o.own_process_group) ::setpgid(pid, pid);  // (also in the child: whichever runs first)
   pid_ = pid;
   own_group_ = o.own_process_group;
   out_fd_ = out_pipe[0];

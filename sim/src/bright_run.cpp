@@ -332,7 +332,7 @@ BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const 
   };
 
   const auto start = std::chrono::steady_clock::now();
-  S.stats = integrate_observed(chain, s, times, observe, S.integrator, at_boundary, resume_step);
+  S.stats = integrate_observed(chain, s, times, observe, S.integrator, at_boundary, resume_step, control.stop);
   S.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() +
                     (S.step_choice ? S.step_choice->probe_seconds : 0.0);  // the probe is integration too
   S.stats.steps += static_cast<Index>(sink.base_steps);

@@ -3,8 +3,9 @@
 // The file checksum is Boost.CRC's crc_32_type (the CRC of zip and PNG): it detects every error
 // burst up to 32 bits and every odd number of flipped bits, which a multiplicative hash such as
 // FNV does not guarantee; accidental corruption (a torn copy, a flipped bit) is what it must catch.
-// The identity and initial-state hashes are fingerprints, not error detectors: FNV-1a with 64 bits
-// keeps accidental collisions between different runs negligible.
+// The identity and initial-state hashes are SHA-256 (lrchain/sha256.hpp, OpenSSL's libcrypto): a
+// checkpoint is continued only by the run it was written for, and no crafted file can pass for
+// another run's. Format 2 (FNV-1a 64 fingerprints, lrchain 0.1) is refused with a message saying so.
 #include "lrchain/sim/checkpoint.hpp"
 
 #include <unistd.h>
@@ -22,6 +23,8 @@
 #include <type_traits>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/output_target.hpp"
+#include "lrchain/sha256.hpp"
 
 #ifndef LRCHAIN_VERSION
 #error "LRCHAIN_VERSION must be defined (sim/CMakeLists.txt passes the CMake project version)"
@@ -34,7 +37,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr char kMagic[8] = {'L', 'R', 'C', 'K', 'P', 'T', '\r', '\n'};
-constexpr std::uint32_t kFormatVersion = 2;
+constexpr std::uint32_t kFormatVersion = 3;
 constexpr std::uint64_t kMaxText = 1u << 20;  // identity and progress texts are a few hundred bytes
 
 // Appends the bytes of trivially copyable values and length-prefixed arrays to a buffer.
@@ -201,16 +204,6 @@ std::uint32_t file_crc(std::ifstream& in, std::uint64_t n) {
 
 }  // namespace
 
-std::uint64_t fnv1a64(const void* data, std::size_t size) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < size; ++i) {
-    h ^= p[i];
-    h *= 0x100000001b3ull;
-  }
-  return h;
-}
-
 void TrajectoryIdentity::add(const std::string& key, double value) {
   items_.emplace_back(key, fmt::format("{}", value));
 }
@@ -229,7 +222,8 @@ void TrajectoryIdentity::add(const std::string& key, long value, ShownAs shown) 
   shown_.emplace_back(key, std::move(shown));
 }
 void TrajectoryIdentity::add_state_hash(const std::string& key, const State& state) {
-  items_.emplace_back(key, fmt::format("fnv1a64:{:016x}", fnv1a64(state.data(), state.size() * sizeof(double))));
+  const std::string_view bytes(reinterpret_cast<const char*>(state.data()), state.size() * sizeof(double));
+  items_.emplace_back(key, "sha256:" + sha256_hex(bytes));
 }
 
 std::string TrajectoryIdentity::text() const {
@@ -266,11 +260,12 @@ fs::path temporary_name(const fs::path& file) {
 }
 
 void write_checkpoint(const fs::path& file, const Checkpoint& c, const RunRecord& record) {
+  check_output_target(file);
   Writer w;
   w.bytes.append(kMagic, 8);
   w.put(kFormatVersion);
   w.put_string(c.identity);
-  w.put(fnv1a64(c.identity.data(), c.identity.size()));
+  w.put(sha256(c.identity));
   std::string progress = "t = " + hex_double(c.t) + "\nnext_step = " + hex_double(c.next_step) +
                          "\nsteps = " + std::to_string(c.steps) +
                          "\nrhs_evaluations = " + std::to_string(c.rhs_evaluations) + "\n";
@@ -316,6 +311,9 @@ Checkpoint read_checkpoint(const fs::path& file) {
   r.read_bytes(magic, 8, "magic");
   if (std::memcmp(magic, kMagic, 8) != 0) r.fail("no checkpoint magic at its start");
   const auto version = r.get<std::uint32_t>("format version");
+  if (version == 2)
+    r.fail("format version 2, written by lrchain 0.1 with FNV-1a fingerprints; this lrchain writes and reads "
+           "version 3 (SHA-256) only: run again without --restart");
   if (version != kFormatVersion)
     r.fail(fmt::format("format version {} (this lrchain reads version {})", version, kFormatVersion));
 
@@ -331,8 +329,8 @@ Checkpoint read_checkpoint(const fs::path& file) {
 
   Checkpoint c;
   c.identity = r.get_string("identity");
-  const auto identity_hash = r.get<std::uint64_t>("identity hash");
-  if (identity_hash != fnv1a64(c.identity.data(), c.identity.size())) r.fail("identity hash mismatch");
+  const auto identity_hash = r.get<Sha256Digest>("identity hash");
+  if (identity_hash != sha256(c.identity)) r.fail("identity hash (SHA-256) mismatch");
   std::vector<std::pair<std::string, std::string>> items;
   if (!parse_lines(c.identity, items)) r.fail("malformed identity lines");
   const std::string progress = r.get_string("progress");

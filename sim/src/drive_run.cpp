@@ -251,7 +251,7 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   };
 
   const auto start = std::chrono::steady_clock::now();
-  S.stats = integrate_observed(chain, s, times, observe, c.integrator, at_boundary, resume_step);
+  S.stats = integrate_observed(chain, s, times, observe, c.integrator, at_boundary, resume_step, control.stop);
   S.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   S.stats.steps += static_cast<Index>(sink.base_steps);
   S.stats.rhs_evaluations += static_cast<Index>(sink.base_rhs_evaluations);

@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/output_target.hpp"
 #include "lrchain/sim/checkpoint.hpp"
 
 namespace lrchain::sim {
@@ -78,7 +79,7 @@ Hdf5TreeFile::Hdf5TreeFile(const std::filesystem::path& path) : state_(std::make
   const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
   if (!std::filesystem::is_directory(directory, ec))
     throw InputError(path.string() + ": the directory " + directory.string() + " does not exist");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a file name");
+  check_output_target(path);  // a directory, device, FIFO or socket is never replaced
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // failures are reported through exceptions
   state_->path = path;
   state_->temporary = temporary_name(path);
@@ -130,6 +131,7 @@ void Hdf5TreeFile::commit() {
   check(H5Fflush(state_->file, H5F_SCOPE_GLOBAL), "flush '" + state_->temporary.string() + "'");
   check(H5Fclose(state_->file), "close '" + state_->temporary.string() + "'");
   state_->file = -1;
+  check_output_target(state_->path);  // (it may have been made a FIFO since the constructor)
   std::error_code ec;
   std::filesystem::rename(state_->temporary, state_->path, ec);
   if (ec) throw std::runtime_error("cannot rename " + state_->temporary.string() + " to " + state_->path.string() + ": " + ec.message());

@@ -254,9 +254,9 @@ ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_ker
         }
     };
     const DrivenEndsLattice driven(kernels, parameters, sites, chain.form(), end_motion);
-    r.stats = integrate_observed(driven, s, times, observe, options, poll_stop);
+    r.stats = integrate_observed(driven, s, times, observe, options, poll_stop, 0, c.stop);
   } else {
-    r.stats = integrate_observed(chain, s, times, observe, options, poll_stop);
+    r.stats = integrate_observed(chain, s, times, observe, options, poll_stop, 0, c.stop);
   }
   if (r.stats.stopped) throw Interrupted(SIGINT, fmt::format("interrupted at t = {}", r.stats.t_reached));
   r.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

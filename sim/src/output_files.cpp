@@ -1,7 +1,10 @@
 // Atomic output files (temp name + rename), CSV, gnuplot binary matrices, figures drawn by gnuplot.
 #include "lrchain/sim/output_files.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <algorithm>
 
 #include <atomic>
 #include <charconv>
@@ -15,6 +18,7 @@
 #include <stdexcept>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/output_target.hpp"
 #include "lrchain/sim/figure_format.hpp"
 #include "lrchain/process.hpp"
 
@@ -33,8 +37,15 @@ namespace {
 fs::path temp_name(const fs::path& dir, const std::string& name) {
   return dir / ("." + name + ".tmp." + std::to_string(::getpid()));
 }
+// Renames tmp to dir/name, unless dir/name is not a regular file (check_output_target).
 void commit(const fs::path& tmp, const fs::path& dir, const std::string& name) {
   std::error_code ec;
+  try {
+    check_output_target(dir / name);
+  } catch (...) {
+    fs::remove(tmp, ec);
+    throw;
+  }
   fs::rename(tmp, dir / name, ec);
   if (ec) {
     fs::remove(tmp, ec);
@@ -44,6 +55,7 @@ void commit(const fs::path& tmp, const fs::path& dir, const std::string& name) {
 }  // namespace
 
 void write_file_atomic(const fs::path& dir, const std::string& name, const std::string& content) {
+  check_output_target(dir / name);
   const fs::path tmp = temp_name(dir, name);
   {
     std::ofstream f(tmp, std::ios::binary);
@@ -78,6 +90,7 @@ void write_snapshot_csv(const fs::path& dir, const std::string& name, const Snap
 }
 
 void write_spacetime_binary(const fs::path& dir, const std::string& name, const SpaceTime& f) {
+  check_output_target(dir / name);
   const fs::path tmp = temp_name(dir, name);
   {
     std::ofstream out(tmp, std::ios::binary);
@@ -185,6 +198,7 @@ std::string last_line(const std::string& text) {
 // Runs `gnuplot -e "outfile='<tmp>'" <script>` inside dir_ (argv, no shell), then renames tmp to png.
 Figures::Outcome Figures::render(const std::string& script, const std::string& png) const {
   Outcome o{png, false, {}};
+  check_output_target(dir_ / png);  // (refused even where gnuplot would not draw it)
   if (!gnuplot_found_) {
     o.failure = "gnuplot is not installed";
     return o;
@@ -316,6 +330,54 @@ std::vector<std::string> write_run_outputs(const fs::path& dir, const RunRecord&
   drawing.finish(summary);
   write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
   return drawing.drawn();
+}
+
+namespace {
+// Device and inode of a path (not following a final symbolic link); false if it cannot be read.
+bool identity_of(const fs::path& file, OutputListing::Entry& e) {
+  struct stat st {};
+  if (::lstat(file.c_str(), &st) != 0) return false;
+  e.device = static_cast<unsigned long long>(st.st_dev);
+  e.inode = static_cast<unsigned long long>(st.st_ino);
+  return true;
+}
+}  // namespace
+
+OutputListing list_output_files(const fs::path& dir) {
+  OutputListing listing;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    OutputListing::Entry e;
+    e.name = it->path().filename().string();
+    if (e.name.empty() || e.name[0] == '.' || !it->is_regular_file(ec)) continue;
+    if (identity_of(it->path(), e)) listing.files.push_back(std::move(e));
+  }
+  return listing;
+}
+
+std::vector<std::string> files_not_rewritten(const fs::path& dir, const OutputListing& before,
+                                             const std::vector<std::string>& keep) {
+  std::vector<std::string> stale;
+  for (const auto& old : before.files) {
+    if (std::find(keep.begin(), keep.end(), old.name) != keep.end()) continue;
+    OutputListing::Entry now;
+    if (identity_of(dir / old.name, now) && now.device == old.device && now.inode == old.inode)
+      stale.push_back(old.name);
+  }
+  std::sort(stale.begin(), stale.end());
+  return stale;
+}
+
+void record_stale_files(const fs::path& dir, const OutputListing& before, nlohmann::json& summary,
+                        const std::vector<std::string>& keep) {
+  summary["stale_files"] = files_not_rewritten(dir, before, keep);
+  std::error_code ec;
+  if (!fs::is_regular_file(dir / "summary.json", ec)) return;
+  std::ifstream in(dir / "summary.json");
+  nlohmann::json written = nlohmann::json::parse(in, nullptr, false);
+  if (!written.is_object()) return;
+  written["stale_files"] = summary["stale_files"];
+  write_file_atomic(dir, "summary.json", written.dump(2) + "\n");
 }
 
 }  // namespace lrchain::sim

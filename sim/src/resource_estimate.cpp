@@ -2,6 +2,7 @@
 // (resource_estimate.hpp). Every formula is an upper estimate of the dominant terms, in bytes.
 #include "lrchain/sim/resource_estimate.hpp"
 
+#include <sys/resource.h>
 #include <sys/statvfs.h>
 
 #include <cctype>
@@ -9,6 +10,8 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
+#include <optional>
+#include <tuple>
 #include <sstream>
 #include <string>
 
@@ -91,16 +94,88 @@ ResourceEstimate estimate_regime_map(double pixels, double panels) {
   return e;
 }
 
-double available_memory_bytes() {
-  std::ifstream in("/proc/meminfo");
-  std::string key, unit;
+namespace {
+
+// The first number in `file` (a cgroup or /proc value); nullopt when missing or not a number
+// ("max", cgroup v2's no limit).
+std::optional<double> number_in(const std::filesystem::path& file) {
+  std::ifstream in(file);
   double value = 0;
-  while (in >> key >> value) {
-    std::getline(in, unit);
-    if (key == "MemAvailable:") return value * 1024;  // reported in kB (KiB)
-  }
-  return 0;
+  if (!(in >> value)) return std::nullopt;
+  return value;
 }
+
+// "Key:   123 kB" of /proc/self/status (or meminfo) in bytes; nullopt when absent.
+std::optional<double> kib_entry(const std::filesystem::path& file, const std::string& key) {
+  std::ifstream in(file);
+  std::string name, unit;
+  double value = 0;
+  while (in >> name >> value) {
+    std::getline(in, unit);
+    if (name == key) return value * 1024;  // reported in kB (KiB)
+  }
+  return std::nullopt;
+}
+
+// The smaller of `best` and `candidate` (a missing candidate leaves best unchanged).
+void keep_smaller(MemoryLimit& best, std::optional<double> candidate, const char* source) {
+  if (!candidate) return;
+  const double bytes = std::max(1.0, *candidate);  // (0 would read as "unknown")
+  if (best.bytes <= 0 || bytes < best.bytes) best = {bytes, source};
+}
+
+// Headroom limit - usage of the cgroup directories at `root` + `path` and each parent up to root
+// (a limit may be set on an ancestor; inside a container the root is the container's own group).
+std::optional<double> cgroup_headroom(const std::filesystem::path& root, const std::string& path,
+                                      const char* limit_file, const char* usage_file) {
+  std::optional<double> least;
+  std::filesystem::path relative = std::filesystem::path(path).relative_path();
+  while (true) {
+    const std::filesystem::path dir = root / relative;
+    const auto limit = number_in(dir / limit_file);
+    const auto usage = number_in(dir / usage_file);
+    // cgroup v1 writes "no limit" as a page-rounded 2^63 - 1.
+    if (limit && usage && *limit < 4.0e18 && (!least || *limit - *usage < *least)) least = *limit - *usage;
+    if (relative.empty() || relative == relative.parent_path()) break;
+    relative = relative.parent_path();
+  }
+  return least;
+}
+
+}  // namespace
+
+MemoryLimit available_memory(const MemorySources& sources) {
+  MemoryLimit best;
+  keep_smaller(best, kib_entry(sources.meminfo, "MemAvailable:"), "available memory (MemAvailable)");
+  // Address-space and data-segment limits (ulimit -v, ulimit -d) less what the process uses now.
+  for (const auto& [resource, usage_key, source] :
+       {std::tuple{RLIMIT_AS, "VmSize:", "the address-space limit RLIMIT_AS (ulimit -v)"},
+        std::tuple{RLIMIT_DATA, "VmData:", "the data-segment limit RLIMIT_DATA (ulimit -d)"}}) {
+    struct rlimit limit {};
+    if (::getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) continue;
+    const double used = kib_entry(sources.process_status, usage_key).value_or(0);
+    keep_smaller(best, double(limit.rlim_cur) - used, source);
+  }
+  // The cgroup of this process: "0::/path" (v2), "N:memory:/path" or "N:...,memory,...:/path" (v1).
+  std::ifstream groups(sources.process_cgroup);
+  for (std::string line; std::getline(groups, line);) {
+    const auto first = line.find(':'), second = line.find(':', first + 1);
+    if (first == std::string::npos || second == std::string::npos) continue;
+    const std::string controllers = line.substr(first + 1, second - first - 1), path = line.substr(second + 1);
+    if (line.compare(0, first, "0") == 0 && controllers.empty()) {
+      for (const auto& root : {sources.cgroup_root, sources.cgroup_root / "unified"})
+        keep_smaller(best, cgroup_headroom(root, path, "memory.max", "memory.current"),
+                     "the cgroup memory limit (memory.max)");
+    } else if (("," + controllers + ",").find(",memory,") != std::string::npos) {
+      keep_smaller(best, cgroup_headroom(sources.cgroup_root / "memory", path, "memory.limit_in_bytes",
+                                         "memory.usage_in_bytes"),
+                   "the cgroup memory limit (memory.limit_in_bytes)");
+    }
+  }
+  return best;
+}
+
+double available_memory_bytes() { return available_memory(MemorySources{}).bytes; }
 
 double available_disk_bytes(const std::filesystem::path& dir) {
   std::filesystem::path p = dir.empty() ? std::filesystem::path(".") : dir;
@@ -170,12 +245,12 @@ void check_memory(const ResourceEstimate& e, double max_memory_bytes, const std:
                                                     format_bytes(max_memory_bytes), advice));
     return;
   }
-  const double available = available_memory_bytes();
-  if (available > 0 && e.memory_bytes > available)
-    throw InvalidParameter(parameter, fmt::format("the job needs about {} of memory ({}); this machine "
-                                                  "has {} available; {} or pass --max-memory",
+  const MemoryLimit available = available_memory(MemorySources{});
+  if (available.bytes > 0 && e.memory_bytes > available.bytes)
+    throw InvalidParameter(parameter, fmt::format("the job needs about {} of memory ({}); this process "
+                                                  "may use {} ({}); {} or pass --max-memory",
                                                   format_bytes(e.memory_bytes), e.sizes,
-                                                  format_bytes(available), advice));
+                                                  format_bytes(available.bytes), available.source, advice));
 }
 
 void check_output_space(const ResourceEstimate& e, const std::filesystem::path& out_dir,

@@ -66,7 +66,8 @@ struct CheckpointSink {
 
   // True when a checkpoint is due at the step boundary t (advances the rhythm).
   bool due(double t);
-  // Writes one (creating its directory), recording the work so far.
+  // Writes one into its existing directory (never created: --checkpoint's directory is checked
+  // before the run, --out is made by the run), recording the work so far.
   void write(const State& s, double t, double next_step, const IntegrationStats& stats,
              const RunRecord& record, std::vector<std::pair<std::string, double>> accumulators);
 };

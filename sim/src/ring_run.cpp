@@ -112,7 +112,7 @@ double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std:
     t_series.push_back(t);
     phase_series.push_back(unwrapped);
     return !(stop && stop->load(std::memory_order_relaxed));  // false: stopped (SIGINT)
-  }, fixed_step(mode.omega, steps_per_period));
+  }, fixed_step(mode.omega, steps_per_period), {}, 0, stop);
   if (stats.stopped) throw Interrupted(SIGINT, "interrupted");
   if (stats.blew_up)
     throw NumericalFailure(fmt::format("{}: the plane wave of amplitude {} blew up on the ring at t = {}",
@@ -160,7 +160,7 @@ double measure_packet_speed(const lrchain_lattice_kernels& kernels, const std::v
     centre.push_back(X);
     track.data.insert(track.data.end(), {t, X});
     return !(stop && stop->load(std::memory_order_relaxed));  // false: stopped (SIGINT)
-  }, fixed_step(mode.omega, steps_per_period));
+  }, fixed_step(mode.omega, steps_per_period), {}, 0, stop);
   if (stats.stopped) throw Interrupted(SIGINT, "interrupted");
   if (stats.blew_up)
     throw NumericalFailure(fmt::format("{}: the wave packet blew up at t = {}", kernels.model_name, stats.t_reached));

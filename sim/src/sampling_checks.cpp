@@ -30,7 +30,11 @@ bool run_fits(const SamplingOptions& o, double length, double memory_limit) {
 struct Reach {
   const SamplingOptions& o;
   double memory_limit;
-  bool contains(double t) const { return t <= o.length * (1 + 1e-12) || run_fits(o, t, memory_limit); }
+  // A run that does not fit at its own length bounds nothing here: the run's own size check names
+  // what is too large (sites, or its length), not a later time or the checkpoint interval.
+  bool contains(double t) const {
+    return t <= o.length * (1 + 1e-12) || !run_fits(o, o.length, memory_limit) || run_fits(o, t, memory_limit);
+  }
   double longest(double beyond) const {
     double lo = o.length, hi = beyond;
     if (!run_fits(o, lo, memory_limit)) return lo;

@@ -16,6 +16,7 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sha256.hpp"
 #include "lrchain/sim/checkpoint.hpp"
 #include "lrchain/sim/drive_run.hpp"
 #include "lrchain/sim/modulated_run.hpp"
@@ -90,12 +91,12 @@ RunRecord sample_record() {
   return r;
 }
 
-// The state-count field follows magic (8), version (4), identity (8 + len), identity hash (8),
-// progress (8 + len).
+// The state-count field follows magic (8), version (4), identity (8 + len), identity hash (SHA-256,
+// 32), progress (8 + len).
 std::size_t state_count_offset(const std::string& bytes) {
   std::uint64_t len = 0;
   std::memcpy(&len, bytes.data() + 12, 8);
-  std::size_t pos = 12 + 8 + std::size_t(len) + 8;
+  std::size_t pos = 12 + 8 + std::size_t(len) + 32;
   std::memcpy(&len, bytes.data() + pos, 8);
   return pos + 8 + std::size_t(len);
 }
@@ -193,10 +194,10 @@ TEST_CASE("checkpoint: truncated, corrupted, wrong-version, huge-size, NaN and n
   }
   {
     std::string b = good;
-    const std::uint32_t v3 = 3;
-    std::memcpy(b.data() + 8, &v3, 4);
+    const std::uint32_t v4 = 4;
+    std::memcpy(b.data() + 8, &v4, 4);
     spit(f, with_valid_crc(b));
-    check_refused(f, "format version 3");
+    check_refused(f, "format version 4");
   }
   {  // a state size of 2^60 doubles with a valid CRC: refused before any allocation
     std::string b = good;
@@ -429,5 +430,37 @@ TEST_CASE("restart equals the uninterrupted run to the last bit: drive (rkf78) a
     CHECK(restarted.summary.max_energy_drift == full.summary.max_energy_drift);
     CHECK(restarted.summary.t_start == 20);
   }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("checkpoint identity and initial-state hashes are SHA-256; a format-2 (FNV-1a) file is refused saying so") {
+  const fs::path dir = scratch_dir("sha256");
+  const Checkpoint c = sample_checkpoint(1.0, 0.5);
+  write_checkpoint(dir / "c.bin", c, sample_record());
+  const std::string bytes = slurp(dir / "c.bin");
+  // The identity's length at byte 12, its text, then its 32-byte SHA-256 (was an 8-byte FNV-1a).
+  std::uint64_t len = 0;
+  std::memcpy(&len, bytes.data() + 12, 8);
+  REQUIRE(bytes.substr(20, len) == c.identity);
+  const lrchain::Sha256Digest digest = lrchain::sha256(c.identity);
+  CHECK(std::memcmp(bytes.data() + 20 + len, digest.data(), digest.size()) == 0);
+  // A changed identity byte with a valid CRC is caught by the SHA-256.
+  std::string forged = bytes;
+  forged[20] = char(forged[20] ^ 0x01);
+  spit(dir / "forged.bin", with_valid_crc(forged));
+  check_refused(dir / "forged.bin", "an identity that does not match its SHA-256");
+  // The state hash item: "sha256:" and 64 hexadecimal digits of the state's bytes.
+  TrajectoryIdentity id;
+  const State s{1.0, 2.0};
+  id.add_state_hash("initial_state", s);
+  CHECK(id.items().back().second ==
+        "sha256:" + lrchain::sha256_hex(std::string_view(reinterpret_cast<const char*>(s.data()), 2 * sizeof(double))));
+  // Format 2 (lrchain 0.1): refused with the reason, not read with a weaker hash.
+  std::string old = bytes;
+  const std::uint32_t v2 = 2;
+  std::memcpy(old.data() + 8, &v2, 4);
+  spit(dir / "v2.bin", with_valid_crc(old));
+  CHECK_THROWS_WITH_AS(read_checkpoint(dir / "v2.bin"), doctest::Contains("format version 2, written by lrchain 0.1"),
+                       InputError);
   fs::remove_all(dir);
 }

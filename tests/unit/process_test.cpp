@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 #include <signal.h>
 #include <string>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -65,4 +66,36 @@ TEST_CASE("process: a child in its own process group leads it, and send_signal r
   CHECK(::getpgid(same.pid()) == ::getpgrp());
   same.send_signal(SIGTERM);
   CHECK(same.wait().signal_number == SIGTERM);
+}
+
+TEST_CASE("a child of run_program dies with its parent, also when the parent is killed with SIGKILL") {
+  // A stand-in parent (forked here) starts `sleep 60` through ChildProcess, reports its pid and
+  // waits; the parent gets SIGKILL. Before (posix_spawn, no parent-death signal) the sleep lived on.
+  int pipe_fds[2];
+  REQUIRE(::pipe(pipe_fds) == 0);
+  const pid_t parent = ::fork();
+  REQUIRE(parent >= 0);
+  if (parent == 0) {
+    ::close(pipe_fds[0]);
+    lrchain::ChildProcess child({"sleep", "60"});
+    const int pid = child.pid();
+    [[maybe_unused]] const auto written = ::write(pipe_fds[1], &pid, sizeof pid);
+    child.wait();
+    ::_exit(0);
+  }
+  ::close(pipe_fds[1]);
+  int child = 0;
+  REQUIRE(::read(pipe_fds[0], &child, sizeof child) == ssize_t(sizeof child));
+  ::close(pipe_fds[0]);
+  ::kill(parent, SIGKILL);
+  ::waitpid(parent, nullptr, 0);
+  // Gone (or a zombie waiting for init to reap it) within two seconds.
+  const auto alive = [child] {
+    std::ifstream stat("/proc/" + std::to_string(child) + "/stat");
+    std::string pid, name, state;
+    return bool(stat >> pid >> name >> state) && state != "Z";
+  };
+  for (int i = 0; i < 200 && alive(); ++i) ::usleep(10000);
+  CHECK_FALSE(alive());
+  if (alive()) ::kill(child, SIGKILL);
 }

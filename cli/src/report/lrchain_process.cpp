@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lrchain/output_target.hpp"
 #include "lrchain/process.hpp"
 #include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/output_files.hpp"
@@ -143,6 +144,8 @@ nlohmann::json run_lrchain(const StepContext& ctx, const std::vector<std::string
     result = child.wait();
   }
   std::error_code ec;
+  check_output_target(err_file);
+  check_output_target(out_file);
   fs::rename(err_tmp, err_file, ec);
   if (!result.ok()) {
     fs::remove(out_tmp, ec);

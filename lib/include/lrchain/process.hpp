@@ -1,6 +1,12 @@
 #pragma once
 // Running another program (gnuplot, the C++ compiler, lrchain itself in the report and tests) with
-// an argument vector through posix_spawnp: never a shell, so a path is passed as data, not code.
+// an argument vector (fork + execve, PATH searched as execvp does): never a shell, so a path is
+// passed as data, not code. Every child dies with its parent: it is started with
+// PR_SET_PDEATHSIG = SIGKILL (Linux), so when the lrchain process that started it ends in any way,
+// SIGKILL included, the child is killed at once, and so, link by link, is everything it started
+// (a `reproduce` killed with SIGKILL leaves no run writing into DIR.partial). The signal follows the
+// *thread* that started the child: wait() for a child in the thread that constructed it (every
+// caller does). posix_spawn cannot set the parent-death signal, hence the fork.
 #include <filesystem>
 #include <optional>
 #include <string>

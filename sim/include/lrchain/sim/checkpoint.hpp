@@ -8,9 +8,9 @@
 //
 // Layout (little-endian, as written by this machine):
 //   "LRCKPT\r\n"                      8-byte magic
-//   uint32 format version (2)
+//   uint32 format version (3; version 2 of lrchain 0.1 hashed with FNV-1a and is refused)
 //   uint64 length, text               identity: "key = value\n" lines (lrchain_version first)
-//   uint64 FNV-1a 64 of the identity text
+//   32 bytes                          SHA-256 of the identity text
 //   uint64 length, text               progress: "key = value\n" lines (t, next_step, steps,
 //                                     rhs_evaluations, the run's accumulators), doubles in C99
 //                                     hexadecimal (%a), so they round-trip to the last bit
@@ -49,7 +49,7 @@ class TrajectoryIdentity {
   void add(const std::string& key, long value, ShownAs shown);
   void add(const std::string& key, const std::string& value);
   void add(const std::string& key, const char* value) { add(key, std::string(value)); }
-  void add_state_hash(const std::string& key, const State& state);  // FNV-1a 64 of its bytes
+  void add_state_hash(const std::string& key, const State& state);  // "sha256:<hex of its bytes>"
   const std::vector<std::pair<std::string, std::string>>& items() const { return items_; }
   std::string text() const;  // "lrchain_version = ...\nkey = value\n..."
   // The item `key` with the recorded text `value` as the user names it: "sites = 1001" for
@@ -74,14 +74,12 @@ struct Checkpoint {
   double accumulator(const std::filesystem::path& file, const std::string& name) const;
 };
 
-// FNV-1a 64-bit hash of bytes (identity text, initial state).
-std::uint64_t fnv1a64(const void* data, std::size_t size);
-
 // A temporary name next to `file`, unique to this process: "<dir>/.<name>.tmp.<pid>".
 std::filesystem::path temporary_name(const std::filesystem::path& file);
 
 // Writes `c` with `record` (in place of c.record, which a run need not copy) to `file` (its
-// directory must exist) via a temporary name + rename.
+// directory must exist; a `file` that is a directory, device, FIFO or socket is refused,
+// check_output_target) via a temporary name + rename.
 void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c, const RunRecord& record);
 
 // Reads and verifies a checkpoint (magic, version, sizes against the file's size, CRC-32, identity

@@ -16,7 +16,8 @@ enum class Hdf5Element { float64, float32, int64, int32, int8, complex128 };
 
 class Hdf5TreeFile {
  public:
-  // Throws InputError naming `path` if its directory does not exist or `path` is a directory;
+  // Throws InputError naming `path` if its directory does not exist or `path` exists and is not a
+  // regular file (check_output_target: a directory, device, FIFO or socket is never replaced);
   // nothing is created before commit() but the temporary file next to it.
   explicit Hdf5TreeFile(const std::filesystem::path& path);
   ~Hdf5TreeFile();  // removes the temporary file unless committed

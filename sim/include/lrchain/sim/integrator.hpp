@@ -15,6 +15,12 @@
 // stops the integration (an interrupt). rkf78 and the fixed-step steppers land on every observation
 // time, which is then a boundary; dopri5 (dense output) steps across observation times, and its
 // boundaries are its own step ends, after the observations inside the step.
+// An optional stop flag (set by SIGINT/SIGTERM) is polled inside the step loops, so a run whose
+// steps make little progress between observations still stops promptly: rkf78 and dopri5 stop at
+// the step boundary they are at (the hook sees it, and may checkpoint there); the fixed-step
+// steppers go back to the state of their last observation (a step boundary of their sequence, kept
+// untouched while they step) and hand that to the hook. One relaxed atomic load per step: the loops
+// stay allocation-free.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -112,13 +118,22 @@ struct StagedAcceleration {
 // stage updates (contiguous_algebra) and the force loops do not split loads across cache lines.
 using RknCoor = std::vector<double, boost::alignment::aligned_allocator<double, 64>>;
 
+// The stop flag a run polls inside its step loops (null: never set).
+struct StopFlag {
+  const std::atomic<bool>* flag = nullptr;
+  bool raised() const { return flag && flag->load(std::memory_order_relaxed); }
+};
+
 // Integrates q'' = a(q) with a Blanes-Moan stepper from times.front() through the observation
 // times; each interval between observations is split into the fewest equal steps <= dt.
 // `steps` and `rhs_evaluations` are counted in place, so they stay right if obs throws to stop.
-template <class Stepper, class System, class Obs>
+// `state` holds the last observation's state while the stepper works on its own copies q, p: when
+// `stop` is raised between observations, `stopped(state, t_observation)` is called with it (and
+// the counts put back to that observation) and must throw.
+template <class Stepper, class System, class Obs, class Stopped>
 void integrate_rkn_observed(const System& system, State& state, const std::vector<double>& times,
                             Obs& obs, double dt, Index& steps,
-                            Index& rhs_evaluations) {
+                            Index& rhs_evaluations, StopFlag stop, Stopped& stopped) {
   namespace odeint = boost::numeric::odeint;
   const std::size_t half = state.size() / 2;
   RknCoor q(state.begin(), state.begin() + half);
@@ -136,8 +151,18 @@ void integrate_rkn_observed(const System& system, State& state, const std::vecto
     const double interval = times[k + 1] - times[k];
     const auto m = static_cast<std::size_t>(
         checked_count(interval / dt * (1 - 1e-12), "dt", 1, max_fixed_steps, "steps between observations"));
-    odeint::integrate_n_steps(std::ref(stepper), acc, std::make_pair(std::ref(q), std::ref(p)),
-                              times[k], interval / double(m), m);
+    // Odeint's integrate_n_steps (integrate/detail/integrate_n_steps.hpp), step for step, polling
+    // the stop flag (the systems are autonomous: the time passed is not used).
+    const double h = interval / double(m);
+    const Index rhs_at_observation = rhs_evaluations;
+    auto qp = std::make_pair(std::ref(q), std::ref(p));
+    for (std::size_t i = 0; i < m; ++i) {
+      if (stop.raised()) {
+        rhs_evaluations = rhs_at_observation;
+        stopped(state, times[k]);
+      }
+      stepper.do_step(acc, qp, times[k] + double(i) * h, h);
+    }
     steps += static_cast<Index>(m);
     std::copy(q.begin(), q.end(), state.begin());
     std::copy(p.begin(), p.end(), state.begin() + half);
@@ -149,9 +174,11 @@ struct StopIntegration {};
 // Boost.Odeint's integrate_times for a controlled stepper (integrate/detail/integrate_times.hpp,
 // Boost 1.74), step for step, with the step size it carries from one observation interval to the
 // next handed to `boundary`, and started from `dt`: a restart from (state, t, dt) takes the same steps.
-template <class Stepper, class System, class Obs, class Boundary>
+// A raised `stop` calls `stopped(x, t, dt)` at the step boundary reached (it must throw).
+template <class Stepper, class System, class Obs, class Boundary, class Stopped>
 void integrate_times_controlled(Stepper& st, System system, State& x, const std::vector<double>& times,
-                                double dt, Obs& obs, Boundary& boundary, Index& steps) {
+                                double dt, Obs& obs, Boundary& boundary, Index& steps, StopFlag stop,
+                                Stopped& stopped) {
   namespace odeint = boost::numeric::odeint;
   odeint::failed_step_checker fail_checker;
   auto it = times.begin();
@@ -161,6 +188,7 @@ void integrate_times_controlled(Stepper& st, System system, State& x, const std:
     boundary(x, current_time, dt);
     if (it == times.end()) break;
     while (odeint::detail::less_with_sign(current_time, *it, dt)) {
+      if (stop.raised()) stopped(x, current_time, dt);
       double current_dt = odeint::detail::min_abs(dt, *it - current_time);
       if (st.try_step(system, x, current_time, current_dt) == odeint::success) {
         ++steps;
@@ -175,10 +203,12 @@ void integrate_times_controlled(Stepper& st, System system, State& x, const std:
 }
 
 // Boost.Odeint's integrate_times for a plain stepper (same file), counting steps in place so that
-// a checkpoint written from the observer records the work done so far.
-template <class Stepper, class System, class StateType, class Obs>
+// a checkpoint written from the observer records the work done so far. A raised `stop` calls
+// `stopped(t_observation, steps_at_observation)` (it must throw): the caller's copy of the state at
+// the last observation is where the run can continue from.
+template <class Stepper, class System, class StateType, class Obs, class Stopped>
 void integrate_times_fixed(Stepper& st, System system, StateType& x, const std::vector<double>& times,
-                           double dt, Obs& obs, Index& steps) {
+                           double dt, Obs& obs, Index& steps, StopFlag stop, Stopped& stopped) {
   namespace odeint = boost::numeric::odeint;
   double current_dt = dt;
   auto it = times.begin();
@@ -186,7 +216,10 @@ void integrate_times_fixed(Stepper& st, System system, StateType& x, const std::
     double current_time = *it++;
     obs(x, current_time);
     if (it == times.end()) break;
+    const double observed_at = current_time;
+    const Index steps_at_observation = steps;
     while (odeint::detail::less_with_sign(current_time, *it, current_dt)) {
+      if (stop.raised()) stopped(observed_at, steps_at_observation);
       current_dt = odeint::detail::min_abs(dt, *it - current_time);
       st.do_step(system, x, current_time, current_dt);
       current_time += current_dt;
@@ -199,9 +232,11 @@ void integrate_times_fixed(Stepper& st, System system, StateType& x, const std::
 // each step end after the observations inside the step, with the stepper's current state, time and
 // next step: a restart from those (initialize() recomputes the first-same-as-last derivative from the
 // same state and time, the same bits) takes the same steps.
-template <class Dense, class System, class Obs, class Boundary>
+// A raised `stop` calls `stopped(state, t, dt)` at the step end reached (it must throw).
+template <class Dense, class System, class Obs, class Boundary, class Stopped>
 void integrate_times_dense(Dense& st, System system, State& x, const std::vector<double>& times,
-                           double dt, Obs& obs, Boundary& boundary, Index& steps) {
+                           double dt, Obs& obs, Boundary& boundary, Index& steps, StopFlag stop,
+                           Stopped& stopped) {
   namespace odeint = boost::numeric::odeint;
   const double last = times.back();
   auto it = times.begin();
@@ -215,6 +250,7 @@ void integrate_times_dense(Dense& st, System system, State& x, const std::vector
     }
     if (it == times.end()) break;
     boundary(st.current_state(), st.current_time(), st.current_time_step());
+    if (stop.raised()) stopped(st.current_state(), st.current_time(), st.current_time_step());
     if (odeint::detail::less_eq_with_sign(st.current_time() + st.current_time_step(), last,
                                           st.current_time_step())) {
       st.do_step(system);
@@ -233,12 +269,15 @@ using StepBoundaryHook = std::function<bool(const State&, double, double, const 
 
 // Integrates `state` from times.front() through the observation times (increasing). `boundary`
 // (optional) is the step-boundary hook; `resume_step` > 0 replaces opt.dt as the first step size
-// of the adaptive steppers (the next_step a checkpoint recorded at times.front()).
+// of the adaptive steppers (the next_step a checkpoint recorded at times.front()). `stop`
+// (optional, e.g. set by SIGINT) is polled at every step: when raised the hook is called at a step
+// boundary (see the top of this file) and the integration ends with stats.stopped.
 template <class System, class Observer>
 IntegrationStats integrate_observed(const System& system, State& state,
                                     const std::vector<double>& times, Observer&& observer,
                                     const IntegratorOptions& opt,
-                                    const StepBoundaryHook& boundary = {}, double resume_step = 0) {
+                                    const StepBoundaryHook& boundary = {}, double resume_step = 0,
+                                    const std::atomic<bool>* stop = nullptr) {
   namespace odeint = boost::numeric::odeint;
   validate(opt);
   IntegrationStats stats;
@@ -268,6 +307,15 @@ IntegrationStats integrate_observed(const System& system, State& state,
     obs(s, t);
     at_boundary(s, t, opt.dt);
   };
+  const detail::StopFlag stop_flag{stop};
+  // The stop flag was raised between observations at the step boundary (s, t, next step).
+  auto stopped_at = [&](const State& s, double t, double next_step) {
+    at_boundary(s, t, next_step);  // (throws when the hook stops the run)
+    stats.stopped = true;
+    throw detail::StopIntegration{};
+  };
+  // The same for the fixed-step steppers: their state at the last observation, `state`.
+  auto stopped_at_observation = [&](const State& s, double t) { stopped_at(s, t, opt.dt); };
   const double first_step = resume_step > 0 ? resume_step : opt.dt;
   detail::Counted<System> rhs{&system, &stats.rhs_evaluations};
   try {
@@ -276,14 +324,14 @@ IntegrationStats integrate_observed(const System& system, State& state,
         auto stepper = odeint::make_controlled(opt.abs_tol, opt.rel_tol,
                                                odeint::runge_kutta_fehlberg78<State>());
         detail::integrate_times_controlled(stepper, rhs, state, times, first_step, obs, at_boundary,
-                                           stats.steps);
+                                           stats.steps, stop_flag, stopped_at);
         break;
       }
       case StepperKind::dopri5: {
         auto stepper = odeint::make_dense_output(opt.abs_tol, opt.rel_tol,
                                                  odeint::runge_kutta_dopri5<State>());
         detail::integrate_times_dense(stepper, rhs, state, times, first_step, obs, at_boundary,
-                                      stats.steps);
+                                      stats.steps, stop_flag, stopped_at);
         break;
       }
       case StepperKind::symplectic: {
@@ -301,7 +349,19 @@ IntegrationStats integrate_observed(const System& system, State& state,
           };
           odeint::symplectic_rkn_sb3a_mclachlan<std::vector<double>> stepper;
           auto qp = std::make_pair(std::ref(q), std::ref(p));
-          detail::integrate_times_fixed(stepper, acc, qp, times, opt.dt, pair_obs, stats.steps);
+          Index rhs_at_observation = 0;
+          auto observe_pair = [&](const auto& pair, double t) {
+            pair_obs(pair, t);
+            rhs_at_observation = stats.rhs_evaluations;
+          };
+          // `state` holds the last observation (pair_obs copies q, p into it only there).
+          auto stopped_fixed = [&](double t, Index steps_at_observation) {
+            stats.steps = steps_at_observation;
+            stats.rhs_evaluations = rhs_at_observation;
+            stopped_at_observation(state, t);
+          };
+          detail::integrate_times_fixed(stepper, acc, qp, times, opt.dt, observe_pair, stats.steps, stop_flag,
+                                        stopped_fixed);
         } else {
           throw InvalidParameter("stepper", "symplectic needs a system with acceleration()");
         }
@@ -313,13 +373,16 @@ IntegrationStats integrate_observed(const System& system, State& state,
         if constexpr (requires { system.acceleration(nullptr, nullptr, 0.0); }) {
           if (opt.stepper == StepperKind::srkn11b)
             detail::integrate_rkn_observed<blanes_moan_srkn11b<detail::RknCoor, contiguous_algebra>>(
-                system, state, times, obs_at_boundary, opt.dt, stats.steps, stats.rhs_evaluations);
+                system, state, times, obs_at_boundary, opt.dt, stats.steps, stats.rhs_evaluations, stop_flag,
+                stopped_at_observation);
           else if (opt.stepper == StepperKind::srkn14a)
             detail::integrate_rkn_observed<blanes_moan_srkn14a<detail::RknCoor, contiguous_algebra>>(
-                system, state, times, obs_at_boundary, opt.dt, stats.steps, stats.rhs_evaluations);
+                system, state, times, obs_at_boundary, opt.dt, stats.steps, stats.rhs_evaluations, stop_flag,
+                stopped_at_observation);
           else
             detail::integrate_rkn_observed<mclachlan_ss17<detail::RknCoor, contiguous_algebra>>(
-                system, state, times, obs_at_boundary, opt.dt, stats.steps, stats.rhs_evaluations);
+                system, state, times, obs_at_boundary, opt.dt, stats.steps, stats.rhs_evaluations, stop_flag,
+                stopped_at_observation);
         } else {
           throw InvalidParameter("stepper", "srkn11b/srkn14a/ss17 need a system with acceleration()");
         }

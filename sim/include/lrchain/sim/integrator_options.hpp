@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "lrchain/index.hpp"
 
@@ -25,12 +26,23 @@ struct IntegratorOptions {
   // (automatic_step.hpp) and `dt` is ignored; set where the user gave no step.
   bool automatic_dt = false;
 };
+// abs_tol in (0, 1), rel_tol in [0, 1), dt finite > 0; and for the adaptive steppers (rkf78,
+// dopri5), which accept a step when its error estimate at each entry x is below
+// abs_tol + rel_tol |x|, a tolerance double precision can meet on the lattices' O(1) states:
+// abs_tol + rel_tol >= finest_tolerance (1e-15), else InvalidParameter("abs-tol") whose message
+// names both options. (At an entry |x| <= 1 the tolerance is then >= 1e-15 |x|; the fixed-step
+// steppers ignore the tolerances and are not checked.)
 void validate(const IntegratorOptions& o);
 // Refuses (InvalidParameter("dt")) a first or largest step dt longer than the whole run (t_end).
 void validate_step_within_run(const IntegratorOptions& o, double run_length);
 // The fixed-step steppers take about `duration / dt` steps: refuses (InvalidParameter("dt")) a dt
 // that gives more than 1e12 steps (years of work) or a step count that overflows an integer.
 void validate_step_count(const IntegratorOptions& o, double duration);
+// The smallest local error, relative to the state's scale, that double precision can resolve:
+// about 4.5 units in the last place (2^-52 = 2.2e-16). A tolerance below it only makes the
+// adaptive steps shrink towards zero (rkf78 with abs_tol 1e-300 and rel_tol 0 crawls at steps of
+// ~1e-37 and never reaches the next sample).
+inline constexpr double finest_tolerance = 1e-15;
 
 struct IntegrationStats {
   Index steps = 0;

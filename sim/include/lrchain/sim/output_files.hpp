@@ -15,7 +15,9 @@ namespace lrchain::sim {
 
 // Creates dir (and parents); throws std::runtime_error naming it if that fails.
 void ensure_directory(const std::filesystem::path& dir);
-// Writes `content` to dir/name via a temporary file + rename.
+// Writes `content` to dir/name via a temporary file + rename. Every writer first asks
+// lrchain::check_output_target (lrchain/output_target.hpp) whether it may replace its target: a
+// directory, device, FIFO or socket there is refused with InputError naming it.
 void write_file_atomic(const std::filesystem::path& dir, const std::string& name,
                        const std::string& content);
 // CSV with a header row (full double precision).
@@ -85,5 +87,27 @@ class Figures {
 std::vector<std::string> write_run_outputs(const std::filesystem::path& dir, const RunRecord& record,
                                            const std::string& summary_json,
                                            const std::vector<FigureScript>& figures, bool draw_figures = true);
+
+// The regular files of an output directory before a run writes into it (name and file identity,
+// device and inode), to tell afterwards which ones the run did not write.
+struct OutputListing {
+  struct Entry {
+    std::string name;
+    unsigned long long device = 0, inode = 0;
+  };
+  std::vector<Entry> files;
+};
+// The visible regular files of `dir` now (names starting with '.' are lrchain's own lock and
+// temporaries); empty when dir does not exist.
+OutputListing list_output_files(const std::filesystem::path& dir);
+// The names in `before` that are still the same file in `dir` (a file the run wrote is a new one:
+// every writer renames a new file into place), except those in `keep`; sorted.
+std::vector<std::string> files_not_rewritten(const std::filesystem::path& dir, const OutputListing& before,
+                                             const std::vector<std::string>& keep = {});
+// Stale files of an earlier run: lrchain never deletes them (they may be the user's), it lists
+// them as summary["stale_files"] (files_not_rewritten) in `summary` and in dir/summary.json when
+// the run wrote one.
+void record_stale_files(const std::filesystem::path& dir, const OutputListing& before, nlohmann::json& summary,
+                        const std::vector<std::string>& keep = {});
 
 }  // namespace lrchain::sim

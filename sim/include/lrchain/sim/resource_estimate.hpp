@@ -1,7 +1,8 @@
 #pragma once
 // Memory and output size of a job, estimated from its options before anything is allocated or
 // written, and the check that refuses a job that does not fit (InvalidParameter -> exit 2):
-// the machine's available memory (MemAvailable of /proc/meminfo) or an explicit --max-memory,
+// the memory this process may use (the smallest of MemAvailable, RLIMIT_AS and the cgroup limit:
+// available_memory) or an explicit --max-memory,
 // and the free space of the output directory's file system.
 #include <filesystem>
 #include <string>
@@ -52,7 +53,24 @@ ResourceEstimate estimate_dark_breather(double sites, bool floquet, double shoot
 // A regime map of `pixels` pixels in `panels` panels (CSV text, pixel values, boundary curves).
 ResourceEstimate estimate_regime_map(double pixels, double panels);
 
-// MemAvailable of /proc/meminfo in bytes; 0 when it cannot be read.
+// The memory this process may still allocate and what limits it.
+struct MemoryLimit {
+  double bytes = 0;    // 0: unknown (nothing could be read)
+  std::string source;  // "available memory (MemAvailable)", "the address-space limit RLIMIT_AS ...", ...
+};
+// Where the limits are read (tests point these at files of their own).
+struct MemorySources {
+  std::filesystem::path meminfo = "/proc/meminfo";
+  std::filesystem::path process_status = "/proc/self/status";   // VmSize, VmData: in use now
+  std::filesystem::path process_cgroup = "/proc/self/cgroup";
+  std::filesystem::path cgroup_root = "/sys/fs/cgroup";          // v2 here (or in unified/), v1 in memory/
+};
+// The smallest of: MemAvailable; RLIMIT_AS minus the address space in use (VmSize); RLIMIT_DATA
+// minus the data segment (VmData); the cgroup v2 memory.max minus memory.current (or v1
+// memory.limit_in_bytes minus memory.usage_in_bytes) of this process's group and of each group
+// above it. Limits that are unset ("max", RLIM_INFINITY) do not count.
+MemoryLimit available_memory(const MemorySources& sources);
+// available_memory(MemorySources{}).bytes: 0 when nothing can be read.
 double available_memory_bytes();
 
 // Bytes free for an unprivileged user on the file system that holds `dir` (or, if it does not
