@@ -26,7 +26,7 @@ std::vector<fs::path> shipped_data_roots() {
 std::string resolve_model_argument(const std::string& text) {
   std::error_code ec;
   const bool named = !text.empty() && text.find('/') == std::string::npos &&
-                     !(text.size() > 5 && text.ends_with(".toml")) && !fs::is_regular_file(text, ec);
+                     !(text.size() > 5 && text.ends_with(".toml")) && !fs::exists(text, ec);  // a FIFO or device is the reader's to refuse
   if (!named) return text;
   std::vector<std::string> shipped;
   for (const fs::path& root : shipped_data_roots()) {

@@ -21,32 +21,24 @@ import dataclasses
 import json
 import numbers
 import os
-import stat
 
 import numpy as np
 
 from .errors import InputError
 
-_NOT_REGULAR = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISCHR, "a character device"),
-                (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"))
-
 
 def checked_destination(path):
     """``path`` (a str) if ``to_hdf5`` may write it: a new name or an existing regular file, which the
     writer replaces by renaming its temporary file over it. InputError for anything else that exists
-    (directory, FIFO, device, socket: renaming over it would replace it); every ``to_hdf5`` calls this."""
+    (directory, FIFO, device, socket: renaming over it would replace it), decided by the C++ writers'
+    own check (lrchain::check_output_target); every ``to_hdf5`` calls this before writing."""
+    from . import _hdf5
+
     path = os.fspath(path)
-    try:
-        mode = os.stat(path).st_mode
-    except FileNotFoundError:
-        return path
-    except OSError as e:
-        raise InputError(f"to_hdf5: {path}: cannot be examined ({e.strerror})") from None
-    if stat.S_ISREG(mode):
-        return path
-    kind = next((text for test, text in _NOT_REGULAR if test(mode)), "not a regular file")
-    raise InputError(f"to_hdf5: {path} exists and is {kind}, not a regular file: give the name of a new or a "
-                     f"regular file (nothing was written)")
+    problem = _hdf5.output_target_problem(path)
+    if problem:
+        raise InputError(f"to_hdf5: {problem} (nothing was written)")
+    return path
 
 
 def _array(values):

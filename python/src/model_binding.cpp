@@ -16,6 +16,7 @@
 #include "loaded_model.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 #include "model_capsule.hpp"
+#include "real_numbers.hpp"
 
 namespace py = pybind11;
 namespace fs = std::filesystem;
@@ -74,7 +75,7 @@ std::vector<std::pair<std::string, double>> parameter_values(const py::kwargs& p
     if (!py::isinstance<py::float_>(value) && !py::isinstance<py::int_>(value) &&
         !py::hasattr(value, "__float__"))
       throw InvalidParameter(name, "must be a number");
-    values.emplace_back(name, value.cast<double>());
+    values.emplace_back(name, real_number(value, name));  // a complex value is refused, not truncated
   }
   return values;
 }

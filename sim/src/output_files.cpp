@@ -195,6 +195,14 @@ std::string last_line(const std::string& text) {
 }
 }  // namespace
 
+// The script as gnuplot's file argument: "./name", since gnuplot runs an argument that starts with
+// '<' as a shell command and reads '-' as standard input.
+namespace {
+std::string script_argument(const std::string& script) {
+  return fs::path(script).is_absolute() ? script : "./" + script;
+}
+}  // namespace
+
 // Runs `gnuplot -e "outfile='<tmp>'" <script>` inside dir_ (argv, no shell), then renames tmp to png.
 Figures::Outcome Figures::render(const std::string& script, const std::string& png) const {
   Outcome o{png, false, {}};
@@ -214,7 +222,7 @@ Figures::Outcome Figures::render(const std::string& script, const std::string& p
   std::error_code ec;
   try {
     const ProcessResult r =
-        run_program({"gnuplot", "-e", "outfile='" + tmp.filename().string() + "'", script}, options);
+        run_program({"gnuplot", "-e", "outfile='" + tmp.filename().string() + "'", script_argument(script)}, options);
     if (!r.ok()) {
       const std::string why = last_line(r.error_output);
       o.failure = r.exited ? "gnuplot failed on " + script + (why.empty() ? "" : ": " + why)

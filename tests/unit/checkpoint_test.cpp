@@ -433,7 +433,7 @@ TEST_CASE("restart equals the uninterrupted run to the last bit: drive (rkf78) a
   fs::remove_all(dir);
 }
 
-TEST_CASE("checkpoint identity and initial-state hashes are SHA-256; a format-2 (FNV-1a) file is refused saying so") {
+TEST_CASE("checkpoint identity and initial-state hashes are SHA-256, and a format-2 (FNV-1a) file is refused saying so") {
   const fs::path dir = scratch_dir("sha256");
   const Checkpoint c = sample_checkpoint(1.0, 0.5);
   write_checkpoint(dir / "c.bin", c, sample_record());

@@ -27,7 +27,7 @@ const std::string kSmallBright = "simulate bright --branch optical --theta pi/2 
 
 }  // namespace
 
-TEST_CASE("--checkpoint in a directory that does not exist is exit 2 naming it; nothing is created") {
+TEST_CASE("--checkpoint in a directory that does not exist is exit 2 naming it, and nothing is created") {
   const fs::path dir = scratch("checkpoint");
   const fs::path missing = dir / "missing" / "deeper";
   const auto r = run_lrchain(words(kSmallBright + "--checkpoint " + (missing / "c.bin").string() + " --out " +

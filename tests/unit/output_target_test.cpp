@@ -76,7 +76,7 @@ void check_refuses_every_kind(const std::string& test, const std::string& name,
 
 }  // namespace
 
-TEST_CASE("check_output_target: a missing path, a regular file and a dangling link may be written; nothing else") {
+TEST_CASE("check_output_target: a missing path, a regular file and a dangling link may be written, nothing else") {
   const fs::path dir = scratch("check");
   CHECK_NOTHROW(check_output_target(dir / "missing.csv"));
   std::ofstream(dir / "regular.csv") << "x\n";
@@ -133,7 +133,7 @@ TEST_CASE("checkpoints refuse a FIFO, a directory and a link to /dev/null") {
   });
 }
 
-TEST_CASE("CLI: a FIFO in --out where a run writes a file is exit 2 and stays a FIFO; --checkpoint a FIFO is exit 2 before the run") {
+TEST_CASE("CLI: a FIFO in --out where a run writes a file is exit 2 and stays a FIFO, and --checkpoint a FIFO is exit 2 before the run") {
   using namespace lrchain::test;
   const fs::path dir = scratch("cli");
   REQUIRE(::mkfifo((dir / "series.csv").c_str(), 0600) == 0);

@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include "lrchain/errors.hpp"
+#include "lrchain/output_target.hpp"
 #include "lrchain/sim/hdf5_tree.hpp"
 #include "lrchain/sim/dark/dark_hdf5.hpp"
 #include "lrchain/sim/result_hdf5.hpp"
@@ -213,5 +214,16 @@ PYBIND11_MODULE(_hdf5, m) {
         "Writes a dark breather with the sim library's writer (the CLI's dark solve|floquet --format hdf5 file).");
   m.def("write_dark_branch", &write_dark_branch, py::arg("path"), py::arg("params"), py::arg("branch"),
         "Writes a dark-breather branch with the sim library's writer (the CLI's dark continue --format hdf5 file).");
+  m.def(
+      "output_target_problem",
+      [](const std::string& path) -> std::string {
+        try {
+          lrchain::check_output_target(path);
+          return {};
+        } catch (const lrchain::InputError& e) {
+          return e.what();
+        }
+      },
+      py::arg("path"), "Why `path` may not be written (lrchain::check_output_target, every writer's check), or ''.");
   m.attr("version") = LRCHAIN_VERSION_STRING;
 }

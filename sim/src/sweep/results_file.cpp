@@ -1,6 +1,8 @@
 // The sweep's results file through the HDF5 C API, and its CSV view (sweep/results_file.hpp).
 #include "lrchain/sim/sweep/results_file.hpp"
 
+#include "lrchain/output_target.hpp"
+
 #include <unistd.h>
 
 #include <chrono>
@@ -95,6 +97,12 @@ std::string joined(const std::vector<std::string>& items) {
 
 void replace_file(const std::filesystem::path& tmp, const std::filesystem::path& file) {
   std::error_code ec;
+  try {
+    check_output_target(file);  // never rename over a device, FIFO, socket or directory
+  } catch (...) {
+    std::filesystem::remove(tmp, ec);
+    throw;
+  }
   std::filesystem::rename(tmp, file, ec);
   if (ec) throw std::runtime_error("cannot rename '" + tmp.string() + "' to '" + file.string() + "': " + ec.message());
 }

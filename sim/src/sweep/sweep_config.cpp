@@ -1,6 +1,8 @@
 // Reading and checking a sweep file (sweep/sweep_config.hpp) through the strict config layer.
 #include "lrchain/sim/sweep/sweep_config.hpp"
 
+#include "lrchain/output_target.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -167,6 +169,11 @@ std::string output_problem(const std::filesystem::path& output, bool figure) {
   if (text.empty()) return "give a file name";
   if (std::string p = control_character_problem(text); !p.empty()) return p;
   if (!output.has_filename()) return "give a file name, not a directory";
+  try {
+    check_output_target(output);  // a device, FIFO, socket or directory is refused before any point runs
+  } catch (const std::exception& e) {
+    return e.what();
+  }
   // The figures' files are named after the output: gnuplot is told their names in quotes and as
   // its arguments, where a name starting with '<' or '|' is a shell command and '-' an option.
   const std::string name = output.filename().string();
