@@ -7,22 +7,9 @@
 #include <string>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/file_kind.hpp"
 
 namespace lrchain {
-
-namespace {
-
-// What a non-regular file is, for the message.
-const char* kind_of(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
-}  // namespace
 
 void check_output_target(const std::filesystem::path& target) {
   struct stat st {};
@@ -33,7 +20,7 @@ void check_output_target(const std::filesystem::path& target) {
     return;  // (permissions and the like: the write itself reports them)
   }
   if (S_ISREG(st.st_mode)) return;
-  throw InputError("'" + target.string() + "' is " + kind_of(st.st_mode) +
+  throw InputError("'" + target.string() + "' is " + file_kind_text(st.st_mode) +
                    ", not a regular file: lrchain writes regular files only and never replaces it");
 }
 

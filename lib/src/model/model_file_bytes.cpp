@@ -8,21 +8,13 @@
 #include <cstring>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/file_kind.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sha256.hpp"
 
 namespace lrchain {
 
 namespace {
-
-std::string kind_of(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
 
 // Closes a descriptor on every path out.
 struct Descriptor {
@@ -41,7 +33,7 @@ std::string read_model_file_bytes(const std::string& path) {
   if (file.fd < 0) throw InputError(path + ": cannot read the model file (" + std::strerror(errno) + ")");
   struct stat status{};
   if (::fstat(file.fd, &status) != 0) throw InputError(path + ": cannot read the model file (" + std::strerror(errno) + ")");
-  if (!S_ISREG(status.st_mode)) throw InputError(path + ": " + kind_of(status.st_mode) + allowed);
+  if (!S_ISREG(status.st_mode)) throw InputError(path + ": " + file_kind_text(status.st_mode) + allowed);
   if (std::size_t(status.st_size) > kMaxModelFileBytes)
     throw InputError(path + ": " + std::to_string(status.st_size) + " bytes" + allowed);
   std::string bytes(kMaxModelFileBytes + 1, '\0');
