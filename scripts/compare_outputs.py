@@ -73,6 +73,10 @@ VOLATILE_HTML = [
     re.compile(r"(Step time: )[0-9.]+( s)"),
     re.compile(r"(<tr><td>(?:lrchain|git commit|compiler|build type|machine|date \(UTC\))</td><td>)[^<]*(</td></tr>)"),
 ]
+# A sweep's side-files manifest (sim/src/sweep/side_files.cpp, .OUTPUT.lrchain-files) is JSON holding the
+# SHA-256 of its CSV views, which have a wall-time column: the names are compared, the hashes not (the
+# CSV files themselves are compared, without that column).
+SIDE_FILES_SUFFIX = ".lrchain-files"
 # HDF5 files embed the date, commit and (sweeps) per-point wall times, and the standard library cannot
 # read them: they are listed as not compared; the same numbers are compared in the CSV/JSON views.
 UNCOMPARED_SUFFIXES = {".h5": "HDF5 embeds date, commit and wall times; no HDF5 reader in the Python standard library"}
@@ -251,12 +255,106 @@ def select(cases, pattern):
     return [c for c in cases if pattern is None or fnmatch.fnmatch(c["name"], pattern)]
 
 
+# ---------------------------------------------------------------- the Python module's results
+
+
+def python_calls():
+    """(name, call) of the Python module calls whose results are saved: small and fast, one per door."""
+    import numpy as np
+    import lrchain
+    from math import pi
+
+    params = lrchain.Params()
+    theta = np.linspace(0.05, pi, 64)
+    return [
+        ("coefficients_optical", lambda: lrchain.coefficients(params, "optical", theta)),
+        ("coefficients_acoustic_rho10", lambda: lrchain.coefficients(lrchain.Params(rho=10), "acoustic", theta)),
+        ("coefficients_klein_gordon", lambda: lrchain.coefficients(lrchain.load_model("klein_gordon", w0=1.2), "branch0", theta)),
+        ("regime_theta_rho_map", lambda: lrchain.regime.theta_rho_map(params, "optical", rho=(0.01, 2.5, 24), theta=(0.01, 3.1, 24))),
+        ("simulate_bright", lambda: lrchain.simulate.bright(params, "optical", pi / 2, sites=201, periods=3)),
+        ("dark_continue_branch", lambda: lrchain.dark.continue_branch(params, omega_b=2.42, sites=41, points=4, ds=0.1)),
+    ]
+
+
+def arrays_of(value, name, out, depth=0):
+    """Adds every number, string and array reachable from VALUE to OUT under NAME/... (timing and provenance left out)."""
+    import numpy as np
+
+    if depth > 4 or callable(value) and not hasattr(value, "__dict__"):
+        return
+    if isinstance(value, np.ndarray):
+        if value.dtype != object:
+            out[name] = value
+        else:
+            for i, v in enumerate(value.ravel()):
+                arrays_of(v, f"{name}/{i}", out, depth + 1)
+    elif isinstance(value, (bool, int, float, complex, str, np.generic)) or value is None:
+        out[name] = np.asarray(str(value) if value is None else value)
+    elif isinstance(value, dict):
+        for k, v in value.items():
+            if k not in IGNORED_JSON_KEYS:
+                arrays_of(v, f"{name}/{k}", out, depth + 1)
+    elif isinstance(value, (list, tuple)):
+        for i, v in enumerate(value):
+            arrays_of(v, f"{name}/{i}", out, depth + 1)
+    else:
+        for attribute in dir(value):
+            if attribute.startswith("_") or attribute in ("params",):
+                continue
+            member = getattr(value, attribute)
+            if not callable(member):
+                arrays_of(member, f"{name}/{attribute}", out, depth + 1)
+
+
+def command_python_results(args):
+    """`python-results` (run by `run --python-path`): the Python calls' results into one .npz."""
+    import numpy as np
+
+    out = {}
+    for name, call in python_calls():
+        arrays_of(call(), name, out)
+    np.savez(args.out, **out)
+    print(json.dumps({"arrays": len(out), "file": args.out}))
+    return 0
+
+
+def npy_element(data):
+    """(header dict, header length) of one .npy member."""
+    import ast
+
+    major = data[6]
+    length = int.from_bytes(data[8:10], "little") if major == 1 else int.from_bytes(data[8:12], "little")
+    start = 10 if major == 1 else 12
+    return ast.literal_eval(data[start:start + length].decode("latin1")), start + length
+
+
+def compare_npz(a_path, b_path):
+    """The first differing array of two .npz files (bit for bit), or None. Zip timestamps are ignored."""
+    import zipfile
+
+    with zipfile.ZipFile(a_path) as a, zipfile.ZipFile(b_path) as b:
+        a_names, b_names = set(a.namelist()), set(b.namelist())
+        if a_names != b_names:
+            return f"arrays only in one: {sorted(a_names ^ b_names)[:5]}"
+        for member in sorted(a_names):
+            x, y = a.read(member), b.read(member)
+            if x == y:
+                continue
+            header, start = npy_element(x)
+            offset = next((i for i, (p, q) in enumerate(zip(x, y)) if p != q), min(len(x), len(y)))
+            if offset < start or len(x) != len(y):
+                return f"{member[:-4]}: header or size differs ({header})"
+            itemsize = int("".join(c for c in header["descr"] if c.isdigit()) or 1)
+            return f"{member[:-4]}: element {(offset - start) // itemsize} (flat) differs, dtype {header['descr']}"
+    return None
+
+
 # ---------------------------------------------------------------- running
 
 
-def run_case(case, lrchain, source, case_dir, env, timeout):
+def run_case(case, lrchain, source, case_dir, env, timeout, recorded=True):
     """Runs one case into CASE_DIR and writes its case.json."""
-    case_dir.mkdir(parents=True)
+    case_dir.mkdir(parents=True, exist_ok=not recorded)
     out = case_dir / "out"
     argv = [a.replace(OUT_TOKEN, str(out)) for a in case["argv"]]
     start = time.monotonic()
@@ -281,6 +379,8 @@ def run_case(case, lrchain, source, case_dir, env, timeout):
     except ValueError:
         (case_dir / "stdout.raw").rename(case_dir / "stdout.txt")
     record = dict(case, exit_code=exit_code, seconds=round(seconds, 3), timeout=timeout)
+    if not recorded:
+        record["argv"] = record["argv"][1:]  # the script's own path differs between trees
     (case_dir / "case.json").write_text(json.dumps(record, indent=2) + "\n")
     return exit_code, seconds
 
@@ -294,9 +394,9 @@ def command_run(args):
     out = Path(args.out).resolve()
     cases, skipped = all_cases(source, lrchain, args.quick)
     chosen = select(cases, args.only)
-    if not chosen:
+    if not chosen and not (args.python_path and args.only == "python"):
         raise UsageError(f"--only {args.only}: matches no case (see the list subcommand)")
-    for case in chosen:
+    for case in chosen + ([{"name": "python"}] if args.python_path else []):
         if (out / case["name"]).exists():
             raise UsageError(f"--out {args.out}: {case['name']} exists already; use a new directory")
     out.mkdir(parents=True, exist_ok=True)
@@ -304,11 +404,22 @@ def command_run(args):
     version = subprocess.run([str(lrchain), "--version"], capture_output=True, text=True).stdout.strip()
     manifest = {"lrchain": str(lrchain), "version": version, "source": str(source), "run_dir": str(out),
                 "quick": args.quick, "only": args.only, "cases": [c["name"] for c in chosen], "skipped": skipped}
+    if (out / "manifest.json").is_file():  # a second run into the same DIR (other cases): keep the first's list
+        earlier = load_json(out / "manifest.json")
+        manifest["cases"] = earlier.get("cases", []) + manifest["cases"]
+        manifest["runs"] = earlier.get("runs", 1) + 1
     (out / "manifest.json").write_text(json.dumps(manifest, indent=2) + "\n")
     total = time.monotonic()
     for case in chosen:
         exit_code, seconds = run_case(case, lrchain, source, out / case["name"], env, args.timeout)
         print(f"{case['name']}: exit {exit_code}, {seconds:.1f} s", flush=True)
+    if args.python_path:
+        python_env = dict(env, PYTHONPATH=str(Path(args.python_path).resolve()), PYTHONDONTWRITEBYTECODE="1")
+        case = {"name": "python", "origin": "python_calls() in this script", "also": [], "quick_changes": [],
+                "argv": [str(Path(__file__).resolve()), "python-results", "--out", OUT_TOKEN + "/results.npz"]}
+        (out / "python" / "out").mkdir(parents=True)
+        exit_code, seconds = run_case(case, args.python, source, out / "python", python_env, args.timeout, recorded=False)
+        print(f"python: exit {exit_code}, {seconds:.1f} s", flush=True)
     print(f"{len(chosen)} cases in {time.monotonic() - total:.1f} s into {out} ({len(skipped)} command lines skipped: "
           f"see manifest.json)")
     return 0
@@ -406,12 +517,23 @@ def without_volatile_html(text):
     return text
 
 
+def without_side_file_hashes(manifest):
+    """A sweep's side-files manifest with the hashes of its files replaced by a marker."""
+    if isinstance(manifest, dict) and isinstance(manifest.get("files"), dict):
+        manifest = dict(manifest, files={name: "<sha256>" for name in manifest["files"]})
+    return manifest
+
+
 def compare_file(rel, a_path, b_path, norm_a, norm_b):
     """A description of the first difference between two files, or None if they agree."""
     suffix = a_path.suffix.lower()
-    if suffix == ".json":
+    if suffix == ".npz":
+        return compare_npz(a_path, b_path)
+    if suffix == ".json" or a_path.name.endswith(SIDE_FILES_SUFFIX):
         try:
             a, b = norm_a.json(load_json(a_path)), norm_b.json(load_json(b_path))
+            if a_path.name.endswith(SIDE_FILES_SUFFIX):
+                a, b = without_side_file_hashes(a), without_side_file_hashes(b)
         except ValueError as e:
             a_bytes, b_bytes = a_path.read_bytes(), b_path.read_bytes()
             return None if a_bytes == b_bytes else f"not JSON ({e}) and the bytes differ"
@@ -521,12 +643,19 @@ def parser():
     for name, help_text in (("run", "run the cases into --out"), ("list", "list the cases and the skipped command lines")):
         s = sub.add_parser(name, help=help_text)
         s.add_argument("--lrchain", required=True, help="the lrchain executable to run (e.g. build/cli/lrchain)")
-        s.add_argument("--only", metavar="PATTERN", help="only the cases whose name matches this shell pattern, e.g. 'doc-coeffs-*'")
+        s.add_argument("--only", metavar="PATTERN", help="only the cases whose name matches this shell pattern, e.g. "
+                       "'doc-coeffs-*' ('python' with --python-path: only the Python calls)")
         s.add_argument("--quick", action="store_true", help="shrink long runs where lrchain has an option for it, skip sweeps of hours")
         s.add_argument("--source", default=str(SOURCE_DEFAULT), help=f"source tree with examples/ and docs/ (default {SOURCE_DEFAULT})")
         if name == "run":
             s.add_argument("--out", required=True, metavar="DIR", help="directory for the outputs, one subdirectory per case")
             s.add_argument("--timeout", type=float, default=3600, help="seconds per case before it is stopped (default 3600)")
+            s.add_argument("--python-path", metavar="DIR", help="also run the Python calls of python_calls() with the lrchain "
+                           "module in DIR (e.g. build/python) and save their results as python/out/results.npz")
+            s.add_argument("--python", default="/usr/bin/python3" if Path("/usr/bin/python3").exists() else sys.executable,
+                           help="interpreter for --python-path, with numpy (default /usr/bin/python3)")
+    r = sub.add_parser("python-results", help="(run by run --python-path) save the Python calls' results")
+    r.add_argument("--out", required=True, help="the .npz file to write")
     c = sub.add_parser("compare", help="compare two run directories: exit 0 identical, 1 different")
     c.add_argument("before", metavar="BEFORE_DIR")
     c.add_argument("after", metavar="AFTER_DIR")
@@ -536,7 +665,8 @@ def parser():
 def main(argv=None):
     try:
         args = parser().parse_args(argv)
-        return {"run": command_run, "list": command_list, "compare": command_compare}[args.command](args)
+        return {"run": command_run, "list": command_list, "compare": command_compare,
+                "python-results": command_python_results}[args.command](args)
     except UsageError as e:
         print(f"compare_outputs.py: {e}", file=sys.stderr)
         return 2

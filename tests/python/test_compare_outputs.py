@@ -11,6 +11,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
+
 SCRIPT = Path(__file__).resolve().parents[2] / "scripts" / "compare_outputs.py"
 
 SUMMARY = {
@@ -46,6 +48,8 @@ def write_tree(root, date="2026-11-27T23:38:43Z", seconds=0.8, summary=None, csv
     (case / "out" / "series.csv").write_text(csv)
     (case / "out" / "results.csv").write_text(SWEEP_CSV.replace("1.25", str(seconds)))
     (case / "out" / "index.html").write_text(html.replace("88.8", str(seconds)))
+    (case / "out" / ".results.h5.lrchain-files").write_text(json.dumps(
+        {"files": {"results.csv": f"{hash(seconds) & 0xffff:064x}"}, "kind": "lrchain sweep side files", "results": "results.h5"}))
     (case / "stderr.txt").write_text("")
     return run
 
@@ -157,3 +161,19 @@ def test_doc_command_lines_extracted_and_skipped(tmp_path):
         ("README.md:5", "not a plain lrchain command line (starts with mpirun)"),
         ("README.md:6", "a synopsis with placeholders or optional parts"),
     ]
+
+
+def write_npz(path, values):
+    """An .npz of one float64 array E_x, as `compare_outputs.py python-results` writes them."""
+    np.savez(path, E_x=np.asarray(values, dtype=np.float64))
+
+
+def test_npz_compared_bit_for_bit(tmp_path):
+    before, after = write_tree(tmp_path / "before"), write_tree(tmp_path / "after")
+    write_npz(before / "ring" / "out" / "results.npz", [0.5, 0.25, 1e-3])
+    write_npz(after / "ring" / "out" / "results.npz", [0.5, 0.25, 1e-3])
+    assert compare(before, after).returncode == 0
+    write_npz(after / "ring" / "out" / "results.npz", [0.5, 0.25, np.nextafter(1e-3, 1)])
+    done = compare(before, after)
+    assert done.returncode == 1
+    assert "DIFF ring/out/results.npz: E_x: element 2 (flat) differs, dtype <f8" in done.stdout, done.stdout
