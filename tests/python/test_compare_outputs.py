@@ -59,6 +59,13 @@ def compare(before, after):
                           capture_output=True, text=True, check=False)
 
 
+def differing(tmp_path, **after_changes):
+    """stdout of compare on a default tree and one made with AFTER_CHANGES, which must differ (exit 1)."""
+    done = compare(write_tree(tmp_path / "before"), write_tree(tmp_path / "after", **after_changes))
+    assert done.returncode == 1, done.stdout + done.stderr
+    return done.stdout
+
+
 def test_identical_apart_from_provenance_timing_and_paths(tmp_path):
     # Different run directories, dates, wall times, cache state: all of it provenance, timing or place.
     before = write_tree(tmp_path / "before")
@@ -71,44 +78,34 @@ def test_identical_apart_from_provenance_timing_and_paths(tmp_path):
 
 
 def test_one_csv_byte_changed(tmp_path):
-    before = write_tree(tmp_path / "before")
-    after = write_tree(tmp_path / "after", csv=CSV.replace("0.99999999", "0.99999998"))
-    done = compare(before, after)
-    assert done.returncode == 1
-    assert "DIFF ring/out/series.csv: line 3: '0.5,0.99999999' != '0.5,0.99999998'" in done.stdout, done.stdout
-    assert done.stdout.count("DIFF ") == 1, done.stdout
+    out = differing(tmp_path, csv=CSV.replace("0.99999999", "0.99999998"))
+    assert "DIFF ring/out/series.csv: line 3: '0.5,0.99999999' != '0.5,0.99999998'" in out, out
+    assert out.count("DIFF ") == 1, out
 
 
 def test_json_physics_number_changed_by_one_ulp(tmp_path):
     # 1.6179534898196326 and the next double up (math.nextafter): bit for bit, not within a tolerance.
     changed = copy.deepcopy(SUMMARY)
     changed["amplitudes"][0]["measured_frequency"] = 1.6179534898196328
-    before = write_tree(tmp_path / "before")
-    after = write_tree(tmp_path / "after", summary=changed)
-    done = compare(before, after)
-    assert done.returncode == 1
+    out = differing(tmp_path, summary=changed)
     for name in ("stdout.json", "out/summary.json"):
         assert (f"DIFF ring/{name}: at $.amplitudes[0].measured_frequency: 1.6179534898196326 != 1.6179534898196328"
-                in done.stdout), done.stdout
-    assert "2 differences" in done.stdout
+                in out), out
+    assert "2 differences" in out
 
 
 def test_physics_named_like_timing_is_compared(tmp_path):
     # The ring's packet "duration" is physics (sim/src/ring_outputs.cpp), not a wall time.
     changed = copy.deepcopy(SUMMARY)
     changed["packet"]["duration"] = 1736.0
-    done = compare(write_tree(tmp_path / "before"), write_tree(tmp_path / "after", summary=changed))
-    assert done.returncode == 1
-    assert "at $.packet.duration: 1736.6563145999496 != 1736.0" in done.stdout, done.stdout
+    out = differing(tmp_path, summary=changed)
+    assert "at $.packet.duration: 1736.6563145999496 != 1736.0" in out, out
 
 
 def test_report_html_number_and_exit_code_compared(tmp_path):
-    before = write_tree(tmp_path / "before")
-    after = write_tree(tmp_path / "after", html=HTML.replace(">72<", ">71<"), exit_code=3)
-    done = compare(before, after)
-    assert done.returncode == 1
-    assert "DIFF ring/case.json: exit_code: 0 != 3" in done.stdout, done.stdout
-    assert "DIFF ring/out/index.html: line 4:" in done.stdout, done.stdout
+    out = differing(tmp_path, html=HTML.replace(">72<", ">71<"), exit_code=3)
+    assert "DIFF ring/case.json: exit_code: 0 != 3" in out, out
+    assert "DIFF ring/out/index.html: line 4:" in out, out
 
 
 def test_missing_file_and_case(tmp_path):
