@@ -32,13 +32,17 @@ HTML = ("<p>Produced by <code>lrchain reproduce --quick</code> in 88.8 s. Every 
         "<td class=\"num\">72</td>\n")
 
 
-def write_tree(root, date="2026-11-27T23:38:43Z", seconds=0.8, summary=None, csv=CSV, html=HTML, exit_code=0):
+STDERR = "[ 1/2]    8.2 s  dark_acoustic_bond   done in 8.2 s: 0 pass\n[ 2/2]    1.8 s  exp1   done in 1.8 s: 5 pass\n"
+
+
+def write_tree(root, date="2026-11-27T23:38:43Z", seconds=0.8, summary=None, csv=CSV, html=HTML, exit_code=0,
+               stderr=STDERR, argv=("simulate", "--out", "{OUT}"), stdout_text=None):
     """A run directory with one case, 'ring', as `compare_outputs.py run` lays it out."""
     run = root.resolve()
     case = run / "ring"
     (case / "out").mkdir(parents=True)
     (run / "manifest.json").write_text(json.dumps({"run_dir": str(run), "source": "/src", "cases": ["ring"]}))
-    (case / "case.json").write_text(json.dumps({"name": "ring", "argv": ["simulate", "--out", "{OUT}"],
+    (case / "case.json").write_text(json.dumps({"name": "ring", "argv": list(argv),
                                                 "quick_changes": [], "exit_code": exit_code, "seconds": seconds}))
     s = copy.deepcopy(summary or SUMMARY)
     s["provenance"]["date"], s["wall_seconds"] = date, seconds
@@ -50,7 +54,9 @@ def write_tree(root, date="2026-11-27T23:38:43Z", seconds=0.8, summary=None, csv
     (case / "out" / "index.html").write_text(html.replace("88.8", str(seconds)))
     (case / "out" / ".results.h5.lrchain-files").write_text(json.dumps(
         {"files": {"results.csv": f"{hash(seconds) & 0xffff:064x}"}, "kind": "lrchain sweep side files", "results": "results.h5"}))
-    (case / "stderr.txt").write_text("")
+    (case / "stderr.txt").write_text(stderr)
+    if stdout_text is not None:
+        (case / "stdout.txt").write_text(stdout_text)
     return run
 
 
@@ -75,6 +81,24 @@ def test_identical_apart_from_provenance_timing_and_paths(tmp_path):
     done = compare(before, after)
     assert done.returncode == 0, done.stdout + done.stderr
     assert done.stdout.startswith("0 differences in 1 cases"), done.stdout
+
+
+def test_stderr_progress_times_and_order_ignored_messages_compared(tmp_path):
+    # reproduce's progress: steps finish in any order with --jobs 2, each with its time (cli/src/reproduce_command.cpp).
+    reordered = "[ 1/2]    1.7 s  exp1   done in 1.7 s: 5 pass\n[ 2/2]    9.7 s  dark_acoustic_bond   done in 9.7 s: 0 pass\n"
+    assert compare(write_tree(tmp_path / "a"), write_tree(tmp_path / "b", stderr=reordered)).returncode == 0
+    out = differing(tmp_path, stderr=reordered.replace("5 pass", "4 pass"))
+    assert "DIFF ring/stderr.txt:" in out, out
+
+
+def test_derive_text_reported_as_unstable_not_failing(tmp_path):
+    # Two runs of one build printed these two lines (`lrchain derive --model models/klein_gordon.toml`).
+    argv = ("derive", "--model", "models/klein_gordon.toml")
+    before = write_tree(tmp_path / "before", argv=argv, stdout_text="det L_1 = D1*C+w0^2-omega^2 = 0\n")
+    after = write_tree(tmp_path / "after", argv=argv, stdout_text="det L_1 = w0^2+C*D1-omega^2 = 0\n")
+    done = compare(before, after)
+    assert done.returncode == 0, done.stdout
+    assert "UNSTABLE ring/stdout.txt" in done.stdout and "1 differences in outputs known to vary" in done.stdout
 
 
 def test_one_csv_byte_changed(tmp_path):
