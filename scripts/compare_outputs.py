@@ -137,7 +137,7 @@ class HelpCache:
         if key not in self.texts:
             done = subprocess.run([str(self.lrchain), *words, "--help"], capture_output=True, text=True, timeout=60)
             self.texts[key] = done.stdout
-        return re.search(r"(^|[\s,])" + re.escape(option) + r"\b", self.texts[key], re.M) is not None
+        return re.search(r"^\s*(?:-\w,)?" + re.escape(option) + r"\b", self.texts[key], re.M) is not None
 
 
 def set_option(argv, option, value):
@@ -399,12 +399,17 @@ def run_case(case, lrchain, source, case_dir, env, timeout, recorded=True):
     return exit_code, seconds
 
 
+def executable(path):
+    """The --lrchain path, resolved (UsageError if it is not an executable file)."""
+    resolved = Path(path).resolve()
+    if not resolved.is_file() or not os.access(resolved, os.X_OK):
+        raise UsageError(f"--lrchain {path}: not an executable file")
+    return resolved
+
+
 def command_run(args):
     """`run`: every selected case into args.out."""
-    lrchain = Path(args.lrchain).resolve()
-    source = Path(args.source).resolve()
-    if not os.access(lrchain, os.X_OK):
-        raise UsageError(f"--lrchain {args.lrchain}: not an executable file")
+    lrchain, source = executable(args.lrchain), Path(args.source).resolve()
     out = Path(args.out).resolve()
     cases, skipped = all_cases(source, lrchain, args.quick)
     chosen = select(cases, args.only)
@@ -441,7 +446,7 @@ def command_run(args):
 
 def command_list(args):
     """`list`: the cases and the skipped command lines, without running anything."""
-    cases, skipped = all_cases(Path(args.source).resolve(), Path(args.lrchain).resolve(), args.quick)
+    cases, skipped = all_cases(Path(args.source).resolve(), executable(args.lrchain), args.quick)
     for case in select(cases, args.only):
         extra = f"  [quick: {'; '.join(case['quick_changes'])}]" if case["quick_changes"] else ""
         print(f"{case['name']}  ({case['origin']})  lrchain {shlex.join(case['argv'])}{extra}")
