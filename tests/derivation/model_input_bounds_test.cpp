@@ -102,3 +102,31 @@ TEST_CASE("model derivation: a failure of the symbolic engine names file:line in
                          InputError);
   }
 }
+
+TEST_CASE("model files: long keys and strings, deep parentheses and C1 controls are refused naming file:line, no crash") {
+  // Before: std::regex and the parsers recursed once per character, so a 50000-character name or
+  // 10000 nested parentheses overflowed the stack (exit 139); U+0085 and U+2028 were accepted.
+  const auto refused = [](const std::string& text, const std::string& where) {
+    CAPTURE(where);
+    try {
+      derivation::parse_model_text(text, "bounded.toml");
+      FAIL("accepted");
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      CHECK(message.find(where) != std::string::npos);
+      CHECK(message.size() < 400);  // one readable line, not the 50000-character value
+      CHECK(message.find('\n') == std::string::npos);
+    }
+  };
+  std::string text = model_with_law("r + a*r^2 + b*r^3");
+  refused(std::string(text).replace(text.find("bounded"), 7, std::string(50000, 'x')), "bounded.toml:1: key name");
+  refused(std::string(text).replace(text.find("a = {"), 1, std::string(50000, 'a')), "bounded.toml:4: key parameters.");
+  refused(model_with_law("r" + std::string(5000, ' ') + "+ a*r^2"), "bounded.toml:8: key functions.F.expression");
+  refused(model_with_law(std::string(100, '(') + "r" + std::string(100, ')')), "bounded.toml:8: function F: parentheses nested 100 deep");
+  refused(std::string(text).replace(text.find("\"bounds\""), 8, "\"a\\u0085b\""), "bounded.toml:2: key description");
+  refused(std::string(text).replace(text.find("\"bounds\""), 8, "\"a\\u2028b\""), "bounded.toml:2: key description");
+  // Within the bounds: 64 nested parentheses and a 64-character parameter name still load.
+  CHECK_NOTHROW(derivation::parse_model_text(model_with_law(std::string(64, '(') + "r" + std::string(64, ')') + " + a*r^2"), "bounded.toml"));
+  std::string long_name = std::string(text).insert(text.find("[functions.F]"), std::string(64, 'z') + " = { default = \"1\" }\n");
+  CHECK_NOTHROW(derivation::parse_model_text(long_name, "bounded.toml"));
+}

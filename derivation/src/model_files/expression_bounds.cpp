@@ -1,5 +1,6 @@
 #include "expression_bounds.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -187,6 +188,14 @@ class Estimator {
 }  // namespace
 
 std::string expression_bound_problem(const std::string& plain) {
+  // Nesting first: the estimator below and GiNaC's parser recurse once per parenthesis.
+  long depth = 0, deepest = 0;
+  for (const char ch : plain) {
+    depth += ch == '(' ? 1 : ch == ')' ? -1 : 0;
+    deepest = std::max(deepest, depth);
+  }
+  if (deepest > kMaxNestingDepth)
+    return "parentheses nested " + std::to_string(deepest) + " deep (more than " + std::to_string(kMaxNestingDepth) + ")";
   try {
     Estimator(plain).run();
     return {};

@@ -9,6 +9,7 @@ namespace lrchain::derivation {
 inline constexpr double kMaxNumberDigits = 2000;  // exact numbers up to ~10^2000
 inline constexpr double kMaxPolynomialDegree = 12;  // forces are used to cubic order
 inline constexpr double kMaxExponentialArgument = 700;  // exp(700) ~ 1e304, near the double limit
+inline constexpr long kMaxNestingDepth = 64;  // parentheses inside parentheses
 
 // "" when `plain` (a translated expression: numbers, names, + - * / ^, parentheses, calls) stays
 // within the bounds, else the sentence that says which bound it breaks.

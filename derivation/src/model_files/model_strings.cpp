@@ -41,7 +41,10 @@ std::size_t utf8_sequence_length(std::string_view text, std::size_t i) {
   return length;
 }
 
-void check(std::string_view text, const std::string& where, const std::string& what) {
+void check(std::string_view text, const std::string& where, const std::string& what, std::size_t max_bytes) {
+  if (text.size() > max_bytes)
+    throw InputError(where + ": " + what + " has " + std::to_string(text.size()) + " bytes, more than the " +
+                     std::to_string(max_bytes) + " a model file allows");
   const std::string reason = unsafe_string_reason(text);
   if (!reason.empty())
     throw InputError(where + ": " + what + " has " + reason +
@@ -54,7 +57,7 @@ void walk_table(const toml::table& table, const std::string& key_path, const std
   for (const auto& [key, value] : table) {
     const std::string name = key_path.empty() ? printable(key.str()) : key_path + "." + printable(key.str());
     const long line = key.source().begin.line ? long(key.source().begin.line) : long(value.source().begin.line);
-    check(key.str(), file + ":" + std::to_string(line) + ": key " + name, "the key");
+    check(key.str(), file + ":" + std::to_string(line) + ": key " + name, "the key", kMaxModelKeyBytes);
     walk(value, name, file);
   }
 }
@@ -65,7 +68,8 @@ void walk(const toml::node& node, const std::string& key_path, const std::string
   } else if (const toml::array* a = node.as_array()) {
     for (const auto& element : *a) walk(element, key_path, file);
   } else if (const auto* s = node.as_string()) {
-    check(s->get(), file + ":" + std::to_string(node.source().begin.line) + ": key " + key_path, "the value");
+    check(s->get(), file + ":" + std::to_string(node.source().begin.line) + ": key " + key_path, "the value",
+          kMaxModelStringBytes);
   }
 }
 
@@ -77,13 +81,22 @@ std::string unsafe_string_reason(std::string_view text) {
     if (b < 0x20 || b == 0x7f) return "a control character (byte " + byte_text(b) + ")";
     const std::size_t length = utf8_sequence_length(text, i);
     if (length == 0) return "a byte that is not valid UTF-8 (" + byte_text(b) + ")";
+    // C1 controls U+0080..U+009F (C2 80..C2 9F) and the line and paragraph separators U+2028/U+2029
+    // (E2 80 A8/A9): line breaks or terminal controls to some readers.
+    const auto next = [&](std::size_t k) { return static_cast<unsigned char>(text[i + k]); };
+    if (length == 2 && b == 0xc2 && next(1) <= 0x9f)
+      return "a control character (U+00" + byte_text(next(1)).substr(2) + ")";
+    if (length == 3 && b == 0xe2 && next(1) == 0x80 && (next(2) == 0xa8 || next(2) == 0xa9))
+      return std::string("a line or paragraph separator (U+202") + (next(2) == 0xa8 ? "8" : "9") + ")";
     i += length;
   }
   return {};
 }
 
 std::string printable(std::string_view text) {
+  constexpr std::size_t shown = 80;  // a message stays one readable line, whatever the key holds
   std::string out;
+  if (text.size() > shown) return printable(text.substr(0, shown)) + "... (" + std::to_string(text.size()) + " bytes)";
   for (const char ch : text) {
     const auto b = static_cast<unsigned char>(ch);
     if (b >= 0x20 && b < 0x7f) out += ch;

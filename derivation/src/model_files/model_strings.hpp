@@ -8,8 +8,16 @@
 
 namespace lrchain::derivation {
 
+// Longest key (an identifier: parameter, function, field names) and longest string value (an
+// expression, a description) of a model file. Checked before any pattern or parser reads them:
+// std::regex and the expression parsers recurse once per character, so a 50000-character name
+// overflowed the stack.
+inline constexpr std::size_t kMaxModelKeyBytes = 64;
+inline constexpr std::size_t kMaxModelStringBytes = 4096;
+
 // Throws InputError "FILE:LINE: key K: ..." at the first key or string value of `root` (at any
-// depth, arrays included) that has a control character or is not valid UTF-8.
+// depth, arrays included) that is too long, has a control character (C0, DEL, C1, U+2028/9) or is
+// not valid UTF-8.
 void refuse_unsafe_strings(const toml::table& root, const std::string& file);
 
 // Why `text` is not one line of valid UTF-8 ("a control character (byte 0x0a)", ...), or "" when it is.
