@@ -172,14 +172,14 @@ TEST_CASE("model files: a path written as C++ is never emitted, and awkward lega
   fs::create_directories(directory);
   Strings s;
   s.name = "awkward";
-  // Quotes, backslashes, a comment closer, a directive and a long tail: legal in a description.
-  s.description = "q\\\" b\\\\ */ /* #include <cstdlib> ??/ " + std::string(100000, 'x');
+  // Quotes, backslashes, a comment closer, a directive and a tail up to the 4096-byte limit of a string: legal in a description.
+  s.description = "q\\\" b\\\\ */ /* #include <cstdlib> ??/ " + std::string(4000, 'x');
   const fs::path file = directory / ("m" + payload(2) + ".toml");
   write(file, model_text(s));
   CompiledModelInfo info;
   const auto definition = compile_model_file(file, &info);
   CHECK(definition->name == "awkward");
-  CHECK(definition->description == "q\" b\\ */ /* #include <cstdlib> ??/ " + std::string(100000, 'x'));
+  CHECK(definition->description == "q\" b\\ */ /* #include <cstdlib> ??/ " + std::string(4000, 'x'));
   CHECK(definition->parameters.size() == 2);
   CHECK(definition->branch_names.size() == 1);
   CHECK(!info.library.empty());
