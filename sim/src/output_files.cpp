@@ -351,13 +351,28 @@ bool identity_of(const fs::path& file, OutputListing::Entry& e) {
 }
 }  // namespace
 
+namespace {
+// A name with an extension lrchain writes into an output directory.
+bool output_file_name(const std::string& name) {
+  static const char* const extensions[] = {".csv", ".json", ".bin", ".h5", ".png", ".svg", ".pdf", ".gp", ".dat"};
+  const std::string extension = fs::path(name).extension().string();
+  return std::find(std::begin(extensions), std::end(extensions), extension) != std::end(extensions);
+}
+}  // namespace
+
 OutputListing list_output_files(const fs::path& dir) {
   OutputListing listing;
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     OutputListing::Entry e;
     e.name = it->path().filename().string();
-    if (e.name.empty() || e.name[0] == '.' || !it->is_regular_file(ec)) continue;
+    if (e.name.empty() || e.name[0] == '.') continue;
+    if (!it->is_regular_file(ec)) {
+      // A FIFO, device or directory with the name of an output file is refused before the run
+      // writes anything, not when its turn comes after the run.
+      if (output_file_name(e.name)) check_output_target(it->path());
+      continue;
+    }
     if (identity_of(it->path(), e)) listing.files.push_back(std::move(e));
   }
   return listing;

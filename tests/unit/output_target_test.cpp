@@ -143,6 +143,21 @@ TEST_CASE("CLI: a FIFO in --out where a run writes a file is exit 2 and stays a 
   CHECK(r.err.find((dir / "series.csv").string()) != std::string::npos);
   CHECK(fs::symlink_status(dir / "series.csv").type() == fs::file_type::fifo);
 
+  // A FIFO where a file written after the run goes (summary.json, a snapshot) is refused before the
+  // run, with nothing written: before, the run wrote series.csv and the rest, then exited 2.
+  for (const std::string name : {"summary.json", "snapshot_t0.csv", "energy_density_spacetime.bin"}) {
+    CAPTURE(name);
+    const fs::path late = dir / ("late-" + name.substr(0, name.find('.')));
+    fs::create_directories(late);
+    REQUIRE(::mkfifo((late / name).c_str(), 0600) == 0);
+    const auto l = run_lrchain(words("simulate bright --branch optical --theta pi/2 --sites 101 --periods 2 --no-figures --out " +
+                                     late.string()));
+    CHECK(l.exit_code == 2);
+    CHECK(l.err.find((late / name).string()) != std::string::npos);
+    CHECK(std::distance(fs::directory_iterator(late), fs::directory_iterator()) == 1);  // only the FIFO
+    CHECK(fs::symlink_status(late / name).type() == fs::file_type::fifo);
+  }
+
   const fs::path out = dir / "out";
   const auto c = run_lrchain(words("simulate bright --branch optical --theta pi/2 --sites 101 --periods 2 --checkpoint " +
                                    (dir / "series.csv").string() + " --out " + out.string()));

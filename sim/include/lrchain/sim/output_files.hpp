@@ -98,7 +98,9 @@ struct OutputListing {
   std::vector<Entry> files;
 };
 // The visible regular files of `dir` now (names starting with '.' are lrchain's own lock and
-// temporaries); empty when dir does not exist.
+// temporaries); empty when dir does not exist. Throws InputError (check_output_target) for an
+// entry with an output file's extension (.csv, .json, .bin, .h5, .png, .svg, .pdf, .gp, .dat) that
+// is not a regular file: runs call it before they write anything.
 OutputListing list_output_files(const std::filesystem::path& dir);
 // The names in `before` that are still the same file in `dir` (a file the run wrote is a new one:
 // every writer renames a new file into place), except those in `keep`; sorted.
