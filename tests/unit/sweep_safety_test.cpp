@@ -109,13 +109,14 @@ TEST_CASE("sweep safety: a control character in the name, the output or --output
     std::string expected;
   };
   const Case cases[] = {
-      {figure_sweep(R"(name = "a\nset output '|touch PWNED'")", "out/r.h5"), {}, "'name' in the top level at s.toml:2: contains the control character 0x0A"},
-      {figure_sweep(R"(name = "a\u0000b")", "out/r.h5"), {}, "'name' in the top level at s.toml:2: contains the control character 0x00"},
-      {figure_sweep("", "out/r\\r.h5"), {}, "'output' in the top level at s.toml:4: contains the control character 0x0D"},
+      {figure_sweep(R"(name = "a\nset output '|touch PWNED'")", "out/r.h5"), {}, "'name' in the top level at s.toml:2: contains a control character (byte 0x0a)"},
+      {figure_sweep(R"(name = "a\u0000b")", "out/r.h5"), {}, "'name' in the top level at s.toml:2: contains a control character (byte 0x00)"},
+      {figure_sweep(R"(name = "a\u0085b")", "out/r.h5"), {}, "'name' in the top level at s.toml:2: contains a control character (U+0085)"},
+      {figure_sweep("", "out/r\\r.h5"), {}, "'output' in the top level at s.toml:4: contains a control character (byte 0x0d)"},
       {figure_sweep("", "out/r'.h5"), {}, "'output' in the top level at s.toml:4: the figure's files are named after it"},
       // gnuplot reads a file argument or `plot '<cmd'` starting with '<' as a shell command.
       {figure_sweep("", "out/<touch PWNED.h5"), {}, "'output' in the top level at s.toml:4: the figure's files are named after it"},
-      {figure_sweep("", "out/r.h5"), {"--output", "out/a\nb.h5"}, "invalid --output: contains the control character 0x0A"},
+      {figure_sweep("", "out/r.h5"), {"--output", "out/a\nb.h5"}, "invalid --output: contains a control character (byte 0x0a)"},
   };
   for (const auto& k : cases) {
     CAPTURE(k.sweep);

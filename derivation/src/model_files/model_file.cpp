@@ -8,6 +8,7 @@
 
 #include "lrchain/config/unicode_guard.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/one_line_text.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sha256.hpp"
 #include "model_expression.hpp"
@@ -291,7 +292,7 @@ class Loader {
 // Messages (and ModelFile::path, which only names the file) show `path` with its bytes outside printable ASCII as \xNN when it has a
 // control character or invalid UTF-8 (one line on stderr whatever the path).
 ModelFile parse_model_text(const std::string& text, const std::string& path) {
-  const std::string shown = unsafe_string_reason(path).empty() ? path : printable(path);
+  const std::string shown = one_line_text_problem(path).empty() ? path : printable(path);
   try {
     return Loader(text, shown).run();
   } catch (const InputError&) {

@@ -20,9 +20,6 @@ inline constexpr std::size_t kMaxModelStringBytes = 4096;
 // not valid UTF-8.
 void refuse_unsafe_strings(const toml::table& root, const std::string& file);
 
-// Why `text` is not one line of valid UTF-8 ("a control character (byte 0x0a)", ...), or "" when it is.
-std::string unsafe_string_reason(std::string_view text);
-
 // `text` for a one-line message: printable ASCII as is, every other byte as \xNN.
 std::string printable(std::string_view text);
 

@@ -1,6 +1,7 @@
 // Reading and checking a sweep file (sweep/sweep_config.hpp) through the strict config layer.
 #include "lrchain/sim/sweep/sweep_config.hpp"
 
+#include "lrchain/one_line_text.hpp"
 #include "lrchain/output_target.hpp"
 
 #include <algorithm>
@@ -148,12 +149,8 @@ void check_sweep_memory(const Job& job, const std::vector<CheckedTable>& axes,
 
 // Why `text` cannot be one line of a label or file name (its first control character), or "".
 std::string control_character_problem(const std::string& text) {
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const auto byte = static_cast<unsigned char>(text[i]);
-    if (byte < 0x20 || byte == 0x7F)
-      return fmt::format("contains the control character 0x{:02X} at position {}; give one line of printable text", int(byte), i + 1);
-  }
-  return {};
+  const std::string problem = one_line_text_problem(text);
+  return problem.empty() ? problem : "contains " + problem + "; give one line of printable text";
 }
 
 // Refuses a control character in the string at `key` (exit 2 naming file:line:key).
