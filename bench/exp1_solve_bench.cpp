@@ -14,11 +14,12 @@
 #include "lrchain/ansatz/bright_breather.hpp"
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/displacement_lattice.hpp"
-#include "lrchain/sim/experiment_config.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
 #include "lrchain/sim/integrator.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim;
+using namespace lrchain::jobs;
 
 namespace {
 

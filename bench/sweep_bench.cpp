@@ -20,11 +20,11 @@
 
 #include <fmt/format.h>
 
-#include "lrchain/sim/sweep/sweep_config.hpp"
-#include "lrchain/sim/sweep/sweep_run.hpp"
+#include "lrchain/jobs/sweep/sweep_config.hpp"
+#include "lrchain/jobs/sweep/sweep_run.hpp"
 
 namespace fs = std::filesystem;
-using namespace lrchain::sim::sweep;
+using namespace lrchain::jobs::sweep;
 
 int main(int argc, char** argv) {
   const long points = argc > 1 ? std::atol(argv[1]) : 1000;

@@ -30,8 +30,8 @@
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/output_lock.hpp"
-#include "lrchain/sim/experiment_config.hpp"
-#include "lrchain/sim/more_experiment_config.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
+#include "lrchain/jobs/more_experiment_config.hpp"
 #include "lrchain/sim/strain_sites.hpp"
 #include "help_text.hpp"
 #include "options.hpp"
@@ -480,9 +480,9 @@ void register_simulate(CLI::App& app) {
     if (run_model_config(*config, *sim_cmd, {out, std::shared_ptr<bool>(style, &style->compact_json),
                                                     std::shared_ptr<bool>(style, &style->figures)}))
       return;  // a model file's bright or ring config (simulate_model_bright.cpp)
-    const std::string kind = sim::experiment_kind(*config);
+    const std::string kind = jobs::experiment_kind(*config);
     if (kind == "drive") {
-      auto dc = sim::load_drive_config(*config);
+      auto dc = jobs::load_drive_config(*config);
       dc.run.restart_file = *restart;
       dc.run.checkpoint_file = *checkpoint;
       dc.run.max_memory = *max_memory;
@@ -491,7 +491,7 @@ void register_simulate(CLI::App& app) {
       return;
     }
     if (kind == "modulated") {
-      auto mc = sim::load_modulated_config(*config);
+      auto mc = jobs::load_modulated_config(*config);
       mc.run.restart_file = *restart;
       mc.run.checkpoint_file = *checkpoint;
       mc.run.max_memory = *max_memory;
@@ -499,7 +499,7 @@ void register_simulate(CLI::App& app) {
       run_modulated_and_report(mc.run, !out->empty() ? *out : mc.out_dir, *style);
       return;
     }
-    sim::ExperimentConfig ec = sim::load_experiment_config(*config);
+    jobs::ExperimentConfig ec = jobs::load_experiment_config(*config);
     const std::string dir = !out->empty() ? *out : ec.out_dir;
     ec.bright.restart_file = *restart;
     ec.bright.checkpoint_file = *checkpoint;

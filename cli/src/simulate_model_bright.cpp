@@ -10,7 +10,7 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/model_bright_run.hpp"
-#include "lrchain/sim/model_experiment_config.hpp"
+#include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/sim/output_lock.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
@@ -87,11 +87,11 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
 
 bool run_model_config(const std::string& file, const CLI::App& simulate, const ModelRunOutput& output) {
   const config::Document doc = config::Document::from_file(file);
-  if (!sim::is_model_experiment(doc)) return false;
+  if (!jobs::is_model_experiment(doc)) return false;
   for (const char* name : {"--restart", "--checkpoint", "--max-memory"})
     if (simulate.count(name) > 0) throw InputError(std::string(name) + " is not available with a model-file config");
   refuse_hdf5_format(simulate, "a model-file config");
-  const sim::ModelExperimentConfig mc = sim::load_model_experiment_config(doc);
+  const jobs::ModelExperimentConfig mc = jobs::load_model_experiment_config(doc);
   refuse_without_out(simulate, !output.out->empty() ? *output.out : mc.out_dir, output_file_options);
   ModelSelection selection;
   selection.file = mc.model_file;

@@ -13,15 +13,15 @@
 #include "help_text.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/provenance_json.hpp"
-#include "lrchain/sim/sweep/side_files.hpp"
-#include "lrchain/sim/sweep/sweep_config.hpp"
-#include "lrchain/sim/sweep/sweep_figure.hpp"
-#include "lrchain/sim/sweep/sweep_memory.hpp"
-#include "lrchain/sim/sweep/sweep_run.hpp"
+#include "lrchain/jobs/sweep/side_files.hpp"
+#include "lrchain/jobs/sweep/sweep_config.hpp"
+#include "lrchain/jobs/sweep/sweep_figure.hpp"
+#include "lrchain/jobs/sweep/sweep_memory.hpp"
+#include "lrchain/jobs/sweep/sweep_run.hpp"
 #include "options.hpp"
 #include "stop_signals.hpp"
 #ifdef LRCHAIN_WITH_MPI
-#include "lrchain/sim/sweep/mpi_sweep.hpp"
+#include "lrchain/jobs/sweep/mpi_sweep.hpp"
 #endif
 
 namespace lrchain::cli {
@@ -37,36 +37,36 @@ struct SweepArguments {
 // Loads and checks everything, runs the sweep (resuming from its results file), prints a JSON
 // summary; an interrupted sweep ends with exit 130/143 after its results so far are written.
 void run_sweep_command(const SweepArguments& a) {
-  sim::sweep::SweepConfig c = sim::sweep::load_sweep_config(a.config, sim::sweep::launcher_ranks_on_this_node());
+  jobs::sweep::SweepConfig c = jobs::sweep::load_sweep_config(a.config, jobs::sweep::launcher_ranks_on_this_node());
   if (!a.output.empty()) {
-    if (const std::string problem = sim::sweep::output_problem(a.output, !c.figure.empty()); !problem.empty())
+    if (const std::string problem = jobs::sweep::output_problem(a.output, !c.figure.empty()); !problem.empty())
       throw InvalidParameter("--output", problem);
     c.output = a.output;
   }
-  const sim::sweep::Job job = sim::sweep::make_job(c);
-  sim::sweep::SweepRunOptions o;
+  const jobs::sweep::Job job = jobs::sweep::make_job(c);
+  jobs::sweep::SweepRunOptions o;
   o.threads = a.threads;
   o.retry_failed = a.retry_failed;
   o.progress = !a.quiet;
   StopSignals signals;
   o.stop = StopSignals::flag();
   o.stop_signal = &StopSignals::received;
-  sim::sweep::SweepOutcome r;
+  jobs::sweep::SweepOutcome r;
   int rank = 0, ranks = 1;
 #ifdef LRCHAIN_WITH_MPI
-  std::unique_ptr<sim::sweep::MpiSession> mpi;
-  if (sim::sweep::started_by_mpi_launcher()) mpi = std::make_unique<sim::sweep::MpiSession>();
+  std::unique_ptr<jobs::sweep::MpiSession> mpi;
+  if (jobs::sweep::started_by_mpi_launcher()) mpi = std::make_unique<jobs::sweep::MpiSession>();
   if (mpi) {
     rank = mpi->rank();
     ranks = mpi->size();
     o.progress = o.progress && rank == 0;
-    r = sim::sweep::run_sweep_mpi(*mpi, c, job, o);
+    r = jobs::sweep::run_sweep_mpi(*mpi, c, job, o);
     if (r.lost_ranks > 0) mpi->abandon();
   } else {
-    r = sim::sweep::run_sweep(c, job, o);
+    r = jobs::sweep::run_sweep(c, job, o);
   }
 #else
-  r = sim::sweep::run_sweep(c, job, o);
+  r = jobs::sweep::run_sweep(c, job, o);
 #endif
   if (rank != 0) {
     // A rank stopped by a signal ends as rank 0 does (rank 0 reports the sweep).
@@ -78,12 +78,12 @@ void run_sweep_command(const SweepArguments& a) {
   nlohmann::json j;
   j["figures"] = nlohmann::json::array();
   if (!c.figure.empty() && !r.interrupted) {
-    const auto results = sim::sweep::read_results(c.output, c, job);
-    const auto figure_files = sim::sweep::sweep_figure_files(c);
-    sim::sweep::mark_side_files_pending(c, figure_files);
-    j["figures"] = c.figure == "stability" && c.job == "dark continue" ? sim::sweep::write_stability_figure(c, results)
-                                                                        : sim::sweep::write_sweep_figures(c, job, results, c.figure);
-    sim::sweep::record_side_files(c, figure_files);
+    const auto results = jobs::sweep::read_results(c.output, c, job);
+    const auto figure_files = jobs::sweep::sweep_figure_files(c);
+    jobs::sweep::mark_side_files_pending(c, figure_files);
+    j["figures"] = c.figure == "stability" && c.job == "dark continue" ? jobs::sweep::write_stability_figure(c, results)
+                                                                        : jobs::sweep::write_sweep_figures(c, job, results, c.figure);
+    jobs::sweep::record_side_files(c, figure_files);
   }
   j["name"] = c.name;
   j["job"] = c.job;

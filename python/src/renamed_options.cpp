@@ -9,9 +9,9 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
-#include "lrchain/sim/experiment_config.hpp"
-#include "lrchain/sim/model_experiment_config.hpp"
-#include "lrchain/sim/sweep/study_jobs.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
+#include "lrchain/jobs/model_experiment_config.hpp"
+#include "lrchain/jobs/sweep/study_jobs.hpp"
 
 namespace py = pybind11;
 
@@ -28,9 +28,9 @@ const std::vector<config::RenamedKey>& renamed_of(const config::TableSchema& sch
 
 const std::vector<config::RenamedKey>& renamed_options(std::string_view table) {
   if (table == "bright" || table == "drive" || table == "modulated")
-    return renamed_of(sim::experiment_schema(table), std::string(table));
-  if (table == "model bright") return renamed_of(sim::model_experiment_schema("bright"), "bright");
-  if (table == "dark") return renamed_of(sim::sweep::study_schema("dark continue"), "dark");
+    return renamed_of(jobs::experiment_schema(table), std::string(table));
+  if (table == "model bright") return renamed_of(jobs::model_experiment_schema("bright"), "bright");
+  if (table == "dark") return renamed_of(jobs::sweep::study_schema("dark continue"), "dark");
   throw std::invalid_argument("renamed_options: no table \"" + std::string(table) +
                               "\" (bright, drive, modulated, model bright, dark)");
 }

@@ -11,7 +11,7 @@
 
 #include "corpus_tables.hpp"
 #include "lrchain/numeric_parse.hpp"
-#include "lrchain/sim/experiment_config.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
 
 namespace lrchain::corpus {
 
@@ -20,9 +20,9 @@ namespace {
 // The keys of [table] in a config of `kind` that were renamed (the schema's RenamedKey list); none
 // for a kind or table the schema does not know.
 std::vector<config::RenamedKey> renamed_keys(const std::string& kind, const std::string& table) {
-  const auto kinds = sim::experiment_kinds();
+  const auto kinds = jobs::experiment_kinds();
   if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) return {};
-  const config::KeySchema* t = sim::experiment_schema(kind).find(table);
+  const config::KeySchema* t = jobs::experiment_schema(kind).find(table);
   return t && t->table ? t->table->renamed : std::vector<config::RenamedKey>{};
 }
 

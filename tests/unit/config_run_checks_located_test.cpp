@@ -17,8 +17,8 @@
 #include "lrchain/dispersion.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/drive_run.hpp"
-#include "lrchain/sim/experiment_config.hpp"
-#include "lrchain/sim/more_experiment_config.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
+#include "lrchain/jobs/more_experiment_config.hpp"
 
 namespace fs = std::filesystem;
 using lrchain::config::ConfigError;
@@ -30,10 +30,10 @@ namespace {
 // unlocated InvalidParameter fails the test).
 ConfigError located_error(const std::string& text, const std::string& source) {
   const Document doc = Document::from_text(text, source);
-  const std::string kind = lrchain::sim::experiment_kind(doc);
+  const std::string kind = lrchain::jobs::experiment_kind(doc);
   try {
-    if (kind == "drive") lrchain::sim::load_drive_config(doc);
-    else lrchain::sim::load_experiment_config(doc);
+    if (kind == "drive") lrchain::jobs::load_drive_config(doc);
+    else lrchain::jobs::load_experiment_config(doc);
   } catch (const ConfigError& e) {
     return e;
   } catch (const lrchain::InputError& e) {
@@ -85,11 +85,11 @@ TEST_CASE("config run checks: theta, amplitude, omega0 name file:line, table and
   CHECK(std::string(e.what()).starts_with("invalid value for 'ramp_rate' in [drive] at cfg/ramp.toml:7: must be in (0, omega0]"));
   // A key the file does not hold (amplitude's default 0.06 against delta0 = 0.01) keeps the message
   // naming the parameter, unlocated; a valid file loads.
-  CHECK_THROWS_WITH_AS(lrchain::sim::load_drive_config(Document::from_text(
+  CHECK_THROWS_WITH_AS(lrchain::jobs::load_drive_config(Document::from_text(
                            "experiment = \"drive\"\n[model]\ndelta0 = 0.01\n[drive]\nsites = 100\n", "d.toml")),
                        doctest::Contains("invalid amplitude: must be a finite number in (0, delta0] = (0, 0.01]"),
                        lrchain::InvalidParameter);
-  CHECK_NOTHROW(lrchain::sim::load_experiment_config(Document::from_text(bright_config + "theta = 1\n", "ok.toml")));
+  CHECK_NOTHROW(lrchain::jobs::load_experiment_config(Document::from_text(bright_config + "theta = 1\n", "ok.toml")));
 }
 
 TEST_CASE("config run checks: the run's checks of sites and switch_off_time name the keys as the file spells them") {

@@ -13,8 +13,8 @@
 
 #include "lrchain/config/strict_toml.hpp"
 #include "lrchain/process.hpp"
-#include "lrchain/sim/experiment_config.hpp"
-#include "lrchain/sim/more_experiment_config.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
+#include "lrchain/jobs/more_experiment_config.hpp"
 
 namespace fs = std::filesystem;
 using lrchain::config::ConfigError;
@@ -44,10 +44,10 @@ const std::string modulated_head =
 std::string load_error(const std::string& text, const std::string& source, ConfigError* error = nullptr) {
   try {
     const Document doc = Document::from_text(text, source);
-    const std::string kind = lrchain::sim::experiment_kind(doc);
-    if (kind == "drive") lrchain::sim::load_drive_config(doc);
-    else if (kind == "modulated") lrchain::sim::load_modulated_config(doc);
-    else lrchain::sim::load_experiment_config(doc);
+    const std::string kind = lrchain::jobs::experiment_kind(doc);
+    if (kind == "drive") lrchain::jobs::load_drive_config(doc);
+    else if (kind == "modulated") lrchain::jobs::load_modulated_config(doc);
+    else lrchain::jobs::load_experiment_config(doc);
   } catch (const ConfigError& e) {
     if (error) *error = e;
     return e.what();
@@ -139,7 +139,7 @@ TEST_CASE("config: integers go through checked_integer (1e3 is 1000 — fraction
     CHECK(load_error(drive_head + "sites = " + value + "\n", "a.toml") ==
           "invalid value for 'sites' in [drive] at a.toml:4: expected an integer in [10, 50000000]; got " + shown);
   for (const char* thousand : {"1e3", "1000", "\"1e3\"", "1000.0"}) {
-    const auto c = lrchain::sim::load_drive_config(Document::from_text(drive_head + "sites = " + thousand + "\n", "a.toml"));
+    const auto c = lrchain::jobs::load_drive_config(Document::from_text(drive_head + "sites = " + thousand + "\n", "a.toml"));
     CHECK(c.run.beads == 1000);
   }
 }
@@ -152,7 +152,7 @@ TEST_CASE("config: [bright] sites is the odd number of strain sites 2N + 1, refu
         "strain sites are n = -N..N, 2N + 1 of them (got 1000)");
   // sites = 2N + 1: 1001 sites are n = -500..500, however the integer is written.
   const auto half_width = [](const std::string& line) {
-    return lrchain::sim::load_experiment_config(
+    return lrchain::jobs::load_experiment_config(
                Document::from_text(bright_head + "[bright]\ntheta = 1\n" + line, "a.toml")).bright.N;
   };
   CHECK(half_width("sites = 1001\n") == 500);
@@ -182,7 +182,7 @@ TEST_CASE("config: missing keys and kinds") {
         "invalid value for 'experiment' in the top-level table at a.toml:1: expected one of \"bright\", \"drive\", "
         "\"modulated\"; got \"brigth\"; did you mean \"bright\"?");
   // A drive file given to the bright reader names the kind instead of failing on a key.
-  CHECK_THROWS_WITH_AS(lrchain::sim::load_experiment_config(Document::from_text(drive_head, "d.toml")),
+  CHECK_THROWS_WITH_AS(lrchain::jobs::load_experiment_config(Document::from_text(drive_head, "d.toml")),
                        "config file 'd.toml' is a \"drive\" experiment; this reader takes \"bright\" only", ConfigError);
 }
 
@@ -222,8 +222,8 @@ TEST_CASE("config: missing, directory, empty, binary, malformed files are one lo
     CHECK(e.line() == 2);
   }
   // The same through the readers used by `simulate --config`.
-  CHECK_THROWS_AS(lrchain::sim::experiment_kind(fs::path(empty)), ConfigError);
-  CHECK_THROWS_AS(lrchain::sim::load_drive_config(fs::path(sub)), ConfigError);
+  CHECK_THROWS_AS(lrchain::jobs::experiment_kind(fs::path(empty)), ConfigError);
+  CHECK_THROWS_AS(lrchain::jobs::load_drive_config(fs::path(sub)), ConfigError);
   fs::remove_all(dir);
 }
 
@@ -231,7 +231,7 @@ TEST_CASE("config: the shipped examples load to the values written in them") {
   using lrchain::sim::StepperKind;
   const double pi = std::numbers::pi;
   // exp1_optical_pi2.toml: rho = "1/3", delta0 = "4/9", theta = "pi/2", N = 500, srkn11b, dt = 0.37.
-  const auto e1 = lrchain::sim::load_experiment_config(example("exp1_optical_pi2.toml"));
+  const auto e1 = lrchain::jobs::load_experiment_config(example("exp1_optical_pi2.toml"));
   CHECK(e1.experiment == "bright");
   CHECK(e1.name == "exp1-optical-theta-pi-2");
   CHECK(e1.bright.params.rho == doctest::Approx(1.0 / 3.0).epsilon(1e-15));
@@ -245,22 +245,22 @@ TEST_CASE("config: the shipped examples load to the values written in them") {
   CHECK(e1.bright.integrator.dt == 0.37);
   CHECK(e1.out_dir == "out/exp1");
   // exp2: error_window_end = 150, rkf78 at 1e-12; exp3: theta = "3*pi/5", N = 1000.
-  const auto e2 = lrchain::sim::load_experiment_config(example("exp2_optical_pi8.toml"));
+  const auto e2 = lrchain::jobs::load_experiment_config(example("exp2_optical_pi8.toml"));
   CHECK(e2.bright.error_window_end == 150);
   CHECK(e2.bright.integrator.stepper == StepperKind::rkf78);
   CHECK(e2.bright.integrator.abs_tol == 1e-12);
-  const auto e3 = lrchain::sim::load_experiment_config(example("exp3_optical_3pi5.toml"));
+  const auto e3 = lrchain::jobs::load_experiment_config(example("exp3_optical_3pi5.toml"));
   CHECK(e3.bright.theta == doctest::Approx(3 * pi / 5).epsilon(1e-15));
   CHECK(e3.bright.N == 1000);
   // exp4: acoustic, theta = 1.948, trailing_fit_start = 500; exp4c: ansatz_ends = true.
-  const auto e4 = lrchain::sim::load_experiment_config(example("exp4_acoustic_1948.toml"));
+  const auto e4 = lrchain::jobs::load_experiment_config(example("exp4_acoustic_1948.toml"));
   CHECK(e4.bright.branch == lrchain::Branch::acoustic);
   CHECK(e4.bright.theta == 1.948);
   CHECK(e4.bright.trailing.fit_start == 500);
-  CHECK(lrchain::sim::load_experiment_config(example("exp4c_acoustic_187_emitting.toml")).bright.ansatz_ends);
-  CHECK(lrchain::sim::load_experiment_config(example("exp5_optical_rho10_123.toml")).bright.params.rho == 10);
+  CHECK(lrchain::jobs::load_experiment_config(example("exp4c_acoustic_187_emitting.toml")).bright.ansatz_ends);
+  CHECK(lrchain::jobs::load_experiment_config(example("exp5_optical_rho10_123.toml")).bright.params.rho == 10);
   // exp6: drive, beads = 2000, amplitude = 0.06, t_m = 700, snapshot_times = [779.9, 2400.0], 1e-10.
-  const auto e6 = lrchain::sim::load_drive_config(example("exp6_drive_rho10.toml"));
+  const auto e6 = lrchain::jobs::load_drive_config(example("exp6_drive_rho10.toml"));
   CHECK(e6.name == "exp6-drive-rho10");
   CHECK(e6.run.beads == 2000);
   CHECK(e6.run.amplitude == 0.06);
@@ -269,7 +269,7 @@ TEST_CASE("config: the shipped examples load to the values written in them") {
   CHECK(e6.run.integrator.abs_tol == 1e-10);
   CHECK(e6.out_dir == "out/exp6");
   // exp7: modulated, N = 401, delta0 = 0.27, epsilon = 0.03, checkpoint_every = 1000, symplectic.
-  const auto e7 = lrchain::sim::load_modulated_config(example("exp7_modulated_dark.toml"));
+  const auto e7 = lrchain::jobs::load_modulated_config(example("exp7_modulated_dark.toml"));
   CHECK(e7.run.N == 401);
   CHECK(e7.run.params.delta0 == 0.27);
   CHECK(e7.run.epsilon == 0.03);
@@ -346,7 +346,7 @@ TEST_CASE("config: docs/configs.md lists every key of the schema (generated part
   const auto b = doc.find(begin), e = doc.find(end);
   REQUIRE(b != std::string::npos);
   REQUIRE(e != std::string::npos);
-  const std::string generated = lrchain::sim::experiment_configs_markdown();
+  const std::string generated = lrchain::jobs::experiment_configs_markdown();
   const bool same = doc.substr(b + begin.size(), e - b - begin.size()) == generated;
   if (!same) std::ofstream("configs.generated.md") << generated;  // in the test's working directory
   CHECK_MESSAGE(same, "docs/configs.md is out of date with the schema: the expected text is in "

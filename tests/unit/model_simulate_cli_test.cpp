@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lrchain/sim/model_experiment_config.hpp"
+#include "lrchain/jobs/model_experiment_config.hpp"
 #include "../support/refusal_checks.hpp"
 #include "../support/run_lrchain.hpp"
 
@@ -70,15 +70,15 @@ TEST_CASE("model simulate: the shipped model configs pass their schema — unkno
     if (entry.path().extension() != ".toml") continue;
     INFO(entry.path().string());
     const auto doc = lrchain::config::Document::from_file(entry.path());
-    REQUIRE(lrchain::sim::is_model_experiment(doc));
-    const auto c = lrchain::sim::load_model_experiment_config(doc);
+    REQUIRE(lrchain::jobs::is_model_experiment(doc));
+    const auto c = lrchain::jobs::load_model_experiment_config(doc);
     CHECK(fs::exists(source_dir / c.model_file));
     if (c.experiment == "bright") CHECK(c.bright.periods == 200);
     if (c.experiment == "ring") CHECK(c.ring.amplitudes == std::vector<double>{0.02, 0.01});
     ++loaded;
   }
   CHECK(loaded == 7);
-  const auto fput = lrchain::sim::load_model_experiment_config(
+  const auto fput = lrchain::jobs::load_model_experiment_config(
       lrchain::config::Document::from_file(source_dir / "examples" / "models" / "fput_bright.toml"));
   CHECK(fput.parameters.size() == 2);
   CHECK(fput.parameters[0].first == "a");
@@ -87,7 +87,7 @@ TEST_CASE("model simulate: the shipped model configs pass their schema — unkno
   const std::string bad = "experiment = \"bright\"\nmodel = \"models/fput.toml\"\n[bright]\nbranch = \"acoustic\"\n"
                           "theta = \"pi/2\"\nstepper = \"rkf78\"\n";
   const auto doc = lrchain::config::Document::from_text(bad, "bad.toml");
-  CHECK_THROWS_WITH_AS(lrchain::sim::load_model_experiment_config(doc), doctest::Contains("stepper"),
+  CHECK_THROWS_WITH_AS(lrchain::jobs::load_model_experiment_config(doc), doctest::Contains("stepper"),
                        lrchain::config::ConfigError);
 }
 
@@ -96,7 +96,7 @@ TEST_CASE("model simulate: a model config's [bright] sites is the odd count 2N +
   const std::string head = "experiment = \"bright\"\nmodel = \"models/fput.toml\"\n[bright]\nbranch = \"acoustic\"\n"
                            "theta = \"pi/2\"\n";  // lines 1-5
   const auto load = [&](const std::string& line) {
-    return lrchain::sim::load_model_experiment_config(lrchain::config::Document::from_text(head + line, "m.toml"));
+    return lrchain::jobs::load_model_experiment_config(lrchain::config::Document::from_text(head + line, "m.toml"));
   };
   const auto error = [&](const std::string& line) {
     try {
@@ -141,6 +141,6 @@ TEST_CASE("model simulate: a ring config gives the numbers of the same ring run 
   // A [bright] table in a ring config is another experiment's table: refused, naming it.
   const std::string bad = "experiment = \"ring\"\nmodel = \"models/fput.toml\"\n[bright]\nbranch = \"acoustic\"\n"
                           "theta = \"pi/2\"\n";
-  CHECK_THROWS_WITH_AS(lrchain::sim::load_model_experiment_config(lrchain::config::Document::from_text(bad, "bad.toml")),
+  CHECK_THROWS_WITH_AS(lrchain::jobs::load_model_experiment_config(lrchain::config::Document::from_text(bad, "bad.toml")),
                        doctest::Contains("[bright]"), lrchain::config::ConfigError);
 }

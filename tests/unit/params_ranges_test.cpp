@@ -7,8 +7,8 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/params.hpp"
-#include "lrchain/sim/experiment_config.hpp"
-#include "lrchain/sim/more_experiment_config.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
+#include "lrchain/jobs/more_experiment_config.hpp"
 
 namespace fs = std::filesystem;
 using lrchain::Params;
@@ -64,10 +64,10 @@ TEST_CASE("params: the paper's, the regime maps' and the report's parameter valu
   for (const auto& e : fs::directory_iterator(fs::path(LRCHAIN_SOURCE_DIR) / "examples")) {
     if (e.path().extension() != ".toml") continue;
     CAPTURE(e.path().filename().string());
-    const std::string kind = lrchain::sim::experiment_kind(e.path());
-    if (kind == "bright") CHECK_NOTHROW(lrchain::sim::load_experiment_config(e.path()));
-    if (kind == "drive") CHECK_NOTHROW(lrchain::sim::load_drive_config(e.path()));
-    if (kind == "modulated") CHECK_NOTHROW(lrchain::sim::load_modulated_config(e.path()));
+    const std::string kind = lrchain::jobs::experiment_kind(e.path());
+    if (kind == "bright") CHECK_NOTHROW(lrchain::jobs::load_experiment_config(e.path()));
+    if (kind == "drive") CHECK_NOTHROW(lrchain::jobs::load_drive_config(e.path()));
+    if (kind == "modulated") CHECK_NOTHROW(lrchain::jobs::load_modulated_config(e.path()));
     ++examples;
   }
   CHECK(examples == 9);

@@ -9,7 +9,7 @@
 
 #include "lrchain/params.hpp"
 #include "lrchain/process.hpp"
-#include "lrchain/sim/experiment_config.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
 #include "report/latex_numbering.hpp"
 #include "report/markdown_html.hpp"
 #include "report/report.hpp"
@@ -150,7 +150,7 @@ TEST_CASE("texts users read outside the report cite equations by number, not by 
   // docs/configs.md (generated from the schema), the parameter ranges (error messages) and the
   // subcommands' help: "eq. (43)", never "eq:cimi" or "eq. cimi".
   const std::regex label(R"((eq|fig)s?(:|\. )[A-Za-z])");
-  std::vector<std::pair<std::string, std::string>> texts = {{"config reference", lrchain::sim::experiment_configs_markdown()}};
+  std::vector<std::pair<std::string, std::string>> texts = {{"config reference", lrchain::jobs::experiment_configs_markdown()}};
   for (const auto& range : lrchain::model_parameter_ranges()) texts.push_back({range.name, range.meaning});
   texts.push_back({"epsilon", lrchain::modulation_amplitude_range.meaning});
   for (const std::vector<std::string>& sub : std::vector<std::vector<std::string>>{

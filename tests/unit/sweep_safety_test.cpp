@@ -21,13 +21,13 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/process.hpp"
-#include "lrchain/sim/sweep/results_file.hpp"
-#include "lrchain/sim/sweep/sweep_config.hpp"
+#include "lrchain/jobs/sweep/results_file.hpp"
+#include "lrchain/jobs/sweep/sweep_config.hpp"
 #include "../support/run_lrchain.hpp"
 #include "sweep_test_files.hpp"
 
 namespace fs = std::filesystem;
-using namespace lrchain::sim::sweep;
+using namespace lrchain::jobs::sweep;
 
 namespace {
 

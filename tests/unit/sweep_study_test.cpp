@@ -16,14 +16,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lrchain/sim/sweep/results_file.hpp"
-#include "lrchain/sim/sweep/sweep_config.hpp"
-#include "lrchain/sim/sweep/sweep_run.hpp"
+#include "lrchain/jobs/sweep/results_file.hpp"
+#include "lrchain/jobs/sweep/sweep_config.hpp"
+#include "lrchain/jobs/sweep/sweep_run.hpp"
 #include "../support/run_lrchain.hpp"
 #include "sweep_test_files.hpp"
 
 namespace fs = std::filesystem;
-using namespace lrchain::sim::sweep;
+using namespace lrchain::jobs::sweep;
 
 namespace {
 

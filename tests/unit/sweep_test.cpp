@@ -24,15 +24,15 @@
 
 #include "lrchain/process.hpp"
 #include "lrchain/sim/bright_run.hpp"
-#include "lrchain/sim/experiment_config.hpp"
-#include "lrchain/sim/sweep/results_file.hpp"
-#include "lrchain/sim/sweep/sweep_config.hpp"
-#include "lrchain/sim/sweep/sweep_run.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
+#include "lrchain/jobs/sweep/results_file.hpp"
+#include "lrchain/jobs/sweep/sweep_config.hpp"
+#include "lrchain/jobs/sweep/sweep_run.hpp"
 #include "../support/run_lrchain.hpp"
 #include "sweep_test_files.hpp"
 
 namespace fs = std::filesystem;
-using namespace lrchain::sim::sweep;
+using namespace lrchain::jobs::sweep;
 
 namespace {
 
@@ -80,7 +80,7 @@ TEST_CASE("sweep: 1 thread and 2 threads give the same results bit for bit — a
   CHECK(one.failed() == 0);
   check_same(one, two);
   // Point (theta = 1.8, detuning = -1e-3) is the last one; the same run through the simulate config.
-  lrchain::sim::ExperimentConfig ec = lrchain::sim::load_experiment_config(d / "base.toml");
+  lrchain::jobs::ExperimentConfig ec = lrchain::jobs::load_experiment_config(d / "base.toml");
   ec.bright.theta = 1.8;
   ec.bright.detuning = -1e-3;
   const auto single = lrchain::sim::run_bright(ec.bright).summary;

@@ -8,10 +8,11 @@
 #include <filesystem>
 
 #include "lrchain/sim/bright_run.hpp"
-#include "lrchain/sim/experiment_config.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim;
+using namespace lrchain::jobs;
 
 namespace {
 

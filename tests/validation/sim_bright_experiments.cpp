@@ -13,10 +13,11 @@
 
 #include "../support/run_lrchain.hpp"
 #include "lrchain/sim/bright_run.hpp"
-#include "lrchain/sim/experiment_config.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim;
+using namespace lrchain::jobs;
 
 namespace {
 ExperimentConfig example(const std::string& name) {

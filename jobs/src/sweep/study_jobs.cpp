@@ -1,0 +1,313 @@
+// The "dark continue" and "regime intervals" sweep jobs (sweep/study_jobs.hpp): their base
+// configs' schemas, and one point run in-process and reduced to scalars and rows.
+#include "lrchain/jobs/sweep/study_jobs.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "../toml_reading.hpp"
+#include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/dispersion.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/regime/focusing_intervals.hpp"
+#include "lrchain/sim/dark/continuation.hpp"
+
+namespace lrchain::jobs::sweep {
+
+using namespace lrchain::sim;  // the numerics this job layer runs
+
+namespace {
+
+using namespace lrchain::config;
+constexpr double none = std::numeric_limits<double>::quiet_NaN();
+
+// [dark]: the options of `lrchain dark continue`.
+std::shared_ptr<const TableSchema> dark_table() {
+  return std::make_shared<const TableSchema>(TableSchema{
+      "a dark-breather branch continued in omega_b (Secs. 5.3-5.4), as `lrchain dark continue`",
+      {number("omega_b", NumberRange::positive(), "none", "start frequency omega_b, below the theta = pi band edge"),
+       number("edge_offset", NumberRange::positive(), "none",
+              "start at omega_b = omega(pi) - edge_offset instead (for sweeps over the model)"),
+       choice("branch", {"optical", "acoustic"}, "optical", "branch whose theta = pi band edge the breather bifurcates from"),
+       choice("center", {"bond", "site"}, "bond", "family: bond (n0 = 1/2) or site (n0 = 0)"),
+       integer("sites", 9, 1'000'001, "101", "odd number of lattice sites per field (periodic ends)"),
+       choice("mode", {"reversible", "full"}, "reversible", "shooting over a half/quarter period or the whole period"),
+       integer("points", 1, 1'000'000, "100", "maximum number of branch points, the first included"),
+       number("ds", NumberRange::between(0, 1, true, false), "0.1", "initial pseudo-arclength step (adapted in [1e-5, 1])"),
+       number("omega_min", NumberRange::non_negative(), "0", "stop when omega_b falls below this"),
+       number("omega_max", NumberRange::non_negative(), "0 (the band edge)", "stop when omega_b rises above this")},
+      std::nullopt,
+      {{"edge", "branch"}}});
+}
+
+// [regime]: the options of `lrchain regime intervals` (both branches are run).
+std::shared_ptr<const TableSchema> regime_table() {
+  return std::make_shared<const TableSchema>(TableSchema{
+      "the focusing theta-intervals of both branches (Sec. 3.3), as `lrchain regime intervals`",
+      {integer("samples", 8, 10'000'000, "2048", "theta samples used to bracket the zeros")},
+      std::nullopt});
+}
+
+TableSchema study_top(const std::string& kind, const std::string& table_name, std::shared_ptr<const TableSchema> t,
+                      bool table_required) {
+  return TableSchema{"a \"" + kind + "\" sweep base",
+                     {choice("experiment", {kind}, "", "which job this file describes").require(),
+                      string("name", "the file name without .toml", "a label"),
+                      table("model", jobs::config::model_schema(Params{})),
+                      table_required ? table(table_name, t).require() : table(table_name, t)},
+                     std::nullopt};
+}
+
+Params read_model(const CheckedTable& root) {
+  Params p;
+  if (auto m = root.table("model")) {
+    m->read("rho", p.rho);
+    m->read("kappa", p.kappa);
+    m->read("delta0", p.delta0);
+    m->read("alpha", p.alpha);
+  }
+  validate(p);
+  return p;
+}
+
+// ---- dark continue ---------------------------------------------------------------------------
+
+struct DarkSettings {
+  Params p;
+  std::optional<double> omega_b, edge_offset;
+  std::string branch = "optical", center = "bond", mode = "reversible";
+  std::int64_t sites = 101, points = 100;
+  double ds = 0.1, omega_min = 0, omega_max = 0;
+};
+
+// Reads [model] and [dark] and applies the checks of `lrchain dark continue` (InvalidParameter
+// naming the key); returns the settings and the ansatz at the start frequency.
+std::pair<DarkSettings, DarkBreatherAnsatz> read_dark(const Document& doc) {
+  const CheckedTable root = check(doc, study_schema("dark continue"));
+  DarkSettings s;
+  s.p = read_model(root);
+  const CheckedTable d = *root.table("dark");
+  s.omega_b = d.number("omega_b");
+  s.edge_offset = d.number("edge_offset");
+  d.read("branch", s.branch);
+  d.read("center", s.center);
+  d.read("mode", s.mode);
+  d.read("sites", s.sites);
+  d.read("points", s.points);
+  d.read("ds", s.ds);
+  d.read("omega_min", s.omega_min);
+  d.read("omega_max", s.omega_max);
+  const auto key = [&](const char* k) { return fmt::format("[dark] {} in {}", k, doc.source()); };
+  if (s.omega_b.has_value() == s.edge_offset.has_value())
+    throw InvalidParameter(key("omega_b"), "give exactly one of 'omega_b' and 'edge_offset'");
+  if (s.sites % 2 == 0)
+    throw InvalidParameter(key("sites"), "must be an odd integer >= 9 (a staggered dark breather fits periodic ends only on an odd number of sites)");
+  const Branch edge = parse_branch(s.branch);
+  const double edge_omega = dispersion_omega(s.p, edge, std::acos(-1.0));
+  const double omega_b = s.omega_b ? *s.omega_b : edge_omega - *s.edge_offset;
+  const char* start_key = s.omega_b ? "omega_b" : "edge_offset";
+  if (!(omega_b > 0)) throw InvalidParameter(key(start_key), fmt::format("must start below the band edge omega(pi) = {:g}", edge_omega));
+  DarkBreatherAnsatz ansatz;
+  try {
+    ansatz = make_dark_breather_ansatz(s.p, edge, omega_b);  // checks omega_b against the edge
+  } catch (const InvalidParameter& e) {
+    const std::string what = e.what(), prefix = "invalid " + e.parameter() + ": ";
+    throw InvalidParameter(key(start_key), what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+  }
+  if (!(s.omega_min < omega_b))
+    throw InvalidParameter(key("omega_min"), fmt::format("must be below the start omega_b = {:g}", omega_b));
+  if (s.omega_max > 0 && !(s.omega_max > omega_b))
+    throw InvalidParameter(key("omega_max"), fmt::format("must be 0 (the band edge) or above the start omega_b = {:g}", omega_b));
+  return {s, ansatz};
+}
+
+const std::vector<std::string>& dark_scalar_names() {
+  static const std::vector<std::string> n{
+      "start_omega_b", "omega_edge", "newton_iterations", "branch_points", "turning_points", "first_turning_point",
+      "omega_b_low", "omega_b_high", "stable_points", "real_unstable_points", "period_doubling_points",
+      "oscillatory_unstable_points", "stable_windows", "unstable_windows", "stable_omega_extent",
+      "unstable_omega_extent", "max_floquet_modulus", "max_real_multiplier", "max_oscillatory_multiplier", "max_E_b"};
+  return n;
+}
+const std::vector<std::string>& dark_row_names() {
+  static const std::vector<std::string> n{"omega_b",     "norm_squared", "K_x",      "E_b",
+                                          "stability",   "max_modulus",  "max_real", "max_period_doubling",
+                                          "max_oscillatory", "part",     "iterations"};
+  return n;
+}
+
+// Stability code of a branch point: 0 stable, + 1 real, + 2 period doubling, + 4 oscillatory.
+int stability_code(const dark::FloquetResult& f) {
+  return (f.real_instability ? 1 : 0) + (f.period_doubling ? 2 : 0) + (f.oscillatory ? 4 : 0);
+}
+
+// The branch reduced to the scalars of dark_scalar_names() and one row per point.
+void reduce_branch(const dark::BranchResult& br, double omega_b, double omega_edge, int newton_iterations, JobResult& r) {
+  const auto& pts = br.points;
+  double low = none, high = none, max_mod = 0, max_real = 1, max_osc = 1, max_E = 0, stable_extent = 0, unstable_extent = 0;
+  int stable = 0, real = 0, doubling = 0, oscillatory = 0, stable_windows = 0, unstable_windows = 0, part = 0;
+  double last_tangent = -1;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const auto& b = pts[i];
+    const bool ok = stability_code(b.floquet) == 0;
+    low = i == 0 ? b.omega_b : std::min(low, b.omega_b);
+    high = i == 0 ? b.omega_b : std::max(high, b.omega_b);
+    stable += ok;
+    real += b.floquet.real_instability;
+    doubling += b.floquet.period_doubling;
+    oscillatory += b.floquet.oscillatory;
+    max_mod = std::max(max_mod, b.floquet.max_modulus);
+    max_real = std::max(max_real, b.floquet.max_real);
+    max_osc = std::max(max_osc, b.floquet.max_oscillatory);
+    max_E = std::max(max_E, b.measures.E_b);
+    const bool new_window = i == 0 || (stability_code(pts[i - 1].floquet) == 0) != ok;
+    if (new_window) (ok ? stable_windows : unstable_windows) += 1;
+    else (ok ? stable_extent : unstable_extent) += std::abs(b.omega_b - pts[i - 1].omega_b);
+    if ((b.tangent_omega > 0) != (last_tangent > 0)) ++part;  // as the parts of `lrchain dark continue`
+    last_tangent = b.tangent_omega;
+    r.rows.insert(r.rows.end(), {b.omega_b, b.measures.norm_squared, b.measures.K_x, b.measures.E_b,
+                                 double(stability_code(b.floquet)), b.floquet.max_modulus, b.floquet.max_real,
+                                 b.floquet.max_period_doubling, b.floquet.max_oscillatory, double(part),
+                                 double(b.iterations)});
+  }
+  r.scalars = {omega_b, omega_edge, double(newton_iterations), double(pts.size()), double(br.turning_points.size()),
+               br.turning_points.empty() ? none : br.turning_points.front(), low, high, double(stable), double(real),
+               double(doubling), double(oscillatory), double(stable_windows), double(unstable_windows), stable_extent,
+               unstable_extent, max_mod, max_real, max_osc, max_E};
+}
+
+// Seed, Newton, continuation with Floquet at every point: what `lrchain dark continue` runs.
+JobResult run_dark(const Document& doc, const RunControl& control) {
+  const auto [s, ansatz] = read_dark(doc);
+  JobResult r;
+  const DarkCenter center = parse_dark_center(s.center);
+  const dark::DarkShooting shooting(s.p, s.sites, center, dark::parse_shooting_mode(s.mode));
+  const dark::NewtonResult newton = dark::newton_solve(
+      shooting, shooting.unknowns_from_z(dark::dark_seed(ansatz, center, s.sites)), ansatz.omega_b, {});
+  if (!newton.converged) {
+    r.status = PointStatus::numerical_failure;
+    r.reason = fmt::format("Newton found no breather at omega_b = {}: {}", ansatz.omega_b, newton.failure);
+    return r;
+  }
+  dark::ContinuationOptions o;
+  o.stop = control.stop;
+  o.max_points = s.points;
+  o.ds = s.ds;
+  o.omega_min = s.omega_min;
+  o.omega_max = s.omega_max > 0 ? s.omega_max : ansatz.omega;
+  const dark::BranchResult br = dark::continue_branch(shooting, newton.q, ansatz.omega_b, o);
+  if (br.interrupted) {
+    r.status = PointStatus::missing;
+    r.reason = "interrupted";
+    return r;
+  }
+  reduce_branch(br, ansatz.omega_b, ansatz.omega, int(newton.history.size()), r);
+  if (br.points.size() < 2) {  // the corrector failed at once, as `lrchain dark continue` reports it
+    r.status = PointStatus::numerical_failure;
+    r.reason = "continuation stopped: " + br.stop_reason;
+  } else {
+    r.status = PointStatus::ok;
+  }
+  return r;
+}
+
+// ---- regime intervals ------------------------------------------------------------------------
+
+constexpr Branch both_branches[] = {Branch::optical, Branch::acoustic};
+
+std::vector<std::string> regime_scalar_names() {
+  std::vector<std::string> n;
+  for (Branch b : both_branches)
+    for (const char* s : {"intervals", "focusing_length", "first_lo", "first_hi", "last_lo", "last_hi"})
+      n.push_back(fmt::format("{}_{}", to_string(b), s));
+  return n;
+}
+
+// The focusing intervals of both branches, as `lrchain regime intervals --branch B`.
+JobResult run_regime(const Document& doc) {
+  const CheckedTable root = check(doc, study_schema("regime intervals"));
+  const Params p = read_model(root);
+  std::int64_t samples = 2048;
+  if (auto r = root.table("regime")) r->read("samples", samples);
+  JobResult r;
+  for (Branch b : both_branches) {
+    const auto s = regime::regime_structure(regime::regime_functions(p, b), {int(samples), 1e-12});
+    double length = 0;
+    for (const auto& i : s.intervals) {
+      length += i.hi - i.lo;
+      r.rows.insert(r.rows.end(), {double(b == Branch::optical ? 0 : 1), i.lo, i.hi, i.hi - i.lo, double(int(i.lo_cause)),
+                                   double(int(i.hi_cause))});
+    }
+    const bool any = !s.intervals.empty();
+    r.scalars.insert(r.scalars.end(), {double(s.intervals.size()), length, any ? s.intervals.front().lo : none,
+                                       any ? s.intervals.front().hi : none, any ? s.intervals.back().lo : none,
+                                       any ? s.intervals.back().hi : none});
+  }
+  r.status = PointStatus::ok;
+  return r;
+}
+
+}  // namespace
+
+const std::vector<std::string>& study_kinds() {
+  static const std::vector<std::string> k{"dark continue", "regime intervals"};
+  return k;
+}
+
+bool is_study_kind(std::string_view kind) {
+  return std::find(study_kinds().begin(), study_kinds().end(), kind) != study_kinds().end();
+}
+
+const TableSchema& study_schema(std::string_view kind) {
+  static const std::map<std::string, TableSchema, std::less<>> schemas{
+      {"dark continue", study_top("dark continue", "dark", dark_table(), true)},
+      {"regime intervals", study_top("regime intervals", "regime", regime_table(), false)}};
+  const auto it = schemas.find(kind);
+  if (it == schemas.end()) throw InvalidParameter("experiment", "must be \"dark continue\" or \"regime intervals\"");
+  return it->second;
+}
+
+void check_study_config(std::string_view kind, const Document& doc) {
+  if (kind == "dark continue")
+    read_dark(doc);
+  else
+    read_model(check(doc, study_schema(kind)));
+}
+
+std::vector<std::string> study_scalar_names(std::string_view kind) {
+  return kind == "dark continue" ? dark_scalar_names() : regime_scalar_names();
+}
+
+std::vector<std::string> study_row_names(std::string_view kind) {
+  if (kind == "dark continue") return dark_row_names();
+  return {"branch", "lo", "hi", "length", "lo_cause", "hi_cause"};
+}
+
+std::string study_rows_legend(std::string_view kind) {
+  if (kind == "dark continue")
+    return "one row per branch point in continuation order; stability: 0 stable, +1 real, +2 period doubling, "
+           "+4 oscillatory instability; part: 0 before the first turning point, +1 after each; max_real, "
+           "max_period_doubling, max_oscillatory: 1 when there is none";
+  return "one row per focusing interval; branch: 0 optical, 1 acoustic; causes: 0 curvature_zero, 1 h_tilde_zero, "
+         "2 nonresonance1, 3 nonresonance2, 4 band_edge";
+}
+
+JobResult run_study(std::string_view kind, const Document& doc, const RunControl& control) {
+  JobResult r;
+  try {
+    r = kind == "dark continue" ? run_dark(doc, control) : run_regime(doc);
+  } catch (const Interrupted&) {
+    throw;
+  } catch (const std::runtime_error& e) {  // NumericalFailure, the contact integrator's step underflow
+    r = JobResult{PointStatus::numerical_failure, e.what(), {}, 0, {}};
+  }
+  return r;
+}
+
+}  // namespace lrchain::jobs::sweep

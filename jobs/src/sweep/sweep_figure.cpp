@@ -1,0 +1,227 @@
+// log10(scalar) over a two-axis grid, focusing boundaries and the fitted detuning exponent
+// (sweep/sweep_figure.hpp).
+#include "lrchain/jobs/sweep/sweep_figure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/regime/focusing_intervals.hpp"
+#include "lrchain/jobs/experiment_config.hpp"
+#include "lrchain/sim/gnuplot_text.hpp"
+#include "lrchain/sim/least_squares.hpp"
+#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/sweep/side_files.hpp"
+
+namespace lrchain::jobs::sweep {
+
+using namespace lrchain::sim;  // the numerics this job layer runs
+
+namespace {
+
+// The theta values where a focusing interval of the base config's chain begins or ends.
+std::vector<double> focusing_boundaries(const Job& job) {
+  const BrightRunConfig b = load_experiment_config(job.base()).bright;
+  std::vector<double> ends;
+  for (const auto& i : regime::focusing_intervals(b.params, b.branch)) {
+    if (i.lo > 0) ends.push_back(i.lo);
+    ends.push_back(i.hi);
+  }
+  return ends;
+}
+
+// Exponent p of value ~ |y|^p for each x (NaN where fewer than two positive values).
+std::vector<double> fitted_exponents(const Axis& x, const Axis& y, const SweepResults& r, std::size_t s) {
+  std::vector<double> p;
+  for (std::size_t i = 0; i < x.values.size(); ++i) {
+    std::vector<double> ly, lv;
+    for (std::size_t j = 0; j < y.values.size(); ++j) {
+      const double v = r.scalars[s * r.points + i * y.values.size() + j];
+      if (v > 0 && std::isfinite(v) && y.values[j] != 0) {
+        ly.push_back(std::log(std::abs(y.values[j])));
+        lv.push_back(std::log(v));
+      }
+    }
+    p.push_back(ly.size() >= 2 ? least_squares_slope(ly, lv) : std::nan(""));
+  }
+  return p;
+}
+
+// Draws `figures` into dir; the files written, scripts and PNGs, appended to `files`.
+void draw_figures(const std::filesystem::path& dir, const std::vector<FigureScript>& figures, std::vector<std::string>& files) {
+  Figures drawn(dir);
+  drawn.draw_all(figures);
+  for (const auto& f : figures) files.push_back(f.script);
+  for (const auto& png : drawn.drawn()) files.push_back(png);
+  if (!drawn.warning().empty()) fmt::print(stderr, "{}\n", drawn.warning());
+}
+
+// The second axis is drawn on a log scale: one sign throughout and at least a decade.
+bool second_axis_log(const Axis& y) {
+  const bool y_negative = std::all_of(y.values.begin(), y.values.end(), [](double v) { return v < 0; });
+  return std::all_of(y.values.begin(), y.values.end(), [&](double v) { return y_negative ? v < 0 : v > 0; }) &&
+         std::abs(y.values.back() / y.values.front()) >= 10;
+}
+
+// A bright sweep over theta and a log range of detunings also gets the fitted exponent's figure.
+bool draws_detuning_exponent(const SweepConfig& c) {
+  return c.job == "bright" && c.axes.size() == 2 && c.axes[0].parameter == "bright.theta" &&
+         c.axes[1].parameter == "bright.detuning" && second_axis_log(c.axes[1]);
+}
+
+std::size_t index_of(const std::vector<std::string>& names, const std::string& name) {
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) throw std::logic_error("no column " + name);
+  return std::size_t(it - names.begin());
+}
+
+}  // namespace
+
+std::vector<std::string> sweep_figure_files(const SweepConfig& c) {
+  if (c.figure.empty()) return {};
+  if (c.figure == "stability" && c.job == "dark continue") {
+    const std::string stem = c.output.stem().string() + "_stability";
+    return {stem + ".dat", stem + "_marks.dat", stem + ".gp", stem + ".png"};
+  }
+  const std::string stem = c.output.stem().string() + "_" + c.figure;
+  std::vector<std::string> files{stem + ".dat", stem + ".gp", stem + ".png"};
+  if (draws_detuning_exponent(c))
+    files.insert(files.end(), {stem + "_exponent.csv", stem + "_exponent.gp", stem + "_exponent.png"});
+  return files;
+}
+
+std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& job, const SweepResults& r,
+                                             const std::string& scalar) {
+  if (!c.grid || c.axes.size() != 2)
+    throw InvalidParameter("figure", "needs a grid sweep of exactly two axes");
+  const auto it = std::find(r.scalar_names.begin(), r.scalar_names.end(), scalar);
+  if (it == r.scalar_names.end()) throw InvalidParameter("figure", "'" + scalar + "' is not a scalar of the job");
+  const std::size_t s = std::size_t(it - r.scalar_names.begin());
+  const Axis &x = c.axes[0], &y = c.axes[1];
+  // A negative axis (the detuning on a branch with h_tilde < 0) is drawn by its magnitude.
+  const bool y_negative = std::all_of(y.values.begin(), y.values.end(), [](double v) { return v < 0; });
+  const bool y_log = second_axis_log(y);
+  const double sign = y_negative ? -1.0 : 1.0;  // of the values drawn
+  const std::string stem = c.output.stem().string() + "_" + scalar;
+  const std::filesystem::path dir = output_directory(c);
+
+  std::ostringstream data;
+  data << "# " << x.parameter << ' ' << (y_negative ? "-" : "") << y.parameter << " log10(" << scalar << ")\n";
+  for (std::size_t i = 0; i < x.values.size(); ++i) {
+    for (std::size_t j = 0; j < y.values.size(); ++j) {
+      const double v = r.scalars[s * r.points + i * y.values.size() + j];
+      data << fmt::format("{} {} {}\n", x.values[i], y_negative ? -y.values[j] : y.values[j],
+                          v > 0 && std::isfinite(v) ? fmt::format("{}", std::log10(v)) : std::string("NaN"));
+    }
+    data << '\n';
+  }
+  write_file_atomic(dir, stem + ".dat", data.str());
+  std::vector<std::string> files{stem + ".dat"};
+
+  // Every text that comes from the sweep file (its name, the output's name, the axes) goes into the
+  // script as a gnuplot string (gnuplot_text.hpp), never as script text.
+  const std::string x_name = gnuplot_text(x.parameter), y_name = gnuplot_text(y.parameter), value = gnuplot_text(scalar);
+  std::ostringstream gp;
+  gp << "# log10(" << value << ") over (" << x_name << ", " << y_name << ") from " << gnuplot_string(c.output.filename().string())
+     << ". Re-run: gnuplot " << gnuplot_file_name(stem + ".gp") << "\n"
+     << "if (!exists(\"outfile\")) outfile = " << gnuplot_file_name(stem + ".png") << "\n"
+     << "set terminal pngcairo size 900,640 noenhanced\nset output outfile\n"
+     << "set xlabel '" << x_name << "'\nset ylabel '" << (y_negative ? "|" + y_name + "|" : y_name) << "'\n"
+     << "set cblabel 'log10(" << value << ")'\nset palette rgbformulae 33,13,10\nset view map\n"
+     << (y_log ? "set logscale y\nset format y '1e%L'\n" : "")
+     << fmt::format("set yrange [{}:{}]\n", std::min(sign * y.values.front(), sign * y.values.back()),
+                    std::max(sign * y.values.front(), sign * y.values.back()))
+     << "set title '" << gnuplot_text(c.name) << ": log10(" << value << "); dashed: focusing interval ends'\n";
+  const bool theta_axis = c.job == "bright" && x.parameter == "bright.theta";
+  if (theta_axis)
+    for (double b : focusing_boundaries(job))
+      if (b >= std::min(x.values.front(), x.values.back()) && b <= std::max(x.values.front(), x.values.back()))
+        gp << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dashtype 2 linewidth 2 front\n", b);
+  gp << "set xrange [" << std::min(x.values.front(), x.values.back()) << ":" << std::max(x.values.front(), x.values.back())
+     << "]\nsplot " << gnuplot_file_name(stem + ".dat") << " using 1:2:3 with pm3d notitle\n";
+  std::vector<FigureScript> figures{{stem + ".gp", gp.str(), stem + ".png"}};
+
+  if (draws_detuning_exponent(c)) {
+    const auto p = fitted_exponents(x, y, r, s);
+    std::ostringstream csv;
+    csv << x.parameter << ",exponent\n";
+    for (std::size_t i = 0; i < p.size(); ++i) csv << fmt::format("{},{}\n", x.values[i], p[i]);
+    write_file_atomic(dir, stem + "_exponent.csv", csv.str());
+    files.push_back(stem + "_exponent.csv");
+    std::ostringstream g2;
+    g2 << "# Exponent p of " << value << " ~ |detuning|^p fitted per theta. Re-run: gnuplot "
+       << gnuplot_file_name(stem + "_exponent.gp") << "\n"
+       << "if (!exists(\"outfile\")) outfile = " << gnuplot_file_name(stem + "_exponent.png") << "\n"
+       << "set terminal pngcairo size 800,500 noenhanced\nset output outfile\nset datafile separator ','\n"
+       << "set xlabel '" << x_name << "'\nset ylabel 'p in " << value << " ~ |detuning|^p'\nset grid\n"
+       << "plot " << gnuplot_file_name(stem + "_exponent.csv") << " using 1:2 every ::1 with linespoints pointtype 7 notitle\n";
+    figures.push_back({stem + "_exponent.gp", g2.str(), stem + "_exponent.png"});
+  }
+  draw_figures(dir, figures, files);
+  return files;
+}
+
+std::vector<std::string> write_stability_figure(const SweepConfig& c, const SweepResults& r) {
+  if (c.axes.size() != 1 || r.row_names.empty()) throw InvalidParameter("figure", "needs a one-axis \"dark continue\" sweep");
+  const Axis& x = c.axes[0];
+  const bool x_log = std::all_of(x.values.begin(), x.values.end(), [](double v) { return v > 0; }) &&
+                     *std::max_element(x.values.begin(), x.values.end()) >= 10 * *std::min_element(x.values.begin(), x.values.end());
+  // Half the distance to the nearest other axis value (on the log scale when drawn so), for
+  // drawing the two parts of a branch side by side.
+  std::vector<double> drawn_x(x.values.size());
+  for (std::size_t i = 0; i < x.values.size(); ++i) drawn_x[i] = x_log ? std::log(x.values[i]) : x.values[i];
+  double gap = 0;
+  for (std::size_t i = 0; i < drawn_x.size(); ++i)
+    for (std::size_t j = 0; j < drawn_x.size(); ++j)
+      if (drawn_x[i] != drawn_x[j]) gap = gap == 0 ? std::abs(drawn_x[i] - drawn_x[j]) : std::min(gap, std::abs(drawn_x[i] - drawn_x[j]));
+  const double shift = gap > 0 ? 0.15 * gap : (x_log ? 0.02 : 0.02 * std::max(1.0, std::abs(x.values[0])));
+  auto shifted = [&](double v, double side) { return x_log ? v * std::exp(side * shift) : v + side * shift; };
+
+  const std::size_t columns = r.row_names.size(), omega = index_of(r.row_names, "omega_b"),
+                    stability = index_of(r.row_names, "stability"), part = index_of(r.row_names, "part");
+  const std::size_t turning = index_of(r.scalar_names, "first_turning_point"), edge = index_of(r.scalar_names, "omega_edge");
+  const std::string stem = c.output.stem().string() + "_stability";
+  const std::filesystem::path dir = output_directory(c);
+  std::ostringstream points, marks;
+  points << "# drawn " << x.parameter << ", omega_b, class (0 stable, 1 real-unstable, 2 oscillatory-unstable), part, "
+         << x.parameter << "\n";
+  marks << "# " << x.parameter << ", first turning point omega_b, band edge omega(pi)\n";
+  for (std::size_t p = 0; p < r.points; ++p) {
+    const double v = x.values[p];
+    for (std::size_t i = 0; i + columns <= r.rows[p].size(); i += columns) {
+      const int code = int(r.rows[p][i + stability]);
+      const int kind = code & 1 ? 1 : (code ? 2 : 0);
+      const double which = r.rows[p][i + part];
+      points << fmt::format("{} {} {} {} {}\n", shifted(v, which == 0 ? -1 : 1), r.rows[p][i + omega], kind, which, v);
+    }
+    const double t = r.scalars[turning * r.points + p], e = r.scalars[edge * r.points + p];
+    marks << fmt::format("{} {} {}\n", v, std::isfinite(t) ? fmt::format("{}", t) : "NaN", std::isfinite(e) ? fmt::format("{}", e) : "NaN");
+  }
+  write_file_atomic(dir, stem + ".dat", points.str());
+  write_file_atomic(dir, stem + "_marks.dat", marks.str());
+  std::vector<std::string> files{stem + ".dat", stem + "_marks.dat"};
+  const auto [lo, hi] = std::minmax_element(x.values.begin(), x.values.end());
+  const std::string x_name = gnuplot_text(x.parameter);
+  std::ostringstream gp;
+  gp << "# Dark-breather branches in the (" << x_name << ", omega_b) plane from " << gnuplot_string(c.output.filename().string())
+     << ". Re-run: gnuplot " << gnuplot_file_name(stem + ".gp") << "\n"
+     << "if (!exists(\"outfile\")) outfile = " << gnuplot_file_name(stem + ".png") << "\n"
+     << "set terminal pngcairo size 1000,700 noenhanced\nset output outfile\n"
+     << "set xlabel '" << x_name << " (points left of each value: before the first turning point; right: after)'\n"
+     << "set ylabel 'omega_b'\nset key outside right top\nset grid\n"
+     << (x_log ? "set logscale x\n" : "")
+     << fmt::format("set xrange [{}:{}]\n", shifted(*lo, -3), shifted(*hi, 3))
+     << "set title '" << gnuplot_text(c.name) << ": dark-breather branches and their Floquet stability'\n"
+     << "plot " << gnuplot_file_name(stem + ".dat") << " using 1:($3 == 0 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#009900' title 'stable', \\\n"
+     << "     '' using 1:($3 == 1 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#dd0000' title 'real-unstable', \\\n"
+     << "     '' using 1:($3 == 2 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#0000dd' title 'oscillatory-unstable', \\\n"
+     << "     " << gnuplot_file_name(stem + "_marks.dat") << " using 1:2 with points pointtype 2 pointsize 2 lw 2 lc rgb 'black' title 'turning point', \\\n"
+     << "     '' using 1:3 with lines dashtype 2 lc rgb 'gray40' title 'band edge omega(pi)'\n";
+  draw_figures(dir, {{stem + ".gp", gp.str(), stem + ".png"}}, files);
+  return files;
+}
+
+}  // namespace lrchain::jobs::sweep
