@@ -16,7 +16,7 @@
 #include "lrchain/dispersion.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/focusing_intervals.hpp"
-#include "lrchain/sim/dark/continuation.hpp"
+#include "lrchain/jobs/dark_job.hpp"
 
 namespace lrchain::jobs::sweep {
 
@@ -143,12 +143,12 @@ const std::vector<std::string>& dark_row_names() {
 }
 
 // Stability code of a branch point: 0 stable, + 1 real, + 2 period doubling, + 4 oscillatory.
-int stability_code(const dark::FloquetResult& f) {
+int stability_code(const sim::dark::FloquetResult& f) {
   return (f.real_instability ? 1 : 0) + (f.period_doubling ? 2 : 0) + (f.oscillatory ? 4 : 0);
 }
 
 // The branch reduced to the scalars of dark_scalar_names() and one row per point.
-void reduce_branch(const dark::BranchResult& br, double omega_b, double omega_edge, int newton_iterations, JobResult& r) {
+void reduce_branch(const sim::dark::BranchResult& br, double omega_b, double omega_edge, int newton_iterations, JobResult& r) {
   const auto& pts = br.points;
   double low = none, high = none, max_mod = 0, max_real = 1, max_osc = 1, max_E = 0, stable_extent = 0, unstable_extent = 0;
   int stable = 0, real = 0, doubling = 0, oscillatory = 0, stable_windows = 0, unstable_windows = 0, part = 0;
@@ -182,35 +182,39 @@ void reduce_branch(const dark::BranchResult& br, double omega_b, double omega_ed
                unstable_extent, max_mod, max_real, max_osc, max_E};
 }
 
-// Seed, Newton, continuation with Floquet at every point: what `lrchain dark continue` runs.
+// Seed, Newton, continuation with Floquet at every point: the dark job's branch step (dark_job.hpp).
 JobResult run_dark(const Document& doc, const RunControl& control) {
   const auto [s, ansatz] = read_dark(doc);
+  jobs::dark::DarkConfig c;
+  c.step = jobs::dark::DarkStep::branch;
+  c.params = s.p;
+  c.omega_b = ansatz.omega_b;
+  c.branch = s.branch;
+  c.center = s.center;
+  c.mode = s.mode;
+  c.sites = s.sites;
+  c.points = s.points;
+  c.ds = s.ds;
+  c.omega_min = s.omega_min;
+  c.omega_max = s.omega_max;
+  jobs::dark::DarkRunHooks hooks;
+  hooks.stop = control.stop;
+  const jobs::dark::DarkResult d = jobs::dark::run(c, hooks);
   JobResult r;
-  const DarkCenter center = parse_dark_center(s.center);
-  const dark::DarkShooting shooting(s.p, s.sites, center, dark::parse_shooting_mode(s.mode));
-  const dark::NewtonResult newton = dark::newton_solve(
-      shooting, shooting.unknowns_from_z(dark::dark_seed(ansatz, center, s.sites)), ansatz.omega_b, {});
-  if (!newton.converged) {
+  if (!d.newton.converged) {
     r.status = PointStatus::numerical_failure;
-    r.reason = fmt::format("Newton found no breather at omega_b = {}: {}", ansatz.omega_b, newton.failure);
+    r.reason = fmt::format("Newton found no breather at omega_b = {}: {}", ansatz.omega_b, d.newton.failure);
     return r;
   }
-  dark::ContinuationOptions o;
-  o.stop = control.stop;
-  o.max_points = s.points;
-  o.ds = s.ds;
-  o.omega_min = s.omega_min;
-  o.omega_max = s.omega_max > 0 ? s.omega_max : ansatz.omega;
-  const dark::BranchResult br = dark::continue_branch(shooting, newton.q, ansatz.omega_b, o);
-  if (br.interrupted) {
+  if (d.branch.interrupted) {
     r.status = PointStatus::missing;
     r.reason = "interrupted";
     return r;
   }
-  reduce_branch(br, ansatz.omega_b, ansatz.omega, int(newton.history.size()), r);
-  if (br.points.size() < 2) {  // the corrector failed at once, as `lrchain dark continue` reports it
+  reduce_branch(d.branch, ansatz.omega_b, ansatz.omega, int(d.newton.history.size()), r);
+  if (const auto failure = jobs::dark::failure(d)) {  // the corrector failed at once
     r.status = PointStatus::numerical_failure;
-    r.reason = "continuation stopped: " + br.stop_reason;
+    r.reason = *failure;
   } else {
     r.status = PointStatus::ok;
   }
