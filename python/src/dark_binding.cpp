@@ -8,7 +8,6 @@
 #include "bindings.hpp"
 #include "dark_arrays.hpp"
 #include "dark_job_binding.hpp"
-#include "lrchain/config/option_caps.hpp"
 
 namespace py = pybind11;
 
@@ -52,11 +51,7 @@ py::dict continue_job(const Params& p, double omega_b, const std::string& branch
                       const std::string& mode, double tolerance, double max_iterations, double points, double ds,
                       double omega_min, std::optional<double> omega_max, bool floquet) {
   DarkConfig c = chain_config(DarkStep::branch, p, omega_b, branch, center, sites, mode, tolerance, max_iterations);
-  c.points = integer_keyword(points, "points", config::dark_points.least, config::dark_points.most);
-  c.ds = ds;
-  c.omega_min = omega_min;
-  c.omega_max = omega_max.value_or(0.0);
-  c.branch_floquet = floquet;
+  set_branch_keywords(c, points, ds, omega_min, omega_max, floquet);
   const DarkResult r = run_dark_job(c);
   py::dict d = branch_arrays(r.branch, floquet, [](const sim::dark::DarkMeasures& m) { return measures(m); });
   // x, y: (points, sites) profiles Z(0) of the two fields
@@ -75,8 +70,7 @@ py::dict continue_job(const Params& p, double omega_b, const std::string& branch
 py::dict evolve_job(const Params& p, double omega_b, const std::string& branch, const std::string& center, double sites,
                     const std::string& mode, double tolerance, double max_iterations, double t_end, double samples) {
   DarkConfig c = chain_config(DarkStep::evolve, p, omega_b, branch, center, sites, mode, tolerance, max_iterations);
-  c.t_end = t_end;
-  c.samples = integer_keyword(samples, "samples", config::dark_samples.least, config::dark_samples.most);
+  set_evolve_keywords(c, t_end, samples);
   const DarkResult r = run_dark_job(c);
   const sim::dark::DarkEvolution& e = r.evolution;
   const py::ssize_t N = e.sites;

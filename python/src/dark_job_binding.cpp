@@ -30,6 +30,20 @@ DarkConfig dark_config(DarkStep step, double omega_b, const std::optional<std::s
   return c;
 }
 
+void set_branch_keywords(DarkConfig& c, double points, double ds, double omega_min, std::optional<double> omega_max,
+                         bool floquet) {
+  c.points = integer_keyword(points, "points", config::dark_points.least, config::dark_points.most);
+  c.ds = ds;
+  c.omega_min = omega_min;
+  c.omega_max = omega_max.value_or(0.0);
+  c.branch_floquet = floquet;
+}
+
+void set_evolve_keywords(DarkConfig& c, double t_end, double samples) {
+  c.t_end = t_end;
+  c.samples = integer_keyword(samples, "samples", config::dark_samples.least, config::dark_samples.most);
+}
+
 DarkResult run_dark_job(const DarkConfig& c) {
   validate(c);
   InterruptGuard guard;

@@ -13,6 +13,10 @@ namespace lrchain::python {
 jobs::dark::DarkConfig dark_config(jobs::dark::DarkStep step, double omega_b, const std::optional<std::string>& branch,
                                    const std::string& center, double sites, const std::string& mode, double tolerance,
                                    double max_iterations);
+// The keywords of continue_branch (omega_max None: the band edge) and of evolve, into `c`.
+void set_branch_keywords(jobs::dark::DarkConfig& c, double points, double ds, double omega_min,
+                         std::optional<double> omega_max, bool floquet);
+void set_evolve_keywords(jobs::dark::DarkConfig& c, double t_end, double samples);
 // The integer keyword `value` (checked_integer; caps from lrchain/config/option_caps.hpp where there is one).
 Index integer_keyword(double value, const std::string& keyword, std::int64_t least, std::int64_t most);
 

@@ -10,7 +10,6 @@
 #include "dark_arrays.hpp"
 #include "dark_job_binding.hpp"
 #include "loaded_model.hpp"
-#include "lrchain/config/option_caps.hpp"
 
 namespace py = pybind11;
 
@@ -95,11 +94,7 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
                       double max_iterations, double points, double ds, double omega_min, std::optional<double> omega_max,
                       bool floquet) {
   DarkConfig c = model_config(DarkStep::branch, loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations);
-  c.points = integer_keyword(points, "points", config::dark_points.least, config::dark_points.most);
-  c.ds = ds;
-  c.omega_min = omega_min;
-  c.omega_max = omega_max.value_or(0.0);
-  c.branch_floquet = floquet;
+  set_branch_keywords(c, points, ds, omega_min, omega_max, floquet);
   const DarkResult r = run_dark_job(c);
   const DarkEdge& e = r.edge;
   py::dict d = edge_dict(loaded, r);
@@ -122,8 +117,7 @@ py::dict evolve_job(const LoadedModel& loaded, double omega_b, std::optional<std
                     double sites, const std::string& mode, double tolerance, double max_iterations, double t_end,
                     double samples) {
   DarkConfig c = model_config(DarkStep::evolve, loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations);
-  c.t_end = t_end;
-  c.samples = integer_keyword(samples, "samples", config::dark_samples.least, config::dark_samples.most);
+  set_evolve_keywords(c, t_end, samples);
   const DarkResult r = run_dark_job(c);
   std::vector<const Eigen::VectorXd*> rows;
   for (const auto& z : r.evolution.snapshots) rows.push_back(&z);
