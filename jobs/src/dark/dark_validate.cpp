@@ -110,7 +110,7 @@ void validate(const DarkConfig& c) {
     config::checked_option(double(c.samples), config::dark_samples, "samples");
   }
   const sim::ResourceEstimate e = c.model ? model_estimate(c, periods) : chain_estimate(c, periods);
-  if (e.dominant == "period")
+  if (e.dominant == "period" && !c.model)  // (a model's refusal names sites, as `dark --model` did)
     sim::check_memory(e, c.max_memory, "omega_b", "raise omega_b (a shorter period T_b)");
   else if (e.dominant == "periods")
     sim::check_memory(e, c.max_memory, "t_end", "lower t_end");

@@ -100,13 +100,12 @@ struct DarkResult {
   std::string monodromy;  // "full period" | "reversible reduction"
   std::optional<Index> contact_changes_per_period;  // models with one-sided contacts
   sim::dark::BranchResult branch;
-  double branch_omega_edge = 0;  // the edge the branch figure marks
   sim::dark::DarkEvolution evolution;
   bool model_file() const { return config.model != nullptr; }
 };
 
-// Runs the job from a validated config (NumericalFailure-free: a Newton that does not converge is
-// reported in result.newton; a corrector failing at once in failure()).
+// Runs the job from a validated config. A Newton that does not converge ends the job and is reported
+// in result.newton, a corrector failing at once in result.branch (see failure()), not thrown.
 DarkResult run(const DarkConfig& c, const DarkRunHooks& hooks = {});
 
 // The failure to report (Newton not converged, a branch of fewer than two points), or nullopt.
