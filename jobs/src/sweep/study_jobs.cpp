@@ -78,53 +78,46 @@ Params read_model(const CheckedTable& root) {
 
 // ---- dark continue ---------------------------------------------------------------------------
 
-struct DarkSettings {
-  Params p;
-  std::optional<double> omega_b, edge_offset;
-  std::string branch = "optical", center = "bond", mode = "reversible";
-  std::int64_t sites = 101, points = 100;
-  double ds = 0.1, omega_min = 0, omega_max = 0;
-};
-
-// Reads [model] and [dark] and applies the checks of `lrchain dark continue` (InvalidParameter
-// naming the key); returns the settings and the ansatz at the start frequency.
-std::pair<DarkSettings, DarkBreatherAnsatz> read_dark(const Document& doc) {
+// Reads [model] and [dark] into the dark job's config (branch step) with the checks of `lrchain dark
+// continue` (InvalidParameter naming the key in the file); also the ansatz at the start frequency.
+std::pair<jobs::dark::DarkConfig, DarkBreatherAnsatz> read_dark(const Document& doc) {
   const CheckedTable root = check(doc, study_schema("dark continue"));
-  DarkSettings s;
-  s.p = read_model(root);
+  jobs::dark::DarkConfig c;
+  c.step = jobs::dark::DarkStep::branch;
+  c.params = read_model(root);
+  c.branch = "optical";
   const CheckedTable d = *root.table("dark");
-  s.omega_b = d.number("omega_b");
-  s.edge_offset = d.number("edge_offset");
-  d.read("branch", s.branch);
-  d.read("center", s.center);
-  d.read("mode", s.mode);
-  d.read("sites", s.sites);
-  d.read("points", s.points);
-  d.read("ds", s.ds);
-  d.read("omega_min", s.omega_min);
-  d.read("omega_max", s.omega_max);
+  const std::optional<double> start = d.number("omega_b"), edge_offset = d.number("edge_offset");
+  d.read("branch", c.branch);
+  d.read("center", c.center);
+  d.read("mode", c.mode);
+  d.read("sites", c.sites);
+  d.read("points", c.points);
+  d.read("ds", c.ds);
+  d.read("omega_min", c.omega_min);
+  d.read("omega_max", c.omega_max);
   const auto key = [&](const char* k) { return fmt::format("[dark] {} in {}", k, doc.source()); };
-  if (s.omega_b.has_value() == s.edge_offset.has_value())
+  if (start.has_value() == edge_offset.has_value())
     throw InvalidParameter(key("omega_b"), "give exactly one of 'omega_b' and 'edge_offset'");
-  if (s.sites % 2 == 0)
+  if (c.sites % 2 == 0)
     throw InvalidParameter(key("sites"), "must be an odd integer >= 9 (a staggered dark breather fits periodic ends only on an odd number of sites)");
-  const Branch edge = parse_branch(s.branch);
-  const double edge_omega = dispersion_omega(s.p, edge, std::acos(-1.0));
-  const double omega_b = s.omega_b ? *s.omega_b : edge_omega - *s.edge_offset;
-  const char* start_key = s.omega_b ? "omega_b" : "edge_offset";
-  if (!(omega_b > 0)) throw InvalidParameter(key(start_key), fmt::format("must start below the band edge omega(pi) = {:g}", edge_omega));
+  const Branch edge = parse_branch(c.branch);
+  const double edge_omega = dispersion_omega(c.params, edge, std::acos(-1.0));
+  c.omega_b = start ? *start : edge_omega - *edge_offset;
+  const char* start_key = start ? "omega_b" : "edge_offset";
+  if (!(c.omega_b > 0)) throw InvalidParameter(key(start_key), fmt::format("must start below the band edge omega(pi) = {:g}", edge_omega));
   DarkBreatherAnsatz ansatz;
   try {
-    ansatz = make_dark_breather_ansatz(s.p, edge, omega_b);  // checks omega_b against the edge
+    ansatz = make_dark_breather_ansatz(c.params, edge, c.omega_b);  // checks omega_b against the edge
   } catch (const InvalidParameter& e) {
     const std::string what = e.what(), prefix = "invalid " + e.parameter() + ": ";
     throw InvalidParameter(key(start_key), what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
   }
-  if (!(s.omega_min < omega_b))
-    throw InvalidParameter(key("omega_min"), fmt::format("must be below the start omega_b = {:g}", omega_b));
-  if (s.omega_max > 0 && !(s.omega_max > omega_b))
-    throw InvalidParameter(key("omega_max"), fmt::format("must be 0 (the band edge) or above the start omega_b = {:g}", omega_b));
-  return {s, ansatz};
+  if (!(c.omega_min < c.omega_b))
+    throw InvalidParameter(key("omega_min"), fmt::format("must be below the start omega_b = {:g}", c.omega_b));
+  if (c.omega_max > 0 && !(c.omega_max > c.omega_b))
+    throw InvalidParameter(key("omega_max"), fmt::format("must be 0 (the band edge) or above the start omega_b = {:g}", c.omega_b));
+  return {c, ansatz};
 }
 
 const std::vector<std::string>& dark_scalar_names() {
@@ -184,19 +177,7 @@ void reduce_branch(const sim::dark::BranchResult& br, double omega_b, double ome
 
 // Seed, Newton, continuation with Floquet at every point: the dark job's branch step (dark_job.hpp).
 JobResult run_dark(const Document& doc, const RunControl& control) {
-  const auto [s, ansatz] = read_dark(doc);
-  jobs::dark::DarkConfig c;
-  c.step = jobs::dark::DarkStep::branch;
-  c.params = s.p;
-  c.omega_b = ansatz.omega_b;
-  c.branch = s.branch;
-  c.center = s.center;
-  c.mode = s.mode;
-  c.sites = s.sites;
-  c.points = s.points;
-  c.ds = s.ds;
-  c.omega_min = s.omega_min;
-  c.omega_max = s.omega_max;
+  const auto [c, ansatz] = read_dark(doc);
   jobs::dark::DarkRunHooks hooks;
   hooks.stop = control.stop;
   const jobs::dark::DarkResult d = jobs::dark::run(c, hooks);
