@@ -2,6 +2,7 @@
 // Figs. 17-25), the dark job of lrchain/jobs/dark_job.hpp on the command line: options -> DarkConfig,
 // the result -> JSON on stdout and the exit code; Newton and branch progress on stderr, files in --out.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <fmt/format.h>
 #include <memory>
@@ -29,13 +30,18 @@ struct DarkArgs {
   bool json_out = false, quiet = false;
 };
 
-// The job's refusal with the command's spelling of the key: omega_b -> omega-b.
+// The job's refusal with the command's spelling of the key, also in its advice: omega_b -> omega-b,
+// "raise omega_b" -> "raise omega-b" (the symbol omega_b in a formula stays).
 InvalidParameter option_spelling(const InvalidParameter& e) {
-  std::string option = e.parameter();
-  for (char& c : option)
-    if (c == '_') c = '-';
-  const std::string text = e.what(), prefix = "invalid " + e.parameter() + ": ";
-  return InvalidParameter(option, text.rfind(prefix, 0) == 0 ? text.substr(prefix.size()) : text);
+  const std::string key = e.parameter();
+  std::string option = key;
+  std::replace(option.begin(), option.end(), '_', '-');
+  const std::string what = e.what(), prefix = "invalid " + key + ": ";
+  std::string text = what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what;
+  for (const std::string verb : {"raise ", "lower "})
+    for (auto at = text.find(verb + key); at != std::string::npos; at = text.find(verb + key, at + 1))
+      text.replace(at + verb.size(), key.size(), option);
+  return InvalidParameter(option, text);
 }
 
 void add_common(CLI::App& sub, DarkArgs& a) {
