@@ -89,6 +89,7 @@ struct DarkEdge {
   std::vector<std::string> one_sided_contacts;  // the model's contact bonds by name (empty: smooth)
 };
 
+// What a dark job computed: its config, the edge, Newton, and the step's measures/Floquet, branch or evolution.
 struct DarkResult {
   DarkConfig config;
   DarkEdge edge;
