@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <complex>
 #include <pybind11/complex.h>
+#include <pybind11/stl.h>
 
 namespace py = pybind11;
 
@@ -67,6 +68,33 @@ py::dict evolution_series(const DarkEvolution& e) {
   d["position"] = position;
   d["depth"] = depth;
   d["max_strain"] = e.max_strain;
+  return d;
+}
+
+py::dict branch_arrays(const BranchResult& branch, bool floquet,
+                       const std::function<py::dict(const DarkMeasures&)>& measures_of) {
+  const auto k = static_cast<py::ssize_t>(branch.points.size());
+  py::array_t<double> omega(k), tangent(k), residual(k);
+  py::array_t<int> iterations(k);
+  py::list measure_rows, floquet_rows;
+  for (py::ssize_t i = 0; i < k; ++i) {
+    const BranchPoint& b = branch.points[static_cast<std::size_t>(i)];
+    omega.mutable_at(i) = b.omega_b;
+    tangent.mutable_at(i) = b.tangent_omega;
+    residual.mutable_at(i) = b.residual;
+    iterations.mutable_at(i) = static_cast<int>(b.iterations);  // int32, as in the HDF5 file
+    measure_rows.append(measures_of(b.measures));
+    floquet_rows.append(floquet ? py::object(floquet_dict(b.floquet)) : py::object(py::none()));
+  }
+  py::dict d;
+  d["omega_b"] = omega;
+  d["tangent_omega"] = tangent;
+  d["residual"] = residual;
+  d["iterations"] = iterations;
+  d["measures"] = measure_rows;
+  d["floquet"] = floquet_rows;
+  d["turning_points"] = branch.turning_points;
+  d["stop_reason"] = branch.stop_reason;
   return d;
 }
 

@@ -57,3 +57,21 @@ def test_collapse_to_the_zero_state_raises_numerical_failure():
     # Z(0) = 0 (max strain ~5e-17): a zero of the shooting residual but no breather.
     with pytest.raises(lrchain.NumericalFailure, match="converged to the trivial state"):
         lrchain.dark.solve(lrchain.Params(), omega_b=1.6, sites=21)
+
+
+def test_integer_keywords_accept_integral_floats_and_refuse_others():
+    # samples, sites, points as floats: integral values are the integers (as the command's 1e3), others
+    # are refused with InvalidParameterError naming the keyword (the cap of dark --samples: [4, 1000000]).
+    period = 2 * np.pi / 2.42
+    with pytest.raises(lrchain.InvalidParameterError, match=r"samples: must be an integer in \[4, 1000000\]") as e:
+        lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=21, t_end=period, samples=1e7)
+    assert e.value.parameter == "samples"
+    with pytest.raises(lrchain.InvalidParameterError) as e:
+        lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=21, t_end=period, samples=24.5)
+    assert e.value.parameter == "samples"
+    with pytest.raises(lrchain.InvalidParameterError) as e:
+        lrchain.dark.solve(lrchain.Params(), omega_b=2.42, sites=21.5)
+    assert e.value.parameter == "sites"
+    as_float = lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=21.0, t_end=period, samples=8.0)
+    as_int = lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=21, t_end=period, samples=8)
+    assert np.array_equal(as_float.x, as_int.x) and np.array_equal(as_float.position, as_int.position)

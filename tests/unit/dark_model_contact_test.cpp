@@ -1,4 +1,5 @@
-// `lrchain dark ... --model` with one-sided contacts: the resonant chain's model file at branch points
+// The dark job on model files with one-sided contacts (lrchain/jobs/dark_job.hpp; `dark evolve --model`
+// and a compiled copy through the command): the resonant chain's model file at branch points
 // whose orbits open contacts every period (site-centred; rho = 1/3 at omega_b = 2.42, K_x = 0.473 >
 // delta0, the amplitude of dark_breather_test.cpp; rho = 1 at 2.207, K_x = 0.662) gives the specialised
 // strain-lattice breather (shooting.hpp, contact changes located there too) with the same contact
@@ -23,6 +24,9 @@
 #include "../support/renamed_model.hpp"
 #include "../support/run_lrchain.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/jobs/dark_job.hpp"
+#include "lrchain/model.hpp"
+#include "lrchain/sim/model_lattice.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
 #include "lrchain/sim/dark/measures.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
@@ -40,42 +44,43 @@ fs::path scratch(const std::string& name) {
   return dir;
 }
 
-// Rows of a CSV file with a header row, as numbers.
-std::vector<std::vector<double>> read_csv(const fs::path& file) {
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) row.push_back(std::stod(cell));
-    rows.push_back(row);
+// The dark job on a shipped model (its compiled-in lattice kernels).
+struct ModelJob {
+  lrchain::Model model;
+  lrchain::jobs::dark::DarkResult run(lrchain::jobs::dark::DarkConfig c) const {
+    c.model = &model;
+    c.kernels = lrchain::sim::shipped_lattice_kernels(model.name());
+    lrchain::jobs::dark::validate(c);
+    return lrchain::jobs::dark::run(c);
   }
-  return rows;
+};
+
+lrchain::jobs::dark::DarkConfig dark_config(lrchain::jobs::dark::DarkStep step, double omega_b, lrchain::Index sites,
+                                            const std::string& center = "bond") {
+  lrchain::jobs::dark::DarkConfig c;
+  c.step = step;
+  c.omega_b = omega_b;
+  c.sites = sites;
+  c.center = center;
+  return c;
 }
 
-// A site-centred breather of the resonant chain at rho (model file: --set rho=rho_text) and omega_b on
-// 41 sites, through `dark solve --model` and through the strain-lattice solver: their contact changes
-// per period, E_b(T_b), K_x and profile.
+// A site-centred breather of the resonant chain at rho (model file with rho set) and omega_b on 41
+// sites, through the dark job on the model's lattice kernels and through the strain-lattice solver:
+// their contact changes per period, E_b(T_b), K_x and profile.
 void check_against_strain_lattice(const std::string& rho_text, double rho, const std::string& omega_text) {
   using namespace lrchain;
   using namespace lrchain::sim::dark;
   const double omega_b = std::stod(omega_text);
   const int N = 41;
-  const fs::path out = scratch("dark-model-contact");
-  const auto r = run_lrchain({"dark", "solve", "--model", "models/resonant_chain.toml", "--set", "rho=" + rho_text,
-                              "--branch", "optical", "--omega-b", omega_text, "--center", "site", "--sites", "41",
-                              "--quiet", "--figure-format", "png", "--out", out.string()},
-                             source_dir);
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  const auto j = nlohmann::json::parse(r.out);
-  REQUIRE(j["newton_converged"] == true);
-  CHECK(j["contact_changes_located"] == true);
-  REQUIRE(j["one_sided_contacts"].size() == 1);  // one Hertz bond law: F(u[n+1] - u[n]) = F(r[n+1]) up to a shift
-  const long changes = j["contact_changes_per_period"].get<long>();
+  const ModelJob job{shipped_model("resonant_chain", {{"rho", rho}})};
+  jobs::dark::DarkConfig c = dark_config(jobs::dark::DarkStep::solve, omega_b, N, "site");
+  c.branch = "optical";
+  const jobs::dark::DarkResult r = job.run(c);
+  REQUIRE(r.newton.converged);
+  REQUIRE(r.edge.one_sided_contacts.size() == 1);  // one Hertz bond law: F(u[n+1] - u[n]) = F(r[n+1]) up to a shift
+  REQUIRE(r.contact_changes_per_period.has_value());
+  const long changes = long(*r.contact_changes_per_period);
   CHECK(changes > 0);
   CHECK(changes % 2 == 0);  // every contact opened in a period closes again
 
@@ -98,16 +103,13 @@ void check_against_strain_lattice(const std::string& rho_text, double rho, const
   integrator.integrate(state, 0.0, 2 * std::numbers::pi / omega_b);
   const long paper_changes = integrator.stats().contact_changes;
 
-  // profile.csv: n, r_0, r_seed, r_T, w1_0, w1_seed, w1_T; (r, w) -> (x, y): x_n = r_n,
-  // y_n = r_n + w_n - w_{n-1} (periodic).
-  const auto rows = read_csv(out / "profile.csv");
-  REQUIRE(rows.size() == std::size_t(N));
+  // Z(0) = (r, w1) field-major; (r, w) -> (x, y): x_n = r_n, y_n = r_n + w_n - w_{n-1} (periodic).
   double profile = 0;
   for (int n = 0; n < N; ++n) {
-    const double x = rows[std::size_t(n)][1], y = x + rows[std::size_t(n)][4] - rows[std::size_t((n + N - 1) % N)][4];
+    const double x = r.z0(n), y = x + r.z0(N + n) - r.z0(N + (n + N - 1) % N);
     profile = std::max({profile, std::abs(x - xy(n)), std::abs(y - xy(N + n))});
   }
-  const double E_b = j["measures"]["E_b"].get<double>(), K_x = j["measures"]["K_x"].get<double>();
+  const double E_b = r.measures.E_b, K_x = r.measures.K_x;
   std::printf("dark resonant_chain model vs Params at rho %s, omega_b %s, site-centred (contacts open): %ld vs %ld "
               "contact changes per period, E_b %.3e vs %.3e, K_x %.15f vs %.15f, max profile difference %.3e\n",
               rho_text.c_str(), omega_text.c_str(), changes, paper_changes, E_b, m.E_b, K_x, m.K_x, profile);
@@ -121,65 +123,58 @@ void check_against_strain_lattice(const std::string& rho_text, double rho, const
   // no contact change, by 7.7e-4 (the weakly pinned dip position, docs/dark-models.md).
   CHECK(profile < 1e-9);
   CHECK(std::abs(K_x - m.K_x) < 1e-9);
-  fs::remove_all(out);
 }
 
 }  // namespace
 
-TEST_CASE("dark --model: the resonant chain's model file opens contacts and gives the strain-lattice breather" *
+TEST_CASE("dark job: the resonant chain's model file opens contacts and gives the strain-lattice breather" *
           doctest::test_suite("fast")) {
   check_against_strain_lattice("1/3", 1.0 / 3.0, "2.42");  // K_x = 0.473 > delta0 (dark_breather_test.cpp)
   check_against_strain_lattice("1", 1.0, "2.207");         // K_x = 0.662: the rho = 1 site branch (Fig. 25)
 }
 
-TEST_CASE("dark --model: a smooth model (klein_gordon) has no one-sided contacts" * doctest::test_suite("fast")) {
-  const auto r = run_lrchain({"dark", "solve", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b",
-                              "1.17", "--sites", "31", "--quiet", "--json"},
-                             source_dir);
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  const auto j = nlohmann::json::parse(r.out);
-  CHECK(j["one_sided_contacts"].empty());
-  CHECK(j["contact_changes_located"] == false);
-  CHECK(j["contact_changes_per_period"].is_null());
-  CHECK(j["measures"]["E_b"].get<double>() < 1e-10);
+TEST_CASE("dark job: a smooth model (klein_gordon) has no one-sided contacts" * doctest::test_suite("fast")) {
+  using namespace lrchain::jobs::dark;
+  const ModelJob job{lrchain::shipped_model("klein_gordon", {{"b", -0.5}})};
+  const DarkResult r = job.run(dark_config(DarkStep::solve, 1.17, 31));
+  CHECK(r.edge.one_sided_contacts.empty());
+  CHECK(to_json(r)["contact_changes_located"] == false);
+  CHECK(!r.contact_changes_per_period.has_value());
+  CHECK(r.measures.E_b < 1e-10);
   // Continuation: every point says null (no contact located), never a count.
-  const auto c = run_lrchain({"dark", "continue", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b",
-                              "1.17", "--sites", "15", "--points", "2", "--ds", "0.02", "--quiet", "--json"},
-                             source_dir);
-  INFO(c.err);
-  REQUIRE(c.exit_code == 0);
-  const auto branch = nlohmann::json::parse(c.out);
-  REQUIRE(branch["branch_points"].size() == 2);
-  for (const auto& point : branch["branch_points"]) CHECK(point["contact_changes_per_period"].is_null());
-  CHECK(branch["contact_changes_per_period"].is_null());
+  DarkConfig c = dark_config(DarkStep::branch, 1.17, 15);
+  c.points = 2;
+  c.ds = 0.02;
+  const DarkResult branch = job.run(c);
+  REQUIRE(branch.branch.points.size() == 2);
+  for (const auto& point : branch.branch.points) CHECK(!point.contact_changes_per_period.has_value());
+  CHECK(to_json(branch)["contact_changes_per_period"].is_null());
 }
 
-TEST_CASE("dark continue --model: every branch point reports its own contact changes" * doctest::test_suite("fast")) {
+TEST_CASE("dark job: every branch point of a model reports its own contact changes" * doctest::test_suite("fast")) {
   // The resonant chain's site-centred breather at omega_b = 2.42 (contacts open every period) on 15
-  // sites: the first point is the solved breather, so its count is `dark solve`'s; each point's
+  // sites: the first point is the solved breather, so its count is the solve's; each point's
   // count is located on that point's own orbit (even: every contact opened in a period closes).
-  const std::vector<std::string> common{"--model", "models/resonant_chain.toml", "--branch", "optical", "--center",
-                                        "site", "--omega-b", "2.42", "--sites", "15", "--quiet", "--json"};
-  std::vector<std::string> solve{"dark", "solve"}, branch{"dark", "continue", "--points", "3", "--ds", "0.5"};
-  solve.insert(solve.end(), common.begin(), common.end());
-  branch.insert(branch.end(), common.begin(), common.end());
-  const auto s = run_lrchain(solve, source_dir);
-  const auto b = run_lrchain(branch, source_dir);
-  INFO(s.err << b.err);
-  REQUIRE(s.exit_code == 0);
-  REQUIRE(b.exit_code == 0);
-  const auto solved = nlohmann::json::parse(s.out), j = nlohmann::json::parse(b.out);
-  REQUIRE(j["branch_points"].size() == 3);
-  CHECK(j["branch_points"][0]["contact_changes_per_period"] == solved["contact_changes_per_period"]);
-  CHECK(j["contact_changes_per_period"] == solved["contact_changes_per_period"]);
+  using namespace lrchain::jobs::dark;
+  const ModelJob job{lrchain::shipped_model("resonant_chain")};
+  DarkConfig c = dark_config(DarkStep::solve, 2.42, 15, "site");
+  c.branch = "optical";
+  const DarkResult solved = job.run(c);
+  c.step = DarkStep::branch;
+  c.points = 3;
+  c.ds = 0.5;
+  const DarkResult r = job.run(c);
+  REQUIRE(solved.contact_changes_per_period.has_value());
+  REQUIRE(r.branch.points.size() == 3);
+  CHECK(r.branch.points[0].contact_changes_per_period == solved.contact_changes_per_period);
+  CHECK(to_json(r)["contact_changes_per_period"] == *solved.contact_changes_per_period);
   double previous = 1e300;
-  for (const auto& point : j["branch_points"]) {
-    const long changes = point["contact_changes_per_period"].get<long>();
-    CHECK(changes > 0);
-    CHECK(changes % 2 == 0);
-    CHECK(point["omega_b"].get<double>() < previous);  // into the gap, away from the edge
-    previous = point["omega_b"].get<double>();
+  for (const auto& point : r.branch.points) {
+    REQUIRE(point.contact_changes_per_period.has_value());
+    CHECK(*point.contact_changes_per_period > 0);
+    CHECK(*point.contact_changes_per_period % 2 == 0);
+    CHECK(point.omega_b < previous);  // into the gap, away from the edge
+    previous = point.omega_b;
   }
 }
 

@@ -16,7 +16,7 @@
 #include "lrchain/dispersion.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/focusing_intervals.hpp"
-#include "lrchain/sim/dark/continuation.hpp"
+#include "lrchain/jobs/dark_job.hpp"
 
 namespace lrchain::jobs::sweep {
 
@@ -78,53 +78,46 @@ Params read_model(const CheckedTable& root) {
 
 // ---- dark continue ---------------------------------------------------------------------------
 
-struct DarkSettings {
-  Params p;
-  std::optional<double> omega_b, edge_offset;
-  std::string branch = "optical", center = "bond", mode = "reversible";
-  std::int64_t sites = 101, points = 100;
-  double ds = 0.1, omega_min = 0, omega_max = 0;
-};
-
-// Reads [model] and [dark] and applies the checks of `lrchain dark continue` (InvalidParameter
-// naming the key); returns the settings and the ansatz at the start frequency.
-std::pair<DarkSettings, DarkBreatherAnsatz> read_dark(const Document& doc) {
+// Reads [model] and [dark] into the dark job's config (branch step) with the checks of `lrchain dark
+// continue` (InvalidParameter naming the key in the file); also the ansatz at the start frequency.
+std::pair<jobs::dark::DarkConfig, DarkBreatherAnsatz> read_dark(const Document& doc) {
   const CheckedTable root = check(doc, study_schema("dark continue"));
-  DarkSettings s;
-  s.p = read_model(root);
+  jobs::dark::DarkConfig c;
+  c.step = jobs::dark::DarkStep::branch;
+  c.params = read_model(root);
+  c.branch = "optical";
   const CheckedTable d = *root.table("dark");
-  s.omega_b = d.number("omega_b");
-  s.edge_offset = d.number("edge_offset");
-  d.read("branch", s.branch);
-  d.read("center", s.center);
-  d.read("mode", s.mode);
-  d.read("sites", s.sites);
-  d.read("points", s.points);
-  d.read("ds", s.ds);
-  d.read("omega_min", s.omega_min);
-  d.read("omega_max", s.omega_max);
+  const std::optional<double> start = d.number("omega_b"), edge_offset = d.number("edge_offset");
+  d.read("branch", c.branch);
+  d.read("center", c.center);
+  d.read("mode", c.mode);
+  d.read("sites", c.sites);
+  d.read("points", c.points);
+  d.read("ds", c.ds);
+  d.read("omega_min", c.omega_min);
+  d.read("omega_max", c.omega_max);
   const auto key = [&](const char* k) { return fmt::format("[dark] {} in {}", k, doc.source()); };
-  if (s.omega_b.has_value() == s.edge_offset.has_value())
+  if (start.has_value() == edge_offset.has_value())
     throw InvalidParameter(key("omega_b"), "give exactly one of 'omega_b' and 'edge_offset'");
-  if (s.sites % 2 == 0)
+  if (c.sites % 2 == 0)
     throw InvalidParameter(key("sites"), "must be an odd integer >= 9 (a staggered dark breather fits periodic ends only on an odd number of sites)");
-  const Branch edge = parse_branch(s.branch);
-  const double edge_omega = dispersion_omega(s.p, edge, std::acos(-1.0));
-  const double omega_b = s.omega_b ? *s.omega_b : edge_omega - *s.edge_offset;
-  const char* start_key = s.omega_b ? "omega_b" : "edge_offset";
-  if (!(omega_b > 0)) throw InvalidParameter(key(start_key), fmt::format("must start below the band edge omega(pi) = {:g}", edge_omega));
+  const Branch edge = parse_branch(c.branch);
+  const double edge_omega = dispersion_omega(c.params, edge, std::acos(-1.0));
+  c.omega_b = start ? *start : edge_omega - *edge_offset;
+  const char* start_key = start ? "omega_b" : "edge_offset";
+  if (!(c.omega_b > 0)) throw InvalidParameter(key(start_key), fmt::format("must start below the band edge omega(pi) = {:g}", edge_omega));
   DarkBreatherAnsatz ansatz;
   try {
-    ansatz = make_dark_breather_ansatz(s.p, edge, omega_b);  // checks omega_b against the edge
+    ansatz = make_dark_breather_ansatz(c.params, edge, c.omega_b);  // checks omega_b against the edge
   } catch (const InvalidParameter& e) {
     const std::string what = e.what(), prefix = "invalid " + e.parameter() + ": ";
     throw InvalidParameter(key(start_key), what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
   }
-  if (!(s.omega_min < omega_b))
-    throw InvalidParameter(key("omega_min"), fmt::format("must be below the start omega_b = {:g}", omega_b));
-  if (s.omega_max > 0 && !(s.omega_max > omega_b))
-    throw InvalidParameter(key("omega_max"), fmt::format("must be 0 (the band edge) or above the start omega_b = {:g}", omega_b));
-  return {s, ansatz};
+  if (!(c.omega_min < c.omega_b))
+    throw InvalidParameter(key("omega_min"), fmt::format("must be below the start omega_b = {:g}", c.omega_b));
+  if (c.omega_max > 0 && !(c.omega_max > c.omega_b))
+    throw InvalidParameter(key("omega_max"), fmt::format("must be 0 (the band edge) or above the start omega_b = {:g}", c.omega_b));
+  return {c, ansatz};
 }
 
 const std::vector<std::string>& dark_scalar_names() {
@@ -143,12 +136,12 @@ const std::vector<std::string>& dark_row_names() {
 }
 
 // Stability code of a branch point: 0 stable, + 1 real, + 2 period doubling, + 4 oscillatory.
-int stability_code(const dark::FloquetResult& f) {
+int stability_code(const sim::dark::FloquetResult& f) {
   return (f.real_instability ? 1 : 0) + (f.period_doubling ? 2 : 0) + (f.oscillatory ? 4 : 0);
 }
 
 // The branch reduced to the scalars of dark_scalar_names() and one row per point.
-void reduce_branch(const dark::BranchResult& br, double omega_b, double omega_edge, int newton_iterations, JobResult& r) {
+void reduce_branch(const sim::dark::BranchResult& br, double omega_b, double omega_edge, int newton_iterations, JobResult& r) {
   const auto& pts = br.points;
   double low = none, high = none, max_mod = 0, max_real = 1, max_osc = 1, max_E = 0, stable_extent = 0, unstable_extent = 0;
   int stable = 0, real = 0, doubling = 0, oscillatory = 0, stable_windows = 0, unstable_windows = 0, part = 0;
@@ -182,35 +175,27 @@ void reduce_branch(const dark::BranchResult& br, double omega_b, double omega_ed
                unstable_extent, max_mod, max_real, max_osc, max_E};
 }
 
-// Seed, Newton, continuation with Floquet at every point: what `lrchain dark continue` runs.
+// Seed, Newton, continuation with Floquet at every point: the dark job's branch step (dark_job.hpp).
 JobResult run_dark(const Document& doc, const RunControl& control) {
-  const auto [s, ansatz] = read_dark(doc);
+  const auto [c, ansatz] = read_dark(doc);
+  jobs::dark::DarkRunHooks hooks;
+  hooks.stop = control.stop;
+  const jobs::dark::DarkResult d = jobs::dark::run(c, hooks);
   JobResult r;
-  const DarkCenter center = parse_dark_center(s.center);
-  const dark::DarkShooting shooting(s.p, s.sites, center, dark::parse_shooting_mode(s.mode));
-  const dark::NewtonResult newton = dark::newton_solve(
-      shooting, shooting.unknowns_from_z(dark::dark_seed(ansatz, center, s.sites)), ansatz.omega_b, {});
-  if (!newton.converged) {
+  if (!d.newton.converged) {
     r.status = PointStatus::numerical_failure;
-    r.reason = fmt::format("Newton found no breather at omega_b = {}: {}", ansatz.omega_b, newton.failure);
+    r.reason = fmt::format("Newton found no breather at omega_b = {}: {}", ansatz.omega_b, d.newton.failure);
     return r;
   }
-  dark::ContinuationOptions o;
-  o.stop = control.stop;
-  o.max_points = s.points;
-  o.ds = s.ds;
-  o.omega_min = s.omega_min;
-  o.omega_max = s.omega_max > 0 ? s.omega_max : ansatz.omega;
-  const dark::BranchResult br = dark::continue_branch(shooting, newton.q, ansatz.omega_b, o);
-  if (br.interrupted) {
+  if (d.branch.interrupted) {
     r.status = PointStatus::missing;
     r.reason = "interrupted";
     return r;
   }
-  reduce_branch(br, ansatz.omega_b, ansatz.omega, int(newton.history.size()), r);
-  if (br.points.size() < 2) {  // the corrector failed at once, as `lrchain dark continue` reports it
+  reduce_branch(d.branch, ansatz.omega_b, ansatz.omega, int(d.newton.history.size()), r);
+  if (const auto failure = jobs::dark::failure(d)) {  // the corrector failed at once
     r.status = PointStatus::numerical_failure;
-    r.reason = "continuation stopped: " + br.stop_reason;
+    r.reason = *failure;
   } else {
     r.status = PointStatus::ok;
   }

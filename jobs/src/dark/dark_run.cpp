@@ -1,0 +1,155 @@
+// run(DarkConfig): Newton from the seed on the resonant chain's shooting (eq:xy_app) or a model's,
+// then the step asked for: measures and Floquet multipliers, the branch, or the evolution.
+#include <numbers>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "dark_steps.hpp"
+#include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/dispersion.hpp"
+#include "lrchain/jobs/dark_job.hpp"
+#include "lrchain/sim/dark/model_dark_ansatz.hpp"
+#include "lrchain/sim/dark/model_shooting.hpp"
+#include "lrchain/sim/model_lattice_bloch.hpp"
+
+namespace lrchain::jobs::dark {
+
+using namespace lrchain::sim::dark;
+
+namespace {
+
+sim::dark::NewtonOptions newton_options(const DarkConfig& c, const DarkRunHooks& hooks) {
+  NewtonOptions o;
+  o.tolerance = c.tolerance;
+  o.max_iterations = c.max_iterations;
+  o.progress = hooks.newton_progress;
+  return o;
+}
+
+// The resonant chain (Params): seed eq:xy_app, reversible or full-period shooting (Sec. 5.3).
+void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactIntegrationOptions& integration,
+               DarkResult& r) {
+  const std::string branch = c.branch.empty() ? "optical" : c.branch;
+  const DarkCenter center = parse_dark_center(c.center);
+  const DarkBreatherAnsatz ansatz = make_dark_breather_ansatz(c.params, parse_branch(branch), c.omega_b);
+  r.edge.branch = branch;
+  r.edge.theta = std::numbers::pi;
+  r.edge.omega = ansatz.omega;
+  r.edge.variables = {"x", "y"};
+  const DarkShooting shooting(c.params, c.sites, center, parse_shooting_mode(c.mode), integration);
+  r.seed = dark_seed(ansatz, center, c.sites);
+  r.newton = newton_solve(shooting, shooting.unknowns_from_z(r.seed), c.omega_b, newton_options(c, hooks));
+  if (!r.newton.converged) return;
+  r.z0 = shooting.z_from_unknowns(r.newton.q);
+  const double period = 2 * std::numbers::pi / c.omega_b;
+  switch (c.step) {
+    case DarkStep::branch:
+      continue_from(shooting, r.newton.q, c, hooks, r);
+      return;
+    case DarkStep::evolve:
+      r.evolution = evolve_dark_breather(c.params, r.z0, c.omega_b, c.t_end, c.samples, shooting.integration(), hooks.stop);
+      return;
+    case DarkStep::solve:
+    case DarkStep::floquet:
+      break;
+  }
+  r.measures = measure_dark_breather(c.params, r.z0, c.omega_b, shooting.integration());
+  if (c.step == DarkStep::floquet) {
+    Eigen::VectorXd residual;
+    Eigen::MatrixXd jacobian, propagator;
+    if (c.full_monodromy || shooting.mode() == ShootingMode::full) {
+      const DarkShooting full(c.params, c.sites, center, ShootingMode::full, shooting.integration());
+      full.evaluate(full.unknowns_from_z(r.z0), c.omega_b, residual, &jacobian, &propagator);
+      r.floquet = floquet_from_monodromy(propagator);
+      r.monodromy = "full period";
+    } else {
+      shooting.evaluate(r.newton.q, c.omega_b, residual, &jacobian, &propagator);
+      r.floquet = floquet_reversible(shooting, propagator);
+      r.monodromy = "reversible reduction";
+    }
+  }
+  if (!c.out.empty())  // the profile's Z(T_b)
+    r.z_period = dark_breather_evolution(c.params, r.z0, period, 1, shooting.integration()).back();
+}
+
+// Names and meanings of a model's lattice variables: strains r, w_f (translation-invariant models)
+// or displacements u_f (on-site models).
+void model_variables(DarkEdge& e) {
+  for (int f = 0; f < e.fields; ++f) {
+    e.variables.push_back(e.mean_flow ? (f == 0 ? "r" : fmt::format("w{}", f)) : fmt::format("u{}", f));
+    e.variable_meanings.push_back(e.mean_flow ? (f == 0 ? "r[n] = u0[n] - u0[n-1]" : fmt::format("w{0}[n] = u{0}[n] - u0[n]", f))
+                                              : fmt::format("u{}[n]", f));
+  }
+}
+
+// A model file on its generated lattice kernels: the seed at its defocusing edge, full-period shooting.
+void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactIntegrationOptions& integration,
+               DarkResult& r) {
+  const Model& model = *c.model;
+  const std::optional<Index> given = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
+  const ModelDarkAnsatz ansatz = make_model_dark_ansatz(model, *c.kernels, defocusing_edge(model, given), c.omega_b);
+  const ContactBonds contacts = model_contact_bonds(*c.kernels, sim::lattice_parameters(model), ansatz.mean_flow);
+  r.edge = {model.definition().branch_names.at(std::size_t(ansatz.branch)), ansatz.theta, ansatz.omega,
+            ansatz.curvature, ansatz.h_tilde, ansatz.lambda, ansatz.mean_flow, c.kernels->fields, {}, {}, {}};
+  model_variables(r.edge);
+  for (const auto& bond : contacts) r.edge.one_sided_contacts.push_back(bond.name);
+  const ModelDarkShooting shooting(*c.kernels, sim::lattice_parameters(model), c.sites, ansatz.mean_flow,
+                                   parse_shooting_mode(c.mode), integration, contacts);
+  r.seed = model_dark_seed(ansatz, parse_dark_center(c.center), c.sites);
+  r.newton = newton_solve(shooting, r.seed, c.omega_b, newton_options(c, hooks));
+  if (!r.newton.converged) return;
+  r.z0 = r.newton.q;
+  if (c.step == DarkStep::branch) {  // the start's contact changes are its branch point's
+    continue_from(shooting, r.z0, c, hooks, r);
+    return;
+  }
+  r.contact_changes_per_period = shooting.contact_changes_per_period(r.z0, c.omega_b);
+  if (c.step == DarkStep::evolve) {
+    r.evolution = evolve_dark_orbit(shooting.advance(), r.z0, c.sites, c.omega_b, c.t_end, c.samples, hooks.stop);
+    return;
+  }
+  shooting.measure(r.z0, c.omega_b, r.measures);
+  if (c.step == DarkStep::floquet) {
+    r.floquet = floquet_from_monodromy(shooting.monodromy(r.z0, c.omega_b));
+    r.monodromy = "full period";
+  }
+  if (!c.out.empty()) {  // the profile's Z(T_b)
+    std::vector<double> state(2 * std::size_t(r.z0.size()), 0.0);
+    std::copy(r.z0.data(), r.z0.data() + r.z0.size(), state.begin());
+    shooting.orbit().integrate(state, 0.0, 2 * std::numbers::pi / c.omega_b);
+    r.z_period = Eigen::Map<const Eigen::VectorXd>(state.data(), r.z0.size());
+  }
+}
+
+}  // namespace
+
+// Continues a solved breather q0 away from the band edge: into the gap (omega_b falling) below an
+// edge, rising above one (a model edge with h_tilde > 0), within [omega_min, omega_max].
+void continue_from(const DarkShootingProblem& shooting, const Eigen::VectorXd& q0, const DarkConfig& c,
+                   const DarkRunHooks& hooks, DarkResult& r) {
+  const double edge = r.edge.omega;
+  ContinuationOptions o;
+  o.stop = hooks.stop;
+  o.max_points = c.points;
+  o.ds = c.ds;
+  o.tolerance = c.tolerance;
+  o.floquet = c.branch_floquet;
+  const bool above = c.omega_b > edge;
+  o.direction = above ? 1.0 : -1.0;
+  o.omega_min = above ? std::max(c.omega_min, edge) : c.omega_min;
+  o.omega_max = c.omega_max > 0 ? c.omega_max : above ? 1e300 : edge;
+  r.branch = continue_branch(shooting, q0, c.omega_b, o, hooks.on_point);
+}
+
+DarkResult run(const DarkConfig& c, const DarkRunHooks& hooks) {
+  DarkResult r;
+  r.config = c;
+  ContactIntegrationOptions integration;
+  if (hooks.stop_integrations) integration.stop = hooks.stop;
+  if (c.model) run_model(c, hooks, integration, r);
+  else run_chain(c, hooks, integration, r);
+  return r;
+}
+
+}  // namespace lrchain::jobs::dark

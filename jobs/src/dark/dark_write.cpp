@@ -1,0 +1,127 @@
+// write(DarkResult, out): the dark job's files — profile and Floquet multipliers (solve, floquet),
+// the branch (continue), the evolution (evolve), result.h5 — with their gnuplot figures.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "dark_steps.hpp"
+#include "lrchain/sim/dark/dark_hdf5.hpp"
+#include "lrchain/sim/gnuplot_text.hpp"
+#include "lrchain/sim/output_lock.hpp"
+
+namespace lrchain::jobs::dark {
+
+using nlohmann::json;
+using namespace lrchain::sim::dark;
+
+std::string lattice_label(const DarkResult& r) {
+  return r.model_file() ? r.config.model->name() : fmt::format("ρ = {:.4g}", r.config.params.rho);
+}
+
+// profile.csv: n, then Z(0), the seed and Z(T_b) per variable (the chain: x0, y0, x_seed, y_seed,
+// x_T, y_T); profile.gp draws them.
+void write_profile(const DarkResult& r, const std::string& dir, sim::Figures& figures) {
+  const DarkConfig& c = r.config;
+  const Index N = c.sites;
+  std::ostringstream os;
+  if (!r.model_file()) {
+    os << "n,x0,y0,x_seed,y_seed,x_T,y_T\n";
+    for (Index i = 0; i < N; ++i)
+      os << fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", i - (N - 1) / 2, r.z0(i),
+                        r.z0(N + i), r.seed(i), r.seed(N + i), r.z_period(i), r.z_period(N + i));
+    sim::write_file_atomic(dir, "profile.csv", os.str());
+    figures.draw({"profile.gp",
+                  fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
+                              "set terminal pngcairo size 1000,700\nset output outfile\n"
+                              "set datafile separator ','\nset xlabel 'site n'\n"
+                              "set ylabel 'strains x_{{n}}, y_{{n}} (dimensionless)'\nset key outside\n"
+                              "set title 'dark breather ({} centred), ω_{{b}} = {:.5f}: Z(0), Z(T_{{b}}), seed eq. (48)'\n"
+                              "plot 'profile.csv' skip 1 u 1:2 w lp pt 3 t 'x_{{n}}(0)', '' skip 1 u 1:6 w p pt 4 ps 1.5 t 'x_{{n}}(T_{{b}})', "
+                              "'' skip 1 u 1:4 w p pt 6 t 'x seed', '' skip 1 u 1:3 w lp pt 3 t 'y_{{n}}(0)', "
+                              "'' skip 1 u 1:7 w p pt 4 ps 1.5 t 'y_{{n}}(T_{{b}})', '' skip 1 u 1:5 w p pt 6 t 'y seed'\n",
+                              c.center, c.omega_b),
+                  "profile.png"});
+    return;
+  }
+  const std::vector<std::string>& variables = r.edge.variables;
+  os << "n";
+  for (const auto& v : variables) os << "," << v << "_0," << v << "_seed," << v << "_T";
+  os << "\n";
+  for (Index i = 0; i < N; ++i) {
+    os << i - (N - 1) / 2;
+    for (std::size_t v = 0; v < variables.size(); ++v) {
+      const Index at = Index(v) * N + i;
+      os << fmt::format(",{:.17g},{:.17g},{:.17g}", r.z0(at), r.seed(at), r.z_period(at));
+    }
+    os << "\n";
+  }
+  sim::write_file_atomic(dir, "profile.csv", os.str());
+  const auto literal = [](const std::string& text) { return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced); };
+  std::string plot = "plot ";
+  for (std::size_t v = 0; v < variables.size(); ++v)
+    plot += fmt::format("{0}'profile.csv' skip 1 u 1:{1} w lp pt 3 t '{2}(0)', '' skip 1 u 1:{3} w p pt 4 ps 1.5 t "
+                        "'{2}(T_{{b}})', '' skip 1 u 1:{4} w p pt 6 t '{2} seed'",
+                        v == 0 ? "" : ", ", 2 + 3 * v, literal(variables[v]), 4 + 3 * v, 3 + 3 * v);
+  figures.draw({"profile.gp",
+                fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
+                            "set terminal pngcairo size 1000,700\nset output outfile\n"
+                            "set datafile separator ','\nset xlabel 'site n'\nset ylabel 'lattice variables: strains or displacements (model units)'\n"
+                            "set key outside\nset title '{} dark breather ({} centred), ω_{{b}} = {:.5f}: Z(0), Z(T_{{b}}), seed'\n{}\n",
+                            literal(c.model->name()), c.center, c.omega_b, plot),
+                "profile.png"});
+}
+
+// <stem>.csv (re, im, modulus) and <stem>.gp: the multipliers in the complex plane with the unit circle.
+void write_multipliers(const std::string& dir, const std::string& stem, const FloquetResult& f, double omega_b,
+                       sim::Figures& figures) {
+  std::ostringstream os;
+  os << "re,im,modulus\n";
+  for (auto l : f.multipliers) os << fmt::format("{:.17g},{:.17g},{:.17g}\n", l.real(), l.imag(), std::abs(l));
+  sim::write_file_atomic(dir, stem + ".csv", os.str());
+  // Equal scales on both axes (the unit circle drawn as a circle), a square frame around all multipliers.
+  double reach = 1.0;
+  for (auto l : f.multipliers) reach = std::max(reach, std::abs(l));
+  figures.draw({stem + ".gp",
+                fmt::format("if (!exists(\"outfile\")) outfile = '{0}.png'\n"
+                            "set terminal pngcairo size 700,700\nset output outfile\n"
+                            "set datafile separator ','\nset size ratio -1\nset key off\n"
+                            "set xrange [-{2:.6g}:{2:.6g}]\nset yrange [-{2:.6g}:{2:.6g}]\n"
+                            "set xlabel 'Re λ'\nset ylabel 'Im λ'\n"
+                            "set title 'Floquet multipliers λ, ω_{{b}} = {1:.5f} (grey: unit circle)'\n"
+                            "set parametric\nset trange [0:2*pi]\n"
+                            "plot cos(t),sin(t) lc 'gray', '{0}.csv' skip 1 using 1:2 with points pt 7 ps 0.8\n",
+                            stem, omega_b, 1.08 * reach),
+                stem + ".png"});
+}
+
+json write(const DarkResult& r, const std::filesystem::path& out) {
+  json j = to_json(r);
+  const DarkConfig& c = r.config;
+  if (!r.newton.converged || (c.step == DarkStep::evolve && r.evolution.periods.empty())) return j;
+  const std::string dir = out.string();
+  const sim::OutputLock lock(dir);
+  const sim::OutputListing earlier = sim::list_output_files(dir);  // before this run writes
+  sim::Figures figures(dir);
+  if (c.step == DarkStep::branch) {
+    write_branch(r, dir, figures);
+    if (c.format == "hdf5")
+      write_dark_branch_hdf5(out / "result.h5", dark_branch_record(c.params, r.branch, c.sites, c.branch_floquet));
+    figures.finish(j);
+  } else if (c.step == DarkStep::evolve) {
+    write_evolution(r, dir, figures, j);
+  } else {
+    write_profile(r, dir, figures);
+    if (r.floquet) write_multipliers(dir, "multipliers", *r.floquet, c.omega_b, figures);
+    if (c.format == "hdf5")
+      write_dark_solution_hdf5(out / "result.h5",
+                               dark_solution_record(c.params, c.omega_b, r.edge.omega, r.z0, r.seed, r.newton,
+                                                    r.measures, r.floquet ? &*r.floquet : nullptr));
+    figures.finish(j);
+  }
+  sim::record_stale_files(out, earlier, j);
+  return j;
+}
+
+}  // namespace lrchain::jobs::dark

@@ -1,0 +1,95 @@
+// The branch's files (`lrchain dark continue --out`): branch.csv (one row per point: measures,
+// stability, Floquet moduli), floquet_moduli.csv (every multiplier off the unit circle) and figures.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "dark_steps.hpp"
+#include "lrchain/sim/gnuplot_text.hpp"
+
+namespace lrchain::jobs::dark {
+
+using namespace lrchain::sim::dark;
+
+void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& figures) {
+  const DarkConfig& c = r.config;
+  const bool model_points = r.model_file();  // also the contact changes per period
+  std::ostringstream csv;
+  csv << "omega_b,norm_squared,K_x,K_y,C_x,C_y,E_b,stability,max_modulus,max_real,max_period_doubling,"
+         "max_oscillatory,iterations" << (model_points ? ",contact_changes_per_period" : "") << "\n";
+  std::ostringstream mult;  // omega_b, |lambda|, type (0 complex, 1 real>0, 2 real<0)
+  mult << "omega_b,modulus,type,branch_part\n";
+  int part = 0;
+  bool unstable_in[2] = {false, false};  // a modulus > 1 before / after the first turning point
+  double last_tangent = -1;
+  for (const BranchPoint& b : r.branch.points) {
+    if ((b.tangent_omega > 0) != (last_tangent > 0)) ++part;
+    last_tangent = b.tangent_omega;
+    csv << fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.6g},{:.6g},{:.3g},{},{:.12g},{:.12g},{:.12g},{:.12g},{}",
+                       b.omega_b, b.measures.norm_squared, b.measures.K_x, b.measures.K_y, b.measures.C_x,
+                       b.measures.C_y, b.measures.E_b, b.floquet.kind(), b.floquet.max_modulus,
+                       b.floquet.max_real, b.floquet.max_period_doubling, b.floquet.max_oscillatory,
+                       b.iterations);
+    if (model_points)  // empty for a smooth model
+      csv << "," << (b.contact_changes_per_period ? std::to_string(*b.contact_changes_per_period) : std::string());
+    csv << "\n";
+    for (auto l : b.floquet.multipliers) {
+      if (std::abs(l) < 1.0 + 1e-6) continue;
+      const bool real = std::abs(l.imag()) <= 1e-7 * std::abs(l);
+      mult << fmt::format("{:.12g},{:.12g},{},{}\n", b.omega_b, std::abs(l), real ? (l.real() > 0 ? 1 : 2) : 0, part);
+      unstable_in[part >= 1] = true;
+    }
+  }
+  sim::write_file_atomic(dir, "branch.csv", csv.str());
+  sim::write_file_atomic(dir, "floquet_moduli.csv", mult.str());
+  // The figures' titles name the branch as the command was given it (optical unless --branch).
+  const std::string branch = c.branch.empty() ? "optical" : c.branch;
+  const std::string label = sim::gnuplot_text(lattice_label(r), sim::GnuplotTextMode::enhanced);
+  // The x range reaches the band edge, so that its line (omega_opt or omega_acs) is inside the frame.
+  const double omega_edge = r.edge.omega;
+  double lowest = omega_edge;
+  for (const auto& b : r.branch.points) lowest = std::min(lowest, b.omega_b);
+  const double margin = 0.03 * std::max(omega_edge - lowest, 1e-3);
+  figures.draw({"branch.gp",
+                fmt::format("if (!exists(\"outfile\")) outfile = 'branch.png'\n"
+                            "set terminal pngcairo size 900,650\nset output outfile\n"
+                            "set datafile separator ','\nset xlabel 'breather frequency ω_{{b}}'\n"
+                            "set ylabel 'renormalised ℓ^{{2}} norm squared, eq. (51)'\n"
+                            "set xrange [{4:.8g}:{5:.8g}]\nset key top left\n"
+                            "set arrow from {0},graph 0 to {0},graph 1 nohead lc 'black'\n"
+                            "set label 'band edge {0:.4f}' at {0},graph 0.96 right offset -0.5,0\n"
+                            "set title '{1} {2}-centred dark breathers, {3} (red: real instability)'\n"
+                            "plot 'branch.csv' skip 1 u 1:2 w l lc 'blue' t 'branch', "
+                            "'' skip 1 u 1:(strstrt(strcol(8),'real') > 0 ? $2 : 1/0) w p pt 7 lc 'red' t 'real instability'\n",
+                            omega_edge, branch, c.center, label, lowest - margin, omega_edge + margin),
+                "branch.png"});
+  // One panel per part of the branch that was computed (before / after the first turning point);
+  // a part without multipliers off the unit circle says so instead of showing an empty frame.
+  const bool turned = part >= 1;
+  std::string moduli = fmt::format(
+      "if (!exists(\"outfile\")) outfile = 'floquet_moduli.png'\n"
+      "set terminal pngcairo size 1000,{3}\nset output outfile\n"
+      "set datafile separator ','\nset xlabel 'breather frequency ω_{{b}}'\nset ylabel 'Floquet modulus |λ|'\n"
+      "set offsets 0, 0, graph 0.1, 0\nset key off\n"
+      "set multiplot layout {4},1 title '{0} {1}-centred, {2}: Floquet moduli |λ| > 1 (blue: complex, red: real > 0, green: real < 0)'\n",
+      branch, c.center, label, turned ? 700 : 400, turned ? 2 : 1);
+  for (int p = 0; p < (turned ? 2 : 1); ++p) {
+    const std::string select = p == 0 ? "$4==0" : "$4>=1";
+    moduli += fmt::format("set title '{}'\n", p == 0 ? "weakly nonlinear (before the turning point)"
+                                                     : "strongly nonlinear (after the turning point)");
+    if (!unstable_in[p]) {
+      moduli += "set yrange [0.9:1.1]\nset label 1 'all multipliers on the unit circle: linearly stable' at graph 0.5, graph 0.7 center\n"
+                "plot 'branch.csv' skip 1 u 1:(1) w l lc 'grey' dt 2\nunset label 1\nset autoscale y\n";
+      continue;
+    }
+    moduli += fmt::format("plot 'floquet_moduli.csv' skip 1 u 1:({0} && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue', "
+                          "'' skip 1 u 1:({0} && $3==1 ? $2 : 1/0) w p pt 13 lc 'red', "
+                          "'' skip 1 u 1:({0} && $3==2 ? $2 : 1/0) w p pt 5 lc 'dark-green'\n", select);
+  }
+  moduli += "unset multiplot\n";
+  figures.draw({"floquet_moduli.gp", moduli, "floquet_moduli.png"});
+}
+
+}  // namespace lrchain::jobs::dark

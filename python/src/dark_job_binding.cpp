@@ -1,0 +1,61 @@
+// lrchain.dark keywords -> DarkConfig, and the dark job run without the GIL (dark_job_binding.hpp).
+#include "dark_job_binding.hpp"
+
+#include <csignal>
+
+#include "interrupt_guard.hpp"
+#include "lrchain/checked_number.hpp"
+#include "lrchain/config/option_caps.hpp"
+#include "lrchain/errors.hpp"
+
+namespace lrchain::python {
+
+using namespace lrchain::jobs::dark;
+
+Index integer_keyword(double value, const std::string& keyword, std::int64_t least, std::int64_t most) {
+  return Index(checked_integer(value, keyword, least, most));
+}
+
+DarkConfig dark_config(DarkStep step, double omega_b, const std::optional<std::string>& branch, const std::string& center,
+                       double sites, const std::string& mode, double tolerance, double max_iterations) {
+  DarkConfig c;
+  c.step = step;
+  c.omega_b = omega_b;
+  c.branch = branch.value_or("");
+  c.center = center;
+  c.sites = integer_keyword(sites, "sites", config::dark_sites.least, config::dark_sites.most);
+  c.mode = mode;
+  c.tolerance = tolerance;
+  c.max_iterations = integer_keyword(max_iterations, "max_iterations", 1, config::int32_most);
+  return c;
+}
+
+void set_branch_keywords(DarkConfig& c, double points, double ds, double omega_min, std::optional<double> omega_max,
+                         bool floquet) {
+  c.points = integer_keyword(points, "points", config::dark_points.least, config::dark_points.most);
+  c.ds = ds;
+  c.omega_min = omega_min;
+  c.omega_max = omega_max.value_or(0.0);
+  c.branch_floquet = floquet;
+}
+
+void set_evolve_keywords(DarkConfig& c, double t_end, double samples) {
+  c.t_end = t_end;
+  c.samples = integer_keyword(samples, "samples", config::dark_samples.least, config::dark_samples.most);
+}
+
+DarkResult run_dark_job(const DarkConfig& c) {
+  validate(c);
+  InterruptGuard guard;
+  DarkRunHooks hooks;
+  hooks.stop = guard.flag();
+  hooks.stop_integrations = true;
+  hooks.newton_progress = [stop = guard.flag()](const sim::dark::NewtonRecord&) {
+    if (stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
+  };
+  DarkResult r = guard.run([&] { return run(c, hooks); });
+  if (!r.newton.converged) throw NumericalFailure(*failure(r));
+  return r;
+}
+
+}  // namespace lrchain::python
