@@ -1,5 +1,5 @@
 // Output files and gnuplot figures of a bright-breather run (Figs. 6-13 style).
-#include "lrchain/sim/bright_outputs.hpp"
+#include "lrchain/jobs/simulate/bright_outputs.hpp"
 #include "lrchain/provenance_json.hpp"
 
 #include <algorithm>
@@ -11,7 +11,9 @@
 #include "lrchain/sim/strain_sites.hpp"
 #include "run_json.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
+
+using namespace lrchain::sim;
 
 nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
   nlohmann::json j;
@@ -183,4 +185,4 @@ std::vector<std::string> write_bright_outputs(const std::filesystem::path& dir,
                            draw_figures);
 }
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs
