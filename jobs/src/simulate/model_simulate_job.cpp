@@ -7,7 +7,7 @@
 #include "lrchain/jobs/simulate/model_bright_outputs.hpp"
 #include "lrchain/jobs/simulate/ring_outputs.hpp"
 #include "lrchain/sim/output_files.hpp"
-#include "lrchain/sim/output_lock.hpp"
+#include "lrchain/jobs/output_lock.hpp"
 
 namespace lrchain::jobs {
 
@@ -18,7 +18,7 @@ namespace {
 template <class Config, class Run, class Write>
 auto simulate_model_job(const Model& model, const Config& c, const ModelRunLabel& label, const RunOutput& output,
                         Run run, Write write) {
-  std::optional<sim::OutputLock> lock;  // (refuses an output directory that is not a directory)
+  std::optional<OutputLock> lock;  // (refuses an output directory that is not a directory)
   if (!output.dir.empty()) lock.emplace(output.dir);
   const sim::OutputListing earlier = output.dir.empty() ? sim::OutputListing{} : sim::list_output_files(output.dir);
   auto result = run();

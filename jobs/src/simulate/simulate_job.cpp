@@ -12,7 +12,7 @@
 #include "lrchain/jobs/simulate/modulated_outputs.hpp"
 #include "lrchain/output_target.hpp"
 #include "lrchain/sim/output_files.hpp"
-#include "lrchain/sim/output_lock.hpp"
+#include "lrchain/jobs/output_lock.hpp"
 #include "lrchain/sim/result_hdf5.hpp"
 
 namespace lrchain::jobs {
@@ -89,7 +89,7 @@ auto simulate_job(const Config& given, const RunOutput& output, const sim::RunCo
                   Write write) {
   const Config c = with_checkpoints(given, output.dir);
   validate(c, output.dir);  // every option, counts and memory: before anything is created
-  std::optional<sim::OutputLock> lock;  // one run per output directory, taken after validation
+  std::optional<OutputLock> lock;  // one run per output directory, taken after validation
   if (!output.dir.empty()) lock.emplace(output.dir);
   refuse_earlier_checkpoint(c);  // (after the lock: a run still writing it is named by the lock)
   const sim::OutputListing earlier = output.dir.empty() ? sim::OutputListing{} : sim::list_output_files(output.dir);
