@@ -9,6 +9,7 @@
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "run_figures.hpp"
 #include "run_json.hpp"
 
 namespace lrchain::jobs {
@@ -40,25 +41,10 @@ nlohmann::json to_json(const DriveRunConfig& c, const DriveRunSummary& s) {
 namespace {
 
 std::string drive_energy_script(const DriveRunResult& r) {
-  float emax = 0;
-  for (const auto& f : r.record.fields)
-    for (float v : f.values) emax = std::max(emax, v);
-  if (!(emax > 0)) emax = 1;
+  const float emax = largest_energy_density(r.record);
   return fmt::format(R"GP(# Energy density e_n(t) (eq. (40)) of the driven chain (Fig. 14 left), with n = c_+ t
 # (dashed), and the front of the wave pattern (right).
-if (!exists("outfile")) outfile = 'energy.png'
-set terminal pngcairo size 1400,650 font ",11"
-set output outfile
-set multiplot layout 1,2
-set xlabel "site n"
-set ylabel "t (dimensionless)"
-set logscale cb
-set cbrange [{:.3e}:{:.3e}]
-{}
-set cblabel "energy density e_{{n}}, eq. (40)"
-set rmargin at screen 0.40
-set format cb "%.0e"
-set xrange [1:{:.1f}]
+{}set xrange [1:{:.1f}]
 set yrange [0:{:.1f}]
 plot 'energy_density_spacetime.bin' binary matrix {}using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle, \
      (x/{:.6f}) with lines dt 2 lw 2 lc rgb "white" title "n = c_+ t"
@@ -75,7 +61,7 @@ plot 'series.csv' using 1:3 skip 1 with lines lw 1.5 title "front", \
      {:.6f}*x with lines dt 2 lc rgb "black" title "c_+ t"
 unset multiplot
 )GP",
-                     emax * 1e-5, emax, viridis_palette,
+                     log_energy_panel_head(650, emax * 1e-5, emax),
                      double(r.record.fields.empty() ? 1 : r.record.fields[0].sites), r.summary.t_end,
                      r.record.fields.empty() ? "" : image_every(r.record.fields.front()), emax * 1e-5, emax * 1e-5, r.summary.group_velocity, r.summary.group_velocity);
 }
@@ -85,18 +71,7 @@ std::string drive_snapshots_script(const DriveRunResult& r) {
   for (const auto& s : r.record.snapshots)
     body += fmt::format("set title \"t = {:.1f}\"\nplot 'snapshot_{}.csv' using 1:4 skip 1 with lines lw 1 notitle\n",
                         s.t, s.tag);
-  return fmt::format(R"GP(# Bead velocities du_n/dt at the snapshot times (Fig. 15).
-if (!exists("outfile")) outfile = 'snapshots.png'
-set terminal pngcairo size 1400,{} font ",11"
-set output outfile
-set datafile separator ","
-set multiplot layout {},1
-set xlabel "site n"
-set ylabel "bead velocity du_n/dt"
-{}unset multiplot
-)GP",
-                     350 * std::max<std::size_t>(1, r.record.snapshots.size()),
-                     std::max<std::size_t>(1, r.record.snapshots.size()), body);
+  return velocity_snapshots_script("Fig. 15", 350, r.record.snapshots.size(), body);
 }
 
 }  // namespace

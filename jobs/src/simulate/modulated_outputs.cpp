@@ -10,6 +10,7 @@
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/output_files.hpp"
+#include "run_figures.hpp"
 #include "run_json.hpp"
 
 namespace lrchain::jobs {
@@ -97,18 +98,7 @@ std::string modulated_snapshots_script(const ModulatedRunResult& r) {
   for (const auto& s : r.record.snapshots)
     body += fmt::format("set title \"t = {:.0f}\"\nplot 'snapshot_{}.csv' using 1:4 skip 1 with linespoints pt 7 ps 0.3 lw 0.8 notitle\n",
                         s.t, s.tag);
-  const std::size_t k = std::max<std::size_t>(1, r.record.snapshots.size());
-  return fmt::format(R"GP(# Bead velocities du_n/dt at the snapshot times (Fig. 16).
-if (!exists("outfile")) outfile = 'snapshots.png'
-set terminal pngcairo size 1400,{} font ",11"
-set output outfile
-set datafile separator ","
-set multiplot layout {},1
-set xlabel "site n"
-set ylabel "bead velocity du_n/dt"
-{}unset multiplot
-)GP",
-                     330 * k, k, body);
+  return velocity_snapshots_script("Fig. 16", 330, r.record.snapshots.size(), body);
 }
 
 }  // namespace
