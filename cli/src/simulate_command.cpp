@@ -3,16 +3,12 @@
 #include <signal.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <chrono>
-#include <optional>
-#include <cstdio>
-#include <cstdlib>
-#include <iostream>
-#include <filesystem>
-#include <fstream>
-#include <limits>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,10 +20,9 @@
 #include "commands.hpp"
 #include "figure_format_option.hpp"
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/bright_run.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
-#include "lrchain/jobs/simulate/simulate_job.hpp"
 #include "lrchain/jobs/more_experiment_config.hpp"
+#include "lrchain/jobs/simulate/simulate_job.hpp"
 #include "lrchain/sim/strain_sites.hpp"
 #include "help_text.hpp"
 #include "options.hpp"
