@@ -3,16 +3,12 @@
 #include <signal.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <chrono>
-#include <optional>
-#include <cstdio>
-#include <cstdlib>
-#include <iostream>
-#include <filesystem>
-#include <fstream>
-#include <limits>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,15 +19,10 @@
 
 #include "commands.hpp"
 #include "figure_format_option.hpp"
-#include "lrchain/sim/result_hdf5.hpp"
 #include "lrchain/errors.hpp"
-#include "lrchain/output_target.hpp"
-#include "lrchain/sim/bright_outputs.hpp"
-#include "lrchain/sim/bright_run.hpp"
-#include "lrchain/sim/output_files.hpp"
-#include "lrchain/sim/output_lock.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
 #include "lrchain/jobs/more_experiment_config.hpp"
+#include "lrchain/jobs/simulate/simulate_job.hpp"
 #include "lrchain/sim/strain_sites.hpp"
 #include "help_text.hpp"
 #include "options.hpp"
@@ -95,56 +86,6 @@ void throw_if_blew_up(const std::optional<sim::BlowUp>& blow_up, const std::stri
                            (out.empty() ? std::string() : "; the outputs up to then are in " + out));
 }
 
-// Refuses (exit 2) to start a new run (no --restart) whose checkpoint file already exists: it holds
-// an earlier run's state, which would be overwritten, or left beside the new outputs as if it
-// belonged to them.
-template <class Config>
-void refuse_earlier_checkpoint(const Config& cfg) {
-  std::error_code ec;
-  if (cfg.restart_file.empty() && !cfg.checkpoint_file.empty() && std::filesystem::exists(cfg.checkpoint_file, ec))
-    throw InvalidParameter("checkpoint", "'" + cfg.checkpoint_file +
-                                             "' holds the checkpoint of an earlier run: continue it with --restart " +
-                                             cfg.checkpoint_file + ", or move it away, or choose another --out");
-}
-
-// Refuses (exit 2) a checkpoint path that is a directory, a device, FIFO or socket, or in a
-// directory that does not exist (other than --out), an --out that is not a directory or
-// where the run's output would not fit, before anything is written.
-template <class Config>
-void check_output(const Config& cfg, const std::string& out) {
-  std::error_code ec;
-  if (!cfg.checkpoint_file.empty()) {
-    namespace fs = std::filesystem;
-    if (fs::is_directory(cfg.checkpoint_file, ec))
-      throw InvalidParameter("checkpoint", "'" + cfg.checkpoint_file + "' is a directory; give a file name");
-    try {
-      check_output_target(cfg.checkpoint_file);
-    } catch (const InputError& e) {
-      throw InvalidParameter("checkpoint", e.what());
-    }
-    // Its directory must exist (nothing is created for it), unless it is --out, which the run makes.
-    const fs::path file(cfg.checkpoint_file);
-    const fs::path directory = file.has_parent_path() ? file.parent_path() : fs::path(".");
-    const bool is_out = !out.empty() && (directory == fs::path(out) || fs::weakly_canonical(directory, ec) ==
-                                                                           fs::weakly_canonical(fs::path(out), ec));
-    if (!is_out && !fs::is_directory(directory, ec))
-      throw InvalidParameter("checkpoint", "the directory '" + directory.string() + "' of '" + cfg.checkpoint_file +
-                                               "' does not exist; create it first (lrchain creates only --out)");
-  }
-  if (out.empty()) return;
-  if (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
-    throw InputError("--out '" + out + "' exists and is not a directory");
-  sim::check_output_space(sim::estimate_resources(cfg), out, "out",
-                          "choose another --out, or shorten or thin out the run");
-}
-
-// Where checkpoints go: --checkpoint, else OUT/checkpoint.bin when --out is given (else none).
-std::string checkpoint_path(const std::string& checkpoint, const std::string& out) {
-  if (!checkpoint.empty()) return checkpoint;
-  if (!out.empty()) return (std::filesystem::path(out) / "checkpoint.bin").string();
-  return {};
-}
-
 // Progress bar on stderr, only when stderr is a terminal and the run lasts more than ~2 s.
 struct ProgressBar {
   bool enabled = ::isatty(STDERR_FILENO) != 0;
@@ -173,84 +114,36 @@ sim::RunControl make_control(ProgressBar& bar) {
   return c;
 }
 
-// How a run reports: the JSON summary on one line (--json), figures drawn or not (--no-figures).
+// How a run reports: the JSON summary on one line (--json), and its files (--out, --no-figures, --format).
 struct ReportStyle {
   bool compact_json = false;
   bool figures = true;
   std::string format = "csv";  // --format: csv (data files and figures) or hdf5 (result.h5)
 };
 
-// Validates a run before anything is written: every option, counts, memory, the output directory.
-// A refusal names the option (or, for a --config run, the config key) by the run's name for it.
+// Runs one simulate job (jobs/simulate/simulate_job.hpp) with SIGINT/SIGTERM handling and a progress
+// bar, prints its JSON summary, then ends like an interrupted run (130/143) or a blown-up one (3)
+// where that applies.
 template <class Config>
-void validate_run(const Config& cfg, const std::string& out) {
-  sim::validate(cfg);
-  check_output(cfg, out);
-}
-
-// Runs one experiment with SIGINT/SIGTERM handling, writes its JSON summary and outputs (also when
-// interrupted: the outputs so far, consistent with the checkpoint), prints the summary, then ends
-// like an interrupted run (130/143) or a blown-up one (3) where that applies.
-template <class Config, class Run, class Write>
-void run_and_report(const Config& cfg, const std::string& out, const ReportStyle& style, Run run, Write write) {
+void run_and_report(const Config& cfg, const std::string& out, const ReportStyle& style) {
   const auto wall0 = std::chrono::steady_clock::now();
-  validate_run(cfg, out);  // every option, counts and memory: before anything is created
-  std::optional<sim::OutputLock> lock;  // one run per --out, taken after validation
-  if (!out.empty()) lock.emplace(out);
-  refuse_earlier_checkpoint(cfg);  // (after the lock: a run still writing it is named by the lock)
-  const sim::OutputListing earlier = out.empty() ? sim::OutputListing{} : sim::list_output_files(out);
   StopSignals signals;
   ProgressBar bar;
-  const sim::RunControl control = make_control(bar);
-  const auto r = run(cfg, control);
-  nlohmann::json j = sim::to_json(cfg, r.summary);
-  j["checkpoint_file"] = cfg.checkpoint_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(cfg.checkpoint_file);
-  j["checkpoints_written"] = r.summary.checkpoints_written;
-  j["t_start"] = r.summary.t_start;
-  if (!out.empty()) {
-    j["out"] = out;
-    j["figures"] = style.format == "hdf5" ? sim::write_hdf5_outputs(out, r, j) : write(out, r, j, style.figures);
-    // Files of an earlier run this one did not write (never its checkpoint or restart file).
-    std::vector<std::string> keep;
-    for (const std::string& f : {cfg.checkpoint_file, cfg.restart_file})
-      if (!f.empty() && std::filesystem::path(f).parent_path() == std::filesystem::path(out))
-        keep.push_back(std::filesystem::path(f).filename().string());
-    sim::record_stale_files(out, earlier, j, keep);
-  }
+  auto report = jobs::simulate(cfg, {out, style.figures, style.format}, make_control(bar));
+  nlohmann::json& j = report.summary;
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::cout << (style.compact_json ? j.dump() : j.dump(2)) << std::endl;
   std::fflush(stdout);
-  throw_if_interrupted(r.summary.interrupted, r.summary.t_end, r.summary.last_checkpoint_time,
-                       cfg.checkpoint_file);
-  throw_if_blew_up(r.summary.blow_up, out);
-}
-
-// Checkpoints go to --checkpoint, else to OUT/checkpoint.bin when --out is given; one is written
-// at the end too when checkpoints were asked for (--checkpoint or --checkpoint-every).
-void run_bright_and_report(sim::BrightRunConfig cfg, const std::string& out, const ReportStyle& style) {
-  cfg.checkpoint_at_end = !cfg.checkpoint_file.empty() || cfg.checkpoint_every > 0;
-  cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
-  run_and_report(cfg, out, style, [](const auto& c, const auto& k) { return sim::run_bright(c, k); },
-                 [](const std::string& d, const auto& r, const auto& j, bool f) { return sim::write_bright_outputs(d, r, j, f); });
-}
-
-void run_drive_and_report(sim::DriveRunConfig cfg, const std::string& out, const ReportStyle& style) {
-  cfg.checkpoint_at_end = !cfg.checkpoint_file.empty() || cfg.checkpoint_every > 0;
-  cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
-  run_and_report(cfg, out, style, [](const auto& c, const auto& k) { return sim::run_drive(c, k); },
-                 [](const std::string& d, const auto& r, const auto& j, bool f) { return sim::write_drive_outputs(d, r, j, f); });
-}
-
-void run_modulated_and_report(sim::ModulatedRunConfig cfg, const std::string& out, const ReportStyle& style) {
-  cfg.checkpoint_file = checkpoint_path(cfg.checkpoint_file, out);
-  run_and_report(cfg, out, style, [](const auto& c, const auto& k) { return sim::run_modulated(c, k); },
-                 [](const std::string& d, const auto& r, const auto& j, bool f) { return sim::write_modulated_outputs(d, r, j, f); });
+  const auto& s = report.result.summary;
+  throw_if_interrupted(s.interrupted, s.t_end, s.last_checkpoint_time, report.checkpoint_file);
+  throw_if_blew_up(s.blow_up, out);
 }
 
 // --sites of a bright run: the odd number 2N + 1 of strain sites n = -N..N, kept as given; the run
 // takes its half-width N with its own range (sim::bright_sites, or sim::model_bright_sites with
 // --model), so that an even or out-of-range count is refused (exit 2) with the range that applies.
 void add_strain_sites(CLI::App& app, std::int64_t& sites) {
+  const std::int64_t default_sites = sites;
   auto* opt = app.add_option_function<std::string>(
       "--sites",
       [&sites](const std::string& text) {
@@ -259,7 +152,8 @@ void add_strain_sites(CLI::App& app, std::int64_t& sites) {
           throw InvalidParameter("sites", "must be an odd integer: the strain sites are n = -N..N, 2N + 1 of them");
         sites = static_cast<std::int64_t>(v);
       },
-      "odd number of strain sites 2N + 1, n = -N..N (default 1001, N = 500; with --model 21 or more)");
+      fmt::format("odd number of strain sites 2N + 1, n = -N..N (default {}, N = {}; with --model {} or more)",
+                  default_sites, (default_sites - 1) / 2, sim::model_bright_sites.least));
   opt->type_name("INT");
 }
 
@@ -352,7 +246,7 @@ void register_simulate(CLI::App& app) {
 
   // simulate bright
   auto cfg = std::make_shared<sim::BrightRunConfig>();
-  auto stepper = std::make_shared<std::string>("srkn11b");
+  auto stepper = std::make_shared<std::string>(sim::to_string(cfg->integrator.stepper));
   auto* bright = sim_cmd->add_subcommand(
       "bright", "Lattice run from the NLS bright breather (eq:focus_app, eq:focus_ini), Sec. 4.2");
   auto bright_branch = std::make_shared<std::string>();
@@ -365,20 +259,20 @@ void register_simulate(CLI::App& app) {
   bright->add_option_function<std::string>("--detuning", [cfg](const std::string& s) {
     cfg->detuning = parse_number(s, "detuning");
   }, "omega_b - omega (default sign(h_tilde)*1e-4)")->type_name("NUM");
-  add_number(*bright, "--n0", cfg->n0, "initial breather centre n0, |n0| <= N = (sites - 1)/2 (default 0)");
+  add_number(*bright, "--n0", cfg->n0, fmt::format("initial breather centre n0, |n0| <= N = (sites - 1)/2 (default {:g})", cfg->n0));
   auto bright_sites = std::make_shared<std::int64_t>(sim::strain_site_count(cfg->N));
   add_strain_sites(*bright, *bright_sites);
-  add_number(*bright, "--periods", cfg->periods, "run length in breather periods T_b (default 200)");
-  add_number(*bright, "--sample-every", cfg->sample_every, "sampling interval in T_b (default 0.25)");
+  add_number(*bright, "--periods", cfg->periods, fmt::format("run length in breather periods T_b (default {:g})", cfg->periods));
+  add_number(*bright, "--sample-every", cfg->sample_every, fmt::format("sampling interval in T_b (default {:g})", cfg->sample_every));
   add_number(*bright, "--spacetime-every", cfg->spacetime_every,
-             "energy-density row interval in T_b (default 1)");
+             fmt::format("energy-density row interval in T_b (default {:g})", cfg->spacetime_every));
   add_number(*bright, "--error-window", cfg->error_window_end,
              "also report max E_x, E_y for t <= this time (default: none, the whole run only)");
-  add_number_list(*bright, "--snapshots", cfg->snapshot_periods, "snapshot times in T_b (default 0 50.125 200)");
+  add_number_list(*bright, "--snapshots", cfg->snapshot_periods, "snapshot times in T_b (default " + numbers_text(cfg->snapshot_periods) + ")");
   bright->add_flag("--ansatz-ends", cfg->ansatz_ends,
                    "end beads follow the ansatz (emitting boundary conditions, Sec. 4.2)");
   add_number(*bright, "--checkpoint-every", cfg->checkpoint_every,
-             "periods T_b between checkpoints (default 0: only on SIGINT/SIGTERM)");
+             fmt::format("periods T_b between checkpoints (default {:g}: only on SIGINT/SIGTERM)", cfg->checkpoint_every));
   add_integrator_options(*bright, cfg->integrator, *stepper);
   add_output_options(*bright, outputs, true, subcommand_out);
   add_examples(*bright, {"lrchain simulate bright --branch optical --theta pi/2 --rho 1/3 --sites 1001 --periods 200 --out out/exp1"});
@@ -399,34 +293,32 @@ void register_simulate(CLI::App& app) {
     cfg->restart_file = *restart;
     cfg->checkpoint_file = *checkpoint;
     cfg->max_memory = *max_memory;
-    run_bright_and_report(*cfg, *out, *style);
+    run_and_report(*cfg, *out, *style);
   });
 
   // simulate drive (experiment 6, Sec. 4.3)
   auto dcfg = std::make_shared<sim::DriveRunConfig>();
-  auto dstepper = std::make_shared<std::string>("rkf78");
+  auto dstepper = std::make_shared<std::string>(sim::to_string(dcfg->integrator.stepper));
   auto* drive = sim_cmd->add_subcommand(
       "drive", "Chain at rest driven at u_0(t) = A0 sin(omega0 t) chi(t), clamped far end (Sec. 4.3)");
-  dcfg->params.rho = 10;  // before add_model_options: its help shows the defaults
   add_model_options(*drive, dcfg->params, false);
   add_integer(*drive, "--sites", dcfg->beads, 10, std::numeric_limits<std::int64_t>::max(),
-              "lattice sites: beads n = 1..sites, each with its resonator, driven at n = 0, far end clamped "
-              "(default 2000)");
-  add_number(*drive, "--amplitude", dcfg->amplitude, "A0, in (0, delta0] (default 0.06)");
-  add_number(*drive, "--omega0", dcfg->omega0, "driving frequency, in the optical band (default 2.1)");
-  add_number(*drive, "--ramp-rate", dcfg->ramp_rate, "r of chi(t) (default 0.046)");
-  add_number(*drive, "--switch-off-time", dcfg->t_m, "switch-off time t_m of chi(t) (default 700)");
-  add_number(*drive, "--t-end", dcfg->t_end, "final time (default 2400)");
-  add_number(*drive, "--sample-every", dcfg->sample_every, "series interval (default 1)");
-  add_number(*drive, "--spacetime-every", dcfg->spacetime_every, "e_n row interval (default 2)");
-  add_number_list(*drive, "--snapshots", dcfg->snapshot_times, "snapshot times (default 779.9 2400)");
+              fmt::format("lattice sites: beads n = 1..sites, each with its resonator, driven at n = 0, far end clamped "
+                          "(default {})", dcfg->beads));
+  add_number(*drive, "--amplitude", dcfg->amplitude, fmt::format("A0, in (0, delta0] (default {:g})", dcfg->amplitude));
+  add_number(*drive, "--omega0", dcfg->omega0, fmt::format("driving frequency, in the optical band (default {:g})", dcfg->omega0));
+  add_number(*drive, "--ramp-rate", dcfg->ramp_rate, fmt::format("r of chi(t) (default {:g})", dcfg->ramp_rate));
+  add_number(*drive, "--switch-off-time", dcfg->t_m, fmt::format("switch-off time t_m of chi(t) (default {:g})", dcfg->t_m));
+  add_number(*drive, "--t-end", dcfg->t_end, fmt::format("final time (default {:g})", dcfg->t_end));
+  add_number(*drive, "--sample-every", dcfg->sample_every, fmt::format("series interval (default {:g})", dcfg->sample_every));
+  add_number(*drive, "--spacetime-every", dcfg->spacetime_every, fmt::format("e_n row interval (default {:g})", dcfg->spacetime_every));
+  add_number_list(*drive, "--snapshots", dcfg->snapshot_times, "snapshot times (default " + numbers_text(dcfg->snapshot_times) + ")");
   add_number(*drive, "--front-fraction", dcfg->front_fraction,
-             "front = last n with e_n > this * max e_n (default 0.1)");
-  add_number(*drive, "--front-fit-start", dcfg->front_fit_start, "front-speed fit from (default 100)");
-  add_number(*drive, "--front-fit-end", dcfg->front_fit_end, "front-speed fit to (default 700)");
+             fmt::format("front = last n with e_n > this * max e_n (default {:g})", dcfg->front_fraction));
+  add_number(*drive, "--front-fit-start", dcfg->front_fit_start, fmt::format("front-speed fit from (default {:g})", dcfg->front_fit_start));
+  add_number(*drive, "--front-fit-end", dcfg->front_fit_end, fmt::format("front-speed fit to (default {:g})", dcfg->front_fit_end));
   add_number(*drive, "--checkpoint-every", dcfg->checkpoint_every,
-             "time between checkpoints (default 0: only on SIGINT/SIGTERM)");
-  dcfg->integrator = sim::DriveRunConfig{}.integrator;
+             fmt::format("time between checkpoints (default {:g}: only on SIGINT/SIGTERM)", dcfg->checkpoint_every));
   add_integrator_options(*drive, dcfg->integrator, *dstepper);
   add_output_options(*drive, outputs, true, subcommand_out);
   add_examples(*drive, {"lrchain simulate drive --rho 10 --sites 2000 --omega0 2.1 --t-end 2400 --out out/exp6"});
@@ -436,31 +328,29 @@ void register_simulate(CLI::App& app) {
     dcfg->restart_file = *restart;
     dcfg->checkpoint_file = *checkpoint;
     dcfg->max_memory = *max_memory;
-    run_drive_and_report(*dcfg, *out, *style);
+    run_and_report(*dcfg, *out, *style);
   });
 
   // simulate modulated (experiment 7, Sec. 5.1)
   auto mcfg = std::make_shared<sim::ModulatedRunConfig>();
-  auto mstepper = std::make_shared<std::string>("symplectic");
+  auto mstepper = std::make_shared<std::string>(sim::to_string(mcfg->integrator.stepper));
   auto* mod = sim_cmd->add_subcommand(
       "modulated", "Periodic chain from the modulated acoustic wave eq:cimi, checkpoint/restart (Sec. 5.1)");
-  mcfg->params.rho = 0.32;  // before add_model_options: its help shows the defaults
-  mcfg->params.delta0 = 0.27;
   add_model_options(*mod, mcfg->params, false);
   add_integer(*mod, "--sites", mcfg->N, 8, std::numeric_limits<std::int64_t>::max(),
-              "lattice sites N of the periodic chain, n = 0..N-1 (default 401)");
-  add_parameter(*mod, "--epsilon", mcfg->epsilon, modulation_amplitude_range, "default 0.03");
-  add_number(*mod, "--theta-waves", mcfg->theta_waves, "carrier theta0 = this * pi / N, N = --sites (default 252)");
-  add_number(*mod, "--modulation-depth", mcfg->b, "modulation depth b of eq:cimi (default 0.01)");
-  add_number(*mod, "--t-end", mcfg->t_end, "final time (default 45000)");
-  add_number(*mod, "--sample-every", mcfg->sample_every, "series and e_n row interval (default 10)");
-  add_number_list(*mod, "--snapshots", mcfg->snapshot_times, "snapshot times (default 0 17100 32400)");
+              fmt::format("lattice sites N of the periodic chain, n = 0..N-1 (default {})", mcfg->N));
+  add_parameter(*mod, "--epsilon", mcfg->epsilon, modulation_amplitude_range, fmt::format("default {:g}", mcfg->epsilon));
+  add_number(*mod, "--theta-waves", mcfg->theta_waves, fmt::format("carrier theta0 = this * pi / N, N = --sites (default {:g})", mcfg->theta_waves));
+  add_number(*mod, "--modulation-depth", mcfg->b, fmt::format("modulation depth b of eq:cimi (default {:g})", mcfg->b));
+  add_number(*mod, "--t-end", mcfg->t_end, fmt::format("final time (default {:g})", mcfg->t_end));
+  add_number(*mod, "--sample-every", mcfg->sample_every, fmt::format("series and e_n row interval (default {:g})", mcfg->sample_every));
+  add_number_list(*mod, "--snapshots", mcfg->snapshot_times, "snapshot times (default " + numbers_text(mcfg->snapshot_times) + ")");
   add_number(*mod, "--contrast-threshold", mcfg->contrast_threshold,
-             "instability when (max-min)/mean of smoothed e_n exceeds this (default 0.2)");
-  add_number(*mod, "--speed-fit-start", mcfg->speed_fit_start, "dark-speed fit from (default 30000)");
-  add_number(*mod, "--speed-fit-end", mcfg->speed_fit_end, "dark-speed fit to (default 33000)");
+             fmt::format("instability when (max-min)/mean of smoothed e_n exceeds this (default {:g})", mcfg->contrast_threshold));
+  add_number(*mod, "--speed-fit-start", mcfg->speed_fit_start, fmt::format("dark-speed fit from (default {:g})", mcfg->speed_fit_start));
+  add_number(*mod, "--speed-fit-end", mcfg->speed_fit_end, fmt::format("dark-speed fit to (default {:g})", mcfg->speed_fit_end));
   add_number(*mod, "--checkpoint-every", mcfg->checkpoint_every,
-             "time between checkpoints (default 1000, 0: none)");
+             fmt::format("time between checkpoints (default {:g}, 0: none)", mcfg->checkpoint_every));
   add_integrator_options(*mod, mcfg->integrator, *mstepper);
   add_output_options(*mod, outputs, true, subcommand_out);
   add_examples(*mod, {"lrchain simulate modulated --sites 401 --theta-waves 252 --t-end 45000 --out out/exp7"});
@@ -470,7 +360,7 @@ void register_simulate(CLI::App& app) {
     mcfg->restart_file = *restart;
     mcfg->checkpoint_file = *checkpoint;
     mcfg->max_memory = *max_memory;
-    run_modulated_and_report(*mcfg, *out, *style);
+    run_and_report(*mcfg, *out, *style);
   });
 
   sim_cmd->callback([=] {
@@ -487,7 +377,7 @@ void register_simulate(CLI::App& app) {
       dc.run.checkpoint_file = *checkpoint;
       dc.run.max_memory = *max_memory;
       refuse_without_out(*sim_cmd, !out->empty() ? *out : dc.out_dir, output_file_options);
-      run_drive_and_report(dc.run, !out->empty() ? *out : dc.out_dir, *style);
+      run_and_report(dc.run, !out->empty() ? *out : dc.out_dir, *style);
       return;
     }
     if (kind == "modulated") {
@@ -496,7 +386,7 @@ void register_simulate(CLI::App& app) {
       mc.run.checkpoint_file = *checkpoint;
       mc.run.max_memory = *max_memory;
       refuse_without_out(*sim_cmd, !out->empty() ? *out : mc.out_dir, output_file_options);
-      run_modulated_and_report(mc.run, !out->empty() ? *out : mc.out_dir, *style);
+      run_and_report(mc.run, !out->empty() ? *out : mc.out_dir, *style);
       return;
     }
     jobs::ExperimentConfig ec = jobs::load_experiment_config(*config);
@@ -505,7 +395,7 @@ void register_simulate(CLI::App& app) {
     ec.bright.checkpoint_file = *checkpoint;
     ec.bright.max_memory = *max_memory;
     refuse_without_out(*sim_cmd, dir, output_file_options);
-    if (ec.experiment == "bright") run_bright_and_report(ec.bright, dir, *style);
+    if (ec.experiment == "bright") run_and_report(ec.bright, dir, *style);
   });
 }
 

@@ -9,9 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/jobs/simulate/model_simulate_job.hpp"
 #include "lrchain/jobs/model_experiment_config.hpp"
-#include "lrchain/sim/output_lock.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
 #include "simulate_model_commands.hpp"
@@ -20,28 +19,19 @@ namespace lrchain::cli {
 
 namespace {
 
-// Checks the run (branch, options, focusing, detuning, --out) before anything is written, then
-// runs it, writes --out and prints the JSON summary.
+// The model bright job (jobs/simulate/model_simulate_job.hpp): checked before the lattice code is
+// loaded, run with SIGINT/SIGTERM handled, its JSON summary printed.
 void run_and_report_model_bright(const ModelSelection& selection, const Model& model, sim::ModelBrightConfig c,
                                  const std::string& branch, const std::string& out, const ModelRunOutput& output,
                                  const std::string& name) {
   const auto wall0 = std::chrono::steady_clock::now();
-  c.branch = model.branch(branch);
-  sim::validate(c);
-  coefficients(model, c.branch, c.theta);  // theta on the branch (InvalidParameter otherwise)
+  jobs::prepare(model, c, branch);
   const LatticeCode code = lattice_kernels_for(selection, model);
-  const lrchain_lattice_kernels& kernels = *code.kernels;
-  const sim::ModelBrightAnsatz check(model, kernels, c.branch, c.theta, c.detuning, c.n0);  // focusing, detuning
-  std::optional<sim::OutputLock> lock;  // (refuses an --out that is not a directory)
-  if (!out.empty()) lock.emplace(out);
-  const sim::OutputListing earlier = out.empty() ? sim::OutputListing{} : sim::list_output_files(out);
-  const sim::ModelBrightResult r = run_until_signal([&](const std::atomic<bool>* stop) {
-    c.stop = stop;
-    return sim::run_model_bright(model, kernels, c);
+  const auto report = run_until_signal([&](const std::atomic<bool>* stop) {
+    return jobs::simulate_model_bright(model, *code.kernels, c, {model_run_json(model, code), name},
+                                       {out, *output.figures}, stop);
   });
-  print_model_run(sim::to_json(model, c, r), model, code, name, out, output, wall0, earlier, [&](const nlohmann::json& summary) {
-    return sim::write_model_bright_outputs(out, r, summary, *output.figures);
-  });
+  print_model_run(report.summary, output, wall0);
 }
 
 }  // namespace

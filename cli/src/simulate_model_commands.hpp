@@ -7,10 +7,12 @@
 #include <nlohmann/json.hpp>
 #include <memory>
 #include <string>
+#include <vector>
+
+#include <fmt/format.h>
 
 #include "lrchain/model.hpp"
 #include "lrchain/sim/bright_run.hpp"
-#include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/ring_run.hpp"
 #include "lrchain/errors.hpp"
 #include "model_option.hpp"
@@ -50,25 +52,24 @@ auto run_until_signal(Run&& run) {
   }
 }
 
-// The JSON summary of a finished model run: `name` (when not empty), the model and its lattice
-// code; with `out` set, writes the run's files there (`write(summary)` returns the figures drawn);
-// then the wall time since `wall0`, printed as --json asks.
-// `earlier`: the files in `out` before the run (sim::list_output_files), those it did not write are
-// listed as "stale_files".
-template <class Write>
-void print_model_run(nlohmann::json j, const Model& model, const LatticeCode& code, const std::string& name,
-                     const std::string& out, const ModelRunOutput& output,
-                     std::chrono::steady_clock::time_point wall0, const sim::OutputListing& earlier, Write&& write) {
-  if (!name.empty()) j["name"] = name;
-  j["model"] = model_json(model);
-  j["model"]["lattice_code"] = lattice_code_json(code);
-  if (!out.empty()) {
-    j["out"] = out;
-    j["figures"] = write(j);
-    sim::record_stale_files(out, earlier, j);
-  }
+// The model as the summary of a model run names it: model_json with its lattice code.
+inline nlohmann::json model_run_json(const Model& model, const LatticeCode& code) {
+  nlohmann::json j = model_json(model);
+  j["lattice_code"] = lattice_code_json(code);
+  return j;
+}
+
+// Prints the JSON summary of a finished model run with the wall time since `wall0`, as --json asks.
+inline void print_model_run(nlohmann::json j, const ModelRunOutput& output, std::chrono::steady_clock::time_point wall0) {
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::cout << (*output.compact_json ? j.dump() : j.dump(2)) << std::endl;
+}
+
+// Numbers as a help text shows a default list: "0 50.125 200".
+inline std::string numbers_text(const std::vector<double>& values) {
+  std::string s;
+  for (double v : values) s += (s.empty() ? "" : " ") + fmt::format("{:g}", v);
+  return s;
 }
 
 // Adds `ring` to `simulate`.

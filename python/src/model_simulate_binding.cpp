@@ -1,5 +1,5 @@
 // lrchain.simulate.bright(model=...) and lrchain.simulate.ring: lattice runs of any model file on its
-// generated lattice code (sim/model_bright_run.hpp, sim/ring_run.hpp), with the checks of
+// generated lattice code: the jobs of jobs/simulate/model_simulate_job.hpp, with the checks of
 // `lrchain simulate bright|ring --model FILE`, run without the GIL (Ctrl-C raises KeyboardInterrupt
 // during the integration); records as numpy arrays.
 #include <nlohmann/json.hpp>
@@ -10,8 +10,7 @@
 #include "interrupt_guard.hpp"
 #include "loaded_model.hpp"
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/model_bright_run.hpp"
-#include "lrchain/sim/ring_run.hpp"
+#include "lrchain/jobs/simulate/model_simulate_job.hpp"
 #include "lrchain/sim/strain_sites.hpp"
 #include "renamed_options.hpp"
 #include "run_options.hpp"
@@ -39,16 +38,13 @@ py::dict model_bright(const LoadedModel& loaded, const std::string& branch, cons
   assign_options(options, t, "bright", renamed_options("model bright"));
   c.N = strain_half_width(sites, model_bright_sites);
   c.detuning = detuning;
-  c.branch = model.branch(branch);
-  validate(c);
-  coefficients(model, c.branch, c.theta);  // theta on the branch (InvalidParameter otherwise)
+  jobs::prepare(model, c, branch);
   const lrchain_lattice_kernels& kernels = lattice_kernels(loaded);
-  const ModelBrightAnsatz check(model, kernels, c.branch, c.theta, c.detuning, c.n0);  // focusing, detuning
+  const jobs::ModelRunLabel label{model_summary_json(loaded), ""};
   InterruptGuard guard;  // Ctrl-C: the run stops at its next step boundary, KeyboardInterrupt follows
-  c.stop = guard.flag();
-  const ModelBrightResult r = guard.run([&] { return run_model_bright(model, kernels, c); });
-  nlohmann::json summary = to_json(model, c, r);
-  summary["model"] = model_summary_json(loaded);
+  const auto report = guard.run([&] { return jobs::simulate_model_bright(model, kernels, c, label, {}, guard.flag()); });
+  const ModelBrightResult& r = report.result;
+  const nlohmann::json& summary = report.summary;
   py::dict out;
   out["summary_json"] = summary.dump();
   out["record"] = record_arrays(r.record);
@@ -69,16 +65,13 @@ py::dict model_ring(const LoadedModel& loaded, const std::string& branch, const 
                                         {"packet_amplitude", &c.packet_amplitude},
                                         {"packet_width", &c.packet_width}};
   assign_options(options, t, "ring");
-  c.branch = model.branch(branch);
-  validate(c);
-  coefficients(model, c.branch, c.theta);
+  jobs::prepare(model, c, branch);
   const lrchain_lattice_kernels& kernels = lattice_kernels(loaded);
-  bloch_mode(model, kernels, c.branch, c.theta);
+  const jobs::ModelRunLabel label{model_summary_json(loaded), ""};
   InterruptGuard guard;  // Ctrl-C: the run stops at its next sample, KeyboardInterrupt follows
-  c.stop = guard.flag();
-  const RingRunResult r = guard.run([&] { return run_ring(model, kernels, c); });
-  nlohmann::json summary = to_json(model, c, r);
-  summary["model"] = model_summary_json(loaded);
+  const auto report = guard.run([&] { return jobs::simulate_ring(model, kernels, c, label, {}, guard.flag()); });
+  const RingRunResult& r = report.result;
+  const nlohmann::json& summary = report.summary;
   const py::ssize_t k = py::ssize_t(r.amplitudes.size());
   py::array_t<double> amplitude(k), measured(k), predicted(k), measured_shift(k), predicted_shift(k), disagreement(k);
   for (py::ssize_t i = 0; i < k; ++i) {

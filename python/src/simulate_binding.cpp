@@ -6,10 +6,9 @@
 
 #include "bindings.hpp"
 #include "interrupt_guard.hpp"
-#include "lrchain/sim/bright_outputs.hpp"
-#include "lrchain/sim/bright_run.hpp"
-#include "lrchain/sim/drive_run.hpp"
-#include "lrchain/sim/modulated_run.hpp"
+#include "lrchain/jobs/simulate/bright_outputs.hpp"
+#include "lrchain/jobs/simulate/drive_outputs.hpp"
+#include "lrchain/jobs/simulate/modulated_outputs.hpp"
 #include "lrchain/sim/strain_sites.hpp"
 #include "renamed_options.hpp"
 #include "run_options.hpp"
@@ -42,7 +41,7 @@ py::dict run_python(const Config& config, Run run, bool record_fields, const py:
   control.on_sample = recorder.hook();
   const auto result = guard.run([&] { return run(config, control); });
   py::dict out;
-  out["summary_json"] = to_json(config, result.summary).dump();
+  out["summary_json"] = jobs::to_json(config, result.summary).dump();
   out["record"] = record_arrays(result.record);
   out["fields"] = recorder.arrays();
   return out;

@@ -1,6 +1,5 @@
 // Experiment 6 (Sec. 4.3): boundary-driven chain, clamped far end; outputs like Figs. 14, 15.
 #include "lrchain/sim/drive_run.hpp"
-#include "lrchain/provenance_json.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -18,11 +17,8 @@
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"
-#include "lrchain/sim/figure_format.hpp"
-#include "lrchain/sim/output_files.hpp"
 #include "restart.hpp"
 #include "sampling_checks.hpp"
-#include "run_json.hpp"
 
 namespace lrchain::sim {
 
@@ -274,100 +270,6 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   S.front_speed = least_squares_slope(front_t, front_n);
   S.front_samples = long(front_t.size());
   return result;
-}
-
-nlohmann::json to_json(const DriveRunConfig& c, const DriveRunSummary& s) {
-  nlohmann::json j;
-  j["experiment"] = "drive";
-  j["provenance"] = provenance_json();
-  j["model"] = model_json(resonant_chain_model(c.params));
-  j["sites"] = c.beads;
-  j["drive"] = {{"amplitude", c.amplitude}, {"omega0", c.omega0}, {"ramp_rate", c.ramp_rate},
-                {"switch_off_time", c.t_m}};
-  j["integrator"] = integrator_json(c.integrator);
-  j["theta"] = s.theta;
-  j["group_velocity"] = s.group_velocity;
-  j["front_speed"] = s.front_samples >= 2 ? nlohmann::json(s.front_speed) : nlohmann::json(nullptr);
-  j["front_fit"] = {c.front_fit_start, c.front_fit_end};
-  j["final_participation"] = s.final_participation;
-  j["max_participation"] = s.max_participation;
-  j["final_peaks"] = s.final_peaks;
-  j["final_energy"] = s.final_energy;
-  j["max_energy"] = s.max_energy;
-  add_run_status(j, s.t_end, s.interrupted, s.blew_up, s.stats, s.solve_seconds, s.blow_up);
-  return j;
-}
-
-namespace {
-
-std::string drive_energy_script(const DriveRunResult& r) {
-  float emax = 0;
-  for (const auto& f : r.record.fields)
-    for (float v : f.values) emax = std::max(emax, v);
-  if (!(emax > 0)) emax = 1;
-  return fmt::format(R"GP(# Energy density e_n(t) (eq. (40)) of the driven chain (Fig. 14 left), with n = c_+ t
-# (dashed), and the front of the wave pattern (right).
-if (!exists("outfile")) outfile = 'energy.png'
-set terminal pngcairo size 1400,650 font ",11"
-set output outfile
-set multiplot layout 1,2
-set xlabel "site n"
-set ylabel "t (dimensionless)"
-set logscale cb
-set cbrange [{:.3e}:{:.3e}]
-{}
-set cblabel "energy density e_{{n}}, eq. (40)"
-set rmargin at screen 0.40
-set format cb "%.0e"
-set xrange [1:{:.1f}]
-set yrange [0:{:.1f}]
-plot 'energy_density_spacetime.bin' binary matrix {}using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle, \
-     (x/{:.6f}) with lines dt 2 lw 2 lc rgb "white" title "n = c_+ t"
-unset logscale cb
-unset cblabel
-set lmargin at screen 0.57
-set rmargin at screen 0.97
-set autoscale
-set datafile separator ","
-set xlabel "t (dimensionless)"
-set ylabel "front site n, participation number"
-plot 'series.csv' using 1:3 skip 1 with lines lw 1.5 title "front", \
-     'series.csv' using 1:4 skip 1 with lines lw 1.5 title "participation (sum e)^2/sum e^2", \
-     {:.6f}*x with lines dt 2 lc rgb "black" title "c_+ t"
-unset multiplot
-)GP",
-                     emax * 1e-5, emax, viridis_palette,
-                     double(r.record.fields.empty() ? 1 : r.record.fields[0].sites), r.summary.t_end,
-                     r.record.fields.empty() ? "" : image_every(r.record.fields.front()), emax * 1e-5, emax * 1e-5, r.summary.group_velocity, r.summary.group_velocity);
-}
-
-std::string drive_snapshots_script(const DriveRunResult& r) {
-  std::string body;
-  for (const auto& s : r.record.snapshots)
-    body += fmt::format("set title \"t = {:.1f}\"\nplot 'snapshot_{}.csv' using 1:4 skip 1 with lines lw 1 notitle\n",
-                        s.t, s.tag);
-  return fmt::format(R"GP(# Bead velocities du_n/dt at the snapshot times (Fig. 15).
-if (!exists("outfile")) outfile = 'snapshots.png'
-set terminal pngcairo size 1400,{} font ",11"
-set output outfile
-set datafile separator ","
-set multiplot layout {},1
-set xlabel "site n"
-set ylabel "bead velocity du_n/dt"
-{}unset multiplot
-)GP",
-                     350 * std::max<std::size_t>(1, r.record.snapshots.size()),
-                     std::max<std::size_t>(1, r.record.snapshots.size()), body);
-}
-
-}  // namespace
-
-std::vector<std::string> write_drive_outputs(const std::string& dir, const DriveRunResult& r,
-                                             const nlohmann::json& summary, bool draw_figures) {
-  std::vector<FigureScript> figures = {{"energy.gp", drive_energy_script(r), "energy.png"}};
-  if (!r.record.snapshots.empty())
-    figures.push_back({"snapshots.gp", drive_snapshots_script(r), "snapshots.png"});
-  return write_run_outputs(dir, r.record, summary.dump(2), figures, draw_figures);
 }
 
 }  // namespace lrchain::sim

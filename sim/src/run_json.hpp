@@ -1,21 +1,7 @@
 #pragma once
-// JSON pieces shared by the run summaries (bright, drive, modulated): the model object
-// (lrchain/model_json.hpp), integrator options, and the run status (time reached, interrupt, blow-up, work, solve time).
-// Private to sim/src.
-#include <optional>
-
+// Forwarding header, kept while sim/src/dark/dark_hdf5.cpp includes it for model_json (the run
+// summaries' JSON moved to the job layer, jobs/src/simulate/run_json.hpp): include
+// lrchain/model_json.hpp there and delete this file.
 #include <nlohmann/json.hpp>
 
 #include "lrchain/model_json.hpp"
-#include "lrchain/sim/integrator.hpp"
-
-namespace lrchain::sim {
-
-nlohmann::json integrator_json(const IntegratorOptions& o);
-// Sets t_end, interrupted, blew_up, failure (null, or the blow-up: kind, t, site, field, message),
-// steps, rhs_evaluations, solve_seconds.
-void add_run_status(nlohmann::json& j, double t_end, bool interrupted, bool blew_up,
-                    const IntegrationStats& stats, double solve_seconds,
-                    const std::optional<BlowUp>& blow_up);
-
-}  // namespace lrchain::sim

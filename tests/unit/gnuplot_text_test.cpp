@@ -1,4 +1,4 @@
-// User text in gnuplot scripts (lrchain/sim/gnuplot_text.hpp): quotes, backslashes, line breaks
+// User text in gnuplot scripts (lrchain/jobs/gnuplot_text.hpp): quotes, backslashes, line breaks
 // and every byte 0-255 become a single-quoted string that gnuplot reads back as the text (control
 // characters shown as U+FFFD, a quote as U+2019) and that runs nothing. The expected strings follow
 // gnuplot's documented single-quote rule (nothing substituted inside), checked by gnuplot itself;
@@ -13,13 +13,13 @@
 #include <string>
 
 #include "lrchain/process.hpp"
-#include "lrchain/sim/gnuplot_text.hpp"
+#include "lrchain/jobs/gnuplot_text.hpp"
 
 namespace fs = std::filesystem;
-using lrchain::sim::gnuplot_file_name;
-using lrchain::sim::gnuplot_string;
-using lrchain::sim::gnuplot_text;
-using lrchain::sim::GnuplotTextMode;
+using lrchain::jobs::gnuplot_file_name;
+using lrchain::jobs::gnuplot_string;
+using lrchain::jobs::gnuplot_text;
+using lrchain::jobs::GnuplotTextMode;
 
 namespace {
 

@@ -18,23 +18,14 @@
 #include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/modulated_run.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
+#include "short_runs.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim;
 namespace fs = std::filesystem;
+using lrchain::test::refused_parameter;
 
 namespace {
-
-// The parameter named by the InvalidParameter that f throws ("" if none is thrown).
-template <class F>
-std::string refused_parameter(F&& f) {
-  try {
-    f();
-  } catch (const InvalidParameter& e) {
-    return e.parameter();
-  }
-  return "";
-}
 
 BrightRunConfig small_bright() {
   BrightRunConfig c;

@@ -12,9 +12,11 @@
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/drive_run.hpp"
 #include "lrchain/sim/modulated_run.hpp"
+#include "short_runs.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim;
+using lrchain::test::short_drive;
 
 namespace {
 
@@ -34,21 +36,6 @@ double largest_allowed(const std::string& message, const std::string& marker) {
   const auto at = message.find(marker);
   REQUIRE_MESSAGE(at != std::string::npos, message);
   return std::strtod(message.c_str() + at + marker.size(), nullptr);
-}
-
-// A short drive run with an explicit memory budget, so the reach does not depend on the machine.
-DriveRunConfig short_drive() {
-  DriveRunConfig d;
-  d.beads = 100;
-  d.t_end = 60;
-  d.t_m = 40;
-  d.sample_every = 1;
-  d.spacetime_every = 2;
-  d.snapshot_times = {60};
-  d.front_fit_start = 0;
-  d.front_fit_end = 60;
-  d.max_memory = 64.0 * (1 << 20);  // 64 MiB
-  return d;
 }
 
 }  // namespace

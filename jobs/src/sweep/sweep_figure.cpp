@@ -11,7 +11,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/focusing_intervals.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
-#include "lrchain/sim/gnuplot_text.hpp"
+#include "lrchain/jobs/gnuplot_text.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/jobs/sweep/side_files.hpp"

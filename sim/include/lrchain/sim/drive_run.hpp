@@ -7,8 +7,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/integrator_options.hpp"
@@ -78,11 +76,5 @@ struct DriveRunResult {
 };
 
 DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control = {});
-
-nlohmann::json to_json(const DriveRunConfig& c, const DriveRunSummary& s);
-// Writes data, summary.json and figures (energy space-time like Fig. 14 left, velocity snapshots
-// like Fig. 15); returns the figure files rendered.
-std::vector<std::string> write_drive_outputs(const std::string& dir, const DriveRunResult& r,
-                                             const nlohmann::json& summary, bool draw_figures = true);
 
 }  // namespace lrchain::sim

@@ -22,8 +22,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
-
 #include "lrchain/model.hpp"
 #include "lrchain/sim/integrator_options.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
@@ -106,9 +104,5 @@ struct ModelBrightResult {
 
 ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_kernels& kernels,
                                    const ModelBrightConfig& c);
-
-nlohmann::json to_json(const Model& model, const ModelBrightConfig& c, const ModelBrightResult& r);
-std::vector<std::string> write_model_bright_outputs(const std::filesystem::path& dir, const ModelBrightResult& r,
-                                                    const nlohmann::json& summary, bool draw_figures);
 
 }  // namespace lrchain::sim

@@ -7,8 +7,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "lrchain/index.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/integrator_options.hpp"
@@ -76,9 +74,5 @@ struct ModulatedRunResult {
 };
 
 ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& control = {});
-
-nlohmann::json to_json(const ModulatedRunConfig& c, const ModulatedRunSummary& s);
-std::vector<std::string> write_modulated_outputs(const std::string& dir, const ModulatedRunResult& r,
-                                                 const nlohmann::json& summary, bool draw_figures = true);
 
 }  // namespace lrchain::sim

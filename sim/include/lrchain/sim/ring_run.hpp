@@ -11,8 +11,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
-
 #include "lrchain/index.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
@@ -74,11 +72,5 @@ double measure_packet_speed(const lrchain_lattice_kernels& kernels, const std::v
                             TimeSeries& track, const std::atomic<bool>* stop = nullptr);
 
 RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernels, const RingRunConfig& c);
-
-// JSON summary (model, file hash, parameters, per amplitude, packet) and the output directory
-// (ring_frequency.csv, series.csv, frequency.gp/png, packet.gp/png, summary.json).
-nlohmann::json to_json(const Model& model, const RingRunConfig& c, const RingRunResult& r);
-std::vector<std::string> write_ring_outputs(const std::filesystem::path& dir, const RingRunResult& r,
-                                            const nlohmann::json& summary, bool draw_figures);
 
 }  // namespace lrchain::sim

@@ -1,5 +1,5 @@
 // Output files and gnuplot figures of a bright-breather run (Figs. 6-13 style).
-#include "lrchain/sim/bright_outputs.hpp"
+#include "lrchain/jobs/simulate/bright_outputs.hpp"
 #include "lrchain/provenance_json.hpp"
 
 #include <algorithm>
@@ -9,9 +9,12 @@
 #include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/strain_sites.hpp"
+#include "run_figures.hpp"
 #include "run_json.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
+
+using namespace lrchain::sim;
 
 nlohmann::json to_json(const BrightRunConfig& c, const BrightRunSummary& s) {
   nlohmann::json j;
@@ -139,25 +142,10 @@ plot 'series.csv' using 1:2 skip 1 with lines lw 1.5 lc rgb "red" title "E_x", \
 }
 
 std::string energy_script(const BrightRunResult& r) {
-  float emax = 0;
-  for (const auto& f : r.record.fields)
-    for (float v : f.values) emax = std::max(emax, v);
-  if (!(emax > 0)) emax = 1;
+  const float emax = largest_energy_density(r.record);
   const std::string every = r.record.fields.empty() ? "" : image_every(r.record.fields.front());
   return fmt::format(R"GP(# Left: energy density e_n(t) (eq. (40)), log colour scale. Right: energy centre X(t) (eq. (41)).
-if (!exists("outfile")) outfile = 'energy.png'
-set terminal pngcairo size 1400,600 font ",11"
-set output outfile
-set multiplot layout 1,2
-set xlabel "site n"
-set ylabel "t (dimensionless)"
-set logscale cb
-set cbrange [{:.3e}:{:.3e}]
-{}
-set cblabel "energy density e_{{n}}, eq. (40)"
-set rmargin at screen 0.40
-set format cb "%.0e"
-set autoscale fix
+{}set autoscale fix
 plot 'energy_density_spacetime.bin' binary matrix {}using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle
 unset logscale cb
 set datafile separator ","
@@ -169,7 +157,7 @@ set ylabel "energy centre X, eq. (41) (sites)" noenhanced
 plot 'series.csv' using 1:5 skip 1 with lines lw 1.5 notitle
 unset multiplot
 )GP",
-                     emax * 1e-6, emax, viridis_palette, every, emax * 1e-6, emax * 1e-6);
+                     log_energy_panel_head(600, emax * 1e-6, emax), every, emax * 1e-6, emax * 1e-6);
 }
 
 }  // namespace
@@ -183,4 +171,4 @@ std::vector<std::string> write_bright_outputs(const std::filesystem::path& dir,
                            draw_figures);
 }
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

@@ -3,7 +3,11 @@
 
 #include <string>
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
+
+using sim::BlowUp;
+using sim::IntegrationStats;
+using sim::IntegratorOptions;
 
 nlohmann::json integrator_json(const IntegratorOptions& o) {
   return {{"stepper", std::string(to_string(o.stepper))},
@@ -27,4 +31,4 @@ void add_run_status(nlohmann::json& j, double t_end, bool interrupted, bool blew
   j["solve_seconds"] = solve_seconds;
 }
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

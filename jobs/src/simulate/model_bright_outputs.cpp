@@ -4,11 +4,13 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/provenance_json.hpp"
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/jobs/simulate/model_bright_outputs.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/strain_sites.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
+
+using namespace lrchain::sim;
 
 nlohmann::json to_json(const Model& model, const ModelBrightConfig& c, const ModelBrightResult& r) {
   nlohmann::json j;
@@ -92,4 +94,4 @@ std::vector<std::string> write_model_bright_outputs(const std::filesystem::path&
   return write_run_outputs(dir, r.record, summary.dump(2), {{"errors.gp", errors_script(r), "errors.png"}}, draw_figures);
 }
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

@@ -7,9 +7,11 @@
 
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/output_files.hpp"
-#include "lrchain/sim/ring_run.hpp"
+#include "lrchain/jobs/simulate/ring_outputs.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
+
+using namespace lrchain::sim;
 
 namespace {
 nlohmann::json optional_json(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
@@ -107,4 +109,4 @@ std::vector<std::string> write_ring_outputs(const std::filesystem::path& dir, co
                            draw_figures);
 }
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

@@ -1,5 +1,5 @@
 // Advisory lock of an output directory (see output_lock.hpp): flock(2) on DIR/.lrchain-lock.
-#include "lrchain/sim/output_lock.hpp"
+#include "lrchain/jobs/output_lock.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -12,7 +12,7 @@
 
 #include "lrchain/errors.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
 
 namespace fs = std::filesystem;
 
@@ -78,4 +78,4 @@ OutputLock::~OutputLock() {
   for (const auto& d : created_) fs::remove(d, ec);  // removes only empty directories
 }
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

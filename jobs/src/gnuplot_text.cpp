@@ -1,7 +1,7 @@
 // User text as single-quoted gnuplot strings (gnuplot_text.hpp).
-#include "lrchain/sim/gnuplot_text.hpp"
+#include "lrchain/jobs/gnuplot_text.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
 
 std::string gnuplot_text(std::string_view text, GnuplotTextMode mode) {
   static constexpr std::string_view replacement = "\xEF\xBF\xBD";  // U+FFFD in UTF-8
@@ -30,4 +30,4 @@ std::string gnuplot_file_name(std::string_view name) {
   return gnuplot_string("./" + std::string(name));
 }
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs
