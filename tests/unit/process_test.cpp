@@ -5,6 +5,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -98,4 +101,64 @@ TEST_CASE("a child of run_program dies with its parent, also when the parent is 
   for (int i = 0; i < 200 && alive(); ++i) ::usleep(10000);
   CHECK_FALSE(alive());
   if (alive()) ::kill(child, SIGKILL);
+}
+
+namespace {
+
+// A fake compiler: a shell script that starts a long-lived grandchild (sleep 300), writes its pid
+// to `pid_file`, and waits for it, as g++ waits for cc1plus.
+fs::path fake_compiler_with_grandchild(const fs::path& dir, const fs::path& pid_file) {
+  const fs::path script = dir / "fake-compiler.sh";
+  std::ofstream(script) << "#!/bin/sh\nsleep 300 &\necho $! > " << pid_file.string() << ".tmp\nmv "
+                        << pid_file.string() << ".tmp " << pid_file.string() << "\nwait\n";
+  fs::permissions(script, fs::perms::owner_all);
+  return script;
+}
+
+pid_t wait_for_pid_file(const fs::path& pid_file) {
+  for (int i = 0; i < 200 && !fs::exists(pid_file); ++i) ::usleep(20000);
+  pid_t pid = 0;
+  std::ifstream(pid_file) >> pid;
+  return pid;
+}
+
+bool process_gone(pid_t pid) {
+  for (int i = 0; i < 100; ++i) {  // reaped by init shortly after it is killed
+    if (::kill(pid, 0) != 0 && errno == ESRCH) return true;
+    // A zombie not yet reaped counts as gone: its state in /proc is Z.
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string pid_text, name, state;
+    if (stat >> pid_text >> name >> state && state == "Z") return true;
+    ::usleep(20000);
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("process: a stop flag kills the child's whole process group, grandchildren included") {
+  // Before: only the direct child could be reached (PR_SET_PDEATHSIG), so a compiler driver's
+  // cc1plus kept running after lrchain stopped; here the sleep plays cc1plus.
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-process-group-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path pid_file = dir / "grandchild.pid";
+  const fs::path script = fake_compiler_with_grandchild(dir, pid_file);
+  std::atomic<bool> stop{false};
+  lrchain::ProcessOptions o;
+  o.own_process_group = true;
+  o.capture_stderr = true;
+  o.stop = &stop;
+  lrchain::ChildProcess child({script.string()}, o);
+  const pid_t grandchild = wait_for_pid_file(pid_file);
+  REQUIRE(grandchild > 0);
+  CHECK(::kill(grandchild, 0) == 0);
+  stop = true;
+  const auto t0 = std::chrono::steady_clock::now();
+  const lrchain::ProcessResult r = child.wait();
+  CHECK(r.stopped);
+  CHECK(r.signal_number == SIGKILL);
+  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 1.0);
+  CHECK(process_gone(grandchild));
+  fs::remove_all(dir);
 }
