@@ -23,10 +23,13 @@
 #include "lrchain/model.hpp"
 #include "lrchain/model_compiler.hpp"
 #include "lrchain/process.hpp"
+#include "../support/process_checks.hpp"
 #include "scratch_cache.hpp"
 
 namespace fs = std::filesystem;
 using namespace lrchain;
+using test::process_gone;
+using test::wait_for_pid_file;
 
 namespace {
 
@@ -69,25 +72,6 @@ fs::path fake_compiler(const fs::path& dir, const fs::path& pid_file, const fs::
                            "wait\n";
   fs::permissions(script, fs::perms::owner_all);
   return script;
-}
-
-pid_t wait_for_pid_file(const fs::path& pid_file, double seconds) {
-  for (int i = 0; i < int(seconds * 50) && !fs::exists(pid_file); ++i) ::usleep(20000);
-  pid_t pid = 0;
-  std::ifstream(pid_file) >> pid;
-  return pid;
-}
-
-// The process is gone (or a zombie waiting for init to reap it).
-bool process_gone(pid_t pid) {
-  for (int i = 0; i < 100; ++i) {
-    if (::kill(pid, 0) != 0 && errno == ESRCH) return true;
-    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-    std::string pid_text, name, state;
-    if (stat >> pid_text >> name >> state && state == "Z") return true;
-    ::usleep(20000);
-  }
-  return false;
 }
 
 // Files of the model cache (none when it does not exist).

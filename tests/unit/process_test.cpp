@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../support/process_checks.hpp"
 #include "lrchain/process.hpp"
 
 namespace fs = std::filesystem;
@@ -115,25 +116,6 @@ fs::path fake_compiler_with_grandchild(const fs::path& dir, const fs::path& pid_
   return script;
 }
 
-pid_t wait_for_pid_file(const fs::path& pid_file) {
-  for (int i = 0; i < 200 && !fs::exists(pid_file); ++i) ::usleep(20000);
-  pid_t pid = 0;
-  std::ifstream(pid_file) >> pid;
-  return pid;
-}
-
-bool process_gone(pid_t pid) {
-  for (int i = 0; i < 100; ++i) {  // reaped by init shortly after it is killed
-    if (::kill(pid, 0) != 0 && errno == ESRCH) return true;
-    // A zombie not yet reaped counts as gone: its state in /proc is Z.
-    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-    std::string pid_text, name, state;
-    if (stat >> pid_text >> name >> state && state == "Z") return true;
-    ::usleep(20000);
-  }
-  return false;
-}
-
 }  // namespace
 
 TEST_CASE("process: a stop flag kills the child's whole process group, grandchildren included") {
@@ -150,7 +132,7 @@ TEST_CASE("process: a stop flag kills the child's whole process group, grandchil
   o.capture_stderr = true;
   o.stop = &stop;
   lrchain::ChildProcess child({script.string()}, o);
-  const pid_t grandchild = wait_for_pid_file(pid_file);
+  const pid_t grandchild = lrchain::test::wait_for_pid_file(pid_file, 4);
   REQUIRE(grandchild > 0);
   CHECK(::kill(grandchild, 0) == 0);
   stop = true;
@@ -159,6 +141,6 @@ TEST_CASE("process: a stop flag kills the child's whole process group, grandchil
   CHECK(r.stopped);
   CHECK(r.signal_number == SIGKILL);
   CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 1.0);
-  CHECK(process_gone(grandchild));
+  CHECK(lrchain::test::process_gone(grandchild));
   fs::remove_all(dir);
 }
