@@ -3,6 +3,7 @@
 // check report (docs/models.md). A failing check fails the command.
 #include <fmt/format.h>
 
+#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -12,11 +13,13 @@
 
 #include "commands.hpp"
 #include "help_text.hpp"
+#include "lrchain/derivation/derivation_stop.hpp"
 #include "lrchain/derivation/model_derivation.hpp"
 #include "lrchain/derivation/symbolic_lock.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "shipped_data.hpp"
+#include "stop_signals.hpp"
 
 namespace lrchain::cli {
 
@@ -88,6 +91,21 @@ nlohmann::json to_json(const derivation::ModelDerivation& m, const derivation::S
 
 }  // namespace
 
+// derive_model polling SIGINT/SIGTERM between its steps: a signal ends it with exit 130/143 and
+// one line (lrchain::Interrupted), nothing printed.
+std::unique_ptr<derivation::ModelDerivation> derive_until_stopped(derivation::ModelFile file, const GiNaC::exmap& values,
+                                                                  const derivation::Symbols& symbols) {
+  const StopSignals signals;
+  const derivation::DerivationStopScope scope(StopSignals::flag());
+  const std::string path = file.path;
+  try {
+    return derivation::derive_model(std::move(file), values, symbols);
+  } catch (const derivation::DerivationStopped&) {
+    const int signal_number = StopSignals::received() != 0 ? StopSignals::received() : SIGINT;
+    throw Interrupted(signal_number, std::string("interrupted by ") + StopSignals::name(signal_number) + " while deriving " + path);
+  }
+}
+
 void register_derive(CLI::App& app) {
   auto opts = std::make_shared<DeriveOptions>();
   auto* cmd = app.add_subcommand(
@@ -111,7 +129,7 @@ void register_derive(CLI::App& app) {
     const derivation::Symbols symbols;
     derivation::ModelFile file = derivation::load_model_file(opts->model);
     const GiNaC::exmap values = derivation::parameter_values(file, overrides(opts->set));
-    const auto m = derivation::derive_model(std::move(file), values, symbols);
+    const auto m = derive_until_stopped(std::move(file), values, symbols);
     if (opts->json) std::printf("%s\n", to_json(*m, symbols, opts->latex).dump().c_str());
     else std::fputs(derivation::model_report(*m, symbols, opts->latex).c_str(), stdout);
     if (!m->passed()) throw std::runtime_error("model " + m->file.name + ": a derivation check failed (see the report)");

@@ -1,12 +1,14 @@
 #include "model_option.hpp"
 
 #include <chrono>
+#include <csignal>
 #include <iostream>
 
 #include "lrchain/errors.hpp"
 #include "lrchain/numeric_parse.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 #include "shipped_data.hpp"
+#include "stop_signals.hpp"
 #ifdef LRCHAIN_WITH_MODEL_COMPILER
 #include "lrchain/model_compiler.hpp"
 #endif
@@ -26,6 +28,20 @@ std::vector<std::pair<std::string, double>> set_values(const std::vector<std::st
     values.emplace_back(name, parse_number(s.substr(eq + 1), name));
   }
   return values;
+}
+
+// `compile()` (deriving and compiling a model file) stopped by SIGINT/SIGTERM: the compiler's
+// process group killed, nothing cached, exit 130/143 with one line naming the signal.
+template <class Compile>
+auto until_stopped(Compile compile) {
+  const StopSignals signals;
+  try {
+    return compile();
+  } catch (const Interrupted& e) {
+    const int signal_number = StopSignals::received() != 0 ? StopSignals::received() : SIGINT;
+    const std::string what = e.what();
+    throw Interrupted(signal_number, "interrupted by " + std::string(StopSignals::name(signal_number)) + ": " + what);
+  }
 }
 
 }  // namespace
@@ -58,7 +74,7 @@ Model load_selected_model(const ModelSelection& selection, const CLI::App& cmd, 
     if (!definition) {
       if (lattice_run) check_lattice_compiler(selection.file);
       CompiledModelInfo info;
-      definition = compile_model_file(selection.file, &info);
+      definition = until_stopped([&] { return compile_model_file(selection.file, &info, StopSignals::flag()); });
       if (!info.fallback_reason.empty()) std::cerr << "lrchain: warning: " << model_fallback_warning(definition->name, info) << "\n";
     }
 #else
@@ -90,7 +106,7 @@ LatticeCode lattice_kernels_for(const ModelSelection& selection, const Model& mo
   } else {
 #ifdef LRCHAIN_WITH_MODEL_COMPILER
     CompiledModelInfo info;
-    code.kernels = compile_model_lattice(selection.file, &info);
+    code.kernels = until_stopped([&] { return compile_model_lattice(selection.file, &info, StopSignals::flag()); });
     code.compiled_in = false;
     code.from_cache = info.from_cache;
     code.library = info.library.string();

@@ -9,6 +9,7 @@ namespace {
 
 std::atomic<bool> g_stop{false};
 std::atomic<int> g_signal{0};
+int g_depth = 0;  // StopSignals alive (the CLI's main thread only)
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free);
 
 void set_action(void (*handler)(int)) {
@@ -30,12 +31,15 @@ extern "C" void on_stop_signal(int signal_number) {
 }  // namespace
 
 StopSignals::StopSignals() {
+  if (g_depth++ > 0) return;
   g_stop.store(false);
   g_signal.store(0);
   set_action(on_stop_signal);
 }
 
-StopSignals::~StopSignals() { set_action(SIG_DFL); }
+StopSignals::~StopSignals() {
+  if (--g_depth == 0) set_action(SIG_DFL);
+}
 
 const std::atomic<bool>* StopSignals::flag() { return &g_stop; }
 

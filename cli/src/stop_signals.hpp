@@ -7,7 +7,8 @@
 namespace lrchain::cli {
 
 // Installs the handlers for SIGINT and SIGTERM for its lifetime (clearing the flag first) and
-// restores the default actions afterwards.
+// restores the default actions afterwards. Nested (a model compiled inside a run's scope): the
+// inner one changes nothing, so the outer run still sees a signal the compile received.
 class StopSignals {
  public:
   StopSignals();

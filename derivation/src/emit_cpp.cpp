@@ -1,4 +1,5 @@
 #include "lrchain/derivation/emit_cpp.hpp"
+#include "lrchain/derivation/derivation_stop.hpp"
 
 #include <algorithm>
 #include <memory>
@@ -304,6 +305,7 @@ NodePtr term_scale_tree(const ex& e, const Names* names, const std::string& abs_
 std::size_t emitted_size(const ex& e) { return factored_tree(e, nullptr)->size; }
 
 std::string emit_function(const EmittedFunction& f) {
+  poll_derivation_stop();  // a run-time compile stops between emitted functions
   // Struct result: outputs are fields r.NAME. Without a result type the outputs are written to the
   // lvalues named (e.g. out[3]) by a void function.
   const bool returns_struct = !f.result_type.empty();

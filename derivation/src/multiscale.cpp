@@ -3,6 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lrchain/derivation/derivation_stop.hpp"
 #include "lrchain/derivation/linear_algebra.hpp"
 #include "lrchain/derivation/residual.hpp"
 
@@ -40,6 +41,7 @@ class Solver {
   // Residual of each equation at eps^k E^j with everything known substituted.
   std::vector<ex> level(int k, int j) {
     std::vector<ex> r;
+    poll_derivation_stop();  // between the orders of the expansion
     for (std::size_t f = 0; f < n_; ++f)
       r.push_back(reduce_trig(residual_[f][k][j + kMaxOrder].subs(known_, subs_options::no_pattern), s_));
     return r;
@@ -89,7 +91,10 @@ class Solver {
     for (std::size_t i = 0; i < n_; ++i) s -= left[i] * rhs[i];
     return reduce_trig(s, s_);
   }
-  void note(const std::string& line) { report_.push_back(line); }
+  void note(const std::string& line) {
+    report_.push_back(line);
+    poll_derivation_stop();
+  }
   // Regular level: every field solved directly, A_{k,j} = L^{-1} rhs.
   void solve_regular(int k, int j, const matrix& L, const std::vector<ex>& rhs) {
     const matrix Linv = L.inverse();

@@ -1,4 +1,5 @@
 #include "lrchain/derivation/residual.hpp"
+#include "lrchain/derivation/derivation_stop.hpp"
 
 #include <array>
 #include <stdexcept>
@@ -53,6 +54,7 @@ Series shifted_field(const Symbols& s, Jets& jets, int f, int m) {
 
 // Evaluates a polynomial in shift symbols with their series substituted (truncated products).
 Series evaluate(const ex& e, const std::map<ex, Series, ex_is_less>& fields) {
+  poll_derivation_stop();  // once per term and factor of a force
   if (auto it = fields.find(e); it != fields.end()) return it->second;
   if (is_a<GiNaC::add>(e)) {
     Series r{0, 0, 0, 0};

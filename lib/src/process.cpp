@@ -44,15 +44,21 @@ std::vector<char*> c_strings(std::vector<std::string>& v) {
   return out;
 }
 
-// Collects both captured pipes until they close (poll, so neither pipe can fill and block).
-void drain(int out_fd, int err_fd, std::string& out, std::string& err) {
+bool stop_set(const std::atomic<bool>* stop) { return stop && stop->load(std::memory_order_relaxed); }
+
+// Collects both captured pipes until they close (poll, so neither pipe can fill and block); returns
+// early (false) once `stop` is set, polling it every 50 ms.
+bool drain(int& out_fd, int& err_fd, std::string& out, std::string& err, const std::atomic<bool>* stop) {
   char buf[65536];
   while (out_fd >= 0 || err_fd >= 0) {
+    if (stop_set(stop)) return false;
     pollfd fds[2];
     int n = 0;
     if (out_fd >= 0) fds[n++] = {out_fd, POLLIN, 0};
     if (err_fd >= 0) fds[n++] = {err_fd, POLLIN, 0};
-    if (::poll(fds, n, -1) < 0) {
+    const int ready = ::poll(fds, n, stop ? 50 : -1);
+    if (ready == 0) continue;
+    if (ready < 0) {
       if (errno == EINTR) continue;
       break;
     }
@@ -69,6 +75,7 @@ void drain(int out_fd, int err_fd, std::string& out, std::string& err) {
       }
     }
   }
+  return true;
 }
 
 }  // namespace
@@ -198,6 +205,7 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv_in, const Proces
   if (o.own_process_group) ::setpgid(pid, pid);  // (also in the child: whichever runs first)
   pid_ = pid;
   own_group_ = o.own_process_group;
+  stop_ = o.stop;
   out_fd_ = out_pipe[0];
   err_fd_ = err_pipe[0];
 }
@@ -216,11 +224,30 @@ void ChildProcess::send_signal(int signal_number) const {
 ProcessResult ChildProcess::wait() {
   ProcessResult r;
   if (waited_) return r;
-  drain(out_fd_, err_fd_, r.output, r.error_output);
-  out_fd_ = err_fd_ = -1;
+  bool stopped = !drain(out_fd_, err_fd_, r.output, r.error_output, stop_);
   int status = 0;
-  while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  // With a stop flag, the child is polled (it may have closed its pipes and still run).
+  while (stop_ && !stopped) {
+    const pid_t done = ::waitpid(pid_, &status, WNOHANG);
+    if (done == pid_ || (done < 0 && errno != EINTR)) break;
+    if (stop_set(stop_)) {
+      stopped = true;
+      break;
+    }
+    ::usleep(50000);
   }
+  if (stopped) {
+    send_signal(SIGKILL);  // the group when it has one: the compiler's own children too
+    r.stopped = true;
+  }
+  for (int* fd : {&out_fd_, &err_fd_})
+    if (*fd >= 0) {
+      ::close(*fd);
+      *fd = -1;
+    }
+  if (stopped || !stop_)
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
   waited_ = true;
   if (WIFEXITED(status)) {
     r.exited = true;

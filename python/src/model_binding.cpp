@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "coefficient_arrays.hpp"
+#include "interrupt_guard.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/model_json.hpp"
@@ -60,7 +61,12 @@ std::shared_ptr<const ModelDefinition> find_shipped_definition(const std::string
 // the compiler releases it).
 std::shared_ptr<const ModelDefinition> compile_user_model(const std::string& source) {
 #ifdef LRCHAIN_WITH_MODEL_COMPILER
-  const py::object capsule = py::module_::import("lrchain._model_compiler").attr("compile")(source);
+  // Ctrl-C while deriving or compiling: the compile stops (its compiler's process group killed) and
+  // KeyboardInterrupt follows.
+  InterruptGuard guard;
+  const py::capsule stop(const_cast<std::atomic<bool>*>(guard.flag()), "lrchain.stop_flag");
+  const py::object capsule = py::module_::import("lrchain._model_compiler").attr("compile")(source, stop);
+  guard.raise_if_interrupted();
   return *static_cast<ModelDefinitionHandle*>(PyCapsule_GetPointer(capsule.ptr(), kModelCapsuleName));
 #else
   throw InputError("load_model: " + source + ": not a shipped model file, and this build has no model compiler "
@@ -138,7 +144,7 @@ py::dict model_coefficient_arrays(const LoadedModel& loaded, const std::string& 
   const double* t = theta.data();
   const py::ssize_t n = theta.size();
   py::ssize_t failed = -1;
-  std::string failure;
+  std::string failure, failed_parameter;
   {
     py::gil_scoped_release release;
     for (py::ssize_t i = 0; i < n && failed < 0; ++i) {
@@ -147,10 +153,12 @@ py::dict model_coefficient_arrays(const LoadedModel& loaded, const std::string& 
       } catch (const InvalidParameter& e) {
         failed = i;
         failure = e.what();
+        failed_parameter = e.parameter();  // theta, or the model parameter that makes the evaluation fail
       }
     }
   }
-  if (failed >= 0) throw InvalidParameter("theta", failure.substr(failure.find(": ") + 2) + wavenumber_position(theta, failed));
+  if (failed >= 0)
+    throw InvalidParameter(failed_parameter, failure.substr(failure.find(": ") + 2) + wavenumber_position(theta, failed));
   return out.to_dict();
 }
 

@@ -82,6 +82,45 @@ TEST_CASE("model expressions: huge numbers, powers and exponentials are refused 
     CHECK_NOTHROW(derivation::parse_model_text(model_with_law(law), "bounded.toml"));
 }
 
+TEST_CASE("model expressions: the work of the derivation is bounded, naming file:line and the bound") {
+  // Before: each of these laws passed the digit and degree bounds and derived for minutes (timed
+  // with lrchain derive: more than 60 s each; the last one 32 s within the old bounds).
+  for (const std::string law : {"2*a*b*(exp(-a*r) - exp(-2*a*r))*(a + b + 1)^600", "r*(1 + b^3 + a^5)^99",
+                                "(1+a+b+r)^12*(2+a+r)^12*(3+b+r)^12 - (1+a+b)^12*(2+a)^12*(3+b)^12",
+                                "r*exp(-a*r)*(1 + a + b)^14"}) {
+    CAPTURE(law);
+    const auto t0 = std::chrono::steady_clock::now();
+    CHECK_THROWS_WITH_AS(derivation::parse_model_text(model_with_law(law), "bounded.toml"),
+                         doctest::Contains("bounded.toml:8: function F: it expands to about"), InputError);
+    CHECK(seconds_since(t0) < 1);
+  }
+  // The count: (a + b + 1)^600 has C(602, 2) = 180901 monomials; the law's bound is 64 terms.
+  CHECK_THROWS_WITH_AS(derivation::parse_model_text(model_with_law("r*(a + b + 1)^600"), "bounded.toml"),
+                       doctest::Contains("about 1.81e+05 terms (more than 64"), InputError);
+  // A force multiplies its calls' laws: F with 45 terms (C(10, 2)), F(x)*F(y) has 2025 > 256.
+  std::string text = model_with_law("r*exp(-a*r)*(1 + a + b)^8");
+  CHECK_NOTHROW(derivation::parse_model_text(text, "bounded.toml"));
+  text.replace(text.find("F(u[n+1] - u[n]) - F(u[n] - u[n-1])"), 35, "F(u[n+1] - u[n])*F(u[n] - u[n-1])");
+  CHECK_THROWS_WITH_AS(derivation::parse_model_text(text, "bounded.toml"),
+                       doctest::Contains("bounded.toml:12: force of field u: it expands to about 2"),
+                       InputError);
+  // Within the bounds: laws as physicists write them, and powers of one term (a^600 is one term).
+  for (const std::string law : {"2*a*b*(exp(-a*r) - exp(-2*a*r))", "r*(1 + a + b)^8", "r + a^600*r^2/a^600",
+                                "(1 + r)^(3/2) - 1", "r*(1 + a)^63"})
+    CHECK_NOTHROW(derivation::parse_model_text(model_with_law(law), "bounded.toml"));
+}
+
+TEST_CASE("model expressions: a number literal of up to 2000 digits is read, as docs/models.md says") {
+  // Before: 401 digits gave "bad number" although the docs allowed about 2000.
+  const std::string digits401 = "1" + std::string(400, '0');
+  CHECK_NOTHROW(derivation::parse_model_text(model_with_law("r + " + digits401 + "*r^2"), "bounded.toml"));
+  CHECK_NOTHROW(derivation::parse_model_text(model_with_law("r + 1e-1990*r^2"), "bounded.toml"));
+  CHECK_THROWS_WITH_AS(derivation::parse_model_text(model_with_law("r + " + std::string(2001, '7') + "*r^2"), "bounded.toml"),
+                       doctest::Contains("bounded.toml:8: function F: bad number '77777777777777777777... (2001 characters)' "
+                                         "(a number has at most 2000 digits"),
+                       InputError);
+}
+
 TEST_CASE("model derivation: a failure of the symbolic engine names file:line in a sentence") {
   const derivation::Symbols symbols;
   // A zero stiffness F'(0) = 0: no linear waves; GiNaC divides by zero inside the derivation.

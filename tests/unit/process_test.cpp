@@ -5,9 +5,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
+#include "../support/process_checks.hpp"
 #include "lrchain/process.hpp"
 
 namespace fs = std::filesystem;
@@ -98,4 +102,45 @@ TEST_CASE("a child of run_program dies with its parent, also when the parent is 
   for (int i = 0; i < 200 && alive(); ++i) ::usleep(10000);
   CHECK_FALSE(alive());
   if (alive()) ::kill(child, SIGKILL);
+}
+
+namespace {
+
+// A fake compiler: a shell script that starts a long-lived grandchild (sleep 300), writes its pid
+// to `pid_file`, and waits for it, as g++ waits for cc1plus.
+fs::path fake_compiler_with_grandchild(const fs::path& dir, const fs::path& pid_file) {
+  const fs::path script = dir / "fake-compiler.sh";
+  std::ofstream(script) << "#!/bin/sh\nsleep 300 &\necho $! > " << pid_file.string() << ".tmp\nmv "
+                        << pid_file.string() << ".tmp " << pid_file.string() << "\nwait\n";
+  fs::permissions(script, fs::perms::owner_all);
+  return script;
+}
+
+}  // namespace
+
+TEST_CASE("process: a stop flag kills the child's whole process group, grandchildren included") {
+  // Before: only the direct child could be reached (PR_SET_PDEATHSIG), so a compiler driver's
+  // cc1plus kept running after lrchain stopped; here the sleep plays cc1plus.
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-process-group-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path pid_file = dir / "grandchild.pid";
+  const fs::path script = fake_compiler_with_grandchild(dir, pid_file);
+  std::atomic<bool> stop{false};
+  lrchain::ProcessOptions o;
+  o.own_process_group = true;
+  o.capture_stderr = true;
+  o.stop = &stop;
+  lrchain::ChildProcess child({script.string()}, o);
+  const pid_t grandchild = lrchain::test::wait_for_pid_file(pid_file, 4);
+  REQUIRE(grandchild > 0);
+  CHECK(::kill(grandchild, 0) == 0);
+  stop = true;
+  const auto t0 = std::chrono::steady_clock::now();
+  const lrchain::ProcessResult r = child.wait();
+  CHECK(r.stopped);
+  CHECK(r.signal_number == SIGKILL);
+  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 1.0);
+  CHECK(lrchain::test::process_gone(grandchild));
+  fs::remove_all(dir);
 }

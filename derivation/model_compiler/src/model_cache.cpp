@@ -179,6 +179,36 @@ void remove_superseded_objects(const fs::path& directory, const CacheEntry& entr
   }
 }
 
+// "exit status 1" or "killed by signal 9".
+std::string exit_status_text(const ProcessResult& r) {
+  return r.exited ? "exit status " + std::to_string(r.exit_code) : "killed by signal " + std::to_string(r.signal_number);
+}
+
+// The last lines of a compiler's stderr as one line of at most ~400 printable characters.
+std::string stderr_tail(const std::string& text) {
+  std::string line;
+  for (const char c : text) {
+    const bool printable = static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
+    if (printable) line += c;
+    else if (!line.empty() && line.back() != ' ') line += ' ';
+  }
+  while (!line.empty() && line.back() == ' ') line.pop_back();
+  if (line.empty()) return "it wrote nothing on stderr";
+  constexpr std::size_t kShown = 400;
+  return "stderr ends: " + (line.size() > kShown ? "..." + line.substr(line.size() - kShown) : line);
+}
+
+// Before compiling: the entry's manifest path holds a regular file or nothing (a directory or
+// anything else there would make the compile's result unplaceable, and leave its object behind).
+void check_manifest_path(int directory, const CacheEntry& entry) {
+  struct stat s{};
+  const std::string name = entry.stem + ".manifest";
+  if (::fstatat(directory, name.c_str(), &s, AT_SYMLINK_NOFOLLOW) != 0) return;
+  if (!S_ISREG(s.st_mode))
+    throw InputError("the model cache entry " + (entry.directory / name).string() +
+                     " is not a regular file; delete it (lrchain recompiles the model)");
+}
+
 }  // namespace
 
 fs::path model_cache_directory() {
@@ -225,8 +255,9 @@ int remove_stale_temporaries(const fs::path& directory) {
 }
 
 void compile_into_entry(const std::string& source_text, const std::string& compiler, const std::vector<std::string>& options,
-                        const CacheEntry& entry, const std::string& what) {
+                        const CacheEntry& entry, const std::string& what, const std::atomic<bool>* stop) {
   const Descriptor directory = open_cache_directory(true);
+  check_manifest_path(directory.get(), entry);
   remove_stale_temporaries(entry.directory);
   std::random_device random;
   const std::string stem = ".model-" + std::to_string(::getpid()) + "-" + std::to_string(random());
@@ -234,6 +265,8 @@ void compile_into_entry(const std::string& source_text, const std::string& compi
   write_new_file(directory.get(), stem + ".cpp", source_text, source);
   ProcessOptions process;
   process.capture_stderr = true;
+  process.own_process_group = true;  // a stop kills the driver and its cc1plus, as
+  process.stop = stop;
   std::vector<std::string> argv{compiler, "-std=c++17"};
   argv.insert(argv.end(), options.begin(), options.end());
   argv.insert(argv.end(), {"-fPIC", "-shared", "-o", object.string(), source.string()});
@@ -244,7 +277,15 @@ void compile_into_entry(const std::string& source_text, const std::string& compi
     fs::remove(object, ec);
     throw std::runtime_error(why);
   };
-  if (!r.ok()) fail("compiling " + what + " failed: " + r.error_output.substr(0, r.error_output.find('\n')));
+  if (r.stopped) {
+    fs::remove(object, ec);
+    throw Interrupted(SIGINT, "stopped while compiling " + what + "; nothing was cached");
+  }
+  if (!r.ok()) {
+    fs::remove(object, ec);
+    throw CompilerFailed("the C++ compiler " + compiler + " failed compiling " + what + " (" + exit_status_text(r) +
+                         "; " + stderr_tail(r.error_output) + ")");
+  }
   if (::fchmodat(directory.get(), (stem + ".so").c_str(), 0755, 0) != 0) fail("cannot set the mode of " + object.string());
   std::size_t size = 0;
   std::optional<std::string> digest;
@@ -260,9 +301,11 @@ void compile_into_entry(const std::string& source_text, const std::string& compi
   // The manifest last, atomically: a reader sees the old entry or the complete new one.
   write_new_file(directory.get(), stem + ".manifest", *digest + "\n", entry.directory / (stem + ".manifest"));
   if (::renameat(directory.get(), (stem + ".manifest").c_str(), directory.get(), (entry.stem + ".manifest").c_str()) != 0) {
+    const int rename_errno = errno;
     ::unlinkat(directory.get(), (stem + ".manifest").c_str(), 0);
+    ::unlinkat(directory.get(), name.c_str(), 0);  // unreachable without its manifest
     throw InputError("cannot write the manifest " + (entry.directory / (entry.stem + ".manifest")).string() + " (" +
-                     std::strerror(errno) + "); delete what is at that path");
+                     std::strerror(rename_errno) + "); delete what is at that path");
   }
   remove_superseded_objects(entry.directory, entry, name);
 }

@@ -4,7 +4,9 @@
 // is an object plus a manifest (written atomically after the compile) that records the object's
 // SHA-256. Anything else at an entry (a changed, truncated, empty or foreign object, a directory,
 // a missing or garbled manifest) is a cache miss, never loaded.
+#include <atomic>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -29,12 +31,21 @@ void* open_verified_object(const CacheEntry& entry, std::filesystem::path* libra
 // Whether the entry has an object that passes the checks (without loading it).
 bool has_verified_object(const CacheEntry& entry);
 
+// The compiler ran and failed: its exit status and the tail of its stderr, in one line.
+struct CompilerFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Compiles `source_text` with `compiler` and `options` into a fresh object of the entry (a unique
 // temporary name, then renamed into place with its manifest), after removing the temporaries that
-// dead processes left behind. Throws InputError for an unsafe cache directory, std::runtime_error
-// when the compile fails.
+// dead processes left behind. The compiler runs in a process group of its own; once `stop` is set
+// the whole group is killed, the temporaries removed and lrchain::Interrupted (SIGINT) thrown.
+// Throws InputError for an unsafe cache directory or something other than a file at the entry's
+// manifest (both before compiling), CompilerFailed when the compiler fails, std::runtime_error when
+// the cache cannot be written.
 void compile_into_entry(const std::string& source_text, const std::string& compiler,
-                        const std::vector<std::string>& options, const CacheEntry& entry, const std::string& what);
+                        const std::vector<std::string>& options, const CacheEntry& entry, const std::string& what,
+                        const std::atomic<bool>* stop = nullptr);
 
 // Removes `.model-PID-*` temporaries of `directory` whose process PID no longer runs; returns how many.
 int remove_stale_temporaries(const std::filesystem::path& directory);

@@ -1,6 +1,7 @@
 #include "lrchain/model_compiler.hpp"
 
 #include <dlfcn.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -12,6 +13,7 @@
 #include "evaluator_support_text.hpp"
 #include "ginac_evaluators.hpp"
 #include "lrchain/derivation/c_string_literal.hpp"
+#include "lrchain/derivation/derivation_stop.hpp"
 #include "lrchain/derivation/lattice_codegen.hpp"
 #include "lrchain/derivation/model_emission.hpp"
 #include "lrchain/derivation/symbolic_lock.hpp"
@@ -92,12 +94,39 @@ std::string emitted(const derivation::ModelFile& file, const std::string& what, 
     return make();
   } catch (const InputError&) {
     throw;
+  } catch (const derivation::DerivationStopped&) {
+    throw;
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception& e) {
     const std::string message = e.what();
     throw InputError((file.first_force_where.empty() ? file.path : file.first_force_where) + ": the " + what +
                      " of model " + file.name + " cannot be generated (" + message.substr(0, message.find('\n')) + ")");
+  }
+}
+
+// compile_into_entry with a failing compiler reported as the user's input error when the user chose
+// it (LRCHAIN_MODEL_CXX: exit 2 naming the variable), else as lrchain's (std::runtime_error: exit 1).
+void compile_entry(const std::string& source, const std::vector<std::string>& options, const CacheEntry& entry,
+                   const std::string& what, const std::atomic<bool>* stop) {
+  try {
+    compile_into_entry(source, model_compiler_path(), options, entry, what, stop);
+  } catch (const CompilerFailed& e) {
+    const char* chosen = std::getenv("LRCHAIN_MODEL_CXX");
+    if (chosen && *chosen) throw InputError(std::string("LRCHAIN_MODEL_CXX: ") + e.what());
+    throw;
+  }
+}
+
+// `work()` with a stopped derivation reported as lrchain::Interrupted (SIGINT; a front end that
+// knows the signal says which), nothing cached.
+template <class Work>
+auto stoppable(const std::string& what, const std::atomic<bool>* stop, Work work) {
+  const derivation::DerivationStopScope scope(stop);
+  try {
+    return work();
+  } catch (const derivation::DerivationStopped&) {
+    throw Interrupted(SIGINT, "stopped while deriving " + what + "; nothing was cached");
   }
 }
 
@@ -172,7 +201,19 @@ std::string model_fallback_warning(const std::string& model_name, const Compiled
          info.fallback_reason + "; install it (Debian: apt install g++) to compile the model once into the cache";
 }
 
-std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, CompiledModelInfo* info) {
+// The work of compile_model_file and compile_model_lattice inside their stop scope.
+static std::shared_ptr<const ModelDefinition> compile_model_file_now(const fs::path& path, CompiledModelInfo* info,
+                                                                     const std::atomic<bool>* stop);
+static std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice_now(const fs::path& path, CompiledModelInfo* info,
+                                                                                const std::atomic<bool>* stop);
+
+std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, CompiledModelInfo* info,
+                                                          const std::atomic<bool>* stop) {
+  return stoppable("model file " + path.string(), stop, [&] { return compile_model_file_now(path, info, stop); });
+}
+
+static std::shared_ptr<const ModelDefinition> compile_model_file_now(const fs::path& path, CompiledModelInfo* info,
+                                                                     const std::atomic<bool>* stop) {
   const std::string bytes = read_model_file_bytes(path.string());
   const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
   const std::string compiler = model_compiler_path();
@@ -207,7 +248,7 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, 
     return d;
   }
   const std::string source = emitted(m->file, "evaluators", [&] { return shared_object_source(*m, symbols); });
-  compile_into_entry(source, compiler, {"-O2"}, entry, "the evaluators of " + shown);
+  compile_entry(source, {"-O2"}, entry, "the evaluators of " + shown, stop);
   void* handle = open_verified_object(entry, &library);
   if (info) info->from_cache = false, info->library = library;
   if (!handle) throw std::runtime_error("cannot load " + library.string() + " just compiled: " + dlerror_text());
@@ -225,7 +266,13 @@ void check_lattice_compiler(const fs::path& path) {
                      "far too slow for a lattice run); install it (Debian: apt install g++) or set LRCHAIN_MODEL_CXX");
 }
 
-std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const fs::path& path, CompiledModelInfo* info) {
+std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const fs::path& path, CompiledModelInfo* info,
+                                                                     const std::atomic<bool>* stop) {
+  return stoppable("the lattice code of " + path.string(), stop, [&] { return compile_model_lattice_now(path, info, stop); });
+}
+
+static std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice_now(const fs::path& path, CompiledModelInfo* info,
+                                                                                const std::atomic<bool>* stop) {
   const std::string bytes = read_model_file_bytes(path.string());
   const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
   const std::string file_sha256 = sha256_hex(bytes);
@@ -244,8 +291,8 @@ std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const fs::p
   check_lattice_compiler(path);
   // -O3 as the shipped kernels (Release build); the kernels' own attributes pick the vector width.
   const std::string source = emitted(file, "lattice code", [&] { return derivation::lattice_source(file); });
-  compile_into_entry(source + file_sha256_definition(file_sha256), model_compiler_path(),
-                     {"-O3", "-DNDEBUG"}, entry, "the lattice code of " + file.path);
+  compile_entry(source + file_sha256_definition(file_sha256), {"-O3", "-DNDEBUG"}, entry,
+                "the lattice code of " + file.path, stop);
   void* handle = open_verified_object(entry, &library);
   if (info) info->from_cache = false, info->library = library;
   if (!handle) throw std::runtime_error("cannot load " + library.string() + " just compiled: " + dlerror_text());

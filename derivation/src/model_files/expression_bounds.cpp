@@ -19,6 +19,7 @@ struct Bound {
   double digits = 0;   // log10 of the largest of |numerator|, denominator
   double value = 0;    // its value (may be inf)
   double degree = 0;   // upper bound on the degree of the polynomial it expands to
+  double terms = 1;    // upper bound on its number of terms once expanded
 };
 
 struct Broken : std::runtime_error {
@@ -33,12 +34,10 @@ std::string text_of(double v) {
 
 class Estimator {
  public:
-  explicit Estimator(const std::string& text) : text_(text) {}
+  Estimator(const std::string& text, const std::map<std::string, double>& symbol_terms, double max_terms)
+      : text_(text), symbol_terms_(symbol_terms), max_terms_(max_terms) {}
 
-  Bound run() {
-    const Bound b = sum();
-    return b;
-  }
+  Bound run() { return sum(); }
 
  private:
   void skip() {
@@ -53,13 +52,16 @@ class Estimator {
     return false;
   }
 
-  static void check(const Bound& b) {
+  void check(const Bound& b) const {
     if (b.digits > kMaxNumberDigits)
       throw Broken("a power that reaches about 10^" + text_of(b.digits) + " (more than " + text_of(kMaxNumberDigits) +
                    " digits, parameters counted as up to 10) is too large for exact arithmetic");
     if (b.degree > kMaxPolynomialDegree)
       throw Broken("a power of degree " + text_of(b.degree) + " in the fields or arguments (more than " +
                    text_of(kMaxPolynomialDegree) + "); forces are used to cubic order");
+    if (!(b.terms <= max_terms_))
+      throw Broken("it expands to about " + text_of(b.terms) + " terms (more than " + text_of(max_terms_) +
+                   "; a power of a sum expands to all its products) and would take minutes to derive");
   }
 
   Bound sum() {
@@ -70,7 +72,7 @@ class Estimator {
       const bool minus = text_[i_++] == '-';
       const Bound r = product();
       b = {b.number && r.number, std::max(b.digits, r.digits) + 0.31, minus ? b.value - r.value : b.value + r.value,
-           std::max(b.degree, r.degree)};
+           std::max(b.degree, r.degree), b.number && r.number ? 1 : b.terms + r.terms};
       check(b);
     }
   }
@@ -82,7 +84,8 @@ class Estimator {
       if (i_ >= text_.size() || (text_[i_] != '*' && text_[i_] != '/')) return b;
       const bool divide = text_[i_++] == '/';
       const Bound r = unary();
-      b = {b.number && r.number, b.digits + r.digits, divide ? b.value / r.value : b.value * r.value, b.degree + r.degree};
+      b = {b.number && r.number, b.digits + r.digits, divide ? b.value / r.value : b.value * r.value, b.degree + r.degree,
+           b.terms * r.terms};
       check(b);
     }
   }
@@ -105,7 +108,7 @@ class Estimator {
     return raise(base, exponent);
   }
 
-  static Bound raise(const Bound& base, const Bound& exponent) {
+  Bound raise(const Bound& base, const Bound& exponent) const {
     Bound b;
     if (exponent.number) {
       const double e = std::isfinite(exponent.value) ? std::abs(exponent.value) : HUGE_VAL;
@@ -114,7 +117,8 @@ class Estimator {
       b.value = std::pow(base.value, exponent.value);
       b.degree = base.degree * e;
       // A number to a huge power, or a field to one: e itself may be the problem (x^(10^10)).
-      if (e > 1e6) b.digits = b.degree = HUGE_VAL;
+      b.terms = multinomial_terms(base.terms, std::floor(e));
+      if (e > 1e6) b.digits = b.degree = b.terms = HUGE_VAL;
     } else {
       b.degree = base.degree;  // a symbolic exponent (r^alpha): never expanded
       b.digits = base.digits;
@@ -122,6 +126,13 @@ class Estimator {
     if (base.number && base.digits == 0 && std::abs(base.value) == 1) b.digits = b.degree = 0;  // 1^e, (-1)^e
     check(b);
     return b;
+  }
+
+  // Terms of (t terms)^n expanded: at most the number of monomials of degree n in t variables,
+  // C(t + n - 1, n) (a sum to a fractional power keeps its integer part expanded).
+  static double multinomial_terms(double t, double n) {
+    if (t <= 1 || n <= 1) return t <= 1 ? 1 : t;
+    return std::round(std::exp(std::lgamma(t + n) - std::lgamma(n + 1) - std::lgamma(t)));
   }
 
   Bound primary() {
@@ -153,9 +164,11 @@ class Estimator {
       // Fields (shift_*) have degree 1, a call of a named law (call_*) its cubic Taylor polynomial,
       // a parameter or argument degree 0 and a value counted as up to 10.
       if (!take('(')) {
-        if (name.rfind("shift_", 0) == 0) return {false, 0, 0, 1};
-        if (name.rfind("call_", 0) == 0) return {false, 0, 0, 3};
-        return {false, 1, 0, 0};
+        const auto known = symbol_terms_.find(name);
+        const double terms = known == symbol_terms_.end() ? 1 : known->second;
+        if (name.rfind("shift_", 0) == 0) return {false, 0, 0, 1, 1};
+        if (name.rfind("call_", 0) == 0) return {false, 0, 0, 3, terms};
+        return {false, 1, 0, 0, terms};
       }
       std::vector<Bound> arguments{sum()};
       while (take(',')) arguments.push_back(sum());
@@ -166,7 +179,7 @@ class Estimator {
     return {};
   }
 
-  static Bound call(const std::string& name, const std::vector<Bound>& a) {
+  Bound call(const std::string& name, const std::vector<Bound>& a) const {
     if (name == "pow" && a.size() == 2) return raise(a[0], a[1]);
     if ((name == "exp" || name == "sinh" || name == "cosh") && a[0].number &&
         !(std::abs(a[0].value) <= kMaxExponentialArgument))
@@ -182,12 +195,15 @@ class Estimator {
   }
 
   const std::string& text_;
+  const std::map<std::string, double>& symbol_terms_;
+  double max_terms_;
   std::size_t i_ = 0;
 };
 
 }  // namespace
 
-std::string expression_bound_problem(const std::string& plain) {
+ExpressionCost expression_cost(const std::string& plain, const std::map<std::string, double>& symbol_terms,
+                               double max_terms) {
   // Nesting first: the estimator below and GiNaC's parser recurse once per parenthesis.
   long depth = 0, deepest = 0;
   for (const char ch : plain) {
@@ -195,12 +211,11 @@ std::string expression_bound_problem(const std::string& plain) {
     deepest = std::max(deepest, depth);
   }
   if (deepest > kMaxNestingDepth)
-    return "parentheses nested " + std::to_string(deepest) + " deep (more than " + std::to_string(kMaxNestingDepth) + ")";
+    return {"parentheses nested " + std::to_string(deepest) + " deep (more than " + std::to_string(kMaxNestingDepth) + ")"};
   try {
-    Estimator(plain).run();
-    return {};
+    return {"", Estimator(plain, symbol_terms, max_terms).run().terms};
   } catch (const Broken& e) {
-    return e.what();
+    return {e.what()};
   }
 }
 

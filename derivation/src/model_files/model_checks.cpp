@@ -1,6 +1,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "lrchain/derivation/derivation_stop.hpp"
 #include "lrchain/derivation/model_derivation.hpp"
 
 namespace lrchain::derivation {
@@ -26,6 +27,7 @@ double max_difference(const ModelDerivation& m, const Symbols& s, const std::vec
   for (std::size_t b = 0; b < m.branches.size(); ++b) {
     if (!m.branches[b].real) continue;
     for (double theta : kThetas) {
+      poll_derivation_stop();
       const BranchPoint p(m.coefficients, s, m.values, theta, b);
       // `other`'s c and gamma at the same point (a re-derivation names them the same symbols).
       exmap other_subs;

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lrchain/derivation/derivation_stop.hpp"
 #include "lrchain/errors.hpp"
 
 namespace lrchain::derivation {
@@ -48,6 +49,8 @@ std::unique_ptr<ModelDerivation> derive_model(ModelFile file, const exmap& value
     return derive_checked(std::move(file), values, s);
   } catch (const InputError&) {
     throw;
+  } catch (const DerivationStopped&) {
+    throw;
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception& e) {
@@ -64,6 +67,8 @@ std::unique_ptr<ModelDerivation> derive_checked(ModelFile file, const exmap& val
   const auto t0 = std::chrono::steady_clock::now();
   try {
     m->coefficients = derive(m->file.model, s);
+  } catch (const DerivationStopped&) {
+    throw;
   } catch (const std::runtime_error& e) {
     throw InputError(m->file.path + ": model " + m->file.name + " cannot be derived: " + e.what());
   }

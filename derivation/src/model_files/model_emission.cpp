@@ -9,6 +9,7 @@
 
 #include "lrchain/derivation/branches.hpp"
 #include "lrchain/derivation/c_string_literal.hpp"
+#include "lrchain/derivation/derivation_stop.hpp"
 #include "lrchain/derivation/emit_cpp.hpp"
 
 namespace lrchain::derivation {
@@ -371,6 +372,7 @@ double evaluator_cancellation(const ModelDerivation& m, const Symbols& s) {
   // The factors emit_cpp prints: factor(numerator), factor(denominator), each expanded.
   std::vector<std::pair<std::string, std::vector<ex>>> factored;
   for (const auto& [name, e] : f.outputs) {
+    poll_derivation_stop();
     std::vector<ex> polynomials;
     // Not det M (zero on the branch by construction) nor the term scales (sums of magnitudes).
     if (name != "out[10]" && !f.term_scales.count(name)) {

@@ -49,7 +49,12 @@ class Translator {
           }
         }
         numeric exact_value;  // decimals become exact fractions (no inexact numbers in the derivation)
-        if (!parse_exact_number(text.substr(start, i - start), exact_value)) fail("bad number '" + text.substr(start, i - start) + "'");
+        const std::string number = text.substr(start, i - start);
+        if (!parse_exact_number(number, exact_value)) {
+          const std::string shown = number.size() > 24 ? number.substr(0, 20) + "... (" + std::to_string(number.size()) + " characters)" : number;
+          fail("bad number '" + shown + "' (a number has at most " + std::to_string(long(kMaxNumberDigits)) +
+               " digits and an exponent within +-" + std::to_string(long(kMaxNumberDigits)) + ")");
+        }
         std::ostringstream os;
         os << "(" << exact_value << ")";
         out += os.str();
@@ -139,18 +144,24 @@ class Translator {
     fail("unbalanced parentheses");
   }
 
-  // F(arg): the argument parsed on its own, the call replaced by a placeholder symbol.
+  // F(arg): the argument parsed on its own, the call replaced by a placeholder symbol. For the
+  // bounds it stands for the terms of F's Taylor coefficients (its law's), which every product with
+  // the call multiplies; the argument, a polynomial of degree <= 12 in the fields, is bounded alone.
   std::string function_call(const std::string& name, const std::string& argument_text) {
     const ex argument = parse(translate(argument_text));
     const std::string placeholder = "call_" + std::to_string(calls_.size());
+    const auto law = context_.function_terms.find(name);
+    placeholder_terms_[placeholder] = law == context_.function_terms.end() ? 1 : law->second;
     calls_.push_back({name, argument, realsymbol(placeholder)});
     table_[placeholder] = calls_.back().placeholder;
     return placeholder;
   }
 
  public:
-  ex parse(const std::string& plain) const {
-    if (const std::string problem = expression_bound_problem(plain); !problem.empty()) fail(problem);
+  ex parse(const std::string& plain, double* expanded_terms = nullptr) const {
+    const ExpressionCost cost = expression_cost(plain, placeholder_terms_, context_.max_terms);
+    if (!cost.problem.empty()) fail(cost.problem);
+    if (expanded_terms) *expanded_terms = cost.expanded_terms;
     try {
       parser reader(table_, /*strict=*/true);
       return reader(plain);
@@ -164,13 +175,15 @@ class Translator {
   const ExpressionContext& context_;
   std::vector<FunctionCall>& calls_;
   symtab table_;
+  std::map<std::string, double> placeholder_terms_;  // call_N -> terms of the Taylor polynomial it stands for
 };
 
 }  // namespace
 
-ex parse_model_expression(const std::string& text, const ExpressionContext& context, std::vector<FunctionCall>& calls) {
+ex parse_model_expression(const std::string& text, const ExpressionContext& context, std::vector<FunctionCall>& calls,
+                          double* expanded_terms) {
   Translator t(context, calls);
-  return t.parse(t.translate(text));
+  return t.parse(t.translate(text), expanded_terms);
 }
 
 std::string to_text(const ex& e) {
@@ -183,8 +196,9 @@ bool parse_exact_number(const std::string& text, numeric& value) {
   static const std::regex pattern(R"(\s*([+-]?)([0-9]*)(?:\.([0-9]*))?(?:[eE]([+-]?[0-9]+))?(?:\s*/\s*([0-9]+))?\s*)");
   std::smatch m;
   if (!std::regex_match(text, m, pattern) || (m[2].length() == 0 && m[3].length() == 0)) return false;
-  if (m[2].length() + m[3].length() > 400) return false;
-  if (m[4].matched && (m[4].length() > 5 || std::abs(std::stol(m[4].str())) > 400)) return false;  // |exponent| <= 400
+  // Up to kMaxNumberDigits digits and |exponent| (expression_bounds.hpp; docs/models.md).
+  if (m[2].length() + m[3].length() > kMaxNumberDigits || (m[5].matched && m[5].length() > kMaxNumberDigits)) return false;
+  if (m[4].matched && (m[4].length() > 6 || std::abs(std::stol(m[4].str())) > kMaxNumberDigits)) return false;
   const std::string digits = m[2].str() + m[3].str();
   numeric mantissa = 0;
   for (char c : digits) mantissa = mantissa * 10 + (c - '0');

@@ -145,10 +145,12 @@ class Loader {
       ExpressionContext context;
       context.symbols = parameter_table();
       context.symbols[f.argument] = f.argument_symbol;
+      context.max_terms = kMaxLawTerms;  // its Taylor coefficients multiply each other in the derivation
       std::vector<FunctionCall> calls;
       f.expression_text = text_of(t, "expression", file_, "function " + f.name);
       context.where = at(file_, *t.get("expression")) + ": function " + f.name;
-      f.expression = parse_model_expression(f.expression_text, context, calls);
+      double law_terms = 1;
+      f.expression = parse_model_expression(f.expression_text, context, calls, &law_terms);
       out_.divisors.push_back({context.where, "the expression of function " + f.name, f.expression, false});
       if (t.contains("contact")) {
         f.contact_text = text_of(t, "contact", file_, "function " + f.name);
@@ -166,6 +168,8 @@ class Loader {
           f.taylor_names.push_back(*s);
         }
       }
+      // Named Taylor coefficients (K2, K3, K4) stay single symbols in the forces.
+      function_terms_[f.name] = f.taylor_names.empty() ? law_terms : 1;
       out_.functions.push_back(f);
     }
   }
@@ -245,6 +249,7 @@ class Loader {
     context.fields = m.fields;
     for (const auto& row : m.shifted) context.shifted.emplace_back(row.begin(), row.end());
     for (const auto& f : out_.functions) context.functions.push_back(f.name);
+    context.function_terms = function_terms_;
     ExpressionContext mass_context;
     mass_context.symbols = parameter_table();
     exmap zero;
@@ -284,6 +289,7 @@ class Loader {
   std::string file_;
   toml::table root_;
   ModelFile out_;
+  std::map<std::string, double> function_terms_;  // expanded terms of each law (expression_bounds.hpp)
 };
 
 }  // namespace

@@ -68,7 +68,7 @@ exmap parameter_values(const ModelFile& model, const std::vector<std::pair<std::
                        (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
     }
     numeric v;
-    if (!parse_exact_number(text, v)) throw InvalidParameter(name, "'" + text + "' is not a number (exponent within +-400) or a fraction such as 4/9");
+    if (!parse_exact_number(text, v)) throw InvalidParameter(name, "'" + text + "' is not a number (at most 2000 digits, exponent within +-2000) or a fraction such as 4/9");
     if (!it->range.contains(v)) throw InvalidParameter(name, to_text(v) + " is outside its range " + it->range.text);
     values[it->symbol] = v;
   }

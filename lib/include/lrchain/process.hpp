@@ -7,6 +7,7 @@
 // (a `reproduce` killed with SIGKILL leaves no run writing into DIR.partial). The signal follows the
 // *thread* that started the child: wait() for a child in the thread that constructed it (every
 // caller does). posix_spawn cannot set the parent-death signal, hence the fork.
+#include <atomic>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -25,6 +26,10 @@ struct ProcessOptions {
   // started (e.g. a child lrchain run and its gnuplot), and the terminal's Ctrl-C reaches only the
   // caller, which decides what to pass on.
   bool own_process_group = false;
+  // While the child runs, wait() polls this flag (every 50 ms); once it is set, the child (its whole
+  // group with own_process_group, e.g. a compiler driver and its cc1plus) gets SIGKILL and
+  // ProcessResult::stopped is set. nullptr: wait until the child ends.
+  const std::atomic<bool>* stop = nullptr;
   // Extra environment entries "NAME=value" (replace the caller's of the same name); variables
   // named in unset_environment are removed from the child's environment.
   std::vector<std::string> environment;
@@ -35,6 +40,7 @@ struct ProcessResult {
   int exit_code = -1;           // valid when exited
   int signal_number = 0;        // non-zero when killed by a signal
   bool exited = false;
+  bool stopped = false;         // killed because ProcessOptions::stop was set
   std::string output;           // stdout, when captured
   std::string error_output;     // stderr, when captured
   bool ok() const { return exited && exit_code == 0; }
@@ -57,6 +63,7 @@ class ChildProcess {
   int out_fd_ = -1, err_fd_ = -1;
   bool waited_ = false;
   bool own_group_ = false;
+  const std::atomic<bool>* stop_ = nullptr;
 };
 
 // Runs argv[0] (looked up in PATH when it has no '/') with argv, waits for it.

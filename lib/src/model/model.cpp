@@ -186,6 +186,48 @@ namespace {
   return true;
 }
 
+// The coefficients at `parameters` (one value per parameter), intermediates recomputed.
+bool coefficients_with(const ModelDefinition& d, const std::vector<double>& parameters, Index branch, double theta) {
+  std::vector<double> q(d.parameters.size() + d.intermediates.size(), 0.0);
+  d.evaluators.evaluate_intermediates(parameters.data(), q.data());
+  NlsCoefficients c;
+  return evaluate_coefficients(d, q.data(), branch, theta, c);
+}
+
+// Where the coefficients at (branch, theta) fail although they exist there at the model's defaults:
+// the one parameter whose own default brings them back (e.g. a = 1e-300 underflows omega^2 to 0),
+// as an InvalidParameter of that name; nothing when theta itself is the cause.
+void blame_parameter(const Model& model, Index branch, double theta) {
+  const ModelDefinition& d = model.definition();
+  const std::size_t n = d.parameters.size();
+  std::vector<double> defaults;
+  for (const auto& p : d.parameters) defaults.push_back(p.default_value);
+  if (!coefficients_with(d, defaults, branch, theta)) return;  // no frequency here even at the defaults
+  const std::vector<double> values(model.inputs().begin(), model.inputs().begin() + std::ptrdiff_t(n));
+  const auto text = [](double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", v);
+    return std::string(buffer);
+  };
+  std::string changed;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (values[i] == defaults[i]) continue;
+    changed += (changed.empty() ? "" : ", ") + d.parameters[i].name + " = " + text(values[i]);
+    std::vector<double> trial = values;
+    trial[i] = defaults[i];
+    if (coefficients_with(d, trial, branch, theta))
+      throw InvalidParameter(d.parameters[i].name,
+                             text(values[i]) + " leaves branch " + d.branch_names[std::size_t(branch)] + " of model " + d.name +
+                                 " without a positive frequency at theta = " + text(theta) +
+                                 " (it vanishes or underflows in double precision); at its default " + text(defaults[i]) +
+                                 " the coefficients exist there");
+  }
+  throw InvalidParameter(changed.substr(0, changed.find(" =")),
+                         "the coefficients of branch " + d.branch_names[std::size_t(branch)] + " of model " + d.name +
+                             " cannot be evaluated at theta = " + text(theta) + " with " + changed +
+                             " (no positive frequency in double precision); at the model's defaults they can");
+}
+
 }  // namespace
 
 bool coefficients_at(const ModelDefinition& d, const double* q, Index branch, double theta,
@@ -205,6 +247,7 @@ NlsCoefficients coefficients(const Model& model, Index branch, double theta) {
   double sh, ch;
   detail::half_angle_sincos(0.5 * theta, sh, ch);
   d.evaluators.evaluate_dispersion(4.0 * sh * sh, 2.0 * sh * ch, model.inputs().data(), w);
+  blame_parameter(model, branch, theta);
   if (!omega_squared_roots(w, d.degree, roots))
     throw InvalidParameter("theta", "model " + d.name + " has no real frequency at this wavenumber");
   throw InvalidParameter("theta", "branch " + d.branch_names[static_cast<std::size_t>(branch)] + " of model " + d.name +

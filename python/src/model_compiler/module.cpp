@@ -3,6 +3,8 @@
 // lrchain.load_model imports it for a model file that is not a shipped one.
 #include <pybind11/pybind11.h>
 
+#include <atomic>
+
 #include "../model_capsule.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/model_compiler.hpp"
@@ -11,17 +13,36 @@ namespace py = pybind11;
 
 namespace {
 
+constexpr const char* kStopFlagCapsuleName = "lrchain.stop_flag";
+
+// The stop flag a caller passes as a capsule (lrchain's InterruptGuard flag), or nullptr.
+const std::atomic<bool>* stop_flag(const py::object& stop) {
+  if (stop.is_none()) return nullptr;
+  return static_cast<const std::atomic<bool>*>(PyCapsule_GetPointer(stop.ptr(), kStopFlagCapsuleName));
+}
+
+// Stopped by the caller's flag (SIGINT): KeyboardInterrupt, unless a Python signal handler raised.
+[[noreturn]] void raise_interrupted(const lrchain::Interrupted& e) {
+  if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
+  throw py::error_already_set();
+}
+
 // The compiled definition of the model file at `path` as a capsule (model_capsule.hpp). A bad model
 // file raises lrchain.InputError (a ValueError); a missing or failing compiler RuntimeError. Without
 // a compiler (the GiNaC fallback) it warns (RuntimeWarning) as the CLI does on stderr.
 // The GIL is released only around the C++ compile path, which touches no Python object and holds
 // the process-wide lock of the symbolic engine itself (model_compiler.hpp).
-py::capsule compile(const std::string& path) {
+// `stop` (a capsule of the caller's SIGINT flag) is polled while deriving and compiling: KeyboardInterrupt.
+py::capsule compile(const std::string& path, const py::object& stop) {
   lrchain::python::ModelDefinitionHandle definition;
   lrchain::CompiledModelInfo info;
+  const std::atomic<bool>* flag = stop_flag(stop);
   try {
     py::gil_scoped_release release;  // deriving and compiling takes seconds
-    definition = lrchain::compile_model_file(path, &info);
+    definition = lrchain::compile_model_file(path, &info, flag);
+  } catch (const lrchain::Interrupted& e) {
+    raise_interrupted(e);
   } catch (const lrchain::InputError& e) {
     const py::object input_error = py::module_::import("lrchain.errors").attr("InputError");
     PyErr_SetString(input_error.ptr(), e.what());
@@ -39,12 +60,15 @@ py::capsule compile(const std::string& path) {
 
 // The lattice code of the model file at `path` compiled into the per-user cache and loaded:
 // (capsule, from_cache, library). Raises lrchain.InputError for a bad file or a missing compiler.
-py::tuple compile_lattice(const std::string& path) {
+py::tuple compile_lattice(const std::string& path, const py::object& stop) {
   lrchain::python::LatticeKernelsHandle kernels;
   lrchain::CompiledModelInfo info;
+  const std::atomic<bool>* flag = stop_flag(stop);
   try {
     py::gil_scoped_release release;  // deriving and compiling takes seconds
-    kernels = lrchain::compile_model_lattice(path, &info);
+    kernels = lrchain::compile_model_lattice(path, &info, flag);
+  } catch (const lrchain::Interrupted& e) {
+    raise_interrupted(e);
   } catch (const lrchain::InputError& e) {
     const py::object input_error = py::module_::import("lrchain.errors").attr("InputError");
     PyErr_SetString(input_error.ptr(), e.what());
@@ -62,9 +86,10 @@ py::tuple compile_lattice(const std::string& path) {
 
 PYBIND11_MODULE(_model_compiler, m) {
   m.doc() = "Run-time compiler of lattice model files for lrchain.load_model (GiNaC, the C++ compiler).";
-  m.def("compile", &compile, py::arg("path"),
-        "The model file at path derived, compiled into the per-user cache and loaded: a capsule for lrchain.");
-  m.def("compile_lattice", &compile_lattice, py::arg("path"),
+  m.def("compile", &compile, py::arg("path"), py::arg("stop") = py::none(),
+        "The model file at path derived, compiled into the per-user cache and loaded: a capsule for lrchain. "
+        "stop: a capsule of lrchain's SIGINT flag, polled while deriving and compiling.");
+  m.def("compile_lattice", &compile_lattice, py::arg("path"), py::arg("stop") = py::none(),
         "The lattice code of the model file at path compiled into the per-user cache and loaded: "
         "(capsule, from_cache, library).");
   m.attr("compiler") = lrchain::model_compiler_path();

@@ -6,6 +6,7 @@
 // once the cache and the object pass their checks (model_cache.hpp). A second call with the same
 // file reuses it. Every function here holds derivation::symbolic_engine_mutex() (GiNaC is not
 // thread-safe), so any front end may call them from several threads.
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -25,9 +26,13 @@ struct CompiledModelInfo {
 // The model of `path` with compiled evaluators; when the compiler is not installed, with the derived
 // expressions evaluated by GiNaC in double precision instead (info->fallback_reason says so).
 // Throws InputError for a bad model file (a failing derivation check included; the file read by
-// read_model_file_bytes) or an unsafe cache directory, and std::runtime_error when the compiler fails.
+// read_model_file_bytes) or an unsafe cache directory, and std::runtime_error when the compiler fails
+// (InputError naming LRCHAIN_MODEL_CXX when that variable chose it). `stop` (e.g. a SIGINT flag) is
+// polled between the derivation's steps and while the compiler runs (its whole process group is
+// killed): then lrchain::Interrupted (SIGINT) is thrown and nothing is left in the cache.
 std::shared_ptr<const ModelDefinition> compile_model_file(const std::filesystem::path& path,
-                                                          CompiledModelInfo* info = nullptr);
+                                                          CompiledModelInfo* info = nullptr,
+                                                          const std::atomic<bool>* stop = nullptr);
 
 // The lattice kernels (sim/include/lrchain/sim/model_lattice_abi.h) of the model file `path`, emitted by
 // the lattice code generator and compiled like the evaluators: same cache, key rules (file bytes,
@@ -35,7 +40,8 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const std::filesystem:
 // Checks the table's abi_version and model name. Throws InputError for a bad model file or when the
 // compiler is not installed (no slow fallback for lattice runs), std::runtime_error when it fails.
 std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const std::filesystem::path& path,
-                                                                     CompiledModelInfo* info = nullptr);
+                                                                     CompiledModelInfo* info = nullptr,
+                                                                     const std::atomic<bool>* stop = nullptr);
 
 // Throws the InputError of compile_model_lattice when the lattice code of `path` is not cached and
 // the compiler is not installed: lattice runs call it before anything else.
