@@ -7,10 +7,12 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/regime/model_regime.hpp"
+#include "regime_lattice.hpp"
 
 namespace lrchain::jobs {
 
 using namespace lrchain::regime;
+using namespace regime_detail;
 
 namespace {
 
@@ -22,22 +24,26 @@ ParameterAxis parse_axis(const std::string& axis) {
 
 }  // namespace
 
+Range default_axis_range(const RegimeLattice& lattice, const std::string& axis, const std::string& branch) {
+  if (lattice.model) return plan_model_axis(*lattice.model, axis, branch, std::nullopt).ranges.at(0);
+  if (parse_axis(axis.empty() ? "rho" : axis) == ParameterAxis::delta0) return default_delta0_range;
+  return default_rho_range(parse_branch(branch));
+}
+
 void validate(const RegimeCurvesConfig& c) {
-  const double lo = c.range[0], hi = c.range[1];
   if (c.lattice.model) {
-    const Model& m = *c.lattice.model;
-    m.branch(c.branch);
-    const ParameterLine line(m, c.axis);
-    if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi)) throw InvalidParameter("range", "must be finite with lo < hi");
-    line.check_range(lo, hi, "range");
     if (c.omega_plane) throw InvalidParameter("omega_plane", "the omega plane is the resonant chain's (Figs. 4-5)");
+    plan_model_axis(*c.lattice.model, c.axis, c.branch, c.range);
     return;
   }
   validate(c.lattice.params);
   parse_branch(c.branch);
-  const ParameterAxis a = parse_axis(c.axis);
-  if (!(std::isfinite(lo) && std::isfinite(hi) && lo > 0 && lo < hi))
-    throw InvalidParameter(c.axis, "range must be finite with 0 < lo < hi");
+  const ParameterAxis a = parse_axis(c.axis.empty() ? "rho" : c.axis);
+  if (c.range) {
+    const double lo = (*c.range)[0], hi = (*c.range)[1];
+    if (!(std::isfinite(lo) && std::isfinite(hi) && lo > 0 && lo < hi))
+      throw InvalidParameter("range", "must be finite with 0 < lo < hi");
+  }
   if (c.omega_plane && a != ParameterAxis::delta0)
     throw InvalidParameter("omega_plane", "the omega plane goes with axis='delta0' (Figs. 4-5)");
 }
@@ -47,10 +53,13 @@ std::vector<BoundaryCurve> run(const RegimeCurvesConfig& c) {
   validate(c);
   if (c.lattice.model) {
     const Model& m = *c.lattice.model;
-    return boundary_curves(m, m.branch(c.branch), c.axis, c.range[0], c.range[1]);
+    const ModelAxisPlan plan = plan_model_axis(m, c.axis, c.branch, c.range);
+    return boundary_curves(m, plan.branches.at(0), plan.axis, plan.ranges[0][0], plan.ranges[0][1]);
   }
   const Branch b = parse_branch(c.branch);
-  std::vector<BoundaryCurve> curves = boundary_curves(c.lattice.params, b, parse_axis(c.axis), c.range[0], c.range[1]);
+  const std::string axis = c.axis.empty() ? "rho" : c.axis;
+  const Range r = c.range.value_or(default_axis_range(c.lattice, axis, c.branch));
+  std::vector<BoundaryCurve> curves = boundary_curves(c.lattice.params, b, parse_axis(axis), r[0], r[1]);
   if (c.omega_plane) to_omega_plane(curves, c.lattice.params, b);
   return curves;
 }

@@ -164,11 +164,18 @@ nlohmann::json to_json(const RegimeMapResult& result, const RegimeMapFiles& file
 struct RegimeCurvesConfig {
   RegimeLattice lattice;
   std::string branch = "optical";  // a branch name
-  // The parameter: resonant chain "rho" or "delta0"; a model: any of its parameters.
-  std::string axis = "rho";
-  Range range{0.01, 30.0};  // lo hi of `axis`, finite, 0 < lo < hi (resonant chain)
-  bool omega_plane = false; // resonant chain, axis delta0: map theta to omega (Figs. 4-5)
+  // The parameter: resonant chain "rho" (the default) or "delta0"; a model: any of its parameters
+  // (default rho for the resonant chain, else the model's first).
+  std::string axis;
+  // lo hi of `axis`, finite, lo < hi (resonant chain: 0 < lo); default: the map's x range of this
+  // branch (default_axis_range).
+  std::optional<Range> range;
+  bool omega_plane = false;  // resonant chain, axis delta0: map theta to omega (Figs. 4-5)
 };
+
+// The default x range of a map (and of boundary curves) along `axis` on `branch`: resonant chain rho
+// default_rho_range, delta0 default_delta0_range; a model as RegimeMapConfig::axis_range.
+Range default_axis_range(const RegimeLattice& lattice, const std::string& axis, const std::string& branch);
 
 void validate(const RegimeCurvesConfig& config);
 std::vector<regime::BoundaryCurve> run(const RegimeCurvesConfig& config);
