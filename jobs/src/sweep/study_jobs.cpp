@@ -15,7 +15,7 @@
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/dispersion.hpp"
 #include "lrchain/errors.hpp"
-#include "lrchain/regime/focusing_intervals.hpp"
+#include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
 
 namespace lrchain::jobs::sweep {
@@ -229,7 +229,7 @@ std::vector<std::string> regime_scalar_names() {
   return n;
 }
 
-// The focusing intervals of both branches, as `lrchain regime intervals --branch B`.
+// The focusing intervals of both branches: the job of `lrchain regime intervals --branch B`.
 JobResult run_regime(const Document& doc) {
   const CheckedTable root = check(doc, study_schema("regime intervals"));
   const Params p = read_model(root);
@@ -237,7 +237,11 @@ JobResult run_regime(const Document& doc) {
   if (auto r = root.table("regime")) r->read("samples", samples);
   JobResult r;
   for (Branch b : both_branches) {
-    const auto s = regime::regime_structure(regime::regime_functions(p, b), {int(samples), 1e-12});
+    RegimeIntervalsConfig config;
+    config.lattice.params = p;
+    config.branch = std::string(to_string(b));
+    config.samples = int(samples);
+    const auto s = run(config).structure;
     double length = 0;
     for (const auto& i : s.intervals) {
       length += i.hi - i.lo;
