@@ -19,6 +19,7 @@ import numpy as np
 
 from . import _lrchain
 from ._keywords import real_numbers
+from .errors import InvalidParameterError
 
 #: Pixel values of the maps.
 OUTSIDE, DEFOCUSING, FOCUSING, SINGULAR = -1, 0, 1, 2
@@ -99,11 +100,29 @@ def _axis(spec, n_default):
     return (spec[0], spec[1]), int(spec[2])
 
 
-def _map(lattice, plane, branch, axis, x, y, x_log, x_name, y_name):
+def _keywords_named(call, keywords):
+    """``call()``, with an InvalidParameterError naming a job's Config key (e.g. "nx", "rho_range")
+    renamed to the keyword of this function that carries it (``keywords``: key -> keyword)."""
+    try:
+        return call()
+    except InvalidParameterError as e:
+        new = keywords.get(e.parameter)
+        if new is None:
+            raise
+        message = str(e)
+        if message.startswith(f"invalid {e.parameter}:"):
+            message = f"invalid {new}:" + message[len(f"invalid {e.parameter}:"):]
+        raise InvalidParameterError(message, new) from None
+
+
+def _map(lattice, plane, branch, axis, x, y, x_log, x_keyword, y_keyword, x_name, y_name):
     d = _job_defaults()
     x_range, nx = _axis(x, d["nx"])
     y_range, ny = _axis(y, d["ny"])
-    m = _lrchain.regime_map(lattice, plane, branch, axis, x_range, nx, y_range, ny, x_log)
+    keywords = {"nx": x_keyword, "ny": y_keyword, "rho_range": x_keyword, "delta0_range": x_keyword,
+                "axis_range": x_keyword, "theta_range": y_keyword, "omega_range": y_keyword}
+    m = _keywords_named(lambda: _lrchain.regime_map(lattice, plane, branch, axis, x_range, nx, y_range, ny, x_log),
+                        keywords)
     return RegimeMap(m["x"], m["y"], m["values"], x_name or m["axis"], y_name)
 
 
@@ -115,7 +134,7 @@ def theta_rho_map(params, branch, rho=None, theta=None, rho_log=False):
     (0.01, 2.5) on the acoustic one (as ``lrchain regime map``), 600 points; ``theta`` = (lo, hi, n)
     inside (0, pi] (default (pi/600, pi, 600)); ``rho_log`` spaces rho geometrically. ``params`` may be
     an :class:`lrchain.Model` with a parameter rho (see :func:`theta_parameter_map`)."""
-    return _map(params, "theta-rho", branch, "rho", rho, theta, rho_log, "rho", "theta")
+    return _map(params, "theta-rho", branch, "rho", rho, theta, rho_log, "rho", "theta", "rho", "theta")
 
 
 @real_numbers
@@ -127,7 +146,7 @@ def theta_parameter_map(model, branch, axis=None, x=None, theta=None):
     ``x`` = (lo, hi) or (lo, hi, n) inside the parameter's range (default: its declared range when
     bounded, open ends moved in by 1e-3 of its width; rho of the resonant chain as Fig. 2), 600
     points; ``theta`` as in :func:`theta_rho_map`. The map's ``x_name`` is the parameter's name."""
-    return _map(model, "theta-parameter", branch, axis or "", x, theta, False, None, "theta")
+    return _map(model, "theta-parameter", branch, axis or "", x, theta, False, "x", "theta", None, "theta")
 
 
 @real_numbers
@@ -137,7 +156,7 @@ def delta0_omega_map(params, branch, delta0=None, omega=None, delta0_log=False):
     ``omega`` = (lo, hi) or (lo, hi, n), by default the branch's band over the delta0 range (optical
     [0.98 omega_lo, 1.02 omega_hi], acoustic [0, 1.02 omega_hi], as ``lrchain regime map --plane
     delta0-omega``), 600 points; each end within [0, twice the top of the optical band]."""
-    return _map(params, "delta0-omega", branch, "", delta0, omega, delta0_log, "delta0", "omega")
+    return _map(params, "delta0-omega", branch, "", delta0, omega, delta0_log, "delta0", "omega", "delta0", "omega")
 
 
 def map_defaults(params, branch):
