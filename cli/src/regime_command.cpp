@@ -48,7 +48,7 @@ auto with_option_names(Job&& job) {
 // The lattice of a regime job: a --model file, or the resonant chain at --rho etc. (and --set).
 jobs::RegimeLattice lattice_of(const ModelSelection& selection, const Model& m) {
   if (!selection.file.empty()) return {Params{}, std::make_shared<const Model>(m)};
-  return {Params{m.parameter("alpha"), m.parameter("delta0"), m.parameter("kappa"), m.parameter("rho")}, nullptr};
+  return jobs::resonant_chain_lattice(m);
 }
 
 // lo hi of a range option; none when not given.

@@ -26,6 +26,13 @@ jobs::RegimeLattice lattice_of(const py::handle& lattice) {
   return {lattice.cast<Params>(), nullptr};
 }
 
+// jobs::run(config) with the GIL released (the job holds no Python object).
+template <class Config>
+auto run_without_gil(const Config& config) {
+  py::gil_scoped_release release;
+  return jobs::run(config);
+}
+
 py::array_t<double> axis_values(const GridAxis& a) {
   py::array_t<double> v(a.n);
   for (Index i = 0; i < a.n; ++i) v.mutable_at(i) = a.at(i);
@@ -39,11 +46,7 @@ py::dict structure(const py::handle& lattice, const std::string& branch, int sam
   c.branch = branch;
   c.samples = samples;
   c.tolerance = tolerance;
-  jobs::RegimeIntervalsResult r;
-  {
-    py::gil_scoped_release release;
-    r = jobs::run(c);
-  }
+  const auto r = run_without_gil(c);
   const auto& s = r.structure;
   py::array_t<double> lo(s.intervals.size()), hi(s.intervals.size()), roots(s.roots.size());
   py::list lo_cause, hi_cause, root_cause;
@@ -90,11 +93,7 @@ py::dict map(const py::handle& lattice, const std::string& plane, const std::str
     c.theta_range = y;
     c.rho_log = x_log;
   }
-  jobs::RegimeMapResult r;
-  {
-    py::gil_scoped_release release;
-    r = jobs::run(c);
-  }
+  const auto r = run_without_gil(c);
   const jobs::RegimeMapPanel& panel = r.panels.at(0);
   py::array_t<std::int8_t> values({panel.y.n, panel.x.n});
   std::copy(panel.values.begin(), panel.values.end(), values.mutable_data());
@@ -116,11 +115,7 @@ py::list curves(const py::handle& lattice, const std::string& branch, const std:
   c.axis = axis;
   c.omega_plane = omega_plane;
   c.range = range;
-  std::vector<BoundaryCurve> traced;
-  {
-    py::gil_scoped_release release;
-    traced = jobs::run(c);
-  }
+  const auto traced = run_without_gil(c);
   py::list out;
   for (const BoundaryCurve& curve : traced) {
     py::array_t<double> pts({static_cast<py::ssize_t>(curve.points.size()), py::ssize_t(2)});
@@ -144,11 +139,7 @@ std::string thresholds(const py::object& model, int scan, const std::string& bra
   c.branch = branch;
   c.axis = axis;
   c.axis_range = axis_range;
-  jobs::RegimeThresholdsResult r;
-  {
-    py::gil_scoped_release release;
-    r = jobs::run(c);
-  }
+  const auto r = run_without_gil(c);
   return jobs::to_json(r).dump();
 }
 

@@ -51,8 +51,7 @@ std::vector<Branch> branches_of(const std::string& text) {
 RegimeMapConfig through_params(const RegimeMapConfig& c) {
   if (!c.lattice.model || c.plane != "delta0-omega" || c.lattice.model->name() != "resonant_chain") return c;
   RegimeMapConfig resonant = c;
-  resonant.lattice.params = resonant_params(*c.lattice.model);
-  resonant.lattice.model.reset();
+  resonant.lattice = resonant_chain_lattice(*c.lattice.model);
   return resonant;
 }
 
@@ -124,6 +123,23 @@ ModelAxisPlan validate_model(const RegimeMapConfig& c, const fs::path& out_dir) 
   return plan;
 }
 
+// A resonant-chain panel of branch b.
+RegimeMapPanel resonant_panel(Branch b) {
+  RegimeMapPanel panel;
+  panel.branch = std::string(to_string(b));
+  panel.resonant_branch = b;
+  return panel;
+}
+
+// Moves a computed pixel map (RegimeMap or ModelRegimeMap) and its wall time into the panel.
+template <class PixelMap>
+void take_map(RegimeMapPanel& panel, PixelMap&& m, std::chrono::steady_clock::time_point started) {
+  panel.map_seconds = seconds_since(started);
+  panel.x = m.x;
+  panel.y = m.y;
+  panel.values = std::move(m.values);
+}
+
 GridAxis theta_axis(const RegimeMapConfig& c) {
   const Range t = c.theta_range.value_or(Range{std::numbers::pi / c.ny, std::numbers::pi});
   return GridAxis{t[0], t[1], c.ny};
@@ -133,17 +149,11 @@ GridAxis theta_axis(const RegimeMapConfig& c) {
 void run_theta_rho(const RegimeMapConfig& c, RegimeMapResult& r) {
   const Params& p = c.lattice.params;
   for (const Branch b : branches_of(c.branch)) {
-    RegimeMapPanel panel;
-    panel.branch = std::string(to_string(b));
-    panel.resonant_branch = b;
+    RegimeMapPanel panel = resonant_panel(b);
     const Range rr = c.rho_range.value_or(default_rho_range(b));
     const GridAxis rho{rr[0], rr[1], c.nx, c.rho_log};
     const auto t0 = std::chrono::steady_clock::now();
-    RegimeMap m = theta_rho_map(p, b, rho, theta_axis(c));
-    panel.map_seconds = seconds_since(t0);
-    panel.x = m.x;
-    panel.y = m.y;
-    panel.values = std::move(m.values);
+    take_map(panel, theta_rho_map(p, b, rho, theta_axis(c)), t0);
     if (c.curves) {
       const auto t1 = std::chrono::steady_clock::now();
       panel.curves = boundary_curves(p, b, ParameterAxis::rho, rr[0], rr[1]);
@@ -165,18 +175,12 @@ void run_theta_rho(const RegimeMapConfig& c, RegimeMapResult& r) {
 void run_delta0_omega(const RegimeMapConfig& c, RegimeMapResult& r) {
   const Params& p = c.lattice.params;
   for (const Branch b : branches_of(c.branch)) {
-    RegimeMapPanel panel;
-    panel.branch = std::string(to_string(b));
-    panel.resonant_branch = b;
+    RegimeMapPanel panel = resonant_panel(b);
     const Range dr = c.delta0_range.value_or(default_delta0_range);
     const GridAxis delta0{dr[0], dr[1], c.nx, c.delta0_log};
     const Range wr = c.omega_range.value_or(default_omega_range(p, b, dr));
     const auto t0 = std::chrono::steady_clock::now();
-    RegimeMap m = delta0_omega_map(p, b, delta0, GridAxis{wr[0], wr[1], c.ny});
-    panel.map_seconds = seconds_since(t0);
-    panel.x = m.x;
-    panel.y = m.y;
-    panel.values = std::move(m.values);
+    take_map(panel, delta0_omega_map(p, b, delta0, GridAxis{wr[0], wr[1], c.ny}), t0);
     if (c.bands) {
       std::vector<std::vector<FocusingInterval>> per(static_cast<std::size_t>(delta0.n));
 #pragma omp parallel for schedule(dynamic)
@@ -211,11 +215,7 @@ void run_model(const RegimeMapConfig& c, const ModelAxisPlan& plan, RegimeMapRes
     panel.branch = m.definition().branch_names[static_cast<std::size_t>(b)];
     const Range& rr = plan.ranges[k];
     const auto t0 = std::chrono::steady_clock::now();
-    ModelRegimeMap map = parameter_theta_map(m, b, plan.axis, GridAxis{rr[0], rr[1], c.nx}, theta_axis(c));
-    panel.map_seconds = seconds_since(t0);
-    panel.x = map.x;
-    panel.y = map.y;
-    panel.values = std::move(map.values);
+    take_map(panel, parameter_theta_map(m, b, plan.axis, GridAxis{rr[0], rr[1], c.nx}, theta_axis(c)), t0);
     if (c.curves) {
       const auto t1 = std::chrono::steady_clock::now();
       panel.curves = boundary_curves(m, b, plan.axis, rr[0], rr[1]);

@@ -7,14 +7,18 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/model_regime.hpp"
 
+namespace lrchain::jobs {
+
+RegimeLattice resonant_chain_lattice(const Model& m) {
+  return {Params{m.parameter("alpha"), m.parameter("delta0"), m.parameter("kappa"), m.parameter("rho")}, nullptr};
+}
+
+}  // namespace lrchain::jobs
+
 namespace lrchain::jobs::regime_detail {
 
 using nlohmann::json;
 using namespace lrchain::regime;
-
-Params resonant_params(const Model& m) {
-  return Params{m.parameter("alpha"), m.parameter("delta0"), m.parameter("kappa"), m.parameter("rho")};
-}
 
 Index model_branch(const Model& m, const std::string& name) {
   if (!name.empty()) return m.branch(name);

@@ -1,7 +1,6 @@
 #pragma once
-// What the regime jobs share (regime_job.hpp): the resonant chain's Params of a loaded model, a
-// model's branch by name, the (parameter, theta) plan of a model's map or scan, and the JSON of
-// intervals and events.
+// What the regime jobs share (regime_job.hpp): a model's branch by name, the (parameter, theta)
+// plan of a model's map or scan, and the JSON of intervals and events.
 #include <string>
 #include <vector>
 
@@ -10,9 +9,6 @@
 #include "lrchain/jobs/regime_job.hpp"
 
 namespace lrchain::jobs::regime_detail {
-
-// The resonant chain's parameters of a loaded resonant_chain model.
-Params resonant_params(const Model& m);
 
 // A branch of a model by name; empty: "optical" if the model has it, else its only branch.
 Index model_branch(const Model& m, const std::string& name);

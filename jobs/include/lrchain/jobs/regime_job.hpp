@@ -37,6 +37,9 @@ struct RegimeLattice {
   std::shared_ptr<const Model> model;  // a loaded model; null: the resonant chain at `params`
 };
 
+// The resonant chain (its specialised path) at the parameters of a loaded resonant_chain model.
+RegimeLattice resonant_chain_lattice(const Model& resonant_chain);
+
 // ---- intervals ------------------------------------------------------------------------------
 
 // Focusing theta-intervals of one branch (`lrchain regime intervals`, lrchain.regime.intervals).
