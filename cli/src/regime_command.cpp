@@ -2,6 +2,7 @@
 // (Sec. 3.3, Figs. 2, 4, 5), an argv adapter onto the regime jobs (lrchain/jobs/regime_job.hpp).
 // JSON summary on stdout; data, gnuplot scripts and figures in --out.
 #include <algorithm>
+#include <fmt/format.h>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -57,6 +58,9 @@ std::optional<jobs::Range> range_option(const std::vector<std::string>& given, c
   if (given.size() != 2) throw InvalidParameter(name, "range needs two numbers lo hi");
   return jobs::Range{parse_number(given[0], name), parse_number(given[1], name)};
 }
+
+// "lo<sep>hi" of a default range for a help text.
+std::string range_text(const jobs::Range& r, const char* sep) { return fmt::format("{:g}{}{:g}", r[0], sep, r[1]); }
 
 // ---- regime intervals -----------------------------------------------------------------------
 
@@ -198,7 +202,7 @@ void register_regime(CLI::App& app) {
                  "its only branch)")
       ->type_name("NAME");
   add_integer(*in, "--samples", ia->samples, config::intervals_samples.least, config::intervals_samples.most,
-              "theta samples used to bracket the zeros (default 2048)");
+              fmt::format("theta samples used to bracket the zeros (default {})", jobs::RegimeIntervalsConfig{}.samples));
   in->add_flag("--json", ia->json_flag, "print the JSON on one line (default: indented)");
   add_examples(*in, {"lrchain regime intervals --branch acoustic --rho 1 --delta0 4/9"});
   in->callback([ia, in] { run_intervals(*ia, *in); });
@@ -210,8 +214,11 @@ void register_regime(CLI::App& app) {
       "Regime map written to --out: CSV pixel map (regime -1 outside band, 0 defocusing, "
       "1 focusing, 2 singular), boundary curves as CSV polylines per cause (traced by "
       "continuation), a gnuplot script and its PNG. theta-rho: Fig. 2 (rho on x, theta on y; "
-      "default rho range 0.01..30 optical, 0.01..2.5 acoustic; branch both draws two panels). "
-      "delta0-omega: Figs. 4-5 (kappa as given, paper: 1; default delta0 0.001..1; hatched "
+      "default rho range " + range_text(jobs::default_rho_range(Branch::optical), "..") + " optical, " +
+          range_text(jobs::default_rho_range(Branch::acoustic), "..") +
+          " acoustic; branch both draws two panels). "
+          "delta0-omega: Figs. 4-5 (kappa as given, paper: 1; default delta0 " +
+          range_text(jobs::default_delta0_range, "..") + "; hatched "
       "focusing frequency bands from root-found intervals, and their number versus delta0). "
       "With --model FILE: the (parameter, theta) plane of any model parameter (--axis NAME, "
       "--axis-range lo hi), files regime_theta-NAME_BRANCH.csv.");
@@ -230,10 +237,12 @@ void register_regime(CLI::App& app) {
       ->type_name("NAME");
   mp->add_option("--out", ma->out, "output directory (created)")->required()->type_name("DIR");
   mp->add_option("--rho-range", ma->rho_range,
-                 "theta-rho: rho lo hi (default 0.01 30 for optical or both, 0.01 2.5 for acoustic)")
+                 "theta-rho: rho lo hi (default " + range_text(jobs::default_rho_range(Branch::optical), " ") +
+                     " for optical or both, " + range_text(jobs::default_rho_range(Branch::acoustic), " ") +
+                     " for acoustic)")
       ->expected(2)
       ->type_name("NUM");
-  mp->add_option("--delta0-range", ma->delta0_range, "delta0-omega: delta0 lo hi (default 0.001 1)")
+  mp->add_option("--delta0-range", ma->delta0_range, "delta0-omega: delta0 lo hi (default " + range_text(jobs::default_delta0_range, " ") + ")")
       ->expected(2)
       ->type_name("NUM");
   mp->add_option("--omega-range", ma->omega_range,
@@ -241,8 +250,8 @@ void register_regime(CLI::App& app) {
       ->expected(2)
       ->type_name("NUM");
   mp->add_flag("--delta0-log", ma->delta0_log, "delta0-omega: logarithmic delta0 axis (default: linear)");
-  add_integer(*mp, "--nx", ma->res_x, config::map_pixels_x.least, config::map_pixels_x.most, "pixels along x (rho or delta0), default 600");
-  add_integer(*mp, "--ny", ma->res_y, config::map_pixels_y.least, config::map_pixels_y.most, "pixels along y (theta or omega), default 600");
+  add_integer(*mp, "--nx", ma->res_x, config::map_pixels_x.least, config::map_pixels_x.most, fmt::format("pixels along x (rho or delta0), default {}", jobs::RegimeMapConfig{}.nx));
+  add_integer(*mp, "--ny", ma->res_y, config::map_pixels_y.least, config::map_pixels_y.most, fmt::format("pixels along y (theta or omega), default {}", jobs::RegimeMapConfig{}.ny));
   add_max_memory(*mp, ma->max_memory);
   add_figure_format(*mp);
   mp->add_flag("--no-curves", ma->no_curves, "skip tracing the boundary curves");
