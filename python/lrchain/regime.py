@@ -6,15 +6,20 @@ The maps are ready for matplotlib::
 
     m = lrchain.regime.theta_rho_map(lrchain.Params(), "optical", rho=(0.01, 30, 600))
     plt.pcolormesh(m.rho, m.theta, m.values, shading="nearest")
+
+Model files work the same way: pass an :class:`lrchain.Model` instead of the Params, e.g.
+``lrchain.regime.theta_parameter_map(lrchain.load_model("fput"), "optical", axis="b", x=(0.1, 2))``.
+The defaults and ranges are those of ``lrchain regime ...`` (one job behind both).
 """
 
+import json
 from dataclasses import dataclass
-from math import pi
 
 import numpy as np
 
 from . import _lrchain
 from ._keywords import real_numbers
+from .errors import InvalidParameterError
 
 #: Pixel values of the maps.
 OUTSIDE, DEFOCUSING, FOCUSING, SINGULAR = -1, 0, 1, 2
@@ -44,11 +49,21 @@ class Intervals:
         return f"Intervals({parts or 'none'})"
 
 
+def _job_defaults():
+    return _lrchain.regime_job_defaults()
+
+
 @real_numbers
-def intervals(params, branch, samples=2048, tolerance=1e-12):
+def intervals(params, branch=None, samples=2048, tolerance=1e-12):
     """Focusing theta-intervals of ``branch`` (omega'' h_tilde < 0), found by root finding on the
-    smooth functions whose signs decide the regime; each end accurate to ``tolerance``."""
-    return Intervals(**_lrchain.regime_structure(params, branch, samples, tolerance))
+    smooth functions whose signs decide the regime; each end accurate to ``tolerance``.
+
+    ``params`` is an :class:`lrchain.Params` (the paper's resonant chain) or an :class:`lrchain.Model`
+    (any model file, e.g. ``lrchain.load_model("fput")``); ``branch`` defaults to "optical" (or a
+    model's only branch). The same job as ``lrchain regime intervals [--model FILE]``."""
+    d = _lrchain.regime_structure(params, branch or "", int(samples), tolerance)
+    d.pop("branch")
+    return Intervals(**d)
 
 
 @dataclass(frozen=True)
@@ -76,29 +91,78 @@ class RegimeMap:
                 f"focusing fraction {focusing:.3f})")
 
 
+def _axis(spec, n_default):
+    """(lo, hi) and n of an axis given as None (the job's default range), (lo, hi) or (lo, hi, n)."""
+    if spec is None:
+        return None, n_default
+    if len(spec) == 2:
+        return (spec[0], spec[1]), n_default
+    return (spec[0], spec[1]), int(spec[2])
+
+
+def _keywords_named(call, keywords):
+    """``call()``, with an InvalidParameterError naming a job's Config key (e.g. "nx", "rho_range")
+    renamed to the keyword of this function that carries it (``keywords``: key -> keyword)."""
+    try:
+        return call()
+    except InvalidParameterError as e:
+        new = keywords.get(e.parameter)
+        if new is None:
+            raise
+        message = str(e)
+        if message.startswith(f"invalid {e.parameter}:"):
+            message = f"invalid {new}:" + message[len(f"invalid {e.parameter}:"):]
+        raise InvalidParameterError(message, new) from None
+
+
+def _map(lattice, plane, branch, axis, x, y, x_log, x_keyword, y_keyword, x_name, y_name):
+    d = _job_defaults()
+    x_range, nx = _axis(x, d["nx"])
+    y_range, ny = _axis(y, d["ny"])
+    keywords = {"nx": x_keyword, "ny": y_keyword, "rho_range": x_keyword, "delta0_range": x_keyword,
+                "axis_range": x_keyword, "theta_range": y_keyword, "omega_range": y_keyword}
+    m = _keywords_named(lambda: _lrchain.regime_map(lattice, plane, branch, axis, x_range, nx, y_range, ny, x_log),
+                        keywords)
+    return RegimeMap(m["x"], m["y"], m["values"], x_name or m["axis"], y_name)
+
+
 @real_numbers
-def theta_rho_map(params, branch, rho=(0.01, 30.0, 600), theta=None, rho_log=False):
+def theta_rho_map(params, branch, rho=None, theta=None, rho_log=False):
     """Fig. 2: the regime at (rho_i, theta_j); the other parameters from ``params``.
 
-    ``rho`` = (lo, hi, n) with 0 < lo; ``theta`` = (lo, hi, n) inside (0, pi] (default (pi/600, pi,
-    600)); ``rho_log`` spaces rho geometrically."""
-    if theta is None:
-        theta = (pi / 600, pi, 600)
-    d = _lrchain.theta_rho_map(params, branch, rho[0], rho[1], int(rho[2]), theta[0], theta[1], int(theta[2]),
-                               rho_log)
-    return RegimeMap(d["x"], d["y"], d["values"], "rho", "theta")
+    ``rho`` = (lo, hi) or (lo, hi, n) with 0 < lo, by default (0.01, 30) on the optical branch and
+    (0.01, 2.5) on the acoustic one (as ``lrchain regime map``), 600 points; ``theta`` = (lo, hi, n)
+    inside (0, pi] (default (pi/600, pi, 600)); ``rho_log`` spaces rho geometrically. ``params`` may be
+    an :class:`lrchain.Model` with a parameter rho (see :func:`theta_parameter_map`)."""
+    return _map(params, "theta-rho", branch, "rho", rho, theta, rho_log, "rho", "theta", "rho", "theta")
 
 
 @real_numbers
-def delta0_omega_map(params, branch, delta0=(0.001, 1.0, 600), omega=None, delta0_log=False):
+def theta_parameter_map(model, branch, axis=None, x=None, theta=None):
+    """The regime at (x_i, theta_j) of a model (an :class:`lrchain.Model`, e.g. a model file), over
+    its parameter ``axis`` (default rho for the resonant chain, else the model's first parameter);
+    the other parameters as the model has them. The same job as ``lrchain regime map --model FILE``.
+
+    ``x`` = (lo, hi) or (lo, hi, n) inside the parameter's range (default: its declared range when
+    bounded, open ends moved in by 1e-3 of its width; rho of the resonant chain as Fig. 2), 600
+    points; ``theta`` as in :func:`theta_rho_map`. The map's ``x_name`` is the parameter's name."""
+    return _map(model, "theta-parameter", branch, axis or "", x, theta, False, "x", "theta", None, "theta")
+
+
+@real_numbers
+def delta0_omega_map(params, branch, delta0=None, omega=None, delta0_log=False):
     """Figs. 4-5: the regime at (delta0_i, omega_j), theta from omega on the branch; pixels outside the
-    band at delta0_i are OUTSIDE. ``omega`` = (lo, hi, n), by default the band of ``params``."""
-    if omega is None:
-        lo, hi = _lrchain.frequency_band(params, branch)
-        omega = (lo, hi, 600)
-    d = _lrchain.delta0_omega_map(params, branch, delta0[0], delta0[1], int(delta0[2]), omega[0], omega[1],
-                                  int(omega[2]), delta0_log)
-    return RegimeMap(d["x"], d["y"], d["values"], "delta0", "omega")
+    band at delta0_i are OUTSIDE. ``delta0`` = (lo, hi) or (lo, hi, n), default (0.001, 1, 600);
+    ``omega`` = (lo, hi) or (lo, hi, n), by default the branch's band over the delta0 range (optical
+    [0.98 omega_lo, 1.02 omega_hi], acoustic [0, 1.02 omega_hi], as ``lrchain regime map --plane
+    delta0-omega``), 600 points; each end within [0, twice the top of the optical band]."""
+    return _map(params, "delta0-omega", branch, "", delta0, omega, delta0_log, "delta0", "omega", "delta0", "omega")
+
+
+def map_defaults(params, branch):
+    """The default ranges of the maps at ``params`` on ``branch``: {"rho": (lo, hi), "delta0": ...,
+    "omega": ...} (those of ``lrchain regime map``)."""
+    return {k: tuple(v) for k, v in _lrchain.regime_map_defaults(params, branch).items()}
 
 
 @dataclass(frozen=True)
@@ -114,12 +178,32 @@ class BoundaryCurve:
 
 
 @real_numbers
-def boundary_curves(params, branch, axis="rho", lo=0.01, hi=30.0, omega_plane=False):
+def boundary_curves(params, branch, axis=None, lo=None, hi=None, omega_plane=False):
     """Boundary curves between focusing and defocusing regions in the (axis, theta) plane for the
-    parameter ``axis`` ("rho" or "delta0") in [lo, hi], traced by pseudo-arclength continuation;
-    with ``omega_plane`` (axis "delta0") mapped to (delta0, omega) as in Figs. 4-5."""
+    parameter ``axis`` in [lo, hi], traced by pseudo-arclength continuation; with ``omega_plane``
+    (axis "delta0") mapped to (delta0, omega) as in Figs. 4-5.
+
+    ``params`` is an :class:`lrchain.Params` (``axis`` "rho", the default, or "delta0") or an
+    :class:`lrchain.Model` (any of its parameters; default as :func:`theta_parameter_map`). Without
+    ``lo``/``hi`` the range is the map's: rho (0.01, 30) optical, (0.01, 2.5) acoustic; delta0
+    (0.001, 1); a model's parameter its declared range."""
+    if (lo is None) != (hi is None):
+        raise TypeError("boundary_curves() takes both lo and hi, or neither (the map's default range)")
+    span = None if lo is None else (lo, hi)
     return [BoundaryCurve(cause, points)
-            for cause, points in _lrchain.boundary_curves(params, branch, axis, lo, hi, omega_plane)]
+            for cause, points in _lrchain.boundary_curves(params, branch, axis or "", span, omega_plane)]
+
+
+def thresholds(model=None, scan=None, branch=None, axis=None, axis_range=None):
+    """Every change of the boundary structure along a parameter (Sec. 3.3), located by root finding:
+    without ``model`` the paper's scenarios (special mass ratios and precompressions, matched to the
+    printed values), else the events along ``axis`` of ``model`` (an :class:`lrchain.Model`) in
+    ``axis_range`` (lo, hi) on ``branch`` (default: every branch). ``scan`` points per scan (default:
+    built-in 300-400; a model 300). The same job and JSON as ``lrchain regime thresholds``: a dict
+    with "scenarios" (paper) or "model" and "scans", each scan with its "events"."""
+    text = _lrchain.regime_thresholds(model, int(scan or 0), branch or "", axis or "",
+                                      None if axis_range is None else (axis_range[0], axis_range[1]))
+    return json.loads(text)
 
 
 @real_numbers

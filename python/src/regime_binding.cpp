@@ -1,16 +1,15 @@
-// Regime structure (Sec. 3.3): focusing intervals with their causes, the pixel maps of Figs. 2, 4, 5
-// and the boundary curves, as numpy arrays.
+// lrchain.regime (Sec. 3.3): the regime jobs (lrchain/jobs/regime_job.hpp) of the resonant chain
+// (a Params) or of a loaded model (lrchain.Model): focusing intervals, pixel maps, boundary curves
+// and thresholds, as numpy arrays; run without the GIL.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "loaded_model.hpp"
 #include "lrchain/config/option_caps.hpp"
-#include "lrchain/errors.hpp"
-#include "lrchain/index.hpp"
-#include "lrchain/regime/boundary_curves.hpp"
-#include "lrchain/regime/focusing_intervals.hpp"
+#include "lrchain/dispersion.hpp"
+#include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/regime/frequency_band.hpp"
-#include "lrchain/regime/regime_map.hpp"
 
 namespace py = pybind11;
 
@@ -18,24 +17,37 @@ namespace lrchain::python {
 
 namespace {
 using namespace lrchain::regime;
+using Range = jobs::Range;
+
+// A Params (the resonant chain, its specialised evaluators) or an lrchain.Model.
+jobs::RegimeLattice lattice_of(const py::handle& lattice) {
+  if (py::isinstance<LoadedModel>(lattice))
+    return {Params{}, std::make_shared<const Model>(lattice.cast<const LoadedModel&>().model)};
+  return {lattice.cast<Params>(), nullptr};
+}
+
+// jobs::run(config) with the GIL released (the job holds no Python object).
+template <class Config>
+auto run_without_gil(const Config& config) {
+  py::gil_scoped_release release;
+  return jobs::run(config);
+}
 
 py::array_t<double> axis_values(const GridAxis& a) {
   py::array_t<double> v(a.n);
-  for (int i = 0; i < a.n; ++i) v.mutable_at(i) = a.at(i);
+  for (Index i = 0; i < a.n; ++i) v.mutable_at(i) = a.at(i);
   return v;
 }
 
 // Roots of the four smooth functions along (0, pi] and the focusing intervals between them.
-py::dict structure(const Params& p, const std::string& branch, Index samples, double tolerance) {
-  validate(p);
-  const Branch b = parse_branch(branch);
-  config::checked_option(double(samples), config::intervals_samples, "samples");
-  if (!(tolerance > 0 && tolerance < 1e-2)) throw InvalidParameter("tolerance", "must be in (0, 1e-2)");
-  RegimeStructure s;
-  {
-    py::gil_scoped_release release;
-    s = regime_structure(regime_functions(p, b), IntervalOptions{samples, tolerance});
-  }
+py::dict structure(const py::handle& lattice, const std::string& branch, int samples, double tolerance) {
+  jobs::RegimeIntervalsConfig c;
+  c.lattice = lattice_of(lattice);
+  c.branch = branch;
+  c.samples = samples;
+  c.tolerance = tolerance;
+  const auto r = run_without_gil(c);
+  const auto& s = r.structure;
   py::array_t<double> lo(s.intervals.size()), hi(s.intervals.size()), roots(s.roots.size());
   py::list lo_cause, hi_cause, root_cause;
   for (std::size_t k = 0; k < s.intervals.size(); ++k) {
@@ -49,6 +61,7 @@ py::dict structure(const Params& p, const std::string& branch, Index samples, do
     root_cause.append(std::string(to_string(s.roots[k].cause)));
   }
   py::dict d;
+  d["branch"] = r.branch;
   d["lo"] = lo;
   d["hi"] = hi;
   d["lo_cause"] = lo_cause;
@@ -58,69 +71,53 @@ py::dict structure(const Params& p, const std::string& branch, Index samples, do
   return d;
 }
 
-// Pixel values as a (y.n, x.n) int8 array with the axis values: ready for pcolormesh(x, y, values).
-py::dict map_arrays(const RegimeMap& m) {
-  py::array_t<std::int8_t> values({m.y.n, m.x.n});
-  std::copy(m.values.begin(), m.values.end(), values.mutable_data());
+// One branch's pixel map of `plane` ("theta-rho", "delta0-omega", "theta-parameter") as a (y.n, x.n)
+// int8 array with the axis values, ready for pcolormesh(x, y, values). x/y: lo hi or None (the
+// job's default).
+py::dict map(const py::handle& lattice, const std::string& plane, const std::string& branch, const std::string& axis,
+             std::optional<Range> x, int nx, std::optional<Range> y, int ny, bool x_log) {
+  jobs::RegimeMapConfig c;
+  c.lattice = lattice_of(lattice);
+  c.plane = plane;
+  c.branch = branch;
+  c.axis = axis;
+  c.nx = nx;
+  c.ny = ny;
+  c.curves = c.inset = c.bands = c.figures = false;
+  if (plane == "delta0-omega") {
+    c.delta0_range = x;
+    c.omega_range = y;
+    c.delta0_log = x_log;
+  } else {
+    (c.lattice.model ? c.axis_range : c.rho_range) = x;
+    c.theta_range = y;
+    c.rho_log = x_log;
+  }
+  const auto r = run_without_gil(c);
+  const jobs::RegimeMapPanel& panel = r.panels.at(0);
+  py::array_t<std::int8_t> values({panel.y.n, panel.x.n});
+  std::copy(panel.values.begin(), panel.values.end(), values.mutable_data());
   py::dict d;
-  d["x"] = axis_values(m.x);
-  d["y"] = axis_values(m.y);
+  d["branch"] = panel.branch;
+  d["axis"] = r.axis;
+  d["x"] = axis_values(panel.x);
+  d["y"] = axis_values(panel.y);
   d["values"] = values;
   return d;
 }
 
-py::dict rho_map(const Params& base, const std::string& branch, double rho_lo, double rho_hi, Index nx,
-                 double theta_lo, double theta_hi, Index ny, bool rho_log) {
-  const Branch b = parse_branch(branch);
-  config::checked_option(double(nx), config::map_pixels_x, "rho");  // (lo, hi, n): n pixels
-  config::checked_option(double(ny), config::map_pixels_y, "theta");
-  const GridAxis rho{rho_lo, rho_hi, nx, rho_log}, theta{theta_lo, theta_hi, ny};
-  RegimeMap m;
-  {
-    py::gil_scoped_release release;
-    m = theta_rho_map(base, b, rho, theta);
-  }
-  return map_arrays(m);
-}
-
-py::dict omega_map(const Params& base, const std::string& branch, double delta0_lo, double delta0_hi, Index nx,
-                   double omega_lo, double omega_hi, Index ny, bool delta0_log) {
-  const Branch b = parse_branch(branch);
-  config::checked_option(double(nx), config::map_pixels_x, "delta0");  // (lo, hi, n): n pixels
-  config::checked_option(double(ny), config::map_pixels_y, "omega");
-  const GridAxis delta0{delta0_lo, delta0_hi, nx, delta0_log}, omega{omega_lo, omega_hi, ny};
-  RegimeMap m;
-  {
-    py::gil_scoped_release release;
-    m = delta0_omega_map(base, b, delta0, omega);
-  }
-  return map_arrays(m);
-}
-
-ParameterAxis parse_axis(const std::string& axis) {
-  if (axis == "rho") return ParameterAxis::rho;
-  if (axis == "delta0") return ParameterAxis::delta0;
-  throw InvalidParameter("axis", "must be 'rho' or 'delta0', not '" + axis + "'");
-}
-
 // [(cause, points (k, 2): columns parameter, theta (or omega if omega_plane))] of every traced curve.
-py::list curves(const Params& base, const std::string& branch, const std::string& axis, double lo, double hi,
-                bool omega_plane) {
-  validate(base);
-  const Branch b = parse_branch(branch);
-  const ParameterAxis a = parse_axis(axis);
-  if (!(std::isfinite(lo) && std::isfinite(hi) && lo > 0 && lo < hi))
-    throw InvalidParameter(axis, "range must be finite with 0 < lo < hi");
-  if (omega_plane && a != ParameterAxis::delta0)
-    throw InvalidParameter("omega_plane", "the omega plane goes with axis='delta0' (Figs. 4-5)");
-  std::vector<BoundaryCurve> c;
-  {
-    py::gil_scoped_release release;
-    c = boundary_curves(base, b, a, lo, hi);
-    if (omega_plane) to_omega_plane(c, base, b);
-  }
+py::list curves(const py::handle& lattice, const std::string& branch, const std::string& axis,
+                std::optional<Range> range, bool omega_plane) {
+  jobs::RegimeCurvesConfig c;
+  c.lattice = lattice_of(lattice);
+  c.branch = branch;
+  c.axis = axis;
+  c.omega_plane = omega_plane;
+  c.range = range;
+  const auto traced = run_without_gil(c);
   py::list out;
-  for (const BoundaryCurve& curve : c) {
+  for (const BoundaryCurve& curve : traced) {
     py::array_t<double> pts({static_cast<py::ssize_t>(curve.points.size()), py::ssize_t(2)});
     auto w = pts.mutable_unchecked<2>();
     for (std::size_t k = 0; k < curve.points.size(); ++k) {
@@ -132,6 +129,52 @@ py::list curves(const Params& base, const std::string& branch, const std::string
   return out;
 }
 
+// The JSON text of `lrchain regime thresholds` (without provenance): the paper's scenarios, or the
+// events along one parameter of a model.
+std::string thresholds(const py::object& model, int scan, const std::string& branch, const std::string& axis,
+                       std::optional<Range> axis_range) {
+  jobs::RegimeThresholdsConfig c;
+  if (!model.is_none()) c.model = model.cast<const LoadedModel&>().model;
+  c.scan = scan;
+  c.branch = branch;
+  c.axis = axis;
+  c.axis_range = axis_range;
+  const auto r = run_without_gil(c);
+  return jobs::to_json(r).dump();
+}
+
+// The defaults of a map's x and y ranges for one branch of the resonant chain (the CLI's).
+py::dict map_defaults(const Params& p, const std::string& branch) {
+  validate(p);
+  const Branch b = parse_branch(branch);
+  py::dict d;
+  d["rho"] = jobs::default_rho_range(b);
+  d["delta0"] = jobs::default_delta0_range;
+  d["omega"] = jobs::default_omega_range(p, b, jobs::default_delta0_range);
+  return d;
+}
+
+// The jobs' defaults and ranges, for the docstrings and the test that Python's equal them.
+py::dict job_defaults() {
+  const jobs::RegimeIntervalsConfig intervals;
+  const jobs::RegimeMapConfig map;
+  const jobs::RegimeCurvesConfig curve;
+  py::dict d;
+  d["samples"] = intervals.samples;
+  d["samples_range"] = py::make_tuple(config::intervals_samples.least, config::intervals_samples.most);
+  d["tolerance"] = intervals.tolerance;
+  d["nx"] = map.nx;
+  d["ny"] = map.ny;
+  d["nx_range"] = py::make_tuple(config::map_pixels_x.least, config::map_pixels_x.most);
+  d["ny_range"] = py::make_tuple(config::map_pixels_y.least, config::map_pixels_y.most);
+  d["rho_range_optical"] = jobs::default_rho_range(Branch::optical);
+  d["rho_range_acoustic"] = jobs::default_rho_range(Branch::acoustic);
+  d["delta0_range"] = jobs::default_delta0_range;
+  d["curves_branch"] = curve.branch;
+  d["thresholds_scan"] = jobs::RegimeThresholdsConfig{}.scan;
+  return d;
+}
+
 py::tuple band(const Params& p, const std::string& branch) {
   validate(p);
   const FrequencyBand f = frequency_band(p, parse_branch(branch));
@@ -141,15 +184,16 @@ py::tuple band(const Params& p, const std::string& branch) {
 }  // namespace
 
 void register_regime(py::module_& m) {
-  m.def("regime_structure", &structure, py::arg("params"), py::arg("branch"), py::arg("samples"),
+  m.def("regime_structure", &structure, py::arg("lattice"), py::arg("branch"), py::arg("samples"),
         py::arg("tolerance"));
-  m.def("theta_rho_map", &rho_map, py::arg("params"), py::arg("branch"), py::arg("rho_lo"), py::arg("rho_hi"),
-        py::arg("nx"), py::arg("theta_lo"), py::arg("theta_hi"), py::arg("ny"), py::arg("rho_log"));
-  m.def("delta0_omega_map", &omega_map, py::arg("params"), py::arg("branch"), py::arg("delta0_lo"),
-        py::arg("delta0_hi"), py::arg("nx"), py::arg("omega_lo"), py::arg("omega_hi"), py::arg("ny"),
-        py::arg("delta0_log"));
-  m.def("boundary_curves", &curves, py::arg("params"), py::arg("branch"), py::arg("axis"), py::arg("lo"),
-        py::arg("hi"), py::arg("omega_plane"));
+  m.def("regime_map", &map, py::arg("lattice"), py::arg("plane"), py::arg("branch"), py::arg("axis"), py::arg("x"),
+        py::arg("nx"), py::arg("y"), py::arg("ny"), py::arg("x_log"));
+  m.def("boundary_curves", &curves, py::arg("lattice"), py::arg("branch"), py::arg("axis"), py::arg("range"),
+        py::arg("omega_plane"));
+  m.def("regime_thresholds", &thresholds, py::arg("model"), py::arg("scan"), py::arg("branch"), py::arg("axis"),
+        py::arg("axis_range"));
+  m.def("regime_map_defaults", &map_defaults, py::arg("params"), py::arg("branch"));
+  m.def("regime_job_defaults", &job_defaults);
   m.def("frequency_band", &band, py::arg("params"), py::arg("branch"));
 }
 

@@ -14,9 +14,10 @@
 #include "../toml_reading.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/dispersion.hpp"
+#include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
-#include "lrchain/regime/focusing_intervals.hpp"
 #include "lrchain/jobs/dark_job.hpp"
+#include "lrchain/jobs/regime_job.hpp"
 
 namespace lrchain::jobs::sweep {
 
@@ -50,7 +51,8 @@ std::shared_ptr<const TableSchema> dark_table() {
 std::shared_ptr<const TableSchema> regime_table() {
   return std::make_shared<const TableSchema>(TableSchema{
       "the focusing theta-intervals of both branches (Sec. 3.3), as `lrchain regime intervals`",
-      {integer("samples", 8, 10'000'000, "2048", "theta samples used to bracket the zeros")},
+      {integer("samples", intervals_samples.least, intervals_samples.most,
+               std::to_string(RegimeIntervalsConfig{}.samples), "theta samples used to bracket the zeros")},
       std::nullopt});
 }
 
@@ -214,15 +216,19 @@ std::vector<std::string> regime_scalar_names() {
   return n;
 }
 
-// The focusing intervals of both branches, as `lrchain regime intervals --branch B`.
+// The focusing intervals of both branches: the job of `lrchain regime intervals --branch B`.
 JobResult run_regime(const Document& doc) {
   const CheckedTable root = check(doc, study_schema("regime intervals"));
   const Params p = read_model(root);
-  std::int64_t samples = 2048;
+  std::int64_t samples = RegimeIntervalsConfig{}.samples;
   if (auto r = root.table("regime")) r->read("samples", samples);
   JobResult r;
   for (Branch b : both_branches) {
-    const auto s = regime::regime_structure(regime::regime_functions(p, b), {int(samples), 1e-12});
+    RegimeIntervalsConfig config;
+    config.lattice.params = p;
+    config.branch = std::string(to_string(b));
+    config.samples = int(samples);
+    const auto s = run(config).structure;
     double length = 0;
     for (const auto& i : s.intervals) {
       length += i.hi - i.lo;
