@@ -47,6 +47,11 @@ Model shipped_model(std::string_view name, const std::vector<std::pair<std::stri
   return Model(std::shared_ptr<const ModelDefinition>(std::shared_ptr<const ModelDefinition>(), d), values);
 }
 
+bool ModelDefinition::is_resonant_chain() const {
+  const ModelDefinition* shipped = find_shipped_model("resonant_chain");
+  return shipped && (this == shipped || (!file_sha256.empty() && file_sha256 == shipped->file_sha256));
+}
+
 Model resonant_chain_model(const Params& p) {
   return shipped_model("resonant_chain", {{"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}});
 }
@@ -79,6 +84,11 @@ Model::Model(std::shared_ptr<const ModelDefinition> definition, const std::vecto
     if (!std::isfinite(q_[i]))
       throw InvalidParameter(definition_->intermediates[i - parameters.size()],
                              "is not finite at these parameter values (model " + definition_->name + ")");
+  if (definition_->is_resonant_chain()) {  // the specialised evaluators' inputs, once
+    resonant_chain_params_ = Params{parameter("alpha"), parameter("delta0"), parameter("kappa"), parameter("rho")};
+    resonant_chain_K_ = taylor_coefficients(*resonant_chain_params_);
+    optical_branch_ = branch("optical");
+  }
 }
 
 double Model::parameter(std::string_view name) const {
@@ -199,6 +209,11 @@ NlsCoefficients coefficients(const Model& model, Index branch, double theta) {
     throw InvalidParameter("theta", "must be a wavenumber in (-pi, pi]");
   if (branch < 0 || branch >= static_cast<Index>(d.branch_names.size()))
     throw InvalidParameter("branch", "index out of range for model " + d.name);
+  if (const std::optional<Params>& p = model.resonant_chain_params()) {  // the paper's chain: its fast path
+    const Branch b = model.resonant_chain_branch(branch);
+    check_resonant_chain_wavenumber(b, theta);
+    return coefficients_unchecked(*p, model.resonant_chain_taylor_coefficients(), b, theta);
+  }
   NlsCoefficients c;
   if (evaluate_coefficients(d, model.inputs().data(), branch, theta, c)) [[likely]] return c;
   double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
