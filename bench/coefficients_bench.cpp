@@ -83,7 +83,7 @@ static void BM_coefficients_batch(benchmark::State& state) {
   for (int k = 0; k < lrchain::kCoefficientColumnCount; ++k) columns.field[k] = (values[k] = std::vector<double>(n)).data();
   columns.regime = regime.data();
   for (auto _ : state) {
-    lrchain::resonant_chain_coefficients_batch(p, branch, thetas.data(), n, columns);
+    lrchain::resonant_chain_coefficients_batch(p, branch, thetas, columns);
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * n);

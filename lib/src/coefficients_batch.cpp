@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "lrchain/coefficients_kernel.hpp"
 #include "lrchain/half_angle.hpp"
@@ -87,9 +88,9 @@ void resonant_chain_batch(const Params& p, const TaylorCoefficients& K, Branch b
 
 }  // namespace
 
-void resonant_chain_coefficients_batch(const Params& p, Branch b, const double* theta, std::ptrdiff_t n,
+void resonant_chain_coefficients_batch(const Params& p, Branch b, std::span<const double> theta,
                                        const CoefficientColumns& out) noexcept {
-  resonant_chain_batch(p, taylor_coefficients(p), b, theta, n, out);
+  resonant_chain_batch(p, taylor_coefficients(p), b, theta.data(), static_cast<std::ptrdiff_t>(theta.size()), out);
 }
 
 void coefficients_batch(const Model& model, Index branch, std::span<const double> theta, const CoefficientColumns& out) {
@@ -100,7 +101,9 @@ void coefficients_batch(const Model& model, Index branch, std::span<const double
     return;
   }
   const Branch b = model.resonant_chain_branch(branch);
-  for (const double t : theta) check_resonant_chain_wavenumber(b, t);
+  for (const double t : theta)
+    if (!(std::isfinite(t) && t > -std::numbers::pi && t <= std::numbers::pi) || (b == Branch::acoustic && t == 0.0))
+      coefficients(model, branch, t);  // throws the message of the wavenumber it refuses
   resonant_chain_batch(*p, model.resonant_chain_taylor_coefficients(), b, theta.data(), n, out);
 }
 

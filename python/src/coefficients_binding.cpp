@@ -26,7 +26,7 @@ py::dict resonant_chain_coefficient_arrays(const Params& p, const std::string& b
   CoefficientArrays out(shape_of(theta), out_arrays);
   {
     py::gil_scoped_release release;
-    resonant_chain_coefficients_batch(p, b, theta.data(), theta.size(), out.columns);
+    resonant_chain_coefficients_batch(p, b, {theta.data(), static_cast<std::size_t>(theta.size())}, out.columns);
   }
   return out.to_dict();
 }

@@ -84,6 +84,8 @@ CoeffsResult run_coeffs(const CoeffsConfig& config) {
   }
   const Index branch = branch_index(model, config.branch);
   result.branch = model.definition().branch_names[static_cast<std::size_t>(branch)];
+  if (model.resonant_chain_params())  // the chain's own messages (the zero-frequency mode), as `lrchain coeffs` gives them
+    check_resonant_chain_wavenumber(model.resonant_chain_branch(branch), *config.theta);
   result.coefficients = coefficients(model, branch, *config.theta);
   return result;
 }

@@ -18,7 +18,7 @@ inline constexpr int kCoefficientColumnCount = 10;
 inline constexpr const char* kCoefficientColumnNames[kCoefficientColumnCount] = {
     "omega", "group_velocity", "curvature", "gamma", "beta", "h", "lambda", "h_tilde", "nonresonance1", "nonresonance2"};
 
-// Output columns of n values each: the coefficients in kCoefficientColumnNames order and the Regime codes.
+// Output columns, each as long as the wavenumbers evaluated: the coefficients in kCoefficientColumnNames order and the Regime codes.
 struct CoefficientColumns {
   double* field[kCoefficientColumnCount];
   std::int8_t* regime;
@@ -39,10 +39,11 @@ struct CoefficientColumns {
   }
 };
 
-// The resonant chain's coefficients at theta[0..n) into out, without checks: p valid, each theta
-// in (-pi, pi] and nonzero on the acoustic branch. One vectorised loop (AVX-512, AVX2 or baseline
-// x86-64, chosen at load time), bit-identical to coefficients(p, b, theta[i]). Allocation-free.
-void resonant_chain_coefficients_batch(const Params& p, Branch b, const double* theta, std::ptrdiff_t n,
+// The resonant chain's coefficients at every theta into out (theta.size() values per column),
+// without checks: p valid, each theta in (-pi, pi] and nonzero on the acoustic branch. One
+// vectorised loop (AVX-512, AVX2 or baseline x86-64, chosen at load time), bit-identical to
+// coefficients(p, b, theta[i]). Allocation-free.
+void resonant_chain_coefficients_batch(const Params& p, Branch b, std::span<const double> theta,
                                        const CoefficientColumns& out) noexcept;
 
 // coefficients(model, branch, theta[i]) for every i, bit for bit, into out: the resonant chain

@@ -170,9 +170,15 @@ const ModelDefinition* find_shipped_model_by_bytes(std::string_view bytes);
 // omega is the branch's root of det M = 0 in omega^2. lambda is NaN (no mean flow) for on-site
 // models. Throws InvalidParameter for theta out of range or where the branch has no real,
 // positive frequency (theta = 0 on an acoustic branch). Allocation-free. The resonant chain
-// (resonant_chain_params()) goes through its specialised evaluators: bit-identical to
-// coefficients(Params, Branch, theta), with its messages.
+// (Model::resonant_chain_params) goes through its specialised evaluators: bit-identical to
+// coefficients(Params, Branch, theta).
 NlsCoefficients coefficients(const Model& model, Index branch, double theta);
+
+// The same through the model's own emitted evaluators, the resonant chain's too (no dispatch; the
+// two agree to rounding, ~1e-13). The lattice runs of a loaded model (bright, ring, dark ansatz,
+// Bloch waves, second-order terms) evaluate their NLS ansatz with these, so that their outputs for
+// the chain as a model file are the same bits as before lib chose the specialised path.
+NlsCoefficients coefficients_from_evaluators(const Model& model, Index branch, double theta);
 
 // The same from the evaluator input vector q (parameters, then intermediates) through the model's
 // emitted evaluators (the resonant chain's too: no dispatch) without any check of theta or branch: false (and `out` untouched) where det M has no real root or the branch's
