@@ -27,13 +27,17 @@ NlsCoefficients coefficients_unchecked(const Params& p, const TaylorCoefficients
                               : detail::coefficients_from_half_angle<Branch::acoustic>(p, K, theta, sh, ch);
 }
 
-NlsCoefficients coefficients(const Params& p, Branch b, double theta) {
-  validate(p);
+void check_resonant_chain_wavenumber(Branch b, double theta) {
   if (!(std::isfinite(theta) && theta > -std::numbers::pi && theta <= std::numbers::pi))
     throw InvalidParameter("theta", "must be a wavenumber in (-pi, pi]");
   if (b == Branch::acoustic && theta == 0.0)
     throw InvalidParameter("theta", "must be nonzero on the acoustic branch (theta = 0 is the zero-frequency mode); "
                                     "valid range (-pi, 0) U (0, pi]");
+}
+
+NlsCoefficients coefficients(const Params& p, Branch b, double theta) {
+  validate(p);
+  check_resonant_chain_wavenumber(b, theta);
   return coefficients_unchecked(p, taylor_coefficients(p), b, theta);
 }
 

@@ -7,18 +7,17 @@
 
 #include <pybind11/numpy.h>
 
-#include "coefficients_batch.hpp"
 #include "lrchain/coefficients.hpp"
+#include "lrchain/coefficients_batch.hpp"
 #include "lrchain/params.hpp"
 
 namespace lrchain::python {
 
 using Thetas = pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>;
 
-// Field names of the result, in the order of CoefficientArrays::field.
-inline constexpr const char* kCoefficientFields[] = {"omega", "group_velocity", "curvature", "gamma", "beta",
-                                                     "h", "lambda", "h_tilde", "nonresonance1", "nonresonance2"};
-inline constexpr int kCoefficientFieldCount = 10;  // = size of CoefficientColumns::field
+// Field names of the result, in the order of CoefficientColumns::field (lrchain/coefficients_batch.hpp).
+inline constexpr const auto& kCoefficientFields = kCoefficientColumnNames;
+inline constexpr int kCoefficientFieldCount = kCoefficientColumnCount;
 
 class CoefficientArrays {
  public:
@@ -29,19 +28,7 @@ class CoefficientArrays {
   // Writable data of each field (kCoefficientFields order) and of the regime codes.
   CoefficientColumns columns;
   // Stores c at flat index i (no GIL needed).
-  void store(pybind11::ssize_t i, const NlsCoefficients& c) {
-    columns.field[0][i] = c.omega;
-    columns.field[1][i] = c.group_velocity;
-    columns.field[2][i] = c.curvature;
-    columns.field[3][i] = c.gamma;
-    columns.field[4][i] = c.beta;
-    columns.field[5][i] = c.h;
-    columns.field[6][i] = c.lambda;
-    columns.field[7][i] = c.h_tilde;
-    columns.field[8][i] = c.nonresonance1;
-    columns.field[9][i] = c.nonresonance2;
-    columns.regime[i] = static_cast<std::int8_t>(c.regime);
-  }
+  void store(pybind11::ssize_t i, const NlsCoefficients& c) { columns.store(i, c); }
   // {name: array, ..., "regime": int8 codes}.
   pybind11::dict to_dict() const;
 

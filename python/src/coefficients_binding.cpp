@@ -1,11 +1,12 @@
-// Batch evaluation of the NLS coefficients (eq:c, eq:ppOmega, eq:gamma, eq:h, eq:lambda, eq:h_tilde)
-// over a numpy array of wavenumbers: one validation pass, then one contiguous vectorised C++ loop
-// without the GIL (coefficients_batch.cpp), writing one output array per coefficient.
+// lrchain.coefficients of the resonant chain over a numpy array of wavenumbers: the checks with the
+// array position in their messages, then lib's vectorised loop (lrchain/coefficients_batch.hpp)
+// without the GIL into one output array per coefficient; and the coefficients job at one wavenumber.
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
 #include "coefficient_arrays.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/jobs/coeffs.hpp"
 
 namespace py = pybind11;
 
@@ -25,7 +26,7 @@ py::dict resonant_chain_coefficient_arrays(const Params& p, const std::string& b
   CoefficientArrays out(shape_of(theta), out_arrays);
   {
     py::gil_scoped_release release;
-    evaluate_resonant_chain(p, b, theta.data(), theta.size(), out.columns);
+    resonant_chain_coefficients_batch(p, b, {theta.data(), static_cast<std::size_t>(theta.size())}, out.columns);
   }
   return out.to_dict();
 }
@@ -38,13 +39,17 @@ void register_coefficients(py::module_& m) {
   m.def(
       "coefficients_scalar",
       [](const Params& p, const std::string& branch, double theta) {
-        const NlsCoefficients c = coefficients(p, parse_branch(branch), theta);
+        jobs::CoeffsConfig config;
+        config.params = p;
+        config.branch = branch;
+        config.theta = theta;
+        const NlsCoefficients c = jobs::run_coeffs(config).coefficients;
         return py::make_tuple(c.omega, c.group_velocity, c.curvature, c.gamma, c.beta, c.h, c.lambda, c.h_tilde,
                               c.nonresonance1, c.nonresonance2, static_cast<int>(c.regime));
       },
       py::arg("params"), py::arg("branch"), py::arg("theta"),
-      "The library's scalar coefficients() at one wavenumber (fields in coefficients_array order, regime code "
-      "last): the reference the batch loop is tested against.");
+      "The coefficients job at one wavenumber (fields in coefficients_array order, regime code last): the "
+      "reference the batch loop is tested against.");
   py::list names;
   for (Regime r : {Regime::focusing, Regime::defocusing, Regime::degenerate, Regime::singular})
     names.append(std::string(to_string(r)));

@@ -23,7 +23,7 @@ namespace lrchain::sim {
 // M1, M2, a of the bright breather (eq:focus_app) from the model's coefficients at theta.
 ModelBrightAnsatz::ModelBrightAnsatz(const Model& model, const lrchain_lattice_kernels& kernels, Index branch,
                                      double theta, std::optional<double> detuning, double n0, bool second_order)
-    : nls_(coefficients(model, branch, theta)), n0_(n0) {
+    : nls_(coefficients_from_evaluators(model, branch, theta)), n0_(n0) {
   const std::string where = fmt::format("{} at theta = {} on branch {}", model.name(), theta,
                                         model.definition().branch_names.at(static_cast<std::size_t>(branch)));
   if (nls_.regime == Regime::singular)

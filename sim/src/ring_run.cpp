@@ -171,7 +171,7 @@ RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernel
   validate(c);
   RingRunResult r;
   r.model = model.name();
-  const NlsCoefficients nls = coefficients(model, c.branch, c.theta);
+  const NlsCoefficients nls = coefficients_from_evaluators(model, c.branch, c.theta);
   r.omega = nls.omega;
   r.h = nls.h;
   r.group_velocity = nls.group_velocity;

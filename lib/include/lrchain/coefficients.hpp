@@ -37,6 +37,10 @@ inline constexpr double kNonresonanceTolerance = 1e-12;
 // the zero-frequency mode). Allocation-free; built on the generated evaluators.
 NlsCoefficients coefficients(const Params& p, Branch b, double theta);
 
+// Throws InvalidParameter("theta") unless theta is a wavenumber of the resonant chain's branch b:
+// finite, in (-pi, pi], nonzero on the acoustic branch (the checks of coefficients() above).
+void check_resonant_chain_wavenumber(Branch b, double theta);
+
 // Same without validation, for hot loops over pre-validated parameters (K's precomputed).
 NlsCoefficients coefficients_unchecked(const Params& p, const TaylorCoefficients& K, Branch b,
                                        double theta);

@@ -1,7 +1,7 @@
 #pragma once
 // The resonant chain's NLS coefficients at one wavenumber from sin(theta/2) and cos(theta/2):
 // straight-line code with selects instead of branches, so that a loop over many wavenumbers
-// vectorises. coefficients_unchecked() and the batch evaluation of the Python module both call it,
+// vectorises. coefficients_unchecked() and the batch loop (coefficients_batch.hpp) both call it,
 // which keeps them bit-identical (IEEE +, -, *, /, sqrt and selects only; no contraction).
 #include <cmath>
 #include <limits>

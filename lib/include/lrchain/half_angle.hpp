@@ -1,7 +1,7 @@
 #pragma once
 // sin and cos of a half wavenumber x = theta/2, |x| <= pi/2, as straight-line code (arithmetic and
 // selects only), so that a loop over many wavenumbers vectorises and every path (the scalar
-// coefficients, the dispersion relation, the Python module's batch loop) gets the same bits.
+// coefficients, the dispersion relation, the batch loop of coefficients_batch.hpp) gets the same bits.
 // Polynomials: the minimax kernels of Sun's fdlibm (k_sin.c, k_cos.c, |x| <= pi/4, error < 1 ulp);
 // for pi/4 < |x| <= pi/2, sin x = cos(pi/2 - |x|) and cos x = sin(pi/2 - |x|) with pi/2 split in two
 // (Cody-Waite) so that pi/2 - |x| is exact to rounding. Error <= 1 ulp against correctly rounded

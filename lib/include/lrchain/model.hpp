@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -99,6 +100,11 @@ struct ModelDefinition {
   Index degree = 1;                        // degree of det M in omega^2 (= number of fields)
   ModelEvaluators evaluators;
   std::shared_ptr<const void> keep_alive;  // owner of the evaluator code (a loaded shared object), if any
+
+  // The paper's chain: the shipped model "resonant_chain", identified by its file's SHA-256 (a
+  // user's copy of the file counts, a file merely named so does not). The one test that chooses the
+  // resonant chain's specialised evaluators (coefficients(), coefficients_batch()).
+  bool is_resonant_chain() const;
 };
 
 // The shipped models (models/*.toml) with their compiled-in evaluators, sorted by name.
@@ -121,10 +127,20 @@ class Model {
   double parameter(std::string_view name) const;
   // Index of a branch name (throws InvalidParameter("branch", ...) naming the model's branches).
   Index branch(std::string_view name) const;
+  // The resonant chain's alpha, delta0, kappa, rho when the model is that chain
+  // (ModelDefinition::is_resonant_chain), else empty: coefficients() then takes the specialised path.
+  const std::optional<Params>& resonant_chain_params() const { return resonant_chain_params_; }
+  // The resonant chain's Branch of branch index `branch` (precondition: resonant_chain_params()).
+  Branch resonant_chain_branch(Index branch) const { return branch == optical_branch_ ? Branch::optical : Branch::acoustic; }
+  // K2, K3, K4 of resonant_chain_params() (taylor_coefficients, as coefficients(Params) computes them).
+  const TaylorCoefficients& resonant_chain_taylor_coefficients() const { return resonant_chain_K_; }
 
  private:
   std::shared_ptr<const ModelDefinition> definition_;
   std::vector<double> q_;
+  std::optional<Params> resonant_chain_params_;
+  TaylorCoefficients resonant_chain_K_{};
+  Index optical_branch_ = -1;
 };
 
 // The shipped model `name` (InputError if there is none) with the given parameter values.
@@ -153,11 +169,19 @@ const ModelDefinition* find_shipped_model_by_bytes(std::string_view bytes);
 // NLS coefficients of `model` on branch `branch` (index into branch_names) at theta in (-pi, pi]:
 // omega is the branch's root of det M = 0 in omega^2. lambda is NaN (no mean flow) for on-site
 // models. Throws InvalidParameter for theta out of range or where the branch has no real,
-// positive frequency (theta = 0 on an acoustic branch). Allocation-free.
+// positive frequency (theta = 0 on an acoustic branch). Allocation-free. The resonant chain
+// (Model::resonant_chain_params) goes through its specialised evaluators: bit-identical to
+// coefficients(Params, Branch, theta).
 NlsCoefficients coefficients(const Model& model, Index branch, double theta);
 
-// The same from the evaluator input vector q (parameters, then intermediates) without any check
-// of theta or branch: false (and `out` untouched) where det M has no real root or the branch's
+// The same through the model's own emitted evaluators, the resonant chain's too (no dispatch; the
+// two agree to rounding, ~1e-13). The lattice runs of a loaded model (bright, ring, dark ansatz,
+// Bloch waves, second-order terms) evaluate their NLS ansatz with these, so that their outputs for
+// the chain as a model file are the same bits as before lib chose the specialised path.
+NlsCoefficients coefficients_from_evaluators(const Model& model, Index branch, double theta);
+
+// The same from the evaluator input vector q (parameters, then intermediates) through the model's
+// emitted evaluators (the resonant chain's too: no dispatch) without any check of theta or branch: false (and `out` untouched) where det M has no real root or the branch's
 // omega^2 is not positive. For loops over theta or a parameter (regime maps). Allocation-free.
 bool coefficients_at(const ModelDefinition& definition, const double* q, Index branch, double theta,
                      NlsCoefficients& out) noexcept;

@@ -47,6 +47,11 @@ Model shipped_model(std::string_view name, const std::vector<std::pair<std::stri
   return Model(std::shared_ptr<const ModelDefinition>(std::shared_ptr<const ModelDefinition>(), d), values);
 }
 
+bool ModelDefinition::is_resonant_chain() const {
+  const ModelDefinition* shipped = find_shipped_model("resonant_chain");
+  return shipped && (this == shipped || (!file_sha256.empty() && file_sha256 == shipped->file_sha256));
+}
+
 Model resonant_chain_model(const Params& p) {
   return shipped_model("resonant_chain", {{"alpha", p.alpha}, {"delta0", p.delta0}, {"kappa", p.kappa}, {"rho", p.rho}});
 }
@@ -79,6 +84,11 @@ Model::Model(std::shared_ptr<const ModelDefinition> definition, const std::vecto
     if (!std::isfinite(q_[i]))
       throw InvalidParameter(definition_->intermediates[i - parameters.size()],
                              "is not finite at these parameter values (model " + definition_->name + ")");
+  if (definition_->is_resonant_chain()) {  // the specialised evaluators' inputs, once
+    resonant_chain_params_ = Params{parameter("alpha"), parameter("delta0"), parameter("kappa"), parameter("rho")};
+    resonant_chain_K_ = taylor_coefficients(*resonant_chain_params_);
+    optical_branch_ = branch("optical");
+  }
 }
 
 double Model::parameter(std::string_view name) const {
@@ -235,12 +245,20 @@ bool coefficients_at(const ModelDefinition& d, const double* q, Index branch, do
   return evaluate_coefficients(d, q, branch, theta, c);
 }
 
-NlsCoefficients coefficients(const Model& model, Index branch, double theta) {
-  const ModelDefinition& d = model.definition();
+namespace {
+
+// The checks of theta and branch both entry points share.
+void check_wavenumber_and_branch(const ModelDefinition& d, Index branch, double theta) {
   if (!(std::isfinite(theta) && theta > -std::numbers::pi && theta <= std::numbers::pi))
     throw InvalidParameter("theta", "must be a wavenumber in (-pi, pi]");
   if (branch < 0 || branch >= static_cast<Index>(d.branch_names.size()))
     throw InvalidParameter("branch", "index out of range for model " + d.name);
+}
+
+// The model's own evaluators at a checked theta and branch; InvalidParameter("theta") naming why
+// the branch has no frequency there.
+NlsCoefficients checked_evaluator_coefficients(const Model& model, Index branch, double theta) {
+  const ModelDefinition& d = model.definition();
   NlsCoefficients c;
   if (evaluate_coefficients(d, model.inputs().data(), branch, theta, c)) [[likely]] return c;
   double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
@@ -253,6 +271,23 @@ NlsCoefficients coefficients(const Model& model, Index branch, double theta) {
   throw InvalidParameter("theta", "branch " + d.branch_names[static_cast<std::size_t>(branch)] + " of model " + d.name +
                                       " has no positive frequency here (theta = 0 on an acoustic branch is the "
                                       "zero-frequency mode)");
+}
+
+}  // namespace
+
+NlsCoefficients coefficients(const Model& model, Index branch, double theta) {
+  check_wavenumber_and_branch(model.definition(), branch, theta);
+  if (const std::optional<Params>& p = model.resonant_chain_params()) {  // the paper's chain: its fast path
+    const Branch b = model.resonant_chain_branch(branch);
+    if (!(b == Branch::acoustic && theta == 0.0)) [[likely]]
+      return coefficients_unchecked(*p, model.resonant_chain_taylor_coefficients(), b, theta);
+  }
+  return checked_evaluator_coefficients(model, branch, theta);  // (the chain's zero-frequency mode: its message)
+}
+
+NlsCoefficients coefficients_from_evaluators(const Model& model, Index branch, double theta) {
+  check_wavenumber_and_branch(model.definition(), branch, theta);
+  return checked_evaluator_coefficients(model, branch, theta);
 }
 
 }  // namespace lrchain

@@ -9,7 +9,7 @@ namespace lrchain {
 
 // A_{2,2,f} / A_{1,1}^2, A_{2,0,f} / |A_{1,1}|^2 and G_f per field at (branch, theta).
 SecondOrderTerms second_order_terms(const Model& model, Index branch, double theta) {
-  const NlsCoefficients c = coefficients(model, branch, theta);  // checks theta, branch; gives omega
+  const NlsCoefficients c = coefficients_from_evaluators(model, branch, theta);  // checks theta, branch; gives omega
   const ModelDefinition& d = model.definition();
   double sh, ch;
   detail::half_angle_sincos(0.5 * theta, sh, ch);

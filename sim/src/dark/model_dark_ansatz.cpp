@@ -19,13 +19,13 @@ namespace {
 std::string edge_regime(const Model& model, Index branch, double theta, bool& defocusing) {
   defocusing = false;
   try {
-    const NlsCoefficients c = coefficients(model, branch, theta);
+    const NlsCoefficients c = coefficients_from_evaluators(model, branch, theta);
     if (c.regime == Regime::singular || !std::isfinite(c.curvature * c.h_tilde)) return "singular coefficients";
     // An NLS coefficient that diverges at the edge (the diatomic chain's h at theta = pi) is finite
     // but huge at the rounded edge: the edge is singular when h_tilde there is not the limit of its
     // values just inside the band (theta 1e-4 away: a smooth h_tilde changes by O(1e-8) relatively).
     const double inside = theta == 0 ? 1e-4 : theta - 1e-4;
-    const NlsCoefficients near = coefficients(model, branch, inside);
+    const NlsCoefficients near = coefficients_from_evaluators(model, branch, inside);
     if (!(std::abs(c.h_tilde - near.h_tilde) <= 1e-3 * std::abs(near.h_tilde) + 1e-12))
       return fmt::format("singular coefficients (h_tilde = {:.4g} at the edge, {:.4g} at theta = {:.6g})", c.h_tilde,
                          near.h_tilde, inside);
@@ -89,7 +89,7 @@ ModelDarkEdge defocusing_edge(const Model& model, std::optional<Index> branch) {
 ModelDarkAnsatz make_model_dark_ansatz(const Model& model, const lrchain_lattice_kernels& kernels,
                                        const ModelDarkEdge& edge, double omega_b) {
   const Index branch = edge.branch;
-  const NlsCoefficients c = coefficients(model, branch, edge.theta);
+  const NlsCoefficients c = coefficients_from_evaluators(model, branch, edge.theta);
   const std::string where = fmt::format("the theta = {} edge of {} branch {}", edge.theta == 0 ? "0" : "pi",
                                         model.name(), model.definition().branch_names.at(static_cast<std::size_t>(branch)));
   if (c.regime != Regime::defocusing) throw InvalidParameter("branch", where + " is not defocusing");

@@ -114,7 +114,7 @@ BlochMode bloch_mode(const Model& model, const lrchain_lattice_kernels& kernels,
   const std::vector<BlochMode> modes = bloch_modes(kernels, lattice_parameters(model), theta);
   if (branch < 0 || branch >= static_cast<Index>(modes.size()))
     throw InvalidParameter("branch", fmt::format("{} has {} branches", model.name(), modes.size()));
-  const NlsCoefficients nls = coefficients(model, branch, theta);
+  const NlsCoefficients nls = coefficients_from_evaluators(model, branch, theta);
   if (!(std::abs(modes[branch].omega - nls.omega) <= 1e-9 * nls.omega))
     throw NumericalFailure(fmt::format("{}: the lattice code gives omega = {:.12g} at theta = {}, the coefficient "
                                        "evaluators {:.12g}; they do not describe the same lattice",

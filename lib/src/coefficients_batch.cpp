@@ -4,14 +4,17 @@
 // the block; the compiler vectorises both loops. Built for AVX-512, AVX2 and baseline x86-64, the
 // variant chosen at load time by the CPU (target_clones). Only correctly rounded operations and selects
 // are vectorised, so every variant is bit-identical to the scalar path.
-#include "coefficients_batch.hpp"
-#include "lrchain/coefficients_kernel.hpp"
-#include "lrchain/half_angle.hpp"
+#include "lrchain/coefficients_batch.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
-namespace lrchain::python {
+#include "lrchain/coefficients_kernel.hpp"
+#include "lrchain/half_angle.hpp"
+#include "lrchain/model.hpp"
+
+namespace lrchain {
 
 namespace {
 
@@ -53,9 +56,8 @@ template <Branch branch>
 }
 
 template <Branch branch>
-[[gnu::always_inline]] inline void evaluate_all(const Params& p, const double* theta, std::ptrdiff_t n,
-                                                const CoefficientColumns& out) {
-  const TaylorCoefficients K = taylor_coefficients(p);
+[[gnu::always_inline]] inline void evaluate_all(const Params& p, const TaylorCoefficients& K, const double* theta,
+                                                std::ptrdiff_t n, const CoefficientColumns& out) {
   double sh[kBlock], ch[kBlock];
   for (std::ptrdiff_t start = 0; start < n; start += kBlock) {
     const std::ptrdiff_t count = std::min(kBlock, n - start);
@@ -67,22 +69,42 @@ template <Branch branch>
   }
 }
 
-LRCHAIN_VECTOR_VARIANTS void evaluate_optical(const Params& p, const double* theta, std::ptrdiff_t n,
-                                              const CoefficientColumns& out) {
-  evaluate_all<Branch::optical>(p, theta, n, out);
+LRCHAIN_VECTOR_VARIANTS void evaluate_optical(const Params& p, const TaylorCoefficients& K, const double* theta,
+                                              std::ptrdiff_t n, const CoefficientColumns& out) {
+  evaluate_all<Branch::optical>(p, K, theta, n, out);
 }
 
-LRCHAIN_VECTOR_VARIANTS void evaluate_acoustic(const Params& p, const double* theta, std::ptrdiff_t n,
-                                               const CoefficientColumns& out) {
-  evaluate_all<Branch::acoustic>(p, theta, n, out);
+LRCHAIN_VECTOR_VARIANTS void evaluate_acoustic(const Params& p, const TaylorCoefficients& K, const double* theta,
+                                               std::ptrdiff_t n, const CoefficientColumns& out) {
+  evaluate_all<Branch::acoustic>(p, K, theta, n, out);
+}
+
+// The chain's vectorised loop with K2, K3, K4 given (as coefficients(Params) computes them).
+void resonant_chain_batch(const Params& p, const TaylorCoefficients& K, Branch b, const double* theta,
+                          std::ptrdiff_t n, const CoefficientColumns& out) noexcept {
+  if (b == Branch::optical) evaluate_optical(p, K, theta, n, out);
+  else evaluate_acoustic(p, K, theta, n, out);
 }
 
 }  // namespace
 
-void evaluate_resonant_chain(const Params& p, Branch b, const double* theta, std::ptrdiff_t n,
-                             const CoefficientColumns& out) {
-  if (b == Branch::optical) evaluate_optical(p, theta, n, out);
-  else evaluate_acoustic(p, theta, n, out);
+void resonant_chain_coefficients_batch(const Params& p, Branch b, std::span<const double> theta,
+                                       const CoefficientColumns& out) noexcept {
+  resonant_chain_batch(p, taylor_coefficients(p), b, theta.data(), static_cast<std::ptrdiff_t>(theta.size()), out);
 }
 
-}  // namespace lrchain::python
+void coefficients_batch(const Model& model, Index branch, std::span<const double> theta, const CoefficientColumns& out) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(theta.size());
+  const std::optional<Params>& p = model.resonant_chain_params();
+  if (!p || branch < 0 || branch >= static_cast<Index>(model.definition().branch_names.size())) {
+    for (std::ptrdiff_t i = 0; i < n; ++i) out.store(i, coefficients(model, branch, theta[i]));  // refuses a bad branch
+    return;
+  }
+  const Branch b = model.resonant_chain_branch(branch);
+  for (const double t : theta)
+    if (!(std::isfinite(t) && t > -std::numbers::pi && t <= std::numbers::pi) || (b == Branch::acoustic && t == 0.0))
+      coefficients(model, branch, t);  // throws the message of the wavenumber it refuses
+  resonant_chain_batch(*p, model.resonant_chain_taylor_coefficients(), b, theta.data(), n, out);
+}
+
+}  // namespace lrchain
