@@ -85,7 +85,7 @@ STDERR_COUNTER = re.compile(r"^\[\s*[0-9]+/[0-9]+\]")
 # (7.32e-.. and 4.88e-..), and it prints its own timing. Differences in the text outputs of these
 # subcommands are printed as UNSTABLE and do not make compare fail; their JSON outputs are compared.
 UNSTABLE_TEXT_SUBCOMMANDS = {"derive": "derive's text output varies from run to run of the same build"}
-# A sweep's side-files manifest (sim/src/sweep/side_files.cpp, .OUTPUT.lrchain-files) is JSON holding the
+# A sweep's side-files manifest (jobs/src/sweep/side_files.cpp, .OUTPUT.lrchain-files) is JSON holding the
 # SHA-256 of its CSV views, which have a wall-time column: the names are compared, the hashes not (the
 # CSV files themselves are compared, without that column).
 SIDE_FILES_SUFFIX = ".lrchain-files"
