@@ -1,7 +1,9 @@
 // The emitted double evaluators of every shipped model (lib/include/lrchain/generated/model_*.hpp,
-// through lrchain::coefficients(Model, ...)) against 50-digit CLN evaluation of the expressions the
-// derivation produces from the model file, at 1000 random points per model and branch (10000 for the
-// resonant chain, evaluated in double with hand-off rules, except under the sanitizers).
+// through lrchain::coefficients_from_evaluators(Model, ...): the generated code itself, not the
+// resonant chain's hand-written fast path that coefficients(Model, ...) dispatches to) against
+// 50-digit CLN evaluation of the expressions the derivation produces from the model file, at 1000
+// random points per model and branch (10000 for the resonant chain, evaluated in double with
+// hand-off rules, except under the sanitizers).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -80,7 +82,7 @@ TEST_CASE("every shipped model's emitted evaluators agree with 50-digit evaluati
         const double theta = M_PI * (0.001 + 0.998 * U(rng));  // inside (0, pi): no band-edge zeros of c
         NlsCoefficients got;
         try {
-          got = coefficients(model, branch, theta);
+          got = coefficients_from_evaluators(model, branch, theta);
         } catch (const InvalidParameter&) {
           ++excluded;  // no real frequency on this branch at these parameters
           continue;
@@ -153,7 +155,7 @@ TEST_CASE("the resonant chain's double evaluator agrees with 50-digit evaluation
       exact_values[i.symbol] = GiNaC::evalf(i.value.subs(exact_values, GiNaC::subs_options::no_pattern));
     const Model model = shipped_model("resonant_chain", values);
     const std::size_t branch = model.branch(p.branch);
-    const NlsCoefficients got = coefficients(model, branch, p.theta);
+    const NlsCoefficients got = coefficients_from_evaluators(model, branch, p.theta);
     const BranchPoint ref(d, s, exact_values, p.theta, branch, 50);
     const double h = ref.value(d.h).to_double(), h_tilde = ref.value(d.h_tilde).to_double();
     INFO(std::string(p.branch) << " at alpha " << p.alpha << ", theta " << p.theta);

@@ -46,7 +46,7 @@ inline constexpr CoeffsOption kCoeffsOptions[] = {
      "optical (omega_+) or acoustic (omega_-); other models: the names `lrchain derive` lists (acoustic/optical or "
      "branch0, branch1, ...)",
      "dispersion branch"},
-    {"theta", "none (required for one wavenumber)", "(-pi, pi], nonzero on an acoustic branch",
+    {"theta", "none (required for one wavenumber)", "in (-pi, pi], nonzero on an acoustic branch",
      "carrier wavenumber, e.g. pi/2"},
     {"table", "false", "true or false", "the table of every branch at theta = pi/8 ... pi instead of one wavenumber"},
     {"format", "text", "text or json",
