@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "lrchain/errors.hpp"
@@ -315,6 +316,57 @@ TEST_CASE("checkpoint: a restart with a changed parameter or stepper is refused,
   // the unchanged run continues
   CHECK(run_bright_files(c).summary.t_start > 0);
   fs::remove_all(dir);
+}
+
+TEST_CASE("a run naming a checkpoint or restart file without a store in RunControl is refused: sim writes no files") {
+  const fs::path dir = scratch_dir("no-store");
+  BrightRunConfig c = small_bright(StepperKind::rkf78);
+  c.checkpoint_file = (dir / "c.bin").string();
+  CHECK_THROWS_WITH_AS(run_bright(c), doctest::Contains("needs a checkpoint store"), InvalidParameter);
+  CHECK(!fs::exists(c.checkpoint_file));
+  c.checkpoint_file.clear();
+  c.restart_file = (dir / "c.bin").string();
+  CHECK_THROWS_WITH_AS(run_bright(c), doctest::Contains("needs a checkpoint store"), InvalidParameter);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a checkpoint store in memory: the run saves through it and a restart from it equals the uninterrupted run") {
+  // Expected value: the uninterrupted run itself, compared bit for bit (the same step sequence).
+  // (no snapshots: a run that writes no checkpoint file to continue may not name times beyond its end)
+  const auto without_snapshots = [] {
+    BrightRunConfig c = small_bright(StepperKind::rkf78);
+    c.snapshot_periods.clear();
+    return c;
+  };
+  const auto uninterrupted = run_bright(without_snapshots());
+  std::optional<SavedRun> saved;
+  std::string saved_identity;
+  RunControl control;
+  control.checkpoints.save = [&](const TrajectoryIdentity& id, const RunProgress& p, const State& s, const RunRecord& r) {
+    saved = SavedRun{p, s, r};
+    saved_identity = id.text();
+  };
+  BrightRunConfig first = without_snapshots();
+  first.periods = 2;
+  first.checkpoint_at_end = true;
+  const auto head = run_bright(first, control);
+  REQUIRE(saved);
+  CHECK(head.summary.checkpoints_written == 1);
+  CHECK(saved->progress.t == head.summary.t_end);
+  RunControl resume;
+  std::string asked_kind;
+  resume.checkpoints.load = [&](const RestartRequest& r) {
+    asked_kind = r.kind;
+    CHECK(r.identity.text() == saved_identity);
+    CHECK(r.state_size == saved->state.size());
+    return *saved;
+  };
+  const auto restarted = run_bright(without_snapshots(), resume);
+  CHECK(asked_kind == "bright");
+  CHECK(restarted.summary.t_start == saved->progress.t);
+  check_same_record(restarted.record, uninterrupted.record);
+  CHECK(restarted.summary.max_Ex == uninterrupted.summary.max_Ex);
+  CHECK(restarted.summary.final_Ey == uninterrupted.summary.final_Ey);
 }
 
 TEST_CASE("restart equals the uninterrupted run to the last bit: bright, to t1 then to t2") {
