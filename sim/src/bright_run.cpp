@@ -18,7 +18,7 @@
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"
 #include "lrchain/sim/strain_sites.hpp"
-#include "restart.hpp"
+#include "checkpointing.hpp"
 #include "sampling_checks.hpp"
 
 namespace lrchain::sim {
@@ -160,6 +160,7 @@ BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) 
 
 BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const RunControl& control) {
   validate(c);
+  require_checkpoint_store(control, c.checkpoint_file, c.restart_file);
   const BrightBreatherAnsatz ansatz(c.params, c.branch, c.theta, c.detuning, c.n0);
   const Index N = c.N;
   const std::size_t beads = std::size_t(2 * N + 2);  // labels -N-1 .. N
@@ -235,13 +236,13 @@ BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const 
   bool first_sample = true, skip_first = false;
   double resume_step = 0;
   CheckpointSink sink;
-  sink.file = c.checkpoint_file;
-  sink.identity = identity.text();
+  sink.store = &control.checkpoints;
+  sink.identity = &identity;
   sink.t_end = t_end;
   sink.at_end = c.checkpoint_at_end;
-  if (!c.restart_file.empty()) {
+  if (control.checkpoints.load) {
     const Resumption r = resume_from_checkpoint(
-        c.restart_file, identity, "bright", beads, t_end, s, rec,
+        control.checkpoints, identity, "bright", beads, t_end, s, rec,
         {{"x0_inf", &S.x0_inf}, {"y0_inf", &S.y0_inf}, {"energy0", &S.energy0}, {"max_Ex", &S.max_Ex},
          {"max_Ey", &S.max_Ey}, {"max_Ex_window", &S.max_Ex_window}, {"max_Ey_window", &S.max_Ey_window},
          {"final_Ex", &S.final_Ex}, {"final_Ey", &S.final_Ey}, {"max_energy_drift", &S.max_energy_drift},

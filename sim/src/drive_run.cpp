@@ -17,7 +17,7 @@
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"
-#include "restart.hpp"
+#include "checkpointing.hpp"
 #include "sampling_checks.hpp"
 
 namespace lrchain::sim {
@@ -134,6 +134,7 @@ long count_peaks(const std::vector<double>& e, double fraction) {
 
 DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   validate(c);
+  require_checkpoint_store(control, c.checkpoint_file, c.restart_file);
   DriveRunResult result;
   auto& S = result.summary;
   S.theta = optical_wavenumber(c.params, c.omega0);
@@ -184,13 +185,13 @@ DriveRunResult run_drive(const DriveRunConfig& c, const RunControl& control) {
   bool skip_first = false;
   double resume_step = 0;
   CheckpointSink sink;
-  sink.file = c.checkpoint_file;
-  sink.identity = identity.text();
+  sink.store = &control.checkpoints;
+  sink.identity = &identity;
   sink.t_end = c.t_end;
   sink.at_end = c.checkpoint_at_end;
-  if (!c.restart_file.empty()) {
+  if (control.checkpoints.load) {
     const Resumption r = resume_from_checkpoint(
-        c.restart_file, identity, "drive", beads, c.t_end, s, rec,
+        control.checkpoints, identity, "drive", beads, c.t_end, s, rec,
         {{"max_energy", &S.max_energy}, {"max_participation", &S.max_participation},
          {"final_energy", &S.final_energy}, {"final_participation", &S.final_participation},
          {"final_peaks", &final_peaks}, {"next_spacetime_row", &next_st}},

@@ -8,7 +8,7 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/output_target.hpp"
-#include "lrchain/sim/checkpoint.hpp"
+#include "lrchain/sim/output_files.hpp"
 
 namespace lrchain::sim {
 

@@ -13,13 +13,12 @@
 #include "lrchain/coefficients.hpp"
 #include "lrchain/dispersion.hpp"
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/checkpoint.hpp"
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
 #include "lrchain/sim/observation.hpp"
-#include "restart.hpp"
+#include "checkpointing.hpp"
 #include "sampling_checks.hpp"
 
 namespace lrchain::sim {
@@ -135,6 +134,7 @@ void running_mean(const std::vector<double>& e, long w, std::vector<double>& m) 
 
 ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& control) {
   validate(c);
+  require_checkpoint_store(control, c.checkpoint_file, c.restart_file);
   ModulatedRunResult result;
   auto& S = result.summary;
   const std::size_t N = std::size_t(c.N);
@@ -180,14 +180,14 @@ ModulatedRunResult run_modulated(const ModulatedRunConfig& c, const RunControl& 
   bool skip_first = false;
   double resume_step = 0;
   CheckpointSink sink;
-  sink.file = c.checkpoint_file;
-  sink.identity = identity.text();
+  sink.store = &control.checkpoints;
+  sink.identity = &identity;
   sink.t_end = c.t_end;
   sink.at_end = c.checkpoint_every > 0;
-  if (!c.restart_file.empty()) {
+  if (control.checkpoints.load) {
     double instability_found = 0, instability_time = 0;  // the optional, as two numbers
     const Resumption r = resume_from_checkpoint(
-        c.restart_file, identity, "modulated", N, c.t_end, s, rec,
+        control.checkpoints, identity, "modulated", N, c.t_end, s, rec,
         {{"initial_contrast", &S.initial_contrast}, {"max_energy_drift", &S.max_energy_drift},
          {"instability_found", &instability_found}, {"instability_time", &instability_time},
          {"previous_centre", &prev_centre}, {"unwrapped_centre", &unwrapped},

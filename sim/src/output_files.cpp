@@ -33,6 +33,14 @@ void ensure_directory(const fs::path& dir) {
     throw std::runtime_error("cannot create output directory '" + dir.string() + "': " + ec.message());
 }
 
+fs::path temporary_name(const fs::path& file) {
+  std::string name(1, '.');
+  name += file.filename().string();
+  name += ".tmp.";
+  name += std::to_string(::getpid());
+  return file.parent_path() / name;
+}
+
 namespace {
 fs::path temp_name(const fs::path& dir, const std::string& name) {
   return dir / ("." + name + ".tmp." + std::to_string(::getpid()));

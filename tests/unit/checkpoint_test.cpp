@@ -1,4 +1,5 @@
-// Checkpoint format 2 (lrchain/sim/checkpoint.hpp): round trip, every kind of damaged file refused
+// Checkpoint format 3 (lrchain/jobs/checkpoint/checkpoint_file.hpp) and the runs' checkpoint store
+// (lrchain/sim/checkpoint_store.hpp, as files: jobs::with_checkpoint_files): round trip, every kind of damaged file refused
 // with an InputError naming it, a changed parameter refused naming it, and restarts equal to the
 // uninterrupted run bit for bit (expected value: the uninterrupted run itself, compared exactly).
 #include <doctest/doctest.h>
@@ -12,20 +13,35 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sha256.hpp"
-#include "lrchain/sim/checkpoint.hpp"
+#include "lrchain/jobs/checkpoint/checkpoint_file.hpp"
+#include "lrchain/jobs/checkpoint/checkpoint_files.hpp"
 #include "lrchain/sim/drive_run.hpp"
 #include "lrchain/sim/modulated_run.hpp"
+#include "lrchain/sim/output_files.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim;
+using namespace lrchain::jobs;
 namespace fs = std::filesystem;
 
 namespace {
+
+// The runs with their checkpoints as files, as the simulate job runs them.
+BrightRunResult run_bright_files(const BrightRunConfig& c, const RunControl& control = {}) {
+  return run_bright(c, with_checkpoint_files(control, c));
+}
+DriveRunResult run_drive_files(const DriveRunConfig& c, const RunControl& control = {}) {
+  return run_drive(c, with_checkpoint_files(control, c));
+}
+ModulatedRunResult run_modulated_files(const ModulatedRunConfig& c, const RunControl& control = {}) {
+  return run_modulated(c, with_checkpoint_files(control, c));
+}
 
 fs::path scratch_dir(const std::string& name) {
   const fs::path d = fs::temp_directory_path() / ("lrchain-checkpoint-test-" + name + "-" +
@@ -255,7 +271,7 @@ TEST_CASE("checkpoint: a restart with a changed parameter or stepper is refused,
   c.periods = 1;
   c.checkpoint_file = (dir / "a.bin").string();
   c.checkpoint_at_end = true;
-  run_bright(c);
+  run_bright_files(c);
   REQUIRE(fs::exists(dir / "a.bin"));
   c.checkpoint_file.clear();
   c.restart_file = (dir / "a.bin").string();
@@ -263,7 +279,7 @@ TEST_CASE("checkpoint: a restart with a changed parameter or stepper is refused,
 
   auto expect = [&](BrightRunConfig changed, const std::string& text) {
     try {
-      run_bright(changed);
+      run_bright_files(changed);
       FAIL("restart accepted with " << text);
     } catch (const InvalidParameter& e) {
       CHECK_MESSAGE(std::string(e.what()).find(text) != std::string::npos, e.what());
@@ -296,10 +312,61 @@ TEST_CASE("checkpoint: a restart with a changed parameter or stepper is refused,
   d.beads = 20;
   d.t_end = 5;
   d.restart_file = (dir / "a.bin").string();
-  CHECK_THROWS_AS(run_drive(d), InvalidParameter);
+  CHECK_THROWS_AS(run_drive_files(d), InvalidParameter);
   // the unchanged run continues
-  CHECK(run_bright(c).summary.t_start > 0);
+  CHECK(run_bright_files(c).summary.t_start > 0);
   fs::remove_all(dir);
+}
+
+TEST_CASE("a run naming a checkpoint or restart file without a store in RunControl is refused: sim writes no files") {
+  const fs::path dir = scratch_dir("no-store");
+  BrightRunConfig c = small_bright(StepperKind::rkf78);
+  c.checkpoint_file = (dir / "c.bin").string();
+  CHECK_THROWS_WITH_AS(run_bright(c), doctest::Contains("needs a checkpoint store"), InvalidParameter);
+  CHECK(!fs::exists(c.checkpoint_file));
+  c.checkpoint_file.clear();
+  c.restart_file = (dir / "c.bin").string();
+  CHECK_THROWS_WITH_AS(run_bright(c), doctest::Contains("needs a checkpoint store"), InvalidParameter);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a checkpoint store in memory: the run saves through it and a restart from it equals the uninterrupted run") {
+  // Expected value: the uninterrupted run itself, compared bit for bit (the same step sequence).
+  // (no snapshots: a run that writes no checkpoint file to continue may not name times beyond its end)
+  const auto without_snapshots = [] {
+    BrightRunConfig c = small_bright(StepperKind::rkf78);
+    c.snapshot_periods.clear();
+    return c;
+  };
+  const auto uninterrupted = run_bright(without_snapshots());
+  std::optional<SavedRun> saved;
+  std::string saved_identity;
+  RunControl control;
+  control.checkpoints.save = [&](const TrajectoryIdentity& id, const RunProgress& p, const State& s, const RunRecord& r) {
+    saved = SavedRun{p, s, r};
+    saved_identity = id.text();
+  };
+  BrightRunConfig first = without_snapshots();
+  first.periods = 2;
+  first.checkpoint_at_end = true;
+  const auto head = run_bright(first, control);
+  REQUIRE(saved);
+  CHECK(head.summary.checkpoints_written == 1);
+  CHECK(saved->progress.t == head.summary.t_end);
+  RunControl resume;
+  std::string asked_kind;
+  resume.checkpoints.load = [&](const RestartRequest& r) {
+    asked_kind = r.kind;
+    CHECK(r.identity.text() == saved_identity);
+    CHECK(r.state_size == saved->state.size());
+    return *saved;
+  };
+  const auto restarted = run_bright(without_snapshots(), resume);
+  CHECK(asked_kind == "bright");
+  CHECK(restarted.summary.t_start == saved->progress.t);
+  check_same_record(restarted.record, uninterrupted.record);
+  CHECK(restarted.summary.max_Ex == uninterrupted.summary.max_Ex);
+  CHECK(restarted.summary.final_Ey == uninterrupted.summary.final_Ey);
 }
 
 TEST_CASE("restart equals the uninterrupted run to the last bit: bright, to t1 then to t2") {
@@ -311,19 +378,19 @@ TEST_CASE("restart equals the uninterrupted run to the last bit: bright, to t1 t
     BrightRunConfig full = small_bright(stepper);
     full.checkpoint_file = (dir / "full.bin").string();
     full.checkpoint_at_end = true;
-    const auto uninterrupted = run_bright(full);
+    const auto uninterrupted = run_bright_files(full);
     REQUIRE(!uninterrupted.summary.blew_up);
 
     BrightRunConfig first = small_bright(stepper);
     first.periods = 2;
     first.checkpoint_file = (dir / "t1.bin").string();
     first.checkpoint_at_end = true;
-    run_bright(first);
+    run_bright_files(first);
     BrightRunConfig second = small_bright(stepper);
     second.restart_file = (dir / "t1.bin").string();
     second.checkpoint_file = (dir / "t2.bin").string();
     second.checkpoint_at_end = true;
-    const auto restarted = run_bright(second);
+    const auto restarted = run_bright_files(second);
 
     check_same_record(restarted.record, uninterrupted.record);
     CHECK(same_bits(read_checkpoint(dir / "t2.bin").state, read_checkpoint(dir / "full.bin").state));
@@ -349,7 +416,7 @@ TEST_CASE("restart after an interrupt equals the uninterrupted run to the last b
                               StepperKind::srkn14a, StepperKind::ss17}) {
     CAPTURE(to_string(stepper));
     const fs::path dir = scratch_dir("interrupt");
-    const auto uninterrupted = run_bright(small_bright(stepper));
+    const auto uninterrupted = run_bright_files(small_bright(stepper));
 
     std::atomic<bool> stop{false};
     RunControl control;
@@ -359,7 +426,7 @@ TEST_CASE("restart after an interrupt equals the uninterrupted run to the last b
     };
     BrightRunConfig c = small_bright(stepper);
     c.checkpoint_file = (dir / "i.bin").string();
-    const auto interrupted = run_bright(c, control);
+    const auto interrupted = run_bright_files(c, control);
     REQUIRE(interrupted.summary.interrupted);
     CHECK(interrupted.summary.t_end < uninterrupted.summary.t_end);
     CHECK(interrupted.summary.checkpoints_written == 1);
@@ -370,7 +437,7 @@ TEST_CASE("restart after an interrupt equals the uninterrupted run to the last b
 
     c.restart_file = c.checkpoint_file;
     c.checkpoint_file.clear();
-    const auto restarted = run_bright(c);
+    const auto restarted = run_bright_files(c);
     CHECK(!restarted.summary.interrupted);
     check_same_record(restarted.record, uninterrupted.record);
     CHECK(restarted.summary.max_Ex == uninterrupted.summary.max_Ex);
@@ -391,15 +458,15 @@ TEST_CASE("restart equals the uninterrupted run to the last bit: drive (rkf78) a
     c.snapshot_times = {15, 30};
     c.front_fit_start = 2;
     c.front_fit_end = 25;
-    const auto full = run_drive(c);
+    const auto full = run_drive_files(c);
     c.t_end = 12;
     c.checkpoint_file = (dir / "d.bin").string();
     c.checkpoint_at_end = true;
-    run_drive(c);
+    run_drive_files(c);
     c.t_end = 30;
     c.restart_file = c.checkpoint_file;
     c.checkpoint_file.clear();
-    const auto restarted = run_drive(c);
+    const auto restarted = run_drive_files(c);
     check_same_record(restarted.record, full.record);
     CHECK(restarted.summary.front_speed == full.summary.front_speed);
     CHECK(restarted.summary.max_participation == full.summary.max_participation);
@@ -415,16 +482,16 @@ TEST_CASE("restart equals the uninterrupted run to the last bit: drive (rkf78) a
     c.speed_fit_start = 10;
     c.speed_fit_end = 50;
     c.checkpoint_every = 0;
-    const auto full = run_modulated(c);
+    const auto full = run_modulated_files(c);
     c.checkpoint_every = 10;
     c.t_end = 20;
     c.checkpoint_file = (dir / "m.bin").string();
-    const auto first = run_modulated(c);
+    const auto first = run_modulated_files(c);
     CHECK(first.summary.checkpoints_written == 2);  // t = 10 and the end, t = 20
     c.t_end = 60;
     c.restart_file = c.checkpoint_file;
     c.checkpoint_file.clear();
-    const auto restarted = run_modulated(c);
+    const auto restarted = run_modulated_files(c);
     check_same_record(restarted.record, full.record);
     CHECK(restarted.summary.dark_speed == full.summary.dark_speed);
     CHECK(restarted.summary.max_energy_drift == full.summary.max_energy_drift);

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "lrchain/process.hpp"
-#include "lrchain/sim/checkpoint.hpp"
+#include "lrchain/jobs/checkpoint/checkpoint_file.hpp"
 
 namespace fs = std::filesystem;
 
@@ -79,7 +79,7 @@ void check_files_complete(const fs::path& dir) {
       CHECK(sites == 402);  // beads -N-1..N
       CHECK(text.size() % ((std::size_t(sites) + 1) * sizeof(float)) == 0);
     } else if (name == "checkpoint.bin") {
-      CHECK_NOTHROW(lrchain::sim::read_checkpoint(e.path()));
+      CHECK_NOTHROW(lrchain::jobs::read_checkpoint(e.path()));
     }
   }
   CHECK(files >= 5);

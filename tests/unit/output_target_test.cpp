@@ -18,7 +18,7 @@
 #include "../support/scratch_dir.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/output_target.hpp"
-#include "lrchain/sim/checkpoint.hpp"
+#include "lrchain/jobs/checkpoint/checkpoint_file.hpp"
 #include "lrchain/sim/hdf5_tree.hpp"
 #include "lrchain/sim/output_files.hpp"
 
@@ -125,11 +125,11 @@ TEST_CASE("the HDF5 writer (to_hdf5, --format hdf5, dark HDF5) refuses a FIFO, a
 
 TEST_CASE("checkpoints refuse a FIFO, a directory and a link to /dev/null") {
   check_refuses_every_kind("checkpoint", "c.bin", [](const fs::path& d, const std::string& n) {
-    sim::Checkpoint c;
+    jobs::Checkpoint c;
     c.identity = "run = test\n";
     c.next_step = 0.1;
     c.state = {1, 2};
-    sim::write_checkpoint(d / n, c, sim::RunRecord{});
+    jobs::write_checkpoint(d / n, c, sim::RunRecord{});
   });
 }
 

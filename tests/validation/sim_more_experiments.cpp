@@ -17,7 +17,8 @@
 #include "../support/run_lrchain.hpp"
 #include "lrchain/coefficients.hpp"
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/checkpoint.hpp"
+#include "lrchain/jobs/checkpoint/checkpoint_file.hpp"
+#include "lrchain/jobs/checkpoint/checkpoint_files.hpp"
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/drive_run.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
@@ -96,16 +97,16 @@ TEST_CASE("exp7 checkpoint/restart: 0->1000 then restart ->2000 equals one run 0
   c.checkpoint_every = 500;
   c.t_end = 1000;
   c.checkpoint_file = (dir / "a.bin").string();
-  run_modulated(c);
+  run_modulated(c, with_checkpoint_files({}, c));
   CHECK(read_checkpoint(dir / "a.bin").t == doctest::Approx(1000));
   c.t_end = 2000;
   c.restart_file = (dir / "a.bin").string();
   c.checkpoint_file = (dir / "b.bin").string();
-  const auto rb = run_modulated(c);
+  const auto rb = run_modulated(c, with_checkpoint_files({}, c));
   CHECK(rb.summary.t_start == doctest::Approx(1000));
   c.restart_file.clear();
   c.checkpoint_file = (dir / "c.bin").string();
-  run_modulated(c);
+  run_modulated(c, with_checkpoint_files({}, c));
   const auto b = read_checkpoint(dir / "b.bin"), full = read_checkpoint(dir / "c.bin");
   REQUIRE(b.state.size() == full.state.size());
   CHECK(b.t == doctest::Approx(2000));
@@ -116,7 +117,7 @@ TEST_CASE("exp7 checkpoint/restart: 0->1000 then restart ->2000 equals one run 0
   // a checkpoint of a run with other physics is refused
   c.params.rho = 0.3;
   c.restart_file = (dir / "a.bin").string();
-  CHECK_THROWS_AS(run_modulated(c), lrchain::InvalidParameter);
+  CHECK_THROWS_AS(run_modulated(c, with_checkpoint_files({}, c)), lrchain::InvalidParameter);
   std::filesystem::remove_all(dir);
 }
 

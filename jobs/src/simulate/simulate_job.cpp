@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/jobs/checkpoint/checkpoint_files.hpp"
 #include "lrchain/jobs/simulate/bright_outputs.hpp"
 #include "lrchain/jobs/simulate/drive_outputs.hpp"
 #include "lrchain/jobs/simulate/modulated_outputs.hpp"
@@ -93,7 +94,7 @@ auto simulate_job(const Config& given, const RunOutput& output, const sim::RunCo
   if (!output.dir.empty()) lock.emplace(output.dir);
   refuse_earlier_checkpoint(c);  // (after the lock: a run still writing it is named by the lock)
   const sim::OutputListing earlier = output.dir.empty() ? sim::OutputListing{} : sim::list_output_files(output.dir);
-  auto result = run(c, control);
+  auto result = run(c, with_checkpoint_files(control, c));  // checkpoints as files (checkpoint_files.hpp)
   nlohmann::json j = to_json(c, result.summary);
   j["checkpoint_file"] = c.checkpoint_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.checkpoint_file);
   j["checkpoints_written"] = result.summary.checkpoints_written;

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "../run_json.hpp"
+#include "lrchain/model_json.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/hdf5_tree.hpp"
 #include "lrchain/sim/result_hdf5.hpp"

@@ -15,6 +15,8 @@ namespace lrchain::sim {
 
 // Creates dir (and parents); throws std::runtime_error naming it if that fails.
 void ensure_directory(const std::filesystem::path& dir);
+// A temporary name next to `file`, unique to this process: "<dir>/.<name>.tmp.<pid>".
+std::filesystem::path temporary_name(const std::filesystem::path& file);
 // Writes `content` to dir/name via a temporary file + rename. Every writer first asks
 // lrchain::check_output_target (lrchain/output_target.hpp) whether it may replace its target: a
 // directory, device, FIFO or socket there is refused with InputError naming it.

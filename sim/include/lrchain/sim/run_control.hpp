@@ -1,10 +1,11 @@
 #pragma once
-// Interrupt and progress hooks a caller (the CLI) passes into a long run. No global state.
+// Interrupt, progress and checkpoint hooks a caller (a job) passes into a long run. No global state.
 #include <atomic>
 #include <functional>
 #include <span>
 
 #include "lrchain/index.hpp"
+#include "lrchain/sim/checkpoint_store.hpp"
 
 namespace lrchain::sim {
 
@@ -22,6 +23,9 @@ struct RunControl {
   const std::atomic<bool>* stop = nullptr;        // set (e.g. by SIGINT) to end at the next sample
   std::function<void(double fraction)> progress;  // called at samples with t / t_end in [0, 1]
   std::function<void(const SampleView&)> on_sample;  // called at every sample (also the first)
+  // Where the bright, drive and modulated runs save checkpoints and restart from (empty: none).
+  // A config that names a checkpoint or restart file needs one (jobs::with_checkpoint_files).
+  CheckpointStore checkpoints;
   bool stop_requested() const { return stop && stop->load(std::memory_order_relaxed); }
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// Checkpoint/restart of long lattice runs. A checkpoint knows what it continues: it records the
+// Checkpoint files of long lattice runs (the job layer's side of sim::CheckpointStore). A checkpoint knows what it continues: it records the
 // lrchain version and, as readable `key = value` lines, everything that defines the trajectory
 // (run kind, model, every physical parameter, lattice size, stepper and its settings, a hash of the
 // initial state), plus a hash of those lines; then the time, the step size the stepper tries next,
@@ -25,41 +25,15 @@
 #include <utility>
 #include <vector>
 
+#include "lrchain/sim/checkpoint_store.hpp"
 #include "lrchain/sim/run_record.hpp"
 #include "lrchain/sim/state.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
 
-// How a restart mismatch names an item whose recorded key is not what the user sets: the config
-// key / option name, and for a long item recorded in other terms, its value in the user's terms
-// (the bright run records the half-width N, the user sets sites = 2N + 1).
-struct ShownAs {
-  std::string name;
-  std::function<long(long)> value = {};  // empty: the recorded value
-};
-
-// What defines a trajectory, as ordered key = value items; doubles print in the shortest form that
-// reads back to the same bits. The keys stay as written by earlier versions, so that their
-// checkpoints still restart; ShownAs gives the name a mismatch message uses.
-class TrajectoryIdentity {
- public:
-  void add(const std::string& key, double value);
-  void add(const std::string& key, long value);
-  void add(const std::string& key, double value, ShownAs shown);
-  void add(const std::string& key, long value, ShownAs shown);
-  void add(const std::string& key, const std::string& value);
-  void add(const std::string& key, const char* value) { add(key, std::string(value)); }
-  void add_state_hash(const std::string& key, const State& state);  // "sha256:<hex of its bytes>"
-  const std::vector<std::pair<std::string, std::string>>& items() const { return items_; }
-  std::string text() const;  // "lrchain_version = ...\nkey = value\n..."
-  // The item `key` with the recorded text `value` as the user names it: "sites = 1001" for
-  // N = 500 added with ShownAs{"sites", 2N + 1}; "key = value" for an item added without one.
-  std::string shown(const std::string& key, const std::string& value) const;
-
- private:
-  std::vector<std::pair<std::string, std::string>> items_;
-  std::vector<std::pair<std::string, ShownAs>> shown_;
-};
+using sim::RunRecord;
+using sim::State;
+using sim::TrajectoryIdentity;
 
 struct Checkpoint {
   std::string identity;   // TrajectoryIdentity::text() of the run that wrote it
@@ -74,13 +48,13 @@ struct Checkpoint {
   double accumulator(const std::filesystem::path& file, const std::string& name) const;
 };
 
-// A temporary name next to `file`, unique to this process: "<dir>/.<name>.tmp.<pid>".
-std::filesystem::path temporary_name(const std::filesystem::path& file);
-
 // Writes `c` with `record` (in place of c.record, which a run need not copy) to `file` (its
 // directory must exist; a `file` that is a directory, device, FIFO or socket is refused,
 // check_output_target) via a temporary name + rename.
 void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c, const RunRecord& record);
+// The same file from a run's progress (sim::CheckpointStore::save): identity text, progress, state, record.
+void write_checkpoint(const std::filesystem::path& file, const std::string& identity, const sim::RunProgress& progress,
+                      const State& state, const RunRecord& record);
 
 // Reads and verifies a checkpoint (magic, version, sizes against the file's size, CRC-32, identity
 // hash, finite state, time >= 0). Throws InputError naming the file and what is wrong.
@@ -92,4 +66,4 @@ Checkpoint read_checkpoint(const std::filesystem::path& file);
 void check_same_trajectory(const std::filesystem::path& file, const Checkpoint& c,
                            const TrajectoryIdentity& run);
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

@@ -1,4 +1,4 @@
-// Checkpoint files, format 2 (layout in checkpoint.hpp): writer, verifying reader, identity check.
+// Checkpoint files, format 3 (layout in checkpoint_file.hpp): writer, verifying reader, identity check.
 //
 // The file checksum is Boost.CRC's crc_32_type (the CRC of zip and PNG): it detects every error
 // burst up to 32 bits and every odd number of flipped bits, which a multiplicative hash such as
@@ -6,12 +6,9 @@
 // The identity and initial-state hashes are SHA-256 (lrchain/sha256.hpp, OpenSSL's libcrypto): a
 // checkpoint is continued only by the run it was written for, and no crafted file can pass for
 // another run's. Format 2 (FNV-1a 64 fingerprints, lrchain 0.1) is refused with a message saying so.
-#include "lrchain/sim/checkpoint.hpp"
-
-#include <unistd.h>
+#include "lrchain/jobs/checkpoint/checkpoint_file.hpp"
 
 #include <boost/crc.hpp>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -25,14 +22,13 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/output_target.hpp"
 #include "lrchain/sha256.hpp"
+#include "lrchain/sim/output_files.hpp"
 
-#ifndef LRCHAIN_VERSION
-#error "LRCHAIN_VERSION must be defined (sim/CMakeLists.txt passes the CMake project version)"
-#endif
-
-namespace lrchain::sim {
+namespace lrchain::jobs {
 
 namespace fs = std::filesystem;
+using sim::Snapshot;
+using sim::SpaceTime;
 
 namespace {
 
@@ -204,80 +200,36 @@ std::uint32_t file_crc(std::ifstream& in, std::uint64_t n) {
 
 }  // namespace
 
-void TrajectoryIdentity::add(const std::string& key, double value) {
-  items_.emplace_back(key, fmt::format("{}", value));
-}
-void TrajectoryIdentity::add(const std::string& key, long value) {
-  items_.emplace_back(key, std::to_string(value));
-}
-void TrajectoryIdentity::add(const std::string& key, const std::string& value) {
-  items_.emplace_back(key, value);
-}
-void TrajectoryIdentity::add(const std::string& key, double value, ShownAs shown) {
-  add(key, value);
-  shown_.emplace_back(key, std::move(shown));
-}
-void TrajectoryIdentity::add(const std::string& key, long value, ShownAs shown) {
-  add(key, value);
-  shown_.emplace_back(key, std::move(shown));
-}
-void TrajectoryIdentity::add_state_hash(const std::string& key, const State& state) {
-  const std::string_view bytes(reinterpret_cast<const char*>(state.data()), state.size() * sizeof(double));
-  items_.emplace_back(key, "sha256:" + sha256_hex(bytes));
-}
-
-std::string TrajectoryIdentity::text() const {
-  std::string t = std::string("lrchain_version = ") + LRCHAIN_VERSION + "\n";
-  for (const auto& [k, v] : items_) t += k + " = " + v + "\n";
-  return t;
-}
-
-std::string TrajectoryIdentity::shown(const std::string& key, const std::string& value) const {
-  for (const auto& [k, s] : shown_) {
-    if (k != key) continue;
-    if (!s.value) return s.name + " = " + value;
-    long recorded = 0;
-    const char* end = value.data() + value.size();
-    const auto [at, error] = std::from_chars(value.data(), end, recorded);
-    if (error == std::errc() && at == end) return s.name + " = " + std::to_string(s.value(recorded));
-    break;  // not a long: shown as recorded
-  }
-  return key + " = " + value;
-}
-
 double Checkpoint::accumulator(const fs::path& file, const std::string& name) const {
   for (const auto& [k, v] : accumulators)
     if (k == name) return v;
   throw InputError("checkpoint '" + file.string() + "' lacks the run's value '" + name + "'");
 }
 
-fs::path temporary_name(const fs::path& file) {
-  std::string name(1, '.');
-  name += file.filename().string();
-  name += ".tmp.";
-  name += std::to_string(::getpid());
-  return file.parent_path() / name;
+void write_checkpoint(const fs::path& file, const Checkpoint& c, const RunRecord& record) {
+  write_checkpoint(file, c.identity, {c.t, c.next_step, c.steps, c.rhs_evaluations, c.accumulators}, c.state, record);
 }
 
-void write_checkpoint(const fs::path& file, const Checkpoint& c, const RunRecord& record) {
+void write_checkpoint(const fs::path& file, const std::string& identity, const sim::RunProgress& p,
+                      const State& state, const RunRecord& record) {
   check_output_target(file);
   Writer w;
   w.bytes.append(kMagic, 8);
   w.put(kFormatVersion);
-  w.put_string(c.identity);
-  w.put(sha256(c.identity));
-  std::string progress = "t = " + hex_double(c.t) + "\nnext_step = " + hex_double(c.next_step) +
-                         "\nsteps = " + std::to_string(c.steps) +
-                         "\nrhs_evaluations = " + std::to_string(c.rhs_evaluations) + "\n";
-  for (const auto& [k, v] : c.accumulators) progress += k + " = " + hex_double(v) + "\n";
+  w.put_string(identity);
+  w.put(sha256(identity));
+  std::string progress = "t = " + hex_double(p.t) + "\nnext_step = " + hex_double(p.next_step) +
+                         "\nsteps = " + std::to_string(p.steps) +
+                         "\nrhs_evaluations = " + std::to_string(p.rhs_evaluations) + "\n";
+  for (const auto& [k, v] : p.accumulators) progress += k + " = " + hex_double(v) + "\n";
   w.put_string(progress);
-  w.put_array(c.state);
+  w.put_array(state);
   put_record(w, record);
   boost::crc_32_type crc;
   crc.process_bytes(w.bytes.data(), w.bytes.size());
   w.put(std::uint32_t(crc.checksum()));
 
-  const fs::path tmp = temporary_name(file);
+  const fs::path tmp = sim::temporary_name(file);
   {
     std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
     os.write(w.bytes.data(), std::streamsize(w.bytes.size()));
@@ -379,4 +331,4 @@ void check_same_trajectory(const fs::path& file, const Checkpoint& c, const Traj
                                                   file.string(), stored.size(), current.size()));
 }
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs
