@@ -1,26 +1,15 @@
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/dark/tangent_propagation.hpp"
 
 namespace lrchain::sim::dark {
 
-std::string_view to_string(ShootingMode m) { return m == ShootingMode::reversible ? "reversible" : "full"; }
-
-ShootingMode parse_shooting_mode(std::string_view text) {
-  if (text == "reversible") return ShootingMode::reversible;
-  if (text == "full") return ShootingMode::full;
-  throw InvalidParameter("mode", "must be 'reversible' (half/quarter period) or 'full', got '" +
-                                     std::string(text) + "'");
-}
-
-DarkShooting::DarkShooting(const Params& p, Index sites, DarkCenter center, ShootingMode mode,
+ResonantChainShooting::ResonantChainShooting(const Params& p, Index sites, DarkCenter center, ShootingMode mode,
                            ContactIntegrationOptions integration)
     : p_(p), sites_(sites), center_(center), mode_(mode), integration_(integration) {
   validate(p);
@@ -62,13 +51,13 @@ DarkShooting::DarkShooting(const Params& p, Index sites, DarkCenter center, Shoo
     basis_ = Eigen::MatrixXd::Identity(2 * N, 2 * N);
 }
 
-double DarkShooting::shooting_time(double omega_b) const {
+double ResonantChainShooting::shooting_time(double omega_b) const {
   const double period = 2.0 * std::numbers::pi / omega_b;
   if (mode_ == ShootingMode::full) return period;
   return center_ == DarkCenter::site ? 0.5 * period : 0.25 * period;
 }
 
-void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
+void ResonantChainShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
                             Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator) const {
   const Index N = sites_;
   const Index k = basis_.cols();
@@ -217,79 +206,7 @@ void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::Vec
   }
 }
 
-double state_amplitude(const DarkShootingProblem& shooting, const Eigen::VectorXd& q) {
-  const Eigen::VectorXd z = shooting.z_from_unknowns(q);
-  return z.size() == 0 ? 0.0 : (z.array() - z.mean()).abs().maxCoeff();
-}
-
-namespace {
-// Empty if Z(0) = B q is a breather; why not if its amplitude collapsed to round-off (<= 1e-8) of the
-// seed's: Newton found the trivial zero of F, not a breather.
-std::string trivial_state_failure(const DarkShootingProblem& shooting, const Eigen::VectorXd& q,
-                                  double seed_amplitude) {
-  if (state_amplitude(shooting, q) > trivial_state_ratio * seed_amplitude) return {};
-  return "converged to the trivial state (no breather at this omega_b and sites); try more sites or "
-         "omega_b closer to the band edge";
-}
-}  // namespace
-
-NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q0, double omega_b,
-                          const NewtonOptions& options) {
-  NewtonResult result;
-  const double seed_amplitude = state_amplitude(shooting, q0);
-  result.q = std::move(q0);
-  Eigen::VectorXd r;
-  Eigen::MatrixXd J;
-  const Index k = shooting.unknowns();
-  double first = -1;
-  for (Index it = 0; it <= options.max_iterations; ++it) {
-    shooting.evaluate(result.q, omega_b, r, &J);
-    NewtonRecord rec;
-    rec.iteration = it;
-    rec.residual = r.lpNorm<Eigen::Infinity>();
-    if (!std::isfinite(rec.residual)) {
-      result.failure = "residual is not finite";
-      result.history.push_back(rec);
-      if (options.progress) options.progress(rec);
-      return result;
-    }
-    if (first < 0) first = rec.residual;
-    if (rec.residual <= options.tolerance) {
-      result.failure = trivial_state_failure(shooting, result.q, seed_amplitude);
-      result.converged = result.failure.empty();
-      result.history.push_back(rec);
-      if (options.progress) options.progress(rec);
-      return result;
-    }
-    if (it == options.max_iterations) {
-      result.failure = "no convergence in " + std::to_string(options.max_iterations) + " iterations";
-      result.history.push_back(rec);
-      if (options.progress) options.progress(rec);
-      return result;
-    }
-    if (rec.residual > 1e3 * std::max(first, 1e-6)) {
-      result.failure = "diverging (residual grew by more than 1e3)";
-      result.history.push_back(rec);
-      if (options.progress) options.progress(rec);
-      return result;
-    }
-    const Eigen::VectorXd step = J.leftCols(k).colPivHouseholderQr().solve(-r);
-    rec.step = step.lpNorm<Eigen::Infinity>();
-    result.history.push_back(rec);
-    if (options.progress) options.progress(rec);
-    result.q += step;
-  }
-  return result;
-}
-
-std::string newton_failure_message(const NewtonResult& result, double omega_b) {
-  std::string history;
-  for (const auto& record : result.history) history += fmt::format(" {:.3e}", record.residual);
-  return fmt::format("Newton found no breather at omega_b = {}: {}; residual history:{}", omega_b, result.failure,
-                     history);
-}
-
-Eigen::VectorXd dark_seed(const DarkBreatherAnsatz& ansatz, DarkCenter center, Index sites) {
+Eigen::VectorXd resonant_chain_dark_seed(const DarkBreatherAnsatz& ansatz, DarkCenter center, Index sites) {
   std::vector<double> x, y;
   const Index half = (sites - 1) / 2;
   dark_breather_strains(ansatz, center, -half, sites, 0.0, x, y);

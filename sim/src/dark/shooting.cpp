@@ -1,6 +1,6 @@
 // Shooting Newton residuals, variational equations and Floquet multipliers of dark breathers of
-// any model file (model_shooting.hpp).
-#include "lrchain/sim/dark/model_shooting.hpp"
+// any model file (shooting.hpp).
+#include "lrchain/sim/dark/shooting.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,14 +22,14 @@ using OrbitState = std::vector<double>;
 
 // The orbit's stepper (the extended system's is made per call: Odeint sizes a stepper's stage
 // storage once, and the number of tangent columns changes between calls).
-struct ModelDarkOrbit::Steppers {
+struct DarkOrbit::Steppers {
   odeint::runge_kutta_fehlberg78<OrbitState> orbit;
 };
 
 // The orbit's first-order system with the overlaps of its one-sided contacts as contact functions.
-class ModelDarkOrbit::Contacts final : public ContactSystem {
+class DarkOrbit::Contacts final : public ContactSystem {
  public:
-  explicit Contacts(const ModelDarkOrbit& orbit) : orbit_(orbit) {}
+  explicit Contacts(const DarkOrbit& orbit) : orbit_(orbit) {}
   Index dimension() const override { return 2 * orbit_.positions(); }
   Index stiffness_count() const override { return 0; }
   void rhs(const double* s, double* ds, double*) const override { orbit_.rhs(s, ds); }
@@ -39,10 +39,10 @@ class ModelDarkOrbit::Contacts final : public ContactSystem {
   }
 
  private:
-  const ModelDarkOrbit& orbit_;
+  const DarkOrbit& orbit_;
 };
 
-ModelDarkOrbit::ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
+DarkOrbit::DarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
                                bool mean_flow, ContactIntegrationOptions options, ContactBonds bonds)
     : lattice_(kernels, std::move(parameters), std::max<Index>(sites, 2), true,
                mean_flow ? LatticeForm::strain : LatticeForm::displacement),
@@ -52,26 +52,26 @@ ModelDarkOrbit::ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vect
   for (const auto& bond : bonds_)
     for (const auto& term : bond.terms)
       if (term.variable < 0 || term.variable >= kernels.fields)
-        throw std::invalid_argument("ModelDarkOrbit: contact bond " + bond.name + " names a variable out of range");
+        throw std::invalid_argument("DarkOrbit: contact bond " + bond.name + " names a variable out of range");
   if (!bonds_.empty()) {
     contacts_ = std::make_unique<Contacts>(*this);
     contact_integrator_ = std::make_unique<ContactIntegrator>(*contacts_, options_);
   }
 }
 
-ModelDarkOrbit::~ModelDarkOrbit() = default;
+DarkOrbit::~DarkOrbit() = default;
 
-Index ModelDarkOrbit::contact_changes() const {
+Index DarkOrbit::contact_changes() const {
   return contact_integrator_ ? contact_integrator_->stats().contact_changes : 0;
 }
 
-void ModelDarkOrbit::rhs(const double* s, double* ds) const {
+void DarkOrbit::rhs(const double* s, double* ds) const {
   const std::size_t P = std::size_t(positions_);
   std::copy(s + P, s + 2 * P, ds);
   lattice_.acceleration(s, ds + P);
 }
 
-void ModelDarkOrbit::integrate(std::vector<double>& state, double t0, double t1) const {
+void DarkOrbit::integrate(std::vector<double>& state, double t0, double t1) const {
   if (contact_integrator_) {  // contact changes located; the accepted step times kept for the tangents
     record_.clear();
     contact_integrator_->integrate(state, t0, t1, &record_);
@@ -94,9 +94,9 @@ void ModelDarkOrbit::integrate(std::vector<double>& state, double t0, double t1)
 
 // Orbit with error control first (its accepted step times), then orbit and tangents together on
 // exactly those steps: the tangents are the derivative of the discrete flow.
-void ModelDarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi, double t0, double t1) const {
+void DarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi, double t0, double t1) const {
   const std::size_t P = std::size_t(positions_), n = 2 * P, columns = std::size_t(phi.cols());
-  if (phi.rows() != Eigen::Index(n)) throw std::invalid_argument("ModelDarkOrbit: phi must have 2 positions() rows");
+  if (phi.rows() != Eigen::Index(n)) throw std::invalid_argument("DarkOrbit: phi must have 2 positions() rows");
   std::vector<double> orbit_only = state;
   integrate(orbit_only, t0, t1);
   extended_.resize(n * (1 + columns));
@@ -123,13 +123,13 @@ void ModelDarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi,
     for (std::size_t i = 0; i < n; ++i) phi(Eigen::Index(i), Eigen::Index(j)) = extended_[n * (1 + j) + i];
 }
 
-ModelDarkShooting::ModelDarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters,
+DarkShooting::DarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters,
                                      Index sites, bool mean_flow, ShootingMode mode, ContactIntegrationOptions options,
                                      ContactBonds bonds)
     : orbit_(kernels, std::move(parameters), sites, mean_flow, options, std::move(bonds)), mean_flow_(mean_flow),
       mode_(mode) {}
 
-std::optional<Index> ModelDarkShooting::contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const {
+std::optional<Index> DarkShooting::contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const {
   if (orbit_.contact_bonds().empty()) return std::nullopt;
   std::vector<double> state(2 * std::size_t(orbit_.positions()), 0.0);
   std::copy(z0.data(), z0.data() + z0.size(), state.begin());
@@ -138,14 +138,14 @@ std::optional<Index> ModelDarkShooting::contact_changes_per_period(const Eigen::
   return orbit_.contact_changes() - before;
 }
 
-OrbitAdvance ModelDarkShooting::advance() const {
+OrbitAdvance DarkShooting::advance() const {
   return [this](std::vector<double>& s, double t0, double t1) { orbit_.integrate(s, t0, t1); };
 }
 
 // Residual rows (reversible: Zdot(T_b/2); full: Z(T_b) - Z(0), Zdot(T_b)), then the C_x row of
 // translation-invariant models; Jacobian columns d/dq and d/domega_b (state(tau) moves with
 // tau = T_b/2 or T_b: d state / d omega_b = -f(state) tau / omega_b).
-void ModelDarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
+void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
                                  Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator) const {
   const Index P = orbit_.positions(), n = 2 * P;
   const double period = 2.0 * std::numbers::pi / omega_b;
@@ -197,7 +197,7 @@ void ModelDarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen
   if (propagator) *propagator = monodromy(q, omega_b);
 }
 
-Eigen::MatrixXd ModelDarkShooting::monodromy(const Eigen::VectorXd& z0, double omega_b) const {
+Eigen::MatrixXd DarkShooting::monodromy(const Eigen::VectorXd& z0, double omega_b) const {
   const Eigen::Index P = orbit_.positions(), n = 2 * P;
   std::vector<double> state(std::size_t(n), 0.0);
   for (Eigen::Index i = 0; i < P; ++i) state[std::size_t(i)] = z0(i);
@@ -206,13 +206,13 @@ Eigen::MatrixXd ModelDarkShooting::monodromy(const Eigen::VectorXd& z0, double o
   return phi;
 }
 
-void ModelDarkShooting::jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
+void DarkShooting::jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
                                              Eigen::MatrixXd& jacobian, FloquetResult* floquet) const {
   evaluate(q, omega_b, residual, &jacobian);
   if (floquet) *floquet = floquet_from_monodromy(monodromy(q, omega_b));
 }
 
-void ModelDarkShooting::measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const {
+void DarkShooting::measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const {
   out = measure_dark_orbit(advance(), z0, orbit_.sites(), omega_b);
 }
 

@@ -6,7 +6,7 @@
 //  * reversible (default): Zdot(T_b/2) = 0 (time reversal makes the orbit T_b-periodic);
 //  * full: Z(T_b) - Z(0) = 0, Zdot(T_b) = 0 (least squares; a check of the reversible one);
 // plus, for translation-invariant models, the row C_x = (r_0(0) + r_0(T_b/2))/2 = 0 at the far site
-// that fixes the conserved total strain (as the resonant chain's shooting.hpp). The Jacobian comes
+// that fixes the conserved total strain (as the resonant chain's resonant_chain_shooting.hpp). The Jacobian comes
 // from the variational equations of the generated Jacobian action, integrated on the orbit's own
 // Runge-Kutta-Fehlberg 7(8) steps (the exact derivative of the discrete flow). Floquet multipliers
 // from the full-period monodromy, so that the (lambda, 1/lambda) pairing is a check, not built in.
@@ -22,21 +22,21 @@
 #include "lrchain/sim/dark/contact_bonds.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
 #include "lrchain/sim/dark/measures.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/shooting_problem.hpp"
 #include "lrchain/sim/model_lattice.hpp"
 
 namespace lrchain::sim::dark {
 
 // The periodic orbit of a model lattice and its variational equations. Not thread-safe (scratch).
-class ModelDarkOrbit {
+class DarkOrbit {
  public:
   // Throws InvalidParameter("sites") unless sites >= 9 (check_dark_sites checks the parity).
   // `bonds`: the model's one-sided contacts in the lattice form's variables (empty: a smooth model).
-  ModelDarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites, bool mean_flow,
+  DarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites, bool mean_flow,
                  ContactIntegrationOptions options = {}, ContactBonds bonds = {});
-  ~ModelDarkOrbit();
-  ModelDarkOrbit(const ModelDarkOrbit&) = delete;  // its contact integrator refers to it
-  ModelDarkOrbit& operator=(const ModelDarkOrbit&) = delete;
+  ~DarkOrbit();
+  DarkOrbit(const DarkOrbit&) = delete;  // its contact integrator refers to it
+  DarkOrbit& operator=(const DarkOrbit&) = delete;
   Index sites() const { return sites_; }
   Index positions() const { return positions_; }  // fields x sites
   const ModelLattice& lattice() const { return lattice_; }
@@ -67,16 +67,16 @@ class ModelDarkOrbit {
   mutable std::vector<double> times_, steps_, extended_;  // accepted step starts and sizes
 };
 
-class ModelDarkShooting : public DarkShootingProblem {
+class DarkShooting : public DarkShootingProblem {
  public:
-  ModelDarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites, bool mean_flow,
+  DarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites, bool mean_flow,
                     ShootingMode mode, ContactIntegrationOptions options = {}, ContactBonds bonds = {});
   Index sites() const { return orbit_.sites(); }
   Index unknowns() const override { return orbit_.positions(); }
   Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const override { return q; }
   ShootingMode mode() const { return mode_; }
   bool mean_flow() const { return mean_flow_; }
-  const ModelDarkOrbit& orbit() const { return orbit_; }
+  const DarkOrbit& orbit() const { return orbit_; }
 
   void evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual, Eigen::MatrixXd* jacobian,
                 Eigen::MatrixXd* propagator = nullptr) const override;
@@ -91,7 +91,7 @@ class ModelDarkShooting : public DarkShootingProblem {
   std::optional<Index> contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const override;
 
  private:
-  ModelDarkOrbit orbit_;
+  DarkOrbit orbit_;
   bool mean_flow_;
   ShootingMode mode_;
 };
