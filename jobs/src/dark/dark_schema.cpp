@@ -30,7 +30,7 @@ std::vector<DarkOption> make_options() {
        "breather frequency omega_b (dimensionless, time unit of Sec. 2; period T_b = 2 pi/omega_b)"},
       {"branch", "--branch", "branch", all_steps, d.branch.empty() ? none : nlohmann::json(d.branch), false,
        "optical|acoustic, or with a model file one of its branches",
-       "branch whose band edge the breather bifurcates from (none given: optical; with a model file the first "
+       "branch whose band edge the breather bifurcates from (none: optical, or with a model file the first "
        "whose theta = pi edge is defocusing)"},
       {"center", "--center", "center", all_steps, d.center, false, "bond|site", "family: bond (n0 = 1/2) or site (n0 = 0)"},
       {"sites", "--sites", "sites", all_steps, d.sites, false, integer_range(config::dark_sites, "odd"),
@@ -88,7 +88,7 @@ std::string default_text(const DarkOption& o) {
 
 std::string help_text(const DarkOption& o) {
   std::string facts = o.range;
-  const std::string value = o.required ? "required" : o.default_value.is_null() ? "" : "default " + default_text(o);
+  const std::string value = o.required ? "required" : o.default_value.is_null() ? "default: none" : "default " + default_text(o);
   if (!value.empty()) facts += (facts.empty() ? "" : "; ") + value;
   return facts.empty() ? o.doc : o.doc + " [" + facts + "]";
 }

@@ -26,7 +26,8 @@ const std::vector<DarkOption>& dark_options();
 // The option of `key`; std::out_of_range if the schema has none.
 const DarkOption& dark_option(const std::string& key);
 
-// The help text of an option: its doc, range and default ("... [odd, >= 9; default 101]").
+// The help text of an option: its doc, range and default ("... [odd, >= 9; default 101]"; "default: none"
+// when DarkConfig has none, "required" for a required option).
 std::string help_text(const DarkOption& o);
 
 // The default as the help shows it: 101, bond, 1e-11; "" when there is none.
