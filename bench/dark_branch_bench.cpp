@@ -14,8 +14,8 @@ static void BM_DarkBranch100(benchmark::State& state) {
   const double w0 = 2.445;
   for (auto _ : state) {
     const auto a = make_dark_breather_ansatz(p, Branch::optical, w0);
-    DarkShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
-    const auto res = newton_solve(sh, sh.unknowns_from_z(dark_seed(a, DarkCenter::bond, N)), w0, {});
+    ResonantChainShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
+    const auto res = newton_solve(sh, sh.unknowns_from_z(resonant_chain_dark_seed(a, DarkCenter::bond, N)), w0, {});
     ContinuationOptions o;
     o.max_points = 100;
     o.ds = 0.1;
@@ -32,8 +32,8 @@ static void BM_DarkFloquetPoint(benchmark::State& state) {
   const int N = static_cast<int>(state.range(0));
   const double wb = 2.42;
   const auto a = make_dark_breather_ansatz(p, Branch::optical, wb);
-  DarkShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
-  const auto res = newton_solve(sh, sh.unknowns_from_z(dark_seed(a, DarkCenter::bond, N)), wb, {});
+  ResonantChainShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
+  const auto res = newton_solve(sh, sh.unknowns_from_z(resonant_chain_dark_seed(a, DarkCenter::bond, N)), wb, {});
   Eigen::VectorXd r;
   Eigen::MatrixXd J, A;
   for (auto _ : state) {

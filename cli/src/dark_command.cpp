@@ -15,6 +15,7 @@
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/dark_job.hpp"
+#include "lrchain/jobs/dark_schema.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
 #include "stop_signals.hpp"
@@ -44,29 +45,30 @@ InvalidParameter option_spelling(const InvalidParameter& e) {
   return InvalidParameter(option, text);
 }
 
+// An option's help and whether it is required, from the job's schema (dark_schema.hpp).
+std::string help(const std::string& key) { return help_text(dark_option(key)); }
+CLI::Option* from_schema(CLI::Option* option, const std::string& key) {
+  return dark_option(key).required ? option->required() : option;
+}
+
 void add_common(CLI::App& sub, DarkArgs& a) {
   DarkConfig& c = a.config;
   add_model_options(sub, c.params, false);
-  add_number(sub, "--omega-b", c.omega_b, "breather frequency omega_b (dimensionless, time unit of Sec. 2; period T_b = 2 pi/omega_b), on the side of the theta = pi band edge where (omega_b - omega) h_tilde > 0: below it for the resonant chain (required)")->required();
-  sub.add_option("--branch", c.branch,
-                 "branch whose theta = pi band edge the breather bifurcates from: optical|acoustic (default optical); with "
-                 "--model a branch of the model (default: the first whose theta = pi edge is defocusing)")
-      ->type_name("NAME");
+  from_schema(add_number(sub, "--omega-b", c.omega_b, help("omega_b")), "omega_b");
+  sub.add_option("--branch", c.branch, help("branch"))->type_name("NAME");
   add_model_file_options(sub, a.model);
   sub.get_option("--set")->description("model parameter, repeatable: --set w0=2 --set b=-1/2 (default: the model "
                                        "file's defaults; with --model only)");
-  sub.add_option("--center", c.center, "family: bond (n0 = 1/2) | site (n0 = 0) (default bond)")
+  sub.add_option("--center", c.center, help("center"))
       ->check(CLI::IsMember({"bond", "site"}).description(""))
       ->type_name("bond|site");
-  add_integer(sub, "--sites", c.sites, config::dark_sites.least, config::dark_sites.most,
-              "odd number of lattice sites per field x, y (periodic ends; default 101)");
-  sub.add_option("--mode", c.mode, "shooting: reversible (half/quarter period) | full (whole period, a check) (default reversible)")
+  add_integer(sub, "--sites", c.sites, config::dark_sites.least, config::dark_sites.most, help("sites"));
+  sub.add_option("--mode", c.mode, help("mode"))
       ->check(CLI::IsMember({"reversible", "full"}).description(""))
       ->type_name("reversible|full");
   sub.add_flag("--json", a.json_out, "print the JSON summary on one line (default: indented)");
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr (default: progress shown)");
-  sub.add_option("--out", c.out, "output directory for CSV data and gnuplot figures (default: none, only the JSON on stdout)")
-      ->type_name("DIR");
+  sub.add_option("--out", c.out, help("out"))->type_name("DIR");
   add_max_memory(sub, c.max_memory);
   add_figure_format(sub);
 }
@@ -154,32 +156,28 @@ void register_dark(CLI::App& app) {
   solve_cmd->callback([args, solve_cmd] { dispatch(*args, DarkStep::solve, *solve_cmd); });
   auto* floq = dark->add_subcommand("floquet", "Solve, then the Floquet multipliers of the monodromy matrix (Sec. 5.4)");
   add_common(*floq, *args);
-  floq->add_flag("--full-monodromy", c.full_monodromy,
-                 "integrate the full period (check of the reversible reduction)");
+  floq->add_flag("--full-monodromy", c.full_monodromy, help("full_monodromy"));
   add_examples(*floq, {"lrchain dark floquet --rho 1/3 --center bond --omega-b 2.44 --sites 51",
                        "lrchain dark floquet --model diatomic_chain --omega-b 1.33 --sites 41"});
   floq->callback([args, floq] { dispatch(*args, DarkStep::floquet, *floq); });
   auto* cont = dark->add_subcommand(
       "continue", "Pseudo-arclength continuation in omega_b through turning points, Floquet at every point");
   add_common(*cont, *args);
-  add_integer(*cont, "--points", c.points, config::dark_points.least, config::dark_points.most, "maximum number of branch points, the first included (default 100; e.g. --points 10 for a quick run)");
-  add_number(*cont, "--ds", c.ds, "initial pseudo-arclength step in (Z(0), omega_b), dimensionless, adapted between 1e-5 and 1 (default 0.1)");
-  add_number(*cont, "--omega-min", c.omega_min, "stop when omega_b falls below this (dimensionless frequency; default 0)");
-  add_number(*cont, "--omega-max", c.omega_max, "stop when omega_b rises above this (dimensionless frequency, at most twice the top of the optical band; default: the band edge omega(pi))");
+  add_integer(*cont, "--points", c.points, config::dark_points.least, config::dark_points.most, help("points"));
+  add_number(*cont, "--ds", c.ds, help("ds"));
+  add_number(*cont, "--omega-min", c.omega_min, help("omega_min"));
+  add_number(*cont, "--omega-max", c.omega_max, help("omega_max"));
   add_examples(*cont, {"lrchain dark continue --rho 1/3 --branch optical --center bond --omega-b 2.44 --points 10 --out out/dark"});
   cont->callback([args, cont] { dispatch(*args, DarkStep::branch, *cont); });
   auto* evo = dark->add_subcommand(
       "evolve", "Solve, then integrate eq:Hertzd0S from the solution: space-time x_n, y_n, E_b(t), breather position (Figs. 21, 22, 25)");
   add_common(*evo, *args);
-  add_number(*evo, "--t-end", c.t_end, "integration time (dimensionless, time unit of Sec. 2), at least one period T_b (required)")->required();
-  add_integer(*evo, "--samples", c.samples, config::dark_samples.least, config::dark_samples.most,
-              "samples of x_n(t) per period for the amplitudes of the position measure (default 24, >= 4)");
+  from_schema(add_number(*evo, "--t-end", c.t_end, help("t_end")), "t_end");
+  add_integer(*evo, "--samples", c.samples, config::dark_samples.least, config::dark_samples.most, help("samples"));
   add_examples(*evo, {"lrchain dark evolve --rho 1/3 --center bond --omega-b 2.44 --t-end 500 --out out/dark-evolve"});
   evo->callback([args, evo] { dispatch(*args, DarkStep::evolve, *evo); });
   for (auto* sub : {solve_cmd, floq, cont})
-    sub->add_option("--format", c.format,
-                    "data files in --out: csv (CSV and figures; default) or hdf5 (also result.h5: profiles or the "
-                    "branch, Floquet multipliers as complex numbers; not with --model)")
+    sub->add_option("--format", c.format, help("format"))
         ->check(CLI::IsMember({"csv", "hdf5"}).description(""))
         ->type_name("csv|hdf5");
 }

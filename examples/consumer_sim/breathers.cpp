@@ -7,7 +7,7 @@
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/dark/measures.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
 int main() {
   namespace dark = lrchain::sim::dark;
@@ -15,8 +15,8 @@ int main() {
   const double omega_b = 2.42;
   const lrchain::Index sites = 41;
   const auto ansatz = lrchain::make_dark_breather_ansatz(p, lrchain::Branch::optical, omega_b);
-  const dark::DarkShooting shooting(p, sites, lrchain::DarkCenter::bond, dark::ShootingMode::reversible);
-  const auto seed = shooting.unknowns_from_z(dark::dark_seed(ansatz, lrchain::DarkCenter::bond, sites));
+  const dark::ResonantChainShooting shooting(p, sites, lrchain::DarkCenter::bond, dark::ShootingMode::reversible);
+  const auto seed = shooting.unknowns_from_z(dark::resonant_chain_dark_seed(ansatz, lrchain::DarkCenter::bond, sites));
   const auto solved = dark::newton_solve(shooting, seed, omega_b, {});
   const auto m = dark::measure_dark_breather(p, shooting.z_from_unknowns(solved.q), omega_b);
   std::printf("dark: converged = %s, Newton iterations = %zu, E_b = %.1e, K_x = %.4f\n",

@@ -27,6 +27,11 @@ from ._lrchain import Model, Params
 from .errors import InputError
 from .hdf5 import HDF5Mixin, checked_destination, tree_of
 
+# The dark job's defaults, from its one schema (lrchain/jobs/dark_schema.hpp, the defaults of DarkConfig):
+# keyword -> default. omega_b, branch and t_end have none there (None here: see _job and evolve).
+_OPTIONS = {o["python"]: o for o in _lrchain.dark_options() if o["python"]}
+_D = {name: o["default"] for name, o in _OPTIONS.items()}
+
 
 @dataclass(frozen=True)
 class Floquet:
@@ -127,8 +132,8 @@ def _job(params, model, omega_b, branch, function):
 
 @renamed("dark")
 @real_numbers
-def solve(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
-          tolerance=1e-11, max_iterations=20, *, model=None):
+def solve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
+          tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], *, model=None):
     """Newton (least squares) from the seed of eq. (48) (omega_b default 2.42, branch "optical");
     returns :class:`DarkSolution`. With ``model``: the model's seed at its defocusing edge; returns
     :class:`ModelDarkSolution`."""
@@ -143,8 +148,9 @@ def solve(params=None, omega_b=None, branch=None, center="bond", sites=101, mode
 
 @renamed("dark")
 @real_numbers
-def floquet(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
-            tolerance=1e-11, max_iterations=20, full_monodromy=False, *, model=None):
+def floquet(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
+            tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], full_monodromy=_D["full_monodromy"], *,
+            model=None):
     """Solve, then the Floquet multipliers of the monodromy matrix (from the reversible reduction,
     or integrated over a full period with ``full_monodromy``); returns :class:`DarkSolution` with
     ``floquet`` set. With ``model`` the multipliers always come from the full-period monodromy (the
@@ -275,9 +281,10 @@ class Branch(HDF5Mixin):
 
 @renamed("dark")
 @real_numbers
-def continue_branch(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
-                    tolerance=1e-11, max_iterations=20, points=100, ds=0.1, omega_min=0.0, omega_max=None,
-                    floquet=True, *, model=None):
+def continue_branch(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
+                    tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], points=_D["points"], ds=_D["ds"],
+                    omega_min=_D["omega_min"], omega_max=_D["omega_max"],
+                    floquet=_D["floquet"], *, model=None):
     """Solve at ``omega_b``, then continue the family (at most ``points`` points, initial arclength step
     ``ds``) while omega_b stays in [omega_min, omega_max] (default: up to the band edge), with the
     Floquet multipliers at every point if ``floquet``; returns :class:`Branch`. With ``model``: away
@@ -355,8 +362,8 @@ class Evolution(HDF5Mixin):
 
 @renamed("dark")
 @real_numbers
-def evolve(params=None, omega_b=None, branch=None, center="bond", sites=101, mode="reversible",
-           tolerance=1e-11, max_iterations=20, t_end=None, samples=24, *, model=None):
+def evolve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
+           tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], t_end=None, samples=_D["samples"], *, model=None):
     """Solve, then integrate from Z(0) over floor(t_end / T_b) periods (default: 10 periods),
     sampling every site ``samples`` times per period for the position measure; returns
     :class:`Evolution` (with ``model``: :class:`ModelEvolution`). Ctrl-C interrupts it with

@@ -10,7 +10,7 @@
 #include "lrchain/sim/dark/evolution.hpp"
 #include "lrchain/sim/dark/floquet.hpp"
 #include "lrchain/sim/dark/measures.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
 namespace lrchain::python {
 

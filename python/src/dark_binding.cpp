@@ -8,6 +8,7 @@
 #include "bindings.hpp"
 #include "dark_arrays.hpp"
 #include "dark_job_binding.hpp"
+#include "lrchain/jobs/dark_schema.hpp"
 
 namespace py = pybind11;
 
@@ -87,9 +88,31 @@ py::dict evolve_job(const Params& p, double omega_b, const std::string& branch, 
   return d;
 }
 
+// The dark job's option schema (dark_schema.hpp) as a list of dicts; lrchain.dark's defaults.
+py::list options_schema() {
+  const py::object loads = py::module_::import("json").attr("loads");
+  py::list out;
+  for (const DarkOption& o : dark_options()) {
+    py::dict d;
+    d["key"] = o.key;
+    d["cli"] = o.cli;
+    d["python"] = o.python;
+    d["steps"] = o.steps;
+    d["default"] = loads(o.default_value.dump());
+    d["required"] = o.required;
+    d["range"] = o.range;
+    d["doc"] = o.doc;
+    d["help"] = help_text(o);
+    out.append(d);
+  }
+  return out;
+}
+
 }  // namespace
 
 void register_dark(py::module_& m) {
+  m.def("dark_options", &options_schema,
+        "The dark job's options: key, cli, python, steps, default, required, range, doc, help (the CLI's text).");
   m.def("dark_solve", &solve_job, py::arg("params"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("floquet"),
         py::arg("full_monodromy"));

@@ -9,7 +9,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/dark/floquet.hpp"
 #include "lrchain/sim/dark/measures.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim::dark;
@@ -22,7 +22,7 @@ TEST_CASE("dark seed: eq:xy_app constants at the paper's parameters") {
   const auto ac = make_dark_breather_ansatz(p, Branch::acoustic, 1.40);
   CHECK(ac.omega == doctest::Approx(1.4142).epsilon(1e-4));      // omega_acs, Sec. 5.3
   CHECK_THROWS_AS(make_dark_breather_ansatz(p, Branch::optical, 2.46), InvalidParameter);
-  CHECK_THROWS_AS(DarkShooting(p, 40, DarkCenter::bond, ShootingMode::reversible), InvalidParameter);
+  CHECK_THROWS_AS(ResonantChainShooting(p, 40, DarkCenter::bond, ShootingMode::reversible), InvalidParameter);
 }
 
 TEST_CASE("dark Newton: bond-centred optical breather at omega_b = 2.42 (Fig. 17)") {
@@ -30,8 +30,8 @@ TEST_CASE("dark Newton: bond-centred optical breather at omega_b = 2.42 (Fig. 17
   const int N = 41;
   const double wb = 2.42;
   const auto a = make_dark_breather_ansatz(p, Branch::optical, wb);
-  DarkShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
-  const auto res = newton_solve(sh, sh.unknowns_from_z(dark_seed(a, DarkCenter::bond, N)), wb, {});
+  ResonantChainShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
+  const auto res = newton_solve(sh, sh.unknowns_from_z(resonant_chain_dark_seed(a, DarkCenter::bond, N)), wb, {});
   REQUIRE(res.converged);
   CHECK(res.failure.empty());      // a breather, not the trivial state (dark_trivial_state_test.cpp)
   CHECK(res.history.size() <= 7);  // quadratic convergence from the seed
@@ -48,7 +48,7 @@ TEST_CASE("dark Newton: bond-centred optical breather at omega_b = 2.42 (Fig. 17
     for (int i = 0; i < N; ++i) sym = std::max(sym, std::abs(evo[1](f * N + i) - z0(f * N + sh.reflect(i))));
   CHECK(sym < 1e-9);
   // The full-period least-squares formulation accepts the same solution.
-  DarkShooting full(p, N, DarkCenter::bond, ShootingMode::full);
+  ResonantChainShooting full(p, N, DarkCenter::bond, ShootingMode::full);
   Eigen::VectorXd r;
   full.evaluate(full.unknowns_from_z(z0), wb, r, nullptr);
   CHECK(r.lpNorm<Eigen::Infinity>() < 1e-9);
@@ -60,14 +60,14 @@ TEST_CASE("dark Floquet: reversible reduction equals the full-period monodromy")
   const double wb = 2.43;
   for (DarkCenter c : {DarkCenter::site, DarkCenter::bond}) {
     const auto a = make_dark_breather_ansatz(p, Branch::optical, wb);
-    DarkShooting sh(p, N, c, ShootingMode::reversible);
-    const auto res = newton_solve(sh, sh.unknowns_from_z(dark_seed(a, c, N)), wb, {});
+    ResonantChainShooting sh(p, N, c, ShootingMode::reversible);
+    const auto res = newton_solve(sh, sh.unknowns_from_z(resonant_chain_dark_seed(a, c, N)), wb, {});
     REQUIRE(res.converged);
     Eigen::VectorXd r;
     Eigen::MatrixXd J, A, M;
     sh.evaluate(res.q, wb, r, &J, &A);
     const auto fr = floquet_reversible(sh, A);
-    DarkShooting full(p, N, c, ShootingMode::full);
+    ResonantChainShooting full(p, N, c, ShootingMode::full);
     full.evaluate(full.unknowns_from_z(sh.z_from_unknowns(res.q)), wb, r, &J, &M);
     const auto ff = floquet_from_monodromy(M);
     CHECK(ff.pairing_defect < 1e-5);          // (lambda, 1/conj lambda) sets: accuracy of M

@@ -7,7 +7,7 @@
 
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 #include "lrchain/sim/dark/strain_variational.hpp"
 
 using namespace lrchain;
@@ -17,7 +17,7 @@ namespace {
 // Orbit state [x y xdot ydot] at rest from the eq. (44) seed of the Fig. 17 breather (omega_b = 2.42).
 std::vector<double> seed_state(Index sites) {
   const Eigen::VectorXd z0 =
-      dark_seed(make_dark_breather_ansatz(Params{}, Branch::optical, 2.42), DarkCenter::bond, sites);
+      resonant_chain_dark_seed(make_dark_breather_ansatz(Params{}, Branch::optical, 2.42), DarkCenter::bond, sites);
   std::vector<double> state(static_cast<std::size_t>(4 * sites), 0.0);
   for (Index i = 0; i < z0.size(); ++i) state[static_cast<std::size_t>(i)] = z0(i);
   return state;

@@ -2,7 +2,7 @@
 // and a compiled copy through the command): the resonant chain's model file at branch points
 // whose orbits open contacts every period (site-centred; rho = 1/3 at omega_b = 2.42, K_x = 0.473 >
 // delta0, the amplitude of dark_breather_test.cpp; rho = 1 at 2.207, K_x = 0.662) gives the specialised
-// strain-lattice breather (shooting.hpp, contact changes located there too) with the same contact
+// strain-lattice breather (resonant_chain_shooting.hpp, contact changes located there too) with the same contact
 // changes; a smooth model (klein_gordon) reports no contacts; `dark evolve --model` writes the paper
 // chain's evolution files and figures; `dark continue --model` counts contact changes per point; a
 // user's copy of the model file (lattice code compiled at run time) exports the same contacts.
@@ -29,7 +29,7 @@
 #include "lrchain/sim/model_lattice.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
 #include "lrchain/sim/dark/measures.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
 namespace fs = std::filesystem;
 using lrchain::test::run_lrchain;
@@ -87,9 +87,9 @@ void check_against_strain_lattice(const std::string& rho_text, double rho, const
   // The specialised solver (Params path) at the same point.
   Params p;  // alpha 3/2, delta0 4/9, kappa 1: the model file's defaults
   p.rho = rho;
-  const DarkShooting sh(p, N, DarkCenter::site, ShootingMode::reversible);
+  const ResonantChainShooting sh(p, N, DarkCenter::site, ShootingMode::reversible);
   const auto res = newton_solve(
-      sh, sh.unknowns_from_z(dark_seed(make_dark_breather_ansatz(p, Branch::optical, omega_b), DarkCenter::site, N)),
+      sh, sh.unknowns_from_z(resonant_chain_dark_seed(make_dark_breather_ansatz(p, Branch::optical, omega_b), DarkCenter::site, N)),
       omega_b, {});
   REQUIRE(res.converged);
   const Eigen::VectorXd xy = sh.z_from_unknowns(res.q);

@@ -9,7 +9,7 @@
 
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim::dark;
@@ -17,9 +17,9 @@ using namespace lrchain::sim::dark;
 TEST_CASE("dark Newton: a solve that collapses to the zero state is not a breather") {
   // omega_b = 1.6 is far below the optical edge sqrt(6) = 2.4495 (Sec. 5.3): on 21 sites Newton from
   // the eq:xy_app seed goes to Z(0) = 0 (measured: max strain 5e-17), a zero of F but no breather.
-  const DarkShooting shooting(Params{}, 21, DarkCenter::bond, ShootingMode::reversible);
+  const ResonantChainShooting shooting(Params{}, 21, DarkCenter::bond, ShootingMode::reversible);
   const Eigen::VectorXd seed =
-      dark_seed(make_dark_breather_ansatz(Params{}, Branch::optical, 1.6), DarkCenter::bond, shooting.sites());
+      resonant_chain_dark_seed(make_dark_breather_ansatz(Params{}, Branch::optical, 1.6), DarkCenter::bond, shooting.sites());
   const NewtonResult res = newton_solve(shooting, shooting.unknowns_from_z(seed), 1.6, {});
   REQUIRE_FALSE(res.history.empty());
   CHECK(res.history.back().residual <= 1e-11);  // F itself vanishes: Newton did reach a root ...

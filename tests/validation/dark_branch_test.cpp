@@ -11,10 +11,10 @@ using namespace lrchain;
 using namespace lrchain::sim::dark;
 
 namespace {
-Eigen::VectorXd solve_z(const Params& p, int N, DarkCenter c, double wb, DarkShooting** keep = nullptr) {
+Eigen::VectorXd solve_z(const Params& p, int N, DarkCenter c, double wb, ResonantChainShooting** keep = nullptr) {
   const auto a = make_dark_breather_ansatz(p, Branch::optical, wb);
-  DarkShooting sh(p, N, c, ShootingMode::reversible);
-  const auto res = newton_solve(sh, sh.unknowns_from_z(dark_seed(a, c, N)), wb, {});
+  ResonantChainShooting sh(p, N, c, ShootingMode::reversible);
+  const auto res = newton_solve(sh, sh.unknowns_from_z(resonant_chain_dark_seed(a, c, N)), wb, {});
   REQUIRE(res.converged);
   (void)keep;
   return sh.z_from_unknowns(res.q);
@@ -38,8 +38,8 @@ TEST_CASE("dark: optical bond-centred branch rho = 1/3 turns near omega_b = 2.37
   const int N = 101;
   const double w0 = 2.445;
   const auto a = make_dark_breather_ansatz(p, Branch::optical, w0);
-  DarkShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
-  const auto res = newton_solve(sh, sh.unknowns_from_z(dark_seed(a, DarkCenter::bond, N)), w0, {});
+  ResonantChainShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
+  const auto res = newton_solve(sh, sh.unknowns_from_z(resonant_chain_dark_seed(a, DarkCenter::bond, N)), w0, {});
   REQUIRE(res.converged);
   ContinuationOptions o;
   o.max_points = 70;  // the turning point is passed near point 55 (CLI run of 100 points)

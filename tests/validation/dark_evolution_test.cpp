@@ -13,7 +13,7 @@
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/dispersion.hpp"
 #include "lrchain/sim/dark/evolution.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim::dark;
@@ -21,8 +21,8 @@ using namespace lrchain::sim::dark;
 namespace {
 Eigen::VectorXd solved(const Params& p, DarkCenter center, double omega_b, int N) {
   const auto a = make_dark_breather_ansatz(p, Branch::optical, omega_b);
-  DarkShooting sh(p, N, center, ShootingMode::reversible);
-  const auto res = newton_solve(sh, sh.unknowns_from_z(dark_seed(a, center, N)), omega_b, {});
+  ResonantChainShooting sh(p, N, center, ShootingMode::reversible);
+  const auto res = newton_solve(sh, sh.unknowns_from_z(resonant_chain_dark_seed(a, center, N)), omega_b, {});
   REQUIRE(res.converged);
   return sh.z_from_unknowns(res.q);
 }

@@ -1,9 +1,9 @@
-// Exact dark breathers of model files (sim/dark/model_shooting.hpp) on the models' generated
+// Exact dark breathers of model files (sim/dark/shooting.hpp) on the models' generated
 // lattice kernels: Newton from the NLS seed converges, the orbit closes after one period
 // (E_b(T_b) <= 1e-10, eq:relerr), the full-period Floquet multipliers pair as (lambda, 1/lambda)
 // (Hamiltonian, reversible flow), and the breather does not depend on the ring's size: on N and
 // about 2N sites the profile near the dip agrees. The resonant chain through its model file gives
-// the paper's strain-lattice breather (shooting.hpp) to round-off.
+// the paper's strain-lattice breather (resonant_chain_shooting.hpp) to round-off.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -16,9 +16,9 @@
 #include "lrchain/model.hpp"
 #include "lrchain/sim/dark/floquet.hpp"
 #include "lrchain/sim/dark/measures.hpp"
-#include "lrchain/sim/dark/model_dark_ansatz.hpp"
-#include "lrchain/sim/dark/model_shooting.hpp"
+#include "lrchain/sim/dark/dark_ansatz.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 
 using namespace lrchain;
@@ -32,15 +32,15 @@ struct DarkSolution {
   int iterations = 0;
   DarkMeasures measures;
   FloquetResult floquet;
-  ModelDarkAnsatz ansatz;
+  DarkAnsatz ansatz;
 };
 
 DarkSolution solve_model(const Model& model, double omega_b, int sites, bool floquet) {
   const lrchain_lattice_kernels& kernels = lattice_kernels_of(model);
   DarkSolution s;
-  s.ansatz = make_model_dark_ansatz(model, kernels, defocusing_edge(model, std::nullopt), omega_b);
-  const ModelDarkShooting shooting(kernels, lattice_parameters(model), sites, s.ansatz.mean_flow, ShootingMode::reversible);
-  const NewtonResult newton = newton_solve(shooting, model_dark_seed(s.ansatz, DarkCenter::bond, sites), omega_b, {});
+  s.ansatz = make_dark_ansatz(model, kernels, defocusing_edge(model, std::nullopt), omega_b);
+  const DarkShooting shooting(kernels, lattice_parameters(model), sites, s.ansatz.mean_flow, ShootingMode::reversible);
+  const NewtonResult newton = newton_solve(shooting, dark_seed(s.ansatz, DarkCenter::bond, sites), omega_b, {});
   REQUIRE(newton.converged);
   s.z0 = newton.q;
   s.iterations = int(newton.history.size()) - 1;
@@ -124,10 +124,10 @@ TEST_CASE("dark breathers of model files: the resonant chain's model file gives 
   const double omega_b = 2.445;
   const int N = 51;
   const Params p;  // alpha 3/2, delta0 4/9, kappa 1, rho 1/3
-  const DarkShooting params_shooting(p, N, DarkCenter::bond, ShootingMode::reversible);
+  const ResonantChainShooting params_shooting(p, N, DarkCenter::bond, ShootingMode::reversible);
   const NewtonResult params_newton = newton_solve(
       params_shooting,
-      params_shooting.unknowns_from_z(dark_seed(make_dark_breather_ansatz(p, Branch::optical, omega_b), DarkCenter::bond, N)),
+      params_shooting.unknowns_from_z(resonant_chain_dark_seed(make_dark_breather_ansatz(p, Branch::optical, omega_b), DarkCenter::bond, N)),
       omega_b, {});
   REQUIRE(params_newton.converged);
   const Eigen::VectorXd xy = params_shooting.z_from_unknowns(params_newton.q);
@@ -135,9 +135,9 @@ TEST_CASE("dark breathers of model files: the resonant chain's model file gives 
 
   const Model model = shipped_model("resonant_chain");
   const lrchain_lattice_kernels& kernels = lattice_kernels_of(model);
-  const ModelDarkAnsatz ansatz = make_model_dark_ansatz(model, kernels, defocusing_edge(model, model.branch("optical")), omega_b);
-  const ModelDarkShooting shooting(kernels, lattice_parameters(model), N, true, ShootingMode::reversible);
-  const NewtonResult newton = newton_solve(shooting, model_dark_seed(ansatz, DarkCenter::bond, N), omega_b, {});
+  const DarkAnsatz ansatz = make_dark_ansatz(model, kernels, defocusing_edge(model, model.branch("optical")), omega_b);
+  const DarkShooting shooting(kernels, lattice_parameters(model), N, true, ShootingMode::reversible);
+  const NewtonResult newton = newton_solve(shooting, dark_seed(ansatz, DarkCenter::bond, N), omega_b, {});
   REQUIRE(newton.converged);
   DarkMeasures measures;
   shooting.measure(newton.q, omega_b, measures);

@@ -22,8 +22,8 @@ TEST_CASE("dark: rho = 1 optical bond branch, weakly nonlinear part: real instab
   const double w0 = 2.28;
   const auto a = make_dark_breather_ansatz(p, Branch::optical, w0);
   CHECK(a.omega == doctest::Approx(2.2882).epsilon(1e-4));  // paper Sec. 5.3: omega_opt = 2.2882
-  DarkShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
-  const auto res = newton_solve(sh, sh.unknowns_from_z(dark_seed(a, DarkCenter::bond, N)), w0, {});
+  ResonantChainShooting sh(p, N, DarkCenter::bond, ShootingMode::reversible);
+  const auto res = newton_solve(sh, sh.unknowns_from_z(resonant_chain_dark_seed(a, DarkCenter::bond, N)), w0, {});
   REQUIRE(res.converged);
   ContinuationOptions o;
   o.ds = 0.1;

@@ -9,8 +9,8 @@
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/dispersion.hpp"
 #include "lrchain/jobs/dark_job.hpp"
-#include "lrchain/sim/dark/model_dark_ansatz.hpp"
-#include "lrchain/sim/dark/model_shooting.hpp"
+#include "lrchain/sim/dark/dark_ansatz.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 
 namespace lrchain::jobs::dark {
@@ -37,8 +37,8 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   r.edge.theta = std::numbers::pi;
   r.edge.omega = ansatz.omega;
   r.edge.variables = {"x", "y"};
-  const DarkShooting shooting(c.params, c.sites, center, parse_shooting_mode(c.mode), integration);
-  r.seed = dark_seed(ansatz, center, c.sites);
+  const ResonantChainShooting shooting(c.params, c.sites, center, parse_shooting_mode(c.mode), integration);
+  r.seed = resonant_chain_dark_seed(ansatz, center, c.sites);
   r.newton = newton_solve(shooting, shooting.unknowns_from_z(r.seed), c.omega_b, newton_options(c, hooks));
   if (!r.newton.converged) return;
   r.z0 = shooting.z_from_unknowns(r.newton.q);
@@ -59,7 +59,7 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
     Eigen::VectorXd residual;
     Eigen::MatrixXd jacobian, propagator;
     if (c.full_monodromy || shooting.mode() == ShootingMode::full) {
-      const DarkShooting full(c.params, c.sites, center, ShootingMode::full, shooting.integration());
+      const ResonantChainShooting full(c.params, c.sites, center, ShootingMode::full, shooting.integration());
       full.evaluate(full.unknowns_from_z(r.z0), c.omega_b, residual, &jacobian, &propagator);
       r.floquet = floquet_from_monodromy(propagator);
       r.monodromy = "full period";
@@ -88,15 +88,15 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
                DarkResult& r) {
   const Model& model = *c.model;
   const std::optional<Index> given = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
-  const ModelDarkAnsatz ansatz = make_model_dark_ansatz(model, *c.kernels, defocusing_edge(model, given), c.omega_b);
+  const DarkAnsatz ansatz = make_dark_ansatz(model, *c.kernels, defocusing_edge(model, given), c.omega_b);
   const ContactBonds contacts = model_contact_bonds(*c.kernels, sim::lattice_parameters(model), ansatz.mean_flow);
   r.edge = {model.definition().branch_names.at(std::size_t(ansatz.branch)), ansatz.theta, ansatz.omega,
             ansatz.curvature, ansatz.h_tilde, ansatz.lambda, ansatz.mean_flow, c.kernels->fields, {}, {}, {}};
   model_variables(r.edge);
   for (const auto& bond : contacts) r.edge.one_sided_contacts.push_back(bond.name);
-  const ModelDarkShooting shooting(*c.kernels, sim::lattice_parameters(model), c.sites, ansatz.mean_flow,
+  const DarkShooting shooting(*c.kernels, sim::lattice_parameters(model), c.sites, ansatz.mean_flow,
                                    parse_shooting_mode(c.mode), integration, contacts);
-  r.seed = model_dark_seed(ansatz, parse_dark_center(c.center), c.sites);
+  r.seed = dark_seed(ansatz, parse_dark_center(c.center), c.sites);
   r.newton = newton_solve(shooting, r.seed, c.omega_b, newton_options(c, hooks));
   if (!r.newton.converged) return;
   r.z0 = r.newton.q;

@@ -13,7 +13,7 @@
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/dispersion.hpp"
 #include "lrchain/jobs/dark_job.hpp"
-#include "lrchain/sim/dark/model_dark_ansatz.hpp"
+#include "lrchain/sim/dark/dark_ansatz.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
 
 namespace lrchain::jobs::dark {
@@ -69,8 +69,8 @@ void validate_model(const DarkConfig& c) {
     throw InvalidParameter("format", "must be csv with a model file (it writes CSV and figures)");
   const Model& model = *c.model;
   const std::optional<Index> given = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
-  const ModelDarkAnsatz ansatz = with_config_keys(
-      [&] { return make_model_dark_ansatz(model, *c.kernels, defocusing_edge(model, given), c.omega_b); });
+  const DarkAnsatz ansatz = with_config_keys(
+      [&] { return make_dark_ansatz(model, *c.kernels, defocusing_edge(model, given), c.omega_b); });
   check_dark_sites(ansatz, c.sites);
   if (c.step == DarkStep::branch) {
     checked_finite(c.ds, "ds");

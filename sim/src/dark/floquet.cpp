@@ -77,7 +77,7 @@ FloquetResult floquet_from_monodromy(const Eigen::MatrixXd& M, const FloquetOpti
   return classify_multipliers(std::move(l), o);
 }
 
-FloquetResult floquet_reversible(const DarkShooting& shooting, const Eigen::MatrixXd& A,
+FloquetResult floquet_reversible(const ResonantChainShooting& shooting, const Eigen::MatrixXd& A,
                                  const FloquetOptions& o) {
   if (shooting.mode() != ShootingMode::reversible)
     throw std::invalid_argument("floquet_reversible: needs the reversible shooting propagator");

@@ -1,304 +1,219 @@
+// Shooting Newton residuals, variational equations and Floquet multipliers of dark breathers of
+// any model file (shooting.hpp).
 #include "lrchain/sim/dark/shooting.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <numbers>
 #include <string>
 
-#include <fmt/format.h>
+#include <boost/numeric/odeint/integrate/integrate_adaptive.hpp>
+#include <boost/numeric/odeint/stepper/generation.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/dark/tangent_propagation.hpp"
+#include "lrchain/sim/dark/floquet.hpp"
 
 namespace lrchain::sim::dark {
 
-std::string_view to_string(ShootingMode m) { return m == ShootingMode::reversible ? "reversible" : "full"; }
+namespace odeint = boost::numeric::odeint;
+using OrbitState = std::vector<double>;
 
-ShootingMode parse_shooting_mode(std::string_view text) {
-  if (text == "reversible") return ShootingMode::reversible;
-  if (text == "full") return ShootingMode::full;
-  throw InvalidParameter("mode", "must be 'reversible' (half/quarter period) or 'full', got '" +
-                                     std::string(text) + "'");
-}
+// The orbit's stepper (the extended system's is made per call: Odeint sizes a stepper's stage
+// storage once, and the number of tangent columns changes between calls).
+struct DarkOrbit::Steppers {
+  odeint::runge_kutta_fehlberg78<OrbitState> orbit;
+};
 
-DarkShooting::DarkShooting(const Params& p, Index sites, DarkCenter center, ShootingMode mode,
-                           ContactIntegrationOptions integration)
-    : p_(p), sites_(sites), center_(center), mode_(mode), integration_(integration) {
-  validate(p);
-  if (sites < 9 || sites % 2 == 0)
-    throw InvalidParameter("sites", "must be odd and >= 9 (a staggered dark breather fits periodic "
-                                    "ends only on an odd number of sites), got " +
-                                        std::to_string(sites));
-  const Index N = sites;
-  const Index shift = center == DarkCenter::site ? 0 : 1;
-  reflection_.resize(static_cast<std::size_t>(N));
-  for (Index i = 0; i < N; ++i) reflection_[static_cast<std::size_t>(i)] = ((N + shift - i) % N + N) % N;
-  // Orthonormal R-even / R-odd bases for both fields.
-  std::vector<Eigen::VectorXd> even, odd;
-  for (Index field = 0; field < 2; ++field) {
-    for (Index i = 0; i < N; ++i) {
-      const Index r = reflect(i);
-      if (r < i) continue;
-      Eigen::VectorXd e = Eigen::VectorXd::Zero(2 * N);
-      if (r == i) {
-        e(field * N + i) = 1.0;
-        even.push_back(e);
-      } else {
-        const double s = std::sqrt(0.5);
-        e(field * N + i) = s;
-        e(field * N + r) = s;
-        even.push_back(e);
-        e(field * N + r) = -s;
-        odd.push_back(e);
-      }
-    }
+// The orbit's first-order system with the overlaps of its one-sided contacts as contact functions.
+class DarkOrbit::Contacts final : public ContactSystem {
+ public:
+  explicit Contacts(const DarkOrbit& orbit) : orbit_(orbit) {}
+  Index dimension() const override { return 2 * orbit_.positions(); }
+  Index stiffness_count() const override { return 0; }
+  void rhs(const double* s, double* ds, double*) const override { orbit_.rhs(s, ds); }
+  Index contact_count() const override { return Index(orbit_.bonds_.size()) * orbit_.sites(); }
+  void contacts(const double* s, double* value, double* rate) const override {
+    contact_overlaps(orbit_.bonds_, orbit_.sites(), s, s + orbit_.positions(), value, rate);
   }
-  symmetric_.resize(2 * N, static_cast<Eigen::Index>(even.size()));
-  for (std::size_t j = 0; j < even.size(); ++j) symmetric_.col(static_cast<Eigen::Index>(j)) = even[j];
-  antisymmetric_.resize(2 * N, static_cast<Eigen::Index>(odd.size()));
-  for (std::size_t j = 0; j < odd.size(); ++j) antisymmetric_.col(static_cast<Eigen::Index>(j)) = odd[j];
-  if (center == DarkCenter::site)
-    basis_ = symmetric_;
-  else
-    basis_ = Eigen::MatrixXd::Identity(2 * N, 2 * N);
+
+ private:
+  const DarkOrbit& orbit_;
+};
+
+DarkOrbit::DarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
+                               bool mean_flow, ContactIntegrationOptions options, ContactBonds bonds)
+    : lattice_(kernels, std::move(parameters), std::max<Index>(sites, 2), true,
+               mean_flow ? LatticeForm::strain : LatticeForm::displacement),
+      sites_(sites), positions_(lattice_.positions()), options_(options),
+      steppers_(std::make_unique<Steppers>()), bonds_(std::move(bonds)) {
+  if (sites < 9) throw InvalidParameter("sites", "must be >= 9, got " + std::to_string(sites));
+  for (const auto& bond : bonds_)
+    for (const auto& term : bond.terms)
+      if (term.variable < 0 || term.variable >= kernels.fields)
+        throw std::invalid_argument("DarkOrbit: contact bond " + bond.name + " names a variable out of range");
+  if (!bonds_.empty()) {
+    contacts_ = std::make_unique<Contacts>(*this);
+    contact_integrator_ = std::make_unique<ContactIntegrator>(*contacts_, options_);
+  }
 }
 
-double DarkShooting::shooting_time(double omega_b) const {
-  const double period = 2.0 * std::numbers::pi / omega_b;
-  if (mode_ == ShootingMode::full) return period;
-  return center_ == DarkCenter::site ? 0.5 * period : 0.25 * period;
+DarkOrbit::~DarkOrbit() = default;
+
+Index DarkOrbit::contact_changes() const {
+  return contact_integrator_ ? contact_integrator_->stats().contact_changes : 0;
 }
 
+void DarkOrbit::rhs(const double* s, double* ds) const {
+  const std::size_t P = std::size_t(positions_);
+  std::copy(s + P, s + 2 * P, ds);
+  lattice_.acceleration(s, ds + P);
+}
+
+void DarkOrbit::integrate(std::vector<double>& state, double t0, double t1) const {
+  if (contact_integrator_) {  // contact changes located; the accepted step times kept for the tangents
+    record_.clear();
+    contact_integrator_->integrate(state, t0, t1, &record_);
+    times_.assign(record_.t.begin(), record_.t.end());
+    steps_.assign(record_.dt.begin(), record_.dt.end());
+    return;
+  }
+  auto system = [this](const OrbitState& s, OrbitState& ds, double) { rhs(s.data(), ds.data()); };
+  auto stepper = odeint::make_controlled(options_.abs_tol, options_.rel_tol, options_.max_step, steppers_->orbit);
+  const std::atomic<bool>* stop = options_.stop;
+  times_.clear();
+  odeint::integrate_adaptive(stepper, system, state, t0, t1, std::min(options_.initial_step, t1 - t0),
+                             [this, stop](const OrbitState&, double t) {
+                               if (stop && stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
+                               times_.push_back(t);
+                             });
+  steps_.clear();
+  for (std::size_t k = 0; k + 1 < times_.size(); ++k) steps_.push_back(times_[k + 1] - times_[k]);
+}
+
+// Orbit with error control first (its accepted step times), then orbit and tangents together on
+// exactly those steps: the tangents are the derivative of the discrete flow.
+void DarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi, double t0, double t1) const {
+  const std::size_t P = std::size_t(positions_), n = 2 * P, columns = std::size_t(phi.cols());
+  if (phi.rows() != Eigen::Index(n)) throw std::invalid_argument("DarkOrbit: phi must have 2 positions() rows");
+  std::vector<double> orbit_only = state;
+  integrate(orbit_only, t0, t1);
+  extended_.resize(n * (1 + columns));
+  std::copy(state.begin(), state.end(), extended_.begin());
+  for (std::size_t j = 0; j < columns; ++j)
+    for (std::size_t i = 0; i < n; ++i) extended_[n * (1 + j) + i] = phi(Eigen::Index(i), Eigen::Index(j));
+  auto system = [this, P, n, columns](const OrbitState& s, OrbitState& ds, double) {
+    rhs(s.data(), ds.data());
+    for (std::size_t j = 1; j <= columns; ++j) {
+      const double* column = s.data() + n * j;
+      double* out = ds.data() + n * j;
+      std::copy(column + P, column + n, out);
+      lattice_.jacobian_action(s.data(), column, out + P);
+    }
+  };
+  const std::vector<double> times = times_, steps = steps_;
+  odeint::runge_kutta_fehlberg78<OrbitState> stepper;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    if (options_.stop && options_.stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
+    stepper.do_step(system, extended_, times[k], steps[k]);
+  }
+  std::copy(extended_.begin(), extended_.begin() + Eigen::Index(n), state.begin());
+  for (std::size_t j = 0; j < columns; ++j)
+    for (std::size_t i = 0; i < n; ++i) phi(Eigen::Index(i), Eigen::Index(j)) = extended_[n * (1 + j) + i];
+}
+
+DarkShooting::DarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters,
+                                     Index sites, bool mean_flow, ShootingMode mode, ContactIntegrationOptions options,
+                                     ContactBonds bonds)
+    : orbit_(kernels, std::move(parameters), sites, mean_flow, options, std::move(bonds)), mean_flow_(mean_flow),
+      mode_(mode) {}
+
+std::optional<Index> DarkShooting::contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const {
+  if (orbit_.contact_bonds().empty()) return std::nullopt;
+  std::vector<double> state(2 * std::size_t(orbit_.positions()), 0.0);
+  std::copy(z0.data(), z0.data() + z0.size(), state.begin());
+  const Index before = orbit_.contact_changes();
+  orbit_.integrate(state, 0.0, 2.0 * std::numbers::pi / omega_b);
+  return orbit_.contact_changes() - before;
+}
+
+OrbitAdvance DarkShooting::advance() const {
+  return [this](std::vector<double>& s, double t0, double t1) { orbit_.integrate(s, t0, t1); };
+}
+
+// Residual rows (reversible: Zdot(T_b/2); full: Z(T_b) - Z(0), Zdot(T_b)), then the C_x row of
+// translation-invariant models; Jacobian columns d/dq and d/domega_b (state(tau) moves with
+// tau = T_b/2 or T_b: d state / d omega_b = -f(state) tau / omega_b).
 void DarkShooting::evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
-                            Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator) const {
-  const Index N = sites_;
-  const Index k = basis_.cols();
-  const Index n2 = 2 * N, n4 = 4 * N;
-  const bool full_phi = propagator != nullptr;
-  const bool jac = jacobian != nullptr || full_phi;
-  Eigen::MatrixXd jac_storage;
-  if (jacobian == nullptr && full_phi) jacobian = &jac_storage;
+                                 Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator) const {
+  const Index P = orbit_.positions(), n = 2 * P;
   const double period = 2.0 * std::numbers::pi / omega_b;
-  const Eigen::VectorXd z0 = basis_ * q;
-
-  StrainLatticeOrbit orbit(p_, N);
-  std::vector<double> state(static_cast<std::size_t>(n4), 0.0);
-  for (Index i = 0; i < n2; ++i) state[static_cast<std::size_t>(i)] = z0(i);
+  std::vector<double> state(static_cast<std::size_t>(n), 0.0), f(static_cast<std::size_t>(n), 0.0);
+  for (Index i = 0; i < P; ++i) state[std::size_t(i)] = q(i);
+  const bool jac = jacobian != nullptr;
   Eigen::MatrixXd phi;
   if (jac) {
-    if (full_phi) {
-      phi = Eigen::MatrixXd::Identity(n4, n4);
-    } else {
-      phi = Eigen::MatrixXd::Zero(n4, k);
-      phi.topRows(n2) = basis_;
-    }
+    phi = Eigen::MatrixXd::Zero(n, P);
+    phi.topRows(P).setIdentity();
   }
-  ContactIntegrator integrator(orbit, integration_);
-  OrbitRecord record;
-  auto advance = [&](double ta, double tb) {
-    record.clear();
-    integrator.integrate(state, ta, tb, jac ? &record : nullptr);
-    if (jac) propagate_tangents(orbit, record, phi, 8, integration_.stop);
+  auto advance = [&](double t0, double t1) {
+    if (jac) orbit_.integrate(state, phi, t0, t1);
+    else orbit_.integrate(state, t0, t1);
   };
-  std::vector<double> rhs(static_cast<std::size_t>(n4));
-
-  // Snapshot of the orbit, its time derivative, and the tangent columns at a capture time tau;
-  // d(state(tau))/d(omega_b) = f(state(tau)) * dtau/domega_b = -f * tau / omega_b.
-  struct Snapshot {
-    Eigen::VectorXd s, f;
-    Eigen::MatrixXd phi;
-    double tau;
-  };
-  auto snapshot = [&](double tau) {
-    Snapshot sn;
-    sn.tau = tau;
-    sn.s = Eigen::Map<const Eigen::VectorXd>(state.data(), n4);
-    orbit.rhs(state.data(), rhs.data());
-    sn.f = Eigen::Map<const Eigen::VectorXd>(rhs.data(), n4) * (-tau / omega_b);
-    if (jac) sn.phi = full_phi ? Eigen::MatrixXd(phi.leftCols(n2) * basis_) : phi;
-    return sn;
-  };
-
-  std::vector<Eigen::VectorXd> blocks;   // residual blocks
-  std::vector<Eigen::MatrixXd> jblocks;  // matching Jacobian blocks (k + 1 columns)
-  auto add = [&](Eigen::VectorXd r, Eigen::MatrixXd j) {
-    blocks.push_back(std::move(r));
-    if (jac) jblocks.push_back(std::move(j));
-  };
-  auto with_omega = [&](const Eigen::MatrixXd& jq, const Eigen::VectorXd& jw) {
-    Eigen::MatrixXd j(jq.rows(), k + 1);
-    j.leftCols(k) = jq;
-    j.col(k) = jw;
-    return j;
-  };
-  // Vertical-centre row C_x = (x_0(0) + x_0(T_b/2)) / 2 (eq:center at the far site).
-  auto centre_row = [&](const Snapshot& half) {
-    Eigen::VectorXd r(1);
-    r(0) = 0.5 * (z0(0) + half.s(0));
-    Eigen::MatrixXd j;
-    if (jac) {
-      Eigen::MatrixXd jq = 0.5 * (basis_.row(0) + half.phi.row(0));
-      Eigen::VectorXd jw(1);
-      jw(0) = 0.5 * half.f(0);
-      j = with_omega(jq, jw);
-    }
-    add(r, j);
-  };
-
-  if (mode_ == ShootingMode::reversible && center_ == DarkCenter::site) {
-    advance(0.0, 0.5 * period);
-    const Snapshot h = snapshot(0.5 * period);
-    // B^T Zdot(T_b/2) = 0.
-    Eigen::MatrixXd j;
-    if (jac) j = with_omega(symmetric_.transpose() * h.phi.bottomRows(n2),
-                            symmetric_.transpose() * h.f.tail(n2));
-    add(symmetric_.transpose() * h.s.tail(n2), j);
-    centre_row(h);
-  } else if (mode_ == ShootingMode::reversible) {
-    advance(0.0, 0.25 * period);
-    const Snapshot qtr = snapshot(0.25 * period);
-    // (I - R) Z(T_b/4) = 0 and (I + R) Zdot(T_b/4) = 0.
-    Eigen::MatrixXd j1, j2;
-    if (jac) {
-      j1 = with_omega(antisymmetric_.transpose() * qtr.phi.topRows(n2),
-                      antisymmetric_.transpose() * qtr.f.head(n2));
-      j2 = with_omega(symmetric_.transpose() * qtr.phi.bottomRows(n2),
-                      symmetric_.transpose() * qtr.f.tail(n2));
-    }
-    add(antisymmetric_.transpose() * qtr.s.head(n2), j1);
-    add(symmetric_.transpose() * qtr.s.tail(n2), j2);
-    // C_x: x_0(T_b/2) = (R Z(0))_0 = x_{R(0)}(0).
-    Eigen::VectorXd r(1);
-    const Index r0 = reflect(0);
-    r(0) = 0.5 * (z0(0) + z0(r0));
-    Eigen::MatrixXd jc;
-    if (jac) {
-      jc = Eigen::MatrixXd::Zero(1, k + 1);
-      jc.leftCols(k) = 0.5 * (basis_.row(0) + basis_.row(r0));
-    }
-    add(r, jc);
-  } else {
-    advance(0.0, 0.5 * period);
-    const Snapshot h = snapshot(0.5 * period);
-    advance(0.5 * period, period);
-    const Snapshot f = snapshot(period);
-    Eigen::MatrixXd j1, j2;
-    if (jac) {
-      j1 = with_omega(f.phi.topRows(n2) - basis_, f.f.head(n2));
-      j2 = with_omega(f.phi.bottomRows(n2), f.f.tail(n2));
-    }
-    add(f.s.head(n2) - z0, j1);
-    add(f.s.tail(n2), j2);
-    if (center_ == DarkCenter::bond) {
-      // Z(T_b/2) - R Z(0) = 0.
-      Eigen::MatrixXd rb(n2, k);
-      Eigen::VectorXd rz(n2);
-      for (Index field = 0; field < 2; ++field)
-        for (Index i = 0; i < N; ++i) {
-          rb.row(field * N + i) = basis_.row(field * N + reflect(i));
-          rz(field * N + i) = z0(field * N + reflect(i));
-        }
-      Eigen::MatrixXd j3;
-      if (jac) j3 = with_omega(h.phi.topRows(n2) - rb, h.f.head(n2));
-      add(h.s.head(n2) - rz, j3);
-    }
-    centre_row(h);
-  }
-
-  if (full_phi) *propagator = phi;
-  Index rows = 0;
-  for (const auto& b : blocks) rows += b.size();
+  const Index rows = (mode_ == ShootingMode::full ? n : P) + (mean_flow_ ? 1 : 0);
   residual.resize(rows);
-  if (jac) jacobian->resize(rows, k + 1);
-  Index at = 0;
-  for (std::size_t b = 0; b < blocks.size(); ++b) {
-    residual.segment(at, blocks[b].size()) = blocks[b];
-    if (jac) jacobian->middleRows(at, blocks[b].size()) = jblocks[b];
-    at += blocks[b].size();
+  if (jac) jacobian->setZero(rows, P + 1);
+  advance(0.0, 0.5 * period);
+  double half_x0 = state[0], half_x0_dot = state[std::size_t(P)];
+  Eigen::RowVectorXd half_row;
+  if (jac) half_row = phi.row(0);
+  double tau = 0.5 * period;
+  if (mode_ == ShootingMode::full) {
+    advance(0.5 * period, period);
+    tau = period;
+    for (Index i = 0; i < P; ++i) residual(i) = state[std::size_t(i)] - q(i);
   }
-}
-
-double state_amplitude(const DarkShootingProblem& shooting, const Eigen::VectorXd& q) {
-  const Eigen::VectorXd z = shooting.z_from_unknowns(q);
-  return z.size() == 0 ? 0.0 : (z.array() - z.mean()).abs().maxCoeff();
-}
-
-namespace {
-// Empty if Z(0) = B q is a breather; why not if its amplitude collapsed to round-off (<= 1e-8) of the
-// seed's: Newton found the trivial zero of F, not a breather.
-std::string trivial_state_failure(const DarkShootingProblem& shooting, const Eigen::VectorXd& q,
-                                  double seed_amplitude) {
-  if (state_amplitude(shooting, q) > trivial_state_ratio * seed_amplitude) return {};
-  return "converged to the trivial state (no breather at this omega_b and sites); try more sites or "
-         "omega_b closer to the band edge";
-}
-}  // namespace
-
-NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q0, double omega_b,
-                          const NewtonOptions& options) {
-  NewtonResult result;
-  const double seed_amplitude = state_amplitude(shooting, q0);
-  result.q = std::move(q0);
-  Eigen::VectorXd r;
-  Eigen::MatrixXd J;
-  const Index k = shooting.unknowns();
-  double first = -1;
-  for (Index it = 0; it <= options.max_iterations; ++it) {
-    shooting.evaluate(result.q, omega_b, r, &J);
-    NewtonRecord rec;
-    rec.iteration = it;
-    rec.residual = r.lpNorm<Eigen::Infinity>();
-    if (!std::isfinite(rec.residual)) {
-      result.failure = "residual is not finite";
-      result.history.push_back(rec);
-      if (options.progress) options.progress(rec);
-      return result;
+  const Index velocity_rows = mode_ == ShootingMode::full ? P : 0;
+  for (Index i = 0; i < P; ++i) residual(velocity_rows + i) = state[std::size_t(P + i)];
+  if (jac) {
+    orbit_.rhs(state.data(), f.data());
+    const Eigen::Map<const Eigen::VectorXd> fv(f.data(), n);
+    if (mode_ == ShootingMode::full) {
+      jacobian->topLeftCorner(P, P) = phi.topRows(P) - Eigen::MatrixXd::Identity(P, P);
+      jacobian->col(P).head(P) = fv.head(P) * (-tau / omega_b);
     }
-    if (first < 0) first = rec.residual;
-    if (rec.residual <= options.tolerance) {
-      result.failure = trivial_state_failure(shooting, result.q, seed_amplitude);
-      result.converged = result.failure.empty();
-      result.history.push_back(rec);
-      if (options.progress) options.progress(rec);
-      return result;
-    }
-    if (it == options.max_iterations) {
-      result.failure = "no convergence in " + std::to_string(options.max_iterations) + " iterations";
-      result.history.push_back(rec);
-      if (options.progress) options.progress(rec);
-      return result;
-    }
-    if (rec.residual > 1e3 * std::max(first, 1e-6)) {
-      result.failure = "diverging (residual grew by more than 1e3)";
-      result.history.push_back(rec);
-      if (options.progress) options.progress(rec);
-      return result;
-    }
-    const Eigen::VectorXd step = J.leftCols(k).colPivHouseholderQr().solve(-r);
-    rec.step = step.lpNorm<Eigen::Infinity>();
-    result.history.push_back(rec);
-    if (options.progress) options.progress(rec);
-    result.q += step;
+    jacobian->block(velocity_rows, 0, P, P) = phi.bottomRows(P);
+    jacobian->col(P).segment(velocity_rows, P) = fv.tail(P) * (-tau / omega_b);
   }
-  return result;
-}
-
-std::string newton_failure_message(const NewtonResult& result, double omega_b) {
-  std::string history;
-  for (const auto& record : result.history) history += fmt::format(" {:.3e}", record.residual);
-  return fmt::format("Newton found no breather at omega_b = {}: {}; residual history:{}", omega_b, result.failure,
-                     history);
-}
-
-Eigen::VectorXd dark_seed(const DarkBreatherAnsatz& ansatz, DarkCenter center, Index sites) {
-  std::vector<double> x, y;
-  const Index half = (sites - 1) / 2;
-  dark_breather_strains(ansatz, center, -half, sites, 0.0, x, y);
-  Eigen::VectorXd z(2 * sites);
-  for (Index i = 0; i < sites; ++i) {
-    z(i) = x[static_cast<std::size_t>(i)];
-    z(sites + i) = y[static_cast<std::size_t>(i)];
+  if (mean_flow_) {
+    residual(rows - 1) = 0.5 * (q(0) + half_x0);  // eq:center at the far site
+    if (jac) {
+      jacobian->row(rows - 1).head(P) = 0.5 * half_row;
+      (*jacobian)(rows - 1, 0) += 0.5;
+      (*jacobian)(rows - 1, P) = 0.5 * half_x0_dot * (-0.5 * period / omega_b);
+    }
   }
-  return z;
+  if (propagator) *propagator = monodromy(q, omega_b);
+}
+
+Eigen::MatrixXd DarkShooting::monodromy(const Eigen::VectorXd& z0, double omega_b) const {
+  const Eigen::Index P = orbit_.positions(), n = 2 * P;
+  std::vector<double> state(std::size_t(n), 0.0);
+  for (Eigen::Index i = 0; i < P; ++i) state[std::size_t(i)] = z0(i);
+  Eigen::MatrixXd phi = Eigen::MatrixXd::Identity(n, n);
+  orbit_.integrate(state, phi, 0.0, 2.0 * std::numbers::pi / omega_b);
+  return phi;
+}
+
+void DarkShooting::jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
+                                             Eigen::MatrixXd& jacobian, FloquetResult* floquet) const {
+  evaluate(q, omega_b, residual, &jacobian);
+  if (floquet) *floquet = floquet_from_monodromy(monodromy(q, omega_b));
+}
+
+void DarkShooting::measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const {
+  out = measure_dark_orbit(advance(), z0, orbit_.sites(), omega_b);
 }
 
 }  // namespace lrchain::sim::dark

@@ -19,7 +19,7 @@
 #include "lrchain/sim/dark/evolution.hpp"
 #include "lrchain/sim/dark/floquet.hpp"
 #include "lrchain/sim/dark/measures.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
 
 namespace lrchain::jobs::dark {

@@ -11,7 +11,7 @@
 #include "lrchain/index.hpp"
 #include "lrchain/sim/dark/floquet.hpp"
 #include "lrchain/sim/dark/measures.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
 namespace lrchain::sim::dark {
 

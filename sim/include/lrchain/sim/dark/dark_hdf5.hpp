@@ -26,7 +26,7 @@
 #include "lrchain/sim/dark/continuation.hpp"
 #include "lrchain/sim/dark/floquet.hpp"
 #include "lrchain/sim/dark/measures.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
 namespace lrchain::sim::dark {
 

@@ -9,7 +9,7 @@
 #include <Eigen/Dense>
 
 #include "lrchain/index.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
 namespace lrchain::sim::dark {
 
@@ -42,10 +42,10 @@ struct FloquetResult {
 // so the multipliers follow from the 2N x 2N eigenproblem of P: lambda = mu +- sqrt(mu^2 - 1).
 // The (lambda, 1/lambda) pairing then holds by construction; use floquet_from_monodromy on an
 // independently integrated full-period monodromy to check it.
-FloquetResult floquet_reversible(const DarkShooting& shooting, const Eigen::MatrixXd& propagator,
+FloquetResult floquet_reversible(const ResonantChainShooting& shooting, const Eigen::MatrixXd& propagator,
                                  const FloquetOptions& options = {});
 
-// Eigenvalues of a full monodromy matrix (e.g. DarkShooting in full mode).
+// Eigenvalues of a full monodromy matrix (e.g. ResonantChainShooting in full mode).
 FloquetResult floquet_from_monodromy(const Eigen::MatrixXd& monodromy,
                                      const FloquetOptions& options = {});
 

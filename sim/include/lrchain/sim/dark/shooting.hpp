@@ -1,145 +1,99 @@
 #pragma once
-// Shooting formulation of stationary dark breathers (Sec. 5.3): time-periodic solutions of the
-// strain lattice eq:Hertzd0S (periodic ends) with Zdot(0) = 0, as zeros of a residual F(q, omega_b)
-// of the unknown initial strains Z(0) = (x(0), y(0)) = B q, with the Jacobian from the
-// variational equations integrated with the orbit. See docs/dark-breathers.md.
-//
-// Families and symmetries (N odd sites, array index i, centre in the middle of the array):
-//  * site-centred (n0 = 0 in eq:xy_app): x_i = x_{R(i)}, R(i) = (N - i) mod N, at all times.
-//    Unknowns: Z(0) in the R-symmetric subspace (N + 1 of them).
-//  * bond-centred (n0 = 1/2): Z(t + T_b/2) = R Z(t), R(i) = (N + 1 - i) mod N (the staggered part
-//    is odd, the mean part even about the centre site). Unknowns: all 2N strains.
-// Modes:
-//  * reversible (default): time reversal makes Z(-t) = Z(t); the orbit has period T_b iff
-//    Zdot(T_b/2) = 0 (site family, half a period) and, with the bond symmetry, iff
-//    (I - R) Z(T_b/4) = 0 and (I + R) Zdot(T_b/4) = 0 (quarter period).
-//  * full: Z(T_b) - Z(0) = 0, Zdot(T_b) = 0 (+ Z(T_b/2) - R Z(0) = 0 for the bond family);
-//    least squares. Used to check the reversible formulation.
-// In both, one row fixes the conserved zero mode (sum of x + rho y) through the vertical centre
-// C_x = (x_0(0) + x_0(T_b/2))/2 = 0 at the far site i = 0 (eq:center, extrema at t = 0, T_b/2).
+// Shooting formulation of stationary dark breathers of any model file (the model's generated
+// lattice kernels, model_lattice.hpp, on a periodic ring: strain form for translation-invariant
+// models, displacement form for on-site models). Unknowns: all positions Z(0) (velocities 0).
+// Residuals:
+//  * reversible (default): Zdot(T_b/2) = 0 (time reversal makes the orbit T_b-periodic);
+//  * full: Z(T_b) - Z(0) = 0, Zdot(T_b) = 0 (least squares; a check of the reversible one);
+// plus, for translation-invariant models, the row C_x = (r_0(0) + r_0(T_b/2))/2 = 0 at the far site
+// that fixes the conserved total strain (as the resonant chain's resonant_chain_shooting.hpp). The Jacobian comes
+// from the variational equations of the generated Jacobian action, integrated on the orbit's own
+// Runge-Kutta-Fehlberg 7(8) steps (the exact derivative of the discrete flow). Floquet multipliers
+// from the full-period monodromy, so that the (lambda, 1/lambda) pairing is a check, not built in.
+// Models with one-sided contacts (ContactBonds, contact_bonds.hpp) are integrated by ContactIntegrator:
+// every contact change (an overlap s_n changing sign) is located and a step ends there, and the
+// tangents are integrated on those same steps. Smooth models use Odeint's adaptive RKF78 stepping.
 #include <Eigen/Dense>
-#include <functional>
-#include <optional>
-#include <string>
+#include <atomic>
+#include <memory>
 #include <vector>
 
 #include "lrchain/index.hpp"
-#include "lrchain/ansatz/dark_breather.hpp"
-#include "lrchain/params.hpp"
+#include "lrchain/sim/dark/contact_bonds.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
+#include "lrchain/sim/dark/measures.hpp"
+#include "lrchain/sim/dark/shooting_problem.hpp"
+#include "lrchain/sim/model_lattice.hpp"
 
 namespace lrchain::sim::dark {
 
-enum class ShootingMode { reversible, full };
-std::string_view to_string(ShootingMode m);
-ShootingMode parse_shooting_mode(std::string_view text);  // InvalidParameter("mode")
-
-struct FloquetResult;
-struct DarkMeasures;
-
-// What Newton and the continuation need of a shooting formulation: the shooting residual and its
-// Jacobian, the Floquet multipliers and the measures of a converged point. DarkShooting (the
-// resonant chain's strain lattice, eq:Hertzd0S) and ModelDarkShooting (any model file) provide it.
-class DarkShootingProblem {
+// The periodic orbit of a model lattice and its variational equations. Not thread-safe (scratch).
+class DarkOrbit {
  public:
-  virtual ~DarkShootingProblem() = default;
-  virtual Index unknowns() const = 0;
-  virtual Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const = 0;
-  // Residual F(q, omega_b); if jacobian != nullptr also [dF/dq | dF/domega_b] (unknowns()+1 cols).
-  virtual void evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
-                        Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator = nullptr) const = 0;
-  // At a converged point: the Jacobian, and the Floquet multipliers into *floquet if not null.
-  virtual void jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
-                                    Eigen::MatrixXd& jacobian, FloquetResult* floquet) const = 0;
-  // Measures (eq:center, eq:amp, eq:l2norm, eq:relerr) of the breather Z(0) = z0.
-  virtual void measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const = 0;
-  // Sign changes of the one-sided contacts' overlaps over one period T_b of the orbit from Z(0) = z0
-  // where the problem locates them (a model lattice with contacts); nullopt where it does not.
-  virtual std::optional<Index> contact_changes_per_period(const Eigen::VectorXd&, double) const { return std::nullopt; }
+  // Throws InvalidParameter("sites") unless sites >= 9 (check_dark_sites checks the parity).
+  // `bonds`: the model's one-sided contacts in the lattice form's variables (empty: a smooth model).
+  DarkOrbit(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites, bool mean_flow,
+                 ContactIntegrationOptions options = {}, ContactBonds bonds = {});
+  ~DarkOrbit();
+  DarkOrbit(const DarkOrbit&) = delete;  // its contact integrator refers to it
+  DarkOrbit& operator=(const DarkOrbit&) = delete;
+  Index sites() const { return sites_; }
+  Index positions() const { return positions_; }  // fields x sites
+  const ModelLattice& lattice() const { return lattice_; }
+  const ContactIntegrationOptions& options() const { return options_; }
+  const ContactBonds& contact_bonds() const { return bonds_; }
+  // Contact changes located by the integrations since the orbit was made (0 for smooth models).
+  Index contact_changes() const;
+
+  // Integrates [q qdot] (2 positions() entries) from t0 to t1 with error control (RKF78).
+  void integrate(std::vector<double>& state, double t0, double t1) const;
+  // The same, and the tangent columns phi (2 positions() rows) along: Phi(t1) Phi(t0)^-1 phi.
+  void integrate(std::vector<double>& state, Eigen::MatrixXd& phi, double t0, double t1) const;
+  // [qdot, qddot] of state s.
+  void rhs(const double* s, double* ds) const;
+
+ private:
+  struct Steppers;
+  class Contacts;  // the lattice as a ContactSystem
+  ModelLattice lattice_;
+  Index sites_;
+  Index positions_;
+  ContactIntegrationOptions options_;
+  std::unique_ptr<Steppers> steppers_;
+  ContactBonds bonds_;
+  std::unique_ptr<Contacts> contacts_;
+  std::unique_ptr<ContactIntegrator> contact_integrator_;  // with bonds only
+  mutable OrbitRecord record_;
+  mutable std::vector<double> times_, steps_, extended_;  // accepted step starts and sizes
 };
 
 class DarkShooting : public DarkShootingProblem {
  public:
-  // Throws InvalidParameter("sites") unless sites is odd and >= 9 (staggered waves on a ring).
-  DarkShooting(const Params& p, Index sites, DarkCenter center, ShootingMode mode,
-               ContactIntegrationOptions integration = {});
-
-  Index sites() const { return sites_; }
-  Index unknowns() const override { return basis_.cols(); }
-  DarkCenter center() const { return center_; }
+  DarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites, bool mean_flow,
+                    ShootingMode mode, ContactIntegrationOptions options = {}, ContactBonds bonds = {});
+  Index sites() const { return orbit_.sites(); }
+  Index unknowns() const override { return orbit_.positions(); }
+  Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const override { return q; }
   ShootingMode mode() const { return mode_; }
-  const Params& params() const { return p_; }
-  const ContactIntegrationOptions& integration() const { return integration_; }
-  // Reflection of the family: site index i -> R(i).
-  Index reflect(Index i) const { return reflection_[static_cast<std::size_t>(i)]; }
+  bool mean_flow() const { return mean_flow_; }
+  const DarkOrbit& orbit() const { return orbit_; }
 
-  Eigen::VectorXd z_from_unknowns(const Eigen::VectorXd& q) const override { return basis_ * q; }
-  // Least-squares projection onto the family's subspace (symmetrises a seed).
-  Eigen::VectorXd unknowns_from_z(const Eigen::VectorXd& z0) const { return basis_.transpose() * z0; }
-
-  // Residual F(q, omega_b); if jacobian != nullptr also [dF/dq | dF/domega_b] (unknowns()+1 cols).
-  // If propagator != nullptr, all 4N tangent columns are integrated and it receives the state
-  // transition matrix over the shooting interval: Phi(T_b/2) (reversible, site), Phi(T_b/4)
-  // (reversible, bond) or Phi(T_b) (full mode): the input of the Floquet analysis (floquet.hpp).
-  void evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
-                Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator = nullptr) const override;
-  // Reversible mode: Floquet from the shooting propagator (floquet_reversible); full mode: from
-  // the full-period monodromy.
+  void evaluate(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual, Eigen::MatrixXd* jacobian,
+                Eigen::MatrixXd* propagator = nullptr) const override;
   void jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& residual,
                             Eigen::MatrixXd& jacobian, FloquetResult* floquet) const override;
   void measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const override;
-  // Time over which the reversible/full shooting integrates: T_b/2, T_b/4 or T_b.
-  double shooting_time(double omega_b) const;
+  // Monodromy matrix Phi(T_b) of the variational equations (2 positions() square).
+  Eigen::MatrixXd monodromy(const Eigen::VectorXd& z0, double omega_b) const;
+  // Advances an orbit state (for measures and evolution).
+  OrbitAdvance advance() const;
+  // Contact changes over one period T_b of the orbit from Z(0) = z0 (nullopt for a smooth model).
+  std::optional<Index> contact_changes_per_period(const Eigen::VectorXd& z0, double omega_b) const override;
 
  private:
-  Params p_;
-  Index sites_;
-  DarkCenter center_;
+  DarkOrbit orbit_;
+  bool mean_flow_;
   ShootingMode mode_;
-  ContactIntegrationOptions integration_;
-  std::vector<Index> reflection_;
-  Eigen::MatrixXd basis_;       // 2N x k: Z(0) = basis_ q
-  Eigen::MatrixXd symmetric_;   // 2N x (N+1): R-even orthonormal basis (x and y fields)
-  Eigen::MatrixXd antisymmetric_;  // 2N x (N-1): R-odd orthonormal basis
 };
-
-struct NewtonRecord {
-  Index iteration = 0;
-  double residual = 0;  // max-norm of F before the step
-  double step = 0;      // max-norm of the Newton step taken after it (0 for the last)
-};
-
-struct NewtonOptions {
-  double tolerance = 1e-11;  // converged when max|F| <= tolerance
-  Index max_iterations = 20;
-  std::function<void(const NewtonRecord&)> progress;  // e.g. print to stderr
-};
-
-struct NewtonResult {
-  Eigen::VectorXd q;
-  bool converged = false;
-  std::vector<NewtonRecord> history;
-  std::string failure;  // why not converged
-};
-
-// Amplitude max_i |z_i - mean(z)| of the state Z(0) = B q; zero for the trivial (uniform) state,
-// which solves F = 0 at every omega_b.
-double state_amplitude(const DarkShootingProblem& shooting, const Eigen::VectorXd& q);
-
-// A zero of F whose amplitude fell to this fraction of a breather's is the trivial state.
-inline constexpr double trivial_state_ratio = 1e-8;
-
-// Newton (least squares, column-pivoting QR) on F(., omega_b) = 0 from q0 (Sec. 5.3). A zero of F
-// whose amplitude max|z - mean(z)| fell below 1e-8 of the seed's is the trivial state, no breather:
-// reported as not converged, failure "converged to the trivial state ...".
-NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q0, double omega_b,
-                          const NewtonOptions& options);
-
-// The message of a solve that did not converge: "Newton found no breather at omega_b = 1.6:
-// <failure>; residual history: 3.188e+00 1.208e+00 ...".
-std::string newton_failure_message(const NewtonResult& result, double omega_b);
-
-// Seed Z(0) from eq:xy_app at t = 0 on the array (centre in the middle, n_phys = i - (N-1)/2).
-Eigen::VectorXd dark_seed(const DarkBreatherAnsatz& ansatz, DarkCenter center, Index sites);
 
 }  // namespace lrchain::sim::dark

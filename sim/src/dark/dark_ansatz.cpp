@@ -1,5 +1,5 @@
-// Band edge and seed of a dark breather of any model file (model_dark_ansatz.hpp).
-#include "lrchain/sim/dark/model_dark_ansatz.hpp"
+// Band edge and seed of a dark breather of any model file (dark_ansatz.hpp).
+#include "lrchain/sim/dark/dark_ansatz.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -69,7 +69,7 @@ std::vector<double> uniform_kernel(const Model& model, const lrchain_lattice_ker
 
 }  // namespace
 
-ModelDarkEdge defocusing_edge(const Model& model, std::optional<Index> branch) {
+DefocusingEdge defocusing_edge(const Model& model, std::optional<Index> branch) {
   const auto& names = model.definition().branch_names;
   std::string checked;
   for (Index b = 0; b < static_cast<Index>(names.size()); ++b) {
@@ -86,8 +86,8 @@ ModelDarkEdge defocusing_edge(const Model& model, std::optional<Index> branch) {
                                                model.name(), checked));
 }
 
-ModelDarkAnsatz make_model_dark_ansatz(const Model& model, const lrchain_lattice_kernels& kernels,
-                                       const ModelDarkEdge& edge, double omega_b) {
+DarkAnsatz make_dark_ansatz(const Model& model, const lrchain_lattice_kernels& kernels,
+                                       const DefocusingEdge& edge, double omega_b) {
   const Index branch = edge.branch;
   const NlsCoefficients c = coefficients_from_evaluators(model, branch, edge.theta);
   const std::string where = fmt::format("the theta = {} edge of {} branch {}", edge.theta == 0 ? "0" : "pi",
@@ -98,7 +98,7 @@ ModelDarkAnsatz make_model_dark_ansatz(const Model& model, const lrchain_lattice
     throw InvalidParameter("omega-b", fmt::format("must lie {} omega = {:.10g}, {} (the side where (omega_b - omega) "
                                                   "h_tilde > 0, h_tilde = {:.6g})",
                                                   c.h_tilde < 0 ? "below" : "above", c.omega, where, c.h_tilde));
-  ModelDarkAnsatz a;
+  DarkAnsatz a;
   a.branch = branch;
   a.theta = edge.theta;
   a.omega_b = omega_b;
@@ -117,7 +117,7 @@ ModelDarkAnsatz make_model_dark_ansatz(const Model& model, const lrchain_lattice
   return a;
 }
 
-void check_dark_sites(const ModelDarkAnsatz& a, Index sites) {
+void check_dark_sites(const DarkAnsatz& a, Index sites) {
   const bool pi_edge = a.theta != 0;
   if (sites < 9 || (sites % 2 == 1) != pi_edge)
     throw InvalidParameter("sites", pi_edge ? "must be an odd integer >= 9 at a theta = pi edge (a staggered dark "
@@ -127,7 +127,7 @@ void check_dark_sites(const ModelDarkAnsatz& a, Index sites) {
 }
 
 // u_f[n] at t = 0 (theta = pi: one breather; theta = 0: the pair), in the lattice's variables.
-Eigen::VectorXd model_dark_seed(const ModelDarkAnsatz& a, DarkCenter center, Index sites) {
+Eigen::VectorXd dark_seed(const DarkAnsatz& a, DarkCenter center, Index sites) {
   check_dark_sites(a, sites);
   const double n0 = dark_center_n0(center);
   const Index half = a.theta != 0 ? (sites - 1) / 2 : 0;

@@ -1,13 +1,13 @@
 // Floquet multipliers and measures of a converged point of the resonant chain's shooting
-// (shooting.hpp), as the continuation asks for them (Sec. 5.3-5.4).
+// (resonant_chain_shooting.hpp), as the continuation asks for them (Sec. 5.3-5.4).
 #include "lrchain/sim/dark/floquet.hpp"
 #include "lrchain/sim/dark/measures.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
 namespace lrchain::sim::dark {
 
 // Reversible mode: floquet_reversible on the shooting propagator; full mode: the monodromy.
-void DarkShooting::jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& r,
+void ResonantChainShooting::jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b, Eigen::VectorXd& r,
                                         Eigen::MatrixXd& J, FloquetResult* floquet) const {
   Eigen::MatrixXd Phi;
   if (floquet && mode_ == ShootingMode::reversible) {
@@ -22,7 +22,7 @@ void DarkShooting::jacobian_and_floquet(const Eigen::VectorXd& q, double omega_b
   }
 }
 
-void DarkShooting::measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const {
+void ResonantChainShooting::measure(const Eigen::VectorXd& z0, double omega_b, DarkMeasures& out) const {
   out = measure_dark_breather(p_, z0, omega_b, integration_);
 }
 

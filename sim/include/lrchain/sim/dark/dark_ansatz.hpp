@@ -25,7 +25,7 @@
 
 namespace lrchain::sim::dark {
 
-struct ModelDarkAnsatz {
+struct DarkAnsatz {
   Index branch = 0;
   double theta = 0;               // pi: the edge the breather bifurcates from
   double omega_b = 0;             // breather frequency, on the side of the edge where A is real
@@ -40,7 +40,7 @@ struct ModelDarkAnsatz {
   bool mean_flow = false;         // strain form (translation-invariant) or displacement form
 };
 
-struct ModelDarkEdge {
+struct DefocusingEdge {
   Index branch = 0;
   double theta = 0;  // pi or 0
 };
@@ -48,19 +48,19 @@ struct ModelDarkEdge {
 // The branch (given, or the first in the file's order) and edge (theta = pi first, then theta = 0)
 // where the NLS is defocusing (omega'' h_tilde > 0). InvalidParameter("branch", ...) naming every
 // edge checked and its regime when there is none.
-ModelDarkEdge defocusing_edge(const Model& model, std::optional<Index> branch);
+DefocusingEdge defocusing_edge(const Model& model, std::optional<Index> branch);
 
 // The seed's coefficients at omega_b. InvalidParameter("omega-b", ...) unless
 // (omega_b - omega) h_tilde > 0 and omega_b > 0.
-ModelDarkAnsatz make_model_dark_ansatz(const Model& model, const lrchain_lattice_kernels& kernels,
-                                       const ModelDarkEdge& edge, double omega_b);
+DarkAnsatz make_dark_ansatz(const Model& model, const lrchain_lattice_kernels& kernels,
+                                       const DefocusingEdge& edge, double omega_b);
 
 // InvalidParameter("sites", ...) unless `sites` >= 9 fits the edge: odd at theta = pi, even at 0.
-void check_dark_sites(const ModelDarkAnsatz& ansatz, Index sites);
+void check_dark_sites(const DarkAnsatz& ansatz, Index sites);
 
 // Z(0) on a periodic ring of `sites` (theta = pi: centre in the middle, n = i - (sites - 1)/2;
 // theta = 0: the pair) in the lattice's variables: strains r[n] = u_0[n] - u_0[n-1],
 // w_f[n] = u_f[n] - u_0[n] (mean flow) or displacements u_f[n], field-major.
-Eigen::VectorXd model_dark_seed(const ModelDarkAnsatz& ansatz, DarkCenter center, Index sites);
+Eigen::VectorXd dark_seed(const DarkAnsatz& ansatz, DarkCenter center, Index sites);
 
 }  // namespace lrchain::sim::dark

@@ -1,0 +1,96 @@
+// The dark job's option schema (dark_schema.hpp): defaults read from a default-constructed DarkConfig.
+#include "lrchain/jobs/dark_schema.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "lrchain/config/option_caps.hpp"
+#include "lrchain/jobs/dark_job.hpp"
+
+namespace lrchain::jobs::dark {
+
+namespace {
+
+const std::vector<std::string> all_steps{"solve", "floquet", "continue", "evolve"};
+
+// A range of integers from an option cap: "[least, most]" or ">= least" when most is the int32 cap.
+std::string integer_range(const config::OptionCap& cap, const std::string& what = "") {
+  const std::string head = what.empty() ? "" : what + ", ";
+  if (cap.most == config::int32_most) return fmt::format("{}>= {}", head, cap.least);
+  return fmt::format("{}[{}, {}]", head, cap.least, cap.most);
+}
+
+std::vector<DarkOption> make_options() {
+  const DarkConfig d;
+  const nlohmann::json none;
+  return {
+      {"omega_b", "--omega-b", "omega_b", all_steps, none, true,
+       "> 0, on the side of the edge where (omega_b - omega) h_tilde > 0: below it for the resonant chain",
+       "breather frequency omega_b (dimensionless, time unit of Sec. 2; period T_b = 2 pi/omega_b)"},
+      {"branch", "--branch", "branch", all_steps, d.branch.empty() ? none : nlohmann::json(d.branch), false,
+       "optical|acoustic, or with a model file one of its branches",
+       "branch whose band edge the breather bifurcates from (none: optical, or with a model file the first "
+       "whose theta = pi edge is defocusing)"},
+      {"center", "--center", "center", all_steps, d.center, false, "bond|site", "family: bond (n0 = 1/2) or site (n0 = 0)"},
+      {"sites", "--sites", "sites", all_steps, d.sites, false, integer_range(config::dark_sites, "odd"),
+       "lattice sites per field (periodic ends; even at a model's theta = 0 edge)"},
+      {"mode", "--mode", "mode", all_steps, d.mode, false, "reversible|full",
+       "shooting over a half/quarter period (reversible) or the whole period (full, a check)"},
+      {"tolerance", "", "tolerance", all_steps, d.tolerance, false, "(0, 1)",
+       "Newton and corrector: converged when max|F| <= tolerance"},
+      {"max_iterations", "", "max_iterations", all_steps, d.max_iterations, false, ">= 1", "Newton iterations"},
+      {"full_monodromy", "--full-monodromy", "full_monodromy", {"floquet"}, d.full_monodromy, false,
+       "not with a model file", "integrate the full period (check of the reversible reduction)"},
+      {"points", "--points", "points", {"continue"}, d.points, false, integer_range(config::dark_points),
+       "maximum number of branch points, the first included"},
+      {"ds", "--ds", "ds", {"continue"}, d.ds, false, "(0, 1], adapted within [1e-5, 1]",
+       "initial pseudo-arclength step in (Z(0), omega_b), dimensionless"},
+      {"omega_min", "--omega-min", "omega_min", {"continue"}, d.omega_min, false, "< omega_b",
+       "stop when omega_b falls below this (dimensionless frequency)"},
+      {"omega_max", "--omega-max", "omega_max", {"continue"}, d.omega_max, false,
+       "0 (the band edge omega(pi)) or > omega_b, at most twice the top of the optical band",
+       "stop when omega_b rises above this (dimensionless frequency)"},
+      {"branch_floquet", "", "floquet", {"continue"}, d.branch_floquet, false, "true|false",
+       "Floquet multipliers at every branch point"},
+      {"t_end", "--t-end", "t_end", {"evolve"}, none, true, "at least one period T_b",
+       "integration time (dimensionless, time unit of Sec. 2)"},
+      {"samples", "--samples", "samples", {"evolve"}, d.samples, false, integer_range(config::dark_samples),
+       "samples of x_n(t) per period for the amplitudes of the position measure"},
+      {"format", "--format", "", {"solve", "floquet", "continue"}, d.format, false, "csv|hdf5 (hdf5 not with a model file)",
+       "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: profiles or the branch, Floquet "
+       "multipliers as complex numbers)"},
+      {"out", "--out", "", all_steps, d.out.empty() ? none : nlohmann::json(d.out), false, "",
+       "output directory for CSV data and gnuplot figures (none: only the JSON on stdout)"},
+  };
+}
+
+}  // namespace
+
+const std::vector<DarkOption>& dark_options() {
+  static const std::vector<DarkOption> options = make_options();
+  return options;
+}
+
+const DarkOption& dark_option(const std::string& key) {
+  for (const DarkOption& o : dark_options())
+    if (o.key == key) return o;
+  throw std::out_of_range("no dark option " + key);
+}
+
+std::string default_text(const DarkOption& o) {
+  const nlohmann::json& v = o.default_value;
+  if (v.is_null()) return "";
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_number_float()) return fmt::format("{}", v.get<double>());
+  return v.dump();
+}
+
+std::string help_text(const DarkOption& o) {
+  std::string facts = o.range;
+  const std::string value = o.required ? "required" : o.default_value.is_null() ? "default: none" : "default " + default_text(o);
+  if (!value.empty()) facts += (facts.empty() ? "" : "; ") + value;
+  return facts.empty() ? o.doc : o.doc + " [" + facts + "]";
+}
+
+}  // namespace lrchain::jobs::dark
