@@ -21,6 +21,10 @@ from ._lrchain import Params, build_info as _build_info
 from .coefficients import Coefficients, coefficients
 from .model import SHIPPED_MODELS, Model, load_model
 from . import dark, regime, simulate
+from . import labelled as _labelled
+from .labelled import open_sweep
+
+_labelled.attach()  # result.to_xarray() on every result class
 
 __version__ = _build_info()["version"]
 
@@ -35,6 +39,7 @@ def provenance():
 __all__ = [
     "__version__",
     "provenance",
+    "open_sweep",
     "Params",
     "Model",
     "load_model",
