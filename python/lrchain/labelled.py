@@ -19,8 +19,8 @@ import numpy as np
 
 from .errors import InputError
 
-TIME = ("time", "nondimensional time of the equations of motion")
-SITE = ("site", "lattice site index n")
+TIME = ("time", "lattice units")  # the nondimensional time of the model's equations of motion
+SITE = ("site n", "1")
 
 
 def _xarray():
@@ -72,7 +72,7 @@ def _spacetime_vars(result, names, data_vars, coords):
         st = getattr(result, name, None)
         if st is None:
             continue
-        t = _shared_dim(coords, "time_field", name, np.asarray(st.t), "time of the space-time samples", TIME[1])
+        t = _shared_dim(coords, "time_field", name, np.asarray(st.t), "time", TIME[1])
         n = _shared_dim(coords, "site", name, np.asarray(st.n), *SITE)
         data_vars[name] = _var((t, n), st.values, st.quantity)
 
@@ -294,7 +294,7 @@ def coefficients_to_xarray(self):
               ("nonresonance1", "non-resonance value 1", "1"), ("nonresonance2", "non-resonance value 2", "1"))
     data_vars = {("lambda" if name == "lambda_" else name): _var(dims, getattr(self, name), label, units)
                  for name, label, units in labels}
-    data_vars["regime"] = _var(dims, np.asarray(self.regime, dtype=str), "regime")
+    data_vars["regime"] = (dims, np.asarray(self.regime, dtype=str), {"long_name": "regime"})
     coords = {"theta": _var(dims, theta, "wavenumber theta", "rad")}
     attrs = _provenance()
     attrs["lrchain_result"] = "coefficients"

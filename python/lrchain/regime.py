@@ -121,7 +121,7 @@ def _map(lattice, plane, branch, axis, x, y, x_log, x_keyword, y_keyword, x_name
     y_range, ny = _axis(y, d["ny"])
     keywords = {"nx": x_keyword, "ny": y_keyword, "rho_range": x_keyword, "delta0_range": x_keyword,
                 "axis_range": x_keyword, "theta_range": y_keyword, "omega_range": y_keyword}
-    m = _keywords_named(lambda: _lrchain.regime_map(lattice, plane, branch, axis, x_range, nx, y_range, ny, x_log),
+    m = _keywords_named(lambda: _lrchain.regime_map(lattice, plane, branch or "", axis, x_range, nx, y_range, ny, x_log),
                         keywords)
     return RegimeMap(m["x"], m["y"], m["values"], x_name or m["axis"], y_name)
 
