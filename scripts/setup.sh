@@ -21,7 +21,8 @@ PACKAGES=(build-essential cmake pkg-config git
   python3-xarray python3-scipy python3-tqdm
   libcmark-gfm-dev libcmark-gfm-extensions-dev libssl-dev)
 if [[ "${LRCHAIN_TEST_TOOLS:-0}" == 1 ]]; then
-  PACKAGES+=(chromium python3-pytest python3-h5py python3-matplotlib python3-build)
+  PACKAGES+=(chromium python3-pytest python3-h5py python3-matplotlib python3-build python3-nbclient
+    python3-nbformat python3-ipykernel)
 fi
 
 missing=()

@@ -26,6 +26,7 @@ from ._keywords import checked_model, python_names, real_numbers, renamed
 from ._lrchain import Model, Params
 from .errors import InputError
 from .hdf5 import HDF5Mixin, checked_destination, tree_of
+from .progress import Bar
 
 # The dark job's defaults, from its one schema (lrchain/jobs/dark_schema.hpp, the defaults of DarkConfig):
 # keyword -> default. omega_b, branch and t_end have none there (None here: see _job and evolve).
@@ -284,21 +285,25 @@ class Branch(HDF5Mixin):
 def continue_branch(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
                     tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], points=_D["points"], ds=_D["ds"],
                     omega_min=_D["omega_min"], omega_max=_D["omega_max"],
-                    floquet=_D["floquet"], *, model=None):
+                    floquet=_D["floquet"], *, model=None, progress=None):
     """Solve at ``omega_b``, then continue the family (at most ``points`` points, initial arclength step
     ``ds``) while omega_b stays in [omega_min, omega_max] (default: up to the band edge), with the
     Floquet multipliers at every point if ``floquet``; returns :class:`Branch`. With ``model``: away
     from the model's edge (into the gap below it, upwards from an edge the branch rises from, as
-    ``lrchain dark continue --model``); returns :class:`ModelBranch`."""
+    ``lrchain dark continue --model``); returns :class:`ModelBranch`. ``progress``: a bar over the
+    points (see :mod:`lrchain.progress`)."""
     params, model, omega_b, branch = _job(params, model, omega_b, branch, "continue_branch")
     if model is not None:
-        d = _edge(python_names(lambda: _lrchain.dark_model_continue(
-            model, omega_b, branch, center, sites, mode, tolerance, max_iterations, points, ds, omega_min, omega_max,
-            floquet)))
+        with Bar("dark-breather branch", progress, unit="point") as bar:
+            d = _edge(python_names(lambda: _lrchain.dark_model_continue(
+                model, omega_b, branch, center, sites, mode, tolerance, max_iterations, points, ds, omega_min,
+                omega_max, floquet, bar.callback)))
         d["floquet"] = [_floquet(f) for f in d["floquet"]]
         return ModelBranch(**d)
-    d = python_names(lambda: _lrchain.dark_continue(params, omega_b, branch, center, sites, mode, tolerance,
-                                                    max_iterations, points, ds, omega_min, omega_max, floquet))
+    with Bar("dark-breather branch", progress, unit="point") as bar:
+        d = python_names(lambda: _lrchain.dark_continue(params, omega_b, branch, center, sites, mode, tolerance,
+                                                        max_iterations, points, ds, omega_min, omega_max, floquet,
+                                                        bar.callback))
     d["floquet"] = [_floquet(f) for f in d["floquet"]]
     return Branch(params=params, **d)
 

@@ -28,6 +28,7 @@ from ._keywords import checked_model, python_names, real_numbers, renamed
 from ._lrchain import Model, Params
 from .errors import InputError
 from .hdf5 import HDF5Mixin, write_simulation
+from .progress import Bar
 
 
 @dataclass(frozen=True)
@@ -127,7 +128,7 @@ class BrightResult(_SimulationHDF5):
 def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=None, n0=None, sites=None,
            periods=None, sample_every=None, spacetime_every=None, snapshot_periods=None, centre_window=None,
            error_window_end=None, ansatz_ends=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
-           max_memory=None, record_strains=False, observer=None):
+           max_memory=None, record_strains=False, observer=None, progress=None):
     """Bright-breather run: the strain lattice on n = -N..N (``sites`` = 2N + 1, odd) started from the
     NLS bright breather of ``branch`` at carrier ``theta`` and integrated for ``periods`` breather
     periods T_b, as ``lrchain simulate bright``.
@@ -167,7 +168,8 @@ def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=
                            ansatz_ends=ansatz_ends)
         if detuning is not None:
             options["detuning"] = detuning
-        out = python_names(lambda: _lrchain.simulate_model_bright(model, branch, options))
+        with Bar(f"bright run of {model.name}", progress, fractions=False):
+            out = python_names(lambda: _lrchain.simulate_model_bright(model, branch, options))
         return _model_bright_result(out)
     options = _options(params=params, branch=branch, theta=theta, n0=n0, sites=sites, periods=periods,
                        sample_every=sample_every, spacetime_every=spacetime_every,
@@ -176,7 +178,8 @@ def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=
                        stepper=stepper, abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
     if detuning is not None:
         options["detuning"] = detuning
-    out = python_names(lambda: _lrchain.simulate_bright(options, record_strains, observer))
+    with Bar("bright run", progress) as bar:
+        out = python_names(lambda: _lrchain.simulate_bright(options, record_strains, observer, bar.callback))
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "x_n", "y_n")
     return BrightResult(t=series["t"], E_x=series["E_x"], E_y=series["E_y"], energy=series["energy"],
@@ -302,7 +305,7 @@ class DriveResult(_SimulationHDF5):
 def drive(params=None, *, sites=None, amplitude=None, omega0=None, ramp_rate=None, switch_off_time=None, t_end=None,
           sample_every=None, spacetime_every=None, snapshot_times=None, front_fraction=None,
           front_fit_start=None, front_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
-          max_memory=None, record_displacements=False, observer=None):
+          max_memory=None, record_displacements=False, observer=None, progress=None):
     """Driven chain (``lrchain simulate drive``): beads n = 1..sites at rest, clamped far end, first
     bead driven by A0 sin(omega0 t) chi(t). Library defaults: params rho=10 (alpha=3/2,
     delta0=4/9, kappa=1), sites=2000, amplitude=0.06, omega0=2.1, ramp_rate=0.046,
@@ -313,7 +316,8 @@ def drive(params=None, *, sites=None, amplitude=None, omega0=None, ramp_rate=Non
                        snapshot_times=None if snapshot_times is None else list(snapshot_times),
                        front_fraction=front_fraction, front_fit_start=front_fit_start, front_fit_end=front_fit_end,
                        stepper=stepper, abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
-    out = python_names(lambda: _lrchain.simulate_drive(options, record_displacements, observer))
+    with Bar("drive run", progress) as bar:
+        out = python_names(lambda: _lrchain.simulate_drive(options, record_displacements, observer, bar.callback))
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "u_n", "v_n")
     return DriveResult(t=series["t"], energy=series["energy"], front=series["front"],
@@ -353,7 +357,7 @@ class ModulatedResult(_SimulationHDF5):
 def modulated(params=None, *, sites=None, epsilon=None, theta_waves=None, modulation_depth=None, t_end=None,
               sample_every=None, snapshot_times=None, contrast_threshold=None, dark_window=None,
               speed_fit_start=None, speed_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
-              max_memory=None, record_displacements=False, observer=None):
+              max_memory=None, record_displacements=False, observer=None, progress=None):
     """Periodic chain of ``sites`` sites (``lrchain simulate modulated``) started from the modulated
     acoustic wave (eq. (43)). Library defaults: params delta0=0.27, rho=0.32, sites=401,
     epsilon=0.03, theta_waves=252, modulation_depth=0.01 (b of eq. (43)), t_end=45000,
@@ -365,7 +369,9 @@ def modulated(params=None, *, sites=None, epsilon=None, theta_waves=None, modula
                        contrast_threshold=contrast_threshold, dark_window=dark_window,
                        speed_fit_start=speed_fit_start, speed_fit_end=speed_fit_end, stepper=stepper,
                        abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
-    out = python_names(lambda: _lrchain.simulate_modulated(options, record_displacements, observer))
+    with Bar("modulated run", progress) as bar:
+        out = python_names(lambda: _lrchain.simulate_modulated(options, record_displacements, observer,
+                                                               bar.callback))
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "u_n", "v_n")
     return ModulatedResult(t=series["t"], energy=series["energy"], contrast=series["contrast"],
