@@ -97,15 +97,17 @@ py::dict model_coefficient_arrays(const LoadedModel& loaded, const std::string& 
   const Model& model = loaded.model;
   const Index b = branch_index(model, branch);
   validate_wavenumbers(theta);
-  if (model.resonant_chain_params())  // the chain's own message for its zero-frequency mode, as lrchain.coefficients(Params)
-    for (py::ssize_t i = 0; i < theta.size(); ++i) {
-      try {
-        check_resonant_chain_wavenumber(model.resonant_chain_branch(b), theta.data()[i]);
-      } catch (const InvalidParameter& e) {
-        const std::string failure = e.what();
-        throw InvalidParameter("theta", failure.substr(failure.find(": ") + 2) + wavenumber_position(theta, i));
+  // The chain's own message for its zero-frequency mode, as lrchain.coefficients(Params) gives it.
+  if (model.resonant_chain_params() && model.resonant_chain_branch(b) == Branch::acoustic)
+    for (py::ssize_t i = 0; i < theta.size(); ++i)
+      if (theta.data()[i] == 0.0) {
+        try {
+          check_resonant_chain_wavenumber(Branch::acoustic, 0.0);
+        } catch (const InvalidParameter& e) {
+          const std::string failure = e.what();
+          throw InvalidParameter("theta", failure.substr(failure.find(": ") + 2) + wavenumber_position(theta, i));
+        }
       }
-    }
   CoefficientArrays out(shape_of(theta), out_arrays);
   std::ptrdiff_t refused = -1;
   std::string failure, failed_parameter;

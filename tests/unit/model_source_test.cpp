@@ -108,7 +108,8 @@ TEST_CASE("model source: without a compiler a user's file is refused naming the 
                         "(configure with LRCHAIN_BUILD_DERIVATION=ON)").c_str(),
                        lrchain::InputError);
   // A directory is refused by the reader, after the front end's label.
-  CHECK_THROWS_WITH_AS(jobs::ModelSource(dir.string(), "load_model:", nullptr),
-                       doctest::Contains("load_model: " + dir.string() + ": a directory"), lrchain::InputError);
+  const std::string directory_refused = "load_model: " + dir.string() + ": a directory";
+  CHECK_THROWS_WITH_AS(jobs::ModelSource(dir.string(), "load_model:", nullptr), doctest::Contains(directory_refused.c_str()),
+                       lrchain::InputError);
   std::filesystem::remove_all(dir);
 }
