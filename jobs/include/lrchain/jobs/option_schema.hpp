@@ -1,0 +1,52 @@
+#pragma once
+// One option of a job, once: its Config key with default, range and one-line documentation, and how each
+// front end spells it (CLI option, Python keyword). Every job has one list of these (job_options): the
+// CLI builds its options' help from it, Python takes its defaults and docstrings from it, and the tests
+// compare both with it (tests/python/test_job_schemas.py).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace lrchain::jobs {
+
+struct JobOption {
+  std::string key;                 // Config key (snake_case), the name validate() reports
+  std::string cli;                 // the command's option, e.g. "--omega-b" ("": not on the command line)
+  std::string python;              // the Python keyword, e.g. "omega_b" ("": not in Python)
+  std::vector<std::string> steps;  // the subcommands that take it (empty: the job has one command)
+  nlohmann::json default_value;    // the default Config's value; null: required or chosen by the job
+  bool required = false;           // the command line requires it
+  std::string range;               // the values validate() accepts, e.g. "odd, >= 9" ("": any)
+  std::string doc;                 // one line: what it is
+  // The CLI's help where it is not "doc [range; default D]": a text in which {range} and {default}
+  // stand for range and default_text() ("": that form).
+  std::string help = {};
+  // The default as the help states it when the Config has none (the job chooses it), e.g.
+  // "sign(h_tilde)*1e-4"; "" : "none".
+  std::string default_note = {};
+};
+
+// The options of one job (e.g. "bright", "dark", "regime intervals", "coeffs") in the order its
+// `--help` shows them; std::out_of_range for a job that has none.
+const std::vector<JobOption>& job_options(const std::string& job);
+
+// Every job that has an option schema, e.g. {"bright", "coeffs", "dark", ...}.
+std::vector<std::string> job_names();
+
+// The option of `key` in `options`; std::out_of_range if there is none.
+const JobOption& find_option(const std::vector<JobOption>& options, const std::string& key);
+
+// The default as the help shows it: 101, bond, 1e-11, "0 50.125 200" for a list; default_note (or "")
+// when the Config has none.
+std::string default_text(const JobOption& o);
+
+// The CLI's help text of an option: `help` with its {range} and {default} filled in, or "doc [range;
+// default D]" ("default: none" when the Config has none, "required" for a required option).
+std::string help_text(const JobOption& o);
+
+// One option as JSON: {key, cli, python, steps, default, required, range, doc, help, default_text}
+// (what Python reads: _lrchain.job_options).
+nlohmann::json to_json(const JobOption& o);
+
+}  // namespace lrchain::jobs
