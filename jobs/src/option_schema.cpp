@@ -72,7 +72,7 @@ const JobOption& find_option(const std::vector<JobOption>& options, const std::s
 }
 
 std::string default_text(const JobOption& o) {
-  return o.default_value.is_null() ? o.default_note : value_text(o.default_value);
+  return !o.default_note.empty() || o.default_value.is_null() ? o.default_note : value_text(o.default_value);
 }
 
 std::string help_text(const JobOption& o) {

@@ -13,7 +13,8 @@ std::vector<JobOption> make_options() {
   const nlohmann::json none;
   const std::string one_wavenumber = "none (required for one wavenumber)";
   return {
-      {"model", "--model", "", {}, none, false, "a shipped model or a model file (docs/models.md)",
+      // (--model and --set are the model loader's options: model_option.hpp)
+      {"model", "", "", {}, none, false, "a shipped model or a model file (docs/models.md)",
        "lattice model with its parameter values", coeffs_help, "the resonant chain"},
       {"params", "", "params", {}, none, false, "the ranges of lrchain/params.hpp", "the resonant chain's parameters",
        coeffs_help, "alpha=3/2, delta0=4/9, kappa=1, rho=1/3"},

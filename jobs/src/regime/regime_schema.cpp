@@ -48,7 +48,8 @@ std::vector<JobOption> make_map() {
        "with --model: lo hi of the --axis parameter", "{doc} (default: {default})", "its declared range when bounded"},
       {"plane", "--plane", "", {}, d.plane, false, "theta-rho or delta0-omega", "the plane of the map",
        "theta-rho (default) or delta0-omega"},
-      {"branch", "--branch", "branch", {}, d.branch, false, "optical, acoustic or both; with --model: a branch name or both/all",
+      // (Python's maps take one branch, required: a map of one panel)
+      {"branch", "--branch", "", {}, d.branch, false, "optical, acoustic or both; with --model: a branch name or both/all",
        "the branch", "optical, acoustic or both (default {default}); with --model: a branch name or both/all"},
       {"rho_range", "--rho-range", "rho", {}, nullptr, false, "inside rho's range", "theta-rho: rho lo hi",
        "{doc} (default {default})", rho_note},
@@ -76,7 +77,7 @@ std::vector<JobOption> make_curves() {
       {"branch", "", "branch", {}, d.branch, false, "a branch name", "the branch"},
       {"axis", "", "axis", {}, nullptr, false, "rho or delta0; a model: any of its parameters",
        "the parameter on x", "", "rho for the resonant chain, else the model's first"},
-      {"range", "", "lo", {}, nullptr, false, "finite, lo < hi (resonant chain: 0 < lo)", "lo hi of the axis", "",
+      {"range", "", "lo", {}, nullptr, false, "finite, lo < hi (resonant chain: 0 < lo)", "lo (and ``hi``) of the axis", "",
        "the map's x range of this branch"},
       {"omega_plane", "", "omega_plane", {}, d.omega_plane, false, "true|false",
        "resonant chain, axis delta0: map theta to omega (Figs. 4-5)"},

@@ -59,7 +59,8 @@ void add_integrator(std::vector<JobOption>& options, const sim::IntegratorOption
   options.push_back(both("rel_tol", d.rel_tol, "> 0", "relative local error tolerance"));
   options.push_back(d.automatic_dt
                         ? both("dt", d.dt, "> 0",
-                               "largest step of the fixed-step steppers, or the initial step of the adaptive ones",
+                               "largest step of the fixed-step steppers (default: chosen by a probe run), or the "
+                               "initial step of the adaptive ones",
                                "largest step of the fixed-step steppers (default: chosen by a 2 T_b probe run so "
                                "that the relative energy error stays below 2e-10), or the initial step of the "
                                "adaptive ones (default {default})")
@@ -74,7 +75,7 @@ std::vector<JobOption> make_bright() {
       {"branch", "--branch", "branch", {}, std::string(to_string(d.branch)), true,
        "optical or acoustic (with --model: a branch of the model)", "dispersion branch of the carrier", "{range}"},
       {"theta", "--theta", "theta", {}, std::numbers::pi / 2, true, "in (0, pi]", "carrier wavenumber",
-       "{doc} {range}, e.g. pi/2"},
+       "{doc} {range}, e.g. pi/2", "pi/2"},
       with_note("sign(h_tilde)*1e-4", both("detuning", nullptr, "", "omega_b - omega")),
       both("n0", d.n0, "|n0| <= N = (sites - 1)/2", "initial breather centre n0", "{doc}, {range} (default {default})"),
       both("sites", sites,
@@ -95,6 +96,7 @@ std::vector<JobOption> make_bright() {
            "{doc}"),
       cli_only(both("checkpoint_every", d.checkpoint_every, ">= 0", "periods T_b between checkpoints",
                     "{doc} (default {default}: only on SIGINT/SIGTERM)")),
+      python_only(both("max_memory", d.max_memory, ">= 0", "bytes the run may use (0: the machine's available memory)")),
   };
   add_integrator(o, d.integrator);
   return o;
@@ -142,6 +144,7 @@ std::vector<JobOption> make_drive() {
       both("front_fit_end", d.front_fit_end, "> 0", "front-speed fit to"),
       cli_only(both("checkpoint_every", d.checkpoint_every, ">= 0", "time between checkpoints",
                     "{doc} (default {default}: only on SIGINT/SIGTERM)")),
+      python_only(both("max_memory", d.max_memory, ">= 0", "bytes the run may use (0: the machine's available memory)")),
   };
   add_integrator(o, d.integrator);
   return o;
@@ -165,6 +168,7 @@ std::vector<JobOption> make_modulated() {
       both("speed_fit_end", d.speed_fit_end, "> 0", "dark-speed fit to"),
       cli_only(both("checkpoint_every", d.checkpoint_every, ">= 0", "time between checkpoints",
                     "{doc} (default {default}, 0: none)")),
+      python_only(both("max_memory", d.max_memory, ">= 0", "bytes the run may use (0: the machine's available memory)")),
   };
   add_integrator(o, d.integrator);
   return o;

@@ -16,14 +16,14 @@ struct JobOption {
   std::string python;              // the Python keyword, e.g. "omega_b" ("": not in Python)
   std::vector<std::string> steps;  // the subcommands that take it (empty: the job has one command)
   nlohmann::json default_value;    // the default Config's value; null: required or chosen by the job
-  bool required = false;           // the command line requires it
+  bool required = false;           // the command line requires it (Python then takes the default, if any)
   std::string range;               // the values validate() accepts, e.g. "odd, >= 9" ("": any)
   std::string doc;                 // one line: what it is
   // The CLI's help where it is not "doc [range; default D]": a text in which {range} and {default}
   // stand for range and default_text() ("": that form).
   std::string help = {};
-  // The default as the help states it when the Config has none (the job chooses it), e.g.
-  // "sign(h_tilde)*1e-4"; "" : "none".
+  // The default as the help states it where the value alone would not do: when the Config has none
+  // (the job chooses it, e.g. "sign(h_tilde)*1e-4") or to spell it (pi/2); "": the value, or "none".
   std::string default_note = {};
 };
 
@@ -37,8 +37,8 @@ std::vector<std::string> job_names();
 // The option of `key` in `options`; std::out_of_range if there is none.
 const JobOption& find_option(const std::vector<JobOption>& options, const std::string& key);
 
-// The default as the help shows it: 101, bond, 1e-11, "0 50.125 200" for a list; default_note (or "")
-// when the Config has none.
+// The default as the help shows it: default_note if any, else 101, bond, 1e-11, "0 50.125 200" for a
+// list ("" when the Config has none).
 std::string default_text(const JobOption& o);
 
 // The CLI's help text of an option: `help` with its {range} and {default} filled in, or "doc [range;
