@@ -32,22 +32,6 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// Runs `job`, spelling a job's Config key in an InvalidParameter as the CLI's option (rho_range ->
-// rho-range).
-template <class Job>
-auto with_option_names(Job&& job) {
-  try {
-    return job();
-  } catch (const InvalidParameter& e) {
-    std::string option = e.parameter();
-    std::replace(option.begin(), option.end(), '_', '-');
-    if (option == e.parameter()) throw;
-    const std::string prefix = "invalid " + e.parameter() + ": ";
-    const std::string what = e.what();
-    throw InvalidParameter(option, what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
-  }
-}
-
 // The lattice of a regime job: a --model file, or the resonant chain at --rho etc. (and --set).
 jobs::RegimeLattice lattice_of(const ModelSelection& selection, const Model& m) {
   if (!selection.file.empty()) return {Params{}, std::make_shared<const Model>(m)};
@@ -81,7 +65,7 @@ void run_intervals(const IntervalsArgs& a, const CLI::App& cmd) {
   c.lattice = lattice_of(a.model, model);
   c.branch = a.branch;
   c.samples = a.samples;
-  json out = with_option_names([&] { return jobs::to_json(jobs::run(c)); });
+  json out = with_option_names(jobs::regime_intervals_options(), [&] { return jobs::to_json(jobs::run(c)); });
   out["provenance"] = provenance_json();
   std::cout << out.dump(a.json_flag ? -1 : 2) << '\n';
 }
@@ -136,12 +120,12 @@ void run_map(const MapArgs& a, const CLI::App& cmd) {
   c.rho_range = range_option(a.rho_range, "rho-range");
   c.delta0_range = range_option(a.delta0_range, "delta0-range");
   c.omega_range = range_option(a.omega_range, "omega-range");
-  with_option_names([&] { jobs::validate(c, a.out); });
+  with_option_names(jobs::regime_map_options(), [&] { jobs::validate(c, a.out); });
   const fs::path dir(a.out);
   const sim::OutputLock lock(dir);
   const sim::OutputListing earlier = sim::list_output_files(dir);  // files of an earlier run
   sim::Figures figures(dir);
-  const jobs::RegimeMapResult result = with_option_names([&] { return jobs::run(c); });
+  const jobs::RegimeMapResult result = with_option_names(jobs::regime_map_options(), [&] { return jobs::run(c); });
   json out = jobs::to_json(result, jobs::write(result, dir, figures));
   out["out"] = fs::absolute(dir).string();
   figures.finish(out);
@@ -173,7 +157,7 @@ void run_thresholds(const ThresholdsArgs& a, const CLI::App& cmd) {
   c.branch = a.branch;
   c.axis = a.axis;
   c.axis_range = range_option(a.axis_range, "axis-range");
-  json out = with_option_names([&] { return jobs::to_json(jobs::run(c)); });
+  json out = with_option_names(jobs::regime_thresholds_options(), [&] { return jobs::to_json(jobs::run(c)); });
   out["provenance"] = provenance_json();
   std::cout << out.dump(a.json_flag ? -1 : 2) << '\n';
 }

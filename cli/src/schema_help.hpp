@@ -12,4 +12,17 @@ inline std::string schema_help(const std::vector<jobs::JobOption>& options, cons
   return jobs::help_text(jobs::find_option(options, key));
 }
 
+// Runs `job` and returns its value; a refusal naming one of the job's Config keys is re-spelled as the
+// command's option (t_end -> t-end, snapshot_periods -> snapshots, rho_range -> rho-range: jobs::cli_name).
+template <class Job>
+auto with_option_names(const std::vector<jobs::JobOption>& options, Job&& job) {
+  try {
+    return job();
+  } catch (const InvalidParameter& e) {
+    const std::string name = jobs::cli_name(options, e.parameter());
+    if (name == e.parameter()) throw;
+    throw jobs::renamed_parameter(e, name);
+  }
+}
+
 }  // namespace lrchain::cli

@@ -268,7 +268,7 @@ void register_simulate(CLI::App& app) {
   add_integrator_options(*bright, cfg->integrator, *stepper, bright_schema);
   add_output_options(*bright, outputs, true, subcommand_out);
   add_examples(*bright, {"lrchain simulate bright --branch optical --theta pi/2 --rho 1/3 --sites 1001 --periods 200 --out out/exp1"});
-  bright->callback([=] {
+  bright->callback([=] { with_option_names(jobs::bright_options(), [&] {
     if (!bright_model->file.empty()) {  // any model file: simulate_model_bright.cpp
       cfg->N = sim::strain_half_width(*bright_sites, sim::model_bright_sites);
       run_model_bright_command(*bright_model, *bright_branch, *cfg, *bright,
@@ -286,7 +286,7 @@ void register_simulate(CLI::App& app) {
     cfg->checkpoint_file = *checkpoint;
     cfg->max_memory = *max_memory;
     run_and_report(*cfg, *out, *style);
-  });
+  }); });
 
   // simulate drive (experiment 6, Sec. 4.3)
   auto dcfg = std::make_shared<sim::DriveRunConfig>();
@@ -312,14 +312,14 @@ void register_simulate(CLI::App& app) {
   add_integrator_options(*drive, dcfg->integrator, *dstepper, drive_schema);
   add_output_options(*drive, outputs, true, subcommand_out);
   add_examples(*drive, {"lrchain simulate drive --rho 10 --sites 2000 --omega0 2.1 --t-end 2400 --out out/exp6"});
-  drive->callback([=] {
+  drive->callback([=] { with_option_names(jobs::drive_options(), [&] {
     refuse_ignored_options(*drive, *out, {}, "");
     dcfg->integrator.stepper = sim::parse_stepper(*dstepper);
     dcfg->restart_file = *restart;
     dcfg->checkpoint_file = *checkpoint;
     dcfg->max_memory = *max_memory;
     run_and_report(*dcfg, *out, *style);
-  });
+  }); });
 
   // simulate modulated (experiment 7, Sec. 5.1)
   auto mcfg = std::make_shared<sim::ModulatedRunConfig>();
@@ -344,16 +344,16 @@ void register_simulate(CLI::App& app) {
   add_integrator_options(*mod, mcfg->integrator, *mstepper, mod_schema);
   add_output_options(*mod, outputs, true, subcommand_out);
   add_examples(*mod, {"lrchain simulate modulated --sites 401 --theta-waves 252 --t-end 45000 --out out/exp7"});
-  mod->callback([=] {
+  mod->callback([=] { with_option_names(jobs::modulated_options(), [&] {
     refuse_ignored_options(*mod, *out, {}, "");
     mcfg->integrator.stepper = sim::parse_stepper(*mstepper);
     mcfg->restart_file = *restart;
     mcfg->checkpoint_file = *checkpoint;
     mcfg->max_memory = *max_memory;
     run_and_report(*mcfg, *out, *style);
-  });
+  }); });
 
-  sim_cmd->callback([=] {
+  sim_cmd->callback([=] { with_option_names({}, [&] {
     if (!sim_cmd->get_subcommands().empty()) return;
     if (config->empty())
       throw InvalidParameter("config", "give a subcommand (bright, drive, modulated, ring) or --config FILE.toml");
@@ -386,7 +386,7 @@ void register_simulate(CLI::App& app) {
     ec.bright.max_memory = *max_memory;
     refuse_without_out(*sim_cmd, dir, output_file_options);
     if (ec.experiment == "bright") run_and_report(ec.bright, dir, *style);
-  });
+  }); });
 }
 
 }  // namespace lrchain::cli

@@ -83,6 +83,20 @@ std::string help_text(const JobOption& o) {
   return o.doc + " [" + facts + "]";
 }
 
+std::string cli_name(const std::vector<JobOption>& options, const std::string& key) {
+  for (const JobOption& o : options)
+    if (o.key == key && o.cli.starts_with("--")) return o.cli.substr(2);
+  std::string name = key;
+  for (char& ch : name)
+    if (ch == '_') ch = '-';
+  return name;
+}
+
+InvalidParameter renamed_parameter(const InvalidParameter& e, const std::string& name) {
+  const std::string what = e.what(), prefix = "invalid " + e.parameter() + ": ";
+  return InvalidParameter(name, what.starts_with(prefix) ? what.substr(prefix.size()) : what);
+}
+
 nlohmann::json to_json(const JobOption& o) {
   return {{"key", o.key},           {"cli", o.cli},         {"python", o.python},         {"steps", o.steps},
           {"default", o.default_value}, {"required", o.required}, {"range", o.range},       {"doc", o.doc},

@@ -29,9 +29,10 @@ def renamed(table):
 
 
 def python_names(call):
-    """``call()``, with an InvalidParameterError's parameter given its Python keyword's name: the
-    library's option spelling with hyphens as underscores (t-end -> t_end, switch-off-time ->
-    switch_off_time)."""
+    """``call()``, with an InvalidParameterError's parameter given its Python keyword's name. The jobs
+    name their Config keys (t_end, switch_off_time), the Python keywords; a library check that still
+    spells a key as its command-line option (the ring's packet-amplitude) has its hyphens read as
+    underscores."""
     from .errors import InvalidParameterError
 
     try:

@@ -59,8 +59,8 @@ void validate(const DriveRunConfig& c) {
   if (!(c.omega0 > 0 && std::isfinite(c.omega0))) throw InvalidParameter("omega0", "must be a finite number > 0");
   check_optical_band(c.params, c.omega0);
   if (!(c.ramp_rate > 0 && c.ramp_rate <= c.omega0))
-    throw InvalidParameter("ramp-rate", "must be in (0, omega0]: the envelope chi(t) varies slowly against the carrier");
-  if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t-end", "must be a finite number > 0");
+    throw InvalidParameter("ramp_rate", "must be in (0, omega0]: the envelope chi(t) varies slowly against the carrier");
+  if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t_end", "must be a finite number > 0");
   validate_sampling({c.t_end, "t_end", false, c.sample_every, c.spacetime_every, c.checkpoint_every,
                      snapshot_times_in_run(c),
                      (c.checkpoint_at_end && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
@@ -72,13 +72,13 @@ void validate(const DriveRunConfig& c) {
                        return run_sizes(longer);
                      }, c.max_memory});
   if (!(c.front_fraction > 0 && c.front_fraction < 1))
-    throw InvalidParameter("front-fraction", "must be in (0, 1)");
+    throw InvalidParameter("front_fraction", "must be in (0, 1)");
   if (!(c.t_m >= 0 && std::isfinite(c.t_m)))
-    throw InvalidParameter("switch-off-time", "must be a finite number >= 0 (the time chi(t) starts to ramp down)");
+    throw InvalidParameter("switch_off_time", "must be a finite number >= 0 (the time chi(t) starts to ramp down)");
   checked_finite(c.front_fit_start, "front-fit-start");
   checked_finite(c.front_fit_end, "front-fit-end");
   if (!(c.front_fit_end > c.front_fit_start))
-    throw InvalidParameter("front-fit-end", "must exceed front-fit-start (the front-speed fit window "
+    throw InvalidParameter("front_fit_end", "must exceed front-fit-start (the front-speed fit window "
                                             "[front_fit_start, front_fit_end])");
   validate(c.integrator);
   validate_step_within_run(c.integrator, c.t_end);

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lrchain/errors.hpp"
+
 namespace lrchain::jobs {
 
 struct JobOption {
@@ -48,5 +50,12 @@ std::string help_text(const JobOption& o);
 // One option as JSON: {key, cli, python, steps, default, required, range, doc, help, default_text}
 // (what Python reads: _lrchain.job_options).
 nlohmann::json to_json(const JobOption& o);
+
+// The command-line name of a job's Config key: its option in `options` without the "--" (snapshot_periods
+// -> snapshots), else the key with '_' read as '-' (t_end -> t-end).
+std::string cli_name(const std::vector<JobOption>& options, const std::string& key);
+
+// `e` naming `name` instead of its key, its text kept: "invalid t_end: ..." -> "invalid t-end: ...".
+InvalidParameter renamed_parameter(const InvalidParameter& e, const std::string& name);
 
 }  // namespace lrchain::jobs
