@@ -206,6 +206,17 @@ void add_output_options(CLI::App& cmd, const SimulateOutputs& o, bool lattice_ru
   add_max_memory(cmd, *o.max_memory);
 }
 
+// A lattice run from its subcommand: its stepper, the run files and memory limit of the shared options,
+// then run_and_report.
+template <class Config>
+void run_lattice_command(Config& c, const std::string& stepper, const SimulateOutputs& o) {
+  c.integrator.stepper = sim::parse_stepper(stepper);
+  c.restart_file = *o.restart;
+  c.checkpoint_file = *o.checkpoint;
+  c.max_memory = *o.max_memory;
+  run_and_report(c, *o.out, *o.style);
+}
+
 }  // namespace
 
 void register_simulate(CLI::App& app) {
@@ -280,12 +291,8 @@ void register_simulate(CLI::App& app) {
     refuse_ignored_options(*bright, *out, {}, "");
     cfg->N = sim::strain_half_width(*bright_sites, sim::bright_sites);
     cfg->branch = parse_branch(*bright_branch);
-    cfg->integrator.stepper = sim::parse_stepper(*stepper);
     if (bright->count("--dt") > 0) cfg->integrator.automatic_dt = false;
-    cfg->restart_file = *restart;
-    cfg->checkpoint_file = *checkpoint;
-    cfg->max_memory = *max_memory;
-    run_and_report(*cfg, *out, *style);
+    run_lattice_command(*cfg, *stepper, outputs);
   }); });
 
   // simulate drive (experiment 6, Sec. 4.3)
@@ -314,11 +321,7 @@ void register_simulate(CLI::App& app) {
   add_examples(*drive, {"lrchain simulate drive --rho 10 --sites 2000 --omega0 2.1 --t-end 2400 --out out/exp6"});
   drive->callback([=] { with_option_names(jobs::drive_options(), [&] {
     refuse_ignored_options(*drive, *out, {}, "");
-    dcfg->integrator.stepper = sim::parse_stepper(*dstepper);
-    dcfg->restart_file = *restart;
-    dcfg->checkpoint_file = *checkpoint;
-    dcfg->max_memory = *max_memory;
-    run_and_report(*dcfg, *out, *style);
+    run_lattice_command(*dcfg, *dstepper, outputs);
   }); });
 
   // simulate modulated (experiment 7, Sec. 5.1)
@@ -346,11 +349,7 @@ void register_simulate(CLI::App& app) {
   add_examples(*mod, {"lrchain simulate modulated --sites 401 --theta-waves 252 --t-end 45000 --out out/exp7"});
   mod->callback([=] { with_option_names(jobs::modulated_options(), [&] {
     refuse_ignored_options(*mod, *out, {}, "");
-    mcfg->integrator.stepper = sim::parse_stepper(*mstepper);
-    mcfg->restart_file = *restart;
-    mcfg->checkpoint_file = *checkpoint;
-    mcfg->max_memory = *max_memory;
-    run_and_report(*mcfg, *out, *style);
+    run_lattice_command(*mcfg, *mstepper, outputs);
   }); });
 
   sim_cmd->callback([=] { with_option_names({}, [&] {

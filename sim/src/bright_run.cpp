@@ -65,7 +65,7 @@ void validate(const BrightRunConfig& c) {
     throw InvalidParameter("n0", fmt::format("the initial centre must be a site of the lattice, in [-N, N] = [{}, {}] "
                                              "(sites = 2N + 1 = {})", -c.N, c.N, strain_site_count(c.N)));
   if (c.detuning) checked_finite(*c.detuning, "detuning");
-  checked_finite(c.error_window_end, "error-window");
+  checked_finite(c.error_window_end, "error_window_end");
   if (c.centre_window < 1) throw InvalidParameter("centre_window", "must be >= 1");
   validate(c.integrator);
   // The ansatz checks theta, detuning and n0 and gives T_b: dt may not exceed the run periods * T_b.

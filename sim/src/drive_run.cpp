@@ -25,7 +25,7 @@ namespace lrchain::sim {
 namespace {
 
 // Sample intervals floor(t_end / sample_every) of the run (validated: no overflow).
-Index sample_intervals(const DriveRunConfig& c) { return sim::sample_intervals(c.t_end, c.sample_every, "t-end"); }
+Index sample_intervals(const DriveRunConfig& c) { return sim::sample_intervals(c.t_end, c.sample_every, "t_end"); }
 
 }  // namespace
 
@@ -45,7 +45,7 @@ void check_optical_band(const Params& p, double omega0) {
 // The sizes the run's memory and output grow with.
 LatticeRunSizes run_sizes(const DriveRunConfig& c) {
   return sampled_run_sizes(double(c.beads), c.t_end, c.sample_every, c.spacetime_every,
-                           double(snapshot_times_in_run(c).size()), c.integrator.stepper, "t-end");
+                           double(snapshot_times_in_run(c).size()), c.integrator.stepper, "t_end");
 }
 
 }  // namespace
@@ -65,7 +65,7 @@ void validate(const DriveRunConfig& c) {
                      snapshot_times_in_run(c),
                      (c.checkpoint_at_end && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
                      "snapshot_times",
-                     {{"switch-off-time", c.t_m}, {"front-fit-start", c.front_fit_start}, {"front-fit-end", c.front_fit_end}},
+                     {{"switch_off_time", c.t_m}, {"front_fit_start", c.front_fit_start}, {"front_fit_end", c.front_fit_end}},
                      [&c](double t_end) {
                        DriveRunConfig longer = c;
                        longer.t_end = t_end;
@@ -75,8 +75,8 @@ void validate(const DriveRunConfig& c) {
     throw InvalidParameter("front_fraction", "must be in (0, 1)");
   if (!(c.t_m >= 0 && std::isfinite(c.t_m)))
     throw InvalidParameter("switch_off_time", "must be a finite number >= 0 (the time chi(t) starts to ramp down)");
-  checked_finite(c.front_fit_start, "front-fit-start");
-  checked_finite(c.front_fit_end, "front-fit-end");
+  checked_finite(c.front_fit_start, "front_fit_start");
+  checked_finite(c.front_fit_end, "front_fit_end");
   if (!(c.front_fit_end > c.front_fit_start))
     throw InvalidParameter("front_fit_end", "must exceed front-fit-start (the front-speed fit window "
                                             "[front_fit_start, front_fit_end])");
@@ -86,7 +86,7 @@ void validate(const DriveRunConfig& c) {
     throw InvalidParameter("stepper", "the driven chain is not autonomous: use rkf78 or dopri5");
   const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
   const bool lattice = lattice_dominates(sizes);
-  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "t-end",
+  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "t_end",
                lattice ? "lower sites" : "lower t-end or raise sample-every and spacetime-every");
 }
 

@@ -50,7 +50,7 @@ LatticeRunSizes run_sizes(const ModulatedRunConfig& c) {
   LatticeRunSizes s;
   s.sites = double(c.N);
   const double snapshots = double(snapshot_times_in_run(c).size());
-  const double samples = double(grid_index(c.t_end, c.sample_every, "sample-every")) + 2;
+  const double samples = double(grid_index(c.t_end, c.sample_every, "sample_every")) + 2;
   s.observations = samples + snapshots;
   s.series_columns = 5;
   s.spacetime_rows = samples;
@@ -74,7 +74,7 @@ void validate(const ModulatedRunConfig& c) {
   validate_sampling({c.t_end, "t_end", false, c.sample_every, std::nullopt, c.checkpoint_every,
                      snapshot_times_in_run(c),
                      (c.checkpoint_every > 0 && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
-                     "snapshot_times", {{"speed-fit-start", c.speed_fit_start}, {"speed-fit-end", c.speed_fit_end}},
+                     "snapshot_times", {{"speed_fit_start", c.speed_fit_start}, {"speed_fit_end", c.speed_fit_end}},
                      [&c](double t_end) {
                        ModulatedRunConfig longer = c;
                        longer.t_end = t_end;
@@ -85,8 +85,8 @@ void validate(const ModulatedRunConfig& c) {
   if (!(c.contrast_threshold > 0 && c.contrast_threshold <= double(c.N)))
     throw InvalidParameter("contrast_threshold",
                            "must be in (0, sites]: the contrast (max e - min e)/mean e never exceeds the number of sites");
-  checked_finite(c.speed_fit_start, "speed-fit-start");
-  checked_finite(c.speed_fit_end, "speed-fit-end");
+  checked_finite(c.speed_fit_start, "speed_fit_start");
+  checked_finite(c.speed_fit_end, "speed_fit_end");
   if (!(c.speed_fit_end > c.speed_fit_start))
     throw InvalidParameter("speed_fit_end", "must exceed speed-fit-start (the fit window [speed_fit_start, speed_fit_end])");
   validate(c.integrator);
@@ -94,7 +94,7 @@ void validate(const ModulatedRunConfig& c) {
   validate_step_within_run(c.integrator, c.t_end);
   validate_step_count(c.integrator, c.t_end);
   const bool lattice = lattice_dominates(sizes);
-  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "sample-every",
+  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "sample_every",
                lattice ? "lower sites" : "lower t-end or raise sample-every");
 }
 

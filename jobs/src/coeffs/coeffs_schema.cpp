@@ -35,9 +35,6 @@ std::vector<JobOption> make_options() {
 
 }  // namespace
 
-const std::vector<JobOption>& coeffs_options() {
-  static const std::vector<JobOption> options = make_options();
-  return options;
-}
+const std::vector<JobOption>& coeffs_options() { return schema_once<make_options>(); }
 
 }  // namespace lrchain::jobs

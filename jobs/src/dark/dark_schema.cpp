@@ -65,10 +65,7 @@ std::vector<DarkOption> make_options() {
 
 }  // namespace
 
-const std::vector<DarkOption>& dark_options() {
-  static const std::vector<DarkOption> options = make_options();
-  return options;
-}
+const std::vector<DarkOption>& dark_options() { return schema_once<make_options>(); }
 
 const DarkOption& dark_option(const std::string& key) { return find_option(dark_options(), key); }
 

@@ -99,21 +99,9 @@ std::vector<JobOption> make_thresholds() {
 
 }  // namespace
 
-const std::vector<JobOption>& regime_intervals_options() {
-  static const std::vector<JobOption> options = make_intervals();
-  return options;
-}
-const std::vector<JobOption>& regime_map_options() {
-  static const std::vector<JobOption> options = make_map();
-  return options;
-}
-const std::vector<JobOption>& regime_curves_options() {
-  static const std::vector<JobOption> options = make_curves();
-  return options;
-}
-const std::vector<JobOption>& regime_thresholds_options() {
-  static const std::vector<JobOption> options = make_thresholds();
-  return options;
-}
+const std::vector<JobOption>& regime_intervals_options() { return schema_once<make_intervals>(); }
+const std::vector<JobOption>& regime_map_options() { return schema_once<make_map>(); }
+const std::vector<JobOption>& regime_curves_options() { return schema_once<make_curves>(); }
+const std::vector<JobOption>& regime_thresholds_options() { return schema_once<make_thresholds>(); }
 
 }  // namespace lrchain::jobs

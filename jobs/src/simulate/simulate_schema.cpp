@@ -68,6 +68,17 @@ void add_integrator(std::vector<JobOption>& options, const sim::IntegratorOption
                                "{doc}, default {default}"));
 }
 
+// checkpoint_every (the command line's; `checkpoint_help` says what 0 means), max_memory (Python's: the
+// command takes --max-memory SIZE) and the integrator's options of a lattice run's config `d`.
+template <class Config>
+void add_run_options(std::vector<JobOption>& options, const Config& d, const char* checkpoint_doc,
+                     const char* checkpoint_help) {
+  options.push_back(cli_only(both("checkpoint_every", d.checkpoint_every, ">= 0", checkpoint_doc, checkpoint_help)));
+  options.push_back(
+      python_only(both("max_memory", d.max_memory, ">= 0", "bytes the run may use (0: the machine's available memory)")));
+  add_integrator(options, d.integrator);
+}
+
 std::vector<JobOption> make_bright() {
   const sim::BrightRunConfig d;
   const auto sites = sim::strain_site_count(d.N);
@@ -94,11 +105,8 @@ std::vector<JobOption> make_bright() {
       python_only(both("centre_window", d.centre_window, ">= 1", "sites m of the energy centre (eq. (41))")),
       both("ansatz_ends", d.ansatz_ends, "true|false", "end beads follow the ansatz (emitting boundary conditions, Sec. 4.2)",
            "{doc}"),
-      cli_only(both("checkpoint_every", d.checkpoint_every, ">= 0", "periods T_b between checkpoints",
-                    "{doc} (default {default}: only on SIGINT/SIGTERM)")),
-      python_only(both("max_memory", d.max_memory, ">= 0", "bytes the run may use (0: the machine's available memory)")),
   };
-  add_integrator(o, d.integrator);
+  add_run_options(o, d, "periods T_b between checkpoints", "{doc} (default {default}: only on SIGINT/SIGTERM)");
   return o;
 }
 
@@ -142,11 +150,8 @@ std::vector<JobOption> make_drive() {
       both("front_fraction", d.front_fraction, "in (0, 1)", "front = last n with e_n > this * max e_n"),
       both("front_fit_start", d.front_fit_start, ">= 0", "front-speed fit from"),
       both("front_fit_end", d.front_fit_end, "> 0", "front-speed fit to"),
-      cli_only(both("checkpoint_every", d.checkpoint_every, ">= 0", "time between checkpoints",
-                    "{doc} (default {default}: only on SIGINT/SIGTERM)")),
-      python_only(both("max_memory", d.max_memory, ">= 0", "bytes the run may use (0: the machine's available memory)")),
   };
-  add_integrator(o, d.integrator);
+  add_run_options(o, d, "time between checkpoints", "{doc} (default {default}: only on SIGINT/SIGTERM)");
   return o;
 }
 
@@ -166,11 +171,8 @@ std::vector<JobOption> make_modulated() {
       python_only(both("dark_window", d.dark_window, ">= 1", "running mean (sites) before locating min e_n")),
       both("speed_fit_start", d.speed_fit_start, ">= 0", "dark-speed fit from"),
       both("speed_fit_end", d.speed_fit_end, "> 0", "dark-speed fit to"),
-      cli_only(both("checkpoint_every", d.checkpoint_every, ">= 0", "time between checkpoints",
-                    "{doc} (default {default}, 0: none)")),
-      python_only(both("max_memory", d.max_memory, ">= 0", "bytes the run may use (0: the machine's available memory)")),
   };
-  add_integrator(o, d.integrator);
+  add_run_options(o, d, "time between checkpoints", "{doc} (default {default}, 0: none)");
   return o;
 }
 
@@ -193,25 +195,10 @@ std::vector<JobOption> make_ring() {
 
 }  // namespace
 
-const std::vector<JobOption>& bright_options() {
-  static const std::vector<JobOption> options = make_bright();
-  return options;
-}
-const std::vector<JobOption>& model_bright_options() {
-  static const std::vector<JobOption> options = make_model_bright();
-  return options;
-}
-const std::vector<JobOption>& drive_options() {
-  static const std::vector<JobOption> options = make_drive();
-  return options;
-}
-const std::vector<JobOption>& modulated_options() {
-  static const std::vector<JobOption> options = make_modulated();
-  return options;
-}
-const std::vector<JobOption>& ring_options() {
-  static const std::vector<JobOption> options = make_ring();
-  return options;
-}
+const std::vector<JobOption>& bright_options() { return schema_once<make_bright>(); }
+const std::vector<JobOption>& model_bright_options() { return schema_once<make_model_bright>(); }
+const std::vector<JobOption>& drive_options() { return schema_once<make_drive>(); }
+const std::vector<JobOption>& modulated_options() { return schema_once<make_modulated>(); }
+const std::vector<JobOption>& ring_options() { return schema_once<make_ring>(); }
 
 }  // namespace lrchain::jobs

@@ -37,7 +37,7 @@ DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::Vector
   const double period = 2.0 * std::numbers::pi / omega_b;
   if (!(t_end >= period && std::isfinite(t_end)))
     throw InvalidParameter("t_end", "must be a finite time of at least one period T_b = 2 pi/omega_b");
-  const Index M = checked_count(std::floor(t_end / period), "t-end", 1, std::numeric_limits<int>::max(),
+  const Index M = checked_count(std::floor(t_end / period), "t_end", 1, std::numeric_limits<int>::max(),
                                 "periods (t-end / T_b)");
   const Eigen::Index positions = z0.size();
   std::vector<double> s(static_cast<std::size_t>(2 * positions), 0.0);

@@ -29,6 +29,13 @@ struct JobOption {
   std::string default_note = {};
 };
 
+// The schema that `Make` builds, built once: what a job's accessor (e.g. bright_options()) returns.
+template <std::vector<JobOption> (*Make)()>
+const std::vector<JobOption>& schema_once() {
+  static const std::vector<JobOption> options = Make();
+  return options;
+}
+
 // The options of one job (e.g. "bright", "dark", "regime intervals", "coeffs") in the order its
 // `--help` shows them; std::out_of_range for a job that has none.
 const std::vector<JobOption>& job_options(const std::string& job);
