@@ -25,7 +25,8 @@ namespace lrchain::sim {
 namespace {
 
 // Sample intervals floor(t_end / sample_every) of the run (validated: no overflow).
-Index sample_intervals(const DriveRunConfig& c) { return sim::sample_intervals(c.t_end, c.sample_every, "t_end"); }
+// (the name is also the message's text "samples (t-end / sample-every)": the command's spelling)
+Index sample_intervals(const DriveRunConfig& c) { return sim::sample_intervals(c.t_end, c.sample_every, "t-end"); }
 
 }  // namespace
 
@@ -45,7 +46,7 @@ void check_optical_band(const Params& p, double omega0) {
 // The sizes the run's memory and output grow with.
 LatticeRunSizes run_sizes(const DriveRunConfig& c) {
   return sampled_run_sizes(double(c.beads), c.t_end, c.sample_every, c.spacetime_every,
-                           double(snapshot_times_in_run(c).size()), c.integrator.stepper, "t_end");
+                           double(snapshot_times_in_run(c).size()), c.integrator.stepper, "t-end");
 }
 
 }  // namespace

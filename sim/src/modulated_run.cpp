@@ -50,7 +50,8 @@ LatticeRunSizes run_sizes(const ModulatedRunConfig& c) {
   LatticeRunSizes s;
   s.sites = double(c.N);
   const double snapshots = double(snapshot_times_in_run(c).size());
-  const double samples = double(grid_index(c.t_end, c.sample_every, "sample_every")) + 2;
+  // (the name is also the message's text "samples (t-end / sample-every)": the command's spelling)
+  const double samples = double(grid_index(c.t_end, c.sample_every, "sample-every")) + 2;
   s.observations = samples + snapshots;
   s.series_columns = 5;
   s.spacetime_rows = samples;
