@@ -7,8 +7,10 @@
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/simulate/model_simulate_job.hpp"
+#include "lrchain/jobs/simulate/simulate_schema.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
+#include "schema_help.hpp"
 #include "simulate_model_commands.hpp"
 
 namespace lrchain::cli {
@@ -50,18 +52,18 @@ void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output) {
       "ring", "Plane waves of a model on a periodic ring: frequency vs amplitude against omega + h U^2/4, and a "
               "small wave packet's speed against c (the derived coefficients checked by the lattice itself)");
   add_model_file_options(*ring, o->model);
-  ring->add_option("--branch", o->branch, "branch name of the model (acoustic, optical, branch0, ...)")->required()->type_name("NAME");
-  add_number(*ring, "--theta", o->run.theta, "carrier wavenumber 2 pi k / N in (0, pi], e.g. pi/2")->required();
-  add_number_list(*ring, "--amplitudes", o->run.amplitudes, "plane-wave amplitudes U of the first field (default " + numbers_text(o->run.amplitudes) + ")");
-  add_integer(*ring, "--sites", o->run.sites, config::ring_sites.least, config::ring_sites.most,
-              "ring size N (default: the smallest N >= 8 with theta N / (2 pi) whole)");
-  add_number(*ring, "--periods", o->run.periods, fmt::format("carrier periods per frequency measurement (default {:g})", o->run.periods));
-  add_number(*ring, "--steps-per-period", o->run.steps_per_period, fmt::format("srkn11b steps per carrier period (default {:g})", o->run.steps_per_period));
+  const auto help = [](const char* key) { return schema_help(jobs::ring_options(), key); };
+  ring->add_option("--branch", o->branch, help("branch"))->required()->type_name("NAME");
+  add_number(*ring, "--theta", o->run.theta, help("theta"))->required();
+  add_number_list(*ring, "--amplitudes", o->run.amplitudes, help("amplitudes"));
+  add_integer(*ring, "--sites", o->run.sites, config::ring_sites.least, config::ring_sites.most, help("sites"));
+  add_number(*ring, "--periods", o->run.periods, help("periods"));
+  add_number(*ring, "--steps-per-period", o->run.steps_per_period, help("steps_per_period"));
   ring->add_option_function<std::string>(
           "--packet-amplitude", [o](const std::string& text) { o->run.packet_amplitude = parse_number(text, "packet-amplitude"); },
-          "wave-packet amplitude in (0, 10] (default: a tenth of the smallest --amplitudes)")
+          help("packet_amplitude"))
       ->type_name("NUM");
-  add_number(*ring, "--packet-width", o->run.packet_width, fmt::format("Gaussian width of the packet in sites (default {:g})", o->run.packet_width));
+  add_number(*ring, "--packet-width", o->run.packet_width, help("packet_width"));
   ring->callback([o, ring, output] { run_ring_command(*o, *ring, output); });
 }
 

@@ -22,7 +22,7 @@ import json
 import numpy as np
 
 from . import _lrchain
-from ._keywords import checked_model, python_names, real_numbers, renamed
+from ._keywords import checked_model, documented, python_names, real_numbers, renamed
 from ._lrchain import Model, Params
 from .errors import InputError
 from .hdf5 import HDF5Mixin, checked_destination, tree_of
@@ -131,6 +131,7 @@ def _job(params, model, omega_b, branch, function):
         ("optical" if branch is None else branch)
 
 
+@documented(("dark", "Options (the job's schema, as ``lrchain dark ... --help``):"))
 @renamed("dark")
 @real_numbers
 def solve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
@@ -147,6 +148,7 @@ def solve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D[
     return _solution(params, omega_b, d)
 
 
+@documented(("dark", "Options (the job's schema, as ``lrchain dark ... --help``):"))
 @renamed("dark")
 @real_numbers
 def floquet(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
@@ -280,6 +282,7 @@ class Branch(HDF5Mixin):
                 f"{len(self.turning_points)} turning points; {self.stop_reason})")
 
 
+@documented(("dark", "Options (the job's schema, as ``lrchain dark ... --help``):"))
 @renamed("dark")
 @real_numbers
 def continue_branch(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
@@ -365,6 +368,7 @@ class Evolution(HDF5Mixin):
         return f"Evolution({len(self.t)} periods to t = {self.t[-1]:g}, max E_b = {self.E_b.max():.3g})"
 
 
+@documented(("dark", "Options (the job's schema, as ``lrchain dark ... --help``):"))
 @renamed("dark")
 @real_numbers
 def evolve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],

@@ -19,12 +19,10 @@ and the energy density e_n.
 
 import json
 from dataclasses import dataclass, field
-from math import pi
-
 import numpy as np
 
 from . import _lrchain
-from ._keywords import checked_model, python_names, real_numbers, renamed
+from ._keywords import checked_model, documented, python_names, real_numbers, renamed, schema_options
 from ._lrchain import Model, Params
 from .errors import InputError
 from .hdf5 import HDF5Mixin, write_simulation
@@ -69,6 +67,11 @@ class _SimulationHDF5:
         write_simulation(path, self._kind, {column: getattr(self, name) for column, name in self._series},
                          self.energy_density, self.snapshots, self.summary,
                          [(name, getattr(self, name)) for name in self._fields if getattr(self, name) is not None])
+
+
+# The bright job's defaults of branch and theta, from its schema (lrchain/jobs/simulate/simulate_schema.hpp); the
+# other keywords are None: the job's default, the same as the command's (listed in each docstring from the schema).
+_BRIGHT = schema_options("bright")
 
 
 def _options(**kwargs):
@@ -123,9 +126,11 @@ class BrightResult(_SimulationHDF5):
                 f"max E_x = {self.summary['max_E_x']:.4g}, max E_y = {self.summary['max_E_y']:.4g})")
 
 
+@documented(("bright", "Options (None: the default; the job's schema, as ``lrchain simulate bright --help``):"),
+            ("bright --model", "With ``model``:"))
 @renamed("bright")
 @real_numbers
-def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=None, n0=None, sites=None,
+def bright(params=None, branch=_BRIGHT["branch"]["default"], theta=_BRIGHT["theta"]["default"], *, model=None, detuning=None, n0=None, sites=None,
            periods=None, sample_every=None, spacetime_every=None, snapshot_periods=None, centre_window=None,
            error_window_end=None, ansatz_ends=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
            max_memory=None, record_strains=False, observer=None, progress=None):
@@ -248,6 +253,7 @@ class RingResult(HDF5Mixin):
                 f"disagreement {', '.join(f'{d:.3g}' for d in self.relative_disagreement)})")
 
 
+@documented(("ring", "Options (None: the default; the job's schema, as ``lrchain simulate ring --help``):"))
 @real_numbers
 def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, steps_per_period=None,
          packet_amplitude=None, packet_width=None):
@@ -300,6 +306,7 @@ class DriveResult(_SimulationHDF5):
         return f"DriveResult({len(self.t)} samples to t = {self.t[-1]:g}, final energy {self.energy[-1]:.6g})"
 
 
+@documented(("drive", "Options (None: the default; the job's schema, as ``lrchain simulate drive --help``):"))
 @renamed("drive")
 @real_numbers
 def drive(params=None, *, sites=None, amplitude=None, omega0=None, ramp_rate=None, switch_off_time=None, t_end=None,
@@ -352,6 +359,7 @@ class ModulatedResult(_SimulationHDF5):
         return f"ModulatedResult({len(self.t)} samples to t = {self.t[-1]:g})"
 
 
+@documented(("modulated", "Options (None: the default; the job's schema, as ``lrchain simulate modulated --help``):"))
 @renamed("modulated")
 @real_numbers
 def modulated(params=None, *, sites=None, epsilon=None, theta_waves=None, modulation_depth=None, t_end=None,
