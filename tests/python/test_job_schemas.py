@@ -50,8 +50,9 @@ FUNCTIONS = {
 FRONT_END_OPTIONS = {"--help", "--out", "--json", "--no-figures", "--figure-format", "--format", "--restart",
                      "--checkpoint", "--max-memory", "--model", "--set", "--rho", "--kappa", "--delta0", "--alpha",
                      "--quiet", "--config"}
-# Python keywords that are no job option: the lattice, what a result keeps, callbacks, an array to reuse.
-FRONT_END_KEYWORDS = {"params", "model", "record_strains", "record_displacements", "observer", "out", "hi",
+# Python keywords that are no job option: the lattice, what a result keeps, callbacks, progress display,
+# an array to reuse.
+FRONT_END_KEYWORDS = {"params", "model", "record_strains", "record_displacements", "observer", "progress", "out", "hi",
                       "branch"}
 
 
