@@ -130,7 +130,6 @@ void dispatch(const DarkArgs& a, DarkStep step, const CLI::App& cmd) {
     return;
   }
   if (config.full_monodromy) throw InputError("--full-monodromy: with --model the Floquet multipliers always come from the full-period monodromy");
-  if (config.format == "hdf5") throw InputError("--format hdf5 is not available with --model (it writes CSV and figures; use --format csv)");
   const Model model = load_selected_model(a.model, cmd, config.params, true);
   const LatticeCode code = lattice_kernels_for(a.model, model);
   config.model = &model;

@@ -217,6 +217,13 @@ class ModelDarkSolution(_ModelEdge):
     floquet: Floquet = None
     contact_changes_per_period: int = None
 
+    def to_hdf5(self, path):
+        """Writes this solution with the C++ job layer's writer, the file ``lrchain dark solve|floquet
+        --model ... --format hdf5`` writes (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        _hdf5.write_model_dark_solution(checked_destination(path), _plain(self))
+
     def __repr__(self):
         f = f", {self.floquet!r}" if self.floquet else ""
         return (f"ModelDarkSolution({self.model['name']}, omega_b={self.omega_b}, {len(self.n)} sites, Newton "
@@ -324,6 +331,13 @@ class ModelBranch(_ModelEdge):
     contact_changes_per_period: list
     turning_points: list
     stop_reason: str
+
+    def to_hdf5(self, path):
+        """Writes the branch with the C++ job layer's writer, the file ``lrchain dark continue --model
+        ... --format hdf5`` writes (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        _hdf5.write_model_dark_branch(checked_destination(path), _plain(self))
 
     @property
     def norm_squared(self):

@@ -7,7 +7,17 @@ series as datasets (``t``, ``E_x``, ..., ``centre``), the ``energy_density`` gro
 ``t``, ``tag``; group ``columns``), the ``summary`` tree and the optional per-sample fields (``x``, ``y``
 or ``u``, ``v``).
 
-For the other results the layout follows the result's fields: a numpy array is a dataset, a nested result (e.g. a
+The model-file results are written by the C++ job layer's writers, the same files as the commands'
+``--format hdf5``: :class:`lrchain.simulate.ModelBrightResult` (``lrchain simulate bright --model``:
+datasets ``t``, ``E_0``, ``E_1``, ..., ``energy``, ``centre``, ``snapshots``, ``summary``),
+:class:`lrchain.simulate.RingResult` (``lrchain simulate ring``: ``packet_t``, ``packet_centre``, one
+dataset per amplitude column, ``summary``), :class:`lrchain.dark.ModelDarkSolution` and
+:class:`lrchain.dark.ModelBranch` (``lrchain dark solve|floquet|continue --model``: the resonant
+chain's dark layout with the profiles ``z`` in the lattice's variables and the band edge as root
+attributes); docs/simulate-models.md and docs/dark-models.md give the layouts.
+
+For the other results (:class:`lrchain.dark.Evolution`, :class:`lrchain.dark.ModelEvolution`) the
+layout follows the result's fields: a numpy array is a dataset, a nested result (e.g. a
 :class:`lrchain.simulate.SpaceTime`, :class:`lrchain.dark.Floquet`) or a dict is a group, and numbers
 and strings are attributes of the enclosing group. Lists of results become groups "0", "1", ...;
 lists of numbers become datasets, lists of strings a JSON attribute. Complex arrays (Floquet
