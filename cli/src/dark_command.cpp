@@ -175,7 +175,7 @@ void register_dark(CLI::App& app) {
   add_integer(*evo, "--samples", c.samples, config::dark_samples.least, config::dark_samples.most, help("samples"));
   add_examples(*evo, {"lrchain dark evolve --rho 1/3 --center bond --omega-b 2.44 --t-end 500 --out out/dark-evolve"});
   evo->callback([args, evo] { dispatch(*args, DarkStep::evolve, *evo); });
-  for (auto* sub : {solve_cmd, floq, cont})
+  for (auto* sub : {solve_cmd, floq, cont, evo})
     sub->add_option("--format", c.format, help("format"))
         ->check(CLI::IsMember({"csv", "hdf5"}).description(""))
         ->type_name("csv|hdf5");

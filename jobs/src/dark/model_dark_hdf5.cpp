@@ -15,7 +15,12 @@ using nlohmann::json;
 using sim::Hdf5Element;
 using sim::Hdf5TreeFile;
 
-ModelDarkEdgeRecord edge_record(const DarkResult& r, const json& model) {
+// K_y and C_y exist where the lattice has a second strain-form variable.
+bool second_strain(const ModelDarkEdgeRecord& e) { return e.lattice_form == "strain" && e.variables.size() >= 2; }
+
+}  // namespace
+
+ModelDarkEdgeRecord model_dark_edge_record(const DarkResult& r, const json& model) {
   const DarkEdge& e = r.edge;
   ModelDarkEdgeRecord edge;
   edge.model = model;
@@ -32,11 +37,7 @@ ModelDarkEdgeRecord edge_record(const DarkResult& r, const json& model) {
   return edge;
 }
 
-// K_y and C_y exist where the lattice has a second strain-form variable.
-bool second_strain(const ModelDarkEdgeRecord& e) { return e.lattice_form == "strain" && e.variables.size() >= 2; }
-
-// The root: what the file holds, provenance and model, the edge; the sites n (centred).
-void write_edge(Hdf5TreeFile& file, const char* result_class, const ModelDarkEdgeRecord& e) {
+void write_model_dark_root(Hdf5TreeFile& file, const char* result_class, const ModelDarkEdgeRecord& e) {
   file.write_attribute("/", "lrchain_result", std::string(result_class));
   sim::write_provenance_attributes(file, {{"model", e.model}, {"provenance", provenance_json()}});
   sim::write_json_tree(file, "", {{"branch", e.branch},
@@ -53,11 +54,9 @@ void write_edge(Hdf5TreeFile& file, const char* result_class, const ModelDarkEdg
   file.write_dataset("/n", Hdf5Element::float64, n.data(), {n.size()});
 }
 
-}  // namespace
-
 ModelDarkSolutionRecord model_dark_solution_record(const DarkResult& r, const json& model) {
   ModelDarkSolutionRecord s;
-  s.edge = edge_record(r, model);
+  s.edge = model_dark_edge_record(r, model);
   s.omega_b = r.config.omega_b;
   s.z.assign(r.z0.data(), r.z0.data() + r.z0.size());
   s.seed.assign(r.seed.data(), r.seed.data() + r.seed.size());
@@ -70,7 +69,7 @@ ModelDarkSolutionRecord model_dark_solution_record(const DarkResult& r, const js
 
 ModelDarkBranchRecord model_dark_branch_record(const DarkResult& r, const json& model) {
   ModelDarkBranchRecord b;
-  b.edge = edge_record(r, model);
+  b.edge = model_dark_edge_record(r, model);
   b.points = sim::dark::dark_branch_record(Params{}, r.branch, r.config.sites, r.config.branch_floquet);
   for (const auto& p : r.branch.points) {
     b.z.insert(b.z.end(), p.z0.data(), p.z0.data() + p.z0.size());
@@ -82,7 +81,7 @@ ModelDarkBranchRecord model_dark_branch_record(const DarkResult& r, const json& 
 
 void write_model_dark_solution_hdf5(const std::filesystem::path& path, const ModelDarkSolutionRecord& s) {
   Hdf5TreeFile file(path);
-  write_edge(file, "ModelDarkSolution", s.edge);
+  write_model_dark_root(file, "ModelDarkSolution", s.edge);
   file.write_attribute("/", "omega_b", s.omega_b);
   if (s.contact_changes_per_period)
     file.write_attribute("/", "contact_changes_per_period", std::int64_t(*s.contact_changes_per_period));
@@ -95,7 +94,7 @@ void write_model_dark_solution_hdf5(const std::filesystem::path& path, const Mod
 
 void write_model_dark_branch_hdf5(const std::filesystem::path& path, const ModelDarkBranchRecord& b) {
   Hdf5TreeFile file(path);
-  write_edge(file, "ModelBranch", b.edge);
+  write_model_dark_root(file, "ModelBranch", b.edge);
   sim::dark::write_branch_series(file, b.points);
   const std::size_t points = b.points.omega_b.size(), fields = b.edge.variables.size(), sites = std::size_t(b.edge.sites);
   file.write_dataset("/z", Hdf5Element::float64, b.z.data(), {points, fields, sites});

@@ -1,16 +1,18 @@
-// lrchain._hdf5: lrchain's results to HDF5, a nested dict {name: dict (group) | numpy array (dataset) |
-// number or str (attribute of the enclosing group)} written by sim::Hdf5TreeFile (temporary name +
-// rename). A module of its own, imported by result.to_hdf5(): `import lrchain` does not load libhdf5.
+// lrchain._hdf5: lrchain's results to HDF5 through the C++ writers of the CLI's `--format hdf5` files
+// (sim/result_hdf5.hpp, sim/dark/dark_hdf5.hpp, jobs/simulate/model_run_hdf5.hpp,
+// jobs/model_dark_hdf5.hpp, jobs/dark_evolution_hdf5.hpp): each function rebuilds the writer's
+// record from a Python result's fields. A module of its own, imported by result.to_hdf5(): `import
+// lrchain` does not load libhdf5.
 #include <complex>
 #include <pybind11/numpy.h>
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include "lrchain/errors.hpp"
+#include "lrchain/jobs/dark_evolution_hdf5.hpp"
 #include "lrchain/jobs/model_dark_hdf5.hpp"
 #include "lrchain/jobs/simulate/model_run_hdf5.hpp"
 #include "lrchain/output_target.hpp"
-#include "lrchain/sim/hdf5_tree.hpp"
 #include "lrchain/sim/dark/dark_hdf5.hpp"
 #include "lrchain/sim/result_hdf5.hpp"
 #include "lrchain/version.hpp"
@@ -21,54 +23,6 @@ namespace lrchain::python {
 
 namespace {
 
-using sim::Hdf5Element;
-
-// The element type of a numpy array; TypeError naming the dataset for other dtypes.
-Hdf5Element element_of(const py::array& a, const std::string& path) {
-  const py::dtype t = a.dtype();
-  if (t.is(py::dtype::of<double>())) return Hdf5Element::float64;
-  if (t.is(py::dtype::of<float>())) return Hdf5Element::float32;
-  if (t.is(py::dtype::of<std::int64_t>())) return Hdf5Element::int64;
-  if (t.is(py::dtype::of<std::int32_t>())) return Hdf5Element::int32;
-  if (t.is(py::dtype::of<std::int8_t>())) return Hdf5Element::int8;
-  if (t.is(py::dtype::of<std::complex<double>>())) return Hdf5Element::complex128;
-  throw py::type_error("to_hdf5: dataset " + path + " has dtype " + std::string(py::str(py::handle(t))) +
-                       " (float64, float32, int64, int32, int8 or complex128 are written)");
-}
-
-// Writes the items of `tree` below the group `group` ("" for the root).
-void write_tree(sim::Hdf5TreeFile& file, const std::string& group, const py::dict& tree) {
-  const std::string object = group.empty() ? "/" : group;
-  for (auto [key, value] : tree) {
-    const std::string name = py::str(key);
-    const std::string path = group + "/" + name;
-    if (value.is_none()) continue;
-    if (py::isinstance<py::dict>(value)) {
-      file.create_group(path);
-      write_tree(file, path, value.cast<py::dict>());
-    } else if (py::isinstance<py::array>(value)) {
-      const auto a = py::array::ensure(value, py::array::c_style);
-      const std::vector<std::size_t> dims(a.shape(), a.shape() + a.ndim());
-      file.write_dataset(path, element_of(a, path), a.data(), dims);
-    } else if (py::isinstance<py::bool_>(value) || py::isinstance<py::int_>(value)) {
-      file.write_attribute(object, name, value.cast<std::int64_t>());
-    } else if (py::isinstance<py::float_>(value)) {
-      file.write_attribute(object, name, value.cast<double>());
-    } else if (py::isinstance<py::str>(value)) {
-      file.write_attribute(object, name, value.cast<std::string>());
-    } else {
-      throw py::type_error("to_hdf5: " + path + " is a " + std::string(py::str(value.get_type().attr("__name__"))) +
-                           " (dict, numpy array, number or str are written)");
-    }
-  }
-}
-
-// Validates the destination, writes the tree to a temporary file, renames it into place.
-void write_hdf5(const std::string& path, const py::dict& tree) {
-  sim::Hdf5TreeFile file(path);
-  write_tree(file, "", tree);
-  file.commit();
-}
 
 template <class T>
 std::vector<T> vector_of(const py::handle& a) {
@@ -279,6 +233,38 @@ void write_model_dark_branch(const std::string& path, const py::dict& d) {
   jobs::dark::write_model_dark_branch_hdf5(path, r);
 }
 
+// The record of an Evolution or ModelEvolution from its fields: the per-period series and the
+// stroboscopic profiles `profiles` ((M+1) x fields x sites).
+jobs::dark::DarkEvolutionRecord evolution_of(const py::dict& d, const py::handle& profiles, Index fields, Index sites) {
+  jobs::dark::DarkEvolutionRecord e;
+  e.period = d["period"].cast<double>();
+  e.max_strain = d["max_strain"].cast<double>();
+  py::dict series;
+  for (const char* name : {"t", "E_b", "C_x", "K_x", "position", "depth"}) series[name] = d[name];
+  e.periods = series_of(series);
+  e.fields = fields;
+  e.sites = sites;
+  e.profiles = vector_of<double>(profiles);
+  return e;
+}
+
+// The resonant chain's evolution through the job layer's writer (`lrchain dark evolve --format hdf5`):
+// the profiles x, y (M+1, sites) interleaved per row as the writer's (M+1) x 2 x sites.
+void write_dark_evolution(const std::string& path, const py::tuple& params, const py::dict& d) {
+  const auto x = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(d["x"]);
+  const auto y = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(d["y"]);
+  const py::object stacked = py::module_::import("numpy").attr("stack")(py::make_tuple(x, y), 1);
+  const Index sites = x.ndim() == 2 ? Index(x.shape(1)) : 0;
+  jobs::dark::write_dark_evolution_hdf5(path, params_of(params), evolution_of(d, stacked, 2, sites));
+}
+
+// A model file's evolution through the job layer's writer (`lrchain dark evolve --model ... --format hdf5`).
+void write_model_dark_evolution(const std::string& path, const py::dict& d) {
+  const jobs::dark::ModelDarkEdgeRecord edge = edge_of(d);
+  jobs::dark::write_model_dark_evolution_hdf5(
+      path, edge, evolution_of(d, d["z"], Index(edge.variables.size()), edge.sites));
+}
+
 }  // namespace
 
 }  // namespace lrchain::python
@@ -286,8 +272,6 @@ void write_model_dark_branch(const std::string& path, const py::dict& d) {
 PYBIND11_MODULE(_hdf5, m) {
   using namespace lrchain::python;
   m.doc() = "HDF5 writer of lrchain's results (the HDF5 C library).";
-  m.def("write_hdf5", &write_hdf5, py::arg("path"), py::arg("tree"),
-        "Writes {name: dict | array | number | str} as HDF5 groups, datasets and attributes.");
   m.def("write_simulation", &write_simulation, py::arg("path"), py::arg("kind"), py::arg("series"), py::arg("field"),
         py::arg("snapshots"), py::arg("summary_json"), py::arg("extra"),
         "Writes a bright/drive/modulated run with the sim library's writer (the CLI's --format hdf5 file).");
@@ -300,6 +284,10 @@ PYBIND11_MODULE(_hdf5, m) {
         "Writes a model file's dark breather with the job layer's writer (dark solve|floquet --model --format hdf5).");
   m.def("write_model_dark_branch", &write_model_dark_branch, py::arg("path"), py::arg("branch"),
         "Writes a model file's dark-breather branch with the job layer's writer (dark continue --model --format hdf5).");
+  m.def("write_dark_evolution", &write_dark_evolution, py::arg("path"), py::arg("params"), py::arg("evolution"),
+        "Writes a dark breather's evolution with the job layer's writer (dark evolve --format hdf5).");
+  m.def("write_model_dark_evolution", &write_model_dark_evolution, py::arg("path"), py::arg("evolution"),
+        "Writes a model file's dark-breather evolution with the job layer's writer (dark evolve --model --format hdf5).");
   m.def("write_dark_solution", &write_dark_solution, py::arg("path"), py::arg("params"), py::arg("solution"),
         "Writes a dark breather with the sim library's writer (the CLI's dark solve|floquet --format hdf5 file).");
   m.def("write_dark_branch", &write_dark_branch, py::arg("path"), py::arg("params"), py::arg("branch"),

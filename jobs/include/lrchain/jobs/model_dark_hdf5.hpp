@@ -55,10 +55,15 @@ struct ModelDarkBranchRecord {
   std::vector<Index> contact_changes_per_period;  // per point; empty for a smooth model
 };
 
-// The records of a model-file job's result `r` (solve/floquet, branch); `model` is the model object
-// of its summary (to_json(r)["model"]).
+// The records of a model-file job's result `r` (its edge; solve/floquet; branch); `model` is the
+// model object of its summary (to_json(r)["model"]).
+ModelDarkEdgeRecord model_dark_edge_record(const DarkResult& r, const nlohmann::json& model);
 ModelDarkSolutionRecord model_dark_solution_record(const DarkResult& r, const nlohmann::json& model);
 ModelDarkBranchRecord model_dark_branch_record(const DarkResult& r, const nlohmann::json& model);
+
+// The root of a model-file dark file in `file`: lrchain_result `result_class`, provenance, the edge
+// attributes above and the dataset n.
+void write_model_dark_root(sim::Hdf5TreeFile& file, const char* result_class, const ModelDarkEdgeRecord& e);
 
 // Writers (temporary name + rename; InputError naming `path` if its directory is missing or it is not a regular file).
 void write_model_dark_solution_hdf5(const std::filesystem::path& path, const ModelDarkSolutionRecord& s);
