@@ -177,3 +177,25 @@ def test_model_dark(tmp_path, cli, kg_defocusing, command, python_run):
             if r.floquet is not None:
                 assert np.array_equal(f["floquet/multipliers"][()], r.floquet.multipliers)
                 assert f["floquet"].attrs["kind"] == r.floquet.kind
+
+
+@pytest.mark.parametrize("model_args, python_run", [
+    ([], lambda kg: lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=21, t_end=2 * 2 * math.pi / 2.42)),
+    (["--model", "klein_gordon", "--set", "b=-1/2"],
+     lambda kg: lrchain.dark.evolve(model=kg, omega_b=1.17, sites=21, t_end=2 * 2 * math.pi / 1.17)),
+])
+def test_dark_evolve(tmp_path, cli, kg_defocusing, model_args, python_run):
+    omega_b = 1.17 if model_args else 2.42
+    cli_file = _cli_hdf5(cli, tmp_path, "dark", "evolve", *model_args, "--omega-b", omega_b, "--sites", "21",
+                         "--t-end", repr(2 * 2 * math.pi / omega_b), "--quiet")
+    r = python_run(kg_defocusing)
+    r.to_hdf5(tmp_path / "python.h5")
+    assert _assert_same_file(cli_file, tmp_path / "python.h5") >= 8
+    with h5py.File(tmp_path / "python.h5", "r") as f:
+        assert f.attrs["lrchain_result"] == type(r).__name__ and f.attrs["period"] == r.period
+        for name in ("t", "E_b", "C_x", "K_x", "position", "depth"):
+            assert np.array_equal(f[name][()], getattr(r, name)), name
+        if model_args:
+            assert np.array_equal(f["z"][()], r.z) and f["z"].shape == (3, 1, 21)
+        else:
+            assert np.array_equal(f["x"][()], r.x) and np.array_equal(f["y"][()], r.y) and f["x"].shape == (3, 21)
