@@ -180,8 +180,8 @@ struct SimulateOutputs {
 constexpr const char* subcommand_out =
     "output directory for data and figures (default: none, only the JSON summary is printed)";
 
-// Adds --out (described by `out_help`), --json, --no-figures, --figure-format to `cmd`; with
-// `lattice_run` (the resonant chain's runs and --config) also --format, --restart, --checkpoint and
+// Adds --out (described by `out_help`), --json, --no-figures, --figure-format, --format to `cmd`;
+// with `lattice_run` (the resonant chain's runs and --config) also --restart, --checkpoint and
 // --max-memory. All write `o`.
 void add_output_options(CLI::App& cmd, const SimulateOutputs& o, bool lattice_run, const std::string& out_help) {
   cmd.add_option("--out", *o.out, out_help)->type_name("DIR");
@@ -189,12 +189,12 @@ void add_output_options(CLI::App& cmd, const SimulateOutputs& o, bool lattice_ru
   cmd.add_flag_callback("--no-figures", [style = o.style] { style->figures = false; },
                         "write the data and summary.json to --out but no figures (no gnuplot run; default: figures)");
   add_figure_format(cmd);
-  if (!lattice_run) return;
   cmd.add_option("--format", o.style->format,
                  "data files in --out: csv (CSV, float32 space-time files and figures; default) or hdf5 "
                  "(result.h5 with the series, fields, snapshots and summary; no figures)")
       ->check(CLI::IsMember({"csv", "hdf5"}).description(""))
       ->type_name("csv|hdf5");
+  if (!lattice_run) return;
   cmd.add_option("--restart", *o.restart,
                  "continue the run from this checkpoint file (written with the same physics, lattice and stepper; "
                  "the outputs cover the whole run; default: none, a new run)")
@@ -215,6 +215,12 @@ void run_lattice_command(Config& c, const std::string& stepper, const SimulateOu
   c.checkpoint_file = *o.checkpoint;
   c.max_memory = *o.max_memory;
   run_and_report(c, *o.out, *o.style);
+}
+
+// The outputs of a model-file run: views of `o`'s --out, --json, --no-figures and --format.
+ModelRunOutput model_run_output(const SimulateOutputs& o) {
+  return {o.out, std::shared_ptr<bool>(o.style, &o.style->compact_json), std::shared_ptr<bool>(o.style, &o.style->figures),
+          std::shared_ptr<std::string>(o.style, &o.style->format)};
 }
 
 }  // namespace
@@ -239,10 +245,8 @@ void register_simulate(CLI::App& app) {
                      "output directory for data and figures (default: a config's [output] dir)");
   sim_cmd->require_subcommand(0, 1);
   {
-    // `simulate ring` (simulate_ring.cpp) reports through --out, --json, --no-figures and --figure-format.
-    auto compact = std::shared_ptr<bool>(style, &style->compact_json);
-    auto figures = std::shared_ptr<bool>(style, &style->figures);
-    register_simulate_ring(*sim_cmd, {out, compact, figures});
+    // `simulate ring` (simulate_ring.cpp) reports through --out, --json, --no-figures, --figure-format and --format.
+    register_simulate_ring(*sim_cmd, model_run_output(outputs));
     CLI::App& ring = *sim_cmd->get_subcommand("ring");
     add_output_options(ring, outputs, false, subcommand_out);
     add_examples(ring, {"lrchain simulate ring --model fput --branch acoustic --theta pi/2 --out out/ring-fput"});
@@ -282,9 +286,7 @@ void register_simulate(CLI::App& app) {
   bright->callback([=] { with_option_names(jobs::bright_options(), [&] {
     if (!bright_model->file.empty()) {  // any model file: simulate_model_bright.cpp
       cfg->N = sim::strain_half_width(*bright_sites, sim::model_bright_sites);
-      run_model_bright_command(*bright_model, *bright_branch, *cfg, *bright,
-                               {out, std::shared_ptr<bool>(style, &style->compact_json),
-                                std::shared_ptr<bool>(style, &style->figures)});
+      run_model_bright_command(*bright_model, *bright_branch, *cfg, *bright, model_run_output(outputs));
       return;
     }
     if (!bright_model->set.empty()) throw InputError("--set needs --model FILE (the resonant chain takes --rho, --kappa, ...)");
@@ -356,8 +358,7 @@ void register_simulate(CLI::App& app) {
     if (!sim_cmd->get_subcommands().empty()) return;
     if (config->empty())
       throw InvalidParameter("config", "give a subcommand (bright, drive, modulated, ring) or --config FILE.toml");
-    if (run_model_config(*config, *sim_cmd, {out, std::shared_ptr<bool>(style, &style->compact_json),
-                                                    std::shared_ptr<bool>(style, &style->figures)}))
+    if (run_model_config(*config, *sim_cmd, model_run_output(outputs)))
       return;  // a model file's bright or ring config (simulate_model_bright.cpp)
     const std::string kind = jobs::experiment_kind(*config);
     if (kind == "drive") {

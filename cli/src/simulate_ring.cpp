@@ -25,8 +25,7 @@ struct RingOptions {
 
 // `simulate ring` from its options: the amplitudes parsed, then run_and_report_ring.
 void run_ring_command(const RingOptions& o, const CLI::App& cmd, const ModelRunOutput& output) {
-  refuse_ignored_options(cmd, *output.out, {"--restart", "--checkpoint", "--max-memory", "--format"},
-                         "simulate ring");
+  refuse_ignored_options(cmd, *output.out, {"--restart", "--checkpoint", "--max-memory"}, "simulate ring");
   const Model model = load_selected_model(o.model, cmd, Params{}, true);
   run_and_report_ring(o.model, model, o.run, o.branch, *output.out, output, "");
 }
@@ -40,7 +39,7 @@ void run_and_report_ring(const ModelSelection& selection, const Model& model, si
   jobs::prepare(model, run, branch);
   const LatticeCode code = lattice_kernels_for(selection, model);
   const auto report = run_until_signal([&](const std::atomic<bool>* stop) {
-    return jobs::simulate_ring(model, *code.kernels, run, {model_run_json(model, code), name}, {out, *output.figures},
+    return jobs::simulate_ring(model, *code.kernels, run, {model_run_json(model, code), name}, {out, *output.figures, *output.format},
                                stop);
   });
   print_model_run(report.summary, output, wall0);

@@ -25,7 +25,7 @@ from . import _lrchain
 from ._keywords import checked_model, documented, python_names, real_numbers, renamed, schema_options
 from ._lrchain import Model, Params
 from .errors import InputError
-from .hdf5 import HDF5Mixin, write_simulation
+from .hdf5 import checked_destination, write_simulation
 from .progress import Bar
 
 
@@ -194,14 +194,15 @@ def bright(params=None, branch=_BRIGHT["branch"]["default"], theta=_BRIGHT["thet
 
 
 @dataclass(frozen=True, repr=False)
-class ModelBrightResult(HDF5Mixin):
+class ModelBrightResult:
     """A bright-breather run of a model file (``lrchain simulate bright --model``).
 
     ``t``, ``energy``, ``centre`` (energy centre X(t)) at every sample; ``E`` a tuple with, per field f,
     E_f(t) = max_n |x_f - x_f^A| / max_n |x_f(0)| (x_f: strains of translation-invariant models,
     displacements of on-site models); ``E_x`` = E[0], ``E_y`` = E[1] (None for a one-field model);
     ``snapshots`` (the final profiles and the ansatz); ``summary``: the same JSON as the command
-    (omega_b, period, max_E, max_E_x, energy0, max_relative_energy_drift, centre_speed, ...)."""
+    (omega_b, period, max_E, max_E_x, energy0, max_relative_energy_drift, centre_speed, ...).
+    ``to_hdf5(path)`` writes the file ``lrchain simulate bright --model ... --format hdf5`` writes."""
 
     t: np.ndarray
     E: tuple
@@ -218,6 +219,16 @@ class ModelBrightResult(HDF5Mixin):
     def E_y(self):
         return self.E[1] if len(self.E) > 1 else None
 
+    def to_hdf5(self, path):
+        """Writes this run with the C++ job layer's writer, the file ``lrchain simulate bright --model
+        ... --format hdf5`` writes: datasets t, E_0, E_1, ..., energy, centre; snapshots; the summary
+        tree (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        series = {"t": self.t, **{f"E_{f}": e for f, e in enumerate(self.E)}, "energy": self.energy, "X": self.centre}
+        _hdf5.write_model_bright(checked_destination(path), series,
+                                 [(s.t, s.tag, s.columns) for s in self.snapshots], json.dumps(self.summary))
+
     def __repr__(self):
         return (f"ModelBrightResult({self.summary['model']['name']}, {len(self.t)} samples to t = {self.t[-1]:g}, "
                 f"max E_x = {self.summary['max_E_x']:.4g})")
@@ -231,12 +242,13 @@ def _model_bright_result(out):
 
 
 @dataclass(frozen=True, repr=False)
-class RingResult(HDF5Mixin):
+class RingResult:
     """Plane waves of a model on a periodic ring (``lrchain simulate ring``): per amplitude U
     (``amplitude``) the ``measured_frequency`` and ``predicted_frequency`` omega + h U^2/4, their
     shifts from omega and ``relative_disagreement`` of the shifts (nan where h vanishes); the wave
     packet's centre ``packet_t``, ``packet_centre`` and ``summary`` (the command's JSON: omega, h,
-    group_velocity, packet_speed, packet_relative_disagreement, ...)."""
+    group_velocity, packet_speed, packet_relative_disagreement, ...). ``to_hdf5(path)`` writes the
+    file ``lrchain simulate ring ... --format hdf5`` writes."""
 
     amplitude: np.ndarray
     measured_frequency: np.ndarray
@@ -247,6 +259,18 @@ class RingResult(HDF5Mixin):
     packet_t: np.ndarray
     packet_centre: np.ndarray
     summary: dict
+
+    _amplitude_columns = ("amplitude", "measured_frequency", "predicted_frequency", "measured_shift",
+                          "predicted_shift", "relative_disagreement")
+
+    def to_hdf5(self, path):
+        """Writes this run with the C++ job layer's writer, the file ``lrchain simulate ring ...
+        --format hdf5`` writes: datasets packet_t, packet_centre and one per amplitude column; the
+        summary tree (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        _hdf5.write_ring(checked_destination(path), {"t": self.packet_t, "packet_centre": self.packet_centre},
+                         {name: getattr(self, name) for name in self._amplitude_columns}, json.dumps(self.summary))
 
     def __repr__(self):
         return (f"RingResult({self.summary['model']['name']}, {len(self.amplitude)} amplitudes, relative "

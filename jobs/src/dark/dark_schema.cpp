@@ -55,9 +55,9 @@ std::vector<DarkOption> make_options() {
        "integration time (dimensionless, time unit of Sec. 2)"},
       {"samples", "--samples", "samples", {"evolve"}, d.samples, false, integer_range(config::dark_samples),
        "samples of x_n(t) per period for the amplitudes of the position measure"},
-      {"format", "--format", "", {"solve", "floquet", "continue"}, d.format, false, "csv|hdf5 (hdf5 not with a model file)",
-       "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: profiles or the branch, Floquet "
-       "multipliers as complex numbers)"},
+      {"format", "--format", "", all_steps, d.format, false, "csv|hdf5",
+       "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: profiles, the branch or the evolution, "
+       "Floquet multipliers as complex numbers)"},
       {"out", "--out", "", all_steps, d.out.empty() ? none : nlohmann::json(d.out), false, "",
        "output directory for CSV data and gnuplot figures (none: only the JSON on stdout)"},
   };
