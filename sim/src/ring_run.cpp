@@ -228,7 +228,7 @@ RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernel
                                        kWeaklyNonlinearShift));
     if (a.broke_up_at && !r.failure)
       r.failure = fmt::format("amplitude {:g}: not measurable: the plane wave broke up at t = {:.6g} (the fraction of its "
-                              "energy in the carrier mode fell to {:.3g} < {:g}; modulational instability)",
+                              "energy in the carrier mode fell to {:.4f} < {:g}; modulational instability)",
                               U, *a.broke_up_at, a.least_carrier_fraction, kPlaneWaveCarrierFraction);
     r.amplitudes.push_back(a);
   }
