@@ -1,6 +1,7 @@
 // `lrchain simulate ring --model FILE ...`: plane waves on a periodic ring and a small wave packet,
 // measured against the derived h and c (sim/ring_run.hpp).
 #include <chrono>
+#include <cstdio>
 
 #include <fmt/format.h>
 
@@ -43,6 +44,8 @@ void run_and_report_ring(const ModelSelection& selection, const Model& model, si
                                stop);
   });
   print_model_run(report.summary, output, wall0);
+  for (const auto& warning : report.result.warnings) std::fprintf(stderr, "lrchain: warning: %s\n", warning.c_str());
+  if (report.result.failure) throw NumericalFailure(*report.result.failure);
 }
 
 void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output) {
