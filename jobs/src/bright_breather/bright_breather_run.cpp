@@ -1,0 +1,85 @@
+// run(BrightBreatherConfig): the bands and harmonics checked, the focusing edge and its NLS seed,
+// Newton on the time-reversible shooting shared with the dark breathers, the localization check,
+// and (floquet) the multipliers of the full-period monodromy (bright_breather_job.hpp).
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "lrchain/jobs/bright_breather_job.hpp"
+#include "lrchain/sim/bright/bright_seed.hpp"
+#include "lrchain/sim/dark/contact_bonds.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/model_lattice_bloch.hpp"
+
+namespace lrchain::jobs::bright_breather {
+
+using namespace lrchain::sim::bright;
+
+namespace {
+
+// Names and meanings of the lattice variables: strains r, w_f (translation-invariant models) or
+// displacements u_f (on-site models).
+void lattice_variables(BrightEdge& e) {
+  for (int f = 0; f < e.fields; ++f) {
+    e.variables.push_back(e.mean_flow ? (f == 0 ? "r" : fmt::format("w{}", f)) : fmt::format("u{}", f));
+    e.variable_meanings.push_back(e.mean_flow ? (f == 0 ? "r[n] = u0[n] - u0[n-1]" : fmt::format("w{0}[n] = u{0}[n] - u0[n]", f))
+                                              : fmt::format("u{}[n]", f));
+  }
+}
+
+sim::dark::NewtonOptions newton_options(const BrightBreatherConfig& c, const BrightBreatherHooks& hooks) {
+  sim::dark::NewtonOptions o;
+  o.tolerance = c.tolerance;
+  o.max_iterations = c.max_iterations;
+  o.progress = hooks.newton_progress;
+  return o;
+}
+
+}  // namespace
+
+BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHooks& hooks) {
+  const auto start = std::chrono::steady_clock::now();
+  BrightBreatherResult r;
+  r.config = c;
+  const Model& model = *c.model;
+  r.bands = linear_bands(model);
+  double top = 0;
+  for (const auto& band : r.bands) top = std::max(top, band.highest);
+  r.harmonics_checked = std::max<Index>(1, Index(std::floor(top / c.omega_b)));
+  const std::optional<Index> branch = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
+  const FocusingEdge edge = focusing_edge(model, branch, c.omega_b);
+  const sim::ModelBrightAnsatz ansatz = bright_ansatz(model, *c.kernels, edge, c.omega_b, parse_dark_center(c.center));
+  const bool mean_flow = model.definition().mean_flow;
+  const std::vector<double> parameters = sim::lattice_parameters(model);
+  const sim::dark::ContactBonds contacts = sim::dark::model_contact_bonds(*c.kernels, parameters, mean_flow);
+  r.edge = {model.definition().branch_names.at(std::size_t(edge.branch)), edge.theta, edge.nls, 2 * ansatz.M2(),
+            ansatz.inverse_width(), mean_flow, c.kernels->fields, {}, {}, {}};
+  lattice_variables(r.edge);
+  for (const auto& bond : contacts) r.edge.one_sided_contacts.push_back(bond.name);
+  const sim::dark::DarkShooting shooting(*c.kernels, parameters, c.sites, mean_flow, sim::dark::ShootingMode::reversible,
+                                         {}, contacts);
+  r.seed = bright_seed(ansatz, mean_flow, c.kernels->fields, c.sites);
+  const BrightProfileOptions profile_options{c.tail_tolerance};
+  r.seed_profile = inspect_bright_profile(r.seed, c.sites, profile_options);
+  r.newton = sim::dark::newton_solve(shooting, r.seed, c.omega_b, newton_options(c, hooks));
+  if (r.newton.converged) {
+    r.z0 = r.newton.q;
+    r.profile = inspect_bright_profile(r.z0, c.sites, profile_options);
+    r.seed_difference = relative_profile_difference(r.z0, r.seed);
+    r.rejected = r.profile.reason;
+    if (r.rejected.empty() && c.step == BrightStep::floquet)
+      r.floquet = bright_floquet(shooting.monodromy(r.z0, c.omega_b), mean_flow, {c.unit_tolerance});
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+std::optional<std::string> failure(const BrightBreatherResult& r) {
+  if (!r.newton.converged) return sim::dark::newton_failure_message(r.newton, r.config.omega_b);
+  if (!r.rejected.empty())
+    return fmt::format("Newton converged at omega_b = {} to no bright breather: {}", r.config.omega_b, r.rejected);
+  return std::nullopt;
+}
+
+}  // namespace lrchain::jobs::bright_breather

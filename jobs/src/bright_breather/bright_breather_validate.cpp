@@ -1,0 +1,45 @@
+// validate(BrightBreatherConfig): every option, the non-resonance of omega_b and its focusing edge,
+// the memory and the output directory, checked before any Newton iteration (bright_breather_job.hpp).
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/config/option_caps.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/jobs/bright_breather_job.hpp"
+#include "lrchain/sim/bright/bright_seed.hpp"
+#include "lrchain/sim/resource_estimate.hpp"
+
+namespace lrchain::jobs::bright_breather {
+
+void validate(const BrightBreatherConfig& c) {
+  if (c.model == nullptr || c.kernels == nullptr)
+    throw InvalidParameter("model", "needs a loaded model and its lattice kernels (model, kernels)");
+  if (!(std::isfinite(c.omega_b) && c.omega_b > 0))
+    throw InvalidParameter("omega_b", "must be a finite frequency > 0 (dimensionless)");
+  config::checked_option(double(c.sites), config::dark_sites, "sites");
+  sim::bright::check_bright_sites(c.sites);
+  parse_dark_center(c.center);
+  if (!(c.tolerance > 0 && c.tolerance < 1)) throw InvalidParameter("tolerance", "must be in (0, 1)");
+  if (c.max_iterations < 1) throw InvalidParameter("max_iterations", "must be an integer >= 1");
+  if (!(c.tail_tolerance > 0 && c.tail_tolerance < 1)) throw InvalidParameter("tail_tolerance", "must be in (0, 1)");
+  if (!(c.unit_tolerance > 0 && c.unit_tolerance < 1)) throw InvalidParameter("unit_tolerance", "must be in (0, 1)");
+  const Model& model = *c.model;
+  const std::optional<Index> branch = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
+  sim::bright::check_non_resonance(sim::bright::linear_bands(model), c.omega_b);
+  sim::bright::focusing_edge(model, branch, c.omega_b);
+  const double sites = double(c.sites) * double(c.kernels->fields) / 2.0;  // the estimate counts two fields per site
+  const sim::ResourceEstimate e = sim::estimate_dark_breather(sites, true, 2 * std::numbers::pi / c.omega_b, 0);
+  sim::check_memory(e, c.max_memory, "sites", "lower sites");
+  if (!c.out.empty()) {
+    std::error_code ec;
+    if (std::filesystem::exists(c.out, ec) && !std::filesystem::is_directory(c.out, ec))
+      throw InputError("--out '" + c.out + "' exists and is not a directory");
+    sim::check_output_space(e, c.out, "out", "choose another --out");
+  }
+}
+
+}  // namespace lrchain::jobs::bright_breather
