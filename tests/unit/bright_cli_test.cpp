@@ -15,14 +15,13 @@
 namespace fs = std::filesystem;
 using lrchain::test::run_lrchain;
 
-namespace {
-const fs::path source_dir = LRCHAIN_SOURCE_DIR;
+static const fs::path source_dir = LRCHAIN_SOURCE_DIR;
 
-void check_refused(std::vector<std::string> args, const std::string& needle) {
-  args.push_back("--quiet");
+// `lrchain bright ...` refused with one line containing `needle`.
+static void check_refused(std::vector<std::string> args, const std::string& needle) {
+  args.push_back("--quiet");  // no Newton progress on stderr
   lrchain::test::check_refused_run(args, needle, source_dir);
 }
-}  // namespace
 
 TEST_CASE("bright cli: bad input exits 2 with one line, nothing written" * doctest::test_suite("fast")) {
   check_refused({"bright", "solve", "--model", "klein_gordon", "--omega-b", "1.1"}, "invalid omega-b: omega_b = 1.1 lies inside");

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "../breather_outputs.hpp"
 #include "lrchain/jobs/bright_breather_job.hpp"
 #include "lrchain/sim/bright/bright_seed.hpp"
 #include "lrchain/sim/dark/contact_bonds.hpp"
@@ -17,16 +18,6 @@ namespace lrchain::jobs::bright_breather {
 using namespace lrchain::sim::bright;
 
 namespace {
-
-// Names and meanings of the lattice variables: strains r, w_f (translation-invariant models) or
-// displacements u_f (on-site models).
-void lattice_variables(BrightEdge& e) {
-  for (int f = 0; f < e.fields; ++f) {
-    e.variables.push_back(e.mean_flow ? (f == 0 ? "r" : fmt::format("w{}", f)) : fmt::format("u{}", f));
-    e.variable_meanings.push_back(e.mean_flow ? (f == 0 ? "r[n] = u0[n] - u0[n-1]" : fmt::format("w{0}[n] = u{0}[n] - u0[n]", f))
-                                              : fmt::format("u{}[n]", f));
-  }
-}
 
 sim::dark::NewtonOptions newton_options(const BrightBreatherConfig& c, const BrightBreatherHooks& hooks) {
   sim::dark::NewtonOptions o;
@@ -55,7 +46,7 @@ BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHook
   const sim::dark::ContactBonds contacts = sim::dark::model_contact_bonds(*c.kernels, parameters, mean_flow);
   r.edge = {model.definition().branch_names.at(std::size_t(edge.branch)), edge.theta, edge.nls, 2 * ansatz.M2(),
             ansatz.inverse_width(), mean_flow, c.kernels->fields, {}, {}, {}};
-  lattice_variables(r.edge);
+  lattice_variable_names(r.edge.mean_flow, r.edge.fields, r.edge.variables, r.edge.variable_meanings);
   for (const auto& bond : contacts) r.edge.one_sided_contacts.push_back(bond.name);
   const sim::dark::DarkShooting shooting(*c.kernels, parameters, c.sites, mean_flow, sim::dark::ShootingMode::reversible,
                                          {}, contacts);

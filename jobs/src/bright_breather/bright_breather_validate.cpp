@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "../breather_outputs.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
@@ -34,12 +35,7 @@ void validate(const BrightBreatherConfig& c) {
   const double sites = double(c.sites) * double(c.kernels->fields) / 2.0;  // the estimate counts two fields per site
   const sim::ResourceEstimate e = sim::estimate_dark_breather(sites, true, 2 * std::numbers::pi / c.omega_b, 0);
   sim::check_memory(e, c.max_memory, "sites", "lower sites");
-  if (!c.out.empty()) {
-    std::error_code ec;
-    if (std::filesystem::exists(c.out, ec) && !std::filesystem::is_directory(c.out, ec))
-      throw InputError("--out '" + c.out + "' exists and is not a directory");
-    sim::check_output_space(e, c.out, "out", "choose another --out");
-  }
+  check_output_directory(e, c.out);
 }
 
 }  // namespace lrchain::jobs::bright_breather
