@@ -71,6 +71,10 @@ void run_job(const BrightArgs& a, BrightStep step, const CLI::App& cmd) {
     hooks.newton_progress = [](const sim::dark::NewtonRecord& r) {
       fmt::print(stderr, "newton {:2d}  max|F| = {:.3e}  max|step| = {:.3e}\n", r.iteration, r.residual, r.step);
     };
+  if (!a.quiet)
+    hooks.on_point = [count = 0](const sim::dark::BranchPoint& b) mutable {
+      fmt::print(stderr, "point {:3d} omega_b = {:.6f} residual = {:.3e}\n", count++, b.omega_b, b.residual);
+    };
   const BrightBreatherResult r = run(config, hooks);
   const nlohmann::json j = config.out.empty() ? to_json(r) : write(r, config.out);
   std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
@@ -83,7 +87,7 @@ void run_job(const BrightArgs& a, BrightStep step, const CLI::App& cmd) {
 void register_bright(CLI::App& app) {
   auto* bright = app.add_subcommand(
       "bright", "Exact bright breathers of any lattice (docs/bright-breathers.md): shooting Newton on the "
-                "period-T_b map from the NLS seed at a focusing band edge, Floquet stability");
+                "period-T_b map from the NLS seed at a focusing band edge, continuation in omega_b, Floquet stability");
   bright->require_subcommand(1);
   add_examples(*bright, {"lrchain bright solve --model klein_gordon --omega-b 1.19 --sites 81",
                          "lrchain bright floquet --model fput --center bond --omega-b 2.05 --sites 61 --out out/bright"});
@@ -98,6 +102,14 @@ void register_bright(CLI::App& app) {
   add_number(*floq, "--unit-tolerance", args->config.unit_tolerance, help("unit_tolerance"));
   add_examples(*floq, {"lrchain bright floquet --model fput --center bond --omega-b 2.05 --sites 61 --out out/bright"});
   floq->callback([args, floq] { run_job(*args, BrightStep::floquet, *floq); });
+  auto* cont = bright->add_subcommand(
+      "continue", "Solve, then pseudo-arclength continuation in omega_b away from the band edge, Floquet at every point");
+  add_common(*cont, *args);
+  add_number(*cont, "--unit-tolerance", args->config.unit_tolerance, help("unit_tolerance"));
+  add_integer(*cont, "--points", args->config.points, config::dark_points.least, config::dark_points.most, help("points"));
+  add_number(*cont, "--ds", args->config.ds, help("ds"));
+  add_examples(*cont, {"lrchain bright continue --model klein_gordon --omega-b 1.19 --sites 61 --points 10 --out out/bright-branch"});
+  cont->callback([args, cont] { run_job(*args, BrightStep::branch, *cont); });
 }
 
 }  // namespace lrchain::cli

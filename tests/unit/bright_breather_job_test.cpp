@@ -213,3 +213,38 @@ TEST_CASE("bright job: a stable breather's multipliers lie on the unit circle, t
   CHECK_FALSE(bond.floquet->stable);
   CHECK(bond.floquet->trivial_found);
 }
+
+TEST_CASE("bright job: continuation in omega_b away from the edge, within the non-resonant window" * doctest::test_suite("fast")) {
+  // klein_gordon above its band (h_tilde > 0): omega_b rises from 1.19, the breather grows and narrows
+  // and stays stable (the site-centred family, as at 1.19); the window is (edge, none above: 2 omega_b
+  // is above the band already).
+  const Lattice kg("klein_gordon");
+  BrightBreatherConfig c = kg.config(BrightStep::branch, 1.19, 61);
+  c.points = 6;
+  const BrightBreatherResult r = solved(c);
+  REQUIRE(r.branch.points.size() == 6);
+  CHECK(r.branch.stop_reason == "reached 6 points");
+  CHECK(r.window_low == doctest::Approx(std::sqrt(1.4)).epsilon(1e-12));
+  CHECK(std::isinf(r.window_high));
+  CHECK(r.branch.points.front().omega_b == 1.19);
+  REQUIRE(r.branch_floquets.size() == 6);
+  for (std::size_t k = 1; k < 6; ++k) {
+    CHECK(r.branch.points[k].omega_b > r.branch.points[k - 1].omega_b);
+    CHECK(r.branch_profiles[k].peak > r.branch_profiles[k - 1].peak);
+    CHECK(r.branch_profiles[k].width < r.branch_profiles[k - 1].width);
+    CHECK(r.branch.points[k].residual <= 1e-11);
+    CHECK(r.branch_floquets[k].stable);
+  }
+  // Below the band of the soft lattice (h_tilde < 0) the window ends where 2 omega_b meets the band
+  // top sqrt(1.4): (sqrt(1.4)/2, 1).
+  const Lattice soft("klein_gordon", {{"a", 0.0}, {"b", -0.5}});
+  BrightBreatherConfig s = soft.config(BrightStep::branch, 0.97, 41);
+  s.points = 2;
+  s.branch_floquet = false;
+  const BrightBreatherResult below = solved(s);
+  CHECK(below.window_low == doctest::Approx(std::sqrt(1.4) / 2).epsilon(1e-12));
+  CHECK(below.window_high == doctest::Approx(1.0).epsilon(1e-12));
+  REQUIRE(below.branch.points.size() == 2);
+  CHECK(below.branch.points[1].omega_b < 0.97);
+  CHECK(below.branch_floquets.empty());
+}

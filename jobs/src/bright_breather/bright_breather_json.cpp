@@ -43,6 +43,33 @@ json edge_json(const BrightEdge& e) {
           {"seed_amplitude", e.amplitude}, {"seed_inverse_width", e.inverse_width}};
 }
 
+// The continuation: why it stopped, the non-resonant window, turning points, and per point omega_b,
+// the profile's peak, norm and width, the corrector's iterations and (with Floquet) the stability.
+json branch_json(const BrightBreatherResult& r) {
+  json points = json::array();
+  for (std::size_t k = 0; k < r.branch.points.size(); ++k) {
+    const auto& p = r.branch.points[k];
+    const auto& profile = r.branch_profiles.at(k);
+    json point = {{"omega_b", p.omega_b}, {"peak", profile.peak}, {"norm_squared", profile.norm_squared},
+                  {"width", profile.width}, {"residual", p.residual}, {"corrector_iterations", p.iterations},
+                  {"stable", nullptr}, {"max_nontrivial_modulus", nullptr}};
+    if (k < r.branch_floquets.size()) {
+      point["stable"] = r.branch_floquets[k].stable;
+      point["max_nontrivial_modulus"] = r.branch_floquets[k].max_nontrivial_modulus;
+    }
+    points.push_back(point);
+  }
+  return {{"points", r.branch.points.size()},
+          {"stop_reason", r.branch.stop_reason},
+          {"window", {r.window_low, std::isfinite(r.window_high) ? json(r.window_high) : json(nullptr)}},
+          {"turning_points", r.branch.turning_points},
+          {"branch_points", points}};
+}
+
+const char* step_name(BrightStep step) {
+  return step == BrightStep::floquet ? "floquet" : step == BrightStep::branch ? "continue" : "solve";
+}
+
 }  // namespace
 
 json to_json(const BrightBreatherResult& r) {
@@ -52,7 +79,7 @@ json to_json(const BrightBreatherResult& r) {
   json residuals = json::array();
   for (const auto& record : r.newton.history) residuals.push_back(record.residual);
   json j = {{"model", model_json(*c.model)},
-            {"step", c.step == BrightStep::floquet ? "floquet" : "solve"},
+            {"step", step_name(c.step)},
             {"omega_b", c.omega_b},
             {"center", c.center},
             {"sites", c.sites},
@@ -74,6 +101,7 @@ json to_json(const BrightBreatherResult& r) {
     j["seed_difference"] = r.seed_difference;
   }
   if (r.floquet) j["floquet"] = floquet_json(*r.floquet);
+  if (c.step == BrightStep::branch && r.newton.converged && r.rejected.empty()) j["branch"] = branch_json(r);
   if (const auto f = failure(r))
     j["failure"] = {{"kind", r.newton.converged ? "not_a_bright_breather" : "newton"}, {"message", *f}};
   return j;

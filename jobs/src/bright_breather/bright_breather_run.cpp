@@ -3,6 +3,7 @@
 // and (floquet) the multipliers of the full-period monodromy (bright_breather_job.hpp).
 #include <chrono>
 #include <cmath>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -25,6 +26,42 @@ sim::dark::NewtonOptions newton_options(const BrightBreatherConfig& c, const Bri
   o.max_iterations = c.max_iterations;
   o.progress = hooks.newton_progress;
   return o;
+}
+
+// Continues the solved breather away from its edge (omega_b rising above an edge with h_tilde > 0,
+// falling below one with h_tilde < 0) within the non-resonant window; each point's profile checked
+// and (branch_floquet) its multipliers; the branch ends before its first point that is no breather.
+void continue_away_from_edge(const sim::dark::DarkShooting& shooting, const BrightBreatherConfig& c,
+                             const BrightBreatherHooks& hooks, BrightBreatherResult& r) {
+  std::tie(r.window_low, r.window_high) = non_resonant_window(r.bands, c.omega_b);
+  const bool rising = r.edge.nls.h_tilde > 0;
+  sim::dark::ContinuationOptions o;
+  o.ds = c.ds;
+  o.max_points = c.points;
+  o.tolerance = c.tolerance;
+  o.floquet = false;  // the bright Floquet analysis below, with the trivial multipliers removed
+  o.direction = rising ? 1.0 : -1.0;
+  o.omega_min = rising ? std::max(r.window_low, r.edge.nls.omega) : r.window_low;
+  o.omega_max = rising ? r.window_high : std::min(r.window_high, r.edge.nls.omega);
+  const BrightProfileOptions profile_options{c.tail_tolerance};
+  r.branch = sim::dark::continue_branch(shooting, r.z0, c.omega_b, o, hooks.on_point);
+  for (std::size_t k = 0; k < r.branch.points.size(); ++k) {
+    const sim::dark::BranchPoint& p = r.branch.points[k];
+    BrightProfile profile = inspect_bright_profile(p.z0, c.sites, profile_options);
+    if (!profile.localized) {
+      r.branch.stop_reason = fmt::format("the branch point at omega_b = {:.6f} is no bright breather: {}", p.omega_b,
+                                         profile.reason);
+      r.branch.points.resize(k);
+      r.branch.turning_points.clear();  // those of the points kept: d omega_b / ds changing sign
+      for (std::size_t j = 1; j < k; ++j)
+        if ((r.branch.points[j].tangent_omega > 0) != (r.branch.points[j - 1].tangent_omega > 0))
+          r.branch.turning_points.push_back(r.branch.points[j].omega_b);
+      break;
+    }
+    r.branch_profiles.push_back(std::move(profile));
+    if (c.branch_floquet)
+      r.branch_floquets.push_back(bright_floquet(shooting.monodromy(p.z0, p.omega_b), r.edge.mean_flow, {c.unit_tolerance}));
+  }
 }
 
 }  // namespace
@@ -61,6 +98,7 @@ BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHook
     r.rejected = r.profile.reason;
     if (r.rejected.empty() && c.step == BrightStep::floquet)
       r.floquet = bright_floquet(shooting.monodromy(r.z0, c.omega_b), mean_flow, {c.unit_tolerance});
+    if (r.rejected.empty() && c.step == BrightStep::branch) continue_away_from_edge(shooting, c, hooks, r);
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

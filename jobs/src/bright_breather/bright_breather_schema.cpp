@@ -11,7 +11,10 @@ namespace lrchain::jobs::bright_breather {
 
 namespace {
 
-const std::vector<std::string> all_steps{"solve", "floquet"};
+const std::vector<std::string> all_steps{"solve", "floquet", "continue"};
+
+// A range of integers from an option cap: "[least, most]".
+std::string integer_range(const config::OptionCap& cap) { return fmt::format("[{}, {}]", cap.least, cap.most); }
 
 std::vector<JobOption> make_options() {
   const BrightBreatherConfig d;
@@ -31,8 +34,14 @@ std::vector<JobOption> make_options() {
       {"max_iterations", "", "max_iterations", all_steps, d.max_iterations, false, ">= 1", "Newton iterations"},
       {"tail_tolerance", "--tail-tolerance", "tail_tolerance", all_steps, d.tail_tolerance, false, "(0, 1)",
        "localized: max |Z(0)| on the ring's far quarter at most this times the peak"},
-      {"unit_tolerance", "--unit-tolerance", "unit_tolerance", {"floquet"}, d.unit_tolerance, false, "(0, 1)",
+      {"unit_tolerance", "--unit-tolerance", "unit_tolerance", {"floquet", "continue"}, d.unit_tolerance, false, "(0, 1)",
        "stable: every multiplier but the trivial +1 ones has |lambda| <= 1 + this"},
+      {"points", "--points", "points", {"continue"}, d.points, false, integer_range(config::dark_points),
+       "maximum number of branch points, the first included"},
+      {"ds", "--ds", "ds", {"continue"}, d.ds, false, "(0, 1], adapted within [1e-5, 1]",
+       "initial pseudo-arclength step in (Z(0), omega_b), dimensionless"},
+      {"branch_floquet", "", "floquet", {"continue"}, d.branch_floquet, false, "true|false",
+       "Floquet multipliers at every branch point"},
       {"out", "--out", "", all_steps, d.out.empty() ? none : nlohmann::json(d.out), false, "",
        "output directory for profile.csv, multipliers.csv, summary.json and gnuplot figures (none: only the JSON on stdout)"},
   };

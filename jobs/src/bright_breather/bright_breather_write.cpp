@@ -48,6 +48,22 @@ void write_profile(const BrightBreatherResult& r, const std::string& dir, sim::F
                 "profile.png"});
 }
 
+// branch.csv: one row per branch point (omega_b, peak, norm_squared, width, stable, max |lambda|).
+void write_branch(const BrightBreatherResult& r, const std::string& dir) {
+  std::ostringstream os;
+  os << "omega_b,peak,norm_squared,width,stable,max_nontrivial_modulus\n";
+  for (std::size_t k = 0; k < r.branch.points.size(); ++k) {
+    const auto& profile = r.branch_profiles.at(k);
+    os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}", r.branch.points[k].omega_b, profile.peak,
+                      profile.norm_squared, profile.width);
+    if (k < r.branch_floquets.size())
+      os << fmt::format(",{},{:.17g}\n", r.branch_floquets[k].stable ? 1 : 0, r.branch_floquets[k].max_nontrivial_modulus);
+    else
+      os << ",,\n";
+  }
+  sim::write_file_atomic(dir, "branch.csv", os.str());
+}
+
 }  // namespace
 
 json write(const BrightBreatherResult& r, const std::filesystem::path& out) {
@@ -58,6 +74,7 @@ json write(const BrightBreatherResult& r, const std::filesystem::path& out) {
   const sim::OutputListing earlier = sim::list_output_files(dir);  // before this run writes
   sim::Figures figures(dir);
   write_profile(r, dir, figures);
+  if (r.config.step == BrightStep::branch) write_branch(r, dir);
   if (r.floquet) dark::write_multipliers(dir, "multipliers", r.floquet->multipliers, r.config.omega_b, figures);
   figures.finish(j);
   sim::write_file_atomic(dir, "summary.json", j.dump(2) + "\n");

@@ -67,6 +67,20 @@ std::optional<Resonance> first_resonance(const std::vector<LinearBand>& bands, d
   return std::nullopt;
 }
 
+std::pair<double, double> non_resonant_window(const std::vector<LinearBand>& bands, double omega_b) {
+  double low = 0, high = INFINITY, top = 0;
+  for (const auto& band : bands) top = std::max(top, band.highest);
+  // k omega in [lowest, highest] <=> omega in [lowest / k, highest / k]; k beyond top / omega_b + 1
+  // gives intervals below those of smaller k that lie below omega_b.
+  for (Index k = 1; double(k) <= top / omega_b + 1; ++k)
+    for (const auto& band : bands) {
+      const double from = band.lowest / double(k), to = band.highest / double(k);
+      if (to < omega_b) low = std::max(low, to);
+      if (from > omega_b) high = std::min(high, from);
+    }
+  return {low, high};
+}
+
 void check_non_resonance(const std::vector<LinearBand>& bands, double omega_b) {
   const auto r = first_resonance(bands, omega_b);
   if (!r) return;

@@ -22,6 +22,7 @@
 #include "lrchain/sim/bright/bright_floquet.hpp"
 #include "lrchain/sim/bright/bright_profile.hpp"
 #include "lrchain/sim/bright/linear_bands.hpp"
+#include "lrchain/sim/dark/continuation.hpp"
 #include "lrchain/sim/dark/shooting_problem.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
 
@@ -31,6 +32,7 @@ namespace lrchain::jobs::bright_breather {
 enum class BrightStep {
   solve,    // Newton on the half-period map from the NLS seed, then the localization check
   floquet,  // solve, then the Floquet multipliers of the full-period monodromy matrix
+  branch,   // solve, then pseudo-arclength continuation in omega_b away from the band edge
 };
 
 // Every option of the job, with its default and range (bright_breather_schema.hpp); validate() names a
@@ -49,6 +51,10 @@ struct BrightBreatherConfig {
   Index max_iterations = 20;       // Newton iterations, >= 1
   double tail_tolerance = 1e-3;    // localized: max |Z| on the ring's far quarter <= this x the peak, in (0, 1)
   double unit_tolerance = 1e-6;    // floquet: |lambda| > 1 + this is unstable, in (0, 1)
+  // branch (continue): within the non-resonant window around omega_b, on the edge's outer side
+  Index points = 20;               // maximum number of branch points, the first included, in [1, 1e6]
+  double ds = 0.05;                // initial pseudo-arclength step in (Z(0), omega_b), in (0, 1]
+  bool branch_floquet = true;      // Floquet multipliers at every branch point
   double max_memory = 0;           // bytes the job may use; 0: the machine's available memory
   std::string out;                 // output directory ("": no files)
 };
@@ -61,6 +67,7 @@ void validate(const BrightBreatherConfig& c);
 // What a front end observes while the job runs.
 struct BrightBreatherHooks {
   std::function<void(const sim::dark::NewtonRecord&)> newton_progress;  // after every Newton iteration
+  std::function<void(const sim::dark::BranchPoint&)> on_point;          // after every branch point
 };
 
 // The band edge the breather leaves and the NLS seed's coefficients there.
@@ -88,6 +95,12 @@ struct BrightBreatherResult {
   double seed_difference = 0;       // max |Z(0) - seed| / max |Z(0)|
   std::string rejected;             // why a converged Newton zero is no localized bright breather ("": it is)
   std::optional<sim::bright::BrightFloquet> floquet;
+  // branch: the continuation (sim/dark/continuation.hpp), each point's profile and (branch_floquet)
+  // multipliers; points after the first that is no localized breather are dropped (branch.stop_reason).
+  sim::dark::BranchResult branch;
+  std::vector<sim::bright::BrightProfile> branch_profiles;
+  std::vector<sim::bright::BrightFloquet> branch_floquets;
+  double window_low = 0, window_high = 0;  // the non-resonant window of omega_b (high: inf when unbounded)
   double seconds = 0;               // wall time of run()
 };
 
@@ -102,8 +115,8 @@ std::optional<std::string> failure(const BrightBreatherResult& r);
 // Newton history, profile, Floquet (trivial multipliers, pairing defect, |det M - 1|), provenance.
 nlohmann::json to_json(const BrightBreatherResult& r);
 
-// Writes profile.csv (n, Z(0) and the seed per variable), multipliers.csv (floquet), their gnuplot
-// figures and summary.json into `out`; returns to_json(r) with "figures" and "figures_skipped".
+// Writes profile.csv (n, Z(0) and the seed per variable), multipliers.csv (floquet), branch.csv
+// (continue: omega_b, peak, norm, width, stability per point), their gnuplot figures and summary.json into `out`; returns to_json(r) with "figures" and "figures_skipped".
 nlohmann::json write(const BrightBreatherResult& r, const std::filesystem::path& out);
 
 }  // namespace lrchain::jobs::bright_breather

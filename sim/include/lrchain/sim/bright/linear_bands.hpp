@@ -6,6 +6,7 @@
 // resonate: every such k is checked, none is left out.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lrchain/index.hpp"
@@ -31,6 +32,11 @@ struct Resonance {
 
 // The lowest harmonic k omega_b, k = 1, 2, ..., inside a band (closed at the band's ends), or nullopt.
 std::optional<Resonance> first_resonance(const std::vector<LinearBand>& bands, double omega_b);
+
+// The interval (low, high) around omega_b in which no harmonic k omega_b (k >= 1) touches a band: where
+// a continuation in omega_b from omega_b must stop (high = +inf when nothing bounds it). Precondition:
+// first_resonance(bands, omega_b) is nullopt.
+std::pair<double, double> non_resonant_window(const std::vector<LinearBand>& bands, double omega_b);
 
 // InvalidParameter("omega_b", ...) naming the harmonic and the band when first_resonance finds one:
 // "omega_b = 1.1 lies inside the band of branch u, [1, 1.183]" or "its harmonic 2 omega_b = 2.2 ...".
