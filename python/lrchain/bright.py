@@ -113,15 +113,18 @@ def _model(model):
     return checked_model(model)
 
 
-def _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance, floquet):
+# The job's result as a dict (its JSON summary, Z(0) and the seed as arrays; branch_z for a branch).
+def _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance, step,
+         points=_D["points"], ds=_D["ds"], branch_floquet=_D["floquet"]):
     model = _model(model)
     if omega_b is None:
         from .errors import InvalidParameterError
 
         raise InvalidParameterError("invalid omega_b: required (the breather frequency, beyond a focusing band "
                                     "edge of the model)", "omega_b")
-    return _breather(python_names(lambda: _lrchain.bright_breather_solve(
-        model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance, floquet)))
+    return python_names(lambda: _lrchain.bright_breather_solve(
+        model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance, step, points,
+        ds, branch_floquet))
 
 
 @documented(_SECTION)
@@ -132,8 +135,8 @@ def solve(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D["
     :class:`BrightBreather`. ``omega_b`` is required.
 
     Example: ``lrchain.bright.solve(lrchain.load_model("klein_gordon"), omega_b=1.19, sites=81)``."""
-    return _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance,
-                _D["unit_tolerance"], False)
+    return _breather(_run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance,
+                          _D["unit_tolerance"], "solve"))
 
 
 @documented(_SECTION)
@@ -145,4 +148,52 @@ def floquet(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D
     removed; returns :class:`BrightBreather` with ``floquet`` set.
 
     Example: ``lrchain.bright.floquet(lrchain.load_model("fput", a=0), omega_b=2.2, center="bond", sites=41)``."""
-    return _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance, True)
+    return _breather(_run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance,
+                          unit_tolerance, "floquet"))
+
+
+@dataclass(frozen=True, repr=False)
+class BrightBranch:
+    """A bright-breather family continued in omega_b away from its band edge: the first point ``start`` (a
+    :class:`BrightBreather`), per point ``omega_b``, ``peak``, ``norm_squared``, ``width``, ``stable`` and
+    ``max_nontrivial_modulus`` (None without Floquet), ``z`` (points x fields x sites), the
+    ``turning_points``, the non-resonant ``window`` (low, high; high None when unbounded) and ``stop_reason``."""
+
+    start: BrightBreather
+    omega_b: np.ndarray
+    peak: np.ndarray
+    norm_squared: np.ndarray
+    width: np.ndarray
+    stable: list
+    max_nontrivial_modulus: list
+    z: np.ndarray
+    turning_points: list
+    window: tuple
+    stop_reason: str
+
+    def __repr__(self):
+        return (f"BrightBranch({len(self.omega_b)} points, omega_b {self.omega_b[0]:.6g} .. {self.omega_b[-1]:.6g}, "
+                f"{self.stop_reason})")
+
+
+@documented(_SECTION)
+@real_numbers
+def continue_branch(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"],
+                    tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], tail_tolerance=_D["tail_tolerance"],
+                    unit_tolerance=_D["unit_tolerance"], points=_D["points"], ds=_D["ds"], floquet=_D["floquet"]):
+    """Solve, then pseudo-arclength continuation in omega_b away from the band edge within the window where
+    no harmonic meets a band, each point checked to be a localized breather; returns :class:`BrightBranch`.
+
+    Example: ``lrchain.bright.continue_branch(lrchain.load_model("klein_gordon"), omega_b=1.19, sites=61, points=10)``."""
+    d = _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance,
+             "continue", points, ds, floquet)
+    z = d.pop("branch_z")
+    start = _breather(d)
+    b = start.summary["branch"]
+    rows = b["branch_points"]
+    return BrightBranch(
+        start=start, omega_b=np.array([p["omega_b"] for p in rows]), peak=np.array([p["peak"] for p in rows]),
+        norm_squared=np.array([p["norm_squared"] for p in rows]), width=np.array([p["width"] for p in rows]),
+        stable=[p["stable"] for p in rows], max_nontrivial_modulus=[p["max_nontrivial_modulus"] for p in rows],
+        z=z, turning_points=b["turning_points"], window=tuple(b["window"]),
+        stop_reason=b["stop_reason"])

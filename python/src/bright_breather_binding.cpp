@@ -1,4 +1,4 @@
-// lrchain.bright.solve|floquet(model, ...): exact bright breathers of any model by the bright-breather
+// lrchain.bright.solve|floquet|continue_branch(model, ...): exact bright breathers of any model by the bright-breather
 // job (lrchain/jobs/bright_breather_job.hpp), run without the GIL (Ctrl-C: KeyboardInterrupt after the
 // current Newton step). The result as the job's JSON summary (a dict) with Z(0) and the seed as numpy
 // arrays (fields, sites).
@@ -32,9 +32,13 @@ py::array_t<double> by_field(const Eigen::VectorXd& z, Index fields, Index sites
 
 py::dict solve_job(const LoadedModel& loaded, double omega_b, const std::optional<std::string>& branch,
                    const std::string& center, double sites, double tolerance, double max_iterations,
-                   double tail_tolerance, double unit_tolerance, bool floquet) {
+                   double tail_tolerance, double unit_tolerance, const std::string& step, double points, double ds,
+                   bool branch_floquet) {
   BrightBreatherConfig c;
-  c.step = floquet ? BrightStep::floquet : BrightStep::solve;
+  c.step = step == "continue" ? BrightStep::branch : step == "floquet" ? BrightStep::floquet : BrightStep::solve;
+  c.points = integer_keyword(points, "points", config::dark_points.least, config::dark_points.most);
+  c.ds = ds;
+  c.branch_floquet = branch_floquet;
   c.model = &loaded.model;
   c.kernels = &lattice_kernels(loaded);
   c.omega_b = omega_b;
@@ -59,6 +63,12 @@ py::dict solve_job(const LoadedModel& loaded, double omega_b, const std::optiona
   d["z"] = by_field(r.z0, r.edge.fields, c.sites);
   d["seed"] = by_field(r.seed, r.edge.fields, c.sites);
   d["variables"] = py::tuple(py::cast(r.edge.variables));
+  if (c.step == BrightStep::branch) {  // Z(0) of every branch point: (points, fields, sites)
+    py::array_t<double> z({py::ssize_t(r.branch.points.size()), py::ssize_t(r.edge.fields), py::ssize_t(c.sites)});
+    double* at = z.mutable_data();
+    for (const auto& p : r.branch.points) at = std::copy(p.z0.data(), p.z0.data() + p.z0.size(), at);
+    d["branch_z"] = z;
+  }
   return d;
 }
 
@@ -67,7 +77,7 @@ py::dict solve_job(const LoadedModel& loaded, double omega_b, const std::optiona
 void register_bright_breather(py::module_& m) {
   m.def("bright_breather_solve", &solve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("tail_tolerance"),
-        py::arg("unit_tolerance"), py::arg("floquet"));
+        py::arg("unit_tolerance"), py::arg("step"), py::arg("points"), py::arg("ds"), py::arg("branch_floquet"));
 }
 
 }  // namespace lrchain::python

@@ -55,3 +55,12 @@ def test_refusals_name_omega_b_and_failures_raise_numerical_failure():
     assert e.value.parameter == "tail_tolerance"
     with pytest.raises(lrchain.NumericalFailure, match="not localized"):
         bright.solve(lrchain.load_model("fput", a=0), omega_b=2.05, sites=41)
+
+
+def test_continue_branch_rises_from_the_edge():
+    b = bright.continue_branch(lrchain.load_model("klein_gordon"), omega_b=1.19, sites=61, points=4)
+    assert len(b.omega_b) == 4 and b.z.shape == (4, 1, 61)
+    assert np.all(np.diff(b.omega_b) > 0) and np.all(np.diff(b.peak) > 0)
+    assert all(b.stable) and b.window[0] == pytest.approx(np.sqrt(1.4), rel=1e-12) and b.window[1] is None
+    assert b.stop_reason == "reached 4 points"
+    assert np.array_equal(b.z[0], b.start.z)

@@ -26,7 +26,7 @@ COMMANDS = {
     "ring": [["simulate", "ring"]],
     "coeffs": [["coeffs"]],
     "dark": [["dark", "solve"], ["dark", "floquet"], ["dark", "continue"], ["dark", "evolve"]],
-    "bright breather": [["bright", "solve"], ["bright", "floquet"]],
+    "bright breather": [["bright", "solve"], ["bright", "floquet"], ["bright", "continue"]],
     "regime intervals": [["regime", "intervals"]],
     "regime map": [["regime", "map"]],
     "regime curves": None,  # Python only (lrchain.regime.boundary_curves)
@@ -41,7 +41,7 @@ FUNCTIONS = {
     "ring": [simulate.ring],
     "coeffs": [lrchain.coefficients],
     "dark": [dark.solve, dark.floquet, dark.continue_branch, dark.evolve],
-    "bright breather": [bright.solve, bright.floquet],
+    "bright breather": [bright.solve, bright.floquet, bright.continue_branch],
     "regime intervals": [regime.intervals],
     "regime map": [regime.theta_rho_map, regime.theta_parameter_map, regime.delta0_omega_map],
     "regime curves": [regime.boundary_curves],
