@@ -155,6 +155,8 @@ TEST_CASE("bright job: validate refuses a frequency in a band, a resonant harmon
   const std::string in_band = refusal(kg.config(BrightStep::solve, 1.1, 61));
   CHECK(in_band.rfind("omega_b: ", 0) == 0);
   CHECK(in_band.find("inside the linear band of branch branch0, [1, 1.183215957]") != std::string::npos);
+  // Far beyond the bands (10 x 1.1832 = 11.83) the NLS seed means nothing: refused, not solved.
+  CHECK(refusal(kg.config(BrightStep::solve, 12, 61)).find("omega_b: invalid omega_b: must be at most 10 times") == 0);
   // C = 1: band [1, sqrt(5) = 2.236]; a soft breather below it at 0.97 has 2 omega_b = 1.94 inside.
   const Lattice wide("klein_gordon", {{"C", 1.0}, {"a", 0.0}, {"b", -0.5}});
   const std::string harmonic = refusal(wide.config(BrightStep::solve, 0.97, 61));

@@ -21,7 +21,7 @@ std::vector<JobOption> make_options() {
   const nlohmann::json none;
   return {
       {"omega_b", "--omega-b", "omega_b", all_steps, none, true,
-       "> 0, outside every linear band, no harmonic k omega_b inside one",
+       "> 0, at most 10 times the top band, outside every band, no harmonic k omega_b inside one",
        "breather frequency omega_b (dimensionless; period T_b = 2 pi/omega_b), beyond a focusing band edge"},
       {"branch", "--branch", "branch", all_steps, d.branch.empty() ? none : nlohmann::json(d.branch), false,
        "one of the model's branches",

@@ -1,5 +1,6 @@
 // validate(BrightBreatherConfig): every option, the non-resonance of omega_b and its focusing edge,
 // the memory and the output directory, checked before any Newton iteration (bright_breather_job.hpp).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -15,6 +16,11 @@
 #include "lrchain/sim/resource_estimate.hpp"
 
 namespace lrchain::jobs::bright_breather {
+
+namespace {
+// The largest omega_b accepted, in units of the top of the highest linear band.
+constexpr double omega_b_cap = 10;
+}  // namespace
 
 void validate(const BrightBreatherConfig& c) {
   if (c.model == nullptr || c.kernels == nullptr)
@@ -34,7 +40,14 @@ void validate(const BrightBreatherConfig& c) {
   }
   const Model& model = *c.model;
   const std::optional<Index> branch = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
-  sim::bright::check_non_resonance(sim::bright::linear_bands(model), c.omega_b);
+  const auto bands = sim::bright::linear_bands(model);
+  double top = 0;
+  for (const auto& band : bands) top = std::max(top, band.highest);
+  if (!(c.omega_b <= omega_b_cap * top))
+    throw InvalidParameter("omega_b", fmt::format("must be at most {:g} times the top of the highest band, {:.10g} (the "
+                                                  "NLS seed, an expansion about a band edge, does not reach a breather "
+                                                  "that far beyond the bands)", omega_b_cap, omega_b_cap * top));
+  sim::bright::check_non_resonance(bands, c.omega_b);
   sim::bright::focusing_edge(model, branch, c.omega_b);
   const double sites = double(c.sites) * double(c.kernels->fields) / 2.0;  // the estimate counts two fields per site
   const sim::ResourceEstimate e = sim::estimate_dark_breather(sites, true, 2 * std::numbers::pi / c.omega_b, 0);

@@ -43,7 +43,7 @@ struct BrightBreatherConfig {
   // run and write).
   const Model* model = nullptr;
   const lrchain_lattice_kernels* kernels = nullptr;
-  double omega_b = 0;              // breather frequency, outside every band and non-resonant (required)
+  double omega_b = 0;              // breather frequency, <= 10 x the top band, outside every band, non-resonant (required)
   std::string branch;              // the branch whose edge the breather leaves; "": the focusing edge nearest omega_b
   std::string center = "site";     // site (n0 = 0) | bond (n0 = 1/2)
   Index sites = 101;               // odd, >= 9: lattice sites per field (periodic ends, centre in the middle)
