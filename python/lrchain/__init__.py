@@ -11,7 +11,7 @@ Submodules: :mod:`lrchain.regime` (focusing intervals, the regime maps of Figs. 
 boundary curves), :mod:`lrchain.simulate` (bright-breather, driven-chain and modulated-wave runs;
 bright-breather and ring runs of any model file), :mod:`lrchain.dark` (exact dark breathers: Newton,
 continuation, Floquet multipliers, evolution; of the resonant chain or, with ``model=``, of any model
-file).
+file), :mod:`lrchain.bright` (exact bright breathers of any model file: Newton, Floquet multipliers).
 Invalid input raises :class:`lrchain.InvalidParameterError` (a ``ValueError``) naming the parameter;
 Ctrl-C interrupts a long computation with ``KeyboardInterrupt``.
 """
@@ -20,7 +20,7 @@ from .errors import InputError, InvalidParameterError, NumericalFailure
 from ._lrchain import Params, build_info as _build_info
 from .coefficients import Coefficients, coefficients
 from .model import SHIPPED_MODELS, Model, load_model
-from . import dark, regime, simulate
+from . import bright, dark, regime, simulate
 from . import labelled as _labelled
 from .labelled import open_sweep
 from .progress import set_progress
@@ -51,6 +51,7 @@ __all__ = [
     "regime",
     "simulate",
     "dark",
+    "bright",
     "InputError",
     "InvalidParameterError",
     "NumericalFailure",

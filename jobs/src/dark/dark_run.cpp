@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "../breather_outputs.hpp"
 #include "dark_steps.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/dispersion.hpp"
@@ -73,16 +74,6 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
     r.z_period = dark_breather_evolution(c.params, r.z0, period, 1, shooting.integration()).back();
 }
 
-// Names and meanings of a model's lattice variables: strains r, w_f (translation-invariant models)
-// or displacements u_f (on-site models).
-void model_variables(DarkEdge& e) {
-  for (int f = 0; f < e.fields; ++f) {
-    e.variables.push_back(e.mean_flow ? (f == 0 ? "r" : fmt::format("w{}", f)) : fmt::format("u{}", f));
-    e.variable_meanings.push_back(e.mean_flow ? (f == 0 ? "r[n] = u0[n] - u0[n-1]" : fmt::format("w{0}[n] = u{0}[n] - u0[n]", f))
-                                              : fmt::format("u{}[n]", f));
-  }
-}
-
 // A model file on its generated lattice kernels: the seed at its defocusing edge, full-period shooting.
 void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactIntegrationOptions& integration,
                DarkResult& r) {
@@ -92,7 +83,7 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   const ContactBonds contacts = model_contact_bonds(*c.kernels, sim::lattice_parameters(model), ansatz.mean_flow);
   r.edge = {model.definition().branch_names.at(std::size_t(ansatz.branch)), ansatz.theta, ansatz.omega,
             ansatz.curvature, ansatz.h_tilde, ansatz.lambda, ansatz.mean_flow, c.kernels->fields, {}, {}, {}};
-  model_variables(r.edge);
+  lattice_variable_names(r.edge.mean_flow, r.edge.fields, r.edge.variables, r.edge.variable_meanings);
   for (const auto& bond : contacts) r.edge.one_sided_contacts.push_back(bond.name);
   const DarkShooting shooting(*c.kernels, sim::lattice_parameters(model), c.sites, ansatz.mean_flow,
                                    parse_shooting_mode(c.mode), integration, contacts);

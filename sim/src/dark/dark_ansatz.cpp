@@ -14,10 +14,10 @@
 
 namespace lrchain::sim::dark {
 
-namespace {
-// "defocusing", "focusing (omega'' h_tilde = ...)" or why there are no coefficients at theta.
-std::string edge_regime(const Model& model, Index branch, double theta, bool& defocusing) {
-  defocusing = false;
+// The NLS regime at the edge theta of `branch` (singular where there are no coefficients, or h_tilde
+// diverges there) and its text, e.g. "focusing (omega'' h_tilde = -0.0312)".
+std::string band_edge_regime(const Model& model, Index branch, double theta, Regime& regime) {
+  regime = Regime::singular;
   try {
     const NlsCoefficients c = coefficients_from_evaluators(model, branch, theta);
     if (c.regime == Regime::singular || !std::isfinite(c.curvature * c.h_tilde)) return "singular coefficients";
@@ -29,13 +29,14 @@ std::string edge_regime(const Model& model, Index branch, double theta, bool& de
     if (!(std::abs(c.h_tilde - near.h_tilde) <= 1e-3 * std::abs(near.h_tilde) + 1e-12))
       return fmt::format("singular coefficients (h_tilde = {:.4g} at the edge, {:.4g} at theta = {:.6g})", c.h_tilde,
                          near.h_tilde, inside);
-    defocusing = c.regime == Regime::defocusing;
+    regime = c.regime;
     return fmt::format("{} (omega'' h_tilde = {:.4g})", to_string(c.regime), c.curvature * c.h_tilde);
   } catch (const InvalidParameter&) {
     return "no real positive frequency";
   }
 }
 
+namespace {
 // The Bloch vector (K_0 = 1) of frequency omega at theta = 0 from the generated Jacobian at rest:
 // D_{gf} = (J 1_f)_g, D K = -omega^2 K. (bloch_mode needs every branch to have a positive
 // frequency, and an acoustic branch has omega = 0 at theta = 0.)
@@ -75,9 +76,9 @@ DefocusingEdge defocusing_edge(const Model& model, std::optional<Index> branch) 
   for (Index b = 0; b < static_cast<Index>(names.size()); ++b) {
     if (branch && *branch != b) continue;
     for (const double theta : {std::numbers::pi, 0.0}) {
-      bool defocusing = false;
-      const std::string regime = edge_regime(model, b, theta, defocusing);
-      if (defocusing) return {b, theta};
+      Regime found = Regime::singular;
+      const std::string regime = band_edge_regime(model, b, theta, found);
+      if (found == Regime::defocusing) return {b, theta};
       checked += fmt::format("{}{} at theta = {}: {}", checked.empty() ? "" : "; ", names[static_cast<std::size_t>(b)], theta == 0 ? "0" : "pi",
                              regime);
     }

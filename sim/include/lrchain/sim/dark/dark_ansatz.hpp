@@ -45,6 +45,11 @@ struct DefocusingEdge {
   double theta = 0;  // pi or 0
 };
 
+// The NLS regime at the band edge theta (0 or pi) of `branch`: the regime (singular where the branch
+// has no coefficients there or h_tilde diverges at the edge) and its text for messages, e.g.
+// "focusing (omega'' h_tilde = -0.0312)" or "no real positive frequency". Bright breathers use it too.
+std::string band_edge_regime(const Model& model, Index branch, double theta, Regime& regime);
+
 // The branch (given, or the first in the file's order) and edge (theta = pi first, then theta = 0)
 // where the NLS is defocusing (omega'' h_tilde > 0). InvalidParameter("branch", ...) naming every
 // edge checked and its regime when there is none.
