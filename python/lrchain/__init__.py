@@ -23,6 +23,7 @@ from .model import SHIPPED_MODELS, Model, load_model
 from . import dark, regime, simulate
 from . import labelled as _labelled
 from .labelled import open_sweep
+from .reading import load
 from .progress import set_progress
 
 _labelled.attach()  # result.to_xarray() on every result class
@@ -41,6 +42,7 @@ __all__ = [
     "__version__",
     "provenance",
     "open_sweep",
+    "load",
     "set_progress",
     "Params",
     "Model",
