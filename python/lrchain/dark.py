@@ -409,16 +409,17 @@ class Evolution:
 @renamed("dark")
 @real_numbers
 def evolve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
-           tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], t_end=None, samples=_D["samples"], *, model=None):
+           tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], t_end=None, samples=_D["samples"], *, model=None,
+           progress=None):
     """Solve, then integrate from Z(0) over floor(t_end / T_b) periods (default: 10 periods),
     sampling every site ``samples`` times per period for the position measure; returns
     :class:`Evolution` (with ``model``: :class:`ModelEvolution`). Ctrl-C interrupts it with
-    ``KeyboardInterrupt``.
+    ``KeyboardInterrupt``. ``progress``: a bar over the periods (see :mod:`lrchain.progress`).
 
     Example::
 
         >>> import lrchain, math
-        >>> e = lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=11, t_end=2 * 2 * math.pi / 2.42)
+        >>> e = lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=11, t_end=2 * 2 * math.pi / 2.42, progress=False)
         >>> len(e.t), e.x.shape, bool(e.E_b.max() < 1e-8)
         (2, (3, 11), True)
     """
@@ -426,11 +427,13 @@ def evolve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D
     if t_end is None:
         t_end = 10 * 2 * np.pi / omega_b
     if model is not None:
-        d = _edge(python_names(lambda: _lrchain.dark_model_evolve(
-            model, omega_b, branch, center, sites, mode, tolerance, max_iterations, t_end, samples)))
+        with Bar("dark-breather evolution", progress) as bar:
+            d = _edge(python_names(lambda: _lrchain.dark_model_evolve(
+                model, omega_b, branch, center, sites, mode, tolerance, max_iterations, t_end, samples, bar.callback)))
         return ModelEvolution(**d)
-    d = python_names(lambda: _lrchain.dark_evolve(params, omega_b, branch, center, sites, mode, tolerance,
-                                                  max_iterations, t_end, samples))
+    with Bar("dark-breather evolution", progress) as bar:
+        d = python_names(lambda: _lrchain.dark_evolve(params, omega_b, branch, center, sites, mode, tolerance,
+                                                      max_iterations, t_end, samples, bar.callback))
     return Evolution(params=params, **d)
 
 

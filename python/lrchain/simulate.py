@@ -10,6 +10,8 @@
 
 Each run integrates in C++ without holding the GIL; Ctrl-C stops it at the next step (model-file
 runs with the symplectic stepper and ``ring``: at the next sample) and raises ``KeyboardInterrupt``.
+Every run takes ``progress=``: a bar with rate and ETA when interactive, or True/False
+(:mod:`lrchain.progress`; ``ring``'s bar moves after each plane wave and after the packet).
 Keyword arguments left out (or None)
 take the library's defaults, the same as the ``lrchain simulate`` command's, and the keywords are
 its options' names (``sites`` for ``--sites``, ``switch_off_time`` for ``--switch-off-time``, ...).

@@ -103,3 +103,12 @@ def test_sweep_shows_a_bar_per_point(tmp_path, capfd):
     assert "sweep s.toml" in err and "100%" in err and (ds.status.values == 1).all()
     lrchain.sweep(tmp_path / "s.toml", output=tmp_path / "quiet.h5", threads=1, progress=False)
     assert capfd.readouterr().err == ""
+
+
+def test_evolution_shows_a_bar_per_period(capfd):
+    quiet = lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=11, t_end=3 * 2 * np.pi / 2.42, progress=False)
+    assert capfd.readouterr().err == ""
+    watched = lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=11, t_end=3 * 2 * np.pi / 2.42, progress=True)
+    err = capfd.readouterr().err
+    assert "dark-breather evolution" in err and "100%" in err
+    np.testing.assert_array_equal(quiet.E_b, watched.E_b)  # the same run, bit for bit
