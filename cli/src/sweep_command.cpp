@@ -77,14 +77,7 @@ void run_sweep_command(const SweepArguments& a) {
   }
   nlohmann::json j;
   j["figures"] = nlohmann::json::array();
-  if (!c.figure.empty() && !r.interrupted) {
-    const auto results = jobs::sweep::read_results(c.output, c, job);
-    const auto figure_files = jobs::sweep::sweep_figure_files(c);
-    jobs::sweep::mark_side_files_pending(c, figure_files);
-    j["figures"] = c.figure == "stability" && c.job == "dark continue" ? jobs::sweep::write_stability_figure(c, results)
-                                                                        : jobs::sweep::write_sweep_figures(c, job, results, c.figure);
-    jobs::sweep::record_side_files(c, figure_files);
-  }
+  if (!r.interrupted) j["figures"] = jobs::sweep::write_requested_figure(c, job);
   j["name"] = c.name;
   j["job"] = c.job;
   j["output"] = c.output.string();

@@ -18,5 +18,6 @@ void register_renamed_options(pybind11::module_& m);  // renamed_options.cpp: re
 void register_option_caps(pybind11::module_& m);      // option_caps_binding.cpp: caps shared with the CLI
 void register_real_numbers(pybind11::module_& m);     // real_numbers.cpp: complex numbers refused
 void register_build_info(pybind11::module_& m);       // build_info_binding.cpp: __version__, provenance()
+void register_sweep(pybind11::module_& m);            // sweep_binding.cpp: lrchain.sweep
 
 }  // namespace lrchain::python

@@ -115,10 +115,10 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
 // Solve, then integrate from Z(0) over floor(t_end / T_b) periods (`lrchain dark evolve --model`).
 py::dict evolve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
                     double sites, const std::string& mode, double tolerance, double max_iterations, double t_end,
-                    double samples) {
+                    double samples, const py::object& progress) {
   DarkConfig c = model_config(DarkStep::evolve, loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations);
   set_evolve_keywords(c, t_end, samples);
-  const DarkResult r = run_dark_job(c);
+  const DarkResult r = run_dark_job(c, progress);
   std::vector<const Eigen::VectorXd*> rows;
   for (const auto& z : r.evolution.snapshots) rows.push_back(&z);
   py::dict d = edge_dict(loaded, r);
@@ -138,7 +138,7 @@ void register_model_dark(py::module_& m) {
         py::arg("progress") = py::none());
   m.def("dark_model_evolve", &evolve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("t_end"),
-        py::arg("samples"));
+        py::arg("samples"), py::arg("progress") = py::none());
 }
 
 }  // namespace lrchain::python

@@ -17,4 +17,5 @@ PYBIND11_MODULE(_lrchain, m) {
   lrchain::python::register_option_caps(m);
   lrchain::python::register_real_numbers(m);
   lrchain::python::register_build_info(m);
+  lrchain::python::register_sweep(m);
 }

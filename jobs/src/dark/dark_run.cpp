@@ -49,7 +49,8 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
       continue_from(shooting, r.newton.q, c, hooks, r);
       return;
     case DarkStep::evolve:
-      r.evolution = evolve_dark_breather(c.params, r.z0, c.omega_b, c.t_end, c.samples, shooting.integration(), hooks.stop);
+      r.evolution = evolve_dark_breather(c.params, r.z0, c.omega_b, c.t_end, c.samples, shooting.integration(), hooks.stop,
+                                       hooks.evolution_progress);
       return;
     case DarkStep::solve:
     case DarkStep::floquet:
@@ -97,7 +98,8 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   }
   r.contact_changes_per_period = shooting.contact_changes_per_period(r.z0, c.omega_b);
   if (c.step == DarkStep::evolve) {
-    r.evolution = evolve_dark_orbit(shooting.advance(), r.z0, c.sites, c.omega_b, c.t_end, c.samples, hooks.stop);
+    r.evolution = evolve_dark_orbit(shooting.advance(), r.z0, c.sites, c.omega_b, c.t_end, c.samples, hooks.stop,
+                                    hooks.evolution_progress);
     return;
   }
   shooting.measure(r.z0, c.omega_b, r.measures);

@@ -224,4 +224,16 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
   return files;
 }
 
+std::vector<std::string> write_requested_figure(const SweepConfig& c, const Job& job) {
+  if (c.figure.empty()) return {};
+  const SweepResults results = read_results(c.output, c, job);
+  const std::vector<std::string> files = sweep_figure_files(c);
+  mark_side_files_pending(c, files);
+  std::vector<std::string> written = c.figure == "stability" && c.job == "dark continue"
+                                         ? write_stability_figure(c, results)
+                                         : write_sweep_figures(c, job, results, c.figure);
+  record_side_files(c, files);
+  return written;
+}
+
 }  // namespace lrchain::jobs::sweep

@@ -74,6 +74,7 @@ struct DarkRunHooks {
   bool stop_integrations = false;           // `stop` also ends a running integration (Interrupted)
   std::function<void(const sim::dark::NewtonRecord&)> newton_progress;  // after every Newton iteration
   std::function<void(const sim::dark::BranchPoint&)> on_point;          // after every branch point
+  std::function<void(double fraction)> evolution_progress;  // after every period of evolve: periods done / periods
 };
 
 // The band edge the breather bifurcates from and the lattice's variables.
