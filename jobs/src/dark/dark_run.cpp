@@ -10,6 +10,7 @@
 #include "lrchain/dispersion.hpp"
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/sim/dark/dark_ansatz.hpp"
+#include "lrchain/sim/dark/dark_shape.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 
@@ -99,6 +100,13 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   r.seed = dark_seed(ansatz, parse_dark_center(c.center), c.sites);
   r.newton = newton_solve(shooting, r.seed, c.omega_b, newton_options(c, hooks));
   if (!r.newton.converged) return;
+  // A zero of the shooting map is any periodic orbit: keep it only if it is a dark breather.
+  if (const std::string shape = dark_shape_failure(ansatz, parse_dark_center(c.center), c.sites, r.newton.q);
+      !shape.empty()) {
+    r.newton.converged = false;
+    r.newton.failure = "it converged to a state that is not a dark breather (" + shape + ")";
+    return;
+  }
   r.z0 = r.newton.q;
   if (c.step == DarkStep::branch) {  // the start's contact changes are its branch point's
     continue_from(shooting, r.z0, c, hooks, r);
