@@ -103,3 +103,13 @@ TEST_CASE("dark model: a converged state that is not a dark breather is recognis
   CHECK(sim::dark::dark_shape_failure(a, DarkCenter::bond, sites, seed / 10).find("not the plane wave's at omega_b") !=
         std::string::npos);
 }
+
+TEST_CASE("dark model: a theta = 0 pair with mean flow is a dark breather (resonant_chain_polynomial)" *
+          doctest::test_suite("fast")) {
+  // Defocusing at theta = 0 with h = h_tilde = 4.8 > 0 (lambda = 0): the pair above omega = 2
+  // (docs/dark-models.md); its carrier is in w1 = v - u, the strain r has no far-field carrier.
+  const ShippedModel m{shipped_model("resonant_chain_polynomial", {}), "resonant_chain_polynomial"};
+  const DarkResult r = run(m.config(DarkStep::solve, 2.01, 60));
+  INFO(r.newton.failure);
+  CHECK(r.newton.converged);
+}

@@ -40,11 +40,6 @@ std::string dark_shape_failure(const DarkAnsatz& a, DarkCenter center, Index sit
   for (Index i = 0; i < sites; ++i) farthest = std::max(farthest, dip_distance(a, n0, sites, i));
   const double far = farthest - std::max(2.0, 0.1 * static_cast<double>(sites));
   const double strongest = pattern.cwiseAbs().maxCoeff();
-  // The carrying field: the one with the largest pattern (r or u0 at theta = pi, w1 at theta = 0).
-  Index carrier = 0;
-  for (Index f = 1; f < fields; ++f)
-    if (pattern.segment(f * sites, sites).cwiseAbs().maxCoeff() > pattern.segment(carrier * sites, sites).cwiseAbs().maxCoeff())
-      carrier = f;
   // Far from the dip(s) the plane wave takes two values per field, m_f + B P and m_f - B P (P's sign:
   // the carrier's phase on that sublattice and side of the dip; m_f: the wave's mean shift, from
   // even nonlinearities): B from their difference, every far value within the spread of its own.
@@ -86,6 +81,10 @@ std::string dark_shape_failure(const DarkAnsatz& a, DarkCenter center, Index sit
   if (!(background <= tol.amplitude_factor * a.amplitude && background >= a.amplitude / tol.amplitude_factor))
     return fmt::format("the far-field amplitude {:.4g} is not the plane wave's at omega_b (NLS amplitude {:.4g}, "
                        "omega_b - omega = h A^2)", background, a.amplitude);
+  // The carrying field: the largest far-field pattern (r or u0 at theta = pi, w1 at theta = 0 with mean flow).
+  Index carrier = 0;
+  for (Index f = 1; f < fields; ++f)
+    if (far_values[static_cast<std::size_t>(f)].magnitude > far_values[static_cast<std::size_t>(carrier)].magnitude) carrier = f;
   // The carrier's envelope |z - m_f| / (B |P|) near every dip centre: its smallest value there.
   const FieldFar& c = far_values[static_cast<std::size_t>(carrier)];
   const double mean_shift = (c.plus + c.minus) / 2;
