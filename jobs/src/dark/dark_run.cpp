@@ -154,7 +154,8 @@ DarkResult run(const DarkConfig& c, const DarkRunHooks& hooks) {
   DarkResult r;
   r.config = c;
   ContactIntegrationOptions integration;
-  if (hooks.stop_integrations) integration.stop = hooks.stop;
+  // A branch keeps its points when a signal ends it inside an integration (continue_branch).
+  if (hooks.stop_integrations || c.step == DarkStep::branch) integration.stop = hooks.stop;
   if (c.model) run_model(c, hooks, integration, r);
   else run_chain(c, hooks, integration, r);
   return r;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <csignal>
 #include <numbers>
 #include <string>
@@ -83,11 +84,22 @@ void DarkOrbit::integrate(std::vector<double>& state, double t0, double t1) cons
   auto stepper = odeint::make_controlled(options_.abs_tol, options_.rel_tol, options_.max_step, steppers_->orbit);
   const std::atomic<bool>* stop = options_.stop;
   times_.clear();
-  odeint::integrate_adaptive(stepper, system, state, t0, t1, std::min(options_.initial_step, t1 - t0),
-                             [this, stop](const OrbitState&, double t) {
-                               if (stop && stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
-                               times_.push_back(t);
-                             });
+  // An orbit that runs away (a corrector's guess beyond a polynomial force's range) takes ever smaller
+  // steps: below min_step it is abandoned as NaN, which Newton and the corrector report as a residual
+  // that is not finite, instead of recording steps without end.
+  struct RunAway {};
+  const double min_step = options_.min_step;
+  try {
+    odeint::integrate_adaptive(stepper, system, state, t0, t1, std::min(options_.initial_step, t1 - t0),
+                               [this, stop, min_step, t1](const OrbitState&, double t) {
+                                 if (stop && stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
+                                 if (!times_.empty() && t < t1 && t - times_.back() < min_step) throw RunAway{};
+                                 times_.push_back(t);
+                               });
+  } catch (const RunAway&) {
+    std::fill(state.begin(), state.end(), std::numeric_limits<double>::quiet_NaN());
+    times_.clear();
+  }
   steps_.clear();
   for (std::size_t k = 0; k + 1 < times_.size(); ++k) steps_.push_back(times_[k + 1] - times_[k]);
 }
@@ -99,6 +111,11 @@ void DarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi, doub
   if (phi.rows() != Eigen::Index(n)) throw std::invalid_argument("DarkOrbit: phi must have 2 positions() rows");
   std::vector<double> orbit_only = state;
   integrate(orbit_only, t0, t1);
+  if (!std::isfinite(orbit_only.front())) {  // the orbit ran away (above): so do its tangents
+    std::fill(state.begin(), state.end(), std::numeric_limits<double>::quiet_NaN());
+    phi.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
   extended_.resize(n * (1 + columns));
   std::copy(state.begin(), state.end(), extended_.begin());
   for (std::size_t j = 0; j < columns; ++j)
