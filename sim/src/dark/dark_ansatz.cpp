@@ -104,7 +104,7 @@ DarkAnsatz make_dark_ansatz(const Model& model, const lrchain_lattice_kernels& k
                                                  "frequency omega + h A^2 does not move off the edge",
                                                  where, c.h));
   if (!(std::isfinite(omega_b) && omega_b > 0.0 && detuning / c.h > 0.0))
-    throw InvalidParameter("omega-b", fmt::format("must lie {} omega = {:.10g}, {} (the side where (omega_b - omega) "
+    throw InvalidParameter("omega_b", fmt::format("must lie {} omega = {:.10g}, {} (the side where (omega_b - omega) "
                                                   "h > 0, h = {:.6g}: the background's frequency omega + h A^2 with "
                                                   "the far-field mean strain fixed to zero{})",
                                                   c.h < 0 ? "below" : "above", c.omega, where, c.h,

@@ -53,7 +53,7 @@ struct DefocusingEdge {
 // edge checked and its regime when there is none.
 DefocusingEdge defocusing_edge(const Model& model, std::optional<Index> branch);
 
-// The seed's coefficients at omega_b. InvalidParameter("omega-b", ...) unless
+// The seed's coefficients at omega_b. InvalidParameter("omega_b", ...) unless
 // (omega_b - omega) h > 0 and omega_b > 0: with the far-field mean strain fixed to zero the
 // background's frequency is omega + h A^2 (h, not h_tilde); InvalidParameter("branch", ...) when
 // h = 0 or is not finite there.
