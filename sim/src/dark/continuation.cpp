@@ -103,6 +103,9 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
       rhs.head(r.size()) = r;
       rhs(r.size()) = t.dot(u - u_pred);
       u -= qr.solve(rhs);
+      // A corrector that moves farther than the step itself (or to omega_b <= 0, where T_b < 0 makes
+      // any Z(0) at rest a solution) has jumped off the branch: a smaller step instead.
+      if (!(u(k) > 0.0) || (u - u_pred).norm() > ds) break;
     }
     if (!converged) {
       u = u_prev;
