@@ -133,7 +133,7 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
 }  // namespace
 
 // Continues a solved breather q0 away from the band edge: into the gap (omega_b falling) below an
-// edge, rising above one (a model edge with h_tilde > 0), within [omega_min, omega_max].
+// edge, rising above one (a model edge with h > 0), within [omega_min, omega_max].
 void continue_from(const DarkShootingProblem& shooting, const Eigen::VectorXd& q0, const DarkConfig& c,
                    const DarkRunHooks& hooks, DarkResult& r) {
   const double edge = r.edge.omega;
