@@ -124,7 +124,7 @@ def _job(params, model, omega_b, branch, function):
             raise InputError(f"{function}: give params (the resonant chain) or model, not both")
         if omega_b is None:
             raise InputError(f"{function}: omega_b is required with model= (the breather frequency, on the side of "
-                             f"the defocusing band edge where (omega_b - omega) h_tilde > 0)")
+                             f"the defocusing band edge where (omega_b - omega) h > 0)")
         return None, model, omega_b, branch
     return (Params() if params is None else params), None, (2.42 if omega_b is None else omega_b), \
         ("optical" if branch is None else branch)

@@ -88,7 +88,7 @@ py::dict solve_job(const LoadedModel& loaded, double omega_b, std::optional<std:
 }
 
 // Solve, then continue away from the edge as `lrchain dark continue --model` does: into the gap
-// (omega_b falling) below an edge, rising above one (h_tilde > 0), within [omega_min, omega_max].
+// (omega_b falling) below an edge, rising above one (h > 0), within [omega_min, omega_max].
 py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch,
                       const std::string& center, double sites, const std::string& mode, double tolerance,
                       double max_iterations, double points, double ds, double omega_min, std::optional<double> omega_max,

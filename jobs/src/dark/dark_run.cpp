@@ -11,6 +11,7 @@
 #include "lrchain/dispersion.hpp"
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/sim/dark/dark_ansatz.hpp"
+#include "lrchain/sim/dark/dark_shape.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 
@@ -91,6 +92,13 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   r.seed = dark_seed(ansatz, parse_dark_center(c.center), c.sites);
   r.newton = newton_solve(shooting, r.seed, c.omega_b, newton_options(c, hooks));
   if (!r.newton.converged) return;
+  // A zero of the shooting map is any periodic orbit: keep it only if it is a dark breather.
+  if (const std::string shape = dark_shape_failure(ansatz, parse_dark_center(c.center), c.sites, r.newton.q);
+      !shape.empty()) {
+    r.newton.converged = false;
+    r.newton.failure = "it converged to a state that is not a dark breather (" + shape + ")";
+    return;
+  }
   r.z0 = r.newton.q;
   if (c.step == DarkStep::branch) {  // the start's contact changes are its branch point's
     continue_from(shooting, r.z0, c, hooks, r);
@@ -118,7 +126,7 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
 }  // namespace
 
 // Continues a solved breather q0 away from the band edge: into the gap (omega_b falling) below an
-// edge, rising above one (a model edge with h_tilde > 0), within [omega_min, omega_max].
+// edge, rising above one (a model edge with h > 0), within [omega_min, omega_max].
 void continue_from(const DarkShootingProblem& shooting, const Eigen::VectorXd& q0, const DarkConfig& c,
                    const DarkRunHooks& hooks, DarkResult& r) {
   const double edge = r.edge.omega;
@@ -139,7 +147,8 @@ DarkResult run(const DarkConfig& c, const DarkRunHooks& hooks) {
   DarkResult r;
   r.config = c;
   ContactIntegrationOptions integration;
-  if (hooks.stop_integrations) integration.stop = hooks.stop;
+  // A branch keeps its points when a signal ends it inside an integration (continue_branch).
+  if (hooks.stop_integrations || c.step == DarkStep::branch) integration.stop = hooks.stop;
   if (c.model) run_model(c, hooks, integration, r);
   else run_chain(c, hooks, integration, r);
   return r;

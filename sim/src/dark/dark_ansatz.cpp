@@ -94,22 +94,36 @@ DarkAnsatz make_dark_ansatz(const Model& model, const lrchain_lattice_kernels& k
   const std::string where = fmt::format("the theta = {} edge of {} branch {}", edge.theta == 0 ? "0" : "pi",
                                         model.name(), model.definition().branch_names.at(static_cast<std::size_t>(branch)));
   if (c.regime != Regime::defocusing) throw InvalidParameter("branch", where + " is not defocusing");
-  const double detuning = 3.0 * (omega_b - c.omega);
-  if (!(std::isfinite(omega_b) && omega_b > 0.0 && detuning / c.h_tilde > 0.0))
+  // With the far-field mean strain fixed to zero (the shooting's C_x row; on-site models have no mean
+  // strain) the background plane wave of NLS amplitude A (carrier 2 A cos) has
+  // omega_b - omega = h A^2, while h_tilde = h - lambda beta sets the dip (eq:defocus_app with
+  // f = lambda mu/h_tilde, as eq:Ftau does for the resonant chain): a dark breather exists only on the
+  // side where (omega_b - omega) h > 0.
+  const double detuning = omega_b - c.omega;
+  if (!(std::isfinite(c.h) && c.h != 0.0))
+    throw InvalidParameter("branch", fmt::format("{} has no dark breather: h = {:.6g} there, so the background's "
+                                                 "frequency omega + h A^2 does not move off the edge",
+                                                 where, c.h));
+  if (!(std::isfinite(omega_b) && omega_b > 0.0 && detuning / c.h > 0.0))
     throw InvalidParameter("omega_b", fmt::format("must lie {} omega = {:.10g}, {} (the side where (omega_b - omega) "
-                                                  "h_tilde > 0, h_tilde = {:.6g})",
-                                                  c.h_tilde < 0 ? "below" : "above", c.omega, where, c.h_tilde));
+                                                  "h > 0, h = {:.6g}: the background's frequency omega + h A^2 with "
+                                                  "the far-field mean strain fixed to zero{})",
+                                                  c.h < 0 ? "below" : "above", c.omega, where, c.h,
+                                                  c.h * c.h_tilde < 0 ? fmt::format("; h_tilde = {:.6g} only sets "
+                                                                                    "the dip's width", c.h_tilde)
+                                                                      : std::string()));
   DarkAnsatz a;
   a.branch = branch;
   a.theta = edge.theta;
   a.omega_b = omega_b;
   a.omega = c.omega;
   a.curvature = c.curvature;
+  a.h = c.h;
   a.h_tilde = c.h_tilde;
   a.mean_flow = model.definition().mean_flow;
   a.lambda = a.mean_flow ? c.lambda : 0.0;
-  a.amplitude = std::sqrt(detuning / c.h_tilde);
-  a.inverse_width = std::sqrt(detuning / c.curvature);
+  a.amplitude = std::sqrt(detuning / c.h);                                 // omega_b - omega = h A^2
+  a.inverse_width = std::sqrt(c.h_tilde * a.amplitude * a.amplitude / c.curvature);  // eta^2 = -mu/omega'' = h_tilde A^2/omega''
   a.mean_factor = a.mean_flow ? -c.lambda * std::sqrt(c.curvature * c.h_tilde) / std::abs(c.h_tilde) : 0.0;
   if (edge.theta == 0)
     a.kernel = uniform_kernel(model, kernels, c.omega);
