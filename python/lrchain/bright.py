@@ -134,7 +134,13 @@ def solve(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D["
     """Newton from the NLS bright-breather seed, checked to be a localized breather; returns
     :class:`BrightBreather`. ``omega_b`` is required.
 
-    Example: ``lrchain.bright.solve(lrchain.load_model("klein_gordon"), omega_b=1.19, sites=81)``."""
+    Example::
+
+        >>> import lrchain
+        >>> b = lrchain.bright.solve(lrchain.load_model("klein_gordon"), omega_b=1.19, sites=81)
+        >>> b.center, bool(b.newton_residuals[-1] < 1e-10), bool(b.profile["localized"])
+        ('site', True, True)
+    """
     return _breather(_run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance,
                           _D["unit_tolerance"], "solve"))
 
@@ -147,7 +153,15 @@ def floquet(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D
     """Solve, then the Floquet multipliers of the full-period monodromy matrix, the trivial +1 ones
     removed; returns :class:`BrightBreather` with ``floquet`` set.
 
-    Example: ``lrchain.bright.floquet(lrchain.load_model("fput", a=0), omega_b=2.2, center="bond", sites=41)``."""
+    The FPU chain's Page mode is stable.
+
+    Example::
+
+        >>> import lrchain
+        >>> b = lrchain.bright.floquet(lrchain.load_model("fput", a=0), omega_b=2.2, center="bond", sites=41)
+        >>> b.floquet.stable, bool(b.floquet.unit_circle_defect < 1e-8)
+        (True, True)
+    """
     return _breather(_run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance,
                           unit_tolerance, "floquet"))
 
@@ -184,7 +198,13 @@ def continue_branch(model=None, omega_b=None, branch=None, center=_D["center"], 
     """Solve, then pseudo-arclength continuation in omega_b away from the band edge within the window where
     no harmonic meets a band, each point checked to be a localized breather; returns :class:`BrightBranch`.
 
-    Example: ``lrchain.bright.continue_branch(lrchain.load_model("klein_gordon"), omega_b=1.19, sites=61, points=10)``."""
+    Example::
+
+        >>> import lrchain
+        >>> b = lrchain.bright.continue_branch(lrchain.load_model("klein_gordon"), omega_b=1.19, sites=81, points=4)
+        >>> len(b.omega_b), bool(b.omega_b[-1] > 1.19)
+        (4, True)
+    """
     d = _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance,
              "continue", points, ds, floquet)
     z = d.pop("branch_z")
