@@ -18,6 +18,7 @@
 #include "lrchain/jobs/sweep/sweep_figure.hpp"
 #include "lrchain/jobs/sweep/sweep_memory.hpp"
 #include "lrchain/jobs/sweep/sweep_run.hpp"
+#include "model_option.hpp"
 #include "options.hpp"
 #include "stop_signals.hpp"
 #ifdef LRCHAIN_WITH_MPI
@@ -34,10 +35,22 @@ struct SweepArguments {
   bool retry_failed = false, quiet = false, compact = false;
 };
 
+// A sweep's model file loaded as `lrchain simulate --config` loads it (model_option.hpp): a shipped
+// model's compiled-in code, else the file compiled into the model cache; once per sweep.
+jobs::sweep::ModelFile load_model_file(const std::string& path) {
+  ModelSelection selection;
+  selection.file = path;
+  const CLI::App no_aliases;  // the resonant chain's --rho, ... are not sweep options
+  const auto model = std::make_shared<const Model>(load_selected_model(selection, no_aliases, Params{}, true));
+  // The definition shares the loaded Model's ownership (a compiled file's evaluators stay loaded).
+  return {path, std::shared_ptr<const ModelDefinition>(model, &model->definition()),
+          lattice_kernels_for(selection, *model).kernels};
+}
+
 // Loads and checks everything, runs the sweep (resuming from its results file), prints a JSON
 // summary; an interrupted sweep ends with exit 130/143 after its results so far are written.
 void run_sweep_command(const SweepArguments& a) {
-  jobs::sweep::SweepConfig c = jobs::sweep::load_sweep_config(a.config, jobs::sweep::launcher_ranks_on_this_node());
+  jobs::sweep::SweepConfig c = jobs::sweep::load_sweep_config(a.config, jobs::sweep::launcher_ranks_on_this_node(), load_model_file);
   if (!a.output.empty()) {
     if (const std::string problem = jobs::sweep::output_problem(a.output, !c.figure.empty()); !problem.empty())
       throw InvalidParameter("--output", problem);
@@ -127,7 +140,7 @@ void register_sweep(CLI::App& app) {
   auto a = std::make_shared<SweepArguments>();
   auto* cmd = app.add_subcommand(
       "sweep",
-      "Run one job (bright, drive, modulated, dark continue, regime intervals) over a grid or list of parameter points described in a TOML "
+      "Run one job (bright, drive, modulated, dark continue, regime intervals; bright and ring of model files) over a grid or list of parameter points described in a TOML "
       "file, in-process on threads (and over MPI ranks under mpirun or srun); results in one HDF5 file "
       "(and a CSV view for small sweeps). A stopped sweep continues from its results file.");
   cmd->add_option("--config", a->config, "the sweep file (docs/sweeps.md)")->required()->type_name("FILE");

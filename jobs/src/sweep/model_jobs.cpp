@@ -1,0 +1,158 @@
+// The sweep jobs of model-file bases, "bright" and "ring" (sweep/model_jobs.hpp): the model loaded
+// once, each point's Model from its [parameters], the run through the simulate job function.
+#include "model_jobs.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "../located_validation.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/jobs/model_experiment_config.hpp"
+#include "lrchain/jobs/simulate/model_simulate_job.hpp"
+
+namespace lrchain::jobs::sweep {
+
+namespace {
+
+constexpr double none = std::numeric_limits<double>::quiet_NaN();
+
+template <class Result>
+using Extractors = std::vector<std::pair<std::string, std::function<double(const Result&)>>>;
+
+double or_none(const std::optional<double>& v) { return v ? *v : none; }
+
+// The scalars of a model bright run, named as in its JSON summary (model_bright_outputs.cpp).
+const Extractors<sim::ModelBrightResult>& bright_scalars() {
+  static const Extractors<sim::ModelBrightResult> e{
+      {"omega", [](const auto& r) { return r.omega; }},
+      {"omega_b", [](const auto& r) { return r.omega_b; }},
+      {"T_b", [](const auto& r) { return r.period; }},
+      {"group_velocity", [](const auto& r) { return r.group_velocity; }},
+      {"curvature", [](const auto& r) { return r.curvature; }},
+      {"h_tilde", [](const auto& r) { return r.h_tilde; }},
+      {"lambda", [](const auto& r) { return r.mean_flow ? r.lambda : none; }},
+      {"M1", [](const auto& r) { return r.M1; }},
+      {"M2", [](const auto& r) { return r.M2; }},
+      {"inverse_width", [](const auto& r) { return r.inverse_width; }},
+      {"max_E_x", [](const auto& r) { return r.max_error.at(0); }},
+      {"final_E_x", [](const auto& r) { return r.final_error.at(0); }},
+      {"energy0", [](const auto& r) { return r.energy0; }},
+      {"max_relative_energy_drift", [](const auto& r) { return r.ansatz_ends ? none : r.max_energy_drift; }},
+      {"centre_speed", [](const auto& r) { return or_none(r.centre_speed); }},
+      {"centre_speed_vs_c",
+       [](const auto& r) { return r.centre_speed && r.group_velocity != 0 ? *r.centre_speed / r.group_velocity : none; }},
+      {"t_end", [](const auto& r) { return r.stats.t_reached; }},
+      {"steps", [](const auto& r) { return double(r.stats.steps); }},
+      {"rhs_evaluations", [](const auto& r) { return double(r.stats.rhs_evaluations); }}};
+  return e;
+}
+
+// The largest relative disagreement of the measured and predicted frequency shifts (NaN: none).
+double max_relative_disagreement(const sim::RingRunResult& r) {
+  double most = none;
+  for (const auto& a : r.amplitudes)
+    if (a.relative_disagreement && !(*a.relative_disagreement <= most)) most = *a.relative_disagreement;
+  return most;
+}
+
+// The scalars of a ring run (ring_outputs.cpp): the prediction, the first amplitude's frequencies,
+// the worst disagreement over the amplitudes, the packet.
+const Extractors<sim::RingRunResult>& ring_scalars() {
+  static const Extractors<sim::RingRunResult> e{
+      {"omega", [](const auto& r) { return r.omega; }},
+      {"h", [](const auto& r) { return r.h; }},
+      {"group_velocity", [](const auto& r) { return r.group_velocity; }},
+      {"sites", [](const auto& r) { return double(r.sites); }},
+      {"mode_number", [](const auto& r) { return double(r.mode_number); }},
+      {"measured_frequency", [](const auto& r) { return r.amplitudes.at(0).measured_frequency; }},
+      {"predicted_frequency", [](const auto& r) { return r.amplitudes.at(0).predicted_frequency; }},
+      {"relative_disagreement", [](const auto& r) { return or_none(r.amplitudes.at(0).relative_disagreement); }},
+      {"max_relative_disagreement", [](const auto& r) { return max_relative_disagreement(r); }},
+      {"packet_speed", [](const auto& r) { return r.packet_speed; }},
+      {"packet_relative_disagreement", [](const auto& r) { return or_none(r.packet_relative_disagreement); }}};
+  return e;
+}
+
+template <class Result>
+std::vector<std::string> names_of(const Extractors<Result>& e) {
+  std::vector<std::string> n;
+  for (const auto& [name, f] : e) n.push_back(name);
+  return n;
+}
+
+template <class Result>
+void reduce(const Result& r, const Extractors<Result>& e, JobResult& out) {
+  for (const auto& [name, f] : e) out.scalars.push_back(f(r));
+  out.status = PointStatus::ok;
+}
+
+// A ConfigError at the top-level key `key` of the base config.
+lrchain::config::ConfigError error_at(const lrchain::config::CheckedTable& root, const std::string& key, const std::string& what) {
+  const long line = root.line(key) ? root.line(key) : root.line();
+  return lrchain::config::ConfigError(fmt::format("invalid value for '{}' in the top level at {}:{}: {}", key, root.source(), line, what),
+                             root.source(), line, root.path(), key);
+}
+
+}  // namespace
+
+std::shared_ptr<const ModelFile> load_base_model_file(const lrchain::config::Document& base, const ModelFileLoader& load) {
+  const ModelExperimentConfig mc = load_model_experiment_config(base);  // the schema first
+  const lrchain::config::CheckedTable root = lrchain::config::check(base, model_experiment_schema(mc.experiment));
+  auto file = std::make_shared<ModelFile>();
+  try {
+    read_model_file_bytes(mc.model_file);  // a missing file or a directory, before any compiler runs
+    *file = load ? load(mc.model_file) : load_shipped_model_file(mc.model_file);
+  } catch (const lrchain::config::ConfigError&) {
+    throw;
+  } catch (const InputError& e) {
+    throw error_at(root, "model", e.what());
+  }
+  // The base's own parameter values: an unknown name or a value outside its range at its line.
+  if (const auto parameters = root.table("parameters"))
+    jobs::config::validate_located(*parameters, [&] { Model(file->definition, mc.parameters); });
+  return file;
+}
+
+std::vector<std::string> model_job_scalar_names(const std::string& kind) {
+  return kind == "ring" ? names_of(ring_scalars()) : names_of(bright_scalars());
+}
+
+const lrchain::config::TableSchema& model_job_schema(const std::string& kind) { return model_experiment_schema(kind); }
+
+std::vector<std::string> model_job_parameters(const std::string& kind, const ModelDefinition& model) {
+  std::vector<std::string> p;
+  for (const auto& table : model_job_schema(kind).keys) {
+    if (table.type != lrchain::config::ValueType::table || table.name == "parameters") continue;
+    for (const auto& key : table.table->keys)
+      if (key.type == lrchain::config::ValueType::number || key.type == lrchain::config::ValueType::integer)
+        p.push_back(table.name + "." + key.name);
+  }
+  for (const auto& parameter : model.parameters) p.push_back("parameters." + parameter.name);
+  return p;
+}
+
+JobResult run_model_job(const std::string& kind, const ModelFile& file, const lrchain::config::Document& doc,
+                        const sim::RunControl& control) {
+  ModelExperimentConfig mc = load_model_experiment_config(doc);
+  const Model model(file.definition, mc.parameters);
+  const RunOutput no_files{"", false, "csv"};
+  JobResult r;
+  try {
+    if (kind == "ring") {
+      prepare(model, mc.ring, mc.branch);
+      reduce(simulate_ring(model, *file.kernels, mc.ring, {}, no_files, control.stop).result, ring_scalars(), r);
+    } else {
+      prepare(model, mc.bright, mc.branch);
+      reduce(simulate_model_bright(model, *file.kernels, mc.bright, {}, no_files, control.stop).result, bright_scalars(), r);
+    }
+  } catch (const Interrupted&) {
+    r = JobResult{PointStatus::missing, "interrupted", {}, 0, {}};
+  }
+  return r;
+}
+
+}  // namespace lrchain::jobs::sweep
