@@ -9,10 +9,11 @@
 
 #include <fmt/format.h>
 
-#include "../located_validation.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/jobs/simulate/model_simulate_job.hpp"
+// Last: it opens namespace lrchain::jobs::config, which would hide lrchain::config in the headers above.
+#include "../located_validation.hpp"
 
 namespace lrchain::jobs::sweep {
 
