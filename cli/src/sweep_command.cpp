@@ -35,22 +35,22 @@ struct SweepArguments {
   bool retry_failed = false, quiet = false, compact = false;
 };
 
-// A sweep's model file loaded as `lrchain simulate --config` loads it (model_option.hpp): a shipped
-// model's compiled-in code, else the file compiled into the model cache; once per sweep.
-jobs::sweep::ModelFile load_model_file(const std::string& path) {
-  ModelSelection selection;
-  selection.file = path;
-  const CLI::App no_aliases;  // the resonant chain's --rho, ... are not sweep options
-  const auto model = std::make_shared<const Model>(load_selected_model(selection, no_aliases, Params{}, true));
-  // The definition shares the loaded Model's ownership (a compiled file's evaluators stay loaded).
-  return {path, std::shared_ptr<const ModelDefinition>(model, &model->definition()),
-          lattice_kernels_for(selection, *model).kernels};
-}
-
 // Loads and checks everything, runs the sweep (resuming from its results file), prints a JSON
 // summary; an interrupted sweep ends with exit 130/143 after its results so far are written.
 void run_sweep_command(const SweepArguments& a) {
-  jobs::sweep::SweepConfig c = jobs::sweep::load_sweep_config(a.config, jobs::sweep::launcher_ranks_on_this_node(), load_model_file);
+  jobs::sweep::SweepConfig c;
+  // The sweep file, its base and the base's model file (a user's file compiled into the model cache).
+  const auto load = [&] { c = jobs::sweep::load_sweep_config(a.config, jobs::sweep::launcher_ranks_on_this_node(), model_compiler()); };
+#ifdef LRCHAIN_WITH_MPI
+  std::unique_ptr<jobs::sweep::MpiSession> mpi;
+  if (jobs::sweep::started_by_mpi_launcher()) mpi = std::make_unique<jobs::sweep::MpiSession>();
+  if (mpi)
+    jobs::sweep::load_on_rank0_first(*mpi, load);  // one compile of the model file, by rank 0
+  else
+    load();
+#else
+  load();
+#endif
   if (!a.output.empty()) {
     if (const std::string problem = jobs::sweep::output_problem(a.output, !c.figure.empty()); !problem.empty())
       throw InvalidParameter("--output", problem);
@@ -67,8 +67,6 @@ void run_sweep_command(const SweepArguments& a) {
   jobs::sweep::SweepOutcome r;
   int rank = 0, ranks = 1;
 #ifdef LRCHAIN_WITH_MPI
-  std::unique_ptr<jobs::sweep::MpiSession> mpi;
-  if (jobs::sweep::started_by_mpi_launcher()) mpi = std::make_unique<jobs::sweep::MpiSession>();
   if (mpi) {
     rank = mpi->rank();
     ranks = mpi->size();

@@ -10,6 +10,9 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,6 +20,7 @@
 
 #include "lrchain/config/strict_toml.hpp"
 #include "lrchain/jobs/model_experiment_config.hpp"
+#include "lrchain/jobs/model_source.hpp"
 #include "lrchain/jobs/simulate/model_simulate_job.hpp"
 #include "lrchain/jobs/sweep/results_file.hpp"
 #include "lrchain/jobs/sweep/sweep_config.hpp"
@@ -51,8 +55,8 @@ nlohmann::json single_run(const std::string& text) {
   const lrchain::Model model = lrchain::shipped_model("fput", mc.parameters);
   auto c = mc.bright;
   lrchain::jobs::prepare(model, c, mc.branch);
-  const ModelFile file = load_shipped_model_file(fput_file);
-  return lrchain::jobs::simulate_model_bright(model, *file.kernels, c, {}, {"", false, "csv"}).summary;
+  const lrchain::jobs::ModelSource source(fput_file, "model", nullptr);
+  return lrchain::jobs::simulate_model_bright(model, *source.lattice().kernels, c, {}, {"", false, "csv"}).summary;
 }
 
 double scalar(const SweepResults& r, const std::string& name, std::size_t point) {
@@ -84,8 +88,8 @@ TEST_CASE("sweep of a model file: a parameters.b axis on 2 threads gives each po
   lrchain::test::write_text(d / "s.toml", sweep_over("parameters.b", "0.5, 0.75", d / "r.h5"));
   const SweepConfig c = load_sweep_config(d / "s.toml");
   const Job job = make_job(c);
-  REQUIRE(job.model_file() != nullptr);
-  CHECK(job.model_file() == c.base_job->model_file());  // loaded once: the sweep's job shares it
+  REQUIRE(job.model_source() != nullptr);
+  CHECK(job.model_source() == c.base_job->model_source());  // loaded once: the sweep's job shares it
   CHECK(job.has_parameter("parameters.a"));
   CHECK(job.has_parameter("parameters.b"));
   CHECK(job.has_parameter("bright.theta"));
@@ -187,5 +191,127 @@ TEST_CASE("sweep of a model file: an unknown parameter axis or a missing model f
   CHECK(r.err.find("w0") != std::string::npos);
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   CHECK(!fs::exists(d / "out"));
+  fs::remove_all(d);
+}
+
+namespace {
+
+// A ring base (examples/models/*_ring.toml's shape): plane waves of amplitude U = `amplitude` at
+// theta = pi/2 on the model's first branch, coupling C; `parameters` adds lines to [parameters].
+std::string ring_base(const std::string& model, const std::string& parameters, const std::string& amplitude,
+                      const std::string& C = "\"1/2\"") {
+  return "experiment = \"ring\"\nmodel = \"" + model + "\"\n[parameters]\nC = " + C + "\n" + parameters +
+         "[ring]\nbranch = \"branch0\"\ntheta = \"pi/2\"\namplitudes = [" + amplitude + "]\n";
+}
+
+// The rows of a sweep's CSV view, each as column -> text (row 0: the header's own names).
+std::vector<std::map<std::string, std::string>> csv_rows(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::vector<std::string>> cells;
+  for (std::string line; std::getline(in, line);) {
+    cells.emplace_back();
+    std::istringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.back().push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.back().emplace_back();
+  }
+  std::vector<std::map<std::string, std::string>> rows;
+  for (const auto& row : cells) {
+    rows.emplace_back();
+    for (std::size_t i = 0; i < row.size() && i < cells.at(0).size(); ++i) rows.back()[cells[0][i]] = row[i];
+  }
+  return rows;
+}
+
+std::string ring_sweep(const std::string& parameter, const std::string& values, const fs::path& output) {
+  return "job = \"ring\"\nbase = \"base.toml\"\noutput = \"" + output.string() + "\"\n[[axis]]\nparameter = \"" + parameter +
+         "\"\nvalues = [" + values + "]\n";
+}
+
+}  // namespace
+
+TEST_CASE("sweep of a model file: a ring point whose plane wave broke up is a numerical_failure point with the run's reason") {
+  // Klein-Gordon with a = 0, b = -1/6 is sine-Gordon's cubic truncation: at U = 1 the plane wave is
+  // modulationally unstable (h omega'' > 0) and breaks up (`lrchain simulate ring` exits 3); at
+  // b = -1/50 the same amplitude stays a plane wave.
+  const fs::path d = scratch("ring");
+  lrchain::test::write_text(d / "base.toml", ring_base(std::string(LRCHAIN_SOURCE_DIR) + "/models/klein_gordon.toml",
+                                                       "a = 0\nb = \"-1/6\"\n", "1"));
+  lrchain::test::write_text(d / "s.toml", ring_sweep("parameters.b", "-0.1666666666666667, -0.02", d / "r.h5"));
+  const SweepConfig c = load_sweep_config(d / "s.toml");
+  const Job job = make_job(c);
+  REQUIRE(job.model_source() != nullptr);
+  const JobResult broke = job.run(c.overrides(0)), kept = job.run(c.overrides(1));
+  SweepResults r(job, 2);
+  r.set(0, broke);
+  r.set(1, kept);
+  CHECK(broke.status == PointStatus::numerical_failure);
+  CHECK(broke.reason.find("amplitude 1: not measurable: the plane wave broke up at t = ") == 0);
+  CHECK(broke.reason.find("modulational instability") != std::string::npos);
+  // Its prediction stays (omega + h U^2/4 from the evaluators), its unmeasurable frequency is NaN.
+  CHECK(std::isnan(scalar(r, "measured_frequency", 0)));
+  CHECK(std::isnan(scalar(r, "relative_disagreement", 0)));
+  CHECK(scalar(r, "predicted_frequency", 0) == doctest::Approx(scalar(r, "omega", 0) + scalar(r, "h", 0) / 4).epsilon(1e-15));
+  // omega(pi/2)^2 = w0^2 + 4 C sin^2(pi/4) = 2 (the KG dispersion relation), whatever b.
+  CHECK(scalar(r, "omega", 0) == doctest::Approx(std::sqrt(2.0)).epsilon(1e-14));
+  CHECK(kept.status == PointStatus::ok);
+  // b = -1/50: the measured shift agrees with h U^2/4 to 0.5 % (measured 0.47 %; O(U^2) of the NLS).
+  CHECK(scalar(r, "relative_disagreement", 1) < 5e-3);
+  // ... and equals the single run with b = -0.02 bit for bit (the same job function).
+  const auto mc = lrchain::jobs::load_model_experiment_config(lrchain::config::Document::from_text(
+      ring_base(std::string(LRCHAIN_SOURCE_DIR) + "/models/klein_gordon.toml", "a = 0\nb = -0.02\n", "1"), "single.toml"));
+  const lrchain::jobs::ModelSource source(mc.model_file, "model", nullptr);
+  const lrchain::Model model = source.model(mc.parameters);
+  auto ring = mc.ring;
+  lrchain::jobs::prepare(model, ring, mc.branch);
+  const auto single = lrchain::jobs::simulate_ring(model, *source.lattice().kernels, ring, {}, {"", false, "csv"}).summary;
+  CHECK(scalar(r, "measured_frequency", 1) == single["amplitudes"][0]["measured_frequency"].get<double>());
+  CHECK(scalar(r, "relative_disagreement", 1) == single["amplitudes"][0]["relative_disagreement"].get<double>());
+  CHECK(scalar(r, "packet_speed", 1) == single["packet"]["measured_speed"].get<double>());
+  fs::remove_all(d);
+}
+
+TEST_CASE("sweep of a model file: a user's file is compiled once into the cache and its points equal lrchain simulate --config" *
+          doctest::timeout(300)) {
+  // tests/data/sine_gordon_poly.toml (not shipped: compiled at run time). At C = 1/2 the U = 1 plane
+  // wave breaks up (simulate exits 3, the sweep point is numerical_failure); at C = 2 it is measured.
+  const fs::path d = scratch("user-file");
+  fs::copy_file(fs::path(LRCHAIN_SOURCE_DIR) / "tests" / "data" / "sine_gordon_poly.toml", d / "sine_gordon_poly.toml");
+  const std::string model = (d / "sine_gordon_poly.toml").string();
+  const std::vector<std::string> cache{"XDG_CACHE_HOME=" + (d / "cache").string()};
+  lrchain::test::write_text(d / "base.toml", ring_base(model, "", "1"));
+  lrchain::test::write_text(d / "s.toml", ring_sweep("parameters.C", "0.5, 2", d / "r.h5"));
+  const auto sweep = lrchain::test::run_lrchain({"sweep", "--config", (d / "s.toml").string(), "--quiet", "--threads", "2"}, {}, cache);
+  REQUIRE_MESSAGE(sweep.exit_code == 0, sweep.err);
+  CHECK(nlohmann::json::parse(sweep.out)["failed"] == 1);
+  // One evaluator library and one lattice library: the file was compiled once for both points.
+  int models = 0, lattices = 0;
+  for (const auto& e : fs::directory_iterator(d / "cache" / "lrchain")) {
+    if (e.path().extension() != ".so") continue;
+    const std::string name = e.path().filename().string();
+    models += name.rfind("model-", 0) == 0;
+    lattices += name.rfind("lattice-", 0) == 0;
+  }
+  CHECK(models == 1);
+  CHECK(lattices == 1);
+  // The results through the CSV view (this test program has no model compiler to load the sweep
+  // with; the CSV holds each double as its shortest round-trip text).
+  const auto rows = csv_rows(d / "r.csv");
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[1].at("status") == "numerical_failure");
+  CHECK(rows[1].at("measured_frequency").empty());
+  CHECK(rows[2].at("status") == "ok");
+  // Point 0 as a single run: exit 3 with the same reason; point 1: the same numbers, bit for bit.
+  lrchain::test::write_text(d / "p0.toml", ring_base(model, "", "1"));
+  const auto p0 = lrchain::test::run_lrchain({"simulate", "--config", (d / "p0.toml").string(), "--json"}, {}, cache);
+  CHECK(p0.exit_code == 3);
+  CHECK(p0.err.find("the plane wave broke up") != std::string::npos);
+  lrchain::test::write_text(d / "p1.toml", ring_base(model, "", "1", "2"));
+  const auto p1 = lrchain::test::run_lrchain({"simulate", "--config", (d / "p1.toml").string(), "--json"}, {}, cache);
+  REQUIRE_MESSAGE(p1.exit_code == 0, p1.err);
+  const auto j = nlohmann::json::parse(p1.out);
+  CHECK(std::stod(rows[2].at("measured_frequency")) == j["amplitudes"][0]["measured_frequency"].get<double>());
+  CHECK(std::stod(rows[2].at("predicted_frequency")) == j["amplitudes"][0]["predicted_frequency"].get<double>());
+  CHECK(std::stod(rows[2].at("packet_speed")) == j["packet"]["measured_speed"].get<double>());
+  CHECK(std::stod(rows[2].at("h")) == j["prediction"]["h"].get<double>());
   fs::remove_all(d);
 }

@@ -157,9 +157,10 @@ std::string job_kind(const config::Document& doc) {
 
 std::string Job::rows_legend() const { return is_study_kind(kind_) ? study_rows_legend(kind_) : std::string(); }
 
-Job::Job(config::Document base, const ModelFileLoader& load_model) : base_(std::move(base)), kind_(job_kind(base_)) {
+Job::Job(config::Document base, std::shared_ptr<const ModelCompiler> compiler)
+    : base_(std::move(base)), kind_(job_kind(base_)) {
   if (is_model_experiment(base_) || kind_ == "ring") {
-    model_ = load_base_model_file(base_, load_model);
+    model_ = load_base_model(base_, std::move(compiler));
     scalar_names_ = model_job_scalar_names(kind_);
   } else if (is_study_kind(kind_)) {
     check_study_config(kind_, base_);
@@ -178,7 +179,7 @@ Job::Job(config::Document base, const ModelFileLoader& load_model) : base_(std::
 }
 
 std::vector<std::string> Job::parameters() const {
-  if (model_) return model_job_parameters(kind_, *model_->definition);
+  if (model_) return model_job_parameters(kind_, *model_->definition());
   std::vector<std::string> p;
   const auto& schema = is_study_kind(kind_) ? study_schema(kind_) : experiment_schema(kind_);
   for (const auto& table : schema.keys) {

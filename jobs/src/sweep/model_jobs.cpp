@@ -69,7 +69,8 @@ const Extractors<sim::RingRunResult>& ring_scalars() {
       {"group_velocity", [](const auto& r) { return r.group_velocity; }},
       {"sites", [](const auto& r) { return double(r.sites); }},
       {"mode_number", [](const auto& r) { return double(r.mode_number); }},
-      {"measured_frequency", [](const auto& r) { return r.amplitudes.at(0).measured_frequency; }},
+      {"measured_frequency",
+       [](const auto& r) { return r.amplitudes.at(0).broke_up_at ? none : r.amplitudes.at(0).measured_frequency; }},
       {"predicted_frequency", [](const auto& r) { return r.amplitudes.at(0).predicted_frequency; }},
       {"relative_disagreement", [](const auto& r) { return or_none(r.amplitudes.at(0).relative_disagreement); }},
       {"max_relative_disagreement", [](const auto& r) { return max_relative_disagreement(r); }},
@@ -100,22 +101,24 @@ lrchain::config::ConfigError error_at(const lrchain::config::CheckedTable& root,
 
 }  // namespace
 
-std::shared_ptr<const ModelFile> load_base_model_file(const lrchain::config::Document& base, const ModelFileLoader& load) {
+std::shared_ptr<const ModelSource> load_base_model(const lrchain::config::Document& base,
+                                                   std::shared_ptr<const ModelCompiler> compiler) {
   const ModelExperimentConfig mc = load_model_experiment_config(base);  // the schema first
   const lrchain::config::CheckedTable root = lrchain::config::check(base, model_experiment_schema(mc.experiment));
-  auto file = std::make_shared<ModelFile>();
+  std::shared_ptr<const ModelSource> source;
   try {
-    read_model_file_bytes(mc.model_file);  // a missing file or a directory, before any compiler runs
-    *file = load ? load(mc.model_file) : load_shipped_model_file(mc.model_file);
-  } catch (const lrchain::config::ConfigError&) {
-    throw;
+    // As `lrchain simulate --config` loads it (a lattice run: a user's file whose lattice code can
+    // be neither found nor compiled is refused before its evaluators are compiled); the kernels now,
+    // once, so that the points' threads only read them.
+    source = std::make_shared<const ModelSource>(mc.model_file, "model", std::move(compiler), true);
+    source->lattice();
   } catch (const InputError& e) {
     throw error_at(root, "model", e.what());
   }
   // The base's own parameter values: an unknown name or a value outside its range at its line.
   if (const auto parameters = root.table("parameters"))
-    jobs::config::validate_located(*parameters, [&] { Model(file->definition, mc.parameters); });
-  return file;
+    jobs::config::validate_located(*parameters, [&] { source->model(mc.parameters); });
+  return source;
 }
 
 std::vector<std::string> model_job_scalar_names(const std::string& kind) {
@@ -136,19 +139,25 @@ std::vector<std::string> model_job_parameters(const std::string& kind, const Mod
   return p;
 }
 
-JobResult run_model_job(const std::string& kind, const ModelFile& file, const lrchain::config::Document& doc,
+JobResult run_model_job(const std::string& kind, const ModelSource& source, const lrchain::config::Document& doc,
                         const sim::RunControl& control) {
   ModelExperimentConfig mc = load_model_experiment_config(doc);
-  const Model model(file.definition, mc.parameters);
+  const Model model = source.model(mc.parameters);
+  const lrchain_lattice_kernels& kernels = *source.lattice().kernels;  // loaded by load_base_model
   const RunOutput no_files{"", false, "csv"};
   JobResult r;
   try {
     if (kind == "ring") {
       prepare(model, mc.ring, mc.branch);
-      reduce(simulate_ring(model, *file.kernels, mc.ring, {}, no_files, control.stop).result, ring_scalars(), r);
+      const sim::RingRunResult ring = simulate_ring(model, kernels, mc.ring, {}, no_files, control.stop).result;
+      reduce(ring, ring_scalars(), r);
+      if (ring.failure) {  // a plane wave broke up: `lrchain simulate` exits 3 with this reason
+        r.status = PointStatus::numerical_failure;
+        r.reason = *ring.failure;
+      }
     } else {
       prepare(model, mc.bright, mc.branch);
-      reduce(simulate_model_bright(model, *file.kernels, mc.bright, {}, no_files, control.stop).result, bright_scalars(), r);
+      reduce(simulate_model_bright(model, kernels, mc.bright, {}, no_files, control.stop).result, bright_scalars(), r);
     }
   } catch (const Interrupted&) {
     r = JobResult{PointStatus::missing, "interrupted", {}, 0, {}};

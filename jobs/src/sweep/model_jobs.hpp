@@ -9,15 +9,16 @@
 
 #include "lrchain/config/strict_toml.hpp"
 #include "lrchain/jobs/sweep/job.hpp"
-#include "lrchain/jobs/sweep/model_file.hpp"
+#include "lrchain/jobs/model_source.hpp"
 #include "lrchain/sim/run_control.hpp"
 
 namespace lrchain::jobs::sweep {
 
-// The base's model file loaded once (by `load`, or load_shipped_model_file when empty), after the
-// base passed its schema: a missing or bad model file is a ConfigError at the line of `model`, an
-// unknown name in [parameters] one at its line.
-std::shared_ptr<const ModelFile> load_base_model_file(const lrchain::config::Document& base, const ModelFileLoader& load);
+// The base's model loaded once through the one model loader (jobs::ModelSource; `compiler` null:
+// shipped model files only), its lattice kernels too, after the base passed its schema: a missing or
+// bad model file is a ConfigError at the line of `model`, an unknown name in [parameters] one at its line.
+std::shared_ptr<const ModelSource> load_base_model(const lrchain::config::Document& base,
+                                                   std::shared_ptr<const ModelCompiler> compiler);
 
 // The summary scalars of a model job ("bright" or "ring"), named as in its JSON summary.
 std::vector<std::string> model_job_scalar_names(const std::string& kind);
@@ -27,10 +28,11 @@ std::vector<std::string> model_job_parameters(const std::string& kind, const Mod
 // The schema of the base config (for renamed keys).
 const lrchain::config::TableSchema& model_job_schema(const std::string& kind);
 
-// Runs one point from its (overridden) base config: the point's Model from `file`'s definition and
-// the config's [parameters], the job's checks, the run. InputError for a value the checks refuse;
-// `control.stop` set ends the run with status `missing`.
-JobResult run_model_job(const std::string& kind, const ModelFile& file, const lrchain::config::Document& doc,
+// Runs one point from its (overridden) base config: the point's Model from `source`'s definition and
+// the config's [parameters], the job's checks, the run. InputError for a value the checks refuse; a
+// ring whose plane wave broke up is status `numerical_failure` with the run's reason (its scalars
+// kept); `control.stop` set ends the run with status `missing`.
+JobResult run_model_job(const std::string& kind, const ModelSource& source, const lrchain::config::Document& doc,
                         const sim::RunControl& control);
 
 }  // namespace lrchain::jobs::sweep

@@ -27,10 +27,10 @@ namespace {
 // The theta values where a focusing interval of the base config's chain begins or ends.
 std::vector<double> focusing_boundaries(const Job& job) {
   std::vector<regime::FocusingInterval> intervals;
-  if (const ModelFile* file = job.model_file()) {
+  if (const ModelSource* source = job.model_source()) {
     // A model file's base: its branch at the base's [parameters].
     const ModelExperimentConfig mc = load_model_experiment_config(job.base());
-    const Model model(file->definition, mc.parameters);
+    const Model model = source->model(mc.parameters);
     intervals = regime::focusing_intervals(model, model.branch(mc.branch));
   } else {
     const BrightRunConfig b = load_experiment_config(job.base()).bright;

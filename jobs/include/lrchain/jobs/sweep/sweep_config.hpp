@@ -49,10 +49,10 @@ std::string sweep_config_markdown();
 // lengths, a base config of another job, a control character in a name, and a sweep whose results
 // need more than the available memory with `ranks_on_node` ranks on rank 0's node (checked from the
 // axes' counts before their values are generated; sweep_memory.hpp). A model-file base has its
-// model loaded once, by `load_model` (empty: shipped model files only; sweep/model_file.hpp), and a
-// missing or bad model file or an unknown `parameters.NAME` axis is a ConfigError too.
+// model loaded once (jobs::ModelSource with the front end's `compiler`; null: shipped model files
+// only), and a missing or bad model file or an unknown `parameters.NAME` axis is a ConfigError too.
 SweepConfig load_sweep_config(const std::filesystem::path& file, int ranks_on_node = 1,
-                              const ModelFileLoader& load_model = {});
+                              std::shared_ptr<const ModelCompiler> compiler = nullptr);
 // Why `output` cannot be a sweep's results file name (a control character, no file name, with a
 // figure a quote or backslash in its name), or "" when it can.
 std::string output_problem(const std::filesystem::path& output, bool figure);
