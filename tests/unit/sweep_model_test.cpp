@@ -6,6 +6,8 @@
 // file) exits 2 with one line naming the file and writes nothing.
 #include <doctest/doctest.h>
 
+#include <boost/math/tools/roots.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -21,6 +23,7 @@
 #include "lrchain/config/strict_toml.hpp"
 #include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/jobs/model_source.hpp"
+#include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/jobs/simulate/model_simulate_job.hpp"
 #include "lrchain/jobs/sweep/results_file.hpp"
 #include "lrchain/jobs/sweep/sweep_config.hpp"
@@ -37,10 +40,11 @@ fs::path scratch(const std::string& name) { return lrchain::test::sweep_scratch(
 
 const std::string fput_file = std::string(LRCHAIN_SOURCE_DIR) + "/models/fput.toml";
 
-// examples/models/fput_bright.toml shortened: 401 sites, 10 T_b; `b` is the cubic coefficient.
+// examples/models/fput_bright.toml shortened: 401 sites, 10 T_b, detuning 1e-3 (inverse width
+// 0.075: about 13 sites, where 1e-4 would not fit on 401); `b` is the cubic coefficient.
 std::string fput_bright_base(const std::string& b, const std::string& model = fput_file) {
   return "experiment = \"bright\"\nmodel = \"" + model + "\"\n[parameters]\na = \"1/4\"\nb = \"" + b +
-         "\"\n[bright]\nbranch = \"acoustic\"\ntheta = \"pi/2\"\ndetuning = 1e-4\nsites = 401\nn0 = -100\nperiods = 10\n";
+         "\"\n[bright]\nbranch = \"acoustic\"\ntheta = \"pi/2\"\ndetuning = 1e-3\nsites = 401\nn0 = -100\nperiods = 10\n";
 }
 
 std::string sweep_over(const std::string& parameter, const std::string& values, const fs::path& output) {
@@ -104,7 +108,7 @@ TEST_CASE("sweep of a model file: a parameters.b axis on 2 threads gives each po
   check_equals_single_run(r, 0, single_run(fput_bright_base("0.5")));
   check_equals_single_run(r, 1, single_run(fput_bright_base("0.75")));
   // b changes the nonlinearity: h_tilde of the acoustic branch at pi/2 differs between the points,
-  // and the breather stays within a percent of its ansatz over 10 T_b at both.
+  // and the breather stays within a percent of its ansatz over 10 T_b at both (0.15 % measured at b = 1/2).
   CHECK(scalar(r, "h_tilde", 0) != scalar(r, "h_tilde", 1));
   CHECK(scalar(r, "max_E_x", 0) < 1e-2);
   CHECK(scalar(r, "max_E_x", 1) < 1e-2);
@@ -313,5 +317,91 @@ TEST_CASE("sweep of a model file: a user's file is compiled once into the cache 
   CHECK(std::stod(rows[2].at("predicted_frequency")) == j["amplitudes"][0]["predicted_frequency"].get<double>());
   CHECK(std::stod(rows[2].at("packet_speed")) == j["packet"]["measured_speed"].get<double>());
   CHECK(std::stod(rows[2].at("h")) == j["prediction"]["h"].get<double>());
+  fs::remove_all(d);
+}
+
+namespace {
+
+// The textbook diatomic chain's optical branch (masses 1 and m, spring K; Kittel ch. 4), per cell:
+// omega^2 = K (s + sqrt(s^2 - 4 sin^2(theta/2) / m)), s = 1 + 1/m. Its curvature d^2 omega/dtheta^2
+// by central differences; its zero does not depend on K (omega scales with sqrt(K)).
+double textbook_optical_curvature(double m, double theta) {
+  const auto omega = [m](double t) {
+    const double s = 1 + 1 / m, q = std::sin(t / 2);
+    return std::sqrt(s + std::sqrt(s * s - 4 * q * q / m));
+  };
+  const double step = 1e-4;
+  return (omega(theta + step) - 2 * omega(theta) + omega(theta - step)) / (step * step);
+}
+
+}  // namespace
+
+TEST_CASE("sweep of a model file: regime intervals over parameters.m of the diatomic chain equal lrchain regime intervals --model") {
+  const fs::path d = scratch("regime");
+  lrchain::test::write_text(d / "base.toml", "experiment = \"regime intervals\"\nmodel = \"" + std::string(LRCHAIN_SOURCE_DIR) +
+                                                 "/models/diatomic_chain.toml\"\n[parameters]\nm = 2\n[regime]\nsamples = 512\n");
+  lrchain::test::write_text(d / "s.toml", "job = \"regime intervals\"\nbase = \"base.toml\"\noutput = \"" + (d / "r.h5").string() +
+                                              "\"\n[[axis]]\nparameter = \"parameters.m\"\nvalues = [2, 3]\n");
+  const SweepConfig c = load_sweep_config(d / "s.toml");
+  const Job job = make_job(c);
+  REQUIRE(job.model_source() != nullptr);
+  CHECK(job.has_parameter("parameters.m"));
+  CHECK(job.has_parameter("regime.samples"));
+  // The scalars and the rows' branch codes follow the model's branches (acoustic, then optical).
+  CHECK(job.scalar_names().front() == "acoustic_intervals");
+  CHECK(job.scalar_names().at(6) == "optical_intervals");
+  CHECK(job.rows_legend().find("branch: 0 acoustic, 1 optical") != std::string::npos);
+  SweepRunOptions o;
+  o.threads = 2;
+  o.progress = false;
+  run_sweep(c, job, o);
+  const SweepResults r = read_results(c.output, c, job);
+  REQUIRE(r.finished() == 2);
+  CHECK(r.failed() == 0);
+  // Each point's intervals are the regime job's (what `lrchain regime intervals --model` runs) at
+  // that m, bit for bit.
+  std::vector<double> expected_rows;
+  for (const double m : {2.0, 3.0}) {
+    const auto model = std::make_shared<const lrchain::Model>(
+        lrchain::jobs::ModelSource(std::string(LRCHAIN_SOURCE_DIR) + "/models/diatomic_chain.toml", "model", nullptr)
+            .model({{"m", m}}));
+    for (const std::size_t b : {0, 1}) {
+      lrchain::jobs::RegimeIntervalsConfig config;
+      config.lattice.model = model;
+      config.branch = model->definition().branch_names.at(b);
+      config.samples = 512;
+      for (const auto& i : lrchain::jobs::run(config).structure.intervals) {
+        expected_rows.insert(expected_rows.end(), {double(b), i.lo, i.hi});
+      }
+    }
+  }
+  std::vector<double> rows;  // branch, lo, hi of every row of both points
+  const std::size_t columns = job.row_names().size();
+  for (const auto& point : r.rows)
+    for (std::size_t k = 0; k < point.size() / columns; ++k)
+      for (std::size_t column = 0; column < 3; ++column) rows.push_back(point[k * columns + column]);
+  CHECK(rows == expected_rows);
+  // Independent check: at m = 2 the optical interval begins where the textbook optical branch's
+  // curvature vanishes (measured 2.1922437; central differences: 1e-6).
+  const auto [lo, hi] = boost::math::tools::bisect([](double t) { return textbook_optical_curvature(2, t); }, 1.5, 3.0,
+                                                   [](double a, double b) { return std::abs(a - b) < 1e-10; });
+  CHECK(scalar(r, "optical_first_lo", 0) == doctest::Approx((lo + hi) / 2).epsilon(1e-6));
+  CHECK(scalar(r, "optical_last_hi", 0) == doctest::Approx(std::acos(-1.0)).epsilon(1e-12));
+  fs::remove_all(d);
+}
+
+TEST_CASE("sweep of a model file: a dark continue base with a model file is a ConfigError at its model line") {
+  const fs::path d = scratch("dark");
+  lrchain::test::write_text(d / "base.toml", "experiment = \"dark continue\"\nmodel = \"models/klein_gordon.toml\"\n[dark]\nedge_offset = 0.01\n");
+  lrchain::test::write_text(d / "s.toml", "job = \"dark continue\"\nbase = \"base.toml\"\noutput = \"" + (d / "r.h5").string() +
+                                              "\"\n[[axis]]\nparameter = \"dark.edge_offset\"\nvalues = [0.01]\n");
+  try {
+    load_sweep_config(d / "s.toml");
+    FAIL("a model file as a dark continue base was accepted");
+  } catch (const lrchain::config::ConfigError& e) {
+    CHECK(e.line() == 2);
+    CHECK(e.key() == "model");
+    CHECK(std::string(e.what()).find("\"regime intervals\"") != std::string::npos);
+  }
   fs::remove_all(d);
 }

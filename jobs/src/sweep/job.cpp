@@ -155,13 +155,21 @@ std::string job_kind(const config::Document& doc) {
   return kind;
 }
 
-std::string Job::rows_legend() const { return is_study_kind(kind_) ? study_rows_legend(kind_) : std::string(); }
+std::string Job::rows_legend() const {
+  return is_study_kind(kind_) ? study_rows_legend(kind_, model_ ? model_->definition().get() : nullptr) : std::string();
+}
 
 Job::Job(config::Document base, std::shared_ptr<const ModelCompiler> compiler)
     : base_(std::move(base)), kind_(job_kind(base_)) {
   if (is_model_experiment(base_) || kind_ == "ring") {
-    model_ = load_base_model(base_, std::move(compiler));
-    scalar_names_ = model_job_scalar_names(kind_);
+    model_ = load_base_model(kind_, base_, std::move(compiler));
+    if (is_study_kind(kind_)) {
+      check_study_config(kind_, base_, model_.get());
+      scalar_names_ = study_scalar_names(kind_, model_->definition().get());
+      row_names_ = study_row_names(kind_);
+    } else {
+      scalar_names_ = model_job_scalar_names(kind_);
+    }
   } else if (is_study_kind(kind_)) {
     check_study_config(kind_, base_);
     scalar_names_ = study_scalar_names(kind_);
@@ -218,10 +226,10 @@ JobResult Job::run(const Overrides& overrides, const RunControl& control, JobWor
   JobResult r;
   try {
     const config::Document doc = with_overrides(base_, overrides);
-    if (model_)
+    if (is_study_kind(kind_))
+      r = run_study(kind_, doc, control, model_.get());
+    else if (model_)
       r = run_model_job(kind_, *model_, doc, control);
-    else if (is_study_kind(kind_))
-      r = run_study(kind_, doc, control);
     else if (kind_ == "bright")
       reduce(run_bright(load_experiment_config(doc).bright, workspace.bright, control), bright_scalars(), r);
     else if (kind_ == "drive")

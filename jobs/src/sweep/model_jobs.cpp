@@ -12,6 +12,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/jobs/simulate/model_simulate_job.hpp"
+#include "lrchain/jobs/sweep/study_jobs.hpp"
 // Last: it opens namespace lrchain::jobs::config, which would hide lrchain::config in the headers above.
 #include "../located_validation.hpp"
 
@@ -101,23 +102,43 @@ lrchain::config::ConfigError error_at(const lrchain::config::CheckedTable& root,
 
 }  // namespace
 
-std::shared_ptr<const ModelSource> load_base_model(const lrchain::config::Document& base,
+std::vector<std::pair<std::string, double>> model_parameter_values(const lrchain::config::CheckedTable& root) {
+  std::vector<std::pair<std::string, double>> values;
+  if (const auto p = root.table("parameters"))
+    for (const auto& key : p->keys()) values.emplace_back(key, *p->number(key));
+  return values;
+}
+
+std::shared_ptr<const ModelSource> load_base_model(const std::string& kind, const lrchain::config::Document& base,
                                                    std::shared_ptr<const ModelCompiler> compiler) {
-  const ModelExperimentConfig mc = load_model_experiment_config(base);  // the schema first
-  const lrchain::config::CheckedTable root = lrchain::config::check(base, model_experiment_schema(mc.experiment));
+  if (kind == "dark continue") {  // its model-file runs are `lrchain dark continue --model FILE`
+    const toml::node* model = base.root().get("model");
+    throw lrchain::config::ConfigError(
+        fmt::format("invalid value for 'model' in the top level at {}:{}: a \"dark continue\" base takes the resonant "
+                    "chain's [model] table; model files are bases of \"bright\", \"ring\" and \"regime intervals\" sweeps",
+                    base.source(), model->source().begin.line),
+        base.source(), long(model->source().begin.line), "", "model");
+  }
+  if (!is_study_kind(kind)) load_model_experiment_config(base);  // the schema and the job's own checks first
+  const lrchain::config::CheckedTable root = lrchain::config::check(base, model_job_schema(kind));
+  std::string file;
+  root.read("model", file);
+  const std::vector<std::pair<std::string, double>> values = model_parameter_values(root);
   std::shared_ptr<const ModelSource> source;
   try {
-    // As `lrchain simulate --config` loads it (a lattice run: a user's file whose lattice code can
-    // be neither found nor compiled is refused before its evaluators are compiled); the kernels now,
-    // once, so that the points' threads only read them.
-    source = std::make_shared<const ModelSource>(mc.model_file, "model", std::move(compiler), true);
-    source->lattice();
+    // As `lrchain simulate --config` loads it: for a lattice run (every job but "regime intervals",
+    // which evaluates coefficients only) a user's file whose lattice code can be neither found nor
+    // compiled is refused before its evaluators are compiled, and the kernels are loaded now, once,
+    // so that the points' threads only read them.
+    const bool lattice_run = kind != "regime intervals";
+    source = std::make_shared<const ModelSource>(file, "model", std::move(compiler), lattice_run);
+    if (lattice_run) source->lattice();
   } catch (const InputError& e) {
     throw error_at(root, "model", e.what());
   }
   // The base's own parameter values: an unknown name or a value outside its range at its line.
   if (const auto parameters = root.table("parameters"))
-    jobs::config::validate_located(*parameters, [&] { source->model(mc.parameters); });
+    jobs::config::validate_located(*parameters, [&] { source->model(values); });
   return source;
 }
 
@@ -125,7 +146,9 @@ std::vector<std::string> model_job_scalar_names(const std::string& kind) {
   return kind == "ring" ? names_of(ring_scalars()) : names_of(bright_scalars());
 }
 
-const lrchain::config::TableSchema& model_job_schema(const std::string& kind) { return model_experiment_schema(kind); }
+const lrchain::config::TableSchema& model_job_schema(const std::string& kind) {
+  return is_study_kind(kind) ? model_study_schema(kind) : model_experiment_schema(kind);
+}
 
 std::vector<std::string> model_job_parameters(const std::string& kind, const ModelDefinition& model) {
   std::vector<std::string> p;

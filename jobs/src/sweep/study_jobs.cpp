@@ -17,7 +17,9 @@
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/dark_job.hpp"
+#include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/jobs/regime_job.hpp"
+#include "model_jobs.hpp"
 
 namespace lrchain::jobs::sweep {
 
@@ -63,6 +65,17 @@ TableSchema study_top(const std::string& kind, const std::string& table_name, st
                       string("name", "the file name without .toml", "a label"),
                       table("model", jobs::config::model_schema(Params{})),
                       table_required ? table(table_name, t).require() : table(table_name, t)},
+                     std::nullopt};
+}
+
+// A model-file base of a study job: `model = "models/x.toml"` and its [parameters] (as a model-file
+// simulate config has them, model_experiment_config.hpp) in place of the resonant chain's [model].
+TableSchema model_study_top(const std::string& kind, const std::string& table_name, std::shared_ptr<const TableSchema> t) {
+  const TableSchema& simulate = model_experiment_schema("bright");
+  return TableSchema{"a \"" + kind + "\" sweep base of a model file",
+                     {choice("experiment", {kind}, "", "which job this file describes").require(),
+                      string("name", "the file name without .toml", "a label"), *simulate.find("model"),
+                      *simulate.find("parameters"), table(table_name, t)},
                      std::nullopt};
 }
 
@@ -206,34 +219,43 @@ JobResult run_dark(const Document& doc, const RunControl& control) {
 
 // ---- regime intervals ------------------------------------------------------------------------
 
-constexpr Branch both_branches[] = {Branch::optical, Branch::acoustic};
+// The branches a regime point runs: both of the resonant chain, or every branch of a model file.
+std::vector<std::string> regime_branches(const ModelDefinition* model) {
+  if (model) return model->branch_names;
+  return {std::string(to_string(Branch::optical)), std::string(to_string(Branch::acoustic))};
+}
 
-std::vector<std::string> regime_scalar_names() {
+std::vector<std::string> regime_scalar_names(const ModelDefinition* model) {
   std::vector<std::string> n;
-  for (Branch b : both_branches)
+  for (const auto& b : regime_branches(model))
     for (const char* s : {"intervals", "focusing_length", "first_lo", "first_hi", "last_lo", "last_hi"})
-      n.push_back(fmt::format("{}_{}", to_string(b), s));
+      n.push_back(fmt::format("{}_{}", b, s));
   return n;
 }
 
-// The focusing intervals of both branches: the job of `lrchain regime intervals --branch B`.
-JobResult run_regime(const Document& doc) {
-  const CheckedTable root = check(doc, study_schema("regime intervals"));
-  const Params p = read_model(root);
+// The focusing intervals of every branch: the job of `lrchain regime intervals --branch B` (with
+// `--model FILE` for a model-file base, whose point's Model takes the base's [parameters]).
+JobResult run_regime(const Document& doc, const ModelSource* source) {
+  const CheckedTable root = check(doc, source ? model_study_schema("regime intervals") : study_schema("regime intervals"));
+  RegimeLattice lattice;
+  if (source)
+    lattice.model = std::make_shared<const Model>(source->model(model_parameter_values(root)));
+  else
+    lattice.params = read_model(root);
   std::int64_t samples = RegimeIntervalsConfig{}.samples;
   if (auto r = root.table("regime")) r->read("samples", samples);
   JobResult r;
-  for (Branch b : both_branches) {
+  const std::vector<std::string> branches = regime_branches(source ? source->definition().get() : nullptr);
+  for (std::size_t b = 0; b < branches.size(); ++b) {
     RegimeIntervalsConfig config;
-    config.lattice.params = p;
-    config.branch = std::string(to_string(b));
+    config.lattice = lattice;
+    config.branch = branches[b];
     config.samples = int(samples);
     const auto s = run(config).structure;
     double length = 0;
     for (const auto& i : s.intervals) {
       length += i.hi - i.lo;
-      r.rows.insert(r.rows.end(), {double(b == Branch::optical ? 0 : 1), i.lo, i.hi, i.hi - i.lo, double(int(i.lo_cause)),
-                                   double(int(i.hi_cause))});
+      r.rows.insert(r.rows.end(), {double(b), i.lo, i.hi, i.hi - i.lo, double(int(i.lo_cause)), double(int(i.hi_cause))});
     }
     const bool any = !s.intervals.empty();
     r.scalars.insert(r.scalars.end(), {double(s.intervals.size()), length, any ? s.intervals.front().lo : none,
@@ -264,15 +286,25 @@ const TableSchema& study_schema(std::string_view kind) {
   return it->second;
 }
 
-void check_study_config(std::string_view kind, const Document& doc) {
-  if (kind == "dark continue")
+const TableSchema& model_study_schema(std::string_view kind) {
+  static const std::map<std::string, TableSchema, std::less<>> schemas{
+      {"regime intervals", model_study_top("regime intervals", "regime", regime_table())}};
+  const auto it = schemas.find(kind);
+  if (it == schemas.end()) throw InvalidParameter("model", "a model file is a base of \"regime intervals\", not of \"" + std::string(kind) + "\"");
+  return it->second;
+}
+
+void check_study_config(std::string_view kind, const Document& doc, const ModelSource* model) {
+  if (model)
+    model->model(model_parameter_values(check(doc, model_study_schema(kind))));
+  else if (kind == "dark continue")
     read_dark(doc);
   else
     read_model(check(doc, study_schema(kind)));
 }
 
-std::vector<std::string> study_scalar_names(std::string_view kind) {
-  return kind == "dark continue" ? dark_scalar_names() : regime_scalar_names();
+std::vector<std::string> study_scalar_names(std::string_view kind, const ModelDefinition* model) {
+  return kind == "dark continue" ? dark_scalar_names() : regime_scalar_names(model);
 }
 
 std::vector<std::string> study_row_names(std::string_view kind) {
@@ -280,19 +312,22 @@ std::vector<std::string> study_row_names(std::string_view kind) {
   return {"branch", "lo", "hi", "length", "lo_cause", "hi_cause"};
 }
 
-std::string study_rows_legend(std::string_view kind) {
+std::string study_rows_legend(std::string_view kind, const ModelDefinition* model) {
   if (kind == "dark continue")
     return "one row per branch point in continuation order; stability: 0 stable, +1 real, +2 period doubling, "
            "+4 oscillatory instability; part: 0 before the first turning point, +1 after each; max_real, "
            "max_period_doubling, max_oscillatory: 1 when there is none";
-  return "one row per focusing interval; branch: 0 optical, 1 acoustic; causes: 0 curvature_zero, 1 h_tilde_zero, "
-         "2 nonresonance1, 3 nonresonance2, 4 band_edge";
+  std::string branches;
+  const std::vector<std::string> names = regime_branches(model);
+  for (std::size_t b = 0; b < names.size(); ++b) branches += fmt::format("{}{} {}", b == 0 ? "" : ", ", b, names[b]);
+  return "one row per focusing interval; branch: " + branches +
+         "; causes: 0 curvature_zero, 1 h_tilde_zero, 2 nonresonance1, 3 nonresonance2, 4 band_edge";
 }
 
-JobResult run_study(std::string_view kind, const Document& doc, const RunControl& control) {
+JobResult run_study(std::string_view kind, const Document& doc, const RunControl& control, const ModelSource* model) {
   JobResult r;
   try {
-    r = kind == "dark continue" ? run_dark(doc, control) : run_regime(doc);
+    r = kind == "dark continue" ? run_dark(doc, control) : run_regime(doc, model);
   } catch (const Interrupted&) {
     throw;
   } catch (const std::runtime_error& e) {  // NumericalFailure, the contact integrator's step underflow

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lrchain/config/strict_toml.hpp"
+#include "lrchain/jobs/model_source.hpp"
 #include "lrchain/sim/run_control.hpp"
 #include "lrchain/jobs/sweep/job.hpp"
 
@@ -24,16 +25,23 @@ const std::vector<std::string>& study_kinds();
 bool is_study_kind(std::string_view kind);
 // The base config's schema of a study kind (top level: experiment, [model], [dark] or [regime]).
 const config::TableSchema& study_schema(std::string_view kind);
-// Checks a base config of a study kind beyond its schema (ConfigError / InvalidParameter).
-void check_study_config(std::string_view kind, const config::Document& doc);
+// The schema of a model-file base of a study kind ("regime intervals": experiment, model = "FILE",
+// [parameters], [regime]); InvalidParameter("model") for a kind that takes no model file.
+const config::TableSchema& model_study_schema(std::string_view kind);
+// Checks a base config of a study kind beyond its schema (ConfigError / InvalidParameter); `model`:
+// the loaded model of a model-file base (its [parameters] checked against it), else null.
+void check_study_config(std::string_view kind, const config::Document& doc, const ModelSource* model = nullptr);
 
-std::vector<std::string> study_scalar_names(std::string_view kind);
+// The scalars of a point; a model-file base's regime scalars are named after the model's branches.
+std::vector<std::string> study_scalar_names(std::string_view kind, const ModelDefinition* model = nullptr);
 // The columns of the job's rows, and what their codes mean.
 std::vector<std::string> study_row_names(std::string_view kind);
-std::string study_rows_legend(std::string_view kind);
+std::string study_rows_legend(std::string_view kind, const ModelDefinition* model = nullptr);
 
-// Runs one point from its (overridden) base config; InputError for a config the checks refuse,
-// a failed Newton solve or continuation gives status numerical_failure with the reason.
-JobResult run_study(std::string_view kind, const config::Document& doc, const sim::RunControl& control);
+// Runs one point from its (overridden) base config (`model`: the loaded model of a model-file base);
+// InputError for a config the checks refuse, a failed Newton solve or continuation gives status
+// numerical_failure with the reason.
+JobResult run_study(std::string_view kind, const config::Document& doc, const sim::RunControl& control,
+                    const ModelSource* model = nullptr);
 
 }  // namespace lrchain::jobs::sweep
