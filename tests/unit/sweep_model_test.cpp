@@ -22,6 +22,7 @@
 
 #include "lrchain/config/strict_toml.hpp"
 #include "lrchain/jobs/model_experiment_config.hpp"
+#include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/jobs/model_source.hpp"
 #include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/jobs/simulate/model_simulate_job.hpp"
@@ -390,18 +391,68 @@ TEST_CASE("sweep of a model file: regime intervals over parameters.m of the diat
   fs::remove_all(d);
 }
 
-TEST_CASE("sweep of a model file: a dark continue base with a model file is a ConfigError at its model line") {
+TEST_CASE("sweep of a model file: dark continue over parameters.b of Klein-Gordon equals the dark job on that model") {
+  // b = -1/2 and -2/5 (soft on-site force): the theta = pi edge omega(pi) = sqrt(w0^2 + 4 C) =
+  // sqrt(1.4) is defocusing with h_tilde < 0, so edge_offset starts the branch below it.
+  const std::string model_file = std::string(LRCHAIN_SOURCE_DIR) + "/models/klein_gordon.toml";
   const fs::path d = scratch("dark");
-  lrchain::test::write_text(d / "base.toml", "experiment = \"dark continue\"\nmodel = \"models/klein_gordon.toml\"\n[dark]\nedge_offset = 0.01\n");
+  lrchain::test::write_text(d / "base.toml", "experiment = \"dark continue\"\nmodel = \"" + model_file +
+                                                 "\"\n[parameters]\nb = \"-1/2\"\n[dark]\nedge_offset = 0.0132\nsites = 31\npoints = 3\n");
   lrchain::test::write_text(d / "s.toml", "job = \"dark continue\"\nbase = \"base.toml\"\noutput = \"" + (d / "r.h5").string() +
-                                              "\"\n[[axis]]\nparameter = \"dark.edge_offset\"\nvalues = [0.01]\n");
-  try {
-    load_sweep_config(d / "s.toml");
-    FAIL("a model file as a dark continue base was accepted");
-  } catch (const lrchain::config::ConfigError& e) {
-    CHECK(e.line() == 2);
-    CHECK(e.key() == "model");
-    CHECK(std::string(e.what()).find("\"regime intervals\"") != std::string::npos);
+                                              "\"\n[[axis]]\nparameter = \"parameters.b\"\nvalues = [-0.5, -0.4]\n");
+  const SweepConfig c = load_sweep_config(d / "s.toml");
+  const Job job = make_job(c);
+  REQUIRE(job.model_source() != nullptr);
+  CHECK(job.has_parameter("parameters.b"));
+  CHECK(job.has_parameter("dark.edge_offset"));
+  SweepRunOptions o;
+  o.threads = 2;
+  o.progress = false;
+  run_sweep(c, job, o);
+  const SweepResults r = read_results(c.output, c, job);
+  REQUIRE(r.finished() == 2);
+  CHECK(r.failed() == 0);
+  const double omega_pi = std::sqrt(1.4);  // the KG dispersion relation at theta = pi, C = 1/10, w0 = 1
+  const lrchain::jobs::ModelSource source(model_file, "model", nullptr);
+  for (const std::size_t point : {0, 1}) {
+    CAPTURE(point);
+    CHECK(scalar(r, "omega_edge", point) == doctest::Approx(omega_pi).epsilon(1e-14));
+    CHECK(scalar(r, "start_omega_b", point) == doctest::Approx(omega_pi - 0.0132).epsilon(1e-14));
+    CHECK(scalar(r, "branch_points", point) == 3);
+    // The point is the dark job's branch step (what `lrchain dark continue --model` runs) at that b,
+    // bit for bit.
+    const lrchain::Model model = source.model({{"b", point == 0 ? -0.5 : -0.4}});
+    lrchain::jobs::dark::DarkConfig config;
+    config.step = lrchain::jobs::dark::DarkStep::branch;
+    config.model = &model;
+    config.kernels = source.lattice().kernels.get();
+    config.omega_b = scalar(r, "start_omega_b", point);
+    config.sites = 31;
+    config.points = 3;
+    const lrchain::jobs::dark::DarkResult single = lrchain::jobs::dark::run(config);
+    REQUIRE(single.branch.points.size() == 3);
+    const std::size_t columns = job.row_names().size();
+    for (std::size_t k = 0; k < 3; ++k) {
+      CHECK(r.rows[point][k * columns] == single.branch.points[k].omega_b);
+      CHECK(r.rows[point][k * columns + 1] == single.branch.points[k].measures.norm_squared);
+      CHECK(r.rows[point][k * columns + 5] == single.branch.points[k].floquet.max_modulus);
+    }
   }
+  fs::remove_all(d);
+}
+
+TEST_CASE("sweep of a model file: a dark continue point on the wrong side of the edge is invalid, naming [dark] omega_b") {
+  const fs::path d = scratch("dark-branch");
+  lrchain::test::write_text(d / "base.toml", "experiment = \"dark continue\"\nmodel = \"" + std::string(LRCHAIN_SOURCE_DIR) +
+                                                 "/models/klein_gordon.toml\"\n[parameters]\nb = \"-1/2\"\n[dark]\nomega_b = 1.17\nsites = 31\npoints = 3\n");
+  lrchain::test::write_text(d / "s.toml", "job = \"dark continue\"\nbase = \"base.toml\"\noutput = \"" + (d / "r.h5").string() +
+                                              "\"\n[[axis]]\nparameter = \"dark.omega_b\"\nvalues = [1.19, 1.17]\n");
+  const SweepConfig c = load_sweep_config(d / "s.toml");
+  const Job job = make_job(c);
+  // omega_b = 1.19 lies above the edge sqrt(1.4) = 1.1832, on the side without breathers.
+  const JobResult above = job.run(c.overrides(0)), below = job.run(c.overrides(1));
+  CHECK(above.status == PointStatus::invalid);
+  CHECK(above.reason.find("[dark] omega_b in") != std::string::npos);
+  CHECK(below.status == PointStatus::ok);
   fs::remove_all(d);
 }

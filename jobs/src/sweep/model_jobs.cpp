@@ -111,14 +111,6 @@ std::vector<std::pair<std::string, double>> model_parameter_values(const lrchain
 
 std::shared_ptr<const ModelSource> load_base_model(const std::string& kind, const lrchain::config::Document& base,
                                                    std::shared_ptr<const ModelCompiler> compiler) {
-  if (kind == "dark continue") {  // its model-file runs are `lrchain dark continue --model FILE`
-    const toml::node* model = base.root().get("model");
-    throw lrchain::config::ConfigError(
-        fmt::format("invalid value for 'model' in the top level at {}:{}: a \"dark continue\" base takes the resonant "
-                    "chain's [model] table; model files are bases of \"bright\", \"ring\" and \"regime intervals\" sweeps",
-                    base.source(), model->source().begin.line),
-        base.source(), long(model->source().begin.line), "", "model");
-  }
   if (!is_study_kind(kind)) load_model_experiment_config(base);  // the schema and the job's own checks first
   const lrchain::config::CheckedTable root = lrchain::config::check(base, model_job_schema(kind));
   std::string file;

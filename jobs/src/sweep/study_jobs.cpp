@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -19,6 +20,7 @@
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/jobs/regime_job.hpp"
+#include "lrchain/sim/dark/dark_ansatz.hpp"
 #include "model_jobs.hpp"
 
 namespace lrchain::jobs::sweep {
@@ -70,12 +72,13 @@ TableSchema study_top(const std::string& kind, const std::string& table_name, st
 
 // A model-file base of a study job: `model = "models/x.toml"` and its [parameters] (as a model-file
 // simulate config has them, model_experiment_config.hpp) in place of the resonant chain's [model].
-TableSchema model_study_top(const std::string& kind, const std::string& table_name, std::shared_ptr<const TableSchema> t) {
+TableSchema model_study_top(const std::string& kind, const std::string& table_name, std::shared_ptr<const TableSchema> t,
+                            bool table_required) {
   const TableSchema& simulate = model_experiment_schema("bright");
   return TableSchema{"a \"" + kind + "\" sweep base of a model file",
                      {choice("experiment", {kind}, "", "which job this file describes").require(),
                       string("name", "the file name without .toml", "a label"), *simulate.find("model"),
-                      *simulate.find("parameters"), table(table_name, t)},
+                      *simulate.find("parameters"), table_required ? table(table_name, t).require() : table(table_name, t)},
                      std::nullopt};
 }
 
@@ -93,6 +96,66 @@ Params read_model(const CheckedTable& root) {
 
 // ---- dark continue ---------------------------------------------------------------------------
 
+// The name a refused [dark] key goes by in a point's reason.
+std::string dark_key(const Document& doc, std::string_view key) { return fmt::format("[dark] {} in {}", key, doc.source()); }
+
+// The options of [dark] that the chain's and a model file's bases share, read into `c`.
+void read_dark_options(const CheckedTable& d, jobs::dark::DarkConfig& c) {
+  d.read("branch", c.branch);
+  d.read("center", c.center);
+  d.read("mode", c.mode);
+  d.read("sites", c.sites);
+  d.read("points", c.points);
+  d.read("ds", c.ds);
+  d.read("omega_min", c.omega_min);
+  d.read("omega_max", c.omega_max);
+}
+
+// [dark] of a model-file base: the chain's options, with the branch one of the model's (none: its
+// first defocusing edge) and edge_offset measured on the breather's side of that edge.
+std::shared_ptr<const TableSchema> model_dark_table() {
+  TableSchema t = *dark_table();
+  t.meaning = "a dark-breather branch of the model continued in omega_b, as `lrchain dark continue --model`";
+  for (auto& key : t.keys) {
+    if (key.name == "branch")
+      key = string("branch", "none", "branch of the model whose band edge the breather bifurcates from (none: the first defocusing edge)");
+    if (key.name == "edge_offset")
+      key.meaning = "start at omega_b = omega(edge) + sign(h_tilde) edge_offset instead (the breather's side of the edge)";
+  }
+  return std::make_shared<const TableSchema>(std::move(t));
+}
+
+// Reads a model-file base's [dark] into the dark job's config (branch step) on `model` (the point's
+// Model) and `source`'s lattice kernels, with the dark job's checks (InvalidParameter naming the key).
+jobs::dark::DarkConfig read_model_dark(const Document& doc, const Model& model, const ModelSource& source) {
+  const CheckedTable root = check(doc, model_study_schema("dark continue"));
+  jobs::dark::DarkConfig c;
+  c.step = jobs::dark::DarkStep::branch;
+  c.model = &model;
+  c.kernels = source.lattice().kernels.get();
+  const CheckedTable d = *root.table("dark");
+  const std::optional<double> start = d.number("omega_b"), edge_offset = d.number("edge_offset");
+  read_dark_options(d, c);
+  if (start.has_value() == edge_offset.has_value())
+    throw InvalidParameter(dark_key(doc, "omega_b"), "give exactly one of 'omega_b' and 'edge_offset'");
+  try {
+    if (edge_offset) {  // (omega_b - omega) h_tilde > 0 at the edge the dark job starts from
+      const std::optional<Index> given = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
+      const sim::dark::DefocusingEdge edge = sim::dark::defocusing_edge(model, given);
+      const NlsCoefficients k = coefficients(model, edge.branch, edge.theta);
+      c.omega_b = k.omega + (k.h_tilde > 0 ? *edge_offset : -*edge_offset);
+    } else {
+      c.omega_b = *start;
+    }
+    jobs::dark::validate(c);
+  } catch (const InvalidParameter& e) {
+    const std::string what = e.what(), prefix = "invalid " + e.parameter() + ": ";
+    const std::string parameter = e.parameter() == "omega_b" && edge_offset ? "edge_offset" : e.parameter();
+    throw InvalidParameter(dark_key(doc, parameter), what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+  }
+  return c;
+}
+
 // Reads [model] and [dark] into the dark job's config (branch step) with the checks of `lrchain dark
 // continue` (InvalidParameter naming the key in the file); also the ansatz at the start frequency.
 std::pair<jobs::dark::DarkConfig, DarkBreatherAnsatz> read_dark(const Document& doc) {
@@ -103,15 +166,8 @@ std::pair<jobs::dark::DarkConfig, DarkBreatherAnsatz> read_dark(const Document& 
   c.branch = "optical";
   const CheckedTable d = *root.table("dark");
   const std::optional<double> start = d.number("omega_b"), edge_offset = d.number("edge_offset");
-  d.read("branch", c.branch);
-  d.read("center", c.center);
-  d.read("mode", c.mode);
-  d.read("sites", c.sites);
-  d.read("points", c.points);
-  d.read("ds", c.ds);
-  d.read("omega_min", c.omega_min);
-  d.read("omega_max", c.omega_max);
-  const auto key = [&](const char* k) { return fmt::format("[dark] {} in {}", k, doc.source()); };
+  read_dark_options(d, c);
+  const auto key = [&](const char* k) { return dark_key(doc, k); };
   if (start.has_value() == edge_offset.has_value())
     throw InvalidParameter(key("omega_b"), "give exactly one of 'omega_b' and 'edge_offset'");
   if (c.sites % 2 == 0)
@@ -191,15 +247,22 @@ void reduce_branch(const sim::dark::BranchResult& br, double omega_b, double ome
 }
 
 // Seed, Newton, continuation with Floquet at every point: the dark job's branch step (dark_job.hpp).
-JobResult run_dark(const Document& doc, const RunControl& control) {
-  const auto [c, ansatz] = read_dark(doc);
+JobResult run_dark(const Document& doc, const RunControl& control, const ModelSource* source) {
+  std::optional<Model> model;  // a model-file base: the point's model (the job's config points at it)
+  jobs::dark::DarkConfig c;
+  if (source) {
+    model.emplace(source->model(model_parameter_values(check(doc, model_study_schema("dark continue")))));
+    c = read_model_dark(doc, *model, *source);
+  } else {
+    c = read_dark(doc).first;
+  }
   jobs::dark::DarkRunHooks hooks;
   hooks.stop = control.stop;
   const jobs::dark::DarkResult d = jobs::dark::run(c, hooks);
   JobResult r;
   if (!d.newton.converged) {
     r.status = PointStatus::numerical_failure;
-    r.reason = fmt::format("Newton found no breather at omega_b = {}: {}", ansatz.omega_b, d.newton.failure);
+    r.reason = fmt::format("Newton found no breather at omega_b = {}: {}", c.omega_b, d.newton.failure);
     return r;
   }
   if (d.branch.interrupted) {
@@ -207,7 +270,7 @@ JobResult run_dark(const Document& doc, const RunControl& control) {
     r.reason = "interrupted";
     return r;
   }
-  reduce_branch(d.branch, ansatz.omega_b, ansatz.omega, int(d.newton.history.size()), r);
+  reduce_branch(d.branch, c.omega_b, d.edge.omega, int(d.newton.history.size()), r);
   if (const auto failure = jobs::dark::failure(d)) {  // the corrector failed at once
     r.status = PointStatus::numerical_failure;
     r.reason = *failure;
@@ -288,16 +351,18 @@ const TableSchema& study_schema(std::string_view kind) {
 
 const TableSchema& model_study_schema(std::string_view kind) {
   static const std::map<std::string, TableSchema, std::less<>> schemas{
-      {"regime intervals", model_study_top("regime intervals", "regime", regime_table())}};
+      {"dark continue", model_study_top("dark continue", "dark", model_dark_table(), true)},
+      {"regime intervals", model_study_top("regime intervals", "regime", regime_table(), false)}};
   const auto it = schemas.find(kind);
-  if (it == schemas.end()) throw InvalidParameter("model", "a model file is a base of \"regime intervals\", not of \"" + std::string(kind) + "\"");
+  if (it == schemas.end()) throw InvalidParameter("experiment", "must be \"dark continue\" or \"regime intervals\"");
   return it->second;
 }
 
 void check_study_config(std::string_view kind, const Document& doc, const ModelSource* model) {
-  if (model)
-    model->model(model_parameter_values(check(doc, model_study_schema(kind))));
-  else if (kind == "dark continue")
+  if (model) {
+    const Model point = model->model(model_parameter_values(check(doc, model_study_schema(kind))));
+    if (kind == "dark continue") read_model_dark(doc, point, *model);
+  } else if (kind == "dark continue")
     read_dark(doc);
   else
     read_model(check(doc, study_schema(kind)));
@@ -327,7 +392,7 @@ std::string study_rows_legend(std::string_view kind, const ModelDefinition* mode
 JobResult run_study(std::string_view kind, const Document& doc, const RunControl& control, const ModelSource* model) {
   JobResult r;
   try {
-    r = kind == "dark continue" ? run_dark(doc, control) : run_regime(doc, model);
+    r = kind == "dark continue" ? run_dark(doc, control, model) : run_regime(doc, model);
   } catch (const Interrupted&) {
     throw;
   } catch (const std::runtime_error& e) {  // NumericalFailure, the contact integrator's step underflow

@@ -25,8 +25,8 @@ const std::vector<std::string>& study_kinds();
 bool is_study_kind(std::string_view kind);
 // The base config's schema of a study kind (top level: experiment, [model], [dark] or [regime]).
 const config::TableSchema& study_schema(std::string_view kind);
-// The schema of a model-file base of a study kind ("regime intervals": experiment, model = "FILE",
-// [parameters], [regime]); InvalidParameter("model") for a kind that takes no model file.
+// The schema of a model-file base of a study kind (experiment, model = "FILE", [parameters], and
+// [dark] or [regime]).
 const config::TableSchema& model_study_schema(std::string_view kind);
 // Checks a base config of a study kind beyond its schema (ConfigError / InvalidParameter); `model`:
 // the loaded model of a model-file base (its [parameters] checked against it), else null.
