@@ -29,6 +29,7 @@
 #include "lrchain/jobs/sweep/results_file.hpp"
 #include "lrchain/jobs/sweep/sweep_config.hpp"
 #include "lrchain/jobs/sweep/sweep_run.hpp"
+#include "lrchain/process.hpp"
 #include "../support/run_lrchain.hpp"
 #include "sweep_test_files.hpp"
 
@@ -456,3 +457,36 @@ TEST_CASE("sweep of a model file: a dark continue point on the wrong side of the
   CHECK(below.status == PointStatus::ok);
   fs::remove_all(d);
 }
+
+#ifdef LRCHAIN_TEST_MPI
+TEST_CASE("sweep of a model file: mpirun -n 2 on an empty model cache gives the threaded results of a user's file" *
+          doctest::timeout(300)) {
+  REQUIRE_MESSAGE(lrchain::program_in_path("mpirun"), "this build has MPI: mpirun (openmpi-bin) must be installed");
+  // Rank 0 compiles tests/data/sine_gordon_poly.toml into the cache, then rank 1 loads it from there.
+  const fs::path d = scratch("user-file-mpi");
+  fs::copy_file(fs::path(LRCHAIN_SOURCE_DIR) / "tests" / "data" / "sine_gordon_poly.toml", d / "sine_gordon_poly.toml");
+  lrchain::test::write_text(d / "base.toml", ring_base((d / "sine_gordon_poly.toml").string(), "", "1"));
+  lrchain::test::write_text(d / "threads.toml", ring_sweep("parameters.C", "0.5, 2, 3", d / "threads.h5"));
+  lrchain::test::write_text(d / "ranks.toml", ring_sweep("parameters.C", "0.5, 2, 3", d / "ranks.h5"));
+  const std::string cache = "XDG_CACHE_HOME=" + (d / "cache").string();
+  const auto ranks = lrchain::test::run_command({"mpirun", "-n", "2", "--oversubscribe", "--allow-run-as-root", "-x",
+                                                 "XDG_CACHE_HOME", LRCHAIN_CLI, "sweep", "--config", (d / "ranks.toml").string(),
+                                                 "--json", "--quiet", "--threads", "1"},
+                                                {}, {cache});
+  REQUIRE_MESSAGE(ranks.exit_code == 0, ranks.err);
+  CHECK(nlohmann::json::parse(ranks.out)["ranks"] == 2);
+  const auto threads = lrchain::test::run_lrchain({"sweep", "--config", (d / "threads.toml").string(), "--quiet", "--threads", "2"},
+                                                  {}, {cache});
+  REQUIRE_MESSAGE(threads.exit_code == 0, threads.err);
+  auto by_ranks = csv_rows(d / "ranks.csv"), by_threads = csv_rows(d / "threads.csv");
+  REQUIRE(by_ranks.size() == 4);
+  REQUIRE(by_threads.size() == 4);
+  for (std::size_t row = 1; row < 4; ++row) {
+    by_ranks[row].erase("wall_seconds");
+    by_threads[row].erase("wall_seconds");
+    CHECK(by_ranks[row] == by_threads[row]);
+  }
+  CHECK(by_ranks[1].at("status") == "numerical_failure");
+  fs::remove_all(d);
+}
+#endif
