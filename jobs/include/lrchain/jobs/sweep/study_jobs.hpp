@@ -9,6 +9,9 @@
 //   "regime intervals": the focusing theta-intervals of both branches (regime/focusing_intervals.hpp),
 //                       as `lrchain regime intervals`; scalars: count, total length, first and last
 //                       interval per branch; one row per interval.
+// Each base is of the resonant chain ([model] rho, ...) or of a model file (`model = "models/x.toml"`
+// and its [parameters], loaded once per sweep by Job: jobs::ModelSource), as `lrchain dark continue
+// --model` and `lrchain regime intervals --model` run it.
 #include <string>
 #include <string_view>
 #include <vector>
