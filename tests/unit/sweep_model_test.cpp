@@ -54,6 +54,14 @@ std::string sweep_over(const std::string& parameter, const std::string& values, 
          parameter + "\"\nvalues = [" + values + "]\n";
 }
 
+// A sweep over `parameter` (`values`, results in d/r.h5) of the fput base with cubic coefficient
+// `b`, both written into `d`, loaded as `lrchain sweep` loads it.
+SweepConfig fput_sweep(const fs::path& d, const std::string& b, const std::string& parameter, const std::string& values) {
+  lrchain::test::write_text(d / "base.toml", fput_bright_base(b));
+  lrchain::test::write_text(d / "s.toml", sweep_over(parameter, values, d / "r.h5"));
+  return load_sweep_config(d / "s.toml");
+}
+
 // The JSON summary `lrchain simulate --config` prints for the model config `text`, computed through
 // the job function it calls (cli/src/simulate_model_bright.cpp), without files.
 nlohmann::json single_run(const std::string& text) {
@@ -90,9 +98,7 @@ void check_equals_single_run(const SweepResults& r, std::size_t point, const nlo
 
 TEST_CASE("sweep of a model file: a parameters.b axis on 2 threads gives each point's single simulate run bit for bit") {
   const fs::path d = scratch("b-axis");
-  lrchain::test::write_text(d / "base.toml", fput_bright_base("1/2"));
-  lrchain::test::write_text(d / "s.toml", sweep_over("parameters.b", "0.5, 0.75", d / "r.h5"));
-  const SweepConfig c = load_sweep_config(d / "s.toml");
+  const SweepConfig c = fput_sweep(d, "1/2", "parameters.b", "0.5, 0.75");
   const Job job = make_job(c);
   REQUIRE(job.model_source() != nullptr);
   CHECK(job.model_source() == c.base_job->model_source());  // loaded once: the sweep's job shares it
@@ -119,9 +125,7 @@ TEST_CASE("sweep of a model file: a parameters.b axis on 2 threads gives each po
 
 TEST_CASE("sweep of a model file: a bright.theta axis point equals the single run with that theta") {
   const fs::path d = scratch("theta-axis");
-  lrchain::test::write_text(d / "base.toml", fput_bright_base("1/2"));
-  lrchain::test::write_text(d / "s.toml", sweep_over("bright.theta", "1.2", d / "r.h5"));
-  const SweepConfig c = load_sweep_config(d / "s.toml");
+  const SweepConfig c = fput_sweep(d, "1/2", "bright.theta", "1.2");
   const JobResult point = make_job(c).run(c.overrides(0));
   REQUIRE(point.status == PointStatus::ok);
   SweepResults r(make_job(c), 1);
@@ -132,11 +136,26 @@ TEST_CASE("sweep of a model file: a bright.theta axis point equals the single ru
   fs::remove_all(d);
 }
 
+TEST_CASE("sweep of a model file: a results file does not resume once the model file's bytes changed") {
+  const fs::path d = scratch("model-changed");
+  fs::copy_file(fput_file, d / "model.toml");
+  lrchain::test::write_text(d / "base.toml", fput_bright_base("1/2", (d / "model.toml").string()));
+  lrchain::test::write_text(d / "s.toml", sweep_over("parameters.b", "0.5", d / "r.h5"));
+  const SweepConfig first = load_sweep_config(d / "s.toml");
+  SweepOutcome outcome = run_sweep(first, make_job(first), SweepRunOptions{.threads = 1, .progress = false});
+  CHECK(outcome.finished == 1);
+  CHECK_NOTHROW(read_results(first.output, first, make_job(first)));
+  // The same name now holds klein_gordon's bytes (parameters a and b too): the sweep's identity differs.
+  fs::copy_file(fs::path(LRCHAIN_SOURCE_DIR) / "models" / "klein_gordon.toml", d / "model.toml", fs::copy_options::overwrite_existing);
+  const SweepConfig second = load_sweep_config(d / "s.toml");
+  CHECK_THROWS_WITH_AS(read_results(second.output, second, make_job(second)),
+                       doctest::Contains("its model file changed since the file was written"), lrchain::InputError);
+  fs::remove_all(d);
+}
+
 TEST_CASE("sweep of a model file: a value out of the model's range is an invalid point, the others run") {
   const fs::path d = scratch("range");
-  lrchain::test::write_text(d / "base.toml", fput_bright_base("1/2"));
-  lrchain::test::write_text(d / "s.toml", sweep_over("bright.theta", "4, 1.5", d / "r.h5"));
-  const SweepConfig c = load_sweep_config(d / "s.toml");
+  const SweepConfig c = fput_sweep(d, "1/2", "bright.theta", "4, 1.5");
   const Job job = make_job(c);
   const JobResult bad = job.run(c.overrides(0)), good = job.run(c.overrides(1));
   CHECK(bad.status == PointStatus::invalid);

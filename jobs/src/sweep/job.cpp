@@ -16,6 +16,7 @@
 #include "lrchain/jobs/more_experiment_config.hpp"
 #include "lrchain/jobs/sweep/study_jobs.hpp"
 #include "model_jobs.hpp"
+#include "scalar_extractors.hpp"
 
 namespace lrchain::jobs::sweep {
 
@@ -24,9 +25,6 @@ using namespace lrchain::sim;  // the numerics this job layer runs
 namespace {
 
 constexpr double none = std::numeric_limits<double>::quiet_NaN();
-
-template <class Summary>
-using Extractors = std::vector<std::pair<std::string, std::function<double(const Summary&)>>>;
 
 // The scalars of a bright run (bright_run.hpp), in file order.
 const Extractors<BrightRunSummary>& bright_scalars() {
@@ -88,17 +86,10 @@ const Extractors<ModulatedRunSummary>& modulated_scalars() {
   return e;
 }
 
-template <class Summary>
-std::vector<std::string> names_of(const Extractors<Summary>& e) {
-  std::vector<std::string> n;
-  for (const auto& [name, f] : e) n.push_back(name);
-  return n;
-}
-
 // Fills the result from a finished run's summary: scalars, and the status from interrupt/blow-up.
 template <class Summary>
 void reduce(const Summary& s, const Extractors<Summary>& e, JobResult& r) {
-  for (const auto& [name, f] : e) r.scalars.push_back(f(s));
+  append_scalars(s, e, r.scalars);
   if (s.interrupted) {
     r.status = PointStatus::missing;
     r.reason = "interrupted";

@@ -13,6 +13,7 @@
 #include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/jobs/simulate/model_simulate_job.hpp"
 #include "lrchain/jobs/sweep/study_jobs.hpp"
+#include "scalar_extractors.hpp"
 // Last: it opens namespace lrchain::jobs::config, which would hide lrchain::config in the headers above.
 #include "../located_validation.hpp"
 
@@ -21,9 +22,6 @@ namespace lrchain::jobs::sweep {
 namespace {
 
 constexpr double none = std::numeric_limits<double>::quiet_NaN();
-
-template <class Result>
-using Extractors = std::vector<std::pair<std::string, std::function<double(const Result&)>>>;
 
 double or_none(const std::optional<double>& v) { return v ? *v : none; }
 
@@ -81,15 +79,8 @@ const Extractors<sim::RingRunResult>& ring_scalars() {
 }
 
 template <class Result>
-std::vector<std::string> names_of(const Extractors<Result>& e) {
-  std::vector<std::string> n;
-  for (const auto& [name, f] : e) n.push_back(name);
-  return n;
-}
-
-template <class Result>
 void reduce(const Result& r, const Extractors<Result>& e, JobResult& out) {
-  for (const auto& [name, f] : e) out.scalars.push_back(f(r));
+  append_scalars(r, e, out.scalars);
   out.status = PointStatus::ok;
 }
 
