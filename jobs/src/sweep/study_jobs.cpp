@@ -70,6 +70,15 @@ TableSchema study_top(const std::string& kind, const std::string& table_name, st
                      std::nullopt};
 }
 
+using StudySchemas = std::map<std::string, TableSchema, std::less<>>;
+
+// The base schema of a study kind; InvalidParameter("experiment") for any other kind.
+const TableSchema& schema_of(const StudySchemas& schemas, std::string_view kind) {
+  const auto it = schemas.find(kind);
+  if (it == schemas.end()) throw InvalidParameter("experiment", "must be \"dark continue\" or \"regime intervals\"");
+  return it->second;
+}
+
 // A model-file base of a study job: `model = "models/x.toml"` and its [parameters] (as a model-file
 // simulate config has them, model_experiment_config.hpp) in place of the resonant chain's [model].
 TableSchema model_study_top(const std::string& kind, const std::string& table_name, std::shared_ptr<const TableSchema> t,
@@ -341,21 +350,16 @@ bool is_study_kind(std::string_view kind) {
 }
 
 const TableSchema& study_schema(std::string_view kind) {
-  static const std::map<std::string, TableSchema, std::less<>> schemas{
-      {"dark continue", study_top("dark continue", "dark", dark_table(), true)},
-      {"regime intervals", study_top("regime intervals", "regime", regime_table(), false)}};
-  const auto it = schemas.find(kind);
-  if (it == schemas.end()) throw InvalidParameter("experiment", "must be \"dark continue\" or \"regime intervals\"");
-  return it->second;
+  static const StudySchemas schemas{{"dark continue", study_top("dark continue", "dark", dark_table(), true)},
+                                    {"regime intervals", study_top("regime intervals", "regime", regime_table(), false)}};
+  return schema_of(schemas, kind);
 }
 
 const TableSchema& model_study_schema(std::string_view kind) {
-  static const std::map<std::string, TableSchema, std::less<>> schemas{
+  static const StudySchemas schemas{
       {"dark continue", model_study_top("dark continue", "dark", model_dark_table(), true)},
       {"regime intervals", model_study_top("regime intervals", "regime", regime_table(), false)}};
-  const auto it = schemas.find(kind);
-  if (it == schemas.end()) throw InvalidParameter("experiment", "must be \"dark continue\" or \"regime intervals\"");
-  return it->second;
+  return schema_of(schemas, kind);
 }
 
 void check_study_config(std::string_view kind, const Document& doc, const ModelSource* model) {
