@@ -49,17 +49,38 @@ std::string fput_bright_base(const std::string& b, const std::string& model = fp
          "\"\n[bright]\nbranch = \"acoustic\"\ntheta = \"pi/2\"\ndetuning = 1e-3\nsites = 401\nn0 = -100\nperiods = 10\n";
 }
 
-std::string sweep_over(const std::string& parameter, const std::string& values, const fs::path& output) {
-  return "job = \"bright\"\nbase = \"base.toml\"\noutput = \"" + output.string() + "\"\n[[axis]]\nparameter = \"" +
+// A sweep file of `job` over `parameter` = [`values`] whose base is base.toml next to it.
+std::string sweep_file(const std::string& job, const std::string& parameter, const std::string& values, const fs::path& output) {
+  return "job = \"" + job + "\"\nbase = \"base.toml\"\noutput = \"" + output.string() + "\"\n[[axis]]\nparameter = \"" +
          parameter + "\"\nvalues = [" + values + "]\n";
+}
+
+std::string sweep_over(const std::string& parameter, const std::string& values, const fs::path& output) {
+  return sweep_file("bright", parameter, values, output);
+}
+
+// Writes `base` and a sweep of `job` over `parameter` (results in d/r.h5) into `d`, and loads the
+// sweep as `lrchain sweep` loads it.
+SweepConfig write_sweep(const fs::path& d, const std::string& job, const std::string& base, const std::string& parameter,
+                        const std::string& values) {
+  lrchain::test::write_text(d / "base.toml", base);
+  lrchain::test::write_text(d / "s.toml", sweep_file(job, parameter, values, d / "r.h5"));
+  return load_sweep_config(d / "s.toml");
 }
 
 // A sweep over `parameter` (`values`, results in d/r.h5) of the fput base with cubic coefficient
 // `b`, both written into `d`, loaded as `lrchain sweep` loads it.
 SweepConfig fput_sweep(const fs::path& d, const std::string& b, const std::string& parameter, const std::string& values) {
-  lrchain::test::write_text(d / "base.toml", fput_bright_base(b));
-  lrchain::test::write_text(d / "s.toml", sweep_over(parameter, values, d / "r.h5"));
-  return load_sweep_config(d / "s.toml");
+  return write_sweep(d, "bright", fput_bright_base(b), parameter, values);
+}
+
+// Runs the sweep on 2 threads, quietly, and reads its results file back.
+SweepResults run_on_two_threads(const SweepConfig& c, const Job& job) {
+  SweepRunOptions o;
+  o.threads = 2;
+  o.progress = false;
+  run_sweep(c, job, o);
+  return read_results(c.output, c, job);
 }
 
 // The JSON summary `lrchain simulate --config` prints for the model config `text`, computed through
@@ -105,11 +126,7 @@ TEST_CASE("sweep of a model file: a parameters.b axis on 2 threads gives each po
   CHECK(job.has_parameter("parameters.a"));
   CHECK(job.has_parameter("parameters.b"));
   CHECK(job.has_parameter("bright.theta"));
-  SweepRunOptions o;
-  o.threads = 2;
-  o.progress = false;
-  run_sweep(c, job, o);
-  const SweepResults r = read_results(c.output, c, job);
+  const SweepResults r = run_on_two_threads(c, job);
   REQUIRE(r.points == 2);
   CHECK(r.failed() == 0);
   CHECK(r.finished() == 2);
@@ -248,8 +265,7 @@ std::vector<std::map<std::string, std::string>> csv_rows(const fs::path& file) {
 }
 
 std::string ring_sweep(const std::string& parameter, const std::string& values, const fs::path& output) {
-  return "job = \"ring\"\nbase = \"base.toml\"\noutput = \"" + output.string() + "\"\n[[axis]]\nparameter = \"" + parameter +
-         "\"\nvalues = [" + values + "]\n";
+  return sweep_file("ring", parameter, values, output);
 }
 
 }  // namespace
@@ -359,11 +375,10 @@ double textbook_optical_curvature(double m, double theta) {
 
 TEST_CASE("sweep of a model file: regime intervals over parameters.m of the diatomic chain equal lrchain regime intervals --model") {
   const fs::path d = scratch("regime");
-  lrchain::test::write_text(d / "base.toml", "experiment = \"regime intervals\"\nmodel = \"" + std::string(LRCHAIN_SOURCE_DIR) +
-                                                 "/models/diatomic_chain.toml\"\n[parameters]\nm = 2\n[regime]\nsamples = 512\n");
-  lrchain::test::write_text(d / "s.toml", "job = \"regime intervals\"\nbase = \"base.toml\"\noutput = \"" + (d / "r.h5").string() +
-                                              "\"\n[[axis]]\nparameter = \"parameters.m\"\nvalues = [2, 3]\n");
-  const SweepConfig c = load_sweep_config(d / "s.toml");
+  const SweepConfig c = write_sweep(d, "regime intervals",
+                                    "experiment = \"regime intervals\"\nmodel = \"" + std::string(LRCHAIN_SOURCE_DIR) +
+                                        "/models/diatomic_chain.toml\"\n[parameters]\nm = 2\n[regime]\nsamples = 512\n",
+                                    "parameters.m", "2, 3");
   const Job job = make_job(c);
   REQUIRE(job.model_source() != nullptr);
   CHECK(job.has_parameter("parameters.m"));
@@ -372,11 +387,7 @@ TEST_CASE("sweep of a model file: regime intervals over parameters.m of the diat
   CHECK(job.scalar_names().front() == "acoustic_intervals");
   CHECK(job.scalar_names().at(6) == "optical_intervals");
   CHECK(job.rows_legend().find("branch: 0 acoustic, 1 optical") != std::string::npos);
-  SweepRunOptions o;
-  o.threads = 2;
-  o.progress = false;
-  run_sweep(c, job, o);
-  const SweepResults r = read_results(c.output, c, job);
+  const SweepResults r = run_on_two_threads(c, job);
   REQUIRE(r.finished() == 2);
   CHECK(r.failed() == 0);
   // Each point's intervals are the regime job's (what `lrchain regime intervals --model` runs) at
@@ -411,25 +422,27 @@ TEST_CASE("sweep of a model file: regime intervals over parameters.m of the diat
   fs::remove_all(d);
 }
 
+namespace {
+
+// A dark continue base on Klein-Gordon with b = -1/2, 31 sites, 3 branch points, starting at `start`.
+std::string kg_dark_base(const std::string& start) {
+  return "experiment = \"dark continue\"\nmodel = \"" + std::string(LRCHAIN_SOURCE_DIR) +
+         "/models/klein_gordon.toml\"\n[parameters]\nb = \"-1/2\"\n[dark]\n" + start + "\nsites = 31\npoints = 3\n";
+}
+
+}  // namespace
+
 TEST_CASE("sweep of a model file: dark continue over parameters.b of Klein-Gordon equals the dark job on that model") {
   // b = -1/2 and -2/5 (soft on-site force): the theta = pi edge omega(pi) = sqrt(w0^2 + 4 C) =
   // sqrt(1.4) is defocusing with h_tilde < 0, so edge_offset starts the branch below it.
   const std::string model_file = std::string(LRCHAIN_SOURCE_DIR) + "/models/klein_gordon.toml";
   const fs::path d = scratch("dark");
-  lrchain::test::write_text(d / "base.toml", "experiment = \"dark continue\"\nmodel = \"" + model_file +
-                                                 "\"\n[parameters]\nb = \"-1/2\"\n[dark]\nedge_offset = 0.0132\nsites = 31\npoints = 3\n");
-  lrchain::test::write_text(d / "s.toml", "job = \"dark continue\"\nbase = \"base.toml\"\noutput = \"" + (d / "r.h5").string() +
-                                              "\"\n[[axis]]\nparameter = \"parameters.b\"\nvalues = [-0.5, -0.4]\n");
-  const SweepConfig c = load_sweep_config(d / "s.toml");
+  const SweepConfig c = write_sweep(d, "dark continue", kg_dark_base("edge_offset = 0.0132"), "parameters.b", "-0.5, -0.4");
   const Job job = make_job(c);
   REQUIRE(job.model_source() != nullptr);
   CHECK(job.has_parameter("parameters.b"));
   CHECK(job.has_parameter("dark.edge_offset"));
-  SweepRunOptions o;
-  o.threads = 2;
-  o.progress = false;
-  run_sweep(c, job, o);
-  const SweepResults r = read_results(c.output, c, job);
+  const SweepResults r = run_on_two_threads(c, job);
   REQUIRE(r.finished() == 2);
   CHECK(r.failed() == 0);
   const double omega_pi = std::sqrt(1.4);  // the KG dispersion relation at theta = pi, C = 1/10, w0 = 1
@@ -463,11 +476,7 @@ TEST_CASE("sweep of a model file: dark continue over parameters.b of Klein-Gordo
 
 TEST_CASE("sweep of a model file: a dark continue point on the wrong side of the edge is invalid, naming [dark] omega_b") {
   const fs::path d = scratch("dark-branch");
-  lrchain::test::write_text(d / "base.toml", "experiment = \"dark continue\"\nmodel = \"" + std::string(LRCHAIN_SOURCE_DIR) +
-                                                 "/models/klein_gordon.toml\"\n[parameters]\nb = \"-1/2\"\n[dark]\nomega_b = 1.17\nsites = 31\npoints = 3\n");
-  lrchain::test::write_text(d / "s.toml", "job = \"dark continue\"\nbase = \"base.toml\"\noutput = \"" + (d / "r.h5").string() +
-                                              "\"\n[[axis]]\nparameter = \"dark.omega_b\"\nvalues = [1.19, 1.17]\n");
-  const SweepConfig c = load_sweep_config(d / "s.toml");
+  const SweepConfig c = write_sweep(d, "dark continue", kg_dark_base("omega_b = 1.17"), "dark.omega_b", "1.19, 1.17");
   const Job job = make_job(c);
   // omega_b = 1.19 lies above the edge sqrt(1.4) = 1.1832, on the side without breathers.
   const JobResult above = job.run(c.overrides(0)), below = job.run(c.overrides(1));
