@@ -21,12 +21,12 @@ namespace lrchain::jobs::sweep {
 
 namespace {
 
-constexpr double none = std::numeric_limits<double>::quiet_NaN();
+constexpr double missing_value = std::numeric_limits<double>::quiet_NaN();
 
-double or_none(const std::optional<double>& v) { return v ? *v : none; }
+double value_or_nan(const std::optional<double>& v) { return v ? *v : missing_value; }
 
 // The scalars of a model bright run, named as in its JSON summary (model_bright_outputs.cpp).
-const Extractors<sim::ModelBrightResult>& bright_scalars() {
+const Extractors<sim::ModelBrightResult>& model_bright_scalars() {
   static const Extractors<sim::ModelBrightResult> e{
       {"omega", [](const auto& r) { return r.omega; }},
       {"omega_b", [](const auto& r) { return r.omega_b; }},
@@ -34,17 +34,17 @@ const Extractors<sim::ModelBrightResult>& bright_scalars() {
       {"group_velocity", [](const auto& r) { return r.group_velocity; }},
       {"curvature", [](const auto& r) { return r.curvature; }},
       {"h_tilde", [](const auto& r) { return r.h_tilde; }},
-      {"lambda", [](const auto& r) { return r.mean_flow ? r.lambda : none; }},
+      {"lambda", [](const auto& r) { return r.mean_flow ? r.lambda : missing_value; }},
       {"M1", [](const auto& r) { return r.M1; }},
       {"M2", [](const auto& r) { return r.M2; }},
       {"inverse_width", [](const auto& r) { return r.inverse_width; }},
       {"max_E_x", [](const auto& r) { return r.max_error.at(0); }},
       {"final_E_x", [](const auto& r) { return r.final_error.at(0); }},
       {"energy0", [](const auto& r) { return r.energy0; }},
-      {"max_relative_energy_drift", [](const auto& r) { return r.ansatz_ends ? none : r.max_energy_drift; }},
-      {"centre_speed", [](const auto& r) { return or_none(r.centre_speed); }},
+      {"max_relative_energy_drift", [](const auto& r) { return r.ansatz_ends ? missing_value : r.max_energy_drift; }},
+      {"centre_speed", [](const auto& r) { return value_or_nan(r.centre_speed); }},
       {"centre_speed_vs_c",
-       [](const auto& r) { return r.centre_speed && r.group_velocity != 0 ? *r.centre_speed / r.group_velocity : none; }},
+       [](const auto& r) { return r.centre_speed && r.group_velocity != 0 ? *r.centre_speed / r.group_velocity : missing_value; }},
       {"t_end", [](const auto& r) { return r.stats.t_reached; }},
       {"steps", [](const auto& r) { return double(r.stats.steps); }},
       {"rhs_evaluations", [](const auto& r) { return double(r.stats.rhs_evaluations); }}};
@@ -53,7 +53,7 @@ const Extractors<sim::ModelBrightResult>& bright_scalars() {
 
 // The largest relative disagreement of the measured and predicted frequency shifts (NaN: none).
 double max_relative_disagreement(const sim::RingRunResult& r) {
-  double most = none;
+  double most = missing_value;
   for (const auto& a : r.amplitudes)
     if (a.relative_disagreement && !(*a.relative_disagreement <= most)) most = *a.relative_disagreement;
   return most;
@@ -61,7 +61,7 @@ double max_relative_disagreement(const sim::RingRunResult& r) {
 
 // The scalars of a ring run (ring_outputs.cpp): the prediction, the first amplitude's frequencies,
 // the worst disagreement over the amplitudes, the packet.
-const Extractors<sim::RingRunResult>& ring_scalars() {
+const Extractors<sim::RingRunResult>& ring_run_scalars() {
   static const Extractors<sim::RingRunResult> e{
       {"omega", [](const auto& r) { return r.omega; }},
       {"h", [](const auto& r) { return r.h; }},
@@ -69,23 +69,23 @@ const Extractors<sim::RingRunResult>& ring_scalars() {
       {"sites", [](const auto& r) { return double(r.sites); }},
       {"mode_number", [](const auto& r) { return double(r.mode_number); }},
       {"measured_frequency",
-       [](const auto& r) { return r.amplitudes.at(0).broke_up_at ? none : r.amplitudes.at(0).measured_frequency; }},
+       [](const auto& r) { return r.amplitudes.at(0).broke_up_at ? missing_value : r.amplitudes.at(0).measured_frequency; }},
       {"predicted_frequency", [](const auto& r) { return r.amplitudes.at(0).predicted_frequency; }},
-      {"relative_disagreement", [](const auto& r) { return or_none(r.amplitudes.at(0).relative_disagreement); }},
+      {"relative_disagreement", [](const auto& r) { return value_or_nan(r.amplitudes.at(0).relative_disagreement); }},
       {"max_relative_disagreement", [](const auto& r) { return max_relative_disagreement(r); }},
       {"packet_speed", [](const auto& r) { return r.packet_speed; }},
-      {"packet_relative_disagreement", [](const auto& r) { return or_none(r.packet_relative_disagreement); }}};
+      {"packet_relative_disagreement", [](const auto& r) { return value_or_nan(r.packet_relative_disagreement); }}};
   return e;
 }
 
 template <class Result>
-void reduce(const Result& r, const Extractors<Result>& e, JobResult& out) {
+void reduce_model_run(const Result& r, const Extractors<Result>& e, JobResult& out) {
   append_scalars(r, e, out.scalars);
   out.status = PointStatus::ok;
 }
 
 // A ConfigError at the top-level key `key` of the base config.
-lrchain::config::ConfigError error_at(const lrchain::config::CheckedTable& root, const std::string& key, const std::string& what) {
+lrchain::config::ConfigError base_key_error(const lrchain::config::CheckedTable& root, const std::string& key, const std::string& what) {
   const long line = root.line(key) ? root.line(key) : root.line();
   return lrchain::config::ConfigError(fmt::format("invalid value for '{}' in the top level at {}:{}: {}", key, root.source(), line, what),
                              root.source(), line, root.path(), key);
@@ -117,7 +117,7 @@ std::shared_ptr<const ModelSource> load_base_model(const std::string& kind, cons
     source = std::make_shared<const ModelSource>(file, "model", std::move(compiler), lattice_run);
     if (lattice_run) source->lattice();
   } catch (const InputError& e) {
-    throw error_at(root, "model", e.what());
+    throw base_key_error(root, "model", e.what());
   }
   // The base's own parameter values: an unknown name or a value outside its range at its line.
   if (const auto parameters = root.table("parameters"))
@@ -126,7 +126,7 @@ std::shared_ptr<const ModelSource> load_base_model(const std::string& kind, cons
 }
 
 std::vector<std::string> model_job_scalar_names(const std::string& kind) {
-  return kind == "ring" ? names_of(ring_scalars()) : names_of(bright_scalars());
+  return kind == "ring" ? names_of(ring_run_scalars()) : names_of(model_bright_scalars());
 }
 
 const lrchain::config::TableSchema& model_job_schema(const std::string& kind) {
@@ -156,14 +156,14 @@ JobResult run_model_job(const std::string& kind, const ModelSource& source, cons
     if (kind == "ring") {
       prepare(model, mc.ring, mc.branch);
       const sim::RingRunResult ring = simulate_ring(model, kernels, mc.ring, {}, no_files, control.stop).result;
-      reduce(ring, ring_scalars(), r);
+      reduce_model_run(ring, ring_run_scalars(), r);
       if (ring.failure) {  // a plane wave broke up: `lrchain simulate` exits 3 with this reason
         r.status = PointStatus::numerical_failure;
         r.reason = *ring.failure;
       }
     } else {
       prepare(model, mc.bright, mc.branch);
-      reduce(simulate_model_bright(model, kernels, mc.bright, {}, no_files, control.stop).result, bright_scalars(), r);
+      reduce_model_run(simulate_model_bright(model, kernels, mc.bright, {}, no_files, control.stop).result, model_bright_scalars(), r);
     }
   } catch (const Interrupted&) {
     r = JobResult{PointStatus::missing, "interrupted", {}, 0, {}};

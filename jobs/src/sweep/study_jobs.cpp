@@ -30,7 +30,7 @@ using namespace lrchain::sim;  // the numerics this job layer runs
 namespace {
 
 using namespace lrchain::config;
-constexpr double none = std::numeric_limits<double>::quiet_NaN();
+constexpr double no_scalar = std::numeric_limits<double>::quiet_NaN();
 
 // [dark]: the options of `lrchain dark continue`.
 std::shared_ptr<const TableSchema> dark_table() {
@@ -223,7 +223,7 @@ int stability_code(const sim::dark::FloquetResult& f) {
 // The branch reduced to the scalars of dark_scalar_names() and one row per point.
 void reduce_branch(const sim::dark::BranchResult& br, double omega_b, double omega_edge, int newton_iterations, JobResult& r) {
   const auto& pts = br.points;
-  double low = none, high = none, max_mod = 0, max_real = 1, max_osc = 1, max_E = 0, stable_extent = 0, unstable_extent = 0;
+  double low = no_scalar, high = no_scalar, max_mod = 0, max_real = 1, max_osc = 1, max_E = 0, stable_extent = 0, unstable_extent = 0;
   int stable = 0, real = 0, doubling = 0, oscillatory = 0, stable_windows = 0, unstable_windows = 0, part = 0;
   double last_tangent = -1;
   for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -250,7 +250,7 @@ void reduce_branch(const sim::dark::BranchResult& br, double omega_b, double ome
                                  double(b.iterations)});
   }
   r.scalars = {omega_b, omega_edge, double(newton_iterations), double(pts.size()), double(br.turning_points.size()),
-               br.turning_points.empty() ? none : br.turning_points.front(), low, high, double(stable), double(real),
+               br.turning_points.empty() ? no_scalar : br.turning_points.front(), low, high, double(stable), double(real),
                double(doubling), double(oscillatory), double(stable_windows), double(unstable_windows), stable_extent,
                unstable_extent, max_mod, max_real, max_osc, max_E};
 }
@@ -330,9 +330,9 @@ JobResult run_regime(const Document& doc, const ModelSource* source) {
       r.rows.insert(r.rows.end(), {double(b), i.lo, i.hi, i.hi - i.lo, double(int(i.lo_cause)), double(int(i.hi_cause))});
     }
     const bool any = !s.intervals.empty();
-    r.scalars.insert(r.scalars.end(), {double(s.intervals.size()), length, any ? s.intervals.front().lo : none,
-                                       any ? s.intervals.front().hi : none, any ? s.intervals.back().lo : none,
-                                       any ? s.intervals.back().hi : none});
+    r.scalars.insert(r.scalars.end(), {double(s.intervals.size()), length, any ? s.intervals.front().lo : no_scalar,
+                                       any ? s.intervals.front().hi : no_scalar, any ? s.intervals.back().lo : no_scalar,
+                                       any ? s.intervals.back().hi : no_scalar});
   }
   r.status = PointStatus::ok;
   return r;
