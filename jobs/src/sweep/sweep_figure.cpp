@@ -10,6 +10,8 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/focusing_intervals.hpp"
+#include "lrchain/regime/model_regime.hpp"
+#include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
 #include "lrchain/jobs/gnuplot_text.hpp"
 #include "lrchain/sim/least_squares.hpp"
@@ -24,9 +26,18 @@ namespace {
 
 // The theta values where a focusing interval of the base config's chain begins or ends.
 std::vector<double> focusing_boundaries(const Job& job) {
-  const BrightRunConfig b = load_experiment_config(job.base()).bright;
+  std::vector<regime::FocusingInterval> intervals;
+  if (const ModelSource* source = job.model_source()) {
+    // A model file's base: its branch at the base's [parameters].
+    const ModelExperimentConfig mc = load_model_experiment_config(job.base());
+    const Model model = source->model(mc.parameters);
+    intervals = regime::focusing_intervals(model, model.branch(mc.branch));
+  } else {
+    const BrightRunConfig b = load_experiment_config(job.base()).bright;
+    intervals = regime::focusing_intervals(b.params, b.branch);
+  }
   std::vector<double> ends;
-  for (const auto& i : regime::focusing_intervals(b.params, b.branch)) {
+  for (const auto& i : intervals) {
     if (i.lo > 0) ends.push_back(i.lo);
     ends.push_back(i.hi);
   }
