@@ -1,0 +1,71 @@
+// The figures lrchain draws, checked in their gnuplot scripts and file lists without looking at
+// them: text from a model shown as written (no underscore read as a subscript), the drawn files
+// named in the figure format, markers and ranges that show the data as they are.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "../support/gnuplot_script_checks.hpp"
+#include "../support/scratch_dir.hpp"
+#include "lrchain/jobs/regime_job.hpp"
+#include "lrchain/model.hpp"
+#include "lrchain/sim/figure_format.hpp"
+#include "lrchain/sim/output_files.hpp"
+
+namespace fs = std::filesystem;
+using namespace lrchain;
+using namespace lrchain::jobs;
+using lrchain::test::file_text;
+using lrchain::test::scratch_directory;
+using lrchain::test::unescaped_underscores_in_text;
+
+namespace {
+
+// A small regime map of the shipped Klein-Gordon model over its parameter b, with its boundary
+// curves (omega'' = 0 crosses the band at theta = pi/2).
+RegimeMapResult klein_gordon_map(bool figures) {
+  RegimeMapConfig c;
+  c.lattice.model = std::make_shared<const Model>(shipped_model("klein_gordon", {{"C", 0.5}}));
+  c.axis = std::string("b");  // a move (GCC 12 warns falsely on assigning a literal here)
+  c.axis_range = Range{-1.0, 1.0};
+  c.nx = 24;
+  c.ny = 24;
+  c.figures = figures;
+  return run(c);
+}
+
+}  // namespace
+
+TEST_CASE("figure scripts: a model's regime map shows its name and boundary names as written") {
+  const fs::path dir = scratch_directory("figure-regime-model");
+  const RegimeMapResult r = klein_gordon_map(false);
+  sim::Figures figures(dir);
+  const RegimeMapFiles files = write(r, dir, figures);
+  const std::string script = file_text(dir / "regime_theta-b.gp");
+  REQUIRE(script.find("boundary_theta-b_branch0_curvature_zero.csv") != std::string::npos);  // a boundary is drawn
+  CHECK(script.find("klein\\_gordon") != std::string::npos);
+  CHECK(unescaped_underscores_in_text(script) == std::vector<std::string>{});
+  // The legend names the colours of the map.
+  CHECK(script.find("title 'focusing'") != std::string::npos);
+  CHECK(script.find("title 'defocusing'") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("figure scripts: a model's regime map drawn as SVG lists the SVG file") {
+  const fs::path dir = scratch_directory("figure-regime-svg");
+  sim::set_figure_format(sim::FigureFormat::svg);
+  const RegimeMapResult r = klein_gordon_map(true);
+  sim::Figures figures(dir);
+  const RegimeMapFiles files = write(r, dir, figures);
+  sim::set_figure_format(sim::FigureFormat::png);
+  REQUIRE(files.drawn.size() == 1);
+  REQUIRE(files.drawn[0] == std::optional<bool>(true));  // gnuplot drew it
+  const auto& listed = files.files[0];
+  CHECK(std::find(listed.begin(), listed.end(), "regime_theta-b.svg") != listed.end());
+  CHECK(std::find(listed.begin(), listed.end(), "regime_theta-b.png") == listed.end());
+  for (const auto& f : listed) CHECK(fs::is_regular_file(dir / f));
+  fs::remove_all(dir);
+}
