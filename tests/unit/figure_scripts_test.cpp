@@ -6,13 +6,17 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <numbers>
 #include <string>
 
 #include "../support/gnuplot_script_checks.hpp"
 #include "../support/scratch_dir.hpp"
 #include "lrchain/jobs/regime_job.hpp"
+#include "lrchain/jobs/simulate/model_bright_outputs.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/figure_format.hpp"
+#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/model_lattice_bloch.hpp"
 #include "lrchain/sim/output_files.hpp"
 
 namespace fs = std::filesystem;
@@ -67,5 +71,25 @@ TEST_CASE("figure scripts: a model's regime map drawn as SVG lists the SVG file"
   CHECK(std::find(listed.begin(), listed.end(), "regime_theta-b.svg") != listed.end());
   CHECK(std::find(listed.begin(), listed.end(), "regime_theta-b.png") == listed.end());
   for (const auto& f : listed) CHECK(fs::is_regular_file(dir / f));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("figure scripts: errors.png of a model bright run marks the ansatz at every site") {
+  // fput at theta = pi/4: a carrier of 8 sites' period. Markers at every second site sat off the
+  // crests (cos(pi/4) = 0.71 of them), 30 % below the lattice curve where the data agree to 1 %.
+  const fs::path dir = scratch_directory("figure-model-bright");
+  const Model model = shipped_model("fput");
+  sim::ModelBrightConfig c;
+  c.branch = model.branch("acoustic");
+  c.theta = std::numbers::pi / 4;
+  c.N = 40;
+  c.periods = 1;
+  const sim::ModelBrightResult r = sim::run_model_bright(model, sim::lattice_kernels_of(model), c);
+  write_model_bright_outputs(dir, r, nlohmann::json::object(), true);  // the scripts come with the figures
+  const std::string script = file_text(dir / "errors.gp");
+  const std::size_t ansatz = script.find("using 1:3 skip 1 with points");
+  REQUIRE(ansatz != std::string::npos);
+  CHECK(script.find("every") == std::string::npos);  // no data point left out
+  CHECK(fs::is_regular_file(dir / "errors.png"));     // gnuplot ran the script (its stats of the profile)
   fs::remove_all(dir);
 }
