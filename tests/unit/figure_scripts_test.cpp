@@ -11,11 +11,13 @@
 
 #include "../support/gnuplot_script_checks.hpp"
 #include "../support/scratch_dir.hpp"
+#include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/jobs/simulate/model_bright_outputs.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/model_lattice.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 #include "lrchain/sim/output_files.hpp"
 
@@ -91,5 +93,32 @@ TEST_CASE("figure scripts: errors.png of a model bright run marks the ansatz at 
   REQUIRE(ansatz != std::string::npos);
   CHECK(script.find("every") == std::string::npos);  // no data point left out
   CHECK(fs::is_regular_file(dir / "errors.png"));     // gnuplot ran the script (its stats of the profile)
+  fs::remove_all(dir);
+}
+
+TEST_CASE("figure scripts: a model's dark branch above its edge is drawn, named by its own branch") {
+  // klein_gordon (b = 1/2): h_tilde > 0 at its theta = 0 edge omega = 1, so the breathers lie above
+  // the edge. The x range reached from the lowest point (or the edge) to the edge only: every point
+  // fell outside the frame and gnuplot drew nothing.
+  const fs::path dir = scratch_directory("figure-dark-branch");
+  const Model model = shipped_model("klein_gordon");
+  jobs::dark::DarkConfig c;
+  c.step = jobs::dark::DarkStep::branch;
+  c.model = &model;
+  c.kernels = sim::shipped_lattice_kernels("klein_gordon");
+  c.omega_b = 1.002;
+  c.sites = 40;
+  c.points = 3;
+  c.branch_floquet = false;
+  c.out = dir.string();
+  const jobs::dark::DarkResult r = jobs::dark::run(c);
+  REQUIRE(r.branch.points.size() == 3);
+  REQUIRE(r.edge.omega < c.omega_b);
+  const nlohmann::json j = jobs::dark::write(r, dir);
+  CHECK(fs::is_regular_file(dir / "branch.png"));
+  const std::string script = file_text(dir / "branch.gp");
+  CHECK(script.find("branch0 bond-centred") != std::string::npos);
+  CHECK(script.find("optical") == std::string::npos);
+  CHECK(script.find("eq. (51)") == std::string::npos);  // the resonant chain's equation
   fs::remove_all(dir);
 }
