@@ -13,6 +13,7 @@
 #include "../support/scratch_dir.hpp"
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/jobs/regime_job.hpp"
+#include "lrchain/jobs/simulate/bright_outputs.hpp"
 #include "lrchain/jobs/simulate/model_bright_outputs.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/figure_format.hpp"
@@ -25,6 +26,8 @@ namespace fs = std::filesystem;
 using namespace lrchain;
 using namespace lrchain::jobs;
 using lrchain::test::file_text;
+using lrchain::test::multiplot_panels;
+using lrchain::test::panels_overlap;
 using lrchain::test::scratch_directory;
 using lrchain::test::unescaped_underscores_in_text;
 
@@ -120,5 +123,30 @@ TEST_CASE("figure scripts: a model's dark branch above its edge is drawn, named 
   CHECK(script.find("branch0 bond-centred") != std::string::npos);
   CHECK(script.find("optical") == std::string::npos);
   CHECK(script.find("eq. (51)") == std::string::npos);  // the resonant chain's equation
+  fs::remove_all(dir);
+}
+
+TEST_CASE("figure scripts: snapshots.png of a long bright run shows the early errors beside E_x, E_y, not over them") {
+  // The paper chain's optical breather at theta = pi/2 (exp1) for 150 T_b = 433 > 400: the run
+  // that gets the t <= 200 panel. An inset over the E_x, E_y panel hid E_x for t = 300-530 in exp1.
+  const fs::path dir = scratch_directory("figure-bright-snapshots");
+  sim::BrightRunConfig c;
+  c.branch = Branch::optical;
+  c.theta = std::numbers::pi / 2;
+  c.N = 100;
+  c.periods = 150;
+  c.snapshot_periods = {0, 150};
+  const sim::BrightRunResult r = sim::run_bright(c);
+  write_bright_outputs(dir, r, nlohmann::json::object(), true);
+  const std::string script = file_text(dir / "snapshots.gp");
+  REQUIRE(script.find("t ≤ 200") != std::string::npos);  // the early errors are drawn
+  const auto panels = multiplot_panels(script);
+  REQUIRE(panels.size() == 4);  // x_n, y_n, E_x and E_y, the early E_x and E_y
+  for (std::size_t a = 0; a < panels.size(); ++a)
+    for (std::size_t b = a + 1; b < panels.size(); ++b) {
+      INFO("panels " << a << " and " << b);
+      CHECK(!panels_overlap(panels[a], panels[b]));
+    }
+  CHECK(fs::is_regular_file(dir / "snapshots.png"));
   fs::remove_all(dir);
 }
