@@ -4,18 +4,25 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <filesystem>
+#include <iterator>
 #include <memory>
 #include <numbers>
 #include <string>
 
 #include "../support/gnuplot_script_checks.hpp"
 #include "../support/scratch_dir.hpp"
+#include "sweep_test_files.hpp"
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/jobs/simulate/bright_outputs.hpp"
+#include "lrchain/jobs/sweep/sweep_config.hpp"
+#include "lrchain/jobs/sweep/sweep_figure.hpp"
 #include "lrchain/jobs/simulate/model_bright_outputs.hpp"
 #include "lrchain/model.hpp"
+#include "lrchain/process.hpp"
 #include "lrchain/sim/figure_format.hpp"
 #include "lrchain/sim/model_bright_run.hpp"
 #include "lrchain/sim/model_lattice.hpp"
@@ -148,5 +155,84 @@ TEST_CASE("figure scripts: snapshots.png of a long bright run shows the early er
       CHECK(!panels_overlap(panels[a], panels[b]));
     }
   CHECK(fs::is_regular_file(dir / "snapshots.png"));
+  fs::remove_all(dir);
+}
+
+namespace {
+
+// The figure of a 3 x 2 grid sweep of max_Ex over (`x_axis`, detuning) with made-up values
+// (log10 = point index - 3, NaN at point 3), written into `dir`; returns its script.
+std::string sweep_figure_script(const fs::path& dir, const std::string& x_axis, const std::string& x_values) {
+  lrchain::test::write_text(dir / "base.toml", lrchain::test::short_bright_base);
+  lrchain::test::write_text(dir / "s.toml", "job = \"bright\"\nname = \"figure\"\nbase = \"base.toml\"\noutput = \"" +
+                                                (dir / "s.h5").string() + "\"\nfigure = \"max_Ex\"\n[[axis]]\nparameter = \"" +
+                                                x_axis + "\"\nvalues = " + x_values +
+                                                "\n[[axis]]\nparameter = \"bright.detuning\"\nvalues = [-1e-4, -1e-2]\n");
+  const jobs::sweep::SweepConfig c = jobs::sweep::load_sweep_config(dir / "s.toml");
+  const jobs::sweep::Job job = jobs::sweep::make_job(c);
+  jobs::sweep::SweepResults r(job, 6);
+  const auto& names = r.scalar_names;
+  const std::size_t s = std::size_t(std::find(names.begin(), names.end(), "max_Ex") - names.begin());
+  for (std::size_t p = 0; p < 6; ++p) r.scalars[s * 6 + p] = p == 3 ? std::nan("") : std::pow(10.0, double(p) - 3);
+  jobs::sweep::write_sweep_figures(c, job, r, "max_Ex");
+  return file_text(dir / "s_max_Ex.gp");
+}
+
+}  // namespace
+
+TEST_CASE("figure scripts: the sweep heat map draws each point as a cell of its own colour around it") {
+  // pm3d coloured each quadrangle from its corners: cells shifted by half a step, the last row and
+  // column gone, and every quadrangle next to a NaN dropped. Here gnuplot tabulates what the script
+  // draws, box by box: each box must hold its own point and its own value.
+  if (!lrchain::program_in_path("gnuplot")) return;
+  const fs::path dir = scratch_directory("figure-sweep-cells");
+  std::string script = sweep_figure_script(dir, "bright.theta", "[1.2, 1.4, 1.8]");
+  CHECK(script.find("pm3d") == std::string::npos);
+  CHECK(script.find("dashed: focusing interval ends") != std::string::npos);  // 1.8916 is inside the last cell
+  CHECK(script.find("set arrow from 1.89") != std::string::npos);
+  const std::string style = " with boxxyerror fillstyle solid 1.0 noborder fillcolor palette notitle";
+  const std::size_t at = script.find(style);
+  REQUIRE(at != std::string::npos);
+  script.replace(at, style.size(), " with table");
+  script.replace(script.find("\nplot "), 6, "\nset table 'cells.txt'\nplot ");
+  lrchain::test::write_text(dir / "cells.gp", script);
+  lrchain::ProcessOptions o;
+  o.working_directory = dir;
+  REQUIRE(lrchain::run_program({"gnuplot", "cells.gp"}, o).ok());
+  std::istringstream cells(file_text(dir / "cells.txt"));
+  const double theta[] = {1.2, 1.4, 1.8}, detuning[] = {1e-4, 1e-2};
+  int boxes = 0, missing = 0;
+  for (std::string line; std::getline(cells, line);) {
+    double x, y, xlo, xhi, ylo, yhi, z;
+    if (std::sscanf(line.c_str(), "%lf %lf %lf %lf %lf %lf %lf", &x, &y, &xlo, &xhi, &ylo, &yhi, &z) != 7) continue;
+    const int i = int(std::min_element(std::begin(theta), std::end(theta),
+                                       [x](double a, double b) { return std::abs(a - x) < std::abs(b - x); }) -
+                      std::begin(theta));
+    const int j = y < 1e-3 ? 0 : 1;
+    INFO("point " << x << ", " << y);
+    CHECK(x == doctest::Approx(theta[i]));
+    CHECK(y == doctest::Approx(detuning[j]));
+    CHECK(xlo < x);
+    CHECK(x < xhi);
+    CHECK(ylo < y);
+    CHECK(y < yhi);
+    if (std::isnan(z)) {  // no value: gnuplot leaves the box out
+      CHECK(i * 2 + j == 3);
+      ++missing;
+      continue;
+    }
+    CHECK(z == doctest::Approx(double(i * 2 + j) - 3));  // its own value (point index i * 2 + j)
+    ++boxes;
+  }
+  CHECK(boxes == 5);
+  CHECK(missing == 1);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("figure scripts: the sweep heat map promises dashed focusing ends only where it draws them") {
+  const fs::path dir = scratch_directory("figure-sweep-title");
+  const std::string script = sweep_figure_script(dir, "bright.n0", "[-10, 0, 10]");
+  CHECK(script.find("dashed") == std::string::npos);
+  CHECK(script.find("set arrow") == std::string::npos);
   fs::remove_all(dir);
 }
