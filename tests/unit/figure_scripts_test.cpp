@@ -236,3 +236,25 @@ TEST_CASE("figure scripts: the sweep heat map promises dashed focusing ends only
   CHECK(script.find("set arrow") == std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("figure scripts: the dark stability atlas marks the band edge at each axis value, not as a line between them") {
+  // omega(pi) is known at the swept values only; a line between two of them drew values no run had.
+  const fs::path dir = scratch_directory("figure-sweep-stability");
+  jobs::sweep::SweepConfig c;
+  c.name = "atlas";
+  c.job = "dark continue";
+  c.axes = {{"model.rho", {0.5, 2.0}}};
+  c.output = dir / "atlas.h5";
+  c.figure = "stability";
+  jobs::sweep::SweepResults r({"first_turning_point", "omega_edge"}, 2, {"omega_b", "stability", "part"});
+  r.scalars = {2.2, 2.15, 2.35, 2.26};  // turning points, then band edges
+  r.rows = {{2.34, 0, 0, 2.3, 1, 1}, {2.25, 2, 0, 2.2, 1, 1}};
+  jobs::sweep::write_stability_figure(c, r);
+  const std::string script = file_text(dir / "atlas_stability.gp");
+  const std::size_t edge = script.find("title 'band edge omega(pi)'");
+  REQUIRE(edge != std::string::npos);
+  const std::string plot = script.substr(script.rfind("using 1:3", edge), edge - script.rfind("using 1:3", edge));
+  CHECK(plot.find("with points") != std::string::npos);
+  CHECK(plot.find("with lines") == std::string::npos);
+  fs::remove_all(dir);
+}

@@ -252,6 +252,8 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
   std::vector<std::string> files{stem + ".dat", stem + "_marks.dat"};
   const auto [lo, hi] = std::minmax_element(x.values.begin(), x.values.end());
   const std::string x_name = gnuplot_text(x.parameter);
+  // The band edge is known at the axis values only: a mark at each (a line between them invented
+  // the values in between).
   std::ostringstream gp;
   gp << "# Dark-breather branches in the (" << x_name << ", omega_b) plane from " << gnuplot_string(c.output.filename().string())
      << ". Re-run: gnuplot " << gnuplot_file_name(stem + ".gp") << "\n"
@@ -266,7 +268,7 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
      << "     '' using 1:($3 == 1 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#dd0000' title 'real-unstable', \\\n"
      << "     '' using 1:($3 == 2 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#0000dd' title 'oscillatory-unstable', \\\n"
      << "     " << gnuplot_file_name(stem + "_marks.dat") << " using 1:2 with points pointtype 2 pointsize 2 lw 2 lc rgb 'black' title 'turning point', \\\n"
-     << "     '' using 1:3 with lines dashtype 2 lc rgb 'gray40' title 'band edge omega(pi)'\n";
+     << "     '' using 1:3 with points pointtype '—' pointsize 2 lc rgb 'gray40' title 'band edge omega(pi)'\n";
   draw_figures(dir, {{stem + ".gp", gp.str(), stem + ".png"}}, files);
   return files;
 }
