@@ -85,6 +85,7 @@ set datafile separator ","
 set multiplot layout {},1
 set xlabel "t (model units)"
 set ylabel "relative error E_f of the lattice\nagainst the ansatz"
+set offsets 0, 0, graph 0.08, 0
 plot {}
 # The profiles where the breather is: the sites where |x_0| exceeds 1 % of its largest value.
 stats 'snapshot_final.csv' using 2 skip 1 nooutput name "X"
