@@ -88,31 +88,24 @@ py::dict evolve_job(const Params& p, double omega_b, const std::string& branch, 
   return d;
 }
 
-// The dark job's option schema (dark_schema.hpp) as a list of dicts; lrchain.dark's defaults.
-py::list options_schema() {
+// A job's option schema (option_schema.hpp) as a list of dicts: what the Python functions take their
+// defaults and docstrings from.
+py::list options_schema(const std::vector<jobs::JobOption>& options) {
   const py::object loads = py::module_::import("json").attr("loads");
   py::list out;
-  for (const DarkOption& o : dark_options()) {
-    py::dict d;
-    d["key"] = o.key;
-    d["cli"] = o.cli;
-    d["python"] = o.python;
-    d["steps"] = o.steps;
-    d["default"] = loads(o.default_value.dump());
-    d["required"] = o.required;
-    d["range"] = o.range;
-    d["doc"] = o.doc;
-    d["help"] = help_text(o);
-    out.append(d);
-  }
+  for (const jobs::JobOption& o : options) out.append(loads(jobs::to_json(o).dump()));
   return out;
 }
 
 }  // namespace
 
 void register_dark(py::module_& m) {
-  m.def("dark_options", &options_schema,
+  m.def("dark_options", [] { return options_schema(dark_options()); },
         "The dark job's options: key, cli, python, steps, default, required, range, doc, help (the CLI's text).");
+  m.def("job_options", [](const std::string& job) { return options_schema(jobs::job_options(job)); }, py::arg("job"),
+        "A job's options (\"bright\", \"coeffs\", \"regime map\", ...; job_names()): key, cli, python, steps, "
+        "default, required, range, doc, help (the CLI's text), default_text.");
+  m.def("job_names", &jobs::job_names, "The jobs that have an option schema (job_options).");
   m.def("dark_solve", &solve_job, py::arg("params"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("floquet"),
         py::arg("full_monodromy"));
