@@ -79,16 +79,29 @@ void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& fig
   // Grey: the band next to 1 where the symmetry multipliers lie, which the stability does not count.
   const bool turned = part >= 1;
   const double symmetry_band = sim::dark::FloquetOptions{}.symmetry_tolerance;
+  // Every panel over the branch's omega_b (3 % beyond its ends, at least 1e-6), the tics with the
+  // decimals that tell them apart (a branch that moved 2e-6 in omega_b had its tics all "1.002000").
+  double first = r.branch.points.empty() ? omega_edge : r.branch.points.front().omega_b, last = first;
+  for (const auto& b : r.branch.points) {
+    first = std::min(first, b.omega_b);
+    last = std::max(last, b.omega_b);
+  }
+  const double spread = std::max(last - first, 1e-6 * std::max(1.0, std::abs(first)));
+  const int decimals = std::max(0, int(std::ceil(-std::log10(spread))) + 1);
   std::string moduli = fmt::format(
       "if (!exists(\"outfile\")) outfile = 'floquet_moduli.png'\n"
       "set terminal pngcairo size 1000,{3}\nset output outfile\n"
       "set datafile separator ','\nset xlabel 'breather frequency ω_{{b}}'\nset ylabel 'Floquet modulus |λ|'\n"
-      "set offsets graph 0.03, graph 0.03, graph 0.1, 0\nset key off\n"
+      "set xrange [{6:.12g}:{7:.12g}]\nset format x '%.{8}f'\n"
+      // Room below the lowest modulus as above the highest (a modulus next to 1 lay on the frame),
+      // the y range not widened to the next tic.
+      "set offsets 0, 0, graph 0.1, graph 0.05\nset autoscale yfix\nset key off\n"
       "set object 1 rectangle from graph 0, first 1 to graph 1, first {5:.6g} behind fillcolor rgb '#e4e4e4' "
       "fillstyle solid noborder\n"
       "set multiplot layout {4},1 title '{0} {1}-centred, {2}: Floquet moduli |λ| > 1 (blue: complex, red: real > 0, "
       "green: real < 0)'\n",
-      branch, c.center, label, turned ? 720 : 420, turned ? 2 : 1, 1 + symmetry_band);
+      branch, c.center, label, turned ? 720 : 420, turned ? 2 : 1, 1 + symmetry_band, first - 0.03 * spread,
+      last + 0.03 * spread, decimals);
   for (int p = 0; p < (turned ? 2 : 1); ++p) {
     const std::string select = p == 0 ? "$4==0" : "$4>=1";
     moduli += fmt::format("set title \"{}{}\"\n",
@@ -98,7 +111,7 @@ void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& fig
                                  : "");
     if (!unstable_in[p]) {
       moduli += "set yrange [0.9:1.1]\nset label 1 'all multipliers on the unit circle: linearly stable' at graph 0.5, graph 0.7 center\n"
-                "plot 'branch.csv' skip 1 u 1:(1) w l lc 'grey' dt 2\nunset label 1\nset autoscale y\n";
+                "plot 'branch.csv' skip 1 u 1:(1) w l lc 'grey' dt 2\nunset label 1\nset autoscale yfix\n";
       continue;
     }
     moduli += fmt::format("plot 'floquet_moduli.csv' skip 1 u 1:({0} && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue', "

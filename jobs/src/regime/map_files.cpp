@@ -228,7 +228,7 @@ void write_delta0_omega(const RegimeMapResult& r, const RegimeMapPanel& panel, c
      << "if (!exists('outfile')) outfile = 'regime_" << tag << ".png'\n"
      << "set terminal pngcairo size 1000,900 font 'DejaVu Sans,11'\nset output outfile\n"
      << "set datafile separator ','\n"
-     << "set multiplot layout 2,1 margins 0.09,0.76,0.07,0.95 spacing 0,0.12\n"
+     << "set multiplot layout 2,1 margins 0.09,0.71,0.07,0.95 spacing 0,0.12\n"
      << (r.delta0_log ? "set logscale x\n" : "") << "set xrange [" << panel.x.lo << ":" << panel.x.hi
      << "]\nset yrange [" << panel.y.lo << ":" << panel.y.hi << "]\n"
      << "set xlabel 'δ_0'\nset ylabel 'ω'\n"
