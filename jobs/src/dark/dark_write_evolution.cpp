@@ -100,13 +100,18 @@ void write_evolution(const DarkResult& r, const std::string& dir, sim::Figures& 
                   "set terminal pngcairo size 1500,{5}\nset output outfile\n"
                   "set datafile separator ','\n"
                   "set multiplot title '{0}: snapshots at t = 0 and t = {1:.1f} (left), space-time {6} (right)'\n"
-                  "set key outside top center horizontal\nset xrange [{2}:{3}]\nset xlabel 'site n'\n"
+                  "set key outside top center horizontal\nset xlabel 'site n'\n"
+                  // the snapshots half a site beyond the end sites and 5 % above and below the
+                  // curves (their markers lay on the frame), the maps over the sites' cells
+                  "set xrange [{10}:{11}]\nset offsets 0, 0, graph 0.05, graph 0.05\n"
                   "{7}"
+                  "set xrange [{2}:{3}]\nset offsets 0, 0, 0, 0\n"
                   "set datafile separator whitespace\n"
                   "set ylabel 't ({9})'\nset yrange [0:{1}]\n"
                   "{4}\nset colorbox\n{8}"
                   "unset multiplot\n",
-                  title, T, nmin, nmax, sim::viridis_palette, 450 * std::max<Index>(V, 2), maps, snapshots, right, time_unit),
+                  title, T, nmin, nmax, sim::viridis_palette, 450 * std::max<Index>(V, 2), maps, snapshots, right, time_unit,
+                  nmin - 0.5, nmax + 0.5),
       "evolution.png"});
   figures.draw({
       "diagnostics.gp",
