@@ -145,6 +145,10 @@ set lmargin at screen 0.57
 set rmargin at screen 0.97
 set xlabel "t (dimensionless)"
 set ylabel "energy centre X, eq. (41) (sites)" noenhanced
+# t over the run, X with room above and below (its ends lay on the frame's corners)
+set autoscale xfix
+set autoscale y
+set offsets 0, 0, graph 0.05, graph 0.05
 plot 'series.csv' using 1:5 skip 1 with lines lw 1.5 notitle
 unset multiplot
 )GP",
