@@ -74,7 +74,7 @@ std::string errors_script(const ModelBrightResult& r) {
         "set ylabel \"x_{0} = {1}\"\n"
         "plot 'snapshot_final.csv' using 1:{2} skip 1 with lines lw 1.5 title \"lattice\", \\\n"
         "     'snapshot_final.csv' using 1:{3} skip 1 with points pt 6 ps 0.7 lc rgb \"black\" title \"ansatz\"\n",
-        f, r.mean_flow ? fmt::format("u_{0}[n] − u_{0}[n−1] (strain)", f) : fmt::format("u_{}[n] (displacement)", f),
+        f, r.mean_flow ? fmt::format("u_{0}[n] − u_{0}[n−1] (strain, model units)", f) : fmt::format("u_{}[n] (displacement, model units)", f),
         2 * f + 2, 2 * f + 3);
   }
   return fmt::format(R"GP(# Relative error of the lattice against the NLS bright-breather ansatz per field, and the final profiles.
@@ -91,8 +91,9 @@ plot {}
 stats 'snapshot_final.csv' using 2 skip 1 nooutput name "X"
 peak = abs(X_max) > abs(X_min) ? abs(X_max) : abs(X_min)
 stats 'snapshot_final.csv' using ((abs($2) > 0.01*peak) ? $1 : NaN) skip 1 nooutput name "N"
-set xrange [N_min - 5 : N_max + 5]
-set xlabel "site n (end of the run, model units)"
+# five sites beyond them, and half a site more so that no marker lies on the frame
+set xrange [N_min - 5.5 : N_max + 5.5]
+set xlabel "site n (profile at the end of the run)"
 set key top right opaque box
 set offsets 0, 0, graph 0.05, graph 0.05
 {}unset multiplot
