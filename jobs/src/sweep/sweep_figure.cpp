@@ -211,6 +211,19 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
   return files;
 }
 
+namespace {
+
+// Tics at the swept values when there are at most 20 (on a log axis gnuplot labels only the
+// decades, which left the values of the columns unnamed); else gnuplot's own.
+std::string axis_value_tics(const std::vector<double>& values) {
+  if (values.size() > 20) return "";
+  std::string tics = "set format x '%.3g'\nset xtics (";
+  for (std::size_t k = 0; k < values.size(); ++k) tics += fmt::format("{}{:.17g}", k ? ", " : "", values[k]);
+  return tics + ")\n";
+}
+
+}  // namespace
+
 std::vector<std::string> write_stability_figure(const SweepConfig& c, const SweepResults& r) {
   if (c.axes.size() != 1 || r.row_names.empty()) throw InvalidParameter("figure", "needs a one-axis \"dark continue\" sweep");
   const Axis& x = c.axes[0];
@@ -263,6 +276,7 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
      << "set ylabel 'omega_b'\nset key outside right top\nset grid\n"
      << (x_log ? "set logscale x\n" : "")
      << fmt::format("set xrange [{}:{}]\n", shifted(*lo, -3), shifted(*hi, 3))
+     << axis_value_tics(x.values)
      << "set title '" << gnuplot_text(c.name) << ": dark-breather branches and their Floquet stability'\n"
      << "plot " << gnuplot_file_name(stem + ".dat") << " using 1:($3 == 0 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#009900' title 'stable', \\\n"
      << "     '' using 1:($3 == 1 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#dd0000' title 'real-unstable', \\\n"
