@@ -130,6 +130,24 @@ TEST_CASE("figure scripts: a model's dark branch above its edge is drawn, named 
   CHECK(script.find("branch0 bond-centred") != std::string::npos);
   CHECK(script.find("optical") == std::string::npos);
   CHECK(script.find("eq. (51)") == std::string::npos);  // the resonant chain's equation
+  // The model's name as written, through gnuplot_text (no underscore read as a subscript).
+  CHECK(script.find("klein\\_gordon") != std::string::npos);
+  CHECK(script.find("klein_gordon") == std::string::npos);
+  // floquet_moduli.png over the branch's omega_b, which moved by about 1e-6 here: tics with the
+  // decimals that tell them apart (gnuplot's default printed every tic as 1.002000).
+  const std::string moduli = file_text(dir / "floquet_moduli.gp");
+  double lo = 0, hi = 0;
+  int decimals = -1;
+  const std::size_t range = moduli.find("set xrange [");
+  REQUIRE(range != std::string::npos);
+  REQUIRE(std::sscanf(moduli.c_str() + range, "set xrange [%lf:%lf]", &lo, &hi) == 2);
+  const std::size_t format = moduli.find("set format x '%.");
+  REQUIRE(format != std::string::npos);
+  REQUIRE(std::sscanf(moduli.c_str() + format, "set format x '%%.%df'", &decimals) == 1);
+  CHECK(lo <= r.branch.points.front().omega_b);
+  CHECK(hi >= r.branch.points.back().omega_b);
+  CHECK(hi - lo < 1e-3);                            // the branch's own range, not the edge's
+  CHECK(std::pow(10.0, -decimals) <= (hi - lo) / 10);  // a tic step of a tenth of the range shows
   fs::remove_all(dir);
 }
 
@@ -155,6 +173,13 @@ TEST_CASE("figure scripts: snapshots.png of a long bright run shows the early er
       CHECK(!panels_overlap(panels[a], panels[b]));
     }
   CHECK(fs::is_regular_file(dir / "snapshots.png"));
+  // energy.png: the energy centre X(t) autoscaled with room above and below (the space-time
+  // panel's `set autoscale fix` put both ends of X(t) on the frame's corners).
+  const std::string energy = file_text(dir / "energy.gp");
+  const std::size_t centre = energy.find("set lmargin at screen 0.57");
+  REQUIRE(centre != std::string::npos);
+  CHECK(energy.find("set autoscale y\n", centre) != std::string::npos);
+  CHECK(energy.find("set offsets 0, 0, graph 0.05, graph 0.05\n", centre) != std::string::npos);
   fs::remove_all(dir);
 }
 
@@ -241,7 +266,7 @@ TEST_CASE("figure scripts: the dark stability atlas marks the band edge at each 
   // omega(pi) is known at the swept values only; a line between two of them drew values no run had.
   const fs::path dir = scratch_directory("figure-sweep-stability");
   jobs::sweep::SweepConfig c;
-  c.name = "atlas";
+  c.name = "x'; system('touch PWNED'); print '";  // a hostile name: shown, never run
   c.job = "dark continue";
   c.axes = {{"model.rho", {0.5, 2.0}}};
   c.output = dir / "atlas.h5";
@@ -256,5 +281,12 @@ TEST_CASE("figure scripts: the dark stability atlas marks the band edge at each 
   const std::string plot = script.substr(script.rfind("using 1:3", edge), edge - script.rfind("using 1:3", edge));
   CHECK(plot.find("with points") != std::string::npos);
   CHECK(plot.find("with lines") == std::string::npos);
+  CHECK(script.find("set xtics (0.5, 2)") != std::string::npos);  // the swept values named on the log axis
+  const std::string apostrophe = "\xE2\x80\x99";                  // a quote as shown (gnuplot_text.hpp)
+  CHECK(script.find("set title 'x" + apostrophe + "; system(" + apostrophe + "touch PWNED" + apostrophe + "); print " +
+                    apostrophe + ": dark-breather branches") != std::string::npos);
+  if (lrchain::program_in_path("gnuplot")) CHECK(fs::is_regular_file(dir / "atlas_stability.png"));  // drawn all the same
+  CHECK(!fs::exists(dir / "PWNED"));
+  CHECK(!fs::exists("PWNED"));
   fs::remove_all(dir);
 }
