@@ -39,6 +39,7 @@ void write_profile(const DarkResult& r, const std::string& dir, sim::Figures& fi
                   fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
                               "set terminal pngcairo size 1000,900\nset output outfile\n"
                               "set datafile separator ','\nset xlabel 'site n'\nset key outside\n"
+                              "set offsets 0, 0, graph 0.05, graph 0.05\n"  // no marker on the frame
                               "set xrange [{2}:{3}]\n"
                               "set multiplot layout 2,1 title 'dark breather ({0} centred), ω_{{b}} = {1:.5f}: Z(0), Z(T_{{b}}), seed eq. (48)'\n"
                               "set ylabel 'strain x_{{n}} (dimensionless)'\n"
@@ -78,6 +79,8 @@ void write_profile(const DarkResult& r, const std::string& dir, sim::Figures& fi
                 fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
                             "set terminal pngcairo size 1000,{5}\nset output outfile\n"
                             "set datafile separator ','\nset xlabel 'site n'\nset key outside\nset xrange [{6}:{7}]\n"
+                            // no marker on the frame; the panels' frames aligned whatever their y labels
+                            "set offsets 0, 0, graph 0.05, graph 0.05\nset lmargin 12\n"
                             "set multiplot layout {4},1 title '{0} dark breather ({1} centred), ω_{{b}} = {2:.5f}: Z(0), "
                             "Z(T_{{b}}), seed (model units)'\n{3}unset multiplot\n",
                             literal(c.model->name()), c.center, c.omega_b, panels, variables.size(),
