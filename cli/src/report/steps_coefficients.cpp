@@ -109,8 +109,8 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
       "if (!exists(\"outfile\")) outfile = 'coefficients.png'\n"
       "set terminal pngcairo size 1100,500 font 'DejaVu Sans,10' noenhanced\n"
       "set output outfile\nset datafile separator ','\nset multiplot layout 1,2\n"
-      "set xlabel 'wavenumber θ/π'\nset ylabel 'c, ω″, h̃ (dimensionless)'\nset yrange [-3:3]\n"
-      "set key font ',8'\nset grid\n"
+      "set xlabel 'wavenumber θ/π'\nset ylabel 'c, d²ω/dθ², h̃ (dimensionless)'\nset yrange [-3:3]\n"
+      "set key font ',9'\nset grid\n"
       // h̃ has poles (breakdown of the non-resonance conditions; the CSV samples close in on
       // each): the first sample past a pole, where h̃ changes sign between values not both near 0,
       // is left out of the line, which breaks it there instead of joining +inf to -inf; the line
@@ -123,10 +123,10 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
   for (const auto& [tag, label, corner] : {std::tuple{"rho_1_3", "ρ = 1/3", "left"}, std::tuple{"rho_10", "ρ = 10", "right"}}) {
     gp += fmt::format(
         "set key bottom {}\n"
-        "set title \"c (green), ω″ (red), h̃ (blue): {}; optical solid, acoustic dashed\"\n"
+        "set title \"c (green), d²ω/dθ² (red), h̃ (blue): {}; optical solid, acoustic dashed\"\n"
         "last8 = NaN; last9 = NaN\n"
         "plot '{f}' u 1:4 w l lc rgb '#1a9850' lw 2 t 'c₊', '{f}' u 1:5 w l lc rgb '#1a9850' dt 2 lw 2 t 'c₋', "
-        "'{f}' u 1:6 w l lc rgb '#d73027' lw 2 t 'ω″₊', '{f}' u 1:7 w l lc rgb '#d73027' dt 2 lw 2 t 'ω″₋', "
+        "'{f}' u 1:6 w l lc rgb '#d73027' lw 2 t 'd²ω₊/dθ²', '{f}' u 1:7 w l lc rgb '#d73027' dt 2 lw 2 t 'd²ω₋/dθ²', "
         "'{f}' u 1:(h8($8)) w l lc rgb '#4575b4' lw 2 t 'h̃₊', '{f}' u 1:(h9($9)) w l lc rgb '#4575b4' dt 2 lw 2 t 'h̃₋'\n",
         corner, label, fmt::arg("f", std::string("coefficients_") + tag + ".csv"));
   }
