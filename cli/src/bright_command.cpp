@@ -30,23 +30,23 @@ struct BrightArgs {
   bool json_out = false, quiet = false;
 };
 
-std::string help(const std::string& key) { return help_text(bright_breather_option(key)); }
+std::string bright_help(const std::string& key) { return help_text(bright_breather_option(key)); }
 
 void add_common(CLI::App& sub, BrightArgs& a) {
   BrightBreatherConfig& c = a.config;
   add_model_options(sub, a.chain, false);
-  CLI::Option* omega_b = add_number(sub, "--omega-b", c.omega_b, help("omega_b"));
+  CLI::Option* omega_b = add_number(sub, "--omega-b", c.omega_b, bright_help("omega_b"));
   if (bright_breather_option("omega_b").required) omega_b->required();
-  sub.add_option("--branch", c.branch, help("branch"))->type_name("NAME");
+  sub.add_option("--branch", c.branch, bright_help("branch"))->type_name("NAME");
   add_model_file_options(sub, a.model);
-  sub.add_option("--center", c.center, help("center"))
+  sub.add_option("--center", c.center, bright_help("center"))
       ->check(CLI::IsMember({"site", "bond"}).description(""))
       ->type_name("site|bond");
-  add_integer(sub, "--sites", c.sites, config::dark_sites.least, config::dark_sites.most, help("sites"));
-  add_number(sub, "--tail-tolerance", c.tail_tolerance, help("tail_tolerance"));
+  add_integer(sub, "--sites", c.sites, config::dark_sites.least, config::dark_sites.most, bright_help("sites"));
+  add_number(sub, "--tail-tolerance", c.tail_tolerance, bright_help("tail_tolerance"));
   sub.add_flag("--json", a.json_out, "print the JSON summary on one line (default: indented)");
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr (default: progress shown)");
-  sub.add_option("--out", c.out, help("out"))->type_name("DIR");
+  sub.add_option("--out", c.out, bright_help("out"))->type_name("DIR");
   add_max_memory(sub, c.max_memory);
   add_figure_format(sub);
 }
@@ -99,15 +99,15 @@ void register_bright(CLI::App& app) {
   auto* floq = bright->add_subcommand(
       "floquet", "Solve, then the Floquet multipliers of the monodromy matrix, the trivial +1 ones removed");
   add_common(*floq, *args);
-  add_number(*floq, "--unit-tolerance", args->config.unit_tolerance, help("unit_tolerance"));
+  add_number(*floq, "--unit-tolerance", args->config.unit_tolerance, bright_help("unit_tolerance"));
   add_examples(*floq, {"lrchain bright floquet --model fput --center bond --omega-b 2.05 --sites 61 --out out/bright"});
   floq->callback([args, floq] { run_job(*args, BrightStep::floquet, *floq); });
   auto* cont = bright->add_subcommand(
       "continue", "Solve, then pseudo-arclength continuation in omega_b away from the band edge, Floquet at every point");
   add_common(*cont, *args);
-  add_number(*cont, "--unit-tolerance", args->config.unit_tolerance, help("unit_tolerance"));
-  add_integer(*cont, "--points", args->config.points, config::dark_points.least, config::dark_points.most, help("points"));
-  add_number(*cont, "--ds", args->config.ds, help("ds"));
+  add_number(*cont, "--unit-tolerance", args->config.unit_tolerance, bright_help("unit_tolerance"));
+  add_integer(*cont, "--points", args->config.points, config::dark_points.least, config::dark_points.most, bright_help("points"));
+  add_number(*cont, "--ds", args->config.ds, bright_help("ds"));
   add_examples(*cont, {"lrchain bright continue --model klein_gordon --omega-b 1.19 --sites 61 --points 10 --out out/bright-branch"});
   cont->callback([args, cont] { run_job(*args, BrightStep::branch, *cont); });
 }

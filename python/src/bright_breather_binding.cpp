@@ -30,7 +30,7 @@ py::array_t<double> by_field(const Eigen::VectorXd& z, Index fields, Index sites
   return a;
 }
 
-py::dict solve_job(const LoadedModel& loaded, double omega_b, const std::optional<std::string>& branch,
+py::dict bright_solve_job(const LoadedModel& loaded, double omega_b, const std::optional<std::string>& branch,
                    const std::string& center, double sites, double tolerance, double max_iterations,
                    double tail_tolerance, double unit_tolerance, const std::string& step, double points, double ds,
                    bool branch_floquet) {
@@ -75,7 +75,7 @@ py::dict solve_job(const LoadedModel& loaded, double omega_b, const std::optiona
 }  // namespace
 
 void register_bright_breather(py::module_& m) {
-  m.def("bright_breather_solve", &solve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
+  m.def("bright_breather_solve", &bright_solve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("tail_tolerance"),
         py::arg("unit_tolerance"), py::arg("step"), py::arg("points"), py::arg("ds"), py::arg("branch_floquet"));
 }

@@ -72,7 +72,7 @@ py::object count_or_none(const std::optional<Index>& count) {
   return count ? py::object(py::int_(*count)) : py::object(py::none());
 }
 
-py::dict solve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
+py::dict model_dark_solve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
                    double sites, const std::string& mode, double tolerance, double max_iterations, bool floquet) {
   const DarkConfig c = model_config(floquet ? DarkStep::floquet : DarkStep::solve, loaded, omega_b, branch, center,
                                     sites, mode, tolerance, max_iterations);
@@ -130,7 +130,7 @@ py::dict evolve_job(const LoadedModel& loaded, double omega_b, std::optional<std
 }  // namespace
 
 void register_model_dark(py::module_& m) {
-  m.def("dark_model_solve", &solve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
+  m.def("dark_model_solve", &model_dark_solve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("floquet"));
   m.def("dark_model_continue", &continue_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"),
         py::arg("center"), py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"),

@@ -50,10 +50,10 @@ class Job {
   // its kind's schema here (ConfigError naming file, line and key). A model-file base has its model
   // and its lattice kernels loaded here, once (jobs::ModelSource: a shipped model's bytes, else the
   // file compiled by `compiler`; null: shipped model files only).
-  explicit Job(config::Document base, std::shared_ptr<const ModelCompiler> compiler = nullptr);
+  explicit Job(lrchain::config::Document base, std::shared_ptr<const ModelCompiler> compiler = nullptr);
 
   const std::string& kind() const noexcept { return kind_; }
-  const config::Document& base() const noexcept { return base_; }
+  const lrchain::config::Document& base() const noexcept { return base_; }
   // The loaded model of a model-file base (shared by copies of the job; its lattice() already
   // loaded, so threads only read it), or nullptr.
   const ModelSource* model_source() const noexcept { return model_.get(); }
@@ -67,7 +67,7 @@ class Job {
   bool has_parameter(const std::string& parameter) const;
   // A parameter whose key was renamed ("bright.N"): its old and new "table.key" and the note of
   // the schema's RenamedKey; nullopt for any other name.
-  std::optional<config::RenamedKey> renamed_parameter(const std::string& parameter) const;
+  std::optional<lrchain::config::RenamedKey> renamed_parameter(const std::string& parameter) const;
 
   // Runs one point. Never throws for a bad point: a value the config layer or the run's checks
   // refuse gives status `invalid`, a blow-up `blew_up`; `control.stop` ends the run early with
@@ -77,7 +77,7 @@ class Job {
   JobResult run(const Overrides& overrides, const sim::RunControl& control, JobWorkspace& workspace) const;
 
  private:
-  config::Document base_;
+  lrchain::config::Document base_;
   std::string kind_;
   std::shared_ptr<const ModelSource> model_;  // model-file bases: loaded once, shared by every point
   std::vector<std::string> scalar_names_, row_names_;
@@ -85,7 +85,7 @@ class Job {
 
 // The kind of a base config: its `experiment` key, one of the simulate kinds or the study kinds
 // (ConfigError naming the file and line otherwise).
-std::string job_kind(const config::Document& doc);
+std::string job_kind(const lrchain::config::Document& doc);
 // The jobs a sweep can run.
 std::vector<std::string> job_kinds();
 

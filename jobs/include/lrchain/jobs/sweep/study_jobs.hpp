@@ -27,13 +27,13 @@ namespace lrchain::jobs::sweep {
 const std::vector<std::string>& study_kinds();
 bool is_study_kind(std::string_view kind);
 // The base config's schema of a study kind (top level: experiment, [model], [dark] or [regime]).
-const config::TableSchema& study_schema(std::string_view kind);
+const lrchain::config::TableSchema& study_schema(std::string_view kind);
 // The schema of a model-file base of a study kind (experiment, model = "FILE", [parameters], and
 // [dark] or [regime]).
-const config::TableSchema& model_study_schema(std::string_view kind);
+const lrchain::config::TableSchema& model_study_schema(std::string_view kind);
 // Checks a base config of a study kind beyond its schema (ConfigError / InvalidParameter); `model`:
 // the loaded model of a model-file base (its [parameters] checked against it), else null.
-void check_study_config(std::string_view kind, const config::Document& doc, const ModelSource* model = nullptr);
+void check_study_config(std::string_view kind, const lrchain::config::Document& doc, const ModelSource* model = nullptr);
 
 // The scalars of a point; a model-file base's regime scalars are named after the model's branches.
 std::vector<std::string> study_scalar_names(std::string_view kind, const ModelDefinition* model = nullptr);
@@ -44,7 +44,7 @@ std::string study_rows_legend(std::string_view kind, const ModelDefinition* mode
 // Runs one point from its (overridden) base config (`model`: the loaded model of a model-file base);
 // InputError for a config the checks refuse, a failed Newton solve or continuation gives status
 // numerical_failure with the reason.
-JobResult run_study(std::string_view kind, const config::Document& doc, const sim::RunControl& control,
+JobResult run_study(std::string_view kind, const lrchain::config::Document& doc, const sim::RunControl& control,
                     const ModelSource* model = nullptr);
 
 }  // namespace lrchain::jobs::sweep

@@ -40,7 +40,7 @@ struct SweepConfig {
 };
 
 // The schema of a sweep file (for the docs and the checks).
-const config::TableSchema& sweep_schema();
+const lrchain::config::TableSchema& sweep_schema();
 // The reference of every key as Markdown (docs/sweeps.md holds it).
 std::string sweep_config_markdown();
 
