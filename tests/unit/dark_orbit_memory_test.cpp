@@ -6,7 +6,6 @@
 // (past 2.4 GB in the issue, 11.6 GB measured) on a guess with amplitudes of order 100.
 #include <doctest/doctest.h>
 
-#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -76,14 +75,14 @@ TEST_CASE("dark orbit: a long integration keeps at most chunk_steps step times, 
 TEST_CASE("dark orbit: an orbit oscillating ever faster is abandoned as NaN after a bounded number of steps" *
           doctest::test_suite("fast")) {
   // u = 1e5: on-site frequency ~ sqrt(3 b) 1e5 ~ 1.2e5, steps of ~1e-7 at the 1e-13 tolerance, far
-  // more than max_steps_per_time = 1e5 per time unit: abandoned after 1000 + 1e5 steps, none kept.
+  // more than max_steps_per_time = 1e4 per time unit: abandoned after 1000 + 1e4 steps, none kept.
   // (A first step of 1e-8 keeps the first trial finite; from initial_step = 0.02 it overflows at once.)
   const Index sites = 9;
   ContactIntegrationOptions capped;
   capped.initial_step = 1e-8;
+  capped.max_steps_per_time = 1e4;
   DarkOrbit orbit(klein_gordon(), {0.1, 1.0, 0.25, 0.5}, sites, false, capped);
   std::vector<double> state = staggered(sites, 1e5);
-  const auto start = std::chrono::steady_clock::now();
   orbit.integrate(state, 0.0, 1.0);
   for (double x : state) CHECK(std::isnan(x));
   std::vector<double> with_tangents = staggered(sites, 1e5);
@@ -92,9 +91,8 @@ TEST_CASE("dark orbit: an orbit oscillating ever faster is abandoned as NaN afte
   CHECK(std::isnan(with_tangents[0]));
   CHECK(std::isnan(phi(0, 0)));
   CHECK(orbit.recorded_step_capacity() <= DarkOrbit::chunk_steps);
-  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(30));
   // The step count abandons it, not min_step: without the cap the same orbit is integrated (finite)
-  // over 1e-2 time units, more steps than the cap allows there (1000 + 1e5 * 1e-2).
+  // over 1e-2 time units (~1e5 steps), more steps than the cap allows there (1000 + 1e4 * 1e-2).
   ContactIntegrationOptions uncapped = capped;
   uncapped.max_steps_per_time = 1e12;
   DarkOrbit fast(klein_gordon(), {0.1, 1.0, 0.25, 0.5}, sites, false, uncapped);
