@@ -83,8 +83,8 @@ std::vector<JobOption> make_bright() {
   const sim::BrightRunConfig d;
   const auto sites = sim::strain_site_count(d.N);
   std::vector<JobOption> o{
-      {"branch", "--branch", "branch", {}, std::string(to_string(d.branch)), true,
-       "optical or acoustic (with --model: a branch of the model, by default its only one)",
+      {"branch", "--branch", "branch", {}, std::string(to_string(d.branch)), false,
+       "optical or acoustic, required (with --model: a branch of the model, by default its only one)",
        "dispersion branch of the carrier", "{range}"},
       {"theta", "--theta", "theta", {}, std::numbers::pi / 2, true, "in (0, pi]", "carrier wavenumber",
        "{doc} {range}, e.g. pi/2", "pi/2"},
