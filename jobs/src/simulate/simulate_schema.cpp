@@ -93,7 +93,8 @@ std::vector<JobOption> make_bright() {
       both("sites", sites,
            fmt::format("odd, in [{}, {}] (with --model [{}, {}])", sim::bright_sites.least, sim::bright_sites.most,
                        sim::model_bright_sites.least, sim::model_bright_sites.most),
-           "odd number of strain sites 2N + 1, n = -N..N",
+           "odd number of lattice sites 2N + 1, n = -N..N (strains of the resonant chain and of translation-invariant "
+           "models, displacements of on-site models)",
            fmt::format("{{doc}} (default {{default}}, N = {}; with --model {} or more)", d.N,
                        sim::model_bright_sites.least)),
       both("periods", d.periods, "> 0", "run length in breather periods T_b"),
