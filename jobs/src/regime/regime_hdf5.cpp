@@ -1,6 +1,9 @@
 // The HDF5 files of the regime jobs (lrchain/jobs/regime_hdf5.hpp).
 #include "lrchain/jobs/regime_hdf5.hpp"
 
+#include <initializer_list>
+#include <utility>
+
 #include "lrchain/jobs/output_lock.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/hdf5_tree.hpp"
@@ -13,11 +16,13 @@ namespace {
 using sim::Hdf5Element;
 using sim::Hdf5TreeFile;
 
-// lrchain_result, the provenance attributes and the branch.
-void write_root(Hdf5TreeFile& file, const char* result_class, const nlohmann::json& model, const std::string& branch) {
+// lrchain_result, the provenance attributes, the branch and the result's other text attributes `texts`.
+void write_root(Hdf5TreeFile& file, const char* result_class, const nlohmann::json& model, const std::string& branch,
+                std::initializer_list<std::pair<const char*, std::string>> texts = {}) {
   file.write_attribute("/", "lrchain_result", std::string(result_class));
   sim::write_provenance_attributes(file, {{"model", model}, {"provenance", provenance_json()}});
   file.write_attribute("/", "branch", branch);
+  for (const auto& [name, text] : texts) file.write_attribute("/", name, text);
 }
 
 void write_vector(Hdf5TreeFile& file, const std::string& path, const std::vector<double>& v) {
@@ -81,22 +86,18 @@ std::vector<RegimeMapRecord> regime_map_records(const RegimeMapResult& result) {
 
 void write_intervals_hdf5(const std::filesystem::path& path, const IntervalsRecord& r) {
   Hdf5TreeFile file(path);
-  write_root(file, "Intervals", r.model, r.branch);
+  write_root(file, "Intervals", r.model, r.branch,
+             {{"lo_cause", nlohmann::json(r.lo_cause).dump()}, {"hi_cause", nlohmann::json(r.hi_cause).dump()},
+              {"root_cause", nlohmann::json(r.root_cause).dump()}});
   write_vector(file, "/lo", r.lo);
   write_vector(file, "/hi", r.hi);
   write_vector(file, "/roots", r.roots);
-  file.write_attribute("/", "lo_cause", nlohmann::json(r.lo_cause).dump());
-  file.write_attribute("/", "hi_cause", nlohmann::json(r.hi_cause).dump());
-  file.write_attribute("/", "root_cause", nlohmann::json(r.root_cause).dump());
   file.commit();
 }
 
 void write_regime_map_hdf5(const std::filesystem::path& path, const RegimeMapRecord& r) {
   Hdf5TreeFile file(path);
-  write_root(file, "RegimeMap", r.model, r.branch);
-  file.write_attribute("/", "plane", r.plane);
-  file.write_attribute("/", "x_name", r.x_name);
-  file.write_attribute("/", "y_name", r.y_name);
+  write_root(file, "RegimeMap", r.model, r.branch, {{"plane", r.plane}, {"x_name", r.x_name}, {"y_name", r.y_name}});
   write_vector(file, "/x", r.x);
   write_vector(file, "/y", r.y);
   file.write_dataset("/values", Hdf5Element::int8, r.values.data(), {r.y.size(), r.x.size()});
@@ -112,9 +113,7 @@ void write_regime_map_hdf5(const std::filesystem::path& path, const RegimeMapRec
 
 void write_boundary_curve_hdf5(const std::filesystem::path& path, const BoundaryCurveRecord& r) {
   Hdf5TreeFile file(path);
-  write_root(file, "BoundaryCurve", r.model, r.branch);
-  file.write_attribute("/", "axis", r.axis);
-  file.write_attribute("/", "y_name", r.y_name);
+  write_root(file, "BoundaryCurve", r.model, r.branch, {{"axis", r.axis}, {"y_name", r.y_name}});
   write_curve(file, "", r.curve);
   file.commit();
 }
