@@ -1,6 +1,7 @@
 // `lrchain simulate bright --model FILE ...` and `simulate --config` with `model = "FILE"` (bright or ring): the NLS
 // bright breather of any model file on its generated lattice (sim/model_bright_run.hpp).
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/jobs/simulate/model_bright_outputs.hpp"
 #include "lrchain/jobs/simulate/model_simulate_job.hpp"
 #include "lrchain/jobs/model_experiment_config.hpp"
 #include "model_option.hpp"
@@ -32,6 +34,8 @@ void run_and_report_model_bright(const ModelSelection& selection, const Model& m
                                        {out, *output.figures, *output.format}, stop);
   });
   print_model_run(report.summary, output, wall0);
+  for (const auto& warning : jobs::model_bright_warnings(report.result))
+    std::fprintf(stderr, "lrchain: warning: %s\n", warning.c_str());
 }
 
 }  // namespace

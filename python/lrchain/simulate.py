@@ -20,6 +20,7 @@ and the energy density e_n.
 """
 
 import json
+import warnings
 from dataclasses import dataclass, field
 import numpy as np
 
@@ -188,7 +189,7 @@ def bright(params=None, branch=_BRIGHT["branch"]["default"], theta=_BRIGHT["thet
             options["detuning"] = detuning
         with Bar(f"bright run of {model.name}", progress) as bar:
             out = python_names(lambda: _lrchain.simulate_model_bright(model, branch, options, bar.callback))
-        return _model_bright_result(out)
+        return _warned(_model_bright_result(out))
     options = _options(params=params, branch=branch, theta=theta, n0=n0, sites=sites, periods=periods,
                        sample_every=sample_every, spacetime_every=spacetime_every,
                        snapshot_periods=None if snapshot_periods is None else list(snapshot_periods),
@@ -245,6 +246,14 @@ class ModelBrightResult:
     def __repr__(self):
         return (f"ModelBrightResult({self.summary['model']['name']}, {len(self.t)} samples to t = {self.t[-1]:g}, "
                 f"max E_x = {self.summary['max_E_x']:.4g})")
+
+
+def _warned(result):
+    """Issues the run's own warnings (its summary's ``warnings``, the lines the command prints on
+    stderr) as RuntimeWarning, and returns the result."""
+    for text in result.summary.get("warnings") or []:
+        warnings.warn(text, RuntimeWarning, stacklevel=3)
+    return result
 
 
 def _model_bright_result(out):
@@ -319,11 +328,12 @@ def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, ste
         out = python_names(lambda: _lrchain.simulate_ring(model, branch, options, bar.callback))
     series = out["record"]["series"]
     names = list(series)
-    return RingResult(amplitude=out["amplitude"], measured_frequency=out["measured_frequency"],
-                      predicted_frequency=out["predicted_frequency"], measured_shift=out["measured_shift"],
-                      predicted_shift=out["predicted_shift"], relative_disagreement=out["relative_disagreement"],
-                      packet_t=series[names[0]], packet_centre=series[names[1]],
-                      summary=json.loads(out["summary_json"]))
+    return _warned(RingResult(amplitude=out["amplitude"], measured_frequency=out["measured_frequency"],
+                              predicted_frequency=out["predicted_frequency"], measured_shift=out["measured_shift"],
+                              predicted_shift=out["predicted_shift"],
+                              relative_disagreement=out["relative_disagreement"],
+                              packet_t=series[names[0]], packet_centre=series[names[1]],
+                              summary=json.loads(out["summary_json"])))
 
 
 @dataclass(frozen=True, repr=False)

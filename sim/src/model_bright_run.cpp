@@ -178,6 +178,17 @@ ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_ker
   std::vector<double> scale(fields, 0.0), error(fields), lattice(size), ua(size + fields), va(size + fields), e(sites);
   std::vector<double> centre_t, centre_x;
   bool first_sample = true;
+  // |energy| within end_zone_sites of either end over |energy| in all (energy densities of a
+  // potential without a lower bound may be negative, so magnitudes).
+  r.end_zone = std::min(end_zone_sites(e.size()), e.size() / 2);
+  const auto end_energy_fraction = [zone = r.end_zone](const std::vector<double>& density) {
+    double ends = 0, all = 0;
+    for (std::size_t i = 0; i < density.size(); ++i) {
+      all += std::abs(density[i]);
+      if (i < zone || i >= density.size() - zone) ends += std::abs(density[i]);
+    }
+    return all > 0 ? ends / all : 0.0;
+  };
   // x_f[i]: strain u_f[i] - u_f[i-1] (mean flow) or displacement u_f[i], sites i >= 1.
   const auto compared = [&](const double* U, std::size_t f, std::size_t i, std::size_t stride, std::size_t offset) {
     const double now = U[f * stride + i + offset];
@@ -207,6 +218,10 @@ ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_ker
       for (double v : e) energy += v;
       X = energy_centre(e, 100) + double(first);
       if (first_sample) r.energy0 = energy;
+      const double near_ends = end_energy_fraction(e);
+      r.max_end_energy_fraction = std::max(r.max_end_energy_fraction.value_or(0.0), near_ends);
+      // (Emitting ends let the breather leave: there it passes the end zone without harm.)
+      if (near_ends > end_energy_limit && !r.end_reached_at && !c.ansatz_ends) r.end_reached_at = t;
       r.max_energy_drift = std::max(r.max_energy_drift, std::abs(energy - r.energy0) / std::abs(r.energy0));
       centre_t.push_back(t);
       centre_x.push_back(X);

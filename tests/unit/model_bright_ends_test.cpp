@@ -61,3 +61,42 @@ TEST_CASE("model bright: ansatz ends make a short chain match a long one (klein_
     CHECK(fixed > 50 * emitting);
   }
 }
+
+TEST_CASE("model bright: a breather that runs into a fixed end is reported, one that stays inside is not" *
+          doctest::test_suite("fast")) {
+  // fput, theta = pi/2, detuning 1e-4: c = cos(pi/4) = 0.7071 (the textbook monatomic chain), width
+  // 1/a = 42 sites (a = 0.02378, the run's inverse_width), T_b = 4.443.
+  const Model model = shipped_model("fput");
+  ModelBrightConfig c;
+  c.branch = model.branch("acoustic");
+  c.theta = std::numbers::pi / 2;
+  c.detuning = 1e-4;
+  // 201 sites, n0 = -40: the left end is 1.4 widths away, a quarter of the energy is near it at once.
+  c.n0 = -40;
+  c.periods = 10;
+  c.N = 100;
+  const ModelBrightResult short_chain = run_model_bright(model, lattice_kernels_of(model), c);
+  CHECK(short_chain.end_zone == 10);  // 201 sites / 20
+  REQUIRE(short_chain.end_reached_at.has_value());
+  CHECK(*short_chain.end_reached_at == 0);
+  // The sech^2 envelope cut at the ends n = -100, 100 puts (tanh(60 a) - tanh(50 a))/(tanh(60 a) +
+  // tanh(140 a)) = 0.032 of the energy in n = -100..-90 at t = 0 (measured max 0.037).
+  const double a = short_chain.inverse_width;
+  CHECK(*short_chain.max_end_energy_fraction ==
+        doctest::Approx((std::tanh(60 * a) - std::tanh(50 * a)) / (std::tanh(60 * a) + std::tanh(140 * a))).epsilon(0.2));
+  // 601 sites, n0 = 0: the energy envelope sech^2(a (n - c t)) puts 1 % beyond n = 270 (the end zone)
+  // when a (270 - c t) = atanh(0.98) = 2.298, at t = (270 - 2.298/a)/c = 245.3. Measured 248.8.
+  c.n0 = 0;
+  c.N = 300;
+  c.periods = 80;
+  const ModelBrightResult runs_out = run_model_bright(model, lattice_kernels_of(model), c);
+  REQUIRE(runs_out.end_reached_at.has_value());
+  const double predicted = (270 - std::atanh(0.98) / runs_out.inverse_width) / runs_out.group_velocity;
+  CHECK(*runs_out.end_reached_at == doctest::Approx(predicted).epsilon(0.05));
+  // Over 40 T_b the same breather stays 2.9 widths from the zone: below 1 % (measured 0.096 %).
+  c.periods = 40;
+  const ModelBrightResult stays = run_model_bright(model, lattice_kernels_of(model), c);
+  CHECK_FALSE(stays.end_reached_at.has_value());
+  CHECK(*stays.max_end_energy_fraction < 0.01);
+  CHECK(*stays.max_end_energy_fraction > 1e-4);
+}

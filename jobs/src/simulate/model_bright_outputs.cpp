@@ -12,6 +12,23 @@ namespace lrchain::jobs {
 
 using namespace lrchain::sim;
 
+std::vector<std::string> model_bright_warnings(const ModelBrightResult& r) {
+  std::vector<std::string> warnings;
+  if (!r.end_reached_at) return warnings;
+  const double most = 100 * r.max_end_energy_fraction.value_or(0.0);
+  if (*r.end_reached_at == 0)
+    warnings.push_back(fmt::format("the lattice is too short for the breather (width 1/a = {:.3g} sites): {:.1f} % of "
+                                   "its energy is within {} sites of a fixed end (at most, over the run; above 1 % from the start); give more --sites",
+                                   1 / r.inverse_width, most, r.end_zone));
+  else
+    warnings.push_back(fmt::format("the breather reached a fixed end at t = {:.6g}: more than {:g} % of the energy "
+                                   "within {} sites of an end (at most {:.1f} %), so the run is no longer that of a "
+                                   "breather on an unbounded lattice; give more --sites, fewer --periods or "
+                                   "--ansatz-ends",
+                                   *r.end_reached_at, 100 * sim::end_energy_limit, r.end_zone, most));
+  return warnings;
+}
+
 nlohmann::json to_json(const Model& model, const ModelBrightConfig& c, const ModelBrightResult& r) {
   nlohmann::json j;
   j["experiment"] = "bright";
@@ -52,6 +69,10 @@ nlohmann::json to_json(const Model& model, const ModelBrightConfig& c, const Mod
   j["centre_speed"] = r.centre_speed ? nlohmann::json(*r.centre_speed) : nlohmann::json(nullptr);
   j["centre_speed_vs_c"] =
       r.centre_speed && r.group_velocity != 0 ? nlohmann::json(*r.centre_speed / r.group_velocity) : nlohmann::json(nullptr);
+  j["max_end_energy_fraction"] =
+      r.max_end_energy_fraction ? nlohmann::json(*r.max_end_energy_fraction) : nlohmann::json(nullptr);
+  j["end_reached_at"] = r.end_reached_at ? nlohmann::json(*r.end_reached_at) : nlohmann::json(nullptr);
+  j["warnings"] = model_bright_warnings(r);
   j["t_end"] = r.stats.t_reached;
   j["steps"] = r.stats.steps;
   j["rhs_evaluations"] = r.stats.rhs_evaluations;

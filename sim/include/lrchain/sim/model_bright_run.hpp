@@ -100,10 +100,22 @@ struct ModelBrightResult {
   std::vector<double> final_error;
   double energy0 = 0, max_energy_drift = 0;
   std::optional<double> centre_speed;     // least-squares slope of the energy centre (null: no energy)
+  // The largest share of the energy within end_zone_sites() of either fixed end, and the first time
+  // it exceeded end_energy_limit with fixed or free ends: the breather (or its tails) reached an end
+  // (null: never, no energy, or emitting ends).
+  std::optional<double> max_end_energy_fraction;
+  std::optional<double> end_reached_at;
+  std::size_t end_zone = 0;  // the sites counted at each end (end_zone_sites)
   IntegrationStats stats;
   double solve_seconds = 0;
   RunRecord record;                       // series t, E_0.., energy, X; final snapshot
 };
+
+// The sites at each end whose energy share end_energy_limit bounds: 1/20 of the lattice, at least 2.
+constexpr std::size_t end_zone_sites(std::size_t sites) { return sites / 20 > 2 ? sites / 20 : 2; }
+// 1 % of the energy near an end: more than the breather's sech tails hold on a lattice many widths
+// long, and more than the radiation a slowly drifting breather sheds over its run.
+constexpr double end_energy_limit = 0.01;
 
 ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_kernels& kernels,
                                    const ModelBrightConfig& c);
