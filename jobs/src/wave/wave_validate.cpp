@@ -12,6 +12,8 @@ namespace lrchain::jobs::wave {
 
 namespace {
 
+constexpr double kLargestAmplitude = 1000;  // an amplitude beyond any lattice's weakly or strongly nonlinear range
+
 void check_range(const char* key, double value, double low, double high, bool open_low, bool open_high) {
   const bool ok = std::isfinite(value) && (open_low ? value > low : value >= low) && (open_high ? value < high : value <= high);
   if (!ok)
@@ -30,10 +32,12 @@ void validate(const WaveConfig& c) {
   if (c.step == WaveStep::branch) {
     if (c.amplitudes.empty()) throw InvalidParameter("amplitudes", "is required: increasing amplitudes > 0");
     for (std::size_t i = 0; i < c.amplitudes.size(); ++i)
-      if (!std::isfinite(c.amplitudes[i]) || c.amplitudes[i] <= 0 || (i > 0 && c.amplitudes[i] <= c.amplitudes[i - 1]))
-        throw InvalidParameter("amplitudes", fmt::format("must be increasing and > 0 (entry {} is {})", i + 1, c.amplitudes[i]));
+      if (!std::isfinite(c.amplitudes[i]) || c.amplitudes[i] <= 0 || c.amplitudes[i] > kLargestAmplitude ||
+          (i > 0 && c.amplitudes[i] <= c.amplitudes[i - 1]))
+        throw InvalidParameter("amplitudes", fmt::format("must be increasing and in (0, {}] (entry {} is {})",
+                                                         kLargestAmplitude, i + 1, c.amplitudes[i]));
   } else {
-    check_range("amplitude", c.amplitude, 0, HUGE_VAL, true, true);
+    check_range("amplitude", c.amplitude, 0, kLargestAmplitude, true, false);
     check_range("ramp", double(c.ramp), 1, 1000, false, false);
   }
   check_range("initial_harmonics", double(c.initial_harmonics), 2, 256, false, false);

@@ -146,6 +146,14 @@ TravellingWave solve_travelling_wave(WaveLattice& lattice, const BlochMode& mode
       w.newton_steps = newton(lattice, grid, amplitude, mode.omega, o, U, w.omega, w.residual);
     } catch (const NumericalFailure& e) {
       w.profile = U;
+      lattice.prepare(grid, U);
+      Index bond = -1;
+      const double overlap = lattice.least_contact_overlap(bond);
+      if (overlap < 0)
+        throw NumericalFailure(fmt::format("no travelling wave at theta = {}, A = {}: Newton did not converge and "
+                                           "contact {} opens along its last iterate (least overlap {:.3g}): "
+                                           "the wave loses contact",
+                                           w.theta, amplitude, lattice.kernels().displacement_contacts->names[bond], overlap));
       nearest_resonance(lattice, w);
       throw NumericalFailure(fmt::format("no travelling wave at theta = {}, A = {} on {} harmonics: {}; nearest "
                                          "harmonic resonance: {} omega within {:.3g} omega of a linear frequency at "

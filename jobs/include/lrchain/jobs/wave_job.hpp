@@ -37,9 +37,9 @@ struct WaveConfig {
   const lrchain_lattice_kernels* kernels = nullptr;
   std::string branch;                 // dispersion branch (required)
   double theta = 0;                   // carrier wavenumber in (-pi, pi], any real value there (required)
-  double amplitude = 0;               // solve, stability: A, the first field's cos xi amplitude, > 0 (required)
+  double amplitude = 0;               // solve, stability: A, the first field's cos xi amplitude, in (0, 1000] (required)
   Index ramp = 4;                     // solve, stability: amplitudes A/ramp, 2A/ramp, ..., A, in [1, 1000]
-  std::vector<double> amplitudes;     // branch: increasing amplitudes > 0 (required)
+  std::vector<double> amplitudes;     // branch: increasing amplitudes in (0, 1000] (required)
   Index initial_harmonics = 8;        // H of the first collocation, in [2, 256]
   Index max_harmonics = 128;          // H doubles up to this while the tail is above tail_tolerance, in [initial, 256]
   double tail_tolerance = 1e-10;      // largest harmonic k > 2H/3 relative to A, in (0, 1)
