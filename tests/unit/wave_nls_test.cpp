@@ -65,7 +65,7 @@ Measured measure(const Case& c, double U, bool print) {
   for (double x : {0.25, 0.5, 0.75, 1.0, 1.2, 1.4}) m.rate_near_nls_k = std::max(m.rate_near_nls_k, spectrum.growth_rate(x * m.k_nls));
   if (m.rate_nls > 0) m.rate_defect_at_nls_k = std::abs(spectrum.growth_rate(m.k_nls) - m.rate_nls) / m.rate_nls;
   if (print)
-    MESSAGE(c.model << " " << c.branch << " growth at K_nls defect " << m.rate_defect_at_nls_k << " " << " theta " << c.theta << " U " << U << ": omega " << w.omega << " shift "
+    MESSAGE(std::string(c.model) << " " << std::string(c.branch) << " growth at K_nls defect " << m.rate_defect_at_nls_k << " " << " theta " << c.theta << " U " << U << ": omega " << w.omega << " shift "
                     << w.omega - w.omega_linear << " NLS " << shift_nls << " (rel " << m.shift_error << "), H "
                     << w.harmonics << ", max rate " << m.rate << " at K " << m.k << " NLS " << m.rate_nls << " at "
                     << m.k_nls << ", bands " << s.bands.size() << " overall max " << s.largest_rate << " at "
