@@ -82,7 +82,7 @@ TEST_CASE("travelling wave: the exact frequency shift tends to the NLS h U^2/4 w
     const Measured big = measure(c, 0.02, true), small = measure(c, 0.01, true);
     CHECK(small.shift_error < 0.01);
     // O(U^4) next term: halving U divides the relative error by 4.
-    CHECK(small.shift_error / big.shift_error == doctest::Approx(0.25).epsilon(0.1));
+    CHECK(std::abs(small.shift_error / big.shift_error / 0.25 - 1) < 0.1);
   }
 }
 
@@ -97,7 +97,7 @@ TEST_CASE("wave stability: modulational instability where focusing, with the NLS
                        Case{"resonant_chain", "optical", std::numbers::pi / 2}}) {
     const Measured big = measure(c, 0.02, true), small = measure(c, 0.01, true);
     CHECK_FALSE(small.stable);
-    CHECK(small.rate == doctest::Approx(small.rate_nls).epsilon(2e-3));
+    CHECK(std::abs(small.rate / small.rate_nls - 1) < 2e-3);
     CHECK(small.rate_defect_at_nls_k < 2e-3);
     // The agreement improves as U -> 0.
     CHECK(std::abs(small.rate / small.rate_nls - 1) < std::abs(big.rate / big.rate_nls - 1));
