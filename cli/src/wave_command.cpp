@@ -91,7 +91,7 @@ void register_wave(CLI::App& app) {
   solve_cmd->callback([args, solve_cmd] { run_job(*args, WaveStep::solve, *solve_cmd); });
   auto* cont = wave->add_subcommand("continue", "The branch omega(A) through increasing amplitudes, with h A^2/4 beside it");
   add_common(*cont, *args);
-  add_number_list(*cont, "--amplitudes", args->config.amplitudes, wave_help("amplitudes"))->required();
+  add_number_list(*cont, "--amplitudes", args->config.amplitudes, wave_help("amplitudes"));  // validate requires it
   add_examples(*cont, {"lrchain wave continue --model fput --branch acoustic --theta 2.5 --amplitudes 0.05 0.1 0.2 0.4"});
   cont->callback([args, cont] { run_job(*args, WaveStep::branch, *cont); });
   auto* stab = wave->add_subcommand(

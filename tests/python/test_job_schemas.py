@@ -77,7 +77,7 @@ def _help_lines(command):
 
 
 def _steps(command, job):
-    return command[-1:] if job in ("dark", "bright breather") else []
+    return command[-1:] if job in ("dark", "bright breather", "wave") else []
 
 
 @pytest.mark.parametrize("job", sorted(j for j, c in COMMANDS.items() if c))

@@ -30,7 +30,7 @@ void validate(const WaveConfig& c) {
   if (!std::isfinite(c.theta) || !(c.theta > -std::numbers::pi && c.theta <= std::numbers::pi))
     throw InvalidParameter("theta", fmt::format("{} is outside (-pi, pi]", c.theta));
   if (c.step == WaveStep::branch) {
-    if (c.amplitudes.empty()) throw InvalidParameter("amplitudes", "is required: increasing amplitudes > 0");
+    if (c.amplitudes.empty()) throw InvalidParameter("amplitudes", fmt::format("is required: increasing amplitudes in (0, {}]", kLargestAmplitude));
     for (std::size_t i = 0; i < c.amplitudes.size(); ++i)
       if (!std::isfinite(c.amplitudes[i]) || c.amplitudes[i] <= 0 || c.amplitudes[i] > kLargestAmplitude ||
           (i > 0 && c.amplitudes[i] <= c.amplitudes[i - 1]))
