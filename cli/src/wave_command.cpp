@@ -11,6 +11,7 @@
 #include "help_text.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/wave_job.hpp"
+#include "lattice_job.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
 
@@ -58,14 +59,7 @@ void run_job(const WaveArgs& a, WaveStep step, const CLI::App& cmd) {
   WaveConfig config = a.config;
   config.step = step;
   const Model model = load_selected_model(a.model, cmd, a.chain, true);
-  const LatticeCode code = lattice_kernels_for(a.model, model);
-  config.model = &model;
-  config.kernels = code.kernels.get();
-  try {
-    validate(config);
-  } catch (const InvalidParameter& e) {
-    throw jobs::renamed_parameter(e, jobs::cli_name(wave_options(), e.parameter()));
-  }
+  const LatticeCode code = validated_lattice_job(config, model, a.model, wave_options());
   const WaveResult r = run(config);
   const nlohmann::json j = config.out.empty() ? to_json(r) : write(r, config.out);
   std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
