@@ -42,7 +42,7 @@ void add_common(CLI::App& sub, WaveArgs& a) {
   add_number(sub, "--tolerance", c.tolerance, wave_help("tolerance"));
   add_integer(sub, "--max-iterations", c.max_iterations, 0, 1000000, wave_help("max_iterations"));
   sub.add_flag("--json", a.json_out, "print the JSON summary on one line (default: indented)");
-  sub.add_option("--out", c.out, "output directory: profile.csv, branch.csv, growth.csv and growth.gp, summary.json")
+  sub.add_option("--out", c.out, "output directory: profile.csv, branch.csv, growth.csv and growth.gp, summary.json (default: none, no files)")
       ->type_name("DIR");
   add_figure_format(sub);
 }
