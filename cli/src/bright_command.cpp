@@ -15,6 +15,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/bright_breather_job.hpp"
 #include "lrchain/jobs/bright_breather_schema.hpp"
+#include "lattice_job.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
 
@@ -61,14 +62,7 @@ void run_job(const BrightArgs& a, BrightStep step, const CLI::App& cmd) {
   BrightBreatherConfig config = a.config;
   config.step = step;
   const Model model = load_selected_model(a.model, cmd, a.chain, true);
-  const LatticeCode code = lattice_kernels_for(a.model, model);
-  config.model = &model;
-  config.kernels = code.kernels.get();
-  try {
-    validate(config);
-  } catch (const InvalidParameter& e) {
-    throw jobs::renamed_parameter(e, jobs::cli_name(bright_breather_options(), e.parameter()));
-  }
+  const LatticeCode code = validated_lattice_job(config, model, a.model, bright_breather_options());
   BrightBreatherHooks hooks;
   if (!a.quiet)
     hooks.newton_progress = [](const sim::dark::NewtonRecord& r) {

@@ -13,5 +13,6 @@ void register_bright(CLI::App& app);    // bright_command.cpp (exact bright brea
 void register_reproduce(CLI::App& app); // reproduce_command.cpp (the paper's results as an HTML report)
 void register_derive(CLI::App& app);    // derive_command.cpp (a model file through the multiple-scale engine)
 void register_sweep(CLI::App& app);     // sweep_command.cpp (one job over a grid of parameter points)
+void register_wave(CLI::App& app);      // wave_command.cpp (exact periodic travelling waves and their stability)
 
 }  // namespace lrchain::cli

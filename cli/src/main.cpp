@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   lrchain::cli::register_bright(app);
   lrchain::cli::register_reproduce(app);
   lrchain::cli::register_sweep(app);
+  lrchain::cli::register_wave(app);
 #ifdef LRCHAIN_WITH_DERIVE
   lrchain::cli::register_derive(app);
 #endif

@@ -8,6 +8,7 @@
 
 #include "lrchain/jobs/bright_breather_schema.hpp"
 #include "lrchain/jobs/coeffs.hpp"
+#include "lrchain/jobs/wave_job.hpp"
 #include "lrchain/jobs/dark_schema.hpp"
 #include "lrchain/jobs/regime_schema.hpp"
 #include "lrchain/jobs/simulate/simulate_schema.hpp"
@@ -39,6 +40,7 @@ const std::map<std::string, const std::vector<JobOption>& (*)()>& registry() {
   static const std::map<std::string, const std::vector<JobOption>& (*)()> jobs{
       {"dark", &dark::dark_options},
       {"coeffs", &coeffs_options},
+      {"wave", &wave::wave_options},
       {"bright", &bright_options},
       {"bright --model", &model_bright_options},
       {"bright breather", &bright_breather::bright_breather_options},

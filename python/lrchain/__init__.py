@@ -11,7 +11,8 @@ Submodules: :mod:`lrchain.regime` (focusing intervals, the regime maps of Figs. 
 boundary curves), :mod:`lrchain.simulate` (bright-breather, driven-chain and modulated-wave runs;
 bright-breather and ring runs of any model file), :mod:`lrchain.dark` (exact dark breathers: Newton,
 continuation, Floquet multipliers, evolution; of the resonant chain or, with ``model=``, of any model
-file), :mod:`lrchain.bright` (exact bright breathers of any model file: Newton, Floquet multipliers).
+file), :mod:`lrchain.bright` (exact bright breathers of any model file: Newton, Floquet multipliers),
+:mod:`lrchain.wave` (exact periodic travelling waves of any model file and their Floquet-Bloch stability).
 :func:`lrchain.load` reads back any file lrchain writes (HDF5 results, sweep results, JSON summaries);
 :func:`lrchain.sweep` runs a sweep file (``lrchain sweep``) and returns its results as an xarray Dataset.
 Invalid input raises :class:`lrchain.InvalidParameterError` (a ``ValueError``) naming the parameter;
@@ -22,7 +23,7 @@ from .errors import InputError, InvalidParameterError, NumericalFailure
 from ._lrchain import Params, build_info as _build_info
 from .coefficients import Coefficients, coefficients
 from .model import SHIPPED_MODELS, Model, load_model
-from . import bright, dark, regime, simulate
+from . import bright, dark, regime, simulate, wave
 from . import labelled as _labelled
 from .labelled import open_sweep
 from .reading import load
@@ -66,6 +67,7 @@ __all__ = [
     "simulate",
     "dark",
     "bright",
+    "wave",
     "InputError",
     "InvalidParameterError",
     "NumericalFailure",

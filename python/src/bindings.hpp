@@ -14,6 +14,7 @@ void register_dark(pybind11::module_& m);          // dark_binding.cpp: exact da
 void register_model_simulate(pybind11::module_& m);  // model_simulate_binding.cpp: model bright, ring
 void register_model_dark(pybind11::module_& m);      // model_dark_binding.cpp: model dark breathers
 void register_bright_breather(pybind11::module_& m);  // bright_breather_binding.cpp: exact bright breathers
+void register_wave(pybind11::module_& m);  // wave_binding.cpp: exact periodic travelling waves and their stability
 void register_renamed_options(pybind11::module_& m);  // renamed_options.cpp: renamed keyword arguments
 void register_option_caps(pybind11::module_& m);      // option_caps_binding.cpp: caps shared with the CLI
 void register_real_numbers(pybind11::module_& m);     // real_numbers.cpp: complex numbers refused

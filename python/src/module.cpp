@@ -13,6 +13,7 @@ PYBIND11_MODULE(_lrchain, m) {
   lrchain::python::register_model_simulate(m);
   lrchain::python::register_model_dark(m);
   lrchain::python::register_bright_breather(m);
+  lrchain::python::register_wave(m);
   lrchain::python::register_renamed_options(m);
   lrchain::python::register_option_caps(m);
   lrchain::python::register_real_numbers(m);

@@ -1,5 +1,5 @@
 """help() of every public function of lrchain shows an example that runs: each function of the package
-and of lrchain.regime, lrchain.simulate, lrchain.dark and lrchain.bright has an "Example" section with doctest lines,
+and of lrchain.regime, lrchain.simulate, lrchain.dark, lrchain.bright and lrchain.wave has an "Example" section with doctest lines,
 and running them (doctest) gives the output the docstring shows."""
 
 import doctest
@@ -9,7 +9,7 @@ import pytest
 
 import lrchain
 
-_MODULES = (lrchain, lrchain.regime, lrchain.simulate, lrchain.dark, lrchain.bright)
+_MODULES = (lrchain, lrchain.regime, lrchain.simulate, lrchain.dark, lrchain.bright, lrchain.wave)
 
 
 def _public_functions():
@@ -35,7 +35,8 @@ def test_the_walk_finds_the_public_functions():
     names = {name for name, _ in FUNCTIONS}
     # a sample from each module, so that an empty walk cannot pass
     assert {"lrchain.load", "lrchain.sweep", "lrchain.coefficients", "lrchain.regime.intervals",
-            "lrchain.simulate.ring", "lrchain.dark.continue_branch", "lrchain.bright.floquet"} <= names
+            "lrchain.simulate.ring", "lrchain.dark.continue_branch", "lrchain.bright.floquet",
+            "lrchain.wave.stability"} <= names
     assert len(names) >= 23
 
 

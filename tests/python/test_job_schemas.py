@@ -12,7 +12,7 @@ import subprocess
 import pytest
 
 import lrchain
-from lrchain import _lrchain, bright, dark, regime, simulate
+from lrchain import _lrchain, bright, dark, regime, simulate, wave
 from lrchain._keywords import schema_line
 
 from conftest import _cli_path
@@ -31,6 +31,7 @@ COMMANDS = {
     "regime map": [["regime", "map"]],
     "regime curves": None,  # Python only (lrchain.regime.boundary_curves)
     "regime thresholds": [["regime", "thresholds"]],
+    "wave": [["wave", "solve"], ["wave", "continue"], ["wave", "stability"]],
 }
 # job -> the Python functions that run it
 FUNCTIONS = {
@@ -46,6 +47,7 @@ FUNCTIONS = {
     "regime map": [regime.theta_rho_map, regime.theta_parameter_map, regime.delta0_omega_map],
     "regime curves": [regime.boundary_curves],
     "regime thresholds": [regime.thresholds],
+    "wave": [wave.solve, wave.continue_branch, wave.stability],
 }
 # Options a command has that are no job option: how it reports (--out, --json, figures, files), the model
 # (--model, --set and the resonant chain's parameters, lrchain/params.hpp) and the memory limit.
@@ -75,7 +77,7 @@ def _help_lines(command):
 
 
 def _steps(command, job):
-    return command[-1:] if job in ("dark", "bright breather") else []
+    return command[-1:] if job in ("dark", "bright breather", "wave") else []
 
 
 @pytest.mark.parametrize("job", sorted(j for j, c in COMMANDS.items() if c))

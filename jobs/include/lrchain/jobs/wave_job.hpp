@@ -1,0 +1,84 @@
+#pragma once
+// The periodic travelling wave job (`lrchain wave solve|continue|stability`, lrchain.wave) for any
+// model: one WaveConfig -> validate -> run -> WaveResult -> write (CSV, gnuplot, summary.json) and
+// to_json. The exact wave u_f[n](t) = U_f(theta n - omega t) by collocation in the phase and
+// Gauss-Newton (sim/wave/travelling_wave.hpp), its Floquet-Bloch growth rates over K
+// (sim/wave/wave_stability.hpp), both beside the NLS predictions (sim/wave/wave_nls.hpp).
+// docs/waves.md.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "lrchain/coefficients.hpp"
+#include "lrchain/jobs/option_schema.hpp"
+#include "lrchain/model.hpp"
+#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/sim/model_lattice_bloch.hpp"
+#include "lrchain/sim/wave/travelling_wave.hpp"
+#include "lrchain/sim/wave/wave_stability.hpp"
+
+namespace lrchain::jobs::wave {
+
+enum class WaveStep {
+  solve,      // the wave at `amplitude`, continued from amplitude/ramp in `ramp` steps
+  branch,     // the branch omega(A) through `amplitudes` (`lrchain wave continue`)
+  stability,  // solve, then the growth rate max Re lambda over K in (0, pi]
+};
+
+// Every option of the job with its default and range (wave_options()); validate() names a refused one
+// by its key.
+struct WaveConfig {
+  WaveStep step = WaveStep::solve;
+  // The lattice: a loaded model and its generated lattice kernels (owned by the caller, alive during run).
+  const Model* model = nullptr;
+  const lrchain_lattice_kernels* kernels = nullptr;
+  std::string branch;                 // dispersion branch (required)
+  double theta = 0;                   // carrier wavenumber in (-pi, pi], any real value there (required)
+  double amplitude = 0;               // solve, stability: A, the first field's cos xi amplitude, in (0, 1000] (required)
+  Index ramp = 4;                     // solve, stability: amplitudes A/ramp, 2A/ramp, ..., A, in [1, 1000]
+  std::vector<double> amplitudes;     // branch: increasing amplitudes in (0, 1000] (required)
+  Index initial_harmonics = 8;        // H of the first collocation, in [2, 256]
+  Index max_harmonics = 128;          // H doubles up to this while the tail is above tail_tolerance, in [initial, 256]
+  double tail_tolerance = 1e-10;      // largest harmonic k > 2H/3 relative to A, in (0, 1)
+  double tolerance = 1e-11;           // Newton: max residual relative to omega^2 A, in (0, 1)
+  Index max_iterations = 30;          // Newton iterations per amplitude, in [1, 1000]
+  Index k_points = 200;               // stability: K_i = pi (i/k_points)^2, i = 1..k_points, in [1, 100000]
+  double unstable_tolerance = 1e-9;   // stability: Re lambda > this x omega is growth, in (0, 1)
+  std::string out;                    // output directory ("": no files)
+};
+
+// Every key of WaveConfig with its default, range and one line of documentation (option_schema.hpp).
+const std::vector<JobOption>& wave_options();
+
+// Throws InvalidParameter naming the key, InputError for `out`, before anything is computed.
+void validate(const WaveConfig& c);
+
+struct WaveResult {
+  WaveConfig config;
+  std::string branch;                      // the branch's name
+  NlsCoefficients nls;                     // the model's NLS coefficients at theta (its derived evaluators)
+  sim::BlochMode mode;                     // the linear wave the solve starts from
+  std::vector<sim::wave::TravellingWave> waves;  // solve/stability: the ramp (the last at `amplitude`); branch: the branch
+  std::optional<std::string> failure;      // no wave at an amplitude: the reason (the CLI's exit 3)
+  std::optional<double> failed_at;         // that amplitude
+  std::optional<sim::wave::WaveStability> stability;
+  double seconds = 0;
+};
+
+// validate(), then the job. No wave at an amplitude ends the job and is reported (failure), not thrown.
+WaveResult run(const WaveConfig& c);
+
+// {model, step, branch, theta, options, nls: {...}, waves: [...], profile (solve, stability),
+// stability: {k, growth_rate, nls_growth_rate, bands, largest_rate, at_k, nls_largest_rate, nls_k}, failure,
+// seconds, provenance}.
+nlohmann::json to_json(const WaveResult& r);
+
+// profile.csv (xi and U_f of the last wave), branch.csv (every wave: A, omega and its NLS value, harmonics,
+// tail, residual), growth.csv (stability: K, exact and NLS growth rate) with growth.gp, summary.json; returns
+// to_json(r) with "figures" and "figures_skipped".
+nlohmann::json write(const WaveResult& r, const std::filesystem::path& out);
+
+}  // namespace lrchain::jobs::wave

@@ -1,0 +1,45 @@
+// The travelling wave job's option schema (wave_job.hpp): the help `lrchain wave ... --help` shows.
+#include "lrchain/jobs/wave_job.hpp"
+
+namespace lrchain::jobs::wave {
+
+namespace {
+
+std::vector<JobOption> make_options() {
+  const WaveConfig d;
+  const nlohmann::json none;
+  const std::vector<std::string> one{"solve", "stability"}, all{"solve", "continue", "stability"};
+  return {
+      {"branch", "--branch", "branch", all, none, true,
+       "optical or acoustic; other models: the names `lrchain derive` lists (acoustic/optical or branch0, ...)",
+       "dispersion branch of the wave"},
+      {"theta", "--theta", "theta", all, none, true, "in (-pi, pi], any real value there",
+       "carrier wavenumber theta of u_n(t) = U(theta n - omega t), e.g. 2.5 or 3*pi/4"},
+      {"amplitude", "--amplitude", "amplitude", one, none, true, "(0, 1000]",
+       "A: the first field's cos(xi) harmonic (the NLS's U)"},
+      {"ramp", "--ramp", "ramp", one, d.ramp, false, "[1, 1000]",
+       "continuation steps from the linear wave: amplitudes A/ramp, 2A/ramp, ..., A"},
+      {"amplitudes", "--amplitudes", "amplitudes", {"continue"}, none, false, "increasing, in (0, 1000]",
+       "the amplitudes A of the branch omega(A), each seeded by the previous wave", "", "none (required)"},
+      {"initial_harmonics", "--harmonics", "harmonics", all, d.initial_harmonics, false, "[2, 256]",
+       "harmonics H of the first collocation (2H+1 phases)"},
+      {"max_harmonics", "--max-harmonics", "max_harmonics", all, d.max_harmonics, false, "[harmonics, 256]",
+       "H doubles up to this while the tail is above --tail-tolerance"},
+      {"tail_tolerance", "--tail-tolerance", "tail_tolerance", all, d.tail_tolerance, false, "(0, 1)",
+       "largest harmonic k > 2H/3 of any field, relative to A, that counts as resolved"},
+      {"tolerance", "--tolerance", "tolerance", all, d.tolerance, false, "(0, 1)",
+       "Newton converged when max |omega^2 U'' - a| <= this x omega_linear^2 A"},
+      {"max_iterations", "--max-iterations", "max_iterations", all, d.max_iterations, false, "[1, 1000]",
+       "Newton iterations per amplitude"},
+      {"k_points", "--k-points", "k_points", {"stability"}, d.k_points, false, "[1, 100000]",
+       "perturbation wavenumbers K_i = pi (i/k_points)^2, i = 1..k_points (dense near K = 0)"},
+      {"unstable_tolerance", "--unstable-tolerance", "unstable_tolerance", {"stability"}, d.unstable_tolerance, false,
+       "(0, 1)", "Re lambda above this x omega counts as growth"},
+  };
+}
+
+}  // namespace
+
+const std::vector<JobOption>& wave_options() { return schema_once<make_options>(); }
+
+}  // namespace lrchain::jobs::wave

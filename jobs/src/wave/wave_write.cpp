@@ -1,0 +1,86 @@
+// write(WaveResult, out): profile.csv, branch.csv, growth.csv with growth.gp, summary.json (wave_job.hpp).
+#include <numbers>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "lrchain/jobs/output_lock.hpp"
+#include "lrchain/jobs/wave_job.hpp"
+#include "lrchain/sim/gnuplot_text.hpp"
+#include "lrchain/sim/output_files.hpp"
+#include "lrchain/sim/wave/wave_nls.hpp"
+
+namespace lrchain::jobs::wave {
+
+using nlohmann::json;
+
+namespace {
+
+// profile.csv: xi and U_f(xi) of the last wave on its collocation phases.
+void write_profile(const WaveResult& r, const std::string& dir) {
+  const auto& w = r.waves.back();
+  const Index points = 2 * w.harmonics + 1, fields = Index(r.mode.kernel.size());
+  std::ostringstream os;
+  os << "xi";
+  for (Index f = 0; f < fields; ++f) os << ",u" << f;
+  os << "\n";
+  for (Index i = 0; i < points; ++i) {
+    os << fmt::format("{:.17g}", 2 * std::numbers::pi * double(i) / double(points));
+    for (Index f = 0; f < fields; ++f) os << fmt::format(",{:.17g}", w.profile(f * points + i));
+    os << "\n";
+  }
+  sim::write_file_atomic(dir, "profile.csv", os.str());
+}
+
+// branch.csv: one row per wave.
+void write_branch(const WaveResult& r, const std::string& dir) {
+  std::ostringstream os;
+  os << "amplitude,omega,omega_shift,nls_omega_shift,harmonics,tail,residual\n";
+  for (const auto& w : r.waves)
+    os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{},{:.6g},{:.6g}\n", w.amplitude, w.omega, w.omega - w.omega_linear,
+                      sim::wave::nls_frequency_shift(r.nls.h, w.amplitude), w.harmonics, w.tail, w.residual);
+  sim::write_file_atomic(dir, "branch.csv", os.str());
+}
+
+// growth.csv (K, exact and NLS growth rate) and growth.gp drawing both.
+void write_growth(const WaveResult& r, const std::string& dir, sim::Figures& figures) {
+  const auto& s = *r.stability;
+  std::ostringstream os;
+  os << "K,growth_rate,nls_growth_rate\n";
+  for (std::size_t i = 0; i < s.k.size(); ++i)
+    os << fmt::format("{:.17g},{:.17g},{:.17g}\n", s.k[i], s.growth_rate[i],
+                      sim::wave::nls_growth_rate(r.nls.curvature, r.nls.h_tilde, r.config.amplitude, s.k[i]));
+  sim::write_file_atomic(dir, "growth.csv", os.str());
+  const auto literal = [](const std::string& text) { return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced); };
+  figures.draw({"growth.gp",
+                fmt::format("if (!exists(\"outfile\")) outfile = 'growth.png'\n"
+                            "set terminal pngcairo size 1000,700\nset output outfile\n"
+                            "set datafile separator ','\nset xlabel 'perturbation wavenumber K'\n"
+                            "set ylabel 'growth rate max Re λ'\nset logscale x\nset key top left\n"
+                            "set title '{} {} wave, θ = {:.6g}, A = {:.6g}: Floquet-Bloch growth rate and the NLS'\n"
+                            "plot 'growth.csv' skip 1 u 1:2 w lp pt 7 ps 0.6 t 'exact wave', "
+                            "'' skip 1 u 1:3 w l lw 2 dt 2 t 'NLS (h̃)'\n",
+                            literal(r.config.model->name()), literal(r.branch), r.config.theta, r.config.amplitude),
+                "growth.png"});
+}
+
+}  // namespace
+
+json write(const WaveResult& r, const std::filesystem::path& out) {
+  json j = to_json(r);
+  const std::string dir = out.string();
+  const OutputLock lock(dir);
+  const sim::OutputListing earlier = sim::list_output_files(dir);
+  sim::Figures figures(dir);
+  if (!r.waves.empty()) {
+    write_profile(r, dir);
+    write_branch(r, dir);
+  }
+  if (r.stability) write_growth(r, dir, figures);
+  figures.finish(j);
+  sim::write_file_atomic(dir, "summary.json", j.dump(2) + "\n");
+  sim::record_stale_files(out, earlier, j);
+  return j;
+}
+
+}  // namespace lrchain::jobs::wave

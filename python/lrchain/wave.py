@@ -1,0 +1,160 @@
+"""Exact periodic travelling waves of any lattice and their stability (docs/waves.md):
+u_n(t) = U(theta n - omega t) for every field, solved as a 2 pi-periodic function of the phase by
+collocation (harmonic balance) and Newton with the phase fixed, the number of harmonics chosen by a
+tolerance on the tail; continued in the amplitude A (the first field's cos xi harmonic) from the linear
+wave; and the Floquet-Bloch growth rates max Re lambda of perturbations e^{lambda t + i K n} W(theta n -
+omega t) over K in (0, pi], each beside the NLS prediction (frequency shift h A^2/4, modulational
+instability with the largest rate |h_tilde| A^2/4 where focusing). The functions are ``lrchain wave
+solve|continue|stability``: the same job (lrchain/jobs/wave_job.hpp), its defaults from the job's one
+schema.
+
+``model`` is an :class:`lrchain.Model` (``lrchain.load_model("fput")`` or your own model file), default
+the paper's resonant chain. No wave at an amplitude (Newton fails, near a harmonic resonance; the
+harmonics do not decay; a one-sided contact opens) raises :class:`lrchain.NumericalFailure` with the reason.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _lrchain
+from ._keywords import checked_model, documented, python_names, real_numbers, schema_options
+
+# The job's defaults, from its one schema (jobs/src/wave/wave_schema.cpp): keyword -> default.
+_D = {name: o["default"] for name, o in schema_options("wave").items()}
+_SECTION = ("wave", "Options (the job's schema, as ``lrchain wave ... --help``):")
+
+
+@dataclass(frozen=True, repr=False)
+class TravellingWave:
+    """One exact wave: ``amplitude`` A, ``omega`` (and ``omega_linear``, the branch at theta), ``harmonics``
+    H used, ``tail`` and ``residual``, the ``profile`` U_f at the phases ``xi`` (fields x (2H+1)), the
+    ``nls_omega_shift`` h A^2/4 and the job's whole JSON ``summary``; ``stability`` (a dict with numpy
+    ``k``, ``growth_rate``, ``nls_growth_rate``, the ``bands``, ``largest_rate``, ``at_k``,
+    ``nls_largest_rate``, ``nls_k``) after :func:`stability`, else None."""
+
+    theta: float
+    amplitude: float
+    omega: float
+    omega_linear: float
+    harmonics: int
+    tail: float
+    residual: float
+    xi: np.ndarray
+    profile: np.ndarray
+    nls_omega_shift: float
+    stability: dict
+    summary: dict
+
+    def __repr__(self):
+        return (f"TravellingWave(theta={self.theta}, A={self.amplitude}, omega={self.omega:.12g}, "
+                f"{self.harmonics} harmonics, residual {self.residual:.3g})")
+
+
+def _model(model):
+    if model is None:
+        from .model import load_model
+
+        return load_model("resonant_chain")
+    return checked_model(model)
+
+
+def _run(model, step, branch, theta, amplitude=_D["amplitude"], ramp=_D["ramp"], amplitudes=(),
+         harmonics=_D["harmonics"], max_harmonics=_D["max_harmonics"], tail_tolerance=_D["tail_tolerance"],
+         tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], k_points=_D["k_points"],
+         unstable_tolerance=_D["unstable_tolerance"]):
+    from .errors import InvalidParameterError
+
+    model = _model(model)
+    for name, value in (("branch", branch), ("theta", theta)):
+        if value is None:
+            raise InvalidParameterError(f"invalid {name}: required", name)
+    if step != "continue" and amplitude is None:
+        raise InvalidParameterError("invalid amplitude: required (> 0)", "amplitude")
+    return python_names(lambda: _lrchain.wave_job(
+        model, step, branch, theta, 0.0 if amplitude is None else amplitude, ramp, list(np.atleast_1d(amplitudes)),
+        harmonics, max_harmonics, tail_tolerance, tolerance, max_iterations, k_points, unstable_tolerance))
+
+
+def _wave(d):
+    w = d["waves"][-1]
+    s = d.get("stability")
+    if s is not None:
+        s = dict(s)
+        for key in ("k", "growth_rate", "nls_growth_rate"):
+            s[key] = np.array(s[key])
+    return TravellingWave(theta=d["theta"], amplitude=w["amplitude"], omega=w["omega"], omega_linear=d["linear"]["omega"],
+                          harmonics=w["harmonics"], tail=w["tail"], residual=w["residual"],
+                          xi=np.array(d["profile"]["xi"]), profile=d.pop("profile_array"),
+                          nls_omega_shift=w["nls_omega_shift"], stability=s, summary=d)
+
+
+@documented(_SECTION)
+@real_numbers
+def solve(model=None, branch=None, theta=None, amplitude=None, ramp=_D["ramp"], harmonics=_D["harmonics"],
+          max_harmonics=_D["max_harmonics"], tail_tolerance=_D["tail_tolerance"], tolerance=_D["tolerance"],
+          max_iterations=_D["max_iterations"]):
+    """The exact travelling wave of first-field amplitude ``amplitude`` on ``branch`` at wavenumber ``theta``;
+    returns :class:`TravellingWave`.
+
+    Example::
+
+        >>> import lrchain
+        >>> w = lrchain.wave.solve(lrchain.load_model("klein_gordon"), branch="branch0", theta=2.356, amplitude=0.01)
+        >>> bool(abs((w.omega - w.omega_linear) / w.nls_omega_shift - 1) < 1e-3), w.profile.shape
+        (True, (1, 17))
+    """
+    return _wave(_run(model, "solve", branch, theta, amplitude, ramp, (), harmonics, max_harmonics, tail_tolerance,
+                      tolerance, max_iterations))
+
+
+@documented(_SECTION)
+@real_numbers
+def continue_branch(model=None, branch=None, theta=None, amplitudes=None, harmonics=_D["harmonics"],
+                    max_harmonics=_D["max_harmonics"], tail_tolerance=_D["tail_tolerance"], tolerance=_D["tolerance"],
+                    max_iterations=_D["max_iterations"]):
+    """The branch omega(A) through increasing ``amplitudes``, each wave seeded by the previous one; returns a
+    dict of numpy arrays ``amplitude``, ``omega``, ``omega_shift``, ``nls_omega_shift``, ``harmonics`` and the
+    ``stopped`` reason (None when every amplitude has a wave), with the JSON ``summary``.
+
+    Example::
+
+        >>> import lrchain
+        >>> b = lrchain.wave.continue_branch(lrchain.load_model("fput"), branch="acoustic", theta=2.5,
+        ...                                  amplitudes=[0.05, 0.1, 0.2])
+        >>> b["omega"].shape, b["stopped"] is None
+        ((3,), True)
+    """
+    if amplitudes is None:
+        from .errors import InvalidParameterError
+
+        raise InvalidParameterError("invalid amplitudes: required (increasing, > 0)", "amplitudes")
+    d = _run(model, "continue", branch, theta, None, _D["ramp"], amplitudes, harmonics, max_harmonics,
+             tail_tolerance, tolerance, max_iterations)
+    d.pop("profile_array", None)
+    waves = d["waves"]
+    return {"amplitude": np.array([w["amplitude"] for w in waves]), "omega": np.array([w["omega"] for w in waves]),
+            "omega_shift": np.array([w["omega_shift"] for w in waves]),
+            "nls_omega_shift": np.array([w["nls_omega_shift"] for w in waves]),
+            "harmonics": np.array([w["harmonics"] for w in waves]), "stopped": d["failure"], "summary": d}
+
+
+@documented(_SECTION)
+@real_numbers
+def stability(model=None, branch=None, theta=None, amplitude=None, ramp=_D["ramp"], harmonics=_D["harmonics"],
+              max_harmonics=_D["max_harmonics"], tail_tolerance=_D["tail_tolerance"], tolerance=_D["tolerance"],
+              max_iterations=_D["max_iterations"], k_points=_D["k_points"],
+              unstable_tolerance=_D["unstable_tolerance"]):
+    """Solve, then the Floquet-Bloch growth rate max Re lambda over K in (0, pi] with the NLS curve beside it;
+    returns :class:`TravellingWave` with ``stability`` set.
+
+    Example::
+
+        >>> import lrchain
+        >>> w = lrchain.wave.stability(lrchain.load_model("fput"), branch="acoustic", theta=2.5, amplitude=0.02)
+        >>> s = w.stability
+        >>> bool(abs(s["largest_rate"] / s["nls_largest_rate"] - 1) < 1e-2), s["k"].shape
+        (True, (200,))
+    """
+    return _wave(_run(model, "stability", branch, theta, amplitude, ramp, (), harmonics, max_harmonics,
+                      tail_tolerance, tolerance, max_iterations, k_points, unstable_tolerance))

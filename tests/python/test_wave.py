@@ -1,0 +1,40 @@
+"""lrchain.wave: the travelling wave job through Python (numbers: tests/unit/wave_nls_test.cpp and
+wave_job_test.cpp; here the keywords, numpy outputs and errors)."""
+
+import numpy as np
+import pytest
+
+import lrchain
+
+
+def test_solve_gives_the_profile_as_numpy_and_the_nls_shift():
+    w = lrchain.wave.solve(lrchain.load_model("klein_gordon"), branch="branch0", theta=3 * np.pi / 4, amplitude=0.01)
+    assert isinstance(w.profile, np.ndarray) and w.profile.shape == (1, 2 * w.harmonics + 1)
+    assert w.xi.shape == (2 * w.harmonics + 1,)
+    # the first harmonic of the first field is A cos xi (the phase condition)
+    c1 = 2 * np.mean(w.profile[0] * np.exp(-1j * w.xi))
+    assert abs(c1 - 0.01) < 1e-12
+    # omega - omega_linear = h A^2/4 to O(A^4): relative 1.1e-5 at A = 0.01 (docs/waves.md)
+    assert abs((w.omega - w.omega_linear) / w.nls_omega_shift - 1) < 1e-4
+
+
+def test_continue_reports_where_the_paper_chain_loses_contact():
+    b = lrchain.wave.continue_branch(branch="optical", theta=np.pi / 2, amplitudes=[0.1, 0.2, 0.4])
+    assert b["omega"].shape == (2,)
+    assert "contact" in b["stopped"]
+
+
+def test_bad_keyword_names_the_python_keyword():
+    with pytest.raises(lrchain.InvalidParameterError) as e:
+        lrchain.wave.solve(lrchain.load_model("fput"), branch="acoustic", theta=2.5, amplitude=0.1, harmonics=1)
+    assert e.value.parameter == "harmonics"
+    with pytest.raises(lrchain.InvalidParameterError):
+        lrchain.wave.solve(lrchain.load_model("fput"), branch="acoustic", theta=2.5)
+
+
+def test_stability_arrays():
+    w = lrchain.wave.stability(lrchain.load_model("fput"), branch="acoustic", theta=2.5, amplitude=0.02, k_points=50)
+    s = w.stability
+    assert s["k"].shape == s["growth_rate"].shape == s["nls_growth_rate"].shape == (50,)
+    assert not s["stable"]
+    assert abs(s["largest_rate"] / s["nls_largest_rate"] - 1) < 2e-3
