@@ -50,57 +50,13 @@ def enabled(progress):
     return interactive()
 
 
-class Bar:
-    """A progress bar from 0 to 1 for a call described by ``what``; ``update(fraction)`` is the callback
-    the C++ jobs call (at most every 0.2 s). Use as a context manager; ``callback`` is None when
-    progress is off, so that the job runs without any call into Python."""
+class _Shown:
+    """What :class:`Bar` and :class:`Counter` share: tqdm's class when progress is shown and tqdm is
+    installed; without tqdm a line on standard error says what runs and, at the end, how long it took.
+    A context manager that closes the bar."""
 
-    def __init__(self, what, progress=None, unit="%"):
+    def __init__(self, what, progress):
         self.what = what
-        self.on = enabled(progress)
-        self._bar = None
-        self._start = time.monotonic()
-        if self.on:
-            try:
-                from tqdm.auto import tqdm
-            except ImportError:
-                print(f"lrchain: {what} ...", file=sys.stderr, flush=True)
-            else:
-                self._bar = tqdm(total=100, desc=what, unit=unit, leave=True,
-                                 bar_format="{desc}: {percentage:3.0f}%|{bar}| [{elapsed}<{remaining}, {rate_fmt}]")
-
-    @property
-    def callback(self):
-        return self.update if self.on else None
-
-    def update(self, fraction):
-        if self._bar is not None:
-            target = round(100 * min(max(fraction, 0.0), 1.0))
-            if target > self._bar.n:
-                self._bar.update(target - self._bar.n)
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, kind, value, traceback):
-        if not self.on:
-            return False
-        seconds = time.monotonic() - self._start
-        if self._bar is not None:
-            self._bar.close()
-        if kind is None and self._bar is None:
-            print(f"lrchain: {self.what}: done in {seconds:.1f} s", file=sys.stderr, flush=True)
-        return False
-
-
-class Counter:
-    """A bar that counts ``unit``s (e.g. the steps of ``lrchain.reproduce``) up to a total known once
-    the work has started: ``start(total)``, then ``advance(text)`` per unit done (``text``: what was
-    done, shown after the bar). tqdm shows the count, the rate and the ETA. Use as a context manager."""
-
-    def __init__(self, what, progress=None, unit="step"):
-        self.what = what
-        self.unit = unit
         self.on = enabled(progress)
         self._tqdm = None
         self._bar = None
@@ -113,16 +69,6 @@ class Counter:
             else:
                 self._tqdm = tqdm
 
-    def start(self, total):
-        if self._tqdm is not None and self._bar is None:
-            self._bar = self._tqdm(total=total, desc=self.what, unit=self.unit, leave=True)
-
-    def advance(self, text=None):
-        if self._bar is not None:
-            if text:
-                self._bar.set_postfix_str(text, refresh=False)
-            self._bar.update(1)
-
     def __enter__(self):
         return self
 
@@ -134,6 +80,48 @@ class Counter:
         elif kind is None and self._tqdm is None:
             print(f"lrchain: {self.what}: done in {time.monotonic() - self._start:.1f} s", file=sys.stderr, flush=True)
         return False
+
+
+class Bar(_Shown):
+    """A progress bar from 0 to 1 for a call described by ``what``; ``update(fraction)`` is the callback
+    the C++ jobs call (at most every 0.2 s). Use as a context manager; ``callback`` is None when
+    progress is off, so that the job runs without any call into Python."""
+
+    def __init__(self, what, progress=None, unit="%"):
+        super().__init__(what, progress)
+        if self._tqdm is not None:
+            self._bar = self._tqdm(total=100, desc=what, unit=unit, leave=True,
+                                   bar_format="{desc}: {percentage:3.0f}%|{bar}| [{elapsed}<{remaining}, {rate_fmt}]")
+
+    @property
+    def callback(self):
+        return self.update if self.on else None
+
+    def update(self, fraction):
+        if self._bar is not None:
+            target = round(100 * min(max(fraction, 0.0), 1.0))
+            if target > self._bar.n:
+                self._bar.update(target - self._bar.n)
+
+
+class Counter(_Shown):
+    """A bar that counts ``unit``s (e.g. the steps of ``lrchain.reproduce``) up to a total known once
+    the work has started: ``start(total)``, then ``advance(text)`` per unit done (``text``: what was
+    done, shown after the bar). tqdm shows the count, the rate and the ETA. Use as a context manager."""
+
+    def __init__(self, what, progress=None, unit="step"):
+        super().__init__(what, progress)
+        self.unit = unit
+
+    def start(self, total):
+        if self._tqdm is not None and self._bar is None:
+            self._bar = self._tqdm(total=total, desc=self.what, unit=self.unit, leave=True)
+
+    def advance(self, text=None):
+        if self._bar is not None:
+            if text:
+                self._bar.set_postfix_str(text, refresh=False)
+            self._bar.update(1)
 
 
 def note(text, progress=None):
