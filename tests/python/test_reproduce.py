@@ -197,7 +197,18 @@ def test_a_real_quick_step_writes_the_same_report_as_the_command(tmp_path, monke
     monkeypatch.chdir(tmp_path)
     step = "coefficients"
     assert step in lrchain.reproduce_steps()
+    seen = []
+
+    class Recorder(reproduce_module.Counter):  # the real command's --progress-json lines
+        def start(self, total):
+            seen.append(("start", total))
+
+        def advance(self, text=None):
+            seen.append(("advance", text))
+
+    monkeypatch.setattr(reproduce_module, "Counter", Recorder)
     r = lrchain.reproduce(tmp_path / "py", only=step, jobs=1, progress=False)
+    assert seen == [("start", 1), ("advance", "coefficients done")]
     direct = cli("reproduce", "--quick", "--only", step, "--jobs", "1", "--out", tmp_path / "cli")
     assert r.failed_steps == 0 and r.report.is_file()
     assert r.summary["pass"] == direct["pass"] > 0  # the same comparisons as the command's own run
