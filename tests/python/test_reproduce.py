@@ -214,3 +214,14 @@ def test_a_real_quick_step_writes_the_same_report_as_the_command(tmp_path, monke
     assert r.summary["pass"] == direct["pass"] > 0  # the same comparisons as the command's own run
     assert sorted(p.relative_to(r.out) for p in r.files) == \
         sorted(p.relative_to(tmp_path / "cli") for p in (tmp_path / "cli").rglob("*") if p.is_file())
+
+
+def test_the_real_commands_refusal_names_the_keyword_and_writes_nothing(tmp_path, monkeypatch):
+    monkeypatch.delenv("LRCHAIN_EXECUTABLE", raising=False)
+    with pytest.raises(lrchain.InvalidParameterError, match=r"^invalid jobs: ") as err:
+        lrchain.reproduce(tmp_path / "r", jobs=99, progress=False)
+    assert err.value.parameter == "jobs"
+    with pytest.raises(lrchain.InvalidParameterError) as err:
+        lrchain.reproduce(tmp_path / "r", only="no_such_step", progress=False)
+    assert err.value.parameter == "only"
+    assert list(tmp_path.iterdir()) == []
