@@ -1,7 +1,10 @@
 """`pip install .`: builds the Python module lrchain with CMake and packages it.
 
-CMake builds the compiled modules (_lrchain, _hdf5, _model_compiler) and assembles the package in
-<build>/python/lrchain; this script copies that folder into the wheel. The CMake build folder is
+CMake builds the compiled modules (_lrchain, _hdf5, _model_compiler) and the `lrchain` executable
+(lrchain_python_executable: lrchain.reproduce runs it) and assembles the package in
+<build>/python/lrchain; this script copies that folder into the wheel, the executable as
+lrchain/bin/lrchain, and beside it the data the executable reads (lrchain/share/lrchain: examples/,
+models/, docs/paper-errata.md, as `cmake --install` puts them in <prefix>/share/lrchain). The CMake build folder is
 build-python/ in the checkout, kept between installs so that a second install only rebuilds what
 changed; LRCHAIN_CMAKE_BUILD_DIR names another (e.g. an existing Release build folder), and
 LRCHAIN_CMAKE_ARGS adds arguments to its configuration (split on spaces).
@@ -18,7 +21,9 @@ from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
 SOURCE = Path(__file__).resolve().parent
-TARGETS = ["_lrchain", "_hdf5", "_model_compiler"]
+TARGETS = ["_lrchain", "_hdf5", "_model_compiler", "lrchain_python_executable"]
+# Shipped data beside lrchain/bin/lrchain (its ../share/lrchain): folder in the checkout, file pattern.
+SHIPPED_DATA = [("examples", "*.toml"), ("models", "*.toml"), ("docs", "paper-errata.md")]
 SETUPTOOLS_DIR = SOURCE / "build-python" / "setuptools"
 SETUPTOOLS_DIR.mkdir(parents=True, exist_ok=True)
 
@@ -53,8 +58,15 @@ class CMakeBuild(build_ext):
         package = Path(self.build_lib) / "lrchain"
         if package.exists():
             shutil.rmtree(package)
+        # (bin/lrchain is a symbolic link in the build tree: copytree copies the executable it names)
         shutil.copytree(build / "python" / "lrchain", package,
                         ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+        share = package / "share" / "lrchain"
+        for folder, pattern in SHIPPED_DATA:
+            for source in sorted((SOURCE / folder).rglob(pattern)):
+                target = share / source.relative_to(SOURCE)
+                target.parent.mkdir(parents=True, exist_ok=True)
+                shutil.copy2(source, target)
 
 
 setup(

@@ -36,7 +36,7 @@ namespace fs = std::filesystem;
 using namespace lrchain::report;
 
 struct ReproduceArgs {
-  bool quick = false, full = false, list = false;
+  bool quick = false, full = false, list = false, progress_json = false;
   std::string out = "lrchain-report";
   std::string examples, errata;
   int jobs = 0;
@@ -121,6 +121,12 @@ void clear_partial(const fs::path& partial) {
     if (entry.path().filename() != ".lrchain-lock") fs::remove_all(entry.path());
 }
 
+// One line of --progress-json on stderr: the JSON object `event` on a line of its own, flushed.
+void progress_line(const nlohmann::json& event) {
+  std::fprintf(stderr, "%s\n", event.dump().c_str());
+  std::fflush(stderr);
+}
+
 void run_reproduce(const ReproduceArgs& a) {
   std::vector<Step> steps = all_steps();
   if (a.list) {
@@ -177,12 +183,19 @@ void run_reproduce(const ReproduceArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   int done = 0;
-  std::fprintf(stderr, "lrchain reproduce --%s: %zu steps, %d at a time, writing %s\n", info.mode.c_str(),
-               steps.size(), jobs, ctx.out.c_str());
+  if (a.progress_json)
+    progress_line({{"event", "start"}, {"mode", info.mode}, {"steps", steps.size()}, {"jobs", jobs}, {"out", ctx.out.string()}});
+  else
+    std::fprintf(stderr, "lrchain reproduce --%s: %zu steps, %d at a time, writing %s\n", info.mode.c_str(),
+                 steps.size(), jobs, ctx.out.c_str());
 #pragma omp parallel for schedule(dynamic, 1) num_threads(jobs)
   for (std::size_t k = 0; k < order.size(); ++k) {
     const Step& step = steps[order[k]];
     const auto s0 = std::chrono::steady_clock::now();
+    if (a.progress_json) {
+#pragma omp critical(reproduce_progress)
+      progress_line({{"event", "step_started"}, {"step", step.id}, {"title", step.title}, {"seconds", elapsed()}});
+    }
     Section section;
     try {
       if (interrupt_signal() != 0) throw std::runtime_error("not run (interrupted)");
@@ -198,10 +211,16 @@ void run_reproduce(const ReproduceArgs& a) {
 #pragma omp critical(reproduce_progress)
     {
       ++done;
-      std::fprintf(stderr, "[%2d/%zu] %6.1f s  %-20s %s in %.1f s: %d pass, %d deviates, %d erratum, %d unresolved%s%s\n",
-                   done, steps.size(), elapsed(), step.id.c_str(), section.failed ? "FAILED" : "done", section.seconds,
-                   c.pass, c.deviates, c.erratum, c.unresolved, section.failed ? " - " : "",
-                   section.failed ? section.error.c_str() : "");
+      if (a.progress_json)
+        progress_line({{"event", "step_finished"}, {"step", step.id}, {"done", done}, {"steps", steps.size()},
+                       {"seconds", elapsed()}, {"step_seconds", section.seconds}, {"failed", section.failed},
+                       {"error", section.failed ? nlohmann::json(section.error) : nlohmann::json()}, {"pass", c.pass},
+                       {"deviates", c.deviates}, {"erratum", c.erratum}, {"unresolved", c.unresolved}});
+      else
+        std::fprintf(stderr, "[%2d/%zu] %6.1f s  %-20s %s in %.1f s: %d pass, %d deviates, %d erratum, %d unresolved%s%s\n",
+                     done, steps.size(), elapsed(), step.id.c_str(), section.failed ? "FAILED" : "done", section.seconds,
+                     c.pass, c.deviates, c.erratum, c.unresolved, section.failed ? " - " : "",
+                     section.failed ? section.error.c_str() : "");
       sections[order[k]] = std::move(section);
     }
   }
@@ -244,8 +263,11 @@ void run_reproduce(const ReproduceArgs& a) {
                                   {"failed_steps", failed}, {"figures_missing", missing}, {"seconds", info.total_seconds},
                                   {"steps", steps_json}, {"provenance", provenance_json(info.provenance)}};
   std::printf("%s\n", summary.dump(2).c_str());
-  std::fprintf(stderr, "report: %s (%d pass, %d deviates, %d erratum, %d unresolved) in %.1f s\n",
-               (out / "index.html").c_str(), c.pass, c.deviates, c.erratum, c.unresolved, info.total_seconds);
+  if (a.progress_json)
+    progress_line({{"event", "finished"}, {"report", (out / "index.html").string()}, {"seconds", info.total_seconds}});
+  else
+    std::fprintf(stderr, "report: %s (%d pass, %d deviates, %d erratum, %d unresolved) in %.1f s\n",
+                 (out / "index.html").c_str(), c.pass, c.deviates, c.erratum, c.unresolved, info.total_seconds);
   if (failed > 0) throw std::runtime_error(fmt::format("{} step(s) failed; see the report", failed));
 }
 
@@ -268,6 +290,11 @@ void register_reproduce(CLI::App& app) {
   sub->add_option("--only", a->only, "run only these steps, comma-separated ids from --list (default: every step)")
       ->delimiter(',')->type_name("ID,...");
   sub->add_flag("--list", a->list, "list the steps and exit");
+  sub->add_flag("--progress-json", a->progress_json,
+                "progress on stderr as one JSON object per line instead of text: {\"event\": \"start\", \"steps\": N, ...}, "
+                "{\"event\": \"step_started\", \"step\": ID, ...}, {\"event\": \"step_finished\", \"step\": ID, \"done\": K, "
+                "\"steps\": N, \"failed\": ..., ...}, {\"event\": \"finished\", ...}; errors stay one line of text "
+                "(lrchain.reproduce in Python reads these)");
   sub->add_option("--examples", a->examples, "directory of the experiment configs (default: the installed share/lrchain/examples, "
                   "or the source tree's examples/ for lrchain run from its build tree)")->type_name("DIR");
   sub->add_option("--errata", a->errata, "docs/paper-errata.md to include (default: the installed share/lrchain/docs/paper-errata.md, "

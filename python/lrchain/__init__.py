@@ -14,12 +14,13 @@ continuation, Floquet multipliers, evolution; of the resonant chain or, with ``m
 file), :mod:`lrchain.bright` (exact bright breathers of any model file: Newton, Floquet multipliers),
 :mod:`lrchain.wave` (exact periodic travelling waves of any model file and their Floquet-Bloch stability).
 :func:`lrchain.load` reads back any file lrchain writes (HDF5 results, sweep results, JSON summaries);
-:func:`lrchain.sweep` runs a sweep file (``lrchain sweep``) and returns its results as an xarray Dataset.
+:func:`lrchain.sweep` runs a sweep file (``lrchain sweep``) and returns its results as an xarray Dataset;
+:func:`lrchain.reproduce` writes the paper's report (``lrchain reproduce``, run as that command).
 Invalid input raises :class:`lrchain.InvalidParameterError` (a ``ValueError``) naming the parameter;
 Ctrl-C interrupts a long computation with ``KeyboardInterrupt``.
 """
 
-from .errors import InputError, InvalidParameterError, NumericalFailure
+from .errors import InputError, InvalidParameterError, NumericalFailure, StepsFailed
 from ._lrchain import Params, build_info as _build_info
 from .coefficients import Coefficients, coefficients
 from .model import SHIPPED_MODELS, Model, load_model
@@ -28,6 +29,7 @@ from . import labelled as _labelled
 from .labelled import open_sweep
 from .reading import load
 from .sweeps import sweep
+from .reproduce import ReproduceResult, reproduce, reproduce_executable, reproduce_steps
 from .progress import set_progress
 
 _labelled.attach()  # result.to_xarray() on every result class
@@ -56,6 +58,10 @@ __all__ = [
     "open_sweep",
     "load",
     "sweep",
+    "reproduce",
+    "reproduce_steps",
+    "reproduce_executable",
+    "ReproduceResult",
     "set_progress",
     "Params",
     "Model",
@@ -71,4 +77,5 @@ __all__ = [
     "InputError",
     "InvalidParameterError",
     "NumericalFailure",
+    "StepsFailed",
 ]

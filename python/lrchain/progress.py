@@ -1,8 +1,8 @@
 """Progress of long calls: a bar with rate and ETA when a person is watching, silence otherwise.
 
 Lattice runs (``lrchain.simulate.bright``, ``drive``, ``modulated``, ``ring``; ``bright`` of a model
-file too), dark-breather continuation (``lrchain.dark.continue_branch``), sweeps (``lrchain.sweep``)
-and model compilation (``lrchain.load_model`` of a new file) take ``progress=``: True shows
+file too), dark-breather continuation (``lrchain.dark.continue_branch``), sweeps (``lrchain.sweep``),
+the paper's report (``lrchain.reproduce``: a bar of its steps) and model compilation (``lrchain.load_model`` of a new file) take ``progress=``: True shows
 progress, False keeps quiet, None (the default) shows it when the call runs interactively (a Jupyter
 notebook, or a terminal on standard error) and the default set by :func:`set_progress` allows it. The bar is tqdm's (Debian ``python3-tqdm``: a widget in a notebook,
 a text bar in a terminal); without tqdm a line on standard error says what runs and how long it took.
@@ -50,14 +50,15 @@ def enabled(progress):
     return interactive()
 
 
-class Bar:
-    """A progress bar from 0 to 1 for a call described by ``what``; ``update(fraction)`` is the callback
-    the C++ jobs call (at most every 0.2 s). Use as a context manager; ``callback`` is None when
-    progress is off, so that the job runs without any call into Python."""
+class _Shown:
+    """What :class:`Bar` and :class:`Counter` share: tqdm's class when progress is shown and tqdm is
+    installed; without tqdm a line on standard error says what runs and, at the end, how long it took.
+    A context manager that closes the bar."""
 
-    def __init__(self, what, progress=None, unit="%"):
+    def __init__(self, what, progress):
         self.what = what
         self.on = enabled(progress)
+        self._tqdm = None
         self._bar = None
         self._start = time.monotonic()
         if self.on:
@@ -66,8 +67,31 @@ class Bar:
             except ImportError:
                 print(f"lrchain: {what} ...", file=sys.stderr, flush=True)
             else:
-                self._bar = tqdm(total=100, desc=what, unit=unit, leave=True,
-                                 bar_format="{desc}: {percentage:3.0f}%|{bar}| [{elapsed}<{remaining}, {rate_fmt}]")
+                self._tqdm = tqdm
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, value, traceback):
+        if not self.on:
+            return False
+        if self._bar is not None:
+            self._bar.close()
+        elif kind is None and self._tqdm is None:
+            print(f"lrchain: {self.what}: done in {time.monotonic() - self._start:.1f} s", file=sys.stderr, flush=True)
+        return False
+
+
+class Bar(_Shown):
+    """A progress bar from 0 to 1 for a call described by ``what``; ``update(fraction)`` is the callback
+    the C++ jobs call (at most every 0.2 s). Use as a context manager; ``callback`` is None when
+    progress is off, so that the job runs without any call into Python."""
+
+    def __init__(self, what, progress=None, unit="%"):
+        super().__init__(what, progress)
+        if self._tqdm is not None:
+            self._bar = self._tqdm(total=100, desc=what, unit=unit, leave=True,
+                                   bar_format="{desc}: {percentage:3.0f}%|{bar}| [{elapsed}<{remaining}, {rate_fmt}]")
 
     @property
     def callback(self):
@@ -79,18 +103,25 @@ class Bar:
             if target > self._bar.n:
                 self._bar.update(target - self._bar.n)
 
-    def __enter__(self):
-        return self
 
-    def __exit__(self, kind, value, traceback):
-        if not self.on:
-            return False
-        seconds = time.monotonic() - self._start
+class Counter(_Shown):
+    """A bar that counts ``unit``s (e.g. the steps of ``lrchain.reproduce``) up to a total known once
+    the work has started: ``start(total)``, then ``advance(text)`` per unit done (``text``: what was
+    done, shown after the bar). tqdm shows the count, the rate and the ETA. Use as a context manager."""
+
+    def __init__(self, what, progress=None, unit="step"):
+        super().__init__(what, progress)
+        self.unit = unit
+
+    def start(self, total):
+        if self._tqdm is not None and self._bar is None:
+            self._bar = self._tqdm(total=total, desc=self.what, unit=self.unit, leave=True)
+
+    def advance(self, text=None):
         if self._bar is not None:
-            self._bar.close()
-        if kind is None and self._bar is None:
-            print(f"lrchain: {self.what}: done in {seconds:.1f} s", file=sys.stderr, flush=True)
-        return False
+            if text:
+                self._bar.set_postfix_str(text, refresh=False)
+            self._bar.update(1)
 
 
 def note(text, progress=None):

@@ -24,6 +24,10 @@ def test_installed_package_imports(tmp_path):
     built = sorted(p.name for p in (build / "python" / "lrchain").glob("_*.so"))
     assert sorted(p.name for p in package.glob("_*.so")) == built
     assert (package / "model.py").is_file() and (package / "hdf5.py").is_file()
+    # lrchain.reproduce's executable: a relative link to the installed <prefix>/bin/lrchain
+    link = package / "bin" / "lrchain"
+    assert link.is_symlink() and not os.path.isabs(os.readlink(link))
+    assert (link.parent / os.readlink(link)).resolve() == (tmp_path / "bin" / "lrchain").resolve()
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     env["PYTHONPATH"] = str(tmp_path / site)
     code = ("import lrchain; c = lrchain.coefficients(lrchain.Params(rho=1/3), 'optical', 1.5707963267948966); "

@@ -3,8 +3,8 @@
 The venv is created with --system-site-packages (numpy, setuptools and wheel from Debian) and pip
 reuses this test build's CMake folder (LRCHAIN_CMAKE_BUILD_DIR), so that the test costs an install,
 not a second build of the library. From outside the source tree, the installed module computes
-coefficients equal to the build tree's, compiles a model file of its own and runs a short lattice
-run; `python3 -m build --no-isolation --wheel` gives a wheel that installs into a second venv.
+coefficients equal to the build tree's, compiles a model file of its own, runs a short lattice
+run and one quick step of lrchain.reproduce with the executable in the package; `python3 -m build --no-isolation --wheel` gives a wheel that installs into a second venv.
 """
 
 import importlib.util
@@ -44,7 +44,11 @@ PROBE = textwrap.dedent("""\
     m = lrchain.load_model(sys.argv[1])
     k = lrchain.coefficients(m, "acoustic", math.pi / 2)
     run = lrchain.simulate.ring(m, "acoustic", math.pi / 2, amplitudes=[0.01], sites=32, periods=10)
+    report = lrchain.reproduce("report", only="coefficients", jobs=1, progress=False)  # the packaged executable
     print(json.dumps({"file": lrchain.__file__, "version": lrchain.__version__,
+                      "reproduce_executable": str(lrchain.reproduce_executable().resolve()),
+                      "reproduce_pass": report.summary["pass"], "reproduce_failed": report.failed_steps,
+                      "errata_shipped": (report.out / "errata.html").read_text().count("<h2"),
                       "version_line": lrchain.provenance()["version_line"],
                       "omega": c.omega, "model_omega": float(k.omega), "ring_rows": len(run.amplitude)}))
     """)
@@ -85,6 +89,13 @@ def check_probe(result, venv_dir):
     # FPU dispersion omega = 2 sin(theta/2) (textbook; unit masses and springs): sqrt(2) at theta = pi/2.
     assert result["model_omega"] == pytest.approx(2 ** 0.5, rel=1e-12)
     assert result["ring_rows"] == 1
+    # lrchain.reproduce runs the executable copied into the package, which finds the examples and the
+    # errata page shipped beside it (share/lrchain); its one quick step gives the build tree's counts.
+    assert Path(result["reproduce_executable"]).is_relative_to(venv_dir.resolve())
+    assert result["reproduce_failed"] == 0
+    here = lrchain.reproduce(venv_dir.parent / "build-tree-report", only="coefficients", jobs=1, progress=False)
+    assert result["reproduce_pass"] == here.summary["pass"]
+    assert result["errata_shipped"] > 0
 
 
 def test_pip_install_into_fresh_venv(tmp_path):
