@@ -5,6 +5,7 @@
 #include <string>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
 
 namespace lrchain::jobs {
 

@@ -9,6 +9,7 @@
 #include <Spectra/GenEigsSolver.h>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
 
 namespace lrchain::sim::dark {
 

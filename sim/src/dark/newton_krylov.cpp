@@ -13,6 +13,7 @@
 #include <unsupported/Eigen/IterativeSolvers>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
 
 namespace lrchain::sim::dark {
 class ShootingJacobianOperator;

@@ -12,7 +12,6 @@
 #include "lrchain/index.hpp"
 #include "lrchain/sim/dark/krylov_floquet.hpp"
 #include "lrchain/sim/dark/newton_krylov.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
 
 namespace lrchain::jobs {
 

@@ -11,14 +11,15 @@
 #include <Eigen/Dense>
 
 #include "lrchain/index.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
-
 namespace lrchain::sim::dark {
+
+class DarkShooting;  // shooting.hpp
 
 struct KrylovFloquetOptions {
   Index count = 20;          // multipliers wanted, largest modulus first (>= 1)
   Index subspace = 0;        // Arnoldi vectors kept; 0: max(2 count + 1, count + 20)
-  Index max_restarts = 500;  // Arnoldi restarts before giving up
+  Index max_restarts = 100;  // Arnoldi restarts before giving up (a stable breather's multipliers crowd the unit
+                             // circle: there only some of them converge, reported as such)
   double tolerance = 1e-10;  // a Ritz value is converged when its residual <= tolerance |lambda|
 };
 

@@ -21,10 +21,11 @@
 #include <Eigen/Dense>
 
 #include "lrchain/index.hpp"
-#include "lrchain/sim/dark/shooting.hpp"
 #include "lrchain/sim/dark/shooting_problem.hpp"
 
 namespace lrchain::sim::dark {
+
+class DarkShooting;  // shooting.hpp
 
 struct NewtonKrylovOptions {
   NewtonOptions newton;                    // tolerance, iterations, progress: as the dense Newton
