@@ -13,7 +13,7 @@ BUILD_DIR=${1:-build}
 
 PACKAGES=(build-essential cmake pkg-config git
   libginac-dev libcln-dev ginac-tools
-  libeigen3-dev libboost-dev
+  libeigen3-dev libspectra-dev libboost-dev
   doctest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev
   libomp-dev gnuplot-nox fonts-dejavu-core
   libhdf5-dev libopenmpi-dev openmpi-bin

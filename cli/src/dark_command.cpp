@@ -18,6 +18,7 @@
 #include "lrchain/jobs/dark_schema.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
+#include "solver_options.hpp"
 #include "stop_signals.hpp"
 
 namespace lrchain::cli {
@@ -63,6 +64,7 @@ void add_common(CLI::App& sub, DarkArgs& a) {
       ->check(CLI::IsMember({"bond", "site"}).description(""))
       ->type_name("bond|site");
   add_integer(sub, "--sites", c.sites, config::dark_sites.least, config::dark_sites.most, help("sites"));
+  add_solver_options(sub, c.krylov, help);
   sub.add_option("--mode", c.mode, help("mode"))
       ->check(CLI::IsMember({"reversible", "full"}).description(""))
       ->type_name("reversible|full");

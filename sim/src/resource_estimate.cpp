@@ -84,6 +84,17 @@ ResourceEstimate estimate_dark_breather(double sites, bool floquet, double shoot
   return e;
 }
 
+ResourceEstimate estimate_krylov_breather(double positions, double fields, double band, double krylov_vectors) {
+  ResourceEstimate e;
+  const double lu = 8 * 20 * positions * fields * (2 * band + 1);
+  const double tangents = 8 * 14 * 17 * 2 * positions;
+  e.memory_bytes = lu + tangents + 8 * krylov_vectors * 2 * positions + 64 * 4 * positions;
+  e.dominant = "sites";
+  e.output_bytes = 24 * 6 * positions + 2e6;
+  e.sizes = fmt::format("{:.4g} positions (matrix-free)", positions);
+  return e;
+}
+
 ResourceEstimate estimate_regime_map(double pixels, double panels) {
   ResourceEstimate e;
   // Per panel: one byte per pixel, its CSV text (~36 characters per "x,y,regime" row) twice (the

@@ -101,6 +101,7 @@ json to_json(const BrightBreatherResult& r) {
     j["seed_difference"] = r.seed_difference;
   }
   if (r.floquet) j["floquet"] = floquet_json(*r.floquet);
+  if (r.krylov) j["krylov"] = to_json(*r.krylov);
   if (c.step == BrightStep::branch && r.newton.converged && r.rejected.empty()) j["branch"] = branch_json(r);
   if (const auto f = failure(r))
     j["failure"] = {{"kind", r.newton.converged ? "not_a_bright_breather" : "newton"}, {"message", *f}};

@@ -90,13 +90,17 @@ BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHook
   r.seed = bright_seed(ansatz, mean_flow, c.kernels->fields, c.sites);
   const BrightProfileOptions profile_options{c.tail_tolerance};
   r.seed_profile = inspect_bright_profile(r.seed, c.sites, profile_options);
-  r.newton = sim::dark::newton_solve(shooting, r.seed, c.omega_b, newton_options(c, hooks));
+  BreatherSolverOptions solver = c.krylov;
+  if (c.step == BrightStep::branch) solver.solver = "dense";  // the continuation's Jacobian is dense
+  r.newton = solve_breather(shooting, r.seed, c.omega_b, newton_options(c, hooks), solver, r.krylov);
   if (r.newton.converged) {
     r.z0 = r.newton.q;
     r.profile = inspect_bright_profile(r.z0, c.sites, profile_options);
     r.seed_difference = relative_profile_difference(r.z0, r.seed);
     r.rejected = r.profile.reason;
-    if (r.rejected.empty() && c.step == BrightStep::floquet)
+    if (r.rejected.empty() && c.step == BrightStep::floquet && r.krylov)
+      krylov_floquet(shooting, r.z0, c.omega_b, c.krylov, *r.krylov);
+    else if (r.rejected.empty() && c.step == BrightStep::floquet)
       r.floquet = bright_floquet(shooting.monodromy(r.z0, c.omega_b), mean_flow, {c.unit_tolerance});
     if (r.rejected.empty() && c.step == BrightStep::branch) continue_away_from_edge(shooting, c, hooks, r);
   }

@@ -39,6 +39,9 @@ void validate(const BrightBreatherConfig& c) {
     config::checked_option(double(c.points), config::dark_points, "points");
     if (!(std::isfinite(c.ds) && c.ds > 0 && c.ds <= 1)) throw InvalidParameter("ds", "must be in (0, 1] (it adapts within [1e-5, 1])");
   }
+  validate(c.krylov);
+  if (c.step == BrightStep::branch && c.krylov.solver == "krylov")
+    throw InvalidParameter("solver", "continue needs the dense Jacobian: dense or auto, got krylov");
   const Model& model = *c.model;
   const std::optional<Index> branch = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
   const auto bands = sim::bright::linear_bands(model);
@@ -51,7 +54,12 @@ void validate(const BrightBreatherConfig& c) {
   sim::bright::check_non_resonance(bands, c.omega_b);
   sim::bright::focusing_edge(model, branch, c.omega_b);
   const double sites = double(c.sites) * double(c.kernels->fields) / 2.0;  // the estimate counts two fields per site
-  const sim::ResourceEstimate e = sim::estimate_dark_breather(sites, true, 2 * std::numbers::pi / c.omega_b, 0);
+  const double positions = double(c.sites) * double(c.kernels->fields);
+  const sim::ResourceEstimate e =
+      c.step != BrightStep::branch && use_krylov(c.krylov, c.sites)
+          ? sim::estimate_krylov_breather(positions, c.kernels->fields, double(c.krylov.krylov_band),
+                                          double(sim::dark::NewtonKrylovOptions{}.gmres_restart + 2 * c.krylov.floquet_count + 20))
+          : sim::estimate_dark_breather(sites, true, 2 * std::numbers::pi / c.omega_b, 0);
   sim::check_memory(e, c.max_memory, "sites", "lower sites");
   check_output_directory(e, c.out);
 }

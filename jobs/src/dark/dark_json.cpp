@@ -143,6 +143,7 @@ json to_json(const DarkResult& r) {
     j["monodromy"] = r.monodromy;
     j["floquet"] = floquet_json(*r.floquet);
   }
+  if (r.krylov) j["krylov"] = to_json(*r.krylov);
   return j;
 }
 

@@ -90,7 +90,9 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   const DarkShooting shooting(*c.kernels, sim::lattice_parameters(model), *c.sites, ansatz.mean_flow,
                                    parse_shooting_mode(c.mode), integration, contacts);
   r.seed = dark_seed(ansatz, parse_dark_center(c.center), *c.sites);
-  r.newton = newton_solve(shooting, r.seed, c.omega_b, newton_options(c, hooks));
+  BreatherSolverOptions solver = c.krylov;
+  if (c.step == DarkStep::branch || shooting.mode() == ShootingMode::full) solver.solver = "dense";
+  r.newton = solve_breather(shooting, r.seed, c.omega_b, newton_options(c, hooks), solver, r.krylov);
   if (!r.newton.converged) return;
   // A zero of the shooting map is any periodic orbit: keep it only if it is a dark breather.
   if (const std::string shape = dark_shape_failure(ansatz, parse_dark_center(c.center), *c.sites, r.newton.q);
@@ -111,7 +113,9 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
     return;
   }
   shooting.measure(r.z0, c.omega_b, r.measures);
-  if (c.step == DarkStep::floquet) {
+  if (c.step == DarkStep::floquet && r.krylov) {
+    krylov_floquet(shooting, r.z0, c.omega_b, c.krylov, *r.krylov);
+  } else if (c.step == DarkStep::floquet) {
     r.floquet = floquet_from_monodromy(shooting.monodromy(r.z0, c.omega_b));
     r.monodromy = "full period";
   }

@@ -63,6 +63,10 @@ void validate_model(const DarkConfig& c) {
   if (c.kernels == nullptr) throw InvalidParameter("model", "needs its lattice kernels (DarkConfig::kernels)");
   parse_dark_center(c.center);
   parse_shooting_mode(c.mode);
+  if (c.krylov.solver == "krylov" && c.step == DarkStep::branch)
+    throw InvalidParameter("solver", "continue needs the dense Jacobian: dense or auto, got krylov");
+  if (c.krylov.solver == "krylov" && parse_shooting_mode(c.mode) == ShootingMode::full)
+    throw InvalidParameter("solver", "krylov solves the reversible shooting: mode full needs dense or auto");
   if (c.full_monodromy)
     throw InvalidParameter("full_monodromy", "with a model file the Floquet multipliers always come from the "
                                              "full-period monodromy");
@@ -85,6 +89,11 @@ void validate_model(const DarkConfig& c) {
 
 // The same for a model: the estimate counts two fields per site, scaled to the model's fields.
 sim::ResourceEstimate model_estimate(const DarkConfig& c, double periods) {
+  if (c.step != DarkStep::branch && parse_shooting_mode(c.mode) == ShootingMode::reversible &&
+      use_krylov(c.krylov, dark_sites(c)))
+    return sim::estimate_krylov_breather(double(dark_sites(c)) * double(c.kernels->fields), c.kernels->fields,
+                                         double(c.krylov.krylov_band),
+                                         double(sim::dark::NewtonKrylovOptions{}.gmres_restart + 2 * c.krylov.floquet_count + 20));
   const double sites = double(dark_sites(c)) * double(c.kernels->fields) / 2.0;
   return sim::estimate_dark_breather(sites, true, 2 * std::numbers::pi / c.omega_b, periods);
 }
@@ -104,6 +113,10 @@ void validate(const DarkConfig& c) {
   if (c.max_iterations < 1) throw InvalidParameter("max_iterations", "must be an integer >= 1");
   if (c.format != "csv" && c.format != "hdf5") throw InvalidParameter("format", "must be csv or hdf5");
   if (c.step == DarkStep::branch) config::checked_option(double(c.points), config::dark_points, "points");
+  validate(c.krylov);
+  if (!c.model && c.krylov.solver == "krylov")
+    throw InvalidParameter("solver", "krylov needs a model file (e.g. the shipped resonant_chain); the paper chain's "
+                                     "own shooting is dense");
   if (c.model) validate_model(c);
   else validate_chain(c);
   double periods = 0;

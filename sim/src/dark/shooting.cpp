@@ -27,7 +27,22 @@ using OrbitState = std::vector<double>;
 // storage once, and the number of tangent columns changes between calls).
 struct DarkOrbit::Steppers {
   odeint::runge_kutta_fehlberg78<OrbitState> orbit;
+  odeint::runge_kutta_fehlberg78<OrbitState> replay;  // record/replay: sized once per extended size
 };
+
+namespace {
+// The orbit and `columns` tangents: [Z, Zdot | dZ_j, dZdot_j] -> [Zdot, Zddot | dZdot_j, J(Z) dZ_j].
+void extended_rhs(const DarkOrbit& orbit, const double* s, double* ds, std::size_t columns) {
+  const std::size_t P = std::size_t(orbit.positions()), n = 2 * P;
+  orbit.rhs(s, ds);
+  for (std::size_t j = 1; j <= columns; ++j) {
+    const double* column = s + n * j;
+    double* out = ds + n * j;
+    std::copy(column + P, column + n, out);
+    orbit.lattice().jacobian_action(s, column, out + P);
+  }
+}
+}  // namespace
 
 // The orbit's first-order system with the overlaps of its one-sided contacts as contact functions.
 class DarkOrbit::Contacts final : public ContactSystem {
@@ -147,14 +162,8 @@ void DarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi, doub
   std::copy(state.begin(), state.end(), extended_.begin());
   for (std::size_t j = 0; j < columns; ++j)
     for (std::size_t i = 0; i < n; ++i) extended_[n * (1 + j) + i] = phi(Eigen::Index(i), Eigen::Index(j));
-  auto system = [this, P, n, columns](const OrbitState& s, OrbitState& ds, double) {
-    rhs(s.data(), ds.data());
-    for (std::size_t j = 1; j <= columns; ++j) {
-      const double* column = s.data() + n * j;
-      double* out = ds.data() + n * j;
-      std::copy(column + P, column + n, out);
-      lattice_.jacobian_action(s.data(), column, out + P);
-    }
+  auto system = [this, columns](const OrbitState& s, OrbitState& ds, double) {
+    extended_rhs(*this, s.data(), ds.data(), columns);
   };
   odeint::runge_kutta_fehlberg78<OrbitState> stepper;
   auto replay = [&] {  // orbit and tangents on the recorded steps
@@ -182,6 +191,38 @@ void DarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi, doub
   std::copy(extended_.begin(), extended_.begin() + Eigen::Index(n), state.begin());
   for (std::size_t j = 0; j < columns; ++j)
     for (std::size_t i = 0; i < n; ++i) phi(Eigen::Index(i), Eigen::Index(j)) = extended_[n * (1 + j) + i];
+}
+
+void DarkOrbit::record(std::vector<double>& state, double t0, double t1, RecordedSteps& steps) const {
+  steps.start.clear();
+  steps.size.clear();
+  if (contact_integrator_) {
+    integrate(state, t0, t1);
+    steps.start.assign(times_.begin(), times_.end());
+    steps.size.assign(steps_.begin(), steps_.end());
+    if (!std::isfinite(state.front())) steps.start.clear(), steps.size.clear();
+    return;
+  }
+  AdaptiveRun run{odeint::make_controlled(options_.abs_tol, options_.rel_tol, options_.max_step, steppers_->orbit), t0,
+                  t1, std::min(options_.initial_step, t1 - t0), 0,
+                  1000 + std::size_t(options_.max_steps_per_time * std::max(0.0, t1 - t0))};
+  bool more = true;
+  while (more) {
+    more = smooth_chunk(run, state, true);
+    steps.start.insert(steps.start.end(), times_.begin(), times_.end());
+    steps.size.insert(steps.size.end(), steps_.begin(), steps_.end());
+  }
+  if (run.ran_away) steps.start.clear(), steps.size.clear();
+}
+
+void DarkOrbit::replay(const RecordedSteps& steps, std::vector<double>& extended, Index columns) const {
+  const std::size_t n = 2 * std::size_t(positions_), m = std::size_t(columns);
+  if (extended.size() != n * (1 + m)) throw std::invalid_argument("DarkOrbit::replay: extended must have 2 positions() (1 + columns) entries");
+  auto system = [this, m](const OrbitState& s, OrbitState& ds, double) { extended_rhs(*this, s.data(), ds.data(), m); };
+  for (std::size_t k = 0; k < steps.size.size(); ++k) {
+    if (options_.stop && options_.stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
+    steppers_->replay.do_step(system, extended, steps.start[k], steps.size[k]);
+  }
 }
 
 DarkShooting::DarkShooting(const lrchain_lattice_kernels& kernels, std::vector<double> parameters,

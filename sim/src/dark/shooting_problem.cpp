@@ -35,17 +35,15 @@ std::string trivial_state_failure(const DarkShootingProblem& shooting, const Eig
 }
 }  // namespace
 
-NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q0, double omega_b,
-                          const NewtonOptions& options) {
+NewtonResult newton_iterate(const DarkShootingProblem& shooting, Eigen::VectorXd q0, const NewtonOptions& options,
+                            const NewtonLinearization& linearize, const NewtonStep& step_of) {
   NewtonResult result;
   const double seed_amplitude = state_amplitude(shooting, q0);
   result.q = std::move(q0);
   Eigen::VectorXd r;
-  Eigen::MatrixXd J;
-  const Index k = shooting.unknowns();
   double first = -1;
   for (Index it = 0; it <= options.max_iterations; ++it) {
-    shooting.evaluate(result.q, omega_b, r, &J);
+    linearize(result.q, r);
     NewtonRecord rec;
     rec.iteration = it;
     rec.residual = r.lpNorm<Eigen::Infinity>();
@@ -75,13 +73,25 @@ NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q
       if (options.progress) options.progress(rec);
       return result;
     }
-    const Eigen::VectorXd step = J.leftCols(k).colPivHouseholderQr().solve(-r);
+    const Eigen::VectorXd step = step_of(result.q, r);
     rec.step = step.lpNorm<Eigen::Infinity>();
     result.history.push_back(rec);
     if (options.progress) options.progress(rec);
     result.q += step;
   }
   return result;
+}
+
+NewtonResult newton_solve(const DarkShootingProblem& shooting, Eigen::VectorXd q0, double omega_b,
+                          const NewtonOptions& options) {
+  Eigen::MatrixXd J;
+  const Index k = shooting.unknowns();
+  return newton_iterate(
+      shooting, std::move(q0), options,
+      [&](const Eigen::VectorXd& q, Eigen::VectorXd& r) { shooting.evaluate(q, omega_b, r, &J); },
+      [&](const Eigen::VectorXd&, const Eigen::VectorXd& r) -> Eigen::VectorXd {
+        return J.leftCols(k).colPivHouseholderQr().solve(-r);
+      });
 }
 
 std::string newton_failure_message(const NewtonResult& result, double omega_b) {

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/coefficients.hpp"
+#include "lrchain/jobs/breather_solver.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/bright/bright_floquet.hpp"
 #include "lrchain/sim/bright/bright_profile.hpp"
@@ -55,6 +56,8 @@ struct BrightBreatherConfig {
   Index points = 20;               // maximum number of branch points, the first included, in [1, 1e6]
   double ds = 0.05;                // initial pseudo-arclength step in (Z(0), omega_b), in (0, 1]
   bool branch_floquet = true;      // Floquet multipliers at every branch point
+  // solve, floquet: the dense path or the matrix-free one (breather_solver.hpp); continue is dense
+  BreatherSolverOptions krylov;
   double max_memory = 0;           // bytes the job may use; 0: the machine's available memory
   std::string out;                 // output directory ("": no files)
   std::string format = "csv";      // csv | hdf5: hdf5 also writes result.h5 in `out` (bright_breather_hdf5.hpp)
@@ -102,6 +105,7 @@ struct BrightBreatherResult {
   std::vector<sim::bright::BrightProfile> branch_profiles;
   std::vector<sim::bright::BrightFloquet> branch_floquets;
   double window_low = 0, window_high = 0;  // the non-resonant window of omega_b (high: inf when unbounded)
+  std::optional<KrylovRecord> krylov;  // the matrix-free path's record (floquet: the leading multipliers), absent on the dense one
   double seconds = 0;               // wall time of run()
 };
 

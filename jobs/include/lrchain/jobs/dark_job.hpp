@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "lrchain/jobs/breather_solver.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/params.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
@@ -61,6 +62,9 @@ struct DarkConfig {
   double t_end = 0;   // integration time, at least one period T_b = 2 pi/omega_b (required)
   Index samples = 24;  // samples of x_n(t) per period for the position measure, in [4, 1e6]
   // resources and files:
+  // with a model file, solve/floquet/evolve: the dense path or the matrix-free one (breather_solver.hpp);
+  // continue, full mode and the paper chain's own shooting are dense
+  BreatherSolverOptions krylov;
   double max_memory = 0;    // bytes the job may use; 0: the machine's available memory
   std::string out;          // output directory ("": no files)
   std::string format = "csv";  // csv | hdf5 (also out/result.h5: jobs/model_dark_hdf5.hpp, dark_evolution_hdf5.hpp)
@@ -113,6 +117,7 @@ struct DarkResult {
   std::optional<Index> contact_changes_per_period;  // models with one-sided contacts
   sim::dark::BranchResult branch;
   sim::dark::DarkEvolution evolution;
+  std::optional<KrylovRecord> krylov;  // the matrix-free path's record (floquet: the leading multipliers), absent on the dense one
   bool model_file() const { return config.model != nullptr; }
 };
 

@@ -50,6 +50,12 @@ std::vector<double> times_inside_run(const std::vector<double>& given, const std
 ResourceEstimate estimate_dark_breather(double sites, bool floquet, double shooting_time,
                                         double periods);
 
+// Exact breathers on the matrix-free path (dark/newton_krylov.hpp, dark/krylov_floquet.hpp) of
+// `positions` unknowns: the band-probed Jacobian and its sparse LU (fill ~ 20 x its fields x (2 band + 1)
+// entries per row), batches of 16 tangents with Runge-Kutta-Fehlberg 7(8)'s 13 stages, the GMRES and
+// Arnoldi bases (`krylov_vectors` of 2 positions each).
+ResourceEstimate estimate_krylov_breather(double positions, double fields, double band, double krylov_vectors);
+
 // A regime map of `pixels` pixels in `panels` panels (CSV text, pixel values, boundary curves).
 ResourceEstimate estimate_regime_map(double pixels, double panels);
 

@@ -56,6 +56,18 @@ class DarkOrbit {
   void integrate(std::vector<double>& state, Eigen::MatrixXd& phi, double t0, double t1) const;
   // [qdot, qddot] of state s.
   void rhs(const double* s, double* ds) const;
+  // The accepted steps of one integration, all of them (for the matrix-free products of
+  // newton_krylov.hpp and krylov_floquet.hpp, which replay them once per product).
+  struct RecordedSteps {
+    std::vector<double> start, size;
+  };
+  // Integrates state from t0 to t1 with error control (as integrate) and records every accepted
+  // step into `steps`; state NaN and steps empty when the orbit ran away.
+  void record(std::vector<double>& state, double t0, double t1, RecordedSteps& steps) const;
+  // Orbit and `columns` tangents, extended = [state | tangent 1 | ...] (each 2 positions()), advanced
+  // together on the recorded steps: the derivative of the discrete flow, as integrate(state, phi, ...).
+  // Allocates nothing once the stepper has seen this extended size.
+  void replay(const RecordedSteps& steps, std::vector<double>& extended, Index columns) const;
 
  private:
   struct Steppers;

@@ -68,6 +68,14 @@ double state_amplitude(const DarkShootingProblem& shooting, const Eigen::VectorX
 // A zero of F whose amplitude fell to this fraction of a breather's is the trivial state.
 inline constexpr double trivial_state_ratio = 1e-8;
 
+// Newton's loop (Sec. 5.3), shared by the dense Newton and Newton-Krylov (newton_krylov.hpp):
+// linearize(q, r) evaluates the residual F(q) into r (and whatever the step needs), step(q, r) returns
+// the Newton step dq; the convergence test, the trivial-state check and the failures are the loop's.
+using NewtonLinearization = std::function<void(const Eigen::VectorXd& q, Eigen::VectorXd& residual)>;
+using NewtonStep = std::function<Eigen::VectorXd(const Eigen::VectorXd& q, const Eigen::VectorXd& residual)>;
+NewtonResult newton_iterate(const DarkShootingProblem& shooting, Eigen::VectorXd q0, const NewtonOptions& options,
+                            const NewtonLinearization& linearize, const NewtonStep& step);
+
 // Newton (least squares, column-pivoting QR) on F(., omega_b) = 0 from q0 (Sec. 5.3). A zero of F
 // whose amplitude max|z - mean(z)| fell below 1e-8 of the seed's is the trivial state, no breather:
 // reported as not converged, failure "converged to the trivial state ...".

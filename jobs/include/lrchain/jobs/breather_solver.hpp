@@ -1,0 +1,50 @@
+#pragma once
+// How the exact-breather jobs (bright, and dark with a model file) solve and analyse a breather: the
+// dense path (the full Jacobian / monodromy per Newton step, O(N^2.3)) or the matrix-free one
+// (Newton-Krylov and Arnoldi on tangent products, sim/dark/newton_krylov.hpp and
+// sim/dark/krylov_floquet.hpp), chosen by the number of sites unless forced.
+#include <optional>
+#include <string>
+
+#include <Eigen/Dense>
+#include <nlohmann/json.hpp>
+
+#include "lrchain/index.hpp"
+#include "lrchain/sim/dark/krylov_floquet.hpp"
+#include "lrchain/sim/dark/newton_krylov.hpp"
+
+namespace lrchain::jobs {
+
+struct BreatherSolverOptions {
+  std::string solver = "auto";  // auto | dense | krylov; auto: krylov above krylov_sites sites
+  Index krylov_sites = 400;     // auto: the matrix-free path above this many sites, >= 9
+  Index krylov_band = 12;       // Newton-Krylov preconditioner half-width in sites, >= 1
+  Index floquet_count = 20;     // matrix-free Floquet: the leading multipliers computed, >= 1
+};
+
+// InvalidParameter naming the key (solver, krylov_sites, krylov_band, floquet_count).
+void validate(const BreatherSolverOptions& o);
+
+// Whether a job on `sites` sites takes the matrix-free path.
+bool use_krylov(const BreatherSolverOptions& o, Index sites);
+
+// What the matrix-free path did (absent from a dense run's result and JSON).
+struct KrylovRecord {
+  sim::dark::NewtonKrylovStats newton;
+  std::optional<sim::dark::KrylovFloquetResult> floquet;
+  double solve_seconds = 0, floquet_seconds = 0;
+};
+
+nlohmann::json to_json(const KrylovRecord& r);
+
+// Newton on `shooting` from q0: dense (newton_solve) or, when use_krylov, Newton-Krylov with its
+// record started in `record`.
+sim::dark::NewtonResult solve_breather(const sim::dark::DarkShooting& shooting, Eigen::VectorXd q0, double omega_b,
+                                       const sim::dark::NewtonOptions& newton, const BreatherSolverOptions& o,
+                                       std::optional<KrylovRecord>& record);
+
+// The leading floquet_count multipliers by Arnoldi into record->floquet (record present).
+void krylov_floquet(const sim::dark::DarkShooting& shooting, const Eigen::VectorXd& z0, double omega_b,
+                    const BreatherSolverOptions& o, KrylovRecord& record);
+
+}  // namespace lrchain::jobs

@@ -1,0 +1,69 @@
+// The dense or matrix-free path of the exact-breather jobs (breather_solver.hpp).
+#include "lrchain/jobs/breather_solver.hpp"
+
+#include <chrono>
+#include <string>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
+
+namespace lrchain::jobs {
+
+void validate(const BreatherSolverOptions& o) {
+  if (o.solver != "auto" && o.solver != "dense" && o.solver != "krylov")
+    throw InvalidParameter("solver", "must be auto, dense or krylov, got '" + o.solver + "'");
+  if (o.krylov_sites < 9) throw InvalidParameter("krylov_sites", "must be an integer >= 9");
+  if (o.krylov_band < 1) throw InvalidParameter("krylov_band", "must be an integer >= 1");
+  if (o.floquet_count < 1) throw InvalidParameter("floquet_count", "must be an integer >= 1");
+}
+
+bool use_krylov(const BreatherSolverOptions& o, Index sites) {
+  return o.solver == "krylov" || (o.solver == "auto" && sites > o.krylov_sites);
+}
+
+nlohmann::json to_json(const KrylovRecord& r) {
+  nlohmann::json j;
+  j["gmres_iterations"] = r.newton.gmres_iterations;
+  j["jacobian_products"] = r.newton.jacobian_products;
+  j["preconditioner_builds"] = r.newton.preconditioner_builds;
+  j["probe_columns"] = r.newton.probe_columns;
+  j["solve_seconds"] = r.solve_seconds;
+  if (r.floquet) {
+    nlohmann::json f;
+    nlohmann::json values = nlohmann::json::array();
+    for (const auto& l : r.floquet->multipliers) values.push_back({{"re", l.real()}, {"im", l.imag()}, {"modulus", std::abs(l)}});
+    f["multipliers"] = values;
+    f["requested"] = r.floquet->requested;
+    f["converged"] = r.floquet->converged;
+    f["restarts"] = r.floquet->restarts;
+    f["products"] = r.floquet->products;
+    f["seconds"] = r.floquet_seconds;
+    j["leading_floquet"] = f;
+  }
+  return j;
+}
+
+sim::dark::NewtonResult solve_breather(const sim::dark::DarkShooting& shooting, Eigen::VectorXd q0, double omega_b,
+                                       const sim::dark::NewtonOptions& newton, const BreatherSolverOptions& o,
+                                       std::optional<KrylovRecord>& record) {
+  if (!use_krylov(o, shooting.sites())) return sim::dark::newton_solve(shooting, std::move(q0), omega_b, newton);
+  const auto start = std::chrono::steady_clock::now();
+  record.emplace();
+  sim::dark::NewtonKrylovOptions k;
+  k.newton = newton;
+  k.band = o.krylov_band;
+  sim::dark::NewtonResult r = sim::dark::newton_krylov_solve(shooting, std::move(q0), omega_b, k, &record->newton);
+  record->solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+void krylov_floquet(const sim::dark::DarkShooting& shooting, const Eigen::VectorXd& z0, double omega_b,
+                    const BreatherSolverOptions& o, KrylovRecord& record) {
+  const auto start = std::chrono::steady_clock::now();
+  sim::dark::KrylovFloquetOptions f;
+  f.count = o.floquet_count;
+  record.floquet = sim::dark::leading_multipliers(shooting, z0, omega_b, f);
+  record.floquet_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace lrchain::jobs
