@@ -9,6 +9,7 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/half_angle.hpp"
+#include "coefficient_check.hpp"
 
 namespace lrchain {
 
@@ -158,7 +159,7 @@ namespace {
 
 // Roots of det M in omega^2, the branch's omega, the emitted NLS evaluator, the singular test
 // (inlined into both entry points: this is the hot path of every map and scan).
-[[gnu::always_inline]] inline bool evaluate_coefficients(const ModelDefinition& d, const double* q, Index branch,
+[[gnu::always_inline]] inline bool evaluate_unchecked(const ModelDefinition& d, const double* q, Index branch,
                                                          double theta, NlsCoefficients& c) noexcept {
   double sh, ch;
   detail::half_angle_sincos(0.5 * theta, sh, ch);
@@ -196,12 +197,20 @@ namespace {
   return true;
 }
 
+// The unchecked evaluation, then its check against omega's derivatives (coefficient_check.cpp).
+[[gnu::always_inline]] inline bool evaluate_coefficients(const ModelDefinition& d, const double* q, Index branch,
+                                                         double theta, NlsCoefficients& c) noexcept {
+  if (!evaluate_unchecked(d, q, branch, theta, c)) return false;
+  detail::check_or_limit(d, q, branch, c);
+  return true;
+}
+
 // The coefficients at `parameters` (one value per parameter), intermediates recomputed.
 bool coefficients_with(const ModelDefinition& d, const std::vector<double>& parameters, Index branch, double theta) {
   std::vector<double> q(d.parameters.size() + d.intermediates.size(), 0.0);
   d.evaluators.evaluate_intermediates(parameters.data(), q.data());
   NlsCoefficients c;
-  return evaluate_coefficients(d, q.data(), branch, theta, c);
+  return evaluate_unchecked(d, q.data(), branch, theta, c);
 }
 
 // Where the coefficients at (branch, theta) fail although they exist there at the model's defaults:
@@ -239,6 +248,11 @@ void blame_parameter(const Model& model, Index branch, double theta) {
 }
 
 }  // namespace
+
+bool detail::unchecked_model_coefficients(const ModelDefinition& d, const double* q, Index branch, double theta,
+                                          NlsCoefficients& c) noexcept {
+  return evaluate_unchecked(d, q, branch, theta, c);
+}
 
 bool coefficients_at(const ModelDefinition& d, const double* q, Index branch, double theta,
                      NlsCoefficients& c) noexcept {

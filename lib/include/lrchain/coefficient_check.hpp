@@ -1,0 +1,36 @@
+#pragma once
+// The check of a loaded model's NLS coefficients against omega itself: c = omega' and omega''
+// from det M = 0 alone (Richardson-extrapolated central differences of the branch's omega^2 in
+// theta), independent of the emitted expressions for c, omega'', h. Where the emitted expressions
+// are 0/0 or lose their digits (a removable singularity, e.g. omega^2 = k3/m3 of a resonator),
+// coefficients() evaluates them by their limit; what fails both is refused as singular.
+#include <string_view>
+
+#include "lrchain/coefficients.hpp"
+#include "lrchain/index.hpp"
+
+namespace lrchain {
+
+struct ModelDefinition;
+
+// omega's first and second derivative in theta along one branch of det M = 0, with error estimates
+// (the change between two Richardson levels plus the rounding of the differences).
+struct BranchDerivatives {
+  double group_velocity = 0, group_velocity_error = 0;  // c = omega'
+  double curvature = 0, curvature_error = 0;            // omega''
+};
+
+// Derivatives of omega on `branch` at theta (omega = that branch's frequency there) from the model's
+// det M evaluator only; false where the branch has no positive omega^2 at a nearby wavenumber.
+bool branch_derivatives(const ModelDefinition& definition, const double* q, Index branch, double theta, double omega,
+                        BranchDerivatives& out) noexcept;
+
+// True when c and omega'' of `c` agree with `d` (tolerance: 1e-7 relative to |c| + omega, resp.
+// |omega''| + |c| + omega, plus ten times the estimated error of the differences).
+bool agrees_with_derivatives(const NlsCoefficients& c, const BranchDerivatives& d) noexcept;
+
+// Why `c` is singular (its regime is Regime::singular), or empty: a violated non-resonance
+// condition (a pole of h), or a removable singularity whose limit could not be evaluated.
+std::string_view singular_reason(const NlsCoefficients& c);
+
+}  // namespace lrchain
