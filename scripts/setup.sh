@@ -17,10 +17,12 @@ PACKAGES=(build-essential cmake pkg-config git
   doctest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev
   libomp-dev gnuplot-nox fonts-dejavu-core
   libhdf5-dev libopenmpi-dev openmpi-bin
-  python3-dev pybind11-dev python3-pybind11 python3-numpy
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-venv python3-setuptools python3-wheel
+  python3-xarray python3-scipy python3-tqdm
   libcmark-gfm-dev libcmark-gfm-extensions-dev libssl-dev)
 if [[ "${LRCHAIN_TEST_TOOLS:-0}" == 1 ]]; then
-  PACKAGES+=(chromium python3-pytest python3-h5py python3-matplotlib)
+  PACKAGES+=(chromium python3-pytest python3-h5py python3-matplotlib python3-build python3-nbclient
+    python3-nbformat python3-ipykernel)
 fi
 
 missing=()

@@ -11,15 +11,16 @@
 set -uo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
-LRCHAIN_TEST_TOOLS=1 scripts/setup.sh build || exit 1
+TIMEFORMAT="== test.sh: set-up and Release build: %0R s wall, %0U s user, %0S s sys"
+time LRCHAIN_TEST_TOOLS=1 scripts/setup.sh build || exit 1
 
 failed=()
-stage() {  # stage NAME COMMAND...: runs, times and records one stage
-  local name=$1 start=$SECONDS
+stage() {  # stage NAME COMMAND...: runs, times (wall and CPU user+sys) and records one stage
+  local name=$1 TIMEFORMAT
   shift
   echo "== test.sh: $name" >&2
-  "$@" || failed+=("$name")
-  echo "== test.sh: $name: $((SECONDS - start)) s" >&2
+  TIMEFORMAT="== test.sh: $name: %0R s wall, %0U s user, %0S s sys"
+  time "$@" || failed+=("$name")
 }
 
 stage "fast tests" ctest --test-dir build -L fast --output-on-failure -j "$jobs"

@@ -25,12 +25,8 @@ struct CoeffsOptions {
   bool table = false;
 };
 
-// The help of a CoeffsConfig key: its documentation, range and default (kCoeffsOptions).
-std::string help_of(std::string_view key) {
-  for (const jobs::CoeffsOption& o : jobs::kCoeffsOptions)
-    if (key == o.key) return fmt::format("{}: {} (default: {})", o.documentation, o.range_text, o.default_text);
-  return {};
-}
+// The help of a CoeffsConfig key: its documentation, range and default (coeffs_options()).
+std::string help_of(const std::string& key) { return jobs::help_text(jobs::find_option(jobs::coeffs_options(), key)); }
 
 }  // namespace
 
@@ -45,7 +41,7 @@ void register_coeffs(CLI::App& app) {
   add_model_options(*cmd, opts->params, /*rho_required=*/false);
   add_model_file_options(*cmd, opts->model);
   cmd->add_option("--branch", opts->branch, help_of("branch"))->type_name("NAME");
-  cmd->add_flag("--json", opts->json, help_of("format") + " (--json: JSON)");
+  cmd->add_flag("--json", opts->json, help_of("format"));
   cmd->add_flag("--table", opts->table, help_of("table"));
   add_examples(*cmd, {"lrchain coeffs --branch optical --theta pi/2 --rho 1/3",
                       "lrchain coeffs --branch acoustic --theta 3*pi/5 --rho 1 --json",

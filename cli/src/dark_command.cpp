@@ -130,7 +130,6 @@ void dispatch(const DarkArgs& a, DarkStep step, const CLI::App& cmd) {
     return;
   }
   if (config.full_monodromy) throw InputError("--full-monodromy: with --model the Floquet multipliers always come from the full-period monodromy");
-  if (config.format == "hdf5") throw InputError("--format hdf5 is not available with --model (it writes CSV and figures; use --format csv)");
   const Model model = load_selected_model(a.model, cmd, config.params, true);
   const LatticeCode code = lattice_kernels_for(a.model, model);
   config.model = &model;
@@ -176,7 +175,7 @@ void register_dark(CLI::App& app) {
   add_integer(*evo, "--samples", c.samples, config::dark_samples.least, config::dark_samples.most, help("samples"));
   add_examples(*evo, {"lrchain dark evolve --rho 1/3 --center bond --omega-b 2.44 --t-end 500 --out out/dark-evolve"});
   evo->callback([args, evo] { dispatch(*args, DarkStep::evolve, *evo); });
-  for (auto* sub : {solve_cmd, floq, cont})
+  for (auto* sub : {solve_cmd, floq, cont, evo})
     sub->add_option("--format", c.format, help("format"))
         ->check(CLI::IsMember({"csv", "hdf5"}).description(""))
         ->type_name("csv|hdf5");

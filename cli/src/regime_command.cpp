@@ -17,11 +17,13 @@
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/regime_job.hpp"
+#include "lrchain/jobs/regime_schema.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/sim/output_lock.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
+#include "schema_help.hpp"
 
 namespace lrchain::cli {
 
@@ -29,22 +31,6 @@ namespace {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
-
-// Runs `job`, spelling a job's Config key in an InvalidParameter as the CLI's option (rho_range ->
-// rho-range).
-template <class Job>
-auto with_option_names(Job&& job) {
-  try {
-    return job();
-  } catch (const InvalidParameter& e) {
-    std::string option = e.parameter();
-    std::replace(option.begin(), option.end(), '_', '-');
-    if (option == e.parameter()) throw;
-    const std::string prefix = "invalid " + e.parameter() + ": ";
-    const std::string what = e.what();
-    throw InvalidParameter(option, what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
-  }
-}
 
 // The lattice of a regime job: a --model file, or the resonant chain at --rho etc. (and --set).
 jobs::RegimeLattice lattice_of(const ModelSelection& selection, const Model& m) {
@@ -79,7 +65,7 @@ void run_intervals(const IntervalsArgs& a, const CLI::App& cmd) {
   c.lattice = lattice_of(a.model, model);
   c.branch = a.branch;
   c.samples = a.samples;
-  json out = with_option_names([&] { return jobs::to_json(jobs::run(c)); });
+  json out = with_option_names(jobs::regime_intervals_options(), [&] { return jobs::to_json(jobs::run(c)); });
   out["provenance"] = provenance_json();
   std::cout << out.dump(a.json_flag ? -1 : 2) << '\n';
 }
@@ -134,12 +120,12 @@ void run_map(const MapArgs& a, const CLI::App& cmd) {
   c.rho_range = range_option(a.rho_range, "rho-range");
   c.delta0_range = range_option(a.delta0_range, "delta0-range");
   c.omega_range = range_option(a.omega_range, "omega-range");
-  with_option_names([&] { jobs::validate(c, a.out); });
+  with_option_names(jobs::regime_map_options(), [&] { jobs::validate(c, a.out); });
   const fs::path dir(a.out);
   const sim::OutputLock lock(dir);
   const sim::OutputListing earlier = sim::list_output_files(dir);  // files of an earlier run
   sim::Figures figures(dir);
-  const jobs::RegimeMapResult result = with_option_names([&] { return jobs::run(c); });
+  const jobs::RegimeMapResult result = with_option_names(jobs::regime_map_options(), [&] { return jobs::run(c); });
   json out = jobs::to_json(result, jobs::write(result, dir, figures));
   out["out"] = fs::absolute(dir).string();
   figures.finish(out);
@@ -171,7 +157,7 @@ void run_thresholds(const ThresholdsArgs& a, const CLI::App& cmd) {
   c.branch = a.branch;
   c.axis = a.axis;
   c.axis_range = range_option(a.axis_range, "axis-range");
-  json out = with_option_names([&] { return jobs::to_json(jobs::run(c)); });
+  json out = with_option_names(jobs::regime_thresholds_options(), [&] { return jobs::to_json(jobs::run(c)); });
   out["provenance"] = provenance_json();
   std::cout << out.dump(a.json_flag ? -1 : 2) << '\n';
 }
@@ -197,12 +183,10 @@ void register_regime(CLI::App& app) {
       "theta is the dimensionless carrier wavenumber (radians per site).");
   add_model_options(*in, ia->p, false);
   add_model_file_options(*in, ia->model);
-  in->add_option("--branch", ia->branch,
-                 "optical or acoustic (default optical); with --model: the model's branch names (default optical, or "
-                 "its only branch)")
-      ->type_name("NAME");
+  const auto intervals_help = [](const char* key) { return schema_help(jobs::regime_intervals_options(), key); };
+  in->add_option("--branch", ia->branch, intervals_help("branch"))->type_name("NAME");
   add_integer(*in, "--samples", ia->samples, config::intervals_samples.least, config::intervals_samples.most,
-              fmt::format("theta samples used to bracket the zeros (default {})", jobs::RegimeIntervalsConfig{}.samples));
+              intervals_help("samples"));
   in->add_flag("--json", ia->json_flag, "print the JSON on one line (default: indented)");
   add_examples(*in, {"lrchain regime intervals --branch acoustic --rho 1 --delta0 4/9"});
   in->callback([ia, in] { run_intervals(*ia, *in); });
@@ -224,37 +208,21 @@ void register_regime(CLI::App& app) {
       "--axis-range lo hi), files regime_theta-NAME_BRANCH.csv.");
   add_model_options(*mp, ma->p, false);
   add_model_file_options(*mp, ma->model);
-  mp->add_option("--axis", ma->axis,
-                 "with --model: the parameter on x (default rho for the resonant chain, else the model's first)")
-      ->type_name("NAME");
-  mp->add_option("--axis-range", ma->axis_range,
-                 "with --model: lo hi of the --axis parameter (default: its declared range when bounded)")
-      ->expected(2)
-      ->type_name("NUM");
-  mp->add_option("--plane", ma->plane, "theta-rho (default) or delta0-omega")->type_name("NAME");
-  mp->add_option("--branch", ma->branch,
-                 "optical, acoustic or both (default both); with --model: a branch name or both/all")
-      ->type_name("NAME");
+  const auto map_help = [](const char* key) { return schema_help(jobs::regime_map_options(), key); };
+  mp->add_option("--axis", ma->axis, map_help("axis"))->type_name("NAME");
+  mp->add_option("--axis-range", ma->axis_range, map_help("axis_range"))->expected(2)->type_name("NUM");
+  mp->add_option("--plane", ma->plane, map_help("plane"))->type_name("NAME");
+  mp->add_option("--branch", ma->branch, map_help("branch"))->type_name("NAME");
   mp->add_option("--out", ma->out, "output directory (created)")->required()->type_name("DIR");
-  mp->add_option("--rho-range", ma->rho_range,
-                 "theta-rho: rho lo hi (default " + range_text(jobs::default_rho_range(Branch::optical), " ") +
-                     " for optical or both, " + range_text(jobs::default_rho_range(Branch::acoustic), " ") +
-                     " for acoustic)")
-      ->expected(2)
-      ->type_name("NUM");
-  mp->add_option("--delta0-range", ma->delta0_range, "delta0-omega: delta0 lo hi (default " + range_text(jobs::default_delta0_range, " ") + ")")
-      ->expected(2)
-      ->type_name("NUM");
-  mp->add_option("--omega-range", ma->omega_range,
-                 "delta0-omega: omega lo hi, each in [0, twice the top of the optical band] (default: the band over the delta0 range)")
-      ->expected(2)
-      ->type_name("NUM");
-  mp->add_flag("--delta0-log", ma->delta0_log, "delta0-omega: logarithmic delta0 axis (default: linear)");
-  add_integer(*mp, "--nx", ma->res_x, config::map_pixels_x.least, config::map_pixels_x.most, fmt::format("pixels along x (rho or delta0), default {}", jobs::RegimeMapConfig{}.nx));
-  add_integer(*mp, "--ny", ma->res_y, config::map_pixels_y.least, config::map_pixels_y.most, fmt::format("pixels along y (theta or omega), default {}", jobs::RegimeMapConfig{}.ny));
+  mp->add_option("--rho-range", ma->rho_range, map_help("rho_range"))->expected(2)->type_name("NUM");
+  mp->add_option("--delta0-range", ma->delta0_range, map_help("delta0_range"))->expected(2)->type_name("NUM");
+  mp->add_option("--omega-range", ma->omega_range, map_help("omega_range"))->expected(2)->type_name("NUM");
+  mp->add_flag("--delta0-log", ma->delta0_log, map_help("delta0_log"));
+  add_integer(*mp, "--nx", ma->res_x, config::map_pixels_x.least, config::map_pixels_x.most, map_help("nx"));
+  add_integer(*mp, "--ny", ma->res_y, config::map_pixels_y.least, config::map_pixels_y.most, map_help("ny"));
   add_max_memory(*mp, ma->max_memory);
   add_figure_format(*mp);
-  mp->add_flag("--no-curves", ma->no_curves, "skip tracing the boundary curves");
+  mp->add_flag("--no-curves", ma->no_curves, map_help("curves"));
   mp->add_flag("--no-figures", ma->no_figures, "write the data and .gp scripts but draw no figures (no gnuplot run; default: figures)");
   add_examples(*mp, {"lrchain regime map --plane theta-rho --branch both --out out/fig2",
                       "lrchain regime map --plane delta0-omega --branch optical --rho 3 --out out/fig4"});
@@ -270,16 +238,13 @@ void register_regime(CLI::App& app) {
       "two boundary curves, fold = birth/death of a pair of boundaries, entry through theta = pi) "
       "with the number of focusing intervals before and after, and matched to the printed values. "
       "With --model FILE: the same events along one parameter of that model (--axis, --axis-range, --branch).");
-  add_integer(*th, "--scan", ta->scan, 10, 100'000,
-              "scan points per scenario (default: built-in 300-400; with --model 300)");
+  const auto thresholds_help = [](const char* key) { return schema_help(jobs::regime_thresholds_options(), key); };
+  add_integer(*th, "--scan", ta->scan, 10, 100'000, thresholds_help("scan"));
   th->add_flag("--json", ta->json_flag, "print the JSON on one line (default: indented)");
   add_model_file_options(*th, ta->model);
-  th->add_option("--axis", ta->axis, "with --model: the scanned parameter (default rho / the model's first)")
-      ->type_name("NAME");
-  th->add_option("--axis-range", ta->axis_range, "with --model: lo hi of the scan (default: its declared range when bounded)")
-      ->expected(2)
-      ->type_name("NUM");
-  th->add_option("--branch", ta->branch, "with --model: a branch name (default: every branch)")->type_name("NAME");
+  th->add_option("--axis", ta->axis, thresholds_help("axis"))->type_name("NAME");
+  th->add_option("--axis-range", ta->axis_range, thresholds_help("axis_range"))->expected(2)->type_name("NUM");
+  th->add_option("--branch", ta->branch, thresholds_help("branch"))->type_name("NAME");
   add_examples(*th, {"lrchain regime thresholds", "lrchain regime thresholds --model fput --axis b --axis-range 0.1 2"});
   th->callback([ta, th] { run_thresholds(*ta, *th); });
 }

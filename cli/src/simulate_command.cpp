@@ -23,9 +23,11 @@
 #include "lrchain/jobs/experiment_config.hpp"
 #include "lrchain/jobs/more_experiment_config.hpp"
 #include "lrchain/jobs/simulate/simulate_job.hpp"
+#include "lrchain/jobs/simulate/simulate_schema.hpp"
 #include "lrchain/sim/strain_sites.hpp"
 #include "help_text.hpp"
 #include "options.hpp"
+#include "schema_help.hpp"
 #include "simulate_model_commands.hpp"
 #include "stop_signals.hpp"
 
@@ -143,7 +145,6 @@ void run_and_report(const Config& cfg, const std::string& out, const ReportStyle
 // takes its half-width N with its own range (sim::bright_sites, or sim::model_bright_sites with
 // --model), so that an even or out-of-range count is refused (exit 2) with the range that applies.
 void add_strain_sites(CLI::App& app, std::int64_t& sites) {
-  const std::int64_t default_sites = sites;
   auto* opt = app.add_option_function<std::string>(
       "--sites",
       [&sites](const std::string& text) {
@@ -152,24 +153,18 @@ void add_strain_sites(CLI::App& app, std::int64_t& sites) {
           throw InvalidParameter("sites", "must be an odd integer: the strain sites are n = -N..N, 2N + 1 of them");
         sites = static_cast<std::int64_t>(v);
       },
-      fmt::format("odd number of strain sites 2N + 1, n = -N..N (default {}, N = {}; with --model {} or more)",
-                  default_sites, (default_sites - 1) / 2, sim::model_bright_sites.least));
+      schema_help(jobs::bright_options(), "sites"));
   opt->type_name("INT");
 }
 
-// --stepper, --abs-tol, --rel-tol, --dt; with o.automatic_dt the fixed-step steppers choose their
+// --stepper, --abs-tol, --rel-tol, --dt (help from the job's schema); with o.automatic_dt the fixed-step steppers choose their
 // step themselves unless --dt is given (the callback clears automatic_dt then).
-void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::string& stepper) {
-  app.add_option("--stepper", stepper, "rkf78, dopri5, symplectic (McLachlan 4), srkn11b, srkn14a (Blanes-Moan 6) or ss17 (McLachlan 8); default " + stepper)->type_name("NAME");
-  // The defaults shown are the run configuration's (the drive's tolerances are 1e-10, the others' 1e-12).
-  add_number(app, "--abs-tol", o.abs_tol, fmt::format("absolute local error tolerance (default {:g})", o.abs_tol));
-  add_number(app, "--rel-tol", o.rel_tol, fmt::format("relative local error tolerance (default {:g})", o.rel_tol));
-  add_number(app, "--dt", o.dt,
-             o.automatic_dt
-                 ? fmt::format("largest step of the fixed-step steppers (default: chosen by a 2 T_b probe run so that "
-                               "the relative energy error stays below 2e-10), or the initial step of the adaptive ones "
-                               "(default {:g})", o.dt)
-                 : fmt::format("initial step (adaptive) or fixed/maximal step (symplectic, srkn*), default {:g}", o.dt));
+void add_integrator_options(CLI::App& app, sim::IntegratorOptions& o, std::string& stepper,
+                            const std::vector<jobs::JobOption>& schema) {
+  app.add_option("--stepper", stepper, schema_help(schema, "stepper"))->type_name("NAME");
+  add_number(app, "--abs-tol", o.abs_tol, schema_help(schema, "abs_tol"));
+  add_number(app, "--rel-tol", o.rel_tol, schema_help(schema, "rel_tol"));
+  add_number(app, "--dt", o.dt, schema_help(schema, "dt"));
 }
 
 // The storage of the options every `simulate` run shares; each command registers those it honours
@@ -185,8 +180,8 @@ struct SimulateOutputs {
 constexpr const char* subcommand_out =
     "output directory for data and figures (default: none, only the JSON summary is printed)";
 
-// Adds --out (described by `out_help`), --json, --no-figures, --figure-format to `cmd`; with
-// `lattice_run` (the resonant chain's runs and --config) also --format, --restart, --checkpoint and
+// Adds --out (described by `out_help`), --json, --no-figures, --figure-format, --format to `cmd`;
+// with `lattice_run` (the resonant chain's runs and --config) also --restart, --checkpoint and
 // --max-memory. All write `o`.
 void add_output_options(CLI::App& cmd, const SimulateOutputs& o, bool lattice_run, const std::string& out_help) {
   cmd.add_option("--out", *o.out, out_help)->type_name("DIR");
@@ -194,12 +189,12 @@ void add_output_options(CLI::App& cmd, const SimulateOutputs& o, bool lattice_ru
   cmd.add_flag_callback("--no-figures", [style = o.style] { style->figures = false; },
                         "write the data and summary.json to --out but no figures (no gnuplot run; default: figures)");
   add_figure_format(cmd);
-  if (!lattice_run) return;
   cmd.add_option("--format", o.style->format,
                  "data files in --out: csv (CSV, float32 space-time files and figures; default) or hdf5 "
                  "(result.h5 with the series, fields, snapshots and summary; no figures)")
       ->check(CLI::IsMember({"csv", "hdf5"}).description(""))
       ->type_name("csv|hdf5");
+  if (!lattice_run) return;
   cmd.add_option("--restart", *o.restart,
                  "continue the run from this checkpoint file (written with the same physics, lattice and stepper; "
                  "the outputs cover the whole run; default: none, a new run)")
@@ -209,6 +204,23 @@ void add_output_options(CLI::App& cmd, const SimulateOutputs& o, bool lattice_ru
                  "on SIGINT/SIGTERM, and periodically with --checkpoint-every)")
       ->type_name("FILE");
   add_max_memory(cmd, *o.max_memory);
+}
+
+// A lattice run from its subcommand: its stepper, the run files and memory limit of the shared options,
+// then run_and_report.
+template <class Config>
+void run_lattice_command(Config& c, const std::string& stepper, const SimulateOutputs& o) {
+  c.integrator.stepper = sim::parse_stepper(stepper);
+  c.restart_file = *o.restart;
+  c.checkpoint_file = *o.checkpoint;
+  c.max_memory = *o.max_memory;
+  run_and_report(c, *o.out, *o.style);
+}
+
+// The outputs of a model-file run: views of `o`'s --out, --json, --no-figures and --format.
+ModelRunOutput model_run_output(const SimulateOutputs& o) {
+  return {o.out, std::shared_ptr<bool>(o.style, &o.style->compact_json), std::shared_ptr<bool>(o.style, &o.style->figures),
+          std::shared_ptr<std::string>(o.style, &o.style->format)};
 }
 
 }  // namespace
@@ -233,10 +245,8 @@ void register_simulate(CLI::App& app) {
                      "output directory for data and figures (default: a config's [output] dir)");
   sim_cmd->require_subcommand(0, 1);
   {
-    // `simulate ring` (simulate_ring.cpp) reports through --out, --json, --no-figures and --figure-format.
-    auto compact = std::shared_ptr<bool>(style, &style->compact_json);
-    auto figures = std::shared_ptr<bool>(style, &style->figures);
-    register_simulate_ring(*sim_cmd, {out, compact, figures});
+    // `simulate ring` (simulate_ring.cpp) reports through --out, --json, --no-figures, --figure-format and --format.
+    register_simulate_ring(*sim_cmd, model_run_output(outputs));
     CLI::App& ring = *sim_cmd->get_subcommand("ring");
     add_output_options(ring, outputs, false, subcommand_out);
     add_examples(ring, {"lrchain simulate ring --model fput --branch acoustic --theta pi/2 --out out/ring-fput"});
@@ -250,51 +260,42 @@ void register_simulate(CLI::App& app) {
   auto* bright = sim_cmd->add_subcommand(
       "bright", "Lattice run from the NLS bright breather (eq:focus_app, eq:focus_ini), Sec. 4.2");
   auto bright_branch = std::make_shared<std::string>();
-  bright->add_option("--branch", *bright_branch, "optical or acoustic (with --model: a branch of the model)")
-      ->required()->type_name("NAME");
-  add_number(*bright, "--theta", cfg->theta, "carrier wavenumber in (0, pi], e.g. pi/2")->required();
+  const auto& bright_schema = jobs::bright_options();
+  const auto bright_help = [&bright_schema](const char* key) { return schema_help(bright_schema, key); };
+  bright->add_option("--branch", *bright_branch, bright_help("branch"))->required()->type_name("NAME");
+  add_number(*bright, "--theta", cfg->theta, bright_help("theta"))->required();
   add_model_options(*bright, cfg->params, false);
   auto bright_model = std::make_shared<ModelSelection>();
   add_model_file_options(*bright, *bright_model);
   bright->add_option_function<std::string>("--detuning", [cfg](const std::string& s) {
     cfg->detuning = parse_number(s, "detuning");
-  }, "omega_b - omega (default sign(h_tilde)*1e-4)")->type_name("NUM");
-  add_number(*bright, "--n0", cfg->n0, fmt::format("initial breather centre n0, |n0| <= N = (sites - 1)/2 (default {:g})", cfg->n0));
+  }, bright_help("detuning"))->type_name("NUM");
+  add_number(*bright, "--n0", cfg->n0, bright_help("n0"));
   auto bright_sites = std::make_shared<std::int64_t>(sim::strain_site_count(cfg->N));
   add_strain_sites(*bright, *bright_sites);
-  add_number(*bright, "--periods", cfg->periods, fmt::format("run length in breather periods T_b (default {:g})", cfg->periods));
-  add_number(*bright, "--sample-every", cfg->sample_every, fmt::format("sampling interval in T_b (default {:g})", cfg->sample_every));
-  add_number(*bright, "--spacetime-every", cfg->spacetime_every,
-             fmt::format("energy-density row interval in T_b (default {:g})", cfg->spacetime_every));
-  add_number(*bright, "--error-window", cfg->error_window_end,
-             "also report max E_x, E_y for t <= this time (default: none, the whole run only)");
-  add_number_list(*bright, "--snapshots", cfg->snapshot_periods, "snapshot times in T_b (default " + numbers_text(cfg->snapshot_periods) + ")");
-  bright->add_flag("--ansatz-ends", cfg->ansatz_ends,
-                   "end beads follow the ansatz (emitting boundary conditions, Sec. 4.2)");
-  add_number(*bright, "--checkpoint-every", cfg->checkpoint_every,
-             fmt::format("periods T_b between checkpoints (default {:g}: only on SIGINT/SIGTERM)", cfg->checkpoint_every));
-  add_integrator_options(*bright, cfg->integrator, *stepper);
+  add_number(*bright, "--periods", cfg->periods, bright_help("periods"));
+  add_number(*bright, "--sample-every", cfg->sample_every, bright_help("sample_every"));
+  add_number(*bright, "--spacetime-every", cfg->spacetime_every, bright_help("spacetime_every"));
+  add_number(*bright, "--error-window", cfg->error_window_end, bright_help("error_window_end"));
+  add_number_list(*bright, "--snapshots", cfg->snapshot_periods, bright_help("snapshot_periods"));
+  bright->add_flag("--ansatz-ends", cfg->ansatz_ends, bright_help("ansatz_ends"));
+  add_number(*bright, "--checkpoint-every", cfg->checkpoint_every, bright_help("checkpoint_every"));
+  add_integrator_options(*bright, cfg->integrator, *stepper, bright_schema);
   add_output_options(*bright, outputs, true, subcommand_out);
   add_examples(*bright, {"lrchain simulate bright --branch optical --theta pi/2 --rho 1/3 --sites 1001 --periods 200 --out out/exp1"});
-  bright->callback([=] {
+  bright->callback([=] { with_option_names(jobs::bright_options(), [&] {
     if (!bright_model->file.empty()) {  // any model file: simulate_model_bright.cpp
       cfg->N = sim::strain_half_width(*bright_sites, sim::model_bright_sites);
-      run_model_bright_command(*bright_model, *bright_branch, *cfg, *bright,
-                               {out, std::shared_ptr<bool>(style, &style->compact_json),
-                                std::shared_ptr<bool>(style, &style->figures)});
+      run_model_bright_command(*bright_model, *bright_branch, *cfg, *bright, model_run_output(outputs));
       return;
     }
     if (!bright_model->set.empty()) throw InputError("--set needs --model FILE (the resonant chain takes --rho, --kappa, ...)");
     refuse_ignored_options(*bright, *out, {}, "");
     cfg->N = sim::strain_half_width(*bright_sites, sim::bright_sites);
     cfg->branch = parse_branch(*bright_branch);
-    cfg->integrator.stepper = sim::parse_stepper(*stepper);
     if (bright->count("--dt") > 0) cfg->integrator.automatic_dt = false;
-    cfg->restart_file = *restart;
-    cfg->checkpoint_file = *checkpoint;
-    cfg->max_memory = *max_memory;
-    run_and_report(*cfg, *out, *style);
-  });
+    run_lattice_command(*cfg, *stepper, outputs);
+  }); });
 
   // simulate drive (experiment 6, Sec. 4.3)
   auto dcfg = std::make_shared<sim::DriveRunConfig>();
@@ -302,34 +303,28 @@ void register_simulate(CLI::App& app) {
   auto* drive = sim_cmd->add_subcommand(
       "drive", "Chain at rest driven at u_0(t) = A0 sin(omega0 t) chi(t), clamped far end (Sec. 4.3)");
   add_model_options(*drive, dcfg->params, false);
-  add_integer(*drive, "--sites", dcfg->beads, 10, std::numeric_limits<std::int64_t>::max(),
-              fmt::format("lattice sites: beads n = 1..sites, each with its resonator, driven at n = 0, far end clamped "
-                          "(default {})", dcfg->beads));
-  add_number(*drive, "--amplitude", dcfg->amplitude, fmt::format("A0, in (0, delta0] (default {:g})", dcfg->amplitude));
-  add_number(*drive, "--omega0", dcfg->omega0, fmt::format("driving frequency, in the optical band (default {:g})", dcfg->omega0));
-  add_number(*drive, "--ramp-rate", dcfg->ramp_rate, fmt::format("r of chi(t) (default {:g})", dcfg->ramp_rate));
-  add_number(*drive, "--switch-off-time", dcfg->t_m, fmt::format("switch-off time t_m of chi(t) (default {:g})", dcfg->t_m));
-  add_number(*drive, "--t-end", dcfg->t_end, fmt::format("final time (default {:g})", dcfg->t_end));
-  add_number(*drive, "--sample-every", dcfg->sample_every, fmt::format("series interval (default {:g})", dcfg->sample_every));
-  add_number(*drive, "--spacetime-every", dcfg->spacetime_every, fmt::format("e_n row interval (default {:g})", dcfg->spacetime_every));
-  add_number_list(*drive, "--snapshots", dcfg->snapshot_times, "snapshot times (default " + numbers_text(dcfg->snapshot_times) + ")");
-  add_number(*drive, "--front-fraction", dcfg->front_fraction,
-             fmt::format("front = last n with e_n > this * max e_n (default {:g})", dcfg->front_fraction));
-  add_number(*drive, "--front-fit-start", dcfg->front_fit_start, fmt::format("front-speed fit from (default {:g})", dcfg->front_fit_start));
-  add_number(*drive, "--front-fit-end", dcfg->front_fit_end, fmt::format("front-speed fit to (default {:g})", dcfg->front_fit_end));
-  add_number(*drive, "--checkpoint-every", dcfg->checkpoint_every,
-             fmt::format("time between checkpoints (default {:g}: only on SIGINT/SIGTERM)", dcfg->checkpoint_every));
-  add_integrator_options(*drive, dcfg->integrator, *dstepper);
+  const auto& drive_schema = jobs::drive_options();
+  const auto drive_help = [&drive_schema](const char* key) { return schema_help(drive_schema, key); };
+  add_integer(*drive, "--sites", dcfg->beads, 10, std::numeric_limits<std::int64_t>::max(), drive_help("sites"));
+  add_number(*drive, "--amplitude", dcfg->amplitude, drive_help("amplitude"));
+  add_number(*drive, "--omega0", dcfg->omega0, drive_help("omega0"));
+  add_number(*drive, "--ramp-rate", dcfg->ramp_rate, drive_help("ramp_rate"));
+  add_number(*drive, "--switch-off-time", dcfg->t_m, drive_help("switch_off_time"));
+  add_number(*drive, "--t-end", dcfg->t_end, drive_help("t_end"));
+  add_number(*drive, "--sample-every", dcfg->sample_every, drive_help("sample_every"));
+  add_number(*drive, "--spacetime-every", dcfg->spacetime_every, drive_help("spacetime_every"));
+  add_number_list(*drive, "--snapshots", dcfg->snapshot_times, drive_help("snapshot_times"));
+  add_number(*drive, "--front-fraction", dcfg->front_fraction, drive_help("front_fraction"));
+  add_number(*drive, "--front-fit-start", dcfg->front_fit_start, drive_help("front_fit_start"));
+  add_number(*drive, "--front-fit-end", dcfg->front_fit_end, drive_help("front_fit_end"));
+  add_number(*drive, "--checkpoint-every", dcfg->checkpoint_every, drive_help("checkpoint_every"));
+  add_integrator_options(*drive, dcfg->integrator, *dstepper, drive_schema);
   add_output_options(*drive, outputs, true, subcommand_out);
   add_examples(*drive, {"lrchain simulate drive --rho 10 --sites 2000 --omega0 2.1 --t-end 2400 --out out/exp6"});
-  drive->callback([=] {
+  drive->callback([=] { with_option_names(jobs::drive_options(), [&] {
     refuse_ignored_options(*drive, *out, {}, "");
-    dcfg->integrator.stepper = sim::parse_stepper(*dstepper);
-    dcfg->restart_file = *restart;
-    dcfg->checkpoint_file = *checkpoint;
-    dcfg->max_memory = *max_memory;
-    run_and_report(*dcfg, *out, *style);
-  });
+    run_lattice_command(*dcfg, *dstepper, outputs);
+  }); });
 
   // simulate modulated (experiment 7, Sec. 5.1)
   auto mcfg = std::make_shared<sim::ModulatedRunConfig>();
@@ -337,38 +332,33 @@ void register_simulate(CLI::App& app) {
   auto* mod = sim_cmd->add_subcommand(
       "modulated", "Periodic chain from the modulated acoustic wave eq:cimi, checkpoint/restart (Sec. 5.1)");
   add_model_options(*mod, mcfg->params, false);
-  add_integer(*mod, "--sites", mcfg->N, 8, std::numeric_limits<std::int64_t>::max(),
-              fmt::format("lattice sites N of the periodic chain, n = 0..N-1 (default {})", mcfg->N));
-  add_parameter(*mod, "--epsilon", mcfg->epsilon, modulation_amplitude_range, fmt::format("default {:g}", mcfg->epsilon));
-  add_number(*mod, "--theta-waves", mcfg->theta_waves, fmt::format("carrier theta0 = this * pi / N, N = --sites (default {:g})", mcfg->theta_waves));
-  add_number(*mod, "--modulation-depth", mcfg->b, fmt::format("modulation depth b of eq:cimi (default {:g})", mcfg->b));
-  add_number(*mod, "--t-end", mcfg->t_end, fmt::format("final time (default {:g})", mcfg->t_end));
-  add_number(*mod, "--sample-every", mcfg->sample_every, fmt::format("series and e_n row interval (default {:g})", mcfg->sample_every));
-  add_number_list(*mod, "--snapshots", mcfg->snapshot_times, "snapshot times (default " + numbers_text(mcfg->snapshot_times) + ")");
-  add_number(*mod, "--contrast-threshold", mcfg->contrast_threshold,
-             fmt::format("instability when (max-min)/mean of smoothed e_n exceeds this (default {:g})", mcfg->contrast_threshold));
-  add_number(*mod, "--speed-fit-start", mcfg->speed_fit_start, fmt::format("dark-speed fit from (default {:g})", mcfg->speed_fit_start));
-  add_number(*mod, "--speed-fit-end", mcfg->speed_fit_end, fmt::format("dark-speed fit to (default {:g})", mcfg->speed_fit_end));
-  add_number(*mod, "--checkpoint-every", mcfg->checkpoint_every,
-             fmt::format("time between checkpoints (default {:g}, 0: none)", mcfg->checkpoint_every));
-  add_integrator_options(*mod, mcfg->integrator, *mstepper);
+  const auto& mod_schema = jobs::modulated_options();
+  const auto mod_help = [&mod_schema](const char* key) { return schema_help(mod_schema, key); };
+  add_integer(*mod, "--sites", mcfg->N, 8, std::numeric_limits<std::int64_t>::max(), mod_help("sites"));
+  add_parameter(*mod, "--epsilon", mcfg->epsilon, modulation_amplitude_range,
+                "default " + jobs::default_text(jobs::find_option(mod_schema, "epsilon")));
+  add_number(*mod, "--theta-waves", mcfg->theta_waves, mod_help("theta_waves"));
+  add_number(*mod, "--modulation-depth", mcfg->b, mod_help("modulation_depth"));
+  add_number(*mod, "--t-end", mcfg->t_end, mod_help("t_end"));
+  add_number(*mod, "--sample-every", mcfg->sample_every, mod_help("sample_every"));
+  add_number_list(*mod, "--snapshots", mcfg->snapshot_times, mod_help("snapshot_times"));
+  add_number(*mod, "--contrast-threshold", mcfg->contrast_threshold, mod_help("contrast_threshold"));
+  add_number(*mod, "--speed-fit-start", mcfg->speed_fit_start, mod_help("speed_fit_start"));
+  add_number(*mod, "--speed-fit-end", mcfg->speed_fit_end, mod_help("speed_fit_end"));
+  add_number(*mod, "--checkpoint-every", mcfg->checkpoint_every, mod_help("checkpoint_every"));
+  add_integrator_options(*mod, mcfg->integrator, *mstepper, mod_schema);
   add_output_options(*mod, outputs, true, subcommand_out);
   add_examples(*mod, {"lrchain simulate modulated --sites 401 --theta-waves 252 --t-end 45000 --out out/exp7"});
-  mod->callback([=] {
+  mod->callback([=] { with_option_names(jobs::modulated_options(), [&] {
     refuse_ignored_options(*mod, *out, {}, "");
-    mcfg->integrator.stepper = sim::parse_stepper(*mstepper);
-    mcfg->restart_file = *restart;
-    mcfg->checkpoint_file = *checkpoint;
-    mcfg->max_memory = *max_memory;
-    run_and_report(*mcfg, *out, *style);
-  });
+    run_lattice_command(*mcfg, *mstepper, outputs);
+  }); });
 
-  sim_cmd->callback([=] {
+  sim_cmd->callback([=] { with_option_names({}, [&] {
     if (!sim_cmd->get_subcommands().empty()) return;
     if (config->empty())
       throw InvalidParameter("config", "give a subcommand (bright, drive, modulated, ring) or --config FILE.toml");
-    if (run_model_config(*config, *sim_cmd, {out, std::shared_ptr<bool>(style, &style->compact_json),
-                                                    std::shared_ptr<bool>(style, &style->figures)}))
+    if (run_model_config(*config, *sim_cmd, model_run_output(outputs)))
       return;  // a model file's bright or ring config (simulate_model_bright.cpp)
     const std::string kind = jobs::experiment_kind(*config);
     if (kind == "drive") {
@@ -396,7 +386,7 @@ void register_simulate(CLI::App& app) {
     ec.bright.max_memory = *max_memory;
     refuse_without_out(*sim_cmd, dir, output_file_options);
     if (ec.experiment == "bright") run_and_report(ec.bright, dir, *style);
-  });
+  }); });
 }
 
 }  // namespace lrchain::cli

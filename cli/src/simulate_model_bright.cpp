@@ -29,18 +29,12 @@ void run_and_report_model_bright(const ModelSelection& selection, const Model& m
   const LatticeCode code = lattice_kernels_for(selection, model);
   const auto report = run_until_signal([&](const std::atomic<bool>* stop) {
     return jobs::simulate_model_bright(model, *code.kernels, c, {model_run_json(model, code), name},
-                                       {out, *output.figures}, stop);
+                                       {out, *output.figures, *output.format}, stop);
   });
   print_model_run(report.summary, output, wall0);
 }
 
 }  // namespace
-
-void refuse_hdf5_format(const CLI::App& cmd, const std::string& what) {
-  const CLI::Option* format = given_option(cmd, "--format");
-  if (format != nullptr && format->as<std::string>() == "hdf5")
-    throw InputError("--format hdf5 is not available for " + what + " (it writes CSV and figures; use --format csv)");
-}
 
 void refuse_ignored_options(const CLI::App& cmd, const std::string& out, std::initializer_list<const char*> unavailable,
                             const std::string& what) {
@@ -61,7 +55,6 @@ void run_model_bright_command(const ModelSelection& selection, const std::string
       throw InputError(std::string(name) + " is not available with --model (model bright runs use srkn11b, or rkf78 "
                                            "with --ansatz-ends; see lrchain simulate bright --help)");
   refuse_ignored_options(cmd, *output.out, {"--restart", "--checkpoint", "--max-memory"}, "simulate bright --model");
-  refuse_hdf5_format(cmd, "simulate bright --model");
   const Model model = load_selected_model(selection, cmd, bright.params, true);
   sim::ModelBrightConfig c;
   c.theta = bright.theta;
@@ -80,7 +73,6 @@ bool run_model_config(const std::string& file, const CLI::App& simulate, const M
   if (!jobs::is_model_experiment(doc)) return false;
   for (const char* name : {"--restart", "--checkpoint", "--max-memory"})
     if (simulate.count(name) > 0) throw InputError(std::string(name) + " is not available with a model-file config");
-  refuse_hdf5_format(simulate, "a model-file config");
   const jobs::ModelExperimentConfig mc = jobs::load_model_experiment_config(doc);
   refuse_without_out(simulate, !output.out->empty() ? *output.out : mc.out_dir, output_file_options);
   ModelSelection selection;

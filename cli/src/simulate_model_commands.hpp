@@ -20,18 +20,15 @@
 
 namespace lrchain::cli {
 
-// How a model run reports: --out directory, one-line JSON, figures drawn or not.
+// How a model run reports: --out directory, one-line JSON, figures drawn or not, --format (csv|hdf5).
 struct ModelRunOutput {
   std::shared_ptr<std::string> out;
   std::shared_ptr<bool> compact_json, figures;
+  std::shared_ptr<std::string> format;
 };
 
 // The options that only shape the files a run writes to --out (refused without --out).
 inline constexpr std::initializer_list<const char*> output_file_options = {"--no-figures", "--figure-format", "--format"};
-
-// Model-file runs write CSV and figures only: `--format hdf5` given to `cmd` or before it to
-// `simulate` is refused (exit 2) for them rather than ignored. `what` names the run in the message.
-void refuse_hdf5_format(const CLI::App& cmd, const std::string& what);
 
 // Refuses (exit 2), before anything is done, what the `simulate` subcommand `cmd` would ignore:
 // --config given with it, the output_file_options without --out (`out` empty), and the options

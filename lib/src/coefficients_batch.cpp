@@ -86,6 +86,15 @@ void resonant_chain_batch(const Params& p, const TaylorCoefficients& K, Branch b
   else evaluate_acoustic(p, K, theta, n, out);
 }
 
+// Whether any theta is outside (-pi, pi] (NaN included) or, on the acoustic branch, zero: one
+// branch-free pass the compiler vectorises.
+bool refused_wavenumbers(const double* theta, std::ptrdiff_t n, bool acoustic) {
+  int refused = 0;
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    refused |= int(!(theta[i] > -std::numbers::pi)) | int(!(theta[i] <= std::numbers::pi)) | int(acoustic && theta[i] == 0.0);
+  return refused != 0;
+}
+
 }  // namespace
 
 void resonant_chain_coefficients_batch(const Params& p, Branch b, std::span<const double> theta,
@@ -93,18 +102,24 @@ void resonant_chain_coefficients_batch(const Params& p, Branch b, std::span<cons
   resonant_chain_batch(p, taylor_coefficients(p), b, theta.data(), static_cast<std::ptrdiff_t>(theta.size()), out);
 }
 
-void coefficients_batch(const Model& model, Index branch, std::span<const double> theta, const CoefficientColumns& out) {
+void coefficients_batch(const Model& model, Index branch, std::span<const double> theta, const CoefficientColumns& out,
+                        std::ptrdiff_t* refused) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(theta.size());
   const std::optional<Params>& p = model.resonant_chain_params();
-  if (!p || branch < 0 || branch >= static_cast<Index>(model.definition().branch_names.size())) {
-    for (std::ptrdiff_t i = 0; i < n; ++i) out.store(i, coefficients(model, branch, theta[i]));  // refuses a bad branch
-    return;
+  std::ptrdiff_t i = 0;
+  try {
+    if (!p || branch < 0 || branch >= static_cast<Index>(model.definition().branch_names.size())) {
+      for (; i < n; ++i) out.store(i, coefficients(model, branch, theta[i]));  // refuses a bad branch
+      return;
+    }
+    const Branch b = model.resonant_chain_branch(branch);
+    if (refused_wavenumbers(theta.data(), n, b == Branch::acoustic))
+      for (; i < n; ++i) coefficients(model, branch, theta[i]);  // throws the message of the first it refuses
+  } catch (...) {
+    if (refused) *refused = i;
+    throw;
   }
-  const Branch b = model.resonant_chain_branch(branch);
-  for (const double t : theta)
-    if (!(std::isfinite(t) && t > -std::numbers::pi && t <= std::numbers::pi) || (b == Branch::acoustic && t == 0.0))
-      coefficients(model, branch, t);  // throws the message of the wavenumber it refuses
-  resonant_chain_batch(*p, model.resonant_chain_taylor_coefficients(), b, theta.data(), n, out);
+  resonant_chain_batch(*p, model.resonant_chain_taylor_coefficients(), model.resonant_chain_branch(branch), theta.data(), n, out);
 }
 
 }  // namespace lrchain

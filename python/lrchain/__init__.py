@@ -17,12 +17,31 @@ Ctrl-C interrupts a long computation with ``KeyboardInterrupt``.
 """
 
 from .errors import InputError, InvalidParameterError, NumericalFailure
-from ._lrchain import Params
+from ._lrchain import Params, build_info as _build_info
 from .coefficients import Coefficients, coefficients
 from .model import SHIPPED_MODELS, Model, load_model
 from . import dark, regime, simulate
+from . import labelled as _labelled
+from .labelled import open_sweep
+from .progress import set_progress
+
+_labelled.attach()  # result.to_xarray() on every result class
+
+__version__ = _build_info()["version"]
+
+
+def provenance():
+    """Which lrchain this is, as ``lrchain --version`` says: a dict with ``version``, ``commit``
+    (None outside a git checkout), ``compiler``, ``build_type`` and ``version_line`` (the line
+    ``lrchain --version`` prints)."""
+    return _build_info()
+
 
 __all__ = [
+    "__version__",
+    "provenance",
+    "open_sweep",
+    "set_progress",
     "Params",
     "Model",
     "load_model",

@@ -29,9 +29,10 @@ def renamed(table):
 
 
 def python_names(call):
-    """``call()``, with an InvalidParameterError's parameter given its Python keyword's name: the
-    library's option spelling with hyphens as underscores (t-end -> t_end, switch-off-time ->
-    switch_off_time)."""
+    """``call()``, with an InvalidParameterError's parameter given its Python keyword's name. The jobs
+    name their Config keys (t_end, switch_off_time), the Python keywords; a library check that still
+    spells a key as its command-line option (the ring's packet-amplitude) has its hyphens read as
+    underscores."""
     from .errors import InvalidParameterError
 
     try:
@@ -85,3 +86,39 @@ def real_numbers(function):
         return function(*args, **kwargs)
 
     return call
+
+
+def schema_options(job):
+    """The options of ``job`` ("bright", "regime map", ...: ``_lrchain.job_names()``) that Python
+    offers, keyword -> option dict, from the job's one schema (lrchain/jobs/option_schema.hpp): the
+    same defaults, ranges and documentation as the ``lrchain`` command's help."""
+    from ._lrchain import job_options
+
+    return {o["python"]: o for o in job_options(job) if o["python"]}
+
+
+def schema_line(option):
+    """One option as a docstring shows it: ````keyword``: doc [range; default D]``."""
+    if option["default"] is not None:
+        value = "default " + option["default_text"]
+    else:
+        value = "default: " + (option["default_text"] or "none")
+    facts = "; ".join(part for part in (option["range"], value) if part)
+    return f"``{option['python']}``: {option['doc']} [{facts}]"
+
+
+def documented(*sections):
+    """Decorator: appends to the function's docstring, per (job, heading) in ``sections``, the heading
+    and one line per keyword of that job's schema the function takes (schema_line)."""
+    import inspect
+
+    def wrap(function):
+        taken = inspect.signature(function).parameters
+        text = function.__doc__ or ""
+        for job, heading in sections:
+            lines = [schema_line(o) for name, o in schema_options(job).items() if name in taken]
+            text += f"\n\n    {heading}\n\n" + "\n".join(f"    - {line}" for line in lines)
+        function.__doc__ = text
+        return function
+
+    return wrap

@@ -5,7 +5,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from . import _lrchain
-from ._keywords import real_numbers
+from ._keywords import documented, real_numbers
 from .errors import InvalidParameterError
 
 REGIME_NAMES = np.array(_lrchain.regime_names)
@@ -77,6 +77,7 @@ class Coefficients:
         return f"Coefficients(shape={np.shape(self.theta)}, {summary})"
 
 
+@documented(("coeffs", "Options (the job's schema, as ``lrchain coeffs --help``):"))
 @real_numbers
 def coefficients(params, branch, theta, out=None):
     """NLS coefficients of ``branch`` at every wavenumber of ``theta``.

@@ -17,15 +17,15 @@ stops it within one integration step and raises ``KeyboardInterrupt``.
 """
 
 from dataclasses import asdict, dataclass, fields
-import json
 
 import numpy as np
 
 from . import _lrchain
-from ._keywords import checked_model, python_names, real_numbers, renamed
+from ._keywords import checked_model, documented, python_names, real_numbers, renamed
 from ._lrchain import Model, Params
 from .errors import InputError
-from .hdf5 import HDF5Mixin, checked_destination, tree_of
+from .hdf5 import checked_destination
+from .progress import Bar
 
 # The dark job's defaults, from its one schema (lrchain/jobs/dark_schema.hpp, the defaults of DarkConfig):
 # keyword -> default. omega_b, branch and t_end have none there (None here: see _job and evolve).
@@ -73,7 +73,7 @@ def _plain(result):
 
 
 @dataclass(frozen=True, repr=False)
-class DarkSolution(HDF5Mixin):
+class DarkSolution:
     """A converged dark breather: profile ``x``, ``y`` = Z(0) on sites ``n`` (centred), the NLS seed
     ``x_seed``, ``y_seed``, Newton's residual history, the band-edge frequency ``omega_edge``,
     ``measures`` (norm_squared, K_x, K_y, C_x, C_y, E_b = relative error after one period,
@@ -130,6 +130,7 @@ def _job(params, model, omega_b, branch, function):
         ("optical" if branch is None else branch)
 
 
+@documented(("dark", "Options (the job's schema, as ``lrchain dark ... --help``):"))
 @renamed("dark")
 @real_numbers
 def solve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
@@ -146,6 +147,7 @@ def solve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D[
     return _solution(params, omega_b, d)
 
 
+@documented(("dark", "Options (the job's schema, as ``lrchain dark ... --help``):"))
 @renamed("dark")
 @real_numbers
 def floquet(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
@@ -168,7 +170,7 @@ def floquet(params=None, omega_b=None, branch=None, center=_D["center"], sites=_
 
 
 @dataclass(frozen=True, repr=False)
-class _ModelEdge(HDF5Mixin):
+class _ModelEdge:
     """The band edge and the model every model-file dark result reports: ``branch``, ``theta``,
     ``omega_edge``, ``curvature``, ``h_tilde``, ``lambda_`` (None without mean flow),
     ``lattice_form``, ``model`` (name, file_hash, parameters, lattice_code) and
@@ -184,15 +186,6 @@ class _ModelEdge(HDF5Mixin):
     lattice_form: str
     model: dict
     one_sided_contacts: tuple
-
-    def _hdf5_tree(self):
-        """The result's fields as the tree :mod:`lrchain.hdf5` writes (``to_hdf5(path)``), with
-        ``lambda_`` stored as ``lambda`` (omitted without mean flow) and ``model`` as JSON text, as in
-        the resonant chain's dark files."""
-        tree = {f.name: tree_of(getattr(self, f.name)) for f in fields(self)}
-        tree["lambda"] = tree.pop("lambda_")
-        tree["model"] = json.dumps(self.model)
-        return tree
 
 
 @dataclass(frozen=True, repr=False)
@@ -217,6 +210,13 @@ class ModelDarkSolution(_ModelEdge):
     floquet: Floquet = None
     contact_changes_per_period: int = None
 
+    def to_hdf5(self, path):
+        """Writes this solution with the C++ job layer's writer, the file ``lrchain dark solve|floquet
+        --model ... --format hdf5`` writes (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        _hdf5.write_model_dark_solution(checked_destination(path), _plain(self))
+
     def __repr__(self):
         f = f", {self.floquet!r}" if self.floquet else ""
         return (f"ModelDarkSolution({self.model['name']}, omega_b={self.omega_b}, {len(self.n)} sites, Newton "
@@ -235,7 +235,7 @@ def _model_solution(d, omega_b):
 
 
 @dataclass(frozen=True, repr=False)
-class Branch(HDF5Mixin):
+class Branch:
     """A branch of dark breathers from pseudo-arclength continuation in omega_b: per point
     ``omega_b``, profiles ``x``, ``y`` (points, sites), ``norm_squared`` and the other ``measures``
     (list of dicts), ``floquet`` (list of :class:`Floquet` or None), ``max_modulus``, ``kind``;
@@ -279,26 +279,31 @@ class Branch(HDF5Mixin):
                 f"{len(self.turning_points)} turning points; {self.stop_reason})")
 
 
+@documented(("dark", "Options (the job's schema, as ``lrchain dark ... --help``):"))
 @renamed("dark")
 @real_numbers
 def continue_branch(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
                     tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], points=_D["points"], ds=_D["ds"],
                     omega_min=_D["omega_min"], omega_max=_D["omega_max"],
-                    floquet=_D["floquet"], *, model=None):
+                    floquet=_D["floquet"], *, model=None, progress=None):
     """Solve at ``omega_b``, then continue the family (at most ``points`` points, initial arclength step
     ``ds``) while omega_b stays in [omega_min, omega_max] (default: up to the band edge), with the
     Floquet multipliers at every point if ``floquet``; returns :class:`Branch`. With ``model``: away
     from the model's edge (into the gap below it, upwards from an edge the branch rises from, as
-    ``lrchain dark continue --model``); returns :class:`ModelBranch`."""
+    ``lrchain dark continue --model``); returns :class:`ModelBranch`. ``progress``: a bar over the
+    points (see :mod:`lrchain.progress`)."""
     params, model, omega_b, branch = _job(params, model, omega_b, branch, "continue_branch")
     if model is not None:
-        d = _edge(python_names(lambda: _lrchain.dark_model_continue(
-            model, omega_b, branch, center, sites, mode, tolerance, max_iterations, points, ds, omega_min, omega_max,
-            floquet)))
+        with Bar("dark-breather branch", progress, unit="point") as bar:
+            d = _edge(python_names(lambda: _lrchain.dark_model_continue(
+                model, omega_b, branch, center, sites, mode, tolerance, max_iterations, points, ds, omega_min,
+                omega_max, floquet, bar.callback)))
         d["floquet"] = [_floquet(f) for f in d["floquet"]]
         return ModelBranch(**d)
-    d = python_names(lambda: _lrchain.dark_continue(params, omega_b, branch, center, sites, mode, tolerance,
-                                                    max_iterations, points, ds, omega_min, omega_max, floquet))
+    with Bar("dark-breather branch", progress, unit="point") as bar:
+        d = python_names(lambda: _lrchain.dark_continue(params, omega_b, branch, center, sites, mode, tolerance,
+                                                        max_iterations, points, ds, omega_min, omega_max, floquet,
+                                                        bar.callback))
     d["floquet"] = [_floquet(f) for f in d["floquet"]]
     return Branch(params=params, **d)
 
@@ -325,6 +330,13 @@ class ModelBranch(_ModelEdge):
     turning_points: list
     stop_reason: str
 
+    def to_hdf5(self, path):
+        """Writes the branch with the C++ job layer's writer, the file ``lrchain dark continue --model
+        ... --format hdf5`` writes (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        _hdf5.write_model_dark_branch(checked_destination(path), _plain(self))
+
     @property
     def norm_squared(self):
         return np.array([m["norm_squared"] for m in self.measures])
@@ -339,7 +351,7 @@ class ModelBranch(_ModelEdge):
 
 
 @dataclass(frozen=True, repr=False)
-class Evolution(HDF5Mixin):
+class Evolution:
     """Direct integration from an exact dark breather: per period m = 1..M the time ``t`` = m T_b, the
     relative error ``E_b``, vertical centre ``C_x`` and amplitude ``K_x`` at the far site, breather
     ``position`` and ``depth``; stroboscopic strains ``x``, ``y`` (M+1, sites) at t = m T_b, m = 0..M;
@@ -355,11 +367,21 @@ class Evolution(HDF5Mixin):
     x: np.ndarray
     y: np.ndarray
     max_strain: float
+    params: Params = None
+
+    def to_hdf5(self, path):
+        """Writes the evolution with the C++ job layer's writer, the file ``lrchain dark evolve --format
+        hdf5`` writes: the per-period series, the stroboscopic x, y (M+1, sites), period, max_strain
+        (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        _hdf5.write_dark_evolution(checked_destination(path), _params_tuple(self.params), _plain(self))
 
     def __repr__(self):
         return f"Evolution({len(self.t)} periods to t = {self.t[-1]:g}, max E_b = {self.E_b.max():.3g})"
 
 
+@documented(("dark", "Options (the job's schema, as ``lrchain dark ... --help``):"))
 @renamed("dark")
 @real_numbers
 def evolve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
@@ -377,7 +399,7 @@ def evolve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D
         return ModelEvolution(**d)
     d = python_names(lambda: _lrchain.dark_evolve(params, omega_b, branch, center, sites, mode, tolerance,
                                                   max_iterations, t_end, samples))
-    return Evolution(**d)
+    return Evolution(params=params, **d)
 
 
 @dataclass(frozen=True, repr=False)
@@ -398,6 +420,13 @@ class ModelEvolution(_ModelEdge):
     n: np.ndarray
     variables: tuple
     max_strain: float
+
+    def to_hdf5(self, path):
+        """Writes the evolution with the C++ job layer's writer, the file ``lrchain dark evolve --model
+        ... --format hdf5`` writes (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        _hdf5.write_model_dark_evolution(checked_destination(path), _plain(self))
 
     def __repr__(self):
         return f"ModelEvolution({self.model['name']}, {len(self.t)} periods to t = {self.t[-1]:g}, max E_b = {self.E_b.max():.3g})"

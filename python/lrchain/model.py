@@ -1,12 +1,46 @@
 """Lattice models from model files (the format of docs/models.md): the shipped ones and your own."""
 
 import os
+import sys
+import threading
+import time
 
 from . import _lrchain
 from ._keywords import real_numbers
 from ._lrchain import Model
+from .progress import enabled
 
 SHIPPED_MODELS = _lrchain.shipped_models
+
+
+class _CompileNotice:
+    """Says on standard error, when progress is shown, that a model file is being derived and
+    compiled (once the load takes over half a second: a cached or shipped model says nothing) and
+    how long it took."""
+
+    def __init__(self, source, progress):
+        self.source, self.on, self.said = source, enabled(progress), False
+        self.start = time.monotonic()
+        self.timer = threading.Timer(0.5, self._say) if self.on else None
+
+    def _say(self):
+        self.said = True
+        print(f"lrchain: deriving and compiling the model file {self.source} (once; later loads use the cache) ...",
+              file=sys.stderr, flush=True)
+
+    def __enter__(self):
+        if self.timer:
+            self.timer.start()
+        return self
+
+    def __exit__(self, kind, value, traceback):
+        if self.timer:
+            self.timer.cancel()
+        if self.said:
+            how = "done" if kind is None else "stopped"
+            print(f"lrchain: model file {self.source}: {how} in {time.monotonic() - self.start:.1f} s",
+                  file=sys.stderr, flush=True)
+        return False
 
 
 @real_numbers
@@ -21,9 +55,12 @@ def load_model(source, **parameters):
 
     Raises :class:`lrchain.InvalidParameterError` (a ValueError) naming a parameter the model does
     not have or a value outside its range, :class:`lrchain.InputError` for a missing or bad file,
-    and RuntimeError when the C++ compiler cannot be run.
+    and RuntimeError when the C++ compiler cannot be run. A compilation that takes over half a second
+    says so on standard error, and how long it took, when progress is shown (interactive use, or
+    ``lrchain.set_progress(True)``; ``set_progress(False)`` silences it; :mod:`lrchain.progress`).
     """
-    return _lrchain.load_model(os.fspath(source), **parameters)
+    with _CompileNotice(os.fspath(source), None):
+        return _lrchain.load_model(os.fspath(source), **parameters)
 
 
 __all__ = ["Model", "load_model", "SHIPPED_MODELS"]

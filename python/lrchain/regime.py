@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _lrchain
-from ._keywords import real_numbers
+from ._keywords import documented, real_numbers, schema_options
 from .errors import InvalidParameterError
 
 #: Pixel values of the maps.
@@ -49,12 +49,19 @@ class Intervals:
         return f"Intervals({parts or 'none'})"
 
 
+# The regime jobs' defaults, from their schemas (lrchain/jobs/regime_schema.hpp): keyword -> default.
+_INTERVALS = {name: o["default"] for name, o in schema_options("regime intervals").items()}
+_MAP = {name: o["default"] for name, o in schema_options("regime map").items()}
+_CURVES = {name: o["default"] for name, o in schema_options("regime curves").items()}
+
+
 def _job_defaults():
     return _lrchain.regime_job_defaults()
 
 
+@documented(("regime intervals", "Options (the job's schema, as ``lrchain regime intervals --help``):"))
 @real_numbers
-def intervals(params, branch=None, samples=2048, tolerance=1e-12):
+def intervals(params, branch=None, samples=_INTERVALS["samples"], tolerance=_INTERVALS["tolerance"]):
     """Focusing theta-intervals of ``branch`` (omega'' h_tilde < 0), found by root finding on the
     smooth functions whose signs decide the regime; each end accurate to ``tolerance``.
 
@@ -121,13 +128,14 @@ def _map(lattice, plane, branch, axis, x, y, x_log, x_keyword, y_keyword, x_name
     y_range, ny = _axis(y, d["ny"])
     keywords = {"nx": x_keyword, "ny": y_keyword, "rho_range": x_keyword, "delta0_range": x_keyword,
                 "axis_range": x_keyword, "theta_range": y_keyword, "omega_range": y_keyword}
-    m = _keywords_named(lambda: _lrchain.regime_map(lattice, plane, branch, axis, x_range, nx, y_range, ny, x_log),
+    m = _keywords_named(lambda: _lrchain.regime_map(lattice, plane, branch or "", axis, x_range, nx, y_range, ny, x_log),
                         keywords)
     return RegimeMap(m["x"], m["y"], m["values"], x_name or m["axis"], y_name)
 
 
+@documented(("regime map", "Options (the job's schema, as ``lrchain regime map --help``):"))
 @real_numbers
-def theta_rho_map(params, branch, rho=None, theta=None, rho_log=False):
+def theta_rho_map(params, branch, rho=None, theta=None, rho_log=_MAP["rho_log"]):
     """Fig. 2: the regime at (rho_i, theta_j); the other parameters from ``params``.
 
     ``rho`` = (lo, hi) or (lo, hi, n) with 0 < lo, by default (0.01, 30) on the optical branch and
@@ -137,6 +145,7 @@ def theta_rho_map(params, branch, rho=None, theta=None, rho_log=False):
     return _map(params, "theta-rho", branch, "rho", rho, theta, rho_log, "rho", "theta", "rho", "theta")
 
 
+@documented(("regime map", "Options (the job's schema, as ``lrchain regime map --help``):"))
 @real_numbers
 def theta_parameter_map(model, branch, axis=None, x=None, theta=None):
     """The regime at (x_i, theta_j) of a model (an :class:`lrchain.Model`, e.g. a model file), over
@@ -149,8 +158,9 @@ def theta_parameter_map(model, branch, axis=None, x=None, theta=None):
     return _map(model, "theta-parameter", branch, axis or "", x, theta, False, "x", "theta", None, "theta")
 
 
+@documented(("regime map", "Options (the job's schema, as ``lrchain regime map --help``):"))
 @real_numbers
-def delta0_omega_map(params, branch, delta0=None, omega=None, delta0_log=False):
+def delta0_omega_map(params, branch, delta0=None, omega=None, delta0_log=_MAP["delta0_log"]):
     """Figs. 4-5: the regime at (delta0_i, omega_j), theta from omega on the branch; pixels outside the
     band at delta0_i are OUTSIDE. ``delta0`` = (lo, hi) or (lo, hi, n), default (0.001, 1, 600);
     ``omega`` = (lo, hi) or (lo, hi, n), by default the branch's band over the delta0 range (optical
@@ -177,8 +187,9 @@ class BoundaryCurve:
         return f"BoundaryCurve({self.cause}, {len(self.points)} points)"
 
 
+@documented(("regime curves", "Options (the job's schema):"))
 @real_numbers
-def boundary_curves(params, branch, axis=None, lo=None, hi=None, omega_plane=False):
+def boundary_curves(params, branch, axis=None, lo=None, hi=None, omega_plane=_CURVES["omega_plane"]):
     """Boundary curves between focusing and defocusing regions in the (axis, theta) plane for the
     parameter ``axis`` in [lo, hi], traced by pseudo-arclength continuation; with ``omega_plane``
     (axis "delta0") mapped to (delta0, omega) as in Figs. 4-5.
@@ -194,6 +205,7 @@ def boundary_curves(params, branch, axis=None, lo=None, hi=None, omega_plane=Fal
             for cause, points in _lrchain.boundary_curves(params, branch, axis or "", span, omega_plane)]
 
 
+@documented(("regime thresholds", "Options (the job's schema, as ``lrchain regime thresholds --help``):"))
 def thresholds(model=None, scan=None, branch=None, axis=None, axis_range=None):
     """Every change of the boundary structure along a parameter (Sec. 3.3), located by root finding:
     without ``model`` the paper's scenarios (special mass ratios and precompressions, matched to the

@@ -19,15 +19,14 @@ and the energy density e_n.
 
 import json
 from dataclasses import dataclass, field
-from math import pi
-
 import numpy as np
 
 from . import _lrchain
-from ._keywords import checked_model, python_names, real_numbers, renamed
+from ._keywords import checked_model, documented, python_names, real_numbers, renamed, schema_options
 from ._lrchain import Model, Params
 from .errors import InputError
-from .hdf5 import HDF5Mixin, write_simulation
+from .hdf5 import checked_destination, write_simulation
+from .progress import Bar
 
 
 @dataclass(frozen=True)
@@ -68,6 +67,11 @@ class _SimulationHDF5:
         write_simulation(path, self._kind, {column: getattr(self, name) for column, name in self._series},
                          self.energy_density, self.snapshots, self.summary,
                          [(name, getattr(self, name)) for name in self._fields if getattr(self, name) is not None])
+
+
+# The bright job's defaults of branch and theta, from its schema (lrchain/jobs/simulate/simulate_schema.hpp); the
+# other keywords are None: the job's default, the same as the command's (listed in each docstring from the schema).
+_BRIGHT = schema_options("bright")
 
 
 def _options(**kwargs):
@@ -122,12 +126,14 @@ class BrightResult(_SimulationHDF5):
                 f"max E_x = {self.summary['max_E_x']:.4g}, max E_y = {self.summary['max_E_y']:.4g})")
 
 
+@documented(("bright", "Options (None: the default; the job's schema, as ``lrchain simulate bright --help``):"),
+            ("bright --model", "With ``model``:"))
 @renamed("bright")
 @real_numbers
-def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=None, n0=None, sites=None,
+def bright(params=None, branch=_BRIGHT["branch"]["default"], theta=_BRIGHT["theta"]["default"], *, model=None, detuning=None, n0=None, sites=None,
            periods=None, sample_every=None, spacetime_every=None, snapshot_periods=None, centre_window=None,
            error_window_end=None, ansatz_ends=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
-           max_memory=None, record_strains=False, observer=None):
+           max_memory=None, record_strains=False, observer=None, progress=None):
     """Bright-breather run: the strain lattice on n = -N..N (``sites`` = 2N + 1, odd) started from the
     NLS bright breather of ``branch`` at carrier ``theta`` and integrated for ``periods`` breather
     periods T_b, as ``lrchain simulate bright``.
@@ -167,7 +173,8 @@ def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=
                            ansatz_ends=ansatz_ends)
         if detuning is not None:
             options["detuning"] = detuning
-        out = python_names(lambda: _lrchain.simulate_model_bright(model, branch, options))
+        with Bar(f"bright run of {model.name}", progress, fractions=False):
+            out = python_names(lambda: _lrchain.simulate_model_bright(model, branch, options))
         return _model_bright_result(out)
     options = _options(params=params, branch=branch, theta=theta, n0=n0, sites=sites, periods=periods,
                        sample_every=sample_every, spacetime_every=spacetime_every,
@@ -176,7 +183,8 @@ def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=
                        stepper=stepper, abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
     if detuning is not None:
         options["detuning"] = detuning
-    out = python_names(lambda: _lrchain.simulate_bright(options, record_strains, observer))
+    with Bar("bright run", progress) as bar:
+        out = python_names(lambda: _lrchain.simulate_bright(options, record_strains, observer, bar.callback))
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "x_n", "y_n")
     return BrightResult(t=series["t"], E_x=series["E_x"], E_y=series["E_y"], energy=series["energy"],
@@ -186,14 +194,15 @@ def bright(params=None, branch="optical", theta=pi / 2, *, model=None, detuning=
 
 
 @dataclass(frozen=True, repr=False)
-class ModelBrightResult(HDF5Mixin):
+class ModelBrightResult:
     """A bright-breather run of a model file (``lrchain simulate bright --model``).
 
     ``t``, ``energy``, ``centre`` (energy centre X(t)) at every sample; ``E`` a tuple with, per field f,
     E_f(t) = max_n |x_f - x_f^A| / max_n |x_f(0)| (x_f: strains of translation-invariant models,
     displacements of on-site models); ``E_x`` = E[0], ``E_y`` = E[1] (None for a one-field model);
     ``snapshots`` (the final profiles and the ansatz); ``summary``: the same JSON as the command
-    (omega_b, period, max_E, max_E_x, energy0, max_relative_energy_drift, centre_speed, ...)."""
+    (omega_b, period, max_E, max_E_x, energy0, max_relative_energy_drift, centre_speed, ...).
+    ``to_hdf5(path)`` writes the file ``lrchain simulate bright --model ... --format hdf5`` writes."""
 
     t: np.ndarray
     E: tuple
@@ -210,6 +219,16 @@ class ModelBrightResult(HDF5Mixin):
     def E_y(self):
         return self.E[1] if len(self.E) > 1 else None
 
+    def to_hdf5(self, path):
+        """Writes this run with the C++ job layer's writer, the file ``lrchain simulate bright --model
+        ... --format hdf5`` writes: datasets t, E_0, E_1, ..., energy, centre; snapshots; the summary
+        tree (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        series = {"t": self.t, **{f"E_{f}": e for f, e in enumerate(self.E)}, "energy": self.energy, "X": self.centre}
+        _hdf5.write_model_bright(checked_destination(path), series,
+                                 [(s.t, s.tag, s.columns) for s in self.snapshots], json.dumps(self.summary))
+
     def __repr__(self):
         return (f"ModelBrightResult({self.summary['model']['name']}, {len(self.t)} samples to t = {self.t[-1]:g}, "
                 f"max E_x = {self.summary['max_E_x']:.4g})")
@@ -223,12 +242,13 @@ def _model_bright_result(out):
 
 
 @dataclass(frozen=True, repr=False)
-class RingResult(HDF5Mixin):
+class RingResult:
     """Plane waves of a model on a periodic ring (``lrchain simulate ring``): per amplitude U
     (``amplitude``) the ``measured_frequency`` and ``predicted_frequency`` omega + h U^2/4, their
     shifts from omega and ``relative_disagreement`` of the shifts (nan where h vanishes); the wave
     packet's centre ``packet_t``, ``packet_centre`` and ``summary`` (the command's JSON: omega, h,
-    group_velocity, packet_speed, packet_relative_disagreement, ...)."""
+    group_velocity, packet_speed, packet_relative_disagreement, ...). ``to_hdf5(path)`` writes the
+    file ``lrchain simulate ring ... --format hdf5`` writes."""
 
     amplitude: np.ndarray
     measured_frequency: np.ndarray
@@ -240,11 +260,24 @@ class RingResult(HDF5Mixin):
     packet_centre: np.ndarray
     summary: dict
 
+    _amplitude_columns = ("amplitude", "measured_frequency", "predicted_frequency", "measured_shift",
+                          "predicted_shift", "relative_disagreement")
+
+    def to_hdf5(self, path):
+        """Writes this run with the C++ job layer's writer, the file ``lrchain simulate ring ...
+        --format hdf5`` writes: datasets packet_t, packet_centre and one per amplitude column; the
+        summary tree (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+
+        _hdf5.write_ring(checked_destination(path), {"t": self.packet_t, "packet_centre": self.packet_centre},
+                         {name: getattr(self, name) for name in self._amplitude_columns}, json.dumps(self.summary))
+
     def __repr__(self):
         return (f"RingResult({self.summary['model']['name']}, {len(self.amplitude)} amplitudes, relative "
                 f"disagreement {', '.join(f'{d:.3g}' for d in self.relative_disagreement)})")
 
 
+@documented(("ring", "Options (None: the default; the job's schema, as ``lrchain simulate ring --help``):"))
 @real_numbers
 def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, steps_per_period=None,
          packet_amplitude=None, packet_width=None):
@@ -297,12 +330,13 @@ class DriveResult(_SimulationHDF5):
         return f"DriveResult({len(self.t)} samples to t = {self.t[-1]:g}, final energy {self.energy[-1]:.6g})"
 
 
+@documented(("drive", "Options (None: the default; the job's schema, as ``lrchain simulate drive --help``):"))
 @renamed("drive")
 @real_numbers
 def drive(params=None, *, sites=None, amplitude=None, omega0=None, ramp_rate=None, switch_off_time=None, t_end=None,
           sample_every=None, spacetime_every=None, snapshot_times=None, front_fraction=None,
           front_fit_start=None, front_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
-          max_memory=None, record_displacements=False, observer=None):
+          max_memory=None, record_displacements=False, observer=None, progress=None):
     """Driven chain (``lrchain simulate drive``): beads n = 1..sites at rest, clamped far end, first
     bead driven by A0 sin(omega0 t) chi(t). Library defaults: params rho=10 (alpha=3/2,
     delta0=4/9, kappa=1), sites=2000, amplitude=0.06, omega0=2.1, ramp_rate=0.046,
@@ -313,7 +347,8 @@ def drive(params=None, *, sites=None, amplitude=None, omega0=None, ramp_rate=Non
                        snapshot_times=None if snapshot_times is None else list(snapshot_times),
                        front_fraction=front_fraction, front_fit_start=front_fit_start, front_fit_end=front_fit_end,
                        stepper=stepper, abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
-    out = python_names(lambda: _lrchain.simulate_drive(options, record_displacements, observer))
+    with Bar("drive run", progress) as bar:
+        out = python_names(lambda: _lrchain.simulate_drive(options, record_displacements, observer, bar.callback))
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "u_n", "v_n")
     return DriveResult(t=series["t"], energy=series["energy"], front=series["front"],
@@ -348,12 +383,13 @@ class ModulatedResult(_SimulationHDF5):
         return f"ModulatedResult({len(self.t)} samples to t = {self.t[-1]:g})"
 
 
+@documented(("modulated", "Options (None: the default; the job's schema, as ``lrchain simulate modulated --help``):"))
 @renamed("modulated")
 @real_numbers
 def modulated(params=None, *, sites=None, epsilon=None, theta_waves=None, modulation_depth=None, t_end=None,
               sample_every=None, snapshot_times=None, contrast_threshold=None, dark_window=None,
               speed_fit_start=None, speed_fit_end=None, stepper=None, abs_tol=None, rel_tol=None, dt=None,
-              max_memory=None, record_displacements=False, observer=None):
+              max_memory=None, record_displacements=False, observer=None, progress=None):
     """Periodic chain of ``sites`` sites (``lrchain simulate modulated``) started from the modulated
     acoustic wave (eq. (43)). Library defaults: params delta0=0.27, rho=0.32, sites=401,
     epsilon=0.03, theta_waves=252, modulation_depth=0.01 (b of eq. (43)), t_end=45000,
@@ -365,7 +401,9 @@ def modulated(params=None, *, sites=None, epsilon=None, theta_waves=None, modula
                        contrast_threshold=contrast_threshold, dark_window=dark_window,
                        speed_fit_start=speed_fit_start, speed_fit_end=speed_fit_end, stepper=stepper,
                        abs_tol=abs_tol, rel_tol=rel_tol, dt=dt, max_memory=max_memory)
-    out = python_names(lambda: _lrchain.simulate_modulated(options, record_displacements, observer))
+    with Bar("modulated run", progress) as bar:
+        out = python_names(lambda: _lrchain.simulate_modulated(options, record_displacements, observer,
+                                                               bar.callback))
     record, series = out["record"], out["record"]["series"]
     fields = _fields(out["fields"], "u_n", "v_n")
     return ModulatedResult(t=series["t"], energy=series["energy"], contrast=series["contrast"],

@@ -16,5 +16,6 @@ void register_model_dark(pybind11::module_& m);      // model_dark_binding.cpp: 
 void register_renamed_options(pybind11::module_& m);  // renamed_options.cpp: renamed keyword arguments
 void register_option_caps(pybind11::module_& m);      // option_caps_binding.cpp: caps shared with the CLI
 void register_real_numbers(pybind11::module_& m);     // real_numbers.cpp: complex numbers refused
+void register_build_info(pybind11::module_& m);       // build_info_binding.cpp: __version__, provenance()
 
 }  // namespace lrchain::python

@@ -50,10 +50,10 @@ py::dict solve_job(const Params& p, double omega_b, const std::string& branch, c
 
 py::dict continue_job(const Params& p, double omega_b, const std::string& branch, const std::string& center, double sites,
                       const std::string& mode, double tolerance, double max_iterations, double points, double ds,
-                      double omega_min, std::optional<double> omega_max, bool floquet) {
+                      double omega_min, std::optional<double> omega_max, bool floquet, const py::object& progress) {
   DarkConfig c = chain_config(DarkStep::branch, p, omega_b, branch, center, sites, mode, tolerance, max_iterations);
   set_branch_keywords(c, points, ds, omega_min, omega_max, floquet);
-  const DarkResult r = run_dark_job(c);
+  const DarkResult r = run_dark_job(c, progress);
   py::dict d = branch_arrays(r.branch, floquet, [](const sim::dark::DarkMeasures& m) { return measures(m); });
   // x, y: (points, sites) profiles Z(0) of the two fields
   const py::ssize_t k = static_cast<py::ssize_t>(r.branch.points.size()), N = c.sites;
@@ -88,37 +88,31 @@ py::dict evolve_job(const Params& p, double omega_b, const std::string& branch, 
   return d;
 }
 
-// The dark job's option schema (dark_schema.hpp) as a list of dicts; lrchain.dark's defaults.
-py::list options_schema() {
+// A job's option schema (option_schema.hpp) as a list of dicts: what the Python functions take their
+// defaults and docstrings from.
+py::list options_schema(const std::vector<jobs::JobOption>& options) {
   const py::object loads = py::module_::import("json").attr("loads");
   py::list out;
-  for (const DarkOption& o : dark_options()) {
-    py::dict d;
-    d["key"] = o.key;
-    d["cli"] = o.cli;
-    d["python"] = o.python;
-    d["steps"] = o.steps;
-    d["default"] = loads(o.default_value.dump());
-    d["required"] = o.required;
-    d["range"] = o.range;
-    d["doc"] = o.doc;
-    d["help"] = help_text(o);
-    out.append(d);
-  }
+  for (const jobs::JobOption& o : options) out.append(loads(jobs::to_json(o).dump()));
   return out;
 }
 
 }  // namespace
 
 void register_dark(py::module_& m) {
-  m.def("dark_options", &options_schema,
+  m.def("dark_options", [] { return options_schema(dark_options()); },
         "The dark job's options: key, cli, python, steps, default, required, range, doc, help (the CLI's text).");
+  m.def("job_options", [](const std::string& job) { return options_schema(jobs::job_options(job)); }, py::arg("job"),
+        "A job's options (\"bright\", \"coeffs\", \"regime map\", ...; job_names()): key, cli, python, steps, "
+        "default, required, range, doc, help (the CLI's text), default_text.");
+  m.def("job_names", &jobs::job_names, "The jobs that have an option schema (job_options).");
   m.def("dark_solve", &solve_job, py::arg("params"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("floquet"),
         py::arg("full_monodromy"));
   m.def("dark_continue", &continue_job, py::arg("params"), py::arg("omega_b"), py::arg("branch"),
         py::arg("center"), py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"),
-        py::arg("points"), py::arg("ds"), py::arg("omega_min"), py::arg("omega_max"), py::arg("floquet"));
+        py::arg("points"), py::arg("ds"), py::arg("omega_min"), py::arg("omega_max"), py::arg("floquet"),
+        py::arg("progress") = py::none());
   m.def("dark_evolve", &evolve_job, py::arg("params"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("t_end"),
         py::arg("samples"));

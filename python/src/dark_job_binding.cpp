@@ -4,6 +4,7 @@
 #include <csignal>
 
 #include "interrupt_guard.hpp"
+#include "progress_hook.hpp"
 #include "lrchain/checked_number.hpp"
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
@@ -44,8 +45,9 @@ void set_evolve_keywords(DarkConfig& c, double t_end, double samples) {
   c.samples = integer_keyword(samples, "samples", config::dark_samples.least, config::dark_samples.most);
 }
 
-DarkResult run_dark_job(const DarkConfig& c) {
+DarkResult run_dark_job(const DarkConfig& c, const pybind11::object& progress) {
   validate(c);
+  ProgressHook progress_hook(progress);
   InterruptGuard guard;
   DarkRunHooks hooks;
   hooks.stop = guard.flag();
@@ -53,6 +55,10 @@ DarkResult run_dark_job(const DarkConfig& c) {
   hooks.newton_progress = [stop = guard.flag()](const sim::dark::NewtonRecord&) {
     if (stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
   };
+  if (const auto report = progress_hook.hook())
+    hooks.on_point = [report, done = Index(0), points = c.points](const sim::dark::BranchPoint&) mutable {
+      report(double(++done) / double(points));
+    };
   DarkResult r = guard.run([&] { return run(c, hooks); });
   if (!r.newton.converged) throw NumericalFailure(*failure(r));
   return r;

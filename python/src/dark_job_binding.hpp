@@ -4,6 +4,8 @@
 #include <optional>
 #include <string>
 
+#include <pybind11/pybind11.h>
+
 #include "lrchain/jobs/dark_job.hpp"
 
 namespace lrchain::python {
@@ -22,6 +24,7 @@ Index integer_keyword(double value, const std::string& keyword, std::int64_t lea
 
 // Validates `c` and runs it without the GIL (Ctrl-C: KeyboardInterrupt, also inside an integration);
 // NumericalFailure with Newton's history when Newton does not converge.
-jobs::dark::DarkResult run_dark_job(const jobs::dark::DarkConfig& c);
+// `progress(fraction)` (None: none) is called after every branch point with points done / points.
+jobs::dark::DarkResult run_dark_job(const jobs::dark::DarkConfig& c, const pybind11::object& progress = pybind11::none());
 
 }  // namespace lrchain::python

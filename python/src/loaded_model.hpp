@@ -1,30 +1,26 @@
 #pragma once
-// lrchain.Model as C++: a model definition with parameter values, the file it was loaded from, and
-// (once a lattice run asks for it) its lattice kernels: compiled into lrchain for a shipped model,
-// compiled at run time into the per-user cache for a user's file (through lrchain._model_compiler).
+// lrchain.Model as C++: a model loaded by the model loader (jobs::ModelSource: a shipped model, or a
+// user's file compiled through lrchain._model_compiler) with parameter values. Copies made by
+// replace() share the source, so the lattice kernels are loaded once per loaded file.
 #include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "lrchain/jobs/model_source.hpp"
 #include "lrchain/model.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
 
 namespace lrchain::python {
 
 struct LoadedModel {
-  std::shared_ptr<const ModelDefinition> definition;
+  std::shared_ptr<const jobs::ModelSource> source;
   Model model;
-  std::string source;  // the model file's path as given (a shipped model's name: empty)
-  // Lattice kernels, loaded on first use (with the GIL held); keeps a run-time library loaded.
-  mutable std::shared_ptr<const lrchain_lattice_kernels> lattice{};
-  mutable bool lattice_compiled_in = true, lattice_from_cache = false;
-  mutable std::string lattice_library{};
+  const ModelDefinition& definition() const { return *source->definition(); }
 };
 
-// The lattice kernels of `m` (loaded once per definition): a shipped model's compiled-in kernels,
-// or the lattice code of the user's file compiled at run time. InputError when the file changed
-// since it was loaded or this build has no model compiler. Call with the GIL held.
+// The lattice kernels of `m` (loaded once per source): a shipped model's compiled-in kernels, or the
+// lattice code of the user's file (the bytes load_model read) compiled at run time. InputError when
+// this build has no model compiler. Call with the GIL held.
 const lrchain_lattice_kernels& lattice_kernels(const LoadedModel& m);
 
 // {"name", "file_hash", "parameters", "lattice_code"} as the CLI's JSON "model" (GIL held).

@@ -92,10 +92,10 @@ py::dict solve_job(const LoadedModel& loaded, double omega_b, std::optional<std:
 py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch,
                       const std::string& center, double sites, const std::string& mode, double tolerance,
                       double max_iterations, double points, double ds, double omega_min, std::optional<double> omega_max,
-                      bool floquet) {
+                      bool floquet, const py::object& progress) {
   DarkConfig c = model_config(DarkStep::branch, loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations);
   set_branch_keywords(c, points, ds, omega_min, omega_max, floquet);
-  const DarkResult r = run_dark_job(c);
+  const DarkResult r = run_dark_job(c, progress);
   const DarkEdge& e = r.edge;
   py::dict d = edge_dict(loaded, r);
   for (const auto& [key, value] :
@@ -134,7 +134,8 @@ void register_model_dark(py::module_& m) {
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("floquet"));
   m.def("dark_model_continue", &continue_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"),
         py::arg("center"), py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"),
-        py::arg("points"), py::arg("ds"), py::arg("omega_min"), py::arg("omega_max"), py::arg("floquet"));
+        py::arg("points"), py::arg("ds"), py::arg("omega_min"), py::arg("omega_max"), py::arg("floquet"),
+        py::arg("progress") = py::none());
   m.def("dark_model_evolve", &evolve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("t_end"),
         py::arg("samples"));

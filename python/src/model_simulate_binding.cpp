@@ -77,9 +77,10 @@ py::dict model_ring(const LoadedModel& loaded, const std::string& branch, const 
   for (py::ssize_t i = 0; i < k; ++i) {
     const RingAmplitude& a = r.amplitudes[std::size_t(i)];
     amplitude.mutable_at(i) = a.amplitude;
-    measured.mutable_at(i) = a.measured_frequency;
+    const double not_measured = std::numeric_limits<double>::quiet_NaN();  // the plane wave broke up (summary: failure)
+    measured.mutable_at(i) = a.broke_up_at ? not_measured : a.measured_frequency;
     predicted.mutable_at(i) = a.predicted_frequency;
-    measured_shift.mutable_at(i) = a.measured_shift;
+    measured_shift.mutable_at(i) = a.broke_up_at ? not_measured : a.measured_shift;
     predicted_shift.mutable_at(i) = a.predicted_shift;
     disagreement.mutable_at(i) = a.relative_disagreement.value_or(std::numeric_limits<double>::quiet_NaN());
   }

@@ -15,4 +15,5 @@ PYBIND11_MODULE(_lrchain, m) {
   lrchain::python::register_renamed_options(m);
   lrchain::python::register_option_caps(m);
   lrchain::python::register_real_numbers(m);
+  lrchain::python::register_build_info(m);
 }

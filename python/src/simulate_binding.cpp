@@ -6,6 +6,7 @@
 
 #include "bindings.hpp"
 #include "interrupt_guard.hpp"
+#include "progress_hook.hpp"
 #include "lrchain/jobs/simulate/bright_outputs.hpp"
 #include "lrchain/jobs/simulate/drive_outputs.hpp"
 #include "lrchain/jobs/simulate/modulated_outputs.hpp"
@@ -30,15 +31,19 @@ void add_integrator(std::map<std::string, OptionTarget>& t, IntegratorOptions& o
 }
 
 // Runs `run(config, control)` without the GIL, with SIGINT handled and the sampling hook set; returns
-// {"summary_json", "record", "fields"} (fields: x_n/y_n or u_n/v_n at every sample, or None).
+// {"summary_json", "record", "fields"} (fields: x_n/y_n or u_n/v_n at every sample, or None);
+// `progress(fraction)` (or None) is called as the run advances.
 template <class Config, class Run>
-py::dict run_python(const Config& config, Run run, bool record_fields, const py::object& observer) {
+py::dict run_python(const Config& config, Run run, bool record_fields, const py::object& observer,
+                    const py::object& progress) {
   validate(config);  // before anything is allocated or the handler installed
   SampleRecorder recorder(record_fields, observer);
+  ProgressHook progress_hook(progress);
   InterruptGuard guard;
   RunControl control;
   control.stop = guard.flag();
   control.on_sample = recorder.hook();
+  control.progress = progress_hook.hook();
   const auto result = guard.run([&] { return run(config, control); });
   py::dict out;
   out["summary_json"] = jobs::to_json(config, result.summary).dump();
@@ -47,7 +52,7 @@ py::dict run_python(const Config& config, Run run, bool record_fields, const py:
   return out;
 }
 
-py::dict bright(const py::dict& options, bool record_strains, const py::object& observer) {
+py::dict bright(const py::dict& options, bool record_strains, const py::object& observer, const py::object& progress) {
   BrightRunConfig c;
   long sites = long(strain_site_count(c.N));
   std::map<std::string, OptionTarget> t{
@@ -61,10 +66,10 @@ py::dict bright(const py::dict& options, bool record_strains, const py::object& 
   if (options.contains("dt")) c.integrator.automatic_dt = false;  // a given step is used, as --dt
   c.N = strain_half_width(sites, bright_sites);
   return run_python(c, [](const BrightRunConfig& cfg, const RunControl& rc) { return run_bright(cfg, rc); },
-                    record_strains, observer);
+                    record_strains, observer, progress);
 }
 
-py::dict drive(const py::dict& options, bool record_displacements, const py::object& observer) {
+py::dict drive(const py::dict& options, bool record_displacements, const py::object& observer, const py::object& progress) {
   DriveRunConfig c;
   std::map<std::string, OptionTarget> t{
       {"params", &c.params}, {"sites", &c.beads}, {"amplitude", &c.amplitude}, {"omega0", &c.omega0},
@@ -75,10 +80,10 @@ py::dict drive(const py::dict& options, bool record_displacements, const py::obj
   add_integrator(t, c.integrator);
   assign_options(options, t, "drive", renamed_options("drive"));
   return run_python(c, [](const DriveRunConfig& cfg, const RunControl& rc) { return run_drive(cfg, rc); },
-                    record_displacements, observer);
+                    record_displacements, observer, progress);
 }
 
-py::dict modulated(const py::dict& options, bool record_displacements, const py::object& observer) {
+py::dict modulated(const py::dict& options, bool record_displacements, const py::object& observer, const py::object& progress) {
   ModulatedRunConfig c;
   c.checkpoint_every = 0;  // no checkpoint files from Python
   std::map<std::string, OptionTarget> t{
@@ -90,15 +95,18 @@ py::dict modulated(const py::dict& options, bool record_displacements, const py:
   add_integrator(t, c.integrator);
   assign_options(options, t, "modulated", renamed_options("modulated"));
   return run_python(c, [](const ModulatedRunConfig& cfg, const RunControl& rc) { return run_modulated(cfg, rc); },
-                    record_displacements, observer);
+                    record_displacements, observer, progress);
 }
 
 }  // namespace
 
 void register_simulate(py::module_& m) {
-  m.def("simulate_bright", &bright, py::arg("options"), py::arg("record_fields"), py::arg("observer"));
-  m.def("simulate_drive", &drive, py::arg("options"), py::arg("record_fields"), py::arg("observer"));
-  m.def("simulate_modulated", &modulated, py::arg("options"), py::arg("record_fields"), py::arg("observer"));
+  m.def("simulate_bright", &bright, py::arg("options"), py::arg("record_fields"), py::arg("observer"),
+        py::arg("progress") = py::none());
+  m.def("simulate_drive", &drive, py::arg("options"), py::arg("record_fields"), py::arg("observer"),
+        py::arg("progress") = py::none());
+  m.def("simulate_modulated", &modulated, py::arg("options"), py::arg("record_fields"), py::arg("observer"),
+        py::arg("progress") = py::none());
 }
 
 }  // namespace lrchain::python

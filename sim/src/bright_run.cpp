@@ -65,18 +65,18 @@ void validate(const BrightRunConfig& c) {
     throw InvalidParameter("n0", fmt::format("the initial centre must be a site of the lattice, in [-N, N] = [{}, {}] "
                                              "(sites = 2N + 1 = {})", -c.N, c.N, strain_site_count(c.N)));
   if (c.detuning) checked_finite(*c.detuning, "detuning");
-  checked_finite(c.error_window_end, "error-window");
-  if (c.centre_window < 1) throw InvalidParameter("centre-window", "must be >= 1");
+  checked_finite(c.error_window_end, "error_window_end");
+  if (c.centre_window < 1) throw InvalidParameter("centre_window", "must be >= 1");
   validate(c.integrator);
   // The ansatz checks theta, detuning and n0 and gives T_b: dt may not exceed the run periods * T_b.
   const BrightBreatherAnsatz ansatz(c.params, c.branch, c.theta, c.detuning, c.n0);
   const double run_length = c.periods * ansatz.period();
   validate_step_within_run(c.integrator, run_length);
   if (!(c.error_window_end <= run_length))
-    throw InvalidParameter("error-window", fmt::format("the end of the error window (error_window_end) must be at "
+    throw InvalidParameter("error_window_end", fmt::format("the end of the error window (error_window_end) must be at "
                                                        "most {:.6g}, the run's time span (<= 0: none)", run_length));
   if (!(c.trailing.fit_start >= 0 && c.trailing.fit_start <= run_length))
-    throw InvalidParameter("trailing-fit-start", fmt::format("must be in [0, {:.6g}], the run's time span (0: off)",
+    throw InvalidParameter("trailing_fit_start", fmt::format("must be in [0, {:.6g}], the run's time span (0: off)",
                                                              run_length));
   const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
   const bool lattice = lattice_dominates(sizes);

@@ -25,6 +25,7 @@ namespace lrchain::sim {
 namespace {
 
 // Sample intervals floor(t_end / sample_every) of the run (validated: no overflow).
+// (the name is also the message's text "samples (t-end / sample-every)": the command's spelling)
 Index sample_intervals(const DriveRunConfig& c) { return sim::sample_intervals(c.t_end, c.sample_every, "t-end"); }
 
 }  // namespace
@@ -59,26 +60,26 @@ void validate(const DriveRunConfig& c) {
   if (!(c.omega0 > 0 && std::isfinite(c.omega0))) throw InvalidParameter("omega0", "must be a finite number > 0");
   check_optical_band(c.params, c.omega0);
   if (!(c.ramp_rate > 0 && c.ramp_rate <= c.omega0))
-    throw InvalidParameter("ramp-rate", "must be in (0, omega0]: the envelope chi(t) varies slowly against the carrier");
-  if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t-end", "must be a finite number > 0");
+    throw InvalidParameter("ramp_rate", "must be in (0, omega0]: the envelope chi(t) varies slowly against the carrier");
+  if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t_end", "must be a finite number > 0");
   validate_sampling({c.t_end, "t_end", false, c.sample_every, c.spacetime_every, c.checkpoint_every,
                      snapshot_times_in_run(c),
                      (c.checkpoint_at_end && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
                      "snapshot_times",
-                     {{"switch-off-time", c.t_m}, {"front-fit-start", c.front_fit_start}, {"front-fit-end", c.front_fit_end}},
+                     {{"switch_off_time", c.t_m}, {"front_fit_start", c.front_fit_start}, {"front_fit_end", c.front_fit_end}},
                      [&c](double t_end) {
                        DriveRunConfig longer = c;
                        longer.t_end = t_end;
                        return run_sizes(longer);
                      }, c.max_memory});
   if (!(c.front_fraction > 0 && c.front_fraction < 1))
-    throw InvalidParameter("front-fraction", "must be in (0, 1)");
+    throw InvalidParameter("front_fraction", "must be in (0, 1)");
   if (!(c.t_m >= 0 && std::isfinite(c.t_m)))
-    throw InvalidParameter("switch-off-time", "must be a finite number >= 0 (the time chi(t) starts to ramp down)");
-  checked_finite(c.front_fit_start, "front-fit-start");
-  checked_finite(c.front_fit_end, "front-fit-end");
+    throw InvalidParameter("switch_off_time", "must be a finite number >= 0 (the time chi(t) starts to ramp down)");
+  checked_finite(c.front_fit_start, "front_fit_start");
+  checked_finite(c.front_fit_end, "front_fit_end");
   if (!(c.front_fit_end > c.front_fit_start))
-    throw InvalidParameter("front-fit-end", "must exceed front-fit-start (the front-speed fit window "
+    throw InvalidParameter("front_fit_end", "must exceed front-fit-start (the front-speed fit window "
                                             "[front_fit_start, front_fit_end])");
   validate(c.integrator);
   validate_step_within_run(c.integrator, c.t_end);
@@ -86,7 +87,7 @@ void validate(const DriveRunConfig& c) {
     throw InvalidParameter("stepper", "the driven chain is not autonomous: use rkf78 or dopri5");
   const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
   const bool lattice = lattice_dominates(sizes);
-  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "t-end",
+  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "t_end",
                lattice ? "lower sites" : "lower t-end or raise sample-every and spacetime-every");
 }
 

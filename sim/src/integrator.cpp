@@ -80,7 +80,7 @@ void validate(const IntegratorOptions& o) {
   if (!(o.rel_tol >= 0 && o.rel_tol < 1)) throw InvalidParameter("rel_tol", "must be in [0, 1)");
   if (!(o.dt > 0 && std::isfinite(o.dt))) throw InvalidParameter("dt", "must be a finite number > 0");
   if (!is_symplectic(o.stepper) && !(o.abs_tol + o.rel_tol >= finest_tolerance))
-    throw InvalidParameter("abs-tol", fmt::format("abs-tol + rel-tol must be at least {:g} (got abs-tol {:g}, rel-tol {:g}): "
+    throw InvalidParameter("abs_tol", fmt::format("abs-tol + rel-tol must be at least {:g} (got abs-tol {:g}, rel-tol {:g}): "
                                                   "double precision resolves no smaller local error on the lattice's "
                                                   "O(1) state, and the steps would shrink towards zero; raise "
                                                   "--abs-tol or --rel-tol", finest_tolerance, o.abs_tol, o.rel_tol));

@@ -81,12 +81,12 @@ void validate(const ModelBrightConfig& c) {
   check_half_width(c.N, model_bright_sites);
   if (!(c.periods > 0 && c.periods <= 1e6)) throw InvalidParameter("periods", "must be in (0, 1e6] (units of T_b)");
   if (!(c.sample_every > 0 && c.sample_every <= c.periods && c.periods / c.sample_every <= 1e6))
-    throw InvalidParameter("sample-every", "must be in (0, periods] with at most 1e6 samples");
+    throw InvalidParameter("sample_every", "must be in (0, periods] with at most 1e6 samples");
   if (!(std::isfinite(c.n0) && std::abs(c.n0) <= double(c.N)))
     throw InvalidParameter("n0", fmt::format("the initial centre must be in [-N, N] = [{}, {}] (sites = 2N + 1 = {})", -c.N,
                                              c.N, strain_site_count(c.N)));
   if (!(c.steps_per_period == 0 || (c.steps_per_period >= 8 && c.steps_per_period <= 1e4)))
-    throw InvalidParameter("steps-per-period", "must be in [8, 1e4] (0: 24)");
+    throw InvalidParameter("steps_per_period", "must be in [8, 1e4] (0: 24)");
   if (!(c.dt >= 0 && std::isfinite(c.dt))) throw InvalidParameter("dt", "must be a finite step > 0");
   if (!(c.tolerance >= 1e-14 && c.tolerance <= 1e-4)) throw InvalidParameter("tolerance", "must be in [1e-14, 1e-4]");
 }

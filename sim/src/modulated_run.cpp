@@ -50,6 +50,7 @@ LatticeRunSizes run_sizes(const ModulatedRunConfig& c) {
   LatticeRunSizes s;
   s.sites = double(c.N);
   const double snapshots = double(snapshot_times_in_run(c).size());
+  // (the name is also the message's text "samples (t-end / sample-every)": the command's spelling)
   const double samples = double(grid_index(c.t_end, c.sample_every, "sample-every")) + 2;
   s.observations = samples + snapshots;
   s.series_columns = 5;
@@ -68,33 +69,33 @@ void validate(const ModulatedRunConfig& c) {
   if (c.N < 8) throw InvalidParameter("sites", "must be an integer >= 8");
   check_in_range(c.epsilon, modulation_amplitude_range);
   if (!(c.theta_waves > 0 && c.theta_waves < double(c.N)))
-    throw InvalidParameter("theta-waves", "theta0 = theta_waves*pi/sites must lie in (0, pi)");
-  if (!(c.b >= 0 && c.b < 1)) throw InvalidParameter("modulation-depth", "must be in [0, 1)");
-  if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t-end", "must be a finite number > 0");
+    throw InvalidParameter("theta_waves", "theta0 = theta_waves*pi/sites must lie in (0, pi)");
+  if (!(c.b >= 0 && c.b < 1)) throw InvalidParameter("modulation_depth", "must be in [0, 1)");
+  if (!(c.t_end > 0 && std::isfinite(c.t_end))) throw InvalidParameter("t_end", "must be a finite number > 0");
   validate_sampling({c.t_end, "t_end", false, c.sample_every, std::nullopt, c.checkpoint_every,
                      snapshot_times_in_run(c),
                      (c.checkpoint_every > 0 && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
-                     "snapshot_times", {{"speed-fit-start", c.speed_fit_start}, {"speed-fit-end", c.speed_fit_end}},
+                     "snapshot_times", {{"speed_fit_start", c.speed_fit_start}, {"speed_fit_end", c.speed_fit_end}},
                      [&c](double t_end) {
                        ModulatedRunConfig longer = c;
                        longer.t_end = t_end;
                        return run_sizes(longer);
                      }, c.max_memory});
-  if (c.dark_window < 1 || c.dark_window >= c.N) throw InvalidParameter("dark-window", "must be in [1, sites)");
+  if (c.dark_window < 1 || c.dark_window >= c.N) throw InvalidParameter("dark_window", "must be in [1, sites)");
   // (max e - min e)/mean e <= N for any energy density e >= 0 on N sites.
   if (!(c.contrast_threshold > 0 && c.contrast_threshold <= double(c.N)))
-    throw InvalidParameter("contrast-threshold",
+    throw InvalidParameter("contrast_threshold",
                            "must be in (0, sites]: the contrast (max e - min e)/mean e never exceeds the number of sites");
-  checked_finite(c.speed_fit_start, "speed-fit-start");
-  checked_finite(c.speed_fit_end, "speed-fit-end");
+  checked_finite(c.speed_fit_start, "speed_fit_start");
+  checked_finite(c.speed_fit_end, "speed_fit_end");
   if (!(c.speed_fit_end > c.speed_fit_start))
-    throw InvalidParameter("speed-fit-end", "must exceed speed-fit-start (the fit window [speed_fit_start, speed_fit_end])");
+    throw InvalidParameter("speed_fit_end", "must exceed speed-fit-start (the fit window [speed_fit_start, speed_fit_end])");
   validate(c.integrator);
   const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
   validate_step_within_run(c.integrator, c.t_end);
   validate_step_count(c.integrator, c.t_end);
   const bool lattice = lattice_dominates(sizes);
-  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "sample-every",
+  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "sample_every",
                lattice ? "lower sites" : "lower t-end or raise sample-every");
 }
 

@@ -16,12 +16,7 @@ namespace {
 using json = nlohmann::json;
 
 // The result class name (Python's) and the file names of the series columns of a kind.
-struct KindLayout {
-  const char* result_class;
-  std::vector<std::pair<std::string, std::string>> renamed;  // record column -> file name
-};
-
-KindLayout layout_of(SimulationKind kind) {
+RecordLayout layout_of(SimulationKind kind) {
   switch (kind) {
     case SimulationKind::bright: return {"BrightResult", {{"X", "centre"}}};
     case SimulationKind::drive: return {"DriveResult", {}};
@@ -97,16 +92,8 @@ void write_field(Hdf5TreeFile& file, const std::string& path, const std::string&
   file.write_dataset(path + "/values", element, values.data(), {t.size(), n.size()});
 }
 
-void write_record(Hdf5TreeFile& file, const RunRecord& record, const KindLayout& layout) {
-  const std::size_t rows = record.series.rows(), cols = record.series.names.size();
-  std::vector<double> column(rows);
-  for (std::size_t c = 0; c < cols; ++c) {
-    std::string name = record.series.names[c];
-    for (const auto& [from, to] : layout.renamed)
-      if (name == from) name = to;
-    for (std::size_t r = 0; r < rows; ++r) column[r] = record.series.at(r, c);
-    file.write_dataset("/" + name, Hdf5Element::float64, column.data(), {rows});
-  }
+void write_record(Hdf5TreeFile& file, const RunRecord& record, const RecordLayout& layout) {
+  write_series_datasets(file, record.series, layout.renamed);
   if (!record.fields.empty()) {
     const SpaceTime& f = record.fields[0];
     std::vector<double> n(f.sites);
@@ -147,6 +134,19 @@ SimulationKind simulation_kind(const std::string& name) {
   throw InputError("result kind '" + name + "': bright, drive or modulated");
 }
 
+void write_series_datasets(Hdf5TreeFile& file, const TimeSeries& series,
+                           const std::vector<std::pair<std::string, std::string>>& renamed) {
+  const std::size_t rows = series.rows(), cols = series.names.size();
+  std::vector<double> column(rows);
+  for (std::size_t c = 0; c < cols; ++c) {
+    std::string name = series.names[c];
+    for (const auto& [from, to] : renamed)
+      if (name == from) name = to;
+    for (std::size_t r = 0; r < rows; ++r) column[r] = series.at(r, c);
+    file.write_dataset("/" + name, Hdf5Element::float64, column.data(), {rows});
+  }
+}
+
 void write_json_tree(Hdf5TreeFile& file, const std::string& group, const json& j) {
   for (const auto& [name, value] : j.items()) write_json_value(file, group, name, value);
 }
@@ -159,15 +159,19 @@ void write_provenance_attributes(Hdf5TreeFile& file, const json& summary) {
   file.write_attribute("/", "model", summary.value("model", json(nullptr)).dump());
 }
 
-void write_simulation_hdf5(const std::filesystem::path& path, SimulationKind kind, const RunRecord& record,
-                           const json& summary, const std::vector<SampledField>& extra) {
-  Hdf5TreeFile file(path);
-  const KindLayout layout = layout_of(kind);
-  file.write_attribute("/", "lrchain_result", std::string(layout.result_class));
+void write_simulation_tree(Hdf5TreeFile& file, const RecordLayout& layout, const RunRecord& record,
+                           const json& summary) {
+  file.write_attribute("/", "lrchain_result", layout.result_class);
   write_provenance_attributes(file, summary);
   write_record(file, record, layout);
   file.create_group("/summary");
   write_json_tree(file, "/summary", summary);
+}
+
+void write_simulation_hdf5(const std::filesystem::path& path, SimulationKind kind, const RunRecord& record,
+                           const json& summary, const std::vector<SampledField>& extra) {
+  Hdf5TreeFile file(path);
+  write_simulation_tree(file, layout_of(kind), record, summary);
   for (const SampledField& f : extra) write_field(file, "/" + f.name, f.quantity, f.n, f.t, f.values, Hdf5Element::float64);
   file.commit();
 }

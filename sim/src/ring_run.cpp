@@ -90,35 +90,60 @@ void validate(const RingRunConfig& c) {
   if (!(c.packet_width >= 4 && c.packet_width <= 1000)) throw InvalidParameter("packet-width", "must be in [4, 1000] sites");
 }
 
-double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
-                              const BlochMode& mode, Index sites, Index mode_number, double amplitude, double periods,
-                              double steps_per_period, const std::atomic<bool>* stop) {
+PlaneWaveMeasurement measure_plane_wave(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                                        const BlochMode& mode, Index sites, Index mode_number, double amplitude,
+                                        double periods, double steps_per_period, const std::atomic<bool>* stop) {
   const double theta = kTwoPi * double(mode_number) / double(sites);
+  const bool alternating = 2 * mode_number == sites;  // theta = pi: sum_n u_n (-1)^n is real
   const ModelLattice ring(kernels, parameters, std::size_t(sites), true, LatticeForm::displacement);
   State s = wave_state(ring, mode, theta, 0.0, [amplitude](double, double& g, double& dg) { g = amplitude; dg = 0; });
   const double period = kTwoPi / mode.omega;
+  const std::size_t velocities = ring.fields() * std::size_t(sites);  // first field's velocities start here
   constexpr int samples_per_period = 8;
   std::vector<double> times;
   for (long i = 0; i <= long(periods * samples_per_period); ++i) times.push_back(period * double(i) / samples_per_period);
   std::vector<double> t_series, phase_series;
   t_series.reserve(times.size());
   phase_series.reserve(times.size());
+  PlaneWaveMeasurement m;
   double previous = 0, unwrapped = 0;
   const IntegrationStats stats = integrate_observed(ring, s, times, [&](const State& x, double t) {
-    std::complex<double> z = 0;
-    for (long n = 0; n < sites; ++n) z += x[std::size_t(n)] * std::polar(1.0, -theta * double(n));
-    const double phase = std::arg(z);
+    // Mode sums of u and of the analytic signal u + i u'/omega, and the first field's energy.
+    std::complex<double> z = 0, analytic = 0;
+    double energy = 0;
+    for (long n = 0; n < sites; ++n) {
+      const double u = x[std::size_t(n)], v = x[velocities + std::size_t(n)] / mode.omega;
+      const std::complex<double> carrier = std::polar(1.0, -theta * double(n));
+      z += u * carrier;
+      analytic += std::complex<double>(u, v) * carrier;
+      energy += u * u + v * v;
+    }
+    const double fraction = energy > 0 ? std::norm(analytic) / double(sites) / energy : 0.0;
+    m.least_carrier_fraction = std::min(m.least_carrier_fraction, fraction);
+    if (fraction < kPlaneWaveCarrierFraction) {
+      m.broke_up_at = t;
+      return false;  // no longer a plane wave: nothing left to measure
+    }
+    const double phase = std::arg(alternating ? analytic : z);
     if (!t_series.empty()) unwrapped += std::remainder(phase - previous, kTwoPi);
     previous = phase;
     t_series.push_back(t);
     phase_series.push_back(unwrapped);
     return !(stop && stop->load(std::memory_order_relaxed));  // false: stopped (SIGINT)
   }, fixed_step(mode.omega, steps_per_period), {}, 0, stop);
-  if (stats.stopped) throw Interrupted(SIGINT, "interrupted");
+  if (stats.stopped && !m.broke_up_at) throw Interrupted(SIGINT, "interrupted");
   if (stats.blew_up)
     throw NumericalFailure(fmt::format("{}: the plane wave of amplitude {} blew up on the ring at t = {}",
                                        kernels.model_name, amplitude, stats.t_reached));
-  return -least_squares_slope(t_series, phase_series);
+  if (t_series.size() >= 2) m.frequency = -least_squares_slope(t_series, phase_series);
+  return m;
+}
+
+double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                              const BlochMode& mode, Index sites, Index mode_number, double amplitude, double periods,
+                              double steps_per_period, const std::atomic<bool>* stop) {
+  return measure_plane_wave(kernels, parameters, mode, sites, mode_number, amplitude, periods, steps_per_period, stop)
+      .frequency;
 }
 
 double measure_packet_speed(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
@@ -189,12 +214,26 @@ RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernel
   for (double U : c.amplitudes) {
     RingAmplitude a;
     a.amplitude = U;
-    a.measured_frequency = measure_ring_frequency(kernels, parameters, r.mode, r.sites, r.mode_number, U, c.periods,
-                                                  c.steps_per_period, c.stop);
+    const PlaneWaveMeasurement m = measure_plane_wave(kernels, parameters, r.mode, r.sites, r.mode_number, U, c.periods,
+                                                      c.steps_per_period, c.stop);
+    a.measured_frequency = m.frequency;
+    a.least_carrier_fraction = m.least_carrier_fraction;
+    a.broke_up_at = m.broke_up_at;
     a.predicted_shift = r.h * U * U / 4;
     a.predicted_frequency = r.omega + a.predicted_shift;
     a.measured_shift = a.measured_frequency - r.omega;
-    if (std::abs(r.h) > 1e-12 * std::max(1.0, r.omega)) a.relative_disagreement = std::abs(a.measured_shift - a.predicted_shift) / std::abs(a.predicted_shift);
+    if (std::abs(r.h) > 1e-12 * std::max(1.0, r.omega) && !a.broke_up_at)
+      a.relative_disagreement = std::abs(a.measured_shift - a.predicted_shift) / std::abs(a.predicted_shift);
+    a.weakly_nonlinear = std::abs(a.predicted_shift) <= kWeaklyNonlinearShift * r.omega;
+    if (!a.weakly_nonlinear)
+      r.warnings.push_back(fmt::format("amplitude {:g}: |h| U^2/4 = {:.3g} is {:.3g} omega, outside the weakly nonlinear "
+                                       "range (<= {:g} omega): the O(U^4) terms of the frequency are not small",
+                                       U, std::abs(a.predicted_shift), std::abs(a.predicted_shift) / r.omega,
+                                       kWeaklyNonlinearShift));
+    if (a.broke_up_at && !r.failure)
+      r.failure = fmt::format("amplitude {:g}: not measurable: the plane wave broke up at t = {:.6g} (the fraction of its "
+                              "energy in the carrier mode fell to {:.4f} < {:g}; modulational instability)",
+                              U, *a.broke_up_at, a.least_carrier_fraction, kPlaneWaveCarrierFraction);
     r.amplitudes.push_back(a);
   }
   // The packet ring: a multiple of the plane-wave ring with >= 40 widths; the packet travels a
@@ -206,13 +245,14 @@ RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernel
   const long multiple = std::max(1L, long(std::ceil(40 * c.packet_width / double(r.sites))));
   r.packet_sites = multiple * r.sites;
   const double period = 2 * std::numbers::pi / r.omega;
-  r.packet_duration = std::abs(r.group_velocity) > 0 ? std::min(0.25 * double(r.packet_sites) / std::abs(r.group_velocity),
+  r.standing = std::abs(r.group_velocity) <= kZeroGroupVelocity * std::max(1.0, r.omega);
+  r.packet_duration = !r.standing ? std::min(0.25 * double(r.packet_sites) / std::abs(r.group_velocity),
                                                                 4000 * period)
                                                      : 4000 * period;
-  r.packet_speed = measure_packet_speed(kernels, parameters, r.mode, r.group_velocity, r.packet_sites,
+  r.packet_speed = measure_packet_speed(kernels, parameters, r.mode, r.standing ? 0.0 : r.group_velocity, r.packet_sites,
                                         multiple * r.mode_number, r.packet_amplitude, r.packet_width,
                                         r.packet_duration, c.steps_per_period / 2, r.record.series, c.stop);
-  if (r.group_velocity != 0)
+  if (!r.standing)
     r.packet_relative_disagreement = std::abs(r.packet_speed - r.group_velocity) / std::abs(r.group_velocity);
   return r;
 }

@@ -61,9 +61,9 @@ double memory_limit_of(const SamplingOptions& o) { return o.max_memory > 0 ? o.m
 void validate_sampling(const SamplingOptions& o) {
   const std::string units = o.in_periods ? " (units of T_b)" : "", tb = o.in_periods ? " T_b" : "";
   if (!(o.sample_every > 0 && o.sample_every <= o.length))
-    throw InvalidParameter("sample-every", "must be in (0, " + o.length_name + "]" + units);
+    throw InvalidParameter("sample_every", "must be in (0, " + o.length_name + "]" + units);
   if (o.spacetime_every && !(*o.spacetime_every >= o.sample_every && *o.spacetime_every <= o.length))
-    throw InvalidParameter("spacetime-every", "must be in [sample-every, " + o.length_name + "]" + units);
+    throw InvalidParameter("spacetime_every", "must be in [sample-every, " + o.length_name + "]" + units);
   const Reach reach{o, o.sizes_at ? memory_limit_of(o) : 0};
   // Times beyond the end belong to a longer run made of restarts (they are part of the
   // checkpoint's identity): allowed when this run continues a checkpoint or writes one at its end.
@@ -76,9 +76,9 @@ void validate_sampling(const SamplingOptions& o) {
                                                       o.snapshot_key, reach.longest(t), tb, reach.reason()));
   }
   if (!(o.checkpoint_every == 0 || (o.checkpoint_every >= o.sample_every && std::isfinite(o.checkpoint_every))))
-    throw InvalidParameter("checkpoint-every", "must be 0 (none) or a finite number >= sample-every" + units);
+    throw InvalidParameter("checkpoint_every", "must be 0 (none) or a finite number >= sample-every" + units);
   if (o.checkpoint_every > 0 && !reach.contains(o.checkpoint_every))
-    throw InvalidParameter("checkpoint-every",
+    throw InvalidParameter("checkpoint_every",
                            fmt::format("must be 0 (none) or in [sample-every, {:.4g}]{} {}; got {:g}",
                                        reach.longest(o.checkpoint_every), tb, reach.reason(), o.checkpoint_every));
   for (const auto& [name, t] : o.later_times) {

@@ -97,16 +97,18 @@ _CLI_ONLY = ("/summary@out", "/summary@checkpoint_file", "/summary@checkpoints_w
              "/summary@figures")
 
 
-def _assert_same_file(cli_file, python_file):
+def _assert_same_file(cli_file, python_file, run_dependent=_RUN_DEPENDENT, cli_only=_CLI_ONLY, python_only=()):
+    """Equal datasets and attributes but those whose key contains one of `run_dependent`, the
+    attributes in `cli_only` (CLI file only) and those starting with one of `python_only`."""
     a, b = _hdf5_items(cli_file), _hdf5_items(python_file)
     datasets_a = {k for k in a if "@" not in k}
     datasets_b = {k for k in b if "@" not in k}
     assert datasets_a == datasets_b
-    assert set(b) - set(a) == set()
-    assert {k for k in set(a) - set(b) if k not in _CLI_ONLY} == set()
+    assert {k for k in set(b) - set(a) if not k.startswith(tuple(python_only) or ("\0",))} == set()
+    assert {k for k in set(a) - set(b) if k not in cli_only} == set()
     compared = 0
     for key in b:
-        if any(s in key for s in _RUN_DEPENDENT):
+        if any(s in key for s in run_dependent):
             continue
         x, y = np.asarray(a[key]), np.asarray(b[key])
         assert x.dtype == y.dtype and x.shape == y.shape, key

@@ -62,7 +62,7 @@ def test_model_branch_and_evolution_round_trip(tmp_path, kg_defocusing):
     with h5py.File(tmp_path / "branch.h5", "r") as f:
         assert f.attrs["lrchain_result"] == "ModelBranch" and f.attrs["stop_reason"] == b.stop_reason
         assert np.array_equal(f["omega_b"][()], b.omega_b) and np.array_equal(f["z"][()], b.z)
-        assert f["measures/1"].attrs["norm_squared"] == b.measures[1]["norm_squared"]
+        assert f["measures/norm_squared"][1] == b.measures[1]["norm_squared"]  # one dataset per measure
     e = lrchain.dark.evolve(model=kg_defocusing, omega_b=1.17, sites=21, t_end=3 * 2 * math.pi / 1.17)
     e.to_hdf5(tmp_path / "evolution.h5")
     with h5py.File(tmp_path / "evolution.h5", "r") as f:

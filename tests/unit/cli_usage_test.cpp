@@ -76,10 +76,10 @@ TEST_CASE("every simulate subcommand's --help lists the output options it takes,
     const auto r = run_lrchain({"simulate", sub, "--help"});
     INFO("lrchain simulate " << sub << " --help");
     REQUIRE(r.exit_code == 0);
-    for (const char* option : {"--out DIR", "--json", "--no-figures", "--figure-format"})
+    for (const char* option : {"--out DIR", "--json", "--no-figures", "--figure-format", "--format csv|hdf5"})
       CHECK(r.out.find("\n  " + std::string(option)) != std::string::npos);
-    const bool lattice_run = std::string(sub) != "ring";  // ring writes CSV and figures only
-    for (const char* option : {"--format csv|hdf5", "--restart FILE", "--checkpoint FILE", "--max-memory SIZE"})
+    const bool lattice_run = std::string(sub) != "ring";  // ring has no checkpoints
+    for (const char* option : {"--restart FILE", "--checkpoint FILE", "--max-memory SIZE"})
       CHECK((r.out.find("\n  " + std::string(option)) != std::string::npos) == lattice_run);
   }
   const auto top = run_lrchain({"simulate", "--help"});

@@ -151,4 +151,15 @@ TEST_CASE("coefficients_batch of a Model equals coefficients() per wavenumber, t
   CHECK_THROWS_WITH_AS(coefficients_batch(chain, chain.branch("acoustic"), with_zero, out.columns),
                        doctest::Contains("has no positive frequency here"), InvalidParameter);
   CHECK_THROWS_AS(coefficients_batch(shipped_model("fput"), 0, with_zero, out.columns), InvalidParameter);
+  // The index of the first refused wavenumber (the position Python's messages name).
+  const auto refused_at = [&](const Model& m, Index branch, const std::vector<double>& theta) {
+    std::ptrdiff_t refused = -1;
+    Storage columns(theta.size());
+    CHECK_THROWS_AS(coefficients_batch(m, branch, theta, columns.columns, &refused), InvalidParameter);
+    return refused;
+  };
+  CHECK(refused_at(chain, chain.branch("acoustic"), {1.0, 2.0, 0.0, 0.0}) == 2);
+  CHECK(refused_at(chain, chain.branch("optical"), {1.0, std::nan(""), 4.0}) == 1);
+  CHECK(refused_at(chain, chain.branch("optical"), {1.0, 0.0, -4.0}) == 2);
+  CHECK(refused_at(shipped_model("fput"), 0, {1.0, 0.5, 0.0}) == 2);
 }

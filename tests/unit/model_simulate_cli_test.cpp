@@ -41,12 +41,34 @@ TEST_CASE("model simulate: bad options exit 2 naming the option, before anything
                  "3*pi/4", "--detuning", "-1e-4"}, "detuning");
   check_refused({"simulate", "bright", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
                  "--rho", "1"}, "--rho");
-  // HDF5 output is written for the resonant chain's runs only: refused, not ignored (ring has no
-  // --format at all; bright has it for the resonant chain).
+  // --format takes csv or hdf5 (check_refused_run adds --out; without it cli_usage_test's refusal applies).
   check_refused({"simulate", "ring", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
-                 "--format", "hdf5"}, "unknown option --format");
+                 "--format", "h5"}, "--format");
   check_refused({"simulate", "bright", "--model", "models/fput.toml", "--branch", "acoustic", "--theta", "pi/2",
-                 "--format", "hdf5"}, "--format hdf5");
+                 "--format", "h5"}, "--format");
+}
+
+TEST_CASE("model simulate: --format hdf5 writes result.h5 and summary.json, no CSV and no figures" *
+          doctest::test_suite("fast")) {
+  const fs::path out = fs::temp_directory_path() / ("lrchain-model-hdf5-" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  for (const std::vector<std::string>& run :
+       {std::vector<std::string>{"simulate", "ring", "--model", "models/fput.toml", "--branch", "acoustic", "--theta",
+                                 "pi/2", "--periods", "20", "--packet-width", "8"},
+        std::vector<std::string>{"simulate", "bright", "--model", "models/fput.toml", "--branch", "acoustic",
+                                 "--theta", "pi/2", "--sites", "41", "--periods", "1"}}) {
+    std::vector<std::string> args = run;
+    args.insert(args.end(), {"--out", out.string(), "--format", "hdf5", "--json"});
+    const auto r = run_lrchain(args, source_dir);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    std::vector<std::string> written;
+    for (const auto& e : fs::directory_iterator(out)) written.push_back(e.path().filename().string());
+    std::sort(written.begin(), written.end());
+    CHECK(written == std::vector<std::string>{"result.h5", "summary.json"});
+    CHECK(fs::file_size(out / "result.h5") > 1000);
+    fs::remove_all(out);
+  }
 }
 
 TEST_CASE("model simulate: a short ring run reports omega, h and both amplitudes" * doctest::test_suite("fast")) {

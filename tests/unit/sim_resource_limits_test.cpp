@@ -65,7 +65,7 @@ TEST_CASE("sample counts that overflow an integer are refused, naming the option
   CHECK(refused_parameter([&] { validate(b); }) == "periods");
   DriveRunConfig d;
   d.t_end = 1e308 * std::numbers::pi;  // inf
-  CHECK(refused_parameter([&] { validate(d); }) == "t-end");
+  CHECK(refused_parameter([&] { validate(d); }) == "t_end");
   d = DriveRunConfig{};
   d.amplitude = std::numeric_limits<double>::quiet_NaN();
   CHECK(refused_parameter([&] { validate(d); }) == "amplitude");
@@ -74,6 +74,7 @@ TEST_CASE("sample counts that overflow an integer are refused, naming the option
   CHECK(refused_parameter([&] { validate(m); }) == "epsilon");
   m = ModulatedRunConfig{};
   m.sample_every = 1e-300;
+  // (the sample-count check keeps the command's spelling: its message reads "samples (t-end / sample-every)")
   CHECK(refused_parameter([&] { validate(m); }) == "sample-every");
 }
 
@@ -93,7 +94,7 @@ TEST_CASE("memory limits name the lattice size or the sampling, whichever domina
   CHECK(refused_parameter([&] { validate(d); }) == "sites");
   ModulatedRunConfig m;
   m.checkpoint_every = 1e-7;
-  CHECK(refused_parameter([&] { validate(m); }) == "checkpoint-every");
+  CHECK(refused_parameter([&] { validate(m); }) == "checkpoint_every");
 }
 
 TEST_CASE("default snapshot times outside a short run are dropped, given ones are refused") {
@@ -184,7 +185,7 @@ TEST_CASE("a bright run's lattice size is refused in sites = 2N + 1, also where 
 TEST_CASE("the drive's switch-off time is a finite time >= 0 from options and Python as from a config") {
   DriveRunConfig d;
   d.t_m = 0;  // chi(t) switched off from the start: allowed (the config key's range is >= 0)
-  CHECK(refused_parameter([&] { validate(d); }) != "switch-off-time");
+  CHECK(refused_parameter([&] { validate(d); }) != "switch_off_time");
   d.t_m = -1;
-  CHECK(refused_parameter([&] { validate(d); }) == "switch-off-time");
+  CHECK(refused_parameter([&] { validate(d); }) == "switch_off_time");
 }

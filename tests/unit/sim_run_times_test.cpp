@@ -49,9 +49,9 @@ TEST_CASE("drive: the switch-off time and the fit window beyond t_end are accept
   d.front_fit_end = 700;
   d.t_m = 700;
   CHECK_NOTHROW(validate(d));
-  for (const char* option : {"switch-off-time", "front-fit-end"}) {
+  for (const char* option : {"switch_off_time", "front_fit_end"}) {
     DriveRunConfig huge = short_drive();
-    (std::string(option) == "switch-off-time" ? huge.t_m : huge.front_fit_end) = 1e308;
+    (std::string(option) == "switch_off_time" ? huge.t_m : huge.front_fit_end) = 1e308;
     const auto [parameter, message] = refusal([&] { validate(huge); });
     CHECK(parameter == option);
     // The largest time the message gives is accepted, 1 % more is not (the bisection's
@@ -59,9 +59,9 @@ TEST_CASE("drive: the switch-off time and the fit window beyond t_end are accept
     const double reach = largest_allowed(message, "at most ");
     CHECK(reach > d.t_end);
     DriveRunConfig edge = short_drive();
-    (std::string(option) == "switch-off-time" ? edge.t_m : edge.front_fit_end) = reach;
+    (std::string(option) == "switch_off_time" ? edge.t_m : edge.front_fit_end) = reach;
     CHECK_NOTHROW(validate(edge));
-    (std::string(option) == "switch-off-time" ? edge.t_m : edge.front_fit_end) = 1.01 * reach;
+    (std::string(option) == "switch_off_time" ? edge.t_m : edge.front_fit_end) = 1.01 * reach;
     CHECK(refusal([&] { validate(edge); }).first == option);
   }
 }
@@ -72,7 +72,7 @@ TEST_CASE("checkpoint-every beyond the run is accepted up to the reach — 1e308
   CHECK_NOTHROW(validate(d));
   d.checkpoint_every = 1e308;
   const auto [parameter, message] = refusal([&] { validate(d); });
-  CHECK(parameter == "checkpoint-every");
+  CHECK(parameter == "checkpoint_every");
   CHECK(message.find("must be 0 (none) or in [sample-every, ") != std::string::npos);
   BrightRunConfig b;
   b.N = 50;
@@ -81,7 +81,7 @@ TEST_CASE("checkpoint-every beyond the run is accepted up to the reach — 1e308
   b.spacetime_every = 0.5;
   b.snapshot_periods = {0, 1};
   b.checkpoint_every = 1e300 * 3.141592653589793;
-  CHECK(refusal([&] { validate(b); }).first == "checkpoint-every");
+  CHECK(refusal([&] { validate(b); }).first == "checkpoint_every");
 }
 
 TEST_CASE("snapshots beyond the end of a continued run are refused past the reach") {
@@ -104,5 +104,5 @@ TEST_CASE("snapshots beyond the end of a continued run are refused past the reac
   CHECK_NOTHROW(validate(m));
   m.speed_fit_end = 1e308;
   m.snapshot_times = {0, 1};
-  CHECK(refusal([&] { validate(m); }).first == "speed-fit-end");
+  CHECK(refusal([&] { validate(m); }).first == "speed_fit_end");
 }

@@ -6,6 +6,7 @@
 // lattice code, the predictions from the derived evaluators: two independent routes.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <numbers>
 
@@ -54,4 +55,30 @@ TEST_CASE("model ring: two-field models (resonant_chain, resonant_chain_polynomi
   check_model_ring("resonant_chain_polynomial", "optical", 0.02);
   check_model_ring("diatomic_chain", "acoustic", 0.02);
   check_model_ring("diatomic_chain", "optical", 0.02);
+}
+
+TEST_CASE("model ring: klein_gordon at theta = pi (a standing wave, c = 0) measures h, and no packet disagreement") {
+  // Issue 27: at theta = pi the mode sum sum_n u_n (-1)^n is real, so its phase measured nothing
+  // (shift -1.18 against h U^2/4 = 5.4e-5, relative disagreement 2e4) and c = 1e-17 gave a packet
+  // disagreement of 11. The frequency now comes from the analytic signal u + i u'/omega: its
+  // disagreement is O(U^2) as at any other theta (< 1 % at U = 0.04, >= 3x smaller at U/2), and
+  // c counts as zero (no relative disagreement; the packet stays within 1e-6 sites per time).
+  const Model model = shipped_model("klein_gordon");
+  RingRunConfig c;
+  c.branch = model.branch("branch0");
+  c.theta = std::numbers::pi;
+  c.amplitudes = {0.04, 0.02};
+  const RingRunResult r = run_ring(model, lattice_kernels_of(model), c);
+  REQUIRE(r.amplitudes.size() == 2);
+  REQUIRE(r.amplitudes[0].relative_disagreement);
+  REQUIRE(r.amplitudes[1].relative_disagreement);
+  const double e0 = *r.amplitudes[0].relative_disagreement, e1 = *r.amplitudes[1].relative_disagreement;
+  std::printf("ring klein_gordon theta pi: h %.6g | rel. diff %.3e, %.3e | packet speed %.3g (c %.3g)\n", r.h, e0, e1,
+              r.packet_speed, r.group_velocity);
+  CHECK(e0 < 0.01);
+  CHECK(e1 < e0 / 3);
+  CHECK(r.standing);
+  CHECK_FALSE(r.packet_relative_disagreement);
+  CHECK(std::abs(r.packet_speed) < 1e-6);
+  CHECK_FALSE(r.failure);
 }

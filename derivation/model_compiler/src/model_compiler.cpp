@@ -202,22 +202,30 @@ std::string model_fallback_warning(const std::string& model_name, const Compiled
 }
 
 // The work of compile_model_file and compile_model_lattice inside their stop scope.
-static std::shared_ptr<const ModelDefinition> compile_model_file_now(const fs::path& path, CompiledModelInfo* info,
+static std::shared_ptr<const ModelDefinition> compile_model_file_now(const ModelFileContent& content, CompiledModelInfo* info,
                                                                      const std::atomic<bool>* stop);
-static std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice_now(const fs::path& path, CompiledModelInfo* info,
+static std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice_now(const ModelFileContent& content,
+                                                                                CompiledModelInfo* info,
                                                                                 const std::atomic<bool>* stop);
 
 std::shared_ptr<const ModelDefinition> compile_model_file(const fs::path& path, CompiledModelInfo* info,
                                                           const std::atomic<bool>* stop) {
-  return stoppable("model file " + path.string(), stop, [&] { return compile_model_file_now(path, info, stop); });
+  return stoppable("model file " + path.string(), stop,
+                   [&] { return compile_model_file_now(read_model_file(path.string()), info, stop); });
 }
 
-static std::shared_ptr<const ModelDefinition> compile_model_file_now(const fs::path& path, CompiledModelInfo* info,
+std::shared_ptr<const ModelDefinition> compile_model_file(const ModelFileContent& content, CompiledModelInfo* info,
+                                                          const std::atomic<bool>* stop) {
+  return stoppable("model file " + content.path, stop, [&] { return compile_model_file_now(content, info, stop); });
+}
+
+static std::shared_ptr<const ModelDefinition> compile_model_file_now(const ModelFileContent& content, CompiledModelInfo* info,
                                                                      const std::atomic<bool>* stop) {
-  const std::string bytes = read_model_file_bytes(path.string());
+  const std::string& bytes = content.bytes;
+  const fs::path path(content.path);
   const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
   const std::string compiler = model_compiler_path();
-  const std::string file_sha256 = sha256_hex(bytes);
+  const std::string& file_sha256 = content.sha256;
   const CacheEntry entry = cache_entry(bytes, kEvaluatorCode, "model-");
   fs::path library;
   if (void* handle = open_verified_object(entry, &library)) {
@@ -255,29 +263,37 @@ static std::shared_ptr<const ModelDefinition> compile_model_file_now(const fs::p
   return load_library(handle, library, file_sha256);
 }
 
-void check_lattice_compiler(const fs::path& path) {
-  const std::string bytes = read_model_file_bytes(path.string());
+void check_lattice_compiler(const fs::path& path) { check_lattice_compiler(read_model_file(path.string())); }
+
+void check_lattice_compiler(const ModelFileContent& content) {
   const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
-  if (has_verified_object(cache_entry(bytes, lattice_code_kind(), "lattice-"))) return;
+  if (has_verified_object(cache_entry(content.bytes, lattice_code_kind(), "lattice-"))) return;
   const std::string compiler = model_compiler_path();
   if (!program_in_path(compiler))
-    throw InputError("--model " + path.string() + ": lattice runs of a model file compile its lattice code with the C++ "
+    throw InputError("--model " + content.path + ": lattice runs of a model file compile its lattice code with the C++ "
                      "compiler " + compiler + ", which is not installed (evaluating the forces through GiNaC would be "
                      "far too slow for a lattice run); install it (Debian: apt install g++) or set LRCHAIN_MODEL_CXX");
 }
 
 std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const fs::path& path, CompiledModelInfo* info,
                                                                      const std::atomic<bool>* stop) {
-  return stoppable("the lattice code of " + path.string(), stop, [&] { return compile_model_lattice_now(path, info, stop); });
+  return stoppable("the lattice code of " + path.string(), stop,
+                   [&] { return compile_model_lattice_now(read_model_file(path.string()), info, stop); });
 }
 
-static std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice_now(const fs::path& path, CompiledModelInfo* info,
+std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const ModelFileContent& content, CompiledModelInfo* info,
+                                                                     const std::atomic<bool>* stop) {
+  return stoppable("the lattice code of " + content.path, stop, [&] { return compile_model_lattice_now(content, info, stop); });
+}
+
+static std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice_now(const ModelFileContent& content,
+                                                                                CompiledModelInfo* info,
                                                                                 const std::atomic<bool>* stop) {
-  const std::string bytes = read_model_file_bytes(path.string());
+  const std::string& bytes = content.bytes;
   const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
-  const std::string file_sha256 = sha256_hex(bytes);
+  const std::string& file_sha256 = content.sha256;
   // The model's name first (a bad file is the user's input error, reported before the cache is touched).
-  const derivation::ModelFile file = derivation::parse_model_text(bytes, path.string());
+  const derivation::ModelFile file = derivation::parse_model_text(bytes, content.path);
   const CacheEntry entry = cache_entry(bytes, lattice_code_kind(), "lattice-");
   fs::path library;
   if (void* handle = open_verified_object(entry, &library)) {
@@ -288,7 +304,7 @@ static std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice_now(
       if (info) info->from_cache = false;  // not this file's object: compiled again below
     }
   }
-  check_lattice_compiler(path);
+  check_lattice_compiler(content);
   // -O3 as the shipped kernels (Release build); the kernels' own attributes pick the vector width.
   const std::string source = emitted(file, "lattice code", [&] { return derivation::lattice_source(file); });
   compile_entry(source + file_sha256_definition(file_sha256), {"-O3", "-DNDEBUG"}, entry,

@@ -1,6 +1,7 @@
 #pragma once
-// Fixed text of every generated lattice source: the kernel table (a copy of
-// sim/include/lrchain/sim/model_lattice_abi.h), the power helpers and the padded workspace.
+// Fixed text of every generated lattice source: the kernel table (the text of
+// sim/include/lrchain/sim/model_lattice_abi.h, embedded at configure time), the power helpers and
+// the padded workspace.
 #include <string>
 
 namespace lrchain::derivation {

@@ -3,8 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <stdexcept>
-
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/jobs/dark_job.hpp"
 
@@ -57,9 +55,9 @@ std::vector<DarkOption> make_options() {
        "integration time (dimensionless, time unit of Sec. 2)"},
       {"samples", "--samples", "samples", {"evolve"}, d.samples, false, integer_range(config::dark_samples),
        "samples of x_n(t) per period for the amplitudes of the position measure"},
-      {"format", "--format", "", {"solve", "floquet", "continue"}, d.format, false, "csv|hdf5 (hdf5 not with a model file)",
-       "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: profiles or the branch, Floquet "
-       "multipliers as complex numbers)"},
+      {"format", "--format", "", all_steps, d.format, false, "csv|hdf5",
+       "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: profiles, the branch or the evolution, "
+       "Floquet multipliers as complex numbers)"},
       {"out", "--out", "", all_steps, d.out.empty() ? none : nlohmann::json(d.out), false, "",
        "output directory for CSV data and gnuplot figures (none: only the JSON on stdout)"},
   };
@@ -67,30 +65,8 @@ std::vector<DarkOption> make_options() {
 
 }  // namespace
 
-const std::vector<DarkOption>& dark_options() {
-  static const std::vector<DarkOption> options = make_options();
-  return options;
-}
+const std::vector<DarkOption>& dark_options() { return schema_once<make_options>(); }
 
-const DarkOption& dark_option(const std::string& key) {
-  for (const DarkOption& o : dark_options())
-    if (o.key == key) return o;
-  throw std::out_of_range("no dark option " + key);
-}
-
-std::string default_text(const DarkOption& o) {
-  const nlohmann::json& v = o.default_value;
-  if (v.is_null()) return "";
-  if (v.is_string()) return v.get<std::string>();
-  if (v.is_number_float()) return fmt::format("{}", v.get<double>());
-  return v.dump();
-}
-
-std::string help_text(const DarkOption& o) {
-  std::string facts = o.range;
-  const std::string value = o.required ? "required" : o.default_value.is_null() ? "default: none" : "default " + default_text(o);
-  if (!value.empty()) facts += (facts.empty() ? "" : "; ") + value;
-  return facts.empty() ? o.doc : o.doc + " [" + facts + "]";
-}
+const DarkOption& dark_option(const std::string& key) { return find_option(dark_options(), key); }
 
 }  // namespace lrchain::jobs::dark

@@ -65,8 +65,6 @@ void validate_model(const DarkConfig& c) {
   if (c.full_monodromy)
     throw InvalidParameter("full_monodromy", "with a model file the Floquet multipliers always come from the "
                                              "full-period monodromy");
-  if (c.format != "csv")
-    throw InvalidParameter("format", "must be csv with a model file (it writes CSV and figures)");
   const Model& model = *c.model;
   const std::optional<Index> given = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
   const DarkAnsatz ansatz = with_config_keys(

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include "dark_steps.hpp"
+#include "lrchain/jobs/dark_evolution_hdf5.hpp"
+#include "lrchain/jobs/model_dark_hdf5.hpp"
 #include "lrchain/sim/dark/dark_hdf5.hpp"
 #include "lrchain/sim/gnuplot_text.hpp"
 #include "lrchain/sim/output_lock.hpp"
@@ -106,15 +108,23 @@ json write(const DarkResult& r, const std::filesystem::path& out) {
   sim::Figures figures(dir);
   if (c.step == DarkStep::branch) {
     write_branch(r, dir, figures);
-    if (c.format == "hdf5")
+    if (c.format == "hdf5" && r.model_file())
+      write_model_dark_branch_hdf5(out / "result.h5", model_dark_branch_record(r, j["model"]));
+    else if (c.format == "hdf5")
       write_dark_branch_hdf5(out / "result.h5", dark_branch_record(c.params, r.branch, c.sites, c.branch_floquet));
     figures.finish(j);
   } else if (c.step == DarkStep::evolve) {
+    if (c.format == "hdf5" && r.model_file())
+      write_model_dark_evolution_hdf5(out / "result.h5", model_dark_edge_record(r, j["model"]), dark_evolution_record(r));
+    else if (c.format == "hdf5")
+      write_dark_evolution_hdf5(out / "result.h5", c.params, dark_evolution_record(r));
     write_evolution(r, dir, figures, j);
   } else {
     write_profile(r, dir, figures);
     if (r.floquet) write_multipliers(dir, "multipliers", *r.floquet, c.omega_b, figures);
-    if (c.format == "hdf5")
+    if (c.format == "hdf5" && r.model_file())
+      write_model_dark_solution_hdf5(out / "result.h5", model_dark_solution_record(r, j["model"]));
+    else if (c.format == "hdf5")
       write_dark_solution_hdf5(out / "result.h5",
                                dark_solution_record(c.params, c.omega_b, r.edge.omega, r.z0, r.seed, r.newton,
                                                     r.measures, r.floquet ? &*r.floquet : nullptr));

@@ -5,6 +5,7 @@
 
 #include "lrchain/coefficients.hpp"
 #include "lrchain/jobs/simulate/model_bright_outputs.hpp"
+#include "lrchain/jobs/simulate/model_run_hdf5.hpp"
 #include "lrchain/jobs/simulate/ring_outputs.hpp"
 #include "lrchain/sim/output_files.hpp"
 #include "lrchain/jobs/output_lock.hpp"
@@ -13,8 +14,8 @@ namespace lrchain::jobs {
 
 namespace {
 
-// The lock on output.dir, the run, the summary with `label` and the files (`write(dir, result,
-// summary, figures)`).
+// The lock on output.dir, the run, the summary with `label` and the files: `write(dir, result,
+// summary, figures)` (CSV and figures) or, with output.format hdf5, result.h5 and summary.json.
 template <class Config, class Run, class Write>
 auto simulate_model_job(const Model& model, const Config& c, const ModelRunLabel& label, const RunOutput& output,
                         Run run, Write write) {
@@ -27,7 +28,8 @@ auto simulate_model_job(const Model& model, const Config& c, const ModelRunLabel
   j["model"] = label.model;
   if (!output.dir.empty()) {
     j["out"] = output.dir;
-    j["figures"] = write(output.dir, result, j, output.figures);
+    j["figures"] = output.format == "hdf5" ? write_hdf5_outputs(output.dir, result, j)
+                                           : write(output.dir, result, j, output.figures);
     sim::record_stale_files(output.dir, earlier, j);
   }
   return SimulateReport<decltype(result)>{std::move(result), std::move(j), {}};

@@ -32,13 +32,20 @@ nlohmann::json to_json(const Model& model, const RingRunConfig& c, const RingRun
   j["prediction"] = {{"omega", r.omega}, {"h", r.h}, {"group_velocity", r.group_velocity},
                      {"kernel", kernel}, {"convention", "u_0 = U cos(n theta - omega t), frequency omega + h U^2/4"}};
   nlohmann::json rows = nlohmann::json::array();
-  for (const auto& a : r.amplitudes)
-    rows.push_back({{"amplitude", a.amplitude},
-                    {"measured_frequency", a.measured_frequency},
-                    {"predicted_frequency", a.predicted_frequency},
-                    {"measured_shift", a.measured_shift},
-                    {"predicted_shift", a.predicted_shift},
-                    {"relative_disagreement", optional_json(a.relative_disagreement)}});
+  for (const auto& a : r.amplitudes) {
+    const bool measured = !a.broke_up_at;  // a plane wave that broke up has no frequency
+    nlohmann::json row = {{"amplitude", a.amplitude},
+                          {"measured_frequency", measured ? nlohmann::json(a.measured_frequency) : nlohmann::json(nullptr)},
+                          {"predicted_frequency", a.predicted_frequency},
+                          {"measured_shift", measured ? nlohmann::json(a.measured_shift) : nlohmann::json(nullptr)},
+                          {"predicted_shift", a.predicted_shift},
+                          {"relative_disagreement", optional_json(a.relative_disagreement)},
+                          {"least_carrier_fraction", a.least_carrier_fraction},
+                          {"weakly_nonlinear", a.weakly_nonlinear}};
+    if (!measured)
+      row["not_measurable"] = fmt::format("the plane wave broke up at t = {:.6g}", *a.broke_up_at);
+    rows.push_back(std::move(row));
+  }
   j["amplitudes"] = rows;
   j["packet"] = {{"sites", r.packet_sites},
                  {"amplitude", r.packet_amplitude},
@@ -47,6 +54,12 @@ nlohmann::json to_json(const Model& model, const RingRunConfig& c, const RingRun
                  {"measured_speed", r.packet_speed},
                  {"group_velocity", r.group_velocity},
                  {"relative_disagreement", optional_json(r.packet_relative_disagreement)}};
+  if (r.standing)
+    j["packet"]["relative_disagreement_reason"] = fmt::format(
+        "the group velocity {:.3g} counts as zero (|c| <= {:g} max(1, omega)): a standing wave, the packet does not move",
+        r.group_velocity, kZeroGroupVelocity);
+  j["warnings"] = r.warnings;
+  j["failure"] = r.failure ? nlohmann::json(*r.failure) : nlohmann::json(nullptr);
   return j;
 }
 
@@ -101,7 +114,8 @@ std::vector<std::string> write_ring_outputs(const std::filesystem::path& dir, co
   TimeSeries frequencies;
   frequencies.names = {"amplitude", "measured_frequency", "predicted_frequency"};
   for (const auto& a : r.amplitudes)
-    frequencies.data.insert(frequencies.data.end(), {a.amplitude, a.measured_frequency, a.predicted_frequency});
+    if (!a.broke_up_at)  // (a plane wave that broke up has no frequency)
+      frequencies.data.insert(frequencies.data.end(), {a.amplitude, a.measured_frequency, a.predicted_frequency});
   write_csv(dir, "ring_frequency.csv", frequencies);
   return write_run_outputs(dir, r.record, summary.dump(2),
                            {{"frequency.gp", frequency_script(r), "frequency.png"},

@@ -49,7 +49,9 @@ void resonant_chain_coefficients_batch(const Params& p, Branch b, std::span<cons
 // coefficients(model, branch, theta[i]) for every i, bit for bit, into out: the resonant chain
 // (Model::resonant_chain_params) through the vectorised loop above after checking every theta,
 // other models one evaluation per wavenumber. Throws what coefficients() throws for the first
-// wavenumber it refuses (out then holds no complete result).
-void coefficients_batch(const Model& model, Index branch, std::span<const double> theta, const CoefficientColumns& out);
+// wavenumber it refuses (out then holds no complete result), after storing its index in *refused
+// when `refused` is given.
+void coefficients_batch(const Model& model, Index branch, std::span<const double> theta, const CoefficientColumns& out,
+                        std::ptrdiff_t* refused = nullptr);
 
 }  // namespace lrchain

@@ -166,6 +166,20 @@ std::string read_model_file_bytes(const std::string& path);
 // The shipped model whose file has the bytes `bytes` (compared by SHA-256), or nullptr.
 const ModelDefinition* find_shipped_model_by_bytes(std::string_view bytes);
 
+// A model file read once by the model loader: the path that names it, its bytes and their SHA-256
+// (64 hex digits), handed on to the run-time compiler so that nothing reads or hashes it again.
+struct ModelFileContent {
+  std::string path;
+  std::string bytes;
+  std::string sha256;
+};
+
+// read_model_file_bytes(path) with the bytes' SHA-256.
+ModelFileContent read_model_file(const std::string& path);
+
+// The shipped model whose file's SHA-256 is `sha256` (64 hex digits), or nullptr.
+const ModelDefinition* find_shipped_model_by_sha256(std::string_view sha256);
+
 // NLS coefficients of `model` on branch `branch` (index into branch_names) at theta in (-pi, pi]:
 // omega is the branch's root of det M = 0 in omega^2. lambda is NaN (no mean flow) for on-site
 // models. Throws InvalidParameter for theta out of range or where the branch has no real,

@@ -24,7 +24,7 @@ DarkBreatherAnsatz make_dark_breather_ansatz(const Params& p, Branch edge, doubl
     throw InvalidParameter("edge", "the theta = pi edge of the " + std::string(to_string(edge)) +
                                        " branch is not defocusing for these parameters");
   if (!(std::isfinite(omega_b) && omega_b > 0.0 && omega_b < c.omega))
-    throw InvalidParameter("omega-b", "must lie in (0, " + std::to_string(c.omega) +
+    throw InvalidParameter("omega_b", "must lie in (0, " + std::to_string(c.omega) +
                                           "), below the theta = pi edge omega(pi) of the " +
                                           std::string(to_string(edge)) + " branch");
   DarkBreatherAnsatz a;

@@ -50,11 +50,20 @@ std::string read_model_file_bytes(const std::string& path) {
   return bytes;
 }
 
-const ModelDefinition* find_shipped_model_by_bytes(std::string_view bytes) {
-  const std::string digest = sha256_hex(bytes);
+const ModelDefinition* find_shipped_model_by_sha256(std::string_view sha256) {
   for (const auto& m : shipped_models())
-    if (!m.file_sha256.empty() && m.file_sha256 == digest) return &m;
+    if (!m.file_sha256.empty() && m.file_sha256 == sha256) return &m;
   return nullptr;
+}
+
+const ModelDefinition* find_shipped_model_by_bytes(std::string_view bytes) {
+  return find_shipped_model_by_sha256(sha256_hex(bytes));
+}
+
+ModelFileContent read_model_file(const std::string& path) {
+  ModelFileContent file{path, read_model_file_bytes(path), {}};
+  file.sha256 = sha256_hex(file.bytes);
+  return file;
 }
 
 }  // namespace lrchain

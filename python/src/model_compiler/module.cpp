@@ -21,6 +21,13 @@ const std::atomic<bool>* stop_flag(const py::object& stop) {
   return static_cast<const std::atomic<bool>*>(PyCapsule_GetPointer(stop.ptr(), kStopFlagCapsuleName));
 }
 
+// The model file the caller's loader read (a capsule borrowing its ModelFileContent).
+const lrchain::ModelFileContent& model_file(const py::object& file) {
+  const void* p = PyCapsule_GetPointer(file.ptr(), lrchain::python::kModelFileCapsuleName);
+  if (!p) throw py::error_already_set();
+  return *static_cast<const lrchain::ModelFileContent*>(p);
+}
+
 // Stopped by the caller's flag (SIGINT): KeyboardInterrupt, unless a Python signal handler raised.
 [[noreturn]] void raise_interrupted(const lrchain::Interrupted& e) {
   if (PyErr_CheckSignals() != 0) throw py::error_already_set();
@@ -28,25 +35,31 @@ const std::atomic<bool>* stop_flag(const py::object& stop) {
   throw py::error_already_set();
 }
 
-// The compiled definition of the model file at `path` as a capsule (model_capsule.hpp). A bad model
+// A bad model file: lrchain.InputError (a ValueError).
+[[noreturn]] void raise_input_error(const lrchain::InputError& e) {
+  const py::object input_error = py::module_::import("lrchain.errors").attr("InputError");
+  PyErr_SetString(input_error.ptr(), e.what());
+  throw py::error_already_set();
+}
+
+// The compiled definition of the model file `file` (as the loader read it) as a capsule (model_capsule.hpp). A bad model
 // file raises lrchain.InputError (a ValueError); a missing or failing compiler RuntimeError. Without
 // a compiler (the GiNaC fallback) it warns (RuntimeWarning) as the CLI does on stderr.
 // The GIL is released only around the C++ compile path, which touches no Python object and holds
 // the process-wide lock of the symbolic engine itself (model_compiler.hpp).
 // `stop` (a capsule of the caller's SIGINT flag) is polled while deriving and compiling: KeyboardInterrupt.
-py::capsule compile(const std::string& path, const py::object& stop) {
+py::capsule compile(const py::object& file, const py::object& stop) {
+  const lrchain::ModelFileContent& content = model_file(file);
   lrchain::python::ModelDefinitionHandle definition;
   lrchain::CompiledModelInfo info;
   const std::atomic<bool>* flag = stop_flag(stop);
   try {
     py::gil_scoped_release release;  // deriving and compiling takes seconds
-    definition = lrchain::compile_model_file(path, &info, flag);
+    definition = lrchain::compile_model_file(content, &info, flag);
   } catch (const lrchain::Interrupted& e) {
     raise_interrupted(e);
   } catch (const lrchain::InputError& e) {
-    const py::object input_error = py::module_::import("lrchain.errors").attr("InputError");
-    PyErr_SetString(input_error.ptr(), e.what());
-    throw py::error_already_set();
+    raise_input_error(e);
   }
   if (!info.fallback_reason.empty() &&
       PyErr_WarnEx(PyExc_RuntimeWarning, lrchain::model_fallback_warning(definition->name, info).c_str(), 2) != 0)
@@ -58,21 +71,20 @@ py::capsule compile(const std::string& path, const py::object& stop) {
                      });
 }
 
-// The lattice code of the model file at `path` compiled into the per-user cache and loaded:
+// The lattice code of the model file `file` (as the loader read it) compiled into the per-user cache and loaded:
 // (capsule, from_cache, library). Raises lrchain.InputError for a bad file or a missing compiler.
-py::tuple compile_lattice(const std::string& path, const py::object& stop) {
+py::tuple compile_lattice(const py::object& file, const py::object& stop) {
+  const lrchain::ModelFileContent& content = model_file(file);
   lrchain::python::LatticeKernelsHandle kernels;
   lrchain::CompiledModelInfo info;
   const std::atomic<bool>* flag = stop_flag(stop);
   try {
     py::gil_scoped_release release;  // deriving and compiling takes seconds
-    kernels = lrchain::compile_model_lattice(path, &info, flag);
+    kernels = lrchain::compile_model_lattice(content, &info, flag);
   } catch (const lrchain::Interrupted& e) {
     raise_interrupted(e);
   } catch (const lrchain::InputError& e) {
-    const py::object input_error = py::module_::import("lrchain.errors").attr("InputError");
-    PyErr_SetString(input_error.ptr(), e.what());
-    throw py::error_already_set();
+    raise_input_error(e);
   }
   py::capsule capsule(new lrchain::python::LatticeKernelsHandle(std::move(kernels)), lrchain::python::kLatticeCapsuleName,
                       [](PyObject* c) {
@@ -82,15 +94,28 @@ py::tuple compile_lattice(const std::string& path, const py::object& stop) {
   return py::make_tuple(capsule, info.from_cache, info.library.string());
 }
 
+// Raises lrchain.InputError when the lattice code of `file` is neither cached nor compilable.
+void check_lattice(const py::object& file, const py::object&) {
+  try {
+    lrchain::check_lattice_compiler(model_file(file));
+  } catch (const lrchain::InputError& e) {
+    raise_input_error(e);
+  }
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_model_compiler, m) {
   m.doc() = "Run-time compiler of lattice model files for lrchain.load_model (GiNaC, the C++ compiler).";
-  m.def("compile", &compile, py::arg("path"), py::arg("stop") = py::none(),
-        "The model file at path derived, compiled into the per-user cache and loaded: a capsule for lrchain. "
+  m.def("compile", &compile, py::arg("file"), py::arg("stop") = py::none(),
+        "The model file (a capsule of the file lrchain's loader read) derived, compiled into the per-user cache and "
+        "loaded: a capsule for lrchain. "
         "stop: a capsule of lrchain's SIGINT flag, polled while deriving and compiling.");
-  m.def("compile_lattice", &compile_lattice, py::arg("path"), py::arg("stop") = py::none(),
-        "The lattice code of the model file at path compiled into the per-user cache and loaded: "
-        "(capsule, from_cache, library).");
+  m.def("compile_lattice", &compile_lattice, py::arg("file"), py::arg("stop") = py::none(),
+        "The lattice code of the model file (a capsule of the file lrchain's loader read) compiled into the "
+        "per-user cache and loaded: (capsule, from_cache, library). stop: as for compile.");
+  m.def("check_lattice", &check_lattice, py::arg("file"), py::arg("stop") = py::none(),
+        "Raises lrchain.InputError when the lattice code of the model file can be neither found in the cache nor "
+        "compiled.");
   m.attr("compiler") = lrchain::model_compiler_path();
 }

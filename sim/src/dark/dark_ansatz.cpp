@@ -95,7 +95,7 @@ DarkAnsatz make_dark_ansatz(const Model& model, const lrchain_lattice_kernels& k
   if (c.regime != Regime::defocusing) throw InvalidParameter("branch", where + " is not defocusing");
   const double detuning = 3.0 * (omega_b - c.omega);
   if (!(std::isfinite(omega_b) && omega_b > 0.0 && detuning / c.h_tilde > 0.0))
-    throw InvalidParameter("omega-b", fmt::format("must lie {} omega = {:.10g}, {} (the side where (omega_b - omega) "
+    throw InvalidParameter("omega_b", fmt::format("must lie {} omega = {:.10g}, {} (the side where (omega_b - omega) "
                                                   "h_tilde > 0, h_tilde = {:.6g})",
                                                   c.h_tilde < 0 ? "below" : "above", c.omega, where, c.h_tilde));
   DarkAnsatz a;

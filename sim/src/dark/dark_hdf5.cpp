@@ -26,6 +26,9 @@ void write_root(Hdf5TreeFile& file, const char* result_class, const Params& p) {
 
 const char* const measure_names[] = {"norm_squared", "K_x", "K_y", "C_x", "C_y", "E_b", "max_strain"};
 
+// K_y and C_y: measures of the second strain-form variable (none in a one-field or displacement-form lattice).
+bool second_strain_measure(std::size_t k) { return k == 2 || k == 4; }
+
 double measure(const DarkMeasures& m, std::size_t k) {
   const double values[] = {m.norm_squared, m.K_x, m.K_y, m.C_x, m.C_y, m.E_b, m.max_strain};
   return values[k];
@@ -74,8 +77,10 @@ DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch,
     r.tangent_omega.push_back(b.tangent_omega);
     r.residual.push_back(b.residual);
     r.iterations.push_back(b.iterations);
-    r.x.insert(r.x.end(), b.z0.data(), b.z0.data() + sites);
-    r.y.insert(r.y.end(), b.z0.data() + sites, b.z0.data() + 2 * sites);
+    if (b.z0.size() == 2 * sites) {  // the resonant chain's x, y (a model's profiles are written as z)
+      r.x.insert(r.x.end(), b.z0.data(), b.z0.data() + sites);
+      r.y.insert(r.y.end(), b.z0.data() + sites, b.z0.data() + 2 * sites);
+    }
     r.measures.push_back(b.measures);
     if (floquet) r.floquet.push_back(floquet_record(b.floquet));
   }
@@ -84,51 +89,40 @@ DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch,
   return r;
 }
 
-void write_dark_solution_hdf5(const std::filesystem::path& path, const DarkSolutionRecord& s) {
-  Hdf5TreeFile file(path);
-  write_root(file, "DarkSolution", s.params);
-  file.write_attribute("/", "omega_b", s.omega_b);
-  file.write_attribute("/", "omega_edge", s.omega_edge);
-  std::vector<double> n(s.x.size());
-  const Index sites = Index(n.size());
-  for (Index i = 0; i < sites; ++i) n[std::size_t(i)] = double(i - (sites - 1) / 2);
-  write_vector(file, "/n", n);
-  write_vector(file, "/x", s.x);
-  write_vector(file, "/y", s.y);
-  write_vector(file, "/x_seed", s.x_seed);
-  write_vector(file, "/y_seed", s.y_seed);
-  write_vector(file, "/newton_residuals", s.newton_residuals);
+void write_solution_parts(Hdf5TreeFile& file, const std::vector<double>& newton_residuals, const DarkMeasures& measures,
+                          const std::optional<FloquetRecord>& floquet, bool second_strain) {
+  write_vector(file, "/newton_residuals", newton_residuals);
   file.create_group("/measures");
-  for (std::size_t k = 0; k < 7; ++k) file.write_attribute("/measures", measure_names[k], measure(s.measures, k));
-  if (s.floquet) {
-    const FloquetRecord& f = *s.floquet;
+  for (std::size_t k = 0; k < 7; ++k)
+    if (second_strain || !second_strain_measure(k))
+      file.write_attribute("/measures", measure_names[k], measure(measures, k));
+  if (floquet) {
+    const FloquetRecord& f = *floquet;
     file.create_group("/floquet");
     file.write_dataset("/floquet/multipliers", Hdf5Element::complex128, f.multipliers.data(), {f.multipliers.size()});
     file.write_attribute("/floquet", "kind", f.kind);
     for (std::size_t k = 0; k < 7; ++k) file.write_attribute("/floquet", floquet_scalars[k], floquet_scalar(f, k));
     file.write_attribute("/floquet", "near_one", std::int64_t(f.near_one));
   }
-  file.commit();
 }
 
-void write_dark_branch_hdf5(const std::filesystem::path& path, const DarkBranchRecord& b) {
-  Hdf5TreeFile file(path);
-  write_root(file, "Branch", b.params);
-  const std::size_t points = b.omega_b.size();
+void write_branch_series(Hdf5TreeFile& file, const DarkBranchRecord& b) {
   write_vector(file, "/omega_b", b.omega_b);
   write_vector(file, "/tangent_omega", b.tangent_omega);
   write_vector(file, "/residual", b.residual);
   const std::vector<std::int32_t> iterations(b.iterations.begin(), b.iterations.end());
-  file.write_dataset("/iterations", Hdf5Element::int32, iterations.data(), {points});
-  const std::size_t sites = std::size_t(b.sites);
-  file.write_dataset("/x", Hdf5Element::float64, b.x.data(), {points, sites});
-  file.write_dataset("/y", Hdf5Element::float64, b.y.data(), {points, sites});
+  file.write_dataset("/iterations", Hdf5Element::int32, iterations.data(), {b.omega_b.size()});
+}
+
+void write_branch_parts(Hdf5TreeFile& file, const DarkBranchRecord& b, bool second_strain) {
+  const std::size_t points = b.omega_b.size();
   if (b.turning_points.empty()) file.write_attribute("/", "turning_points", std::string("[]"));
   else write_vector(file, "/turning_points", b.turning_points);
   file.write_attribute("/", "stop_reason", b.stop_reason);
   file.create_group("/measures");
   if (points > 0)
     for (std::size_t k = 0; k < 7; ++k) {
+      if (!second_strain && second_strain_measure(k)) continue;
       std::vector<double> v;
       for (const auto& m : b.measures) v.push_back(measure(m, k));
       write_vector(file, std::string("/measures/") + measure_names[k], v);
@@ -153,6 +147,33 @@ void write_dark_branch_hdf5(const std::filesystem::path& path, const DarkBranchR
     }
     file.write_dataset("/floquet/near_one", Hdf5Element::int64, near_one.data(), {points});
   }
+}
+
+void write_dark_solution_hdf5(const std::filesystem::path& path, const DarkSolutionRecord& s) {
+  Hdf5TreeFile file(path);
+  write_root(file, "DarkSolution", s.params);
+  file.write_attribute("/", "omega_b", s.omega_b);
+  file.write_attribute("/", "omega_edge", s.omega_edge);
+  std::vector<double> n(s.x.size());
+  const Index sites = Index(n.size());
+  for (Index i = 0; i < sites; ++i) n[std::size_t(i)] = double(i - (sites - 1) / 2);
+  write_vector(file, "/n", n);
+  write_vector(file, "/x", s.x);
+  write_vector(file, "/y", s.y);
+  write_vector(file, "/x_seed", s.x_seed);
+  write_vector(file, "/y_seed", s.y_seed);
+  write_solution_parts(file, s.newton_residuals, s.measures, s.floquet, true);
+  file.commit();
+}
+
+void write_dark_branch_hdf5(const std::filesystem::path& path, const DarkBranchRecord& b) {
+  Hdf5TreeFile file(path);
+  write_root(file, "Branch", b.params);
+  const std::size_t points = b.omega_b.size(), sites = std::size_t(b.sites);
+  write_branch_series(file, b);
+  file.write_dataset("/x", Hdf5Element::float64, b.x.data(), {points, sites});
+  file.write_dataset("/y", Hdf5Element::float64, b.y.data(), {points, sites});
+  write_branch_parts(file, b, true);
   file.commit();
 }
 

@@ -31,13 +31,13 @@ double dark_dip_position(const Eigen::VectorXd& amplitude) {
 // Direct integration of eq:Hertzd0S from (Z(0), 0) with per-period measures (eq:relerr, eq:center).
 DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, Index sites, double omega_b,
                                 double t_end, Index samples_per_period, const std::atomic<bool>* stop) {
-  if (!(omega_b > 0)) throw InvalidParameter("omega-b", "must be > 0");
+  if (!(omega_b > 0)) throw InvalidParameter("omega_b", "must be > 0");
   if (samples_per_period < 4) throw InvalidParameter("samples", "at least 4 samples per period");
   const Index N = sites;
   const double period = 2.0 * std::numbers::pi / omega_b;
   if (!(t_end >= period && std::isfinite(t_end)))
-    throw InvalidParameter("t-end", "must be a finite time of at least one period T_b = 2 pi/omega_b");
-  const Index M = checked_count(std::floor(t_end / period), "t-end", 1, std::numeric_limits<int>::max(),
+    throw InvalidParameter("t_end", "must be a finite time of at least one period T_b = 2 pi/omega_b");
+  const Index M = checked_count(std::floor(t_end / period), "t_end", 1, std::numeric_limits<int>::max(),
                                 "periods (t-end / T_b)");
   const Eigen::Index positions = z0.size();
   std::vector<double> s(static_cast<std::size_t>(2 * positions), 0.0);

@@ -81,7 +81,7 @@ std::vector<RelativeErrorSample> relative_error_history(const Params& p, const E
   ContactIntegrator integrator(orbit, integration);
   std::vector<double> s = initial_state(z0);
   const double period = 2.0 * std::numbers::pi / omega_b;
-  const Index periods = checked_count(std::floor(t_end / period), "t-end", 0, std::numeric_limits<int>::max(),
+  const Index periods = checked_count(std::floor(t_end / period), "t_end", 0, std::numeric_limits<int>::max(),
                                       "periods (t-end / T_b)");
   std::vector<RelativeErrorSample> out;
   out.reserve(static_cast<std::size_t>(periods));

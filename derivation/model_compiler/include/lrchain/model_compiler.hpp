@@ -33,6 +33,10 @@ struct CompiledModelInfo {
 std::shared_ptr<const ModelDefinition> compile_model_file(const std::filesystem::path& path,
                                                           CompiledModelInfo* info = nullptr,
                                                           const std::atomic<bool>* stop = nullptr);
+// The same of a file the model loader read and hashed already (read_model_file): not read again.
+std::shared_ptr<const ModelDefinition> compile_model_file(const ModelFileContent& content,
+                                                          CompiledModelInfo* info = nullptr,
+                                                          const std::atomic<bool>* stop = nullptr);
 
 // The lattice kernels (sim/include/lrchain/sim/model_lattice_abi.h) of the model file `path`, emitted by
 // the lattice code generator and compiled like the evaluators: same cache, key rules (file bytes,
@@ -42,10 +46,15 @@ std::shared_ptr<const ModelDefinition> compile_model_file(const std::filesystem:
 std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const std::filesystem::path& path,
                                                                      CompiledModelInfo* info = nullptr,
                                                                      const std::atomic<bool>* stop = nullptr);
+// The same of a file the model loader read and hashed already (read_model_file): not read again.
+std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const ModelFileContent& content,
+                                                                     CompiledModelInfo* info = nullptr,
+                                                                     const std::atomic<bool>* stop = nullptr);
 
 // Throws the InputError of compile_model_lattice when the lattice code of `path` is not cached and
 // the compiler is not installed: lattice runs call it before anything else.
 void check_lattice_compiler(const std::filesystem::path& path);
+void check_lattice_compiler(const ModelFileContent& content);
 
 // Version of the emitted evaluator code (its functions and their outputs): part of the cache key,
 // so a cached shared object of an older emitter is never loaded. "evaluators 4": harmonics() and the

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/coefficients.hpp"
+#include "lrchain/jobs/option_schema.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/params.hpp"
 
@@ -29,30 +30,9 @@ struct CoeffsConfig {
   CoeffsFormat format = CoeffsFormat::text;  // text, or one JSON object on one line
 };
 
-// Every key of CoeffsConfig with its default, range and one line of documentation: what the CLI's
-// help and the Python docstrings show (each front end spells the key its own way).
-struct CoeffsOption {
-  const char* key;
-  const char* default_text;
-  const char* range_text;
-  const char* documentation;
-};
-inline constexpr CoeffsOption kCoeffsOptions[] = {
-    {"model", "the resonant chain", "a shipped model or a model file (docs/models.md)",
-     "lattice model with its parameter values"},
-    {"params", "alpha=3/2, delta0=4/9, kappa=1, rho=1/3", "the ranges of lrchain/params.hpp",
-     "the resonant chain's parameters"},
-    {"branch", "none (required for one wavenumber)",
-     "optical (omega_+) or acoustic (omega_-); other models: the names `lrchain derive` lists (acoustic/optical or "
-     "branch0, branch1, ...)",
-     "dispersion branch"},
-    {"theta", "none (required for one wavenumber)", "in (-pi, pi], nonzero on an acoustic branch",
-     "carrier wavenumber, e.g. pi/2"},
-    {"table", "false", "true or false", "the table of every branch at theta = pi/8 ... pi instead of one wavenumber"},
-    {"format", "text", "text or json",
-     "text, or one JSON object on one line: theta, branch, the coefficients (singular ones as null), the model with "
-     "its parameter values, provenance; with the table every branch's rows"},
-};
+// Every key of CoeffsConfig with its default, range and one line of documentation (option_schema.hpp):
+// what the CLI's help and the Python docstrings show (each front end spells the key its own way).
+const std::vector<JobOption>& coeffs_options();
 
 // One branch of the table: its coefficients at table_thetas() (coefficients_batch).
 struct CoeffsTableBranch {

@@ -61,7 +61,7 @@ struct DarkConfig {
   // resources and files:
   double max_memory = 0;    // bytes the job may use; 0: the machine's available memory
   std::string out;          // output directory ("": no files)
-  std::string format = "csv";  // csv | hdf5 (also out/result.h5; the resonant chain's solve, floquet, branch)
+  std::string format = "csv";  // csv | hdf5 (also out/result.h5: jobs/model_dark_hdf5.hpp, dark_evolution_hdf5.hpp)
 };
 
 // Checks every option, the memory the job needs and the output directory before anything is

@@ -31,7 +31,7 @@ struct DarkBreatherAnsatz {
   double resonator_factor = 0;    // kappa / (kappa - rho omega^2) (eq:xy_app, y component)
 };
 
-// Throws InvalidParameter("omega-b", ...) unless omega_b lies on the gap side of the edge
+// Throws InvalidParameter("omega_b", ...) unless omega_b lies on the gap side of the edge
 // (omega_b < omega(pi)) and the edge is defocusing (omega'' h_tilde > 0).
 DarkBreatherAnsatz make_dark_breather_ansatz(const Params& p, Branch edge, double omega_b);
 

@@ -29,7 +29,7 @@ struct IntegratorOptions {
 // abs_tol in (0, 1), rel_tol in [0, 1), dt finite > 0; and for the adaptive steppers (rkf78,
 // dopri5), which accept a step when its error estimate at each entry x is below
 // abs_tol + rel_tol |x|, a tolerance double precision can meet on the lattices' O(1) states:
-// abs_tol + rel_tol >= finest_tolerance (1e-15), else InvalidParameter("abs-tol") whose message
+// abs_tol + rel_tol >= finest_tolerance (1e-15), else InvalidParameter("abs_tol") whose message
 // names both options. (At an entry |x| <= 1 the tolerance is then >= 1e-15 |x|; the fixed-step
 // steppers ignore the tolerances and are not checked.)
 void validate(const IntegratorOptions& o);

@@ -40,7 +40,7 @@ const lrchain_lattice_kernels* compiled_in_lattice_kernels(const Model& model);
 
 // The compiled-in lattice kernels of `model`, or InputError naming the model when there are none. A
 // user's model file has its lattice code compiled at run time instead (compile_model_lattice of the
-// model compiler; the CLI's lattice_kernels_for picks either).
+// model compiler; jobs::ModelSource::lattice picks either).
 const lrchain_lattice_kernels& lattice_kernels_of(const Model& model);
 
 }  // namespace lrchain::sim

@@ -20,6 +20,7 @@
 //                      record_displacements): n, t, values (float64)
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -40,6 +41,13 @@ struct SampledField {
   std::vector<double> n, t, values;
 };
 
+// What a result file calls itself (root attribute lrchain_result: the Python result class) and the
+// file names of the record's series columns that differ from the record's own (e.g. X -> centre).
+struct RecordLayout {
+  std::string result_class;
+  std::vector<std::pair<std::string, std::string>> renamed;  // record column -> dataset name
+};
+
 // The simulation result kinds ("bright", "drive", "modulated") the writers know.
 enum class SimulationKind { bright, drive, modulated };
 // SimulationKind of "bright", "drive" or "modulated" (InputError otherwise).
@@ -50,6 +58,11 @@ SimulationKind simulation_kind(const std::string& name);
 void write_simulation_hdf5(const std::filesystem::path& path, SimulationKind kind, const RunRecord& record,
                            const nlohmann::json& summary, const std::vector<SampledField>& extra = {});
 
+// The layout above in an open file, for a result class of the job layer (a model file's bright run,
+// a ring run): root attributes, the record's series, energy density and snapshots, /summary.
+void write_simulation_tree(Hdf5TreeFile& file, const RecordLayout& layout, const RunRecord& record,
+                           const nlohmann::json& summary);
+
 // The writers of the CLI's results (`--format hdf5`): OUT/result.h5 and OUT/summary.json; no figures.
 std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const BrightRunResult& r,
                                             const nlohmann::json& summary);
@@ -57,6 +70,11 @@ std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, co
                                             const nlohmann::json& summary);
 std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const ModulatedRunResult& r,
                                             const nlohmann::json& summary);
+
+// The columns of `series` as float64 datasets at the root, named as the series names them unless
+// `renamed` (series column -> dataset name) says otherwise.
+void write_series_datasets(Hdf5TreeFile& file, const TimeSeries& series,
+                           const std::vector<std::pair<std::string, std::string>>& renamed = {});
 
 // Writes `j` below the group `group` ("" for the root) with the summary's rules (layout above).
 void write_json_tree(Hdf5TreeFile& file, const std::string& group, const nlohmann::json& j);

@@ -36,11 +36,31 @@ void validate(const RingRunConfig& c);
 // The ring size the run uses (c.sites or the smallest ring >= 8 with theta on it).
 Index ring_sites(const RingRunConfig& c);
 
+// A plane wave counts as one while at least this fraction of its first field's energy
+// sum_n (u_n^2 + u_n'^2 / omega^2) stays in the carrier mode theta; below it the wave broke up
+// (modulational instability) and its frequency is not measurable.
+inline constexpr double kPlaneWaveCarrierFraction = 0.9;
+// The weakly nonlinear range of the ring check: |h| U^2 / 4 <= this fraction of omega (beyond it the
+// O(U^4) terms of the frequency are not small and the comparison with omega + h U^2/4 says little).
+inline constexpr double kWeaklyNonlinearShift = 0.02;
+// |c| at or below this (times max(1, omega)) is a group velocity of zero (a band extremum, e.g. theta = pi).
+inline constexpr double kZeroGroupVelocity = 1e-10;
+
+// A plane wave on the ring, measured (measure_plane_wave).
+struct PlaneWaveMeasurement {
+  double frequency = 0;                 // least-squares slope of the carrier mode's phase
+  double least_carrier_fraction = 1;    // smallest fraction of the first field's energy in the carrier mode
+  std::optional<double> broke_up_at;    // first sample time with the fraction below kPlaneWaveCarrierFraction
+};
+
 struct RingAmplitude {
   double amplitude = 0;
   double measured_frequency = 0, predicted_frequency = 0;  // predicted: omega + h U^2 / 4
   double measured_shift = 0, predicted_shift = 0;           // frequency - omega
-  std::optional<double> relative_disagreement;              // |measured - predicted shift| / |predicted|; none where h vanishes (|h| <= 1e-12 max(1, omega))
+  std::optional<double> relative_disagreement;              // |measured - predicted shift| / |predicted|; none where h vanishes (|h| <= 1e-12 max(1, omega)) or the wave broke up
+  double least_carrier_fraction = 1;                        // of the plane wave over the run (PlaneWaveMeasurement)
+  std::optional<double> broke_up_at;                        // the plane wave broke up at this t: the frequency is not measurable
+  bool weakly_nonlinear = true;                             // |h| U^2/4 <= kWeaklyNonlinearShift omega
 };
 
 struct RingRunResult {
@@ -52,13 +72,23 @@ struct RingRunResult {
   Index packet_sites = 0;
   double packet_amplitude = 0, packet_width = 0, packet_duration = 0;
   double packet_speed = 0;                      // least-squares slope of the packet centre
-  std::optional<double> packet_relative_disagreement;  // |speed - c| / |c|; none if c = 0
+  std::optional<double> packet_relative_disagreement;  // |speed - c| / |c|; none if |c| <= kZeroGroupVelocity max(1, omega)
+  bool standing = false;                        // c counts as zero: the packet does not move (no relative disagreement)
   RunRecord record;                             // series: t, packet centre
+  std::vector<std::string> warnings;            // each names the quantity (amplitude outside the weakly nonlinear range, ...)
+  std::optional<std::string> failure;           // a measurement that is not one (a plane wave broke up): exit 3 with this reason
 };
 
 // Frequency of the plane wave U Re(K e^{i(n theta - omega t)}) on a periodic ring from the slope of
-// the phase of the first field's mode amplitude sum_n u_0[n] e^{-i n theta} (least squares over
-// `periods` carrier periods). `stop` set: lrchain::Interrupted at the next sample (8 per period).
+// the phase of the first field's mode amplitude sum_n u_0[n] e^{-i n theta} (sum_n (u_0[n] + i
+// u_0'[n] / omega) e^{-i n theta} at theta = pi, where the first sum is real), least squares over
+// `periods` carrier periods, and whether the wave stayed a plane wave (the fraction of the first
+// field's energy in the carrier mode; the measurement stops where it broke up). `stop` set:
+// lrchain::Interrupted at the next sample (8 per period).
+PlaneWaveMeasurement measure_plane_wave(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                                        const BlochMode& mode, Index sites, Index mode_number, double amplitude,
+                                        double periods, double steps_per_period, const std::atomic<bool>* stop = nullptr);
+// measure_plane_wave's frequency.
 double measure_ring_frequency(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
                               const BlochMode& mode, Index sites, Index mode_number, double amplitude,
                               double periods, double steps_per_period, const std::atomic<bool>* stop = nullptr);

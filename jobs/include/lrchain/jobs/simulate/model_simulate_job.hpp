@@ -33,7 +33,8 @@ struct ModelRunLabel {
 // The job after prepare: the checks against the lattice code (a focusing branch and a detuning
 // inside the band for the breather; the Bloch mode for the ring), the lock on output.dir, the run
 // (`stop` set: lrchain::Interrupted at the next step boundary or sample), the summary labelled with
-// `label`, and the CSV files and figures in output.dir (output.format must be csv).
+// `label`, and the files in output.dir: CSV and figures, or with output.format "hdf5" result.h5 and
+// summary.json (jobs/simulate/model_run_hdf5.hpp).
 SimulateReport<sim::ModelBrightResult> simulate_model_bright(const Model& model, const lrchain_lattice_kernels& kernels,
                                                              sim::ModelBrightConfig c, const ModelRunLabel& label,
                                                              const RunOutput& output,

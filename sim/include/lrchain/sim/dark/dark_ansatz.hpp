@@ -50,7 +50,7 @@ struct DefocusingEdge {
 // edge checked and its regime when there is none.
 DefocusingEdge defocusing_edge(const Model& model, std::optional<Index> branch);
 
-// The seed's coefficients at omega_b. InvalidParameter("omega-b", ...) unless
+// The seed's coefficients at omega_b. InvalidParameter("omega_b", ...) unless
 // (omega_b - omega) h_tilde > 0 and omega_b > 0.
 DarkAnsatz make_dark_ansatz(const Model& model, const lrchain_lattice_kernels& kernels,
                                        const DefocusingEdge& edge, double omega_b);

@@ -28,6 +28,10 @@
 #include "lrchain/sim/dark/measures.hpp"
 #include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
+namespace lrchain::sim {
+class Hdf5TreeFile;
+}
+
 namespace lrchain::sim::dark {
 
 // Floquet multipliers and their classification as written (kind() as text).
@@ -65,6 +69,17 @@ struct DarkBranchRecord {
   std::string stop_reason;
 };
 DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch, Index sites, bool floquet);
+
+// The parts of the layout above that the model-file files share (jobs/dark/model_dark_hdf5.hpp),
+// written into an open file: newton_residuals, group measures, group floquet (if any) of a
+// solution; of a branch the per-point series (omega_b, tangent_omega, residual, iterations), then,
+// after the profiles, the rest (turning_points, stop_reason, measures, floquet); b.x, b.y and
+// b.params are not used. Without `second_strain` (a one-field or displacement-form lattice) the
+// measures K_y, C_y are left out.
+void write_solution_parts(Hdf5TreeFile& file, const std::vector<double>& newton_residuals, const DarkMeasures& measures,
+                          const std::optional<FloquetRecord>& floquet, bool second_strain);
+void write_branch_series(Hdf5TreeFile& file, const DarkBranchRecord& b);
+void write_branch_parts(Hdf5TreeFile& file, const DarkBranchRecord& b, bool second_strain);
 
 // Writers (temporary name + rename; InputError naming `path` if its directory is missing or it is a directory).
 void write_dark_solution_hdf5(const std::filesystem::path& path, const DarkSolutionRecord& s);
