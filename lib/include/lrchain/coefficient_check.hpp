@@ -3,7 +3,11 @@
 // from det M = 0 alone (Richardson-extrapolated central differences of the branch's omega^2 in
 // theta), independent of the emitted expressions for c, omega'', h. Where the emitted expressions
 // are 0/0 or lose their digits (a removable singularity, e.g. omega^2 = k3/m3 of a resonator),
-// coefficients() evaluates them by their limit; what fails both is refused as singular.
+// coefficients() evaluates them by their limit (h, lambda, h_tilde NaN with the regime singular
+// where they have a pole, e.g. where the carrier has no amplitude in the first field); what fails
+// both is refused as singular. coefficients() and coefficients_from_evaluators() run the full
+// check; coefficients_at() (regime maps, scans) a screen for lost digits (one more evaluation at
+// theta + 1e-8) and the full check only where the screen fails.
 #include <string_view>
 
 #include "lrchain/coefficients.hpp"
@@ -30,7 +34,8 @@ bool branch_derivatives(const ModelDefinition& definition, const double* q, Inde
 bool agrees_with_derivatives(const NlsCoefficients& c, const BranchDerivatives& d) noexcept;
 
 // Why `c` is singular (its regime is Regime::singular), or empty: a violated non-resonance
-// condition (a pole of h), or a removable singularity whose limit could not be evaluated.
+// condition (a pole of h), a pole of h found by the limit, or a removable singularity whose limit
+// could not be evaluated (refused).
 std::string_view singular_reason(const NlsCoefficients& c);
 
 }  // namespace lrchain

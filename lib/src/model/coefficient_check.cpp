@@ -18,8 +18,10 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kDerivativeStep = 2e-3;  // theta offset of the central differences of omega^2 (and half of it)
-constexpr double kNoiseStep = 1e-6;       // theta offset of the second difference that measures h's rounding noise
-constexpr double kNoiseTolerance = 1e-7;  // relative second difference above which h counts as noisy (if not smooth)
+constexpr double kScreenStep = 1e-8;      // theta offset of the screen's second evaluation
+constexpr double kScreenTolerance = 1e-6; // relative change over kScreenStep above which the full check runs
+constexpr double kNoiseStep = 1e-6;       // theta offset of the second differences that measure rounding noise
+constexpr double kNoiseTolerance = 1e-7;  // relative second difference above which a field counts as noisy (if not smooth)
 constexpr double kLimitStep = 0.02;       // largest offset of the limit evaluation (then halved three times)
 constexpr int kLimitLevels = 4;
 constexpr double kLimitTolerance = 1e-6;  // relative change of the last two Richardson levels accepted
@@ -80,49 +82,92 @@ double root_gap(const ModelDefinition& d, const double* q, Index branch, double 
   return gap;
 }
 
-// The coefficients a limit extrapolates, as pointers to members.
+// The coefficients a limit extrapolates, as pointers to members; the first kPoleFieldStart are
+// never poles (linear theory and the non-resonance values), the rest may be (h and its relatives).
 constexpr double NlsCoefficients::* kLimitFields[] = {
     &NlsCoefficients::group_velocity, &NlsCoefficients::curvature, &NlsCoefficients::gamma,
-    &NlsCoefficients::beta,           &NlsCoefficients::h,         &NlsCoefficients::lambda,
-    &NlsCoefficients::h_tilde,        &NlsCoefficients::h_tilde_numerator, &NlsCoefficients::nonresonance1,
-    &NlsCoefficients::nonresonance2};
+    &NlsCoefficients::beta,           &NlsCoefficients::nonresonance1, &NlsCoefficients::nonresonance2,
+    &NlsCoefficients::h,              &NlsCoefficients::lambda,        &NlsCoefficients::h_tilde,
+    &NlsCoefficients::h_tilde_numerator};
 constexpr int kLimitFieldCount = sizeof kLimitFields / sizeof kLimitFields[0];
+constexpr int kPoleFieldStart = 6;
 
-// h and h_tilde at theta +- step, theta +- 2 step: false if a nearby point has no coefficients.
-// Second differences of rounding noise do not scale as step^2: noisy unless each doubling of the
-// step multiplies the second difference by about 4 (smooth, e.g. near a true pole of h).
-bool noisy_h(const ModelDefinition& d, const double* q, Index branch, const NlsCoefficients& c) noexcept {
-  const double NlsCoefficients::* fields[] = {&NlsCoefficients::h, &NlsCoefficients::h_tilde};
-  double second[3][2];
+// |a - b| small against |a| + |b| (both NaN: equal, e.g. lambda of an on-site model).
+bool close(double a, double b, double tolerance) noexcept {
+  if (std::isnan(a) && std::isnan(b)) return true;
+  return std::abs(a - b) <= tolerance * (std::abs(a) + std::abs(b));
+}
+
+// Second differences of a field at steps s, 2s, 4s: smooth when the smallest is small against the
+// values, or when each doubling of the step multiplies it by 3..80 (a smooth function whose
+// expansion starts at step^2, step^4 or step^6: e.g. h ~ theta^4 at theta = 0). Rounding noise
+// (the digits a 0/0 of the expressions loses) does neither.
+bool smooth_field(const double (&second)[3], const double (&size)[3], double centre) noexcept {
+  if (!std::isfinite(centre)) return true;  // NaN by design (on-site lambda, a violated non-resonance)
+  if (std::abs(second[0]) <= kNoiseTolerance * size[0]) return true;
+  for (int level = 1; level < 3; ++level) {
+    const double ratio = second[level] / second[level - 1];
+    if (!(ratio > 3.0 && ratio < 80.0)) return false;
+  }
+  return true;
+}
+
+// Every field smooth at theta (second differences at theta +- kNoiseStep 2^k); false if a nearby
+// point has no coefficients or a field's second differences look like rounding noise.
+bool smooth_at(const ModelDefinition& d, const double* q, Index branch, const NlsCoefficients& c) noexcept {
+  double second[3][kLimitFieldCount], size[3][kLimitFieldCount];
   for (int level = 0; level < 3; ++level) {
     const double step = kNoiseStep * double(1 << level);
     NlsCoefficients plus, minus;
     if (!detail::unchecked_model_coefficients(d, q, branch, c.theta + step, plus) ||
         !detail::unchecked_model_coefficients(d, q, branch, c.theta - step, minus))
       return false;
-    bool small = true;
-    for (int f = 0; f < 2; ++f) {
-      const double centre = c.*fields[f];
-      second[level][f] = plus.*fields[f] - 2.0 * centre + minus.*fields[f];
-      const double size = std::abs(centre) + std::abs(plus.*fields[f]) + std::abs(minus.*fields[f]);
-      if (std::isfinite(centre) && !(std::abs(second[level][f]) <= kNoiseTolerance * size)) small = false;
-    }
-    if (level == 0 && small) return false;  // the common case: one extra pair of evaluations
-  }
-  for (int f = 0; f < 2; ++f) {
-    if (!std::isfinite(c.*fields[f])) continue;
-    for (int level = 1; level < 3; ++level) {
-      const double ratio = second[level][f] / second[level - 1][f];
-      if (!(ratio > 3.0 && ratio < 5.3)) return true;
+    for (int f = 0; f < kLimitFieldCount; ++f) {
+      const double centre = c.*kLimitFields[f];
+      second[level][f] = plus.*kLimitFields[f] - 2.0 * centre + minus.*kLimitFields[f];
+      size[level][f] = std::abs(centre) + std::abs(plus.*kLimitFields[f]) + std::abs(minus.*kLimitFields[f]);
     }
   }
-  return false;
+  for (int f = 0; f < kLimitFieldCount; ++f) {
+    const double s[3] = {second[0][f], second[1][f], second[2][f]}, z[3] = {size[0][f], size[1][f], size[2][f]};
+    if (!smooth_field(s, z, c.*kLimitFields[f])) return false;
+  }
+  return true;
 }
 
-// c replaced by the limit of the symmetric means of unchecked evaluations at theta +- kLimitStep / 2^k,
-// extrapolated in the offset squared; false when a nearby point fails or the levels do not agree.
+// How the limit of one field from symmetric nearby evaluations came out.
+enum class FieldLimit { converged, pole, failed };
+
+// Neville-Richardson extrapolation of the symmetric means mean[k] (offset kLimitStep / 2^k) in the
+// offset squared; side[k] = the larger |value| of the two sides. A pole: the sides grow at least
+// 1.8-fold per halving of the offset while the means do not converge (simple poles cancel in the
+// mean, double ones do not). Converged: the last two levels agree to kLimitTolerance of the field's
+// size nearby (absolute: a field that is zero by symmetry, e.g. c at theta = pi, is rounding there).
+FieldLimit extrapolate(const double (&mean)[kLimitLevels], const double (&side)[kLimitLevels], double& value) noexcept {
+  double row[kLimitLevels], largest = 0, previous_diagonal = 0;
+  for (int k = 0; k < kLimitLevels; ++k) {
+    row[k] = mean[k];
+    largest = std::max({largest, std::abs(mean[k]), side[k]});
+  }
+  bool growing = true;
+  for (int k = 1; k < kLimitLevels; ++k) growing = growing && side[k] >= 1.8 * side[k - 1];
+  for (int j = 1; j < kLimitLevels; ++j) {
+    previous_diagonal = row[j - 1];
+    const double factor = double(1 << (2 * j)) - 1.0;
+    for (int k = kLimitLevels - 1; k >= j; --k) row[k] += (row[k] - row[k - 1]) / factor;
+  }
+  value = row[kLimitLevels - 1];
+  if (!growing && std::abs(value - previous_diagonal) <= kLimitTolerance * std::max(std::abs(value), largest))
+    return FieldLimit::converged;
+  return growing ? FieldLimit::pole : FieldLimit::failed;
+}
+
+// c replaced by the limit of the symmetric means of unchecked evaluations at theta +- kLimitStep / 2^k;
+// h, lambda, h_tilde NaN (regime singular) where they have a pole at theta. False when a nearby point
+// fails, or a field that cannot have a pole (c, omega'', gamma, beta, the non-resonance values) or
+// only some of h's fields do not converge.
 bool limit_coefficients(const ModelDefinition& d, const double* q, Index branch, NlsCoefficients& c) noexcept {
-  double table[kLimitLevels][kLimitFieldCount];
+  double mean[kLimitFieldCount][kLimitLevels], side[kLimitFieldCount][kLimitLevels];
   for (int k = 0; k < kLimitLevels; ++k) {
     const double step = kLimitStep / double(1 << k);
     NlsCoefficients plus, minus;
@@ -130,28 +175,31 @@ bool limit_coefficients(const ModelDefinition& d, const double* q, Index branch,
         !detail::unchecked_model_coefficients(d, q, branch, c.theta - step, minus) ||
         plus.regime == Regime::singular || minus.regime == Regime::singular)
       return false;
-    for (int f = 0; f < kLimitFieldCount; ++f) table[k][f] = 0.5 * (plus.*kLimitFields[f] + minus.*kLimitFields[f]);
+    for (int f = 0; f < kLimitFieldCount; ++f) {
+      mean[f][k] = 0.5 * (plus.*kLimitFields[f] + minus.*kLimitFields[f]);
+      side[f][k] = std::max(std::abs(plus.*kLimitFields[f]), std::abs(minus.*kLimitFields[f]));
+    }
   }
   NlsCoefficients limit = c;
+  int poles = 0;
   for (int f = 0; f < kLimitFieldCount; ++f) {
-    double row[kLimitLevels], previous_diagonal = 0, largest = 0;
-    for (int k = 0; k < kLimitLevels; ++k) {
-      row[k] = table[k][f];
-      largest = std::max(largest, std::abs(row[k]));
+    double value;
+    const FieldLimit outcome = extrapolate(mean[f], side[f], value);
+    if (std::isnan(value) && (f >= kPoleFieldStart || std::isnan(c.*kLimitFields[f]))) {
+      limit.*kLimitFields[f] = value;  // NaN by design (lambda of an on-site model)
+      continue;
     }
-    // Neville-Richardson in place: after pass j, row[k] (k >= j) eliminates the offset^2j terms.
-    for (int j = 1; j < kLimitLevels; ++j) {
-      previous_diagonal = row[j - 1];
-      const double factor = double(1 << (2 * j)) - 1.0;
-      for (int k = kLimitLevels - 1; k >= j; --k) row[k] += (row[k] - row[k - 1]) / factor;
-    }
-    const double value = row[kLimitLevels - 1];
-    if (std::isnan(c.*kLimitFields[f]) && std::isnan(value)) continue;  // e.g. lambda of an on-site model
-    if (!(std::abs(value - previous_diagonal) <= kLimitTolerance * std::abs(value) + 1e-9 * largest)) return false;
+    if (outcome == FieldLimit::failed || (outcome == FieldLimit::pole && f < kPoleFieldStart)) return false;
+    if (outcome == FieldLimit::pole) ++poles;
     limit.*kLimitFields[f] = value;
   }
-  const double product = limit.curvature * limit.h_tilde;
-  limit.regime = product < 0 ? Regime::focusing : product > 0 ? Regime::defocusing : Regime::degenerate;
+  if (poles > 0) {  // h and every field built on it diverge: no NLS at this point
+    for (int f = kPoleFieldStart; f < kLimitFieldCount; ++f) limit.*kLimitFields[f] = std::numeric_limits<double>::quiet_NaN();
+    limit.regime = Regime::singular;
+  } else {
+    const double product = limit.curvature * limit.h_tilde;
+    limit.regime = product < 0 ? Regime::focusing : product > 0 ? Regime::defocusing : Regime::degenerate;
+  }
   limit.evaluation = CoefficientEvaluation::limit;
   c = limit;
   return true;
@@ -196,6 +244,8 @@ bool branch_derivatives(const ModelDefinition& d, const double* q, Index branch,
 }
 
 bool agrees_with_derivatives(const NlsCoefficients& c, const BranchDerivatives& d) noexcept {
+  // Absolute parts scaled by omega (c and omega'' are omega per radian, per radian^2): at theta = 0
+  // and pi, c = 0 by symmetry and a relative test alone would fail on rounding.
   const double tolerance = 1e-7;
   const double c_scale = std::abs(d.group_velocity) + c.omega;
   const double curvature_scale = std::abs(d.curvature) + c_scale;
@@ -206,21 +256,46 @@ bool agrees_with_derivatives(const NlsCoefficients& c, const BranchDerivatives& 
 std::string_view singular_reason(const NlsCoefficients& c) {
   if (c.evaluation == CoefficientEvaluation::refused)
     return "removable singularity of the derived expressions (0/0 at or near this wavenumber): their c or omega'' "
-           "disagree with the derivatives of omega from det M, or h loses its digits, and their limit from nearby "
+           "disagree with the derivatives of omega from det M, or they lose their digits, and their limit from nearby "
            "wavenumbers did not converge";
+  if (c.regime == Regime::singular && c.evaluation == CoefficientEvaluation::limit)
+    return "h, lambda and h_tilde have a pole at this wavenumber (their values on both sides grow without bound), e.g. "
+           "where the carrier has no amplitude in the first field, whose amplitude A the NLS uses; c and omega'' are "
+           "the limits of the derived expressions";
   if (c.regime == Regime::singular) return "a non-resonance condition is violated (eq:nonresonance1, eq:nonresonance2): h has a pole";
   return {};
 }
 
 namespace detail {
 
+bool screen_passes(const ModelDefinition& d, const double* q, const NlsCoefficients& c) noexcept {
+  const double theta = c.theta + kScreenStep;
+  double sh, ch;
+  detail::half_angle_sincos(0.5 * theta, sh, ch);
+  double out[model_output_count];
+  // omega there to first order (the error omega'' step^2 / 2 is below rounding).
+  d.evaluators.evaluate_nls(4.0 * sh * sh, 2.0 * sh * ch, c.omega + c.group_velocity * kScreenStep, q, out);
+  const bool h_fields = c.regime != Regime::singular;
+  return close(c.group_velocity, out[out_group_velocity], kScreenTolerance) &&
+         close(c.curvature, out[out_curvature], kScreenTolerance) && close(c.gamma, out[out_gamma], kScreenTolerance) &&
+         close(c.beta, out[out_beta], kScreenTolerance) &&
+         close(c.nonresonance1, out[out_nonresonance1], kScreenTolerance) &&
+         close(c.nonresonance2, out[out_nonresonance2], kScreenTolerance) && h_fields &&
+         close(c.h, out[out_h], kScreenTolerance) && close(c.h_tilde, out[out_h_tilde], kScreenTolerance) &&
+         (!d.mean_flow || close(c.lambda, out[out_lambda], kScreenTolerance));
+}
+
 void check_or_limit(const ModelDefinition& d, const double* q, Index branch, NlsCoefficients& c) noexcept {
   BranchDerivatives derivatives;
   const bool have_derivatives = branch_derivatives(d, q, branch, c.theta, c.omega, derivatives);
   const bool derivatives_agree = !have_derivatives || agrees_with_derivatives(c, derivatives);
-  if (derivatives_agree && (c.regime == Regime::singular || !noisy_h(d, q, branch, c))) return;
+  if (derivatives_agree && (screen_passes(d, q, c) || c.regime == Regime::singular || smooth_at(d, q, branch, c))) return;
   if (limit_coefficients(d, q, branch, c) && (!have_derivatives || agrees_with_derivatives(c, derivatives))) return;
   refuse(c);
+}
+
+void screen_or_check(const ModelDefinition& d, const double* q, Index branch, NlsCoefficients& c) noexcept {
+  if (!screen_passes(d, q, c)) check_or_limit(d, q, branch, c);
 }
 
 }  // namespace detail

@@ -1,6 +1,7 @@
 #pragma once
-// The checked evaluation of a loaded model's coefficients (lrchain/coefficient_check.hpp), used by
-// coefficients(), coefficients_from_evaluators(), coefficients_at() and the batch.
+// The checked evaluation of a loaded model's coefficients (lrchain/coefficient_check.hpp): the full
+// check in coefficients() and coefficients_from_evaluators() (coeffs, ring, bright, dark), the
+// screen with the full check as its fallback in coefficients_at() (regime maps, scans, the batch).
 #include "lrchain/coefficients.hpp"
 #include "lrchain/index.hpp"
 
@@ -18,6 +19,14 @@ bool unchecked_model_coefficients(const ModelDefinition& d, const double* q, Ind
 // rounding noise in h, h_tilde; else replaced by the limit of symmetric nearby evaluations; else
 // refused (CoefficientEvaluation::refused, Regime::singular, NaN coefficients).
 void check_or_limit(const ModelDefinition& d, const double* q, Index branch, NlsCoefficients& c) noexcept;
+
+// True when every coefficient of c (unchecked, at c.theta) changes by less than 1e-6 relative over a
+// step of 1e-8 in theta (one more evaluation of the emitted expressions, at omega + c 1e-8): no digits
+// lost to a 0/0 of the expressions. Not a check of c and omega'' against det M.
+bool screen_passes(const ModelDefinition& d, const double* q, const NlsCoefficients& c) noexcept;
+
+// The hot path's check (regime maps, scans, the batch): the screen, and check_or_limit where it fails.
+void screen_or_check(const ModelDefinition& d, const double* q, Index branch, NlsCoefficients& c) noexcept;
 
 }  // namespace detail
 }  // namespace lrchain

@@ -197,11 +197,15 @@ namespace {
   return true;
 }
 
-// The unchecked evaluation, then its check against omega's derivatives (coefficient_check.cpp).
+// The unchecked evaluation, then its check (coefficient_check.cpp): full (c, omega'' against omega's
+// derivatives from det M, digits lost to a 0/0) for one wavenumber's numbers, or the hot path's
+// screen (digits lost to a 0/0) with the full check where the screen fails.
+template <bool full>
 [[gnu::always_inline]] inline bool evaluate_coefficients(const ModelDefinition& d, const double* q, Index branch,
                                                          double theta, NlsCoefficients& c) noexcept {
   if (!evaluate_unchecked(d, q, branch, theta, c)) return false;
-  detail::check_or_limit(d, q, branch, c);
+  if constexpr (full) detail::check_or_limit(d, q, branch, c);
+  else detail::screen_or_check(d, q, branch, c);
   return true;
 }
 
@@ -256,7 +260,7 @@ bool detail::unchecked_model_coefficients(const ModelDefinition& d, const double
 
 bool coefficients_at(const ModelDefinition& d, const double* q, Index branch, double theta,
                      NlsCoefficients& c) noexcept {
-  return evaluate_coefficients(d, q, branch, theta, c);
+  return evaluate_coefficients<false>(d, q, branch, theta, c);
 }
 
 namespace {
@@ -274,7 +278,7 @@ void check_wavenumber_and_branch(const ModelDefinition& d, Index branch, double 
 NlsCoefficients checked_evaluator_coefficients(const Model& model, Index branch, double theta) {
   const ModelDefinition& d = model.definition();
   NlsCoefficients c;
-  if (evaluate_coefficients(d, model.inputs().data(), branch, theta, c)) [[likely]] return c;
+  if (evaluate_coefficients<true>(d, model.inputs().data(), branch, theta, c)) [[likely]] return c;
   double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
   double sh, ch;
   detail::half_angle_sincos(0.5 * theta, sh, ch);
