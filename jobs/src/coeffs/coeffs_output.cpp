@@ -13,7 +13,8 @@ namespace {
 
 nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-// The coefficients; a refused evaluation adds "singular" (the reason), a limit "evaluation": "limit".
+// The coefficients; a refused evaluation or a pole found by the limit adds "singular" (the reason), a
+// limit "evaluation": "limit".
 nlohmann::json coefficients_json(const NlsCoefficients& c) {
   nlohmann::json j = {{"theta", c.theta},
           {"omega", number_or_null(c.omega)},
@@ -27,7 +28,7 @@ nlohmann::json coefficients_json(const NlsCoefficients& c) {
           {"nonresonance1", number_or_null(c.nonresonance1)},
           {"nonresonance2", number_or_null(c.nonresonance2)},
           {"regime", std::string(to_string(c.regime))}};
-  if (c.evaluation == CoefficientEvaluation::refused) j["singular"] = std::string(singular_reason(c));
+  if (c.evaluation != CoefficientEvaluation::direct && c.regime == Regime::singular) j["singular"] = std::string(singular_reason(c));
   if (c.evaluation == CoefficientEvaluation::limit) j["evaluation"] = "limit";
   return j;
 }
@@ -76,7 +77,8 @@ std::string model_text(const CoeffsResult& r) {
   row("nonresonance1", c.nonresonance1);
   if (d.mean_flow) row("nonresonance2", c.nonresonance2);
   text += fmt::format("  {:<15} {}\n", "regime", to_string(c.regime));
-  if (c.evaluation == CoefficientEvaluation::refused) text += fmt::format("  {:<15} {}\n", "singular", singular_reason(c));
+  if (c.evaluation != CoefficientEvaluation::direct && c.regime == Regime::singular)
+    text += fmt::format("  {:<15} {}\n", "singular", singular_reason(c));
   if (c.evaluation == CoefficientEvaluation::limit)
     text += fmt::format("  {:<15} {}\n", "evaluation", "limit (the derived expressions are 0/0 here)");
   return text;
