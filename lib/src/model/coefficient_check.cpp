@@ -82,15 +82,31 @@ double root_gap(const ModelDefinition& d, const double* q, Index branch, double 
   return gap;
 }
 
-// The coefficients a limit extrapolates, as pointers to members; the first kPoleFieldStart are
-// never poles (linear theory and the non-resonance values), the rest may be (h and its relatives).
+// The coefficients a limit extrapolates, as pointers to members (what refuse() sets to NaN).
 constexpr double NlsCoefficients::* kLimitFields[] = {
     &NlsCoefficients::group_velocity, &NlsCoefficients::curvature, &NlsCoefficients::gamma,
     &NlsCoefficients::beta,           &NlsCoefficients::nonresonance1, &NlsCoefficients::nonresonance2,
     &NlsCoefficients::h,              &NlsCoefficients::lambda,        &NlsCoefficients::h_tilde,
     &NlsCoefficients::h_tilde_numerator};
-constexpr int kLimitFieldCount = sizeof kLimitFields / sizeof kLimitFields[0];
+
+// The quantities the check tests for lost digits and the limit extrapolates: c, omega'', gamma,
+// beta, the non-resonance values, and h, lambda, h_tilde times the non-resonance values they are
+// divided by (h nonresonance1, lambda nonresonance2, h_tilde_numerator): smooth across the true
+// poles of a violated non-resonance condition, so that only a 0/0 of the expressions (or a pole of
+// another cause) shows. The first kPoleFieldStart can have no pole.
+constexpr int kCheckedFieldCount = 9;
 constexpr int kPoleFieldStart = 6;
+void checked_fields(const NlsCoefficients& c, double (&v)[kCheckedFieldCount]) noexcept {
+  v[0] = c.group_velocity;
+  v[1] = c.curvature;
+  v[2] = c.gamma;
+  v[3] = c.beta;
+  v[4] = c.nonresonance1;
+  v[5] = c.nonresonance2;
+  v[6] = c.h * c.nonresonance1;
+  v[7] = c.lambda * c.nonresonance2;
+  v[8] = c.h_tilde_numerator;
+}
 
 // |a - b| small against |a| + |b| (both NaN: equal, e.g. lambda of an on-site model).
 bool close(double a, double b, double tolerance) noexcept {
@@ -115,22 +131,25 @@ bool smooth_field(const double (&second)[3], const double (&size)[3], double cen
 // Every field smooth at theta (second differences at theta +- kNoiseStep 2^k); false if a nearby
 // point has no coefficients or a field's second differences look like rounding noise.
 bool smooth_at(const ModelDefinition& d, const double* q, Index branch, const NlsCoefficients& c) noexcept {
-  double second[3][kLimitFieldCount], size[3][kLimitFieldCount];
+  double second[3][kCheckedFieldCount], size[3][kCheckedFieldCount], centre[kCheckedFieldCount];
+  checked_fields(c, centre);
   for (int level = 0; level < 3; ++level) {
     const double step = kNoiseStep * double(1 << level);
     NlsCoefficients plus, minus;
     if (!detail::unchecked_model_coefficients(d, q, branch, c.theta + step, plus) ||
         !detail::unchecked_model_coefficients(d, q, branch, c.theta - step, minus))
       return false;
-    for (int f = 0; f < kLimitFieldCount; ++f) {
-      const double centre = c.*kLimitFields[f];
-      second[level][f] = plus.*kLimitFields[f] - 2.0 * centre + minus.*kLimitFields[f];
-      size[level][f] = std::abs(centre) + std::abs(plus.*kLimitFields[f]) + std::abs(minus.*kLimitFields[f]);
+    double p[kCheckedFieldCount], m[kCheckedFieldCount];
+    checked_fields(plus, p);
+    checked_fields(minus, m);
+    for (int f = 0; f < kCheckedFieldCount; ++f) {
+      second[level][f] = p[f] - 2.0 * centre[f] + m[f];
+      size[level][f] = std::abs(centre[f]) + std::abs(p[f]) + std::abs(m[f]);
     }
   }
-  for (int f = 0; f < kLimitFieldCount; ++f) {
+  for (int f = 0; f < kCheckedFieldCount; ++f) {
     const double s[3] = {second[0][f], second[1][f], second[2][f]}, z[3] = {size[0][f], size[1][f], size[2][f]};
-    if (!smooth_field(s, z, c.*kLimitFields[f])) return false;
+    if (!smooth_field(s, z, centre[f])) return false;
   }
   return true;
 }
@@ -167,7 +186,8 @@ FieldLimit extrapolate(const double (&mean)[kLimitLevels], const double (&side)[
 // fails, or a field that cannot have a pole (c, omega'', gamma, beta, the non-resonance values) or
 // only some of h's fields do not converge.
 bool limit_coefficients(const ModelDefinition& d, const double* q, Index branch, NlsCoefficients& c) noexcept {
-  double mean[kLimitFieldCount][kLimitLevels], side[kLimitFieldCount][kLimitLevels];
+  double mean[kCheckedFieldCount][kLimitLevels], side[kCheckedFieldCount][kLimitLevels], direct[kCheckedFieldCount];
+  checked_fields(c, direct);
   for (int k = 0; k < kLimitLevels; ++k) {
     const double step = kLimitStep / double(1 << k);
     NlsCoefficients plus, minus;
@@ -175,28 +195,38 @@ bool limit_coefficients(const ModelDefinition& d, const double* q, Index branch,
         !detail::unchecked_model_coefficients(d, q, branch, c.theta - step, minus) ||
         plus.regime == Regime::singular || minus.regime == Regime::singular)
       return false;
-    for (int f = 0; f < kLimitFieldCount; ++f) {
-      mean[f][k] = 0.5 * (plus.*kLimitFields[f] + minus.*kLimitFields[f]);
-      side[f][k] = std::max(std::abs(plus.*kLimitFields[f]), std::abs(minus.*kLimitFields[f]));
+    double p[kCheckedFieldCount], m[kCheckedFieldCount];
+    checked_fields(plus, p);
+    checked_fields(minus, m);
+    for (int f = 0; f < kCheckedFieldCount; ++f) {
+      mean[f][k] = 0.5 * (p[f] + m[f]);
+      side[f][k] = std::max(std::abs(p[f]), std::abs(m[f]));
     }
   }
-  NlsCoefficients limit = c;
+  double value[kCheckedFieldCount];
   int poles = 0;
-  for (int f = 0; f < kLimitFieldCount; ++f) {
-    double value;
-    const FieldLimit outcome = extrapolate(mean[f], side[f], value);
-    if (std::isnan(value) && (f >= kPoleFieldStart || std::isnan(c.*kLimitFields[f]))) {
-      limit.*kLimitFields[f] = value;  // NaN by design (lambda of an on-site model)
-      continue;
-    }
+  for (int f = 0; f < kCheckedFieldCount; ++f) {
+    const FieldLimit outcome = extrapolate(mean[f], side[f], value[f]);
+    if (std::isnan(value[f]) && (f >= kPoleFieldStart || std::isnan(direct[f]))) continue;  // NaN by design (on-site lambda)
     if (outcome == FieldLimit::failed || (outcome == FieldLimit::pole && f < kPoleFieldStart)) return false;
     if (outcome == FieldLimit::pole) ++poles;
-    limit.*kLimitFields[f] = value;
   }
+  NlsCoefficients limit = c;
+  limit.group_velocity = value[0];
+  limit.curvature = value[1];
+  limit.gamma = value[2];
+  limit.beta = value[3];
+  limit.nonresonance1 = value[4];
+  limit.nonresonance2 = value[5];
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   if (poles > 0) {  // h and every field built on it diverge: no NLS at this point
-    for (int f = kPoleFieldStart; f < kLimitFieldCount; ++f) limit.*kLimitFields[f] = std::numeric_limits<double>::quiet_NaN();
+    limit.h = limit.lambda = limit.h_tilde = limit.h_tilde_numerator = nan;
     limit.regime = Regime::singular;
   } else {
+    limit.h = value[6] / value[4];
+    limit.lambda = d.mean_flow ? value[7] / value[5] : nan;
+    limit.h_tilde = value[8] / (value[4] * value[5]);
+    limit.h_tilde_numerator = value[8];
     const double product = limit.curvature * limit.h_tilde;
     limit.regime = product < 0 ? Regime::focusing : product > 0 ? Regime::defocusing : Regime::degenerate;
   }
@@ -275,14 +305,22 @@ bool screen_passes(const ModelDefinition& d, const double* q, const NlsCoefficie
   double out[model_output_count];
   // omega there to first order (the error omega'' step^2 / 2 is below rounding).
   d.evaluators.evaluate_nls(4.0 * sh * sh, 2.0 * sh * ch, c.omega + c.group_velocity * kScreenStep, q, out);
-  const bool h_fields = c.regime != Regime::singular;
-  return close(c.group_velocity, out[out_group_velocity], kScreenTolerance) &&
-         close(c.curvature, out[out_curvature], kScreenTolerance) && close(c.gamma, out[out_gamma], kScreenTolerance) &&
-         close(c.beta, out[out_beta], kScreenTolerance) &&
-         close(c.nonresonance1, out[out_nonresonance1], kScreenTolerance) &&
-         close(c.nonresonance2, out[out_nonresonance2], kScreenTolerance) && h_fields &&
-         close(c.h, out[out_h], kScreenTolerance) && close(c.h_tilde, out[out_h_tilde], kScreenTolerance) &&
-         (!d.mean_flow || close(c.lambda, out[out_lambda], kScreenTolerance));
+  NlsCoefficients next;
+  next.group_velocity = out[out_group_velocity];
+  next.curvature = out[out_curvature];
+  next.gamma = out[out_gamma];
+  next.beta = out[out_beta];
+  next.nonresonance1 = out[out_nonresonance1];
+  next.nonresonance2 = out[out_nonresonance2];
+  next.h = out[out_h];
+  next.lambda = d.mean_flow ? out[out_lambda] : std::numeric_limits<double>::quiet_NaN();
+  next.h_tilde_numerator = out[out_h_tilde_numerator];
+  double here[kCheckedFieldCount], there[kCheckedFieldCount];
+  checked_fields(c, here);
+  checked_fields(next, there);
+  for (int f = 0; f < kCheckedFieldCount; ++f)
+    if (!close(here[f], there[f], kScreenTolerance)) return false;
+  return true;
 }
 
 void check_or_limit(const ModelDefinition& d, const double* q, Index branch, NlsCoefficients& c) noexcept {
