@@ -306,15 +306,9 @@ bool screen_passes(const ModelDefinition& d, const double* q, const NlsCoefficie
   // omega there to first order (the error omega'' step^2 / 2 is below rounding).
   d.evaluators.evaluate_nls(4.0 * sh * sh, 2.0 * sh * ch, c.omega + c.group_velocity * kScreenStep, q, out);
   NlsCoefficients next;
-  next.group_velocity = out[out_group_velocity];
-  next.curvature = out[out_curvature];
-  next.gamma = out[out_gamma];
-  next.beta = out[out_beta];
-  next.nonresonance1 = out[out_nonresonance1];
-  next.nonresonance2 = out[out_nonresonance2];
+  detail::store_linear_outputs(out, next);
   next.h = out[out_h];
   next.lambda = d.mean_flow ? out[out_lambda] : std::numeric_limits<double>::quiet_NaN();
-  next.h_tilde_numerator = out[out_h_tilde_numerator];
   double here[kCheckedFieldCount], there[kCheckedFieldCount];
   checked_fields(c, here);
   checked_fields(next, there);

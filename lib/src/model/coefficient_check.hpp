@@ -4,12 +4,25 @@
 // screen with the full check as its fallback in coefficients_at() (regime maps, scans, the batch).
 #include "lrchain/coefficients.hpp"
 #include "lrchain/index.hpp"
+#include "lrchain/model.hpp"
 
 namespace lrchain {
 
 struct ModelDefinition;
 
 namespace detail {
+
+// c, omega'', gamma, beta, the non-resonance values and h_tilde_numerator from the emitted NLS
+// evaluator's outputs (ModelOutput order); h, lambda, h_tilde are left to the caller.
+inline void store_linear_outputs(const double* out, NlsCoefficients& c) noexcept {
+  c.group_velocity = out[out_group_velocity];
+  c.curvature = out[out_curvature];
+  c.gamma = out[out_gamma];
+  c.beta = out[out_beta];
+  c.nonresonance1 = out[out_nonresonance1];
+  c.nonresonance2 = out[out_nonresonance2];
+  c.h_tilde_numerator = out[out_h_tilde_numerator];
+}
 
 // The emitted evaluators at theta without any check (false: no positive omega^2 on the branch).
 bool unchecked_model_coefficients(const ModelDefinition& d, const double* q, Index branch, double theta,

@@ -175,13 +175,7 @@ namespace {
   d.evaluators.evaluate_nls(D1, sigma, omega, q, out);
   c.theta = theta;
   c.omega = omega;
-  c.group_velocity = out[out_group_velocity];
-  c.curvature = out[out_curvature];
-  c.gamma = out[out_gamma];
-  c.beta = out[out_beta];
-  c.nonresonance1 = out[out_nonresonance1];
-  c.nonresonance2 = out[out_nonresonance2];
-  c.h_tilde_numerator = out[out_h_tilde_numerator];
+  detail::store_linear_outputs(out, c);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   if (std::abs(c.nonresonance1) <= kNonresonanceTolerance * out[out_nonresonance1_scale] ||
       std::abs(c.nonresonance2) <= kNonresonanceTolerance * out[out_nonresonance2_scale]) {
