@@ -36,5 +36,7 @@ if ((${#missing[@]})); then
   apt-get install -y --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+# A unity build of the libraries (LRCHAIN_UNITY_BUILD): a fresh build takes less time; LRCHAIN_UNITY_BUILD=OFF
+# for a build directory you edit and rebuild file by file.
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DLRCHAIN_UNITY_BUILD="${LRCHAIN_UNITY_BUILD:-ON}"
 cmake --build "$BUILD_DIR" -j "$(nproc)"

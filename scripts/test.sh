@@ -4,7 +4,7 @@
 #   1. build/: the fast tests (ctest -L fast), which include the generated bad-input corpus
 #      (ctest -L corpus: every option, config key and input file with bad values, split into parts
 #      that run in parallel);
-#   2. build/: the validation runs (ctest -L validation, long);
+#   2. build/: the validation runs (ctest -L validation, long; two at a time);
 #   3. build-sanitize/: a second build with AddressSanitizer, UndefinedBehaviorSanitizer and
 #      float-cast-overflow (-DLRCHAIN_SANITIZE=ON, -O1 -g, no benchmarks) running the fast tests,
 #      the corpus among them, again (LRCHAIN_SANITIZER=0 skips this stage).
@@ -24,7 +24,8 @@ stage() {  # stage NAME COMMAND...: runs, times (wall and CPU user+sys) and reco
 }
 
 stage "fast tests" ctest --test-dir build -L fast --output-on-failure -j "$jobs"
-stage "validation runs" ctest --test-dir build -L validation --output-on-failure
+# The validation runs are independent programs (most on one thread): two at a time on 2 cores.
+stage "validation runs" ctest --test-dir build -L validation --output-on-failure -j "$jobs"
 
 if [[ "${LRCHAIN_SANITIZER:-1}" == 1 ]]; then
   # Any finding ends the program (-fno-sanitize-recover=all, halt_on_error) with a report on stderr,
@@ -37,7 +38,7 @@ if [[ "${LRCHAIN_SANITIZER:-1}" == 1 ]]; then
   # Without MPI: Open MPI's own allocations are not ours to check (the Release build runs the
   # mpirun sweep test); sweeps there run on threads.
   stage "sanitizer build" cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DLRCHAIN_SANITIZE=ON \
-    -DCMAKE_DISABLE_FIND_PACKAGE_MPI=ON
+    -DCMAKE_DISABLE_FIND_PACKAGE_MPI=ON -DLRCHAIN_UNITY_BUILD="${LRCHAIN_UNITY_BUILD:-ON}"
   stage "sanitizer build" cmake --build build-sanitize -j "$jobs"
   stage "sanitizer: fast tests" \
     ctest --test-dir build-sanitize -L fast --output-on-failure -j "$jobs"

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   lrchain::cli::register_regime(app);
   lrchain::cli::register_simulate(app);
   lrchain::cli::register_dark(app);
+  lrchain::cli::register_bright(app);
   lrchain::cli::register_reproduce(app);
   lrchain::cli::register_sweep(app);
 #ifdef LRCHAIN_WITH_DERIVE

@@ -64,7 +64,8 @@ class CliModelCompiler final : public jobs::ModelCompiler {
 };
 #endif
 
-// The compiler the model loader gets: none in a build without the model compiler.
+}  // namespace
+
 std::shared_ptr<const jobs::ModelCompiler> model_compiler() {
 #ifdef LRCHAIN_WITH_MODEL_COMPILER
   return std::make_shared<const CliModelCompiler>();
@@ -72,8 +73,6 @@ std::shared_ptr<const jobs::ModelCompiler> model_compiler() {
   return nullptr;
 #endif
 }
-
-}  // namespace
 
 void add_model_file_options(CLI::App& cmd, ModelSelection& selection) {
   cmd.add_option_function<std::string>(

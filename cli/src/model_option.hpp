@@ -21,6 +21,10 @@ struct ModelSelection {
   mutable std::shared_ptr<const jobs::ModelSource> source{};
 };
 
+// The run-time model compiler the CLI injects into the model loader (jobs::ModelSource): SIGINT/SIGTERM
+// stop a compile (exit 130/143), the GiNaC fallback is a warning on stderr; null in a build without it.
+std::shared_ptr<const jobs::ModelCompiler> model_compiler();
+
 // Adds --model and --set to `cmd`.
 void add_model_file_options(CLI::App& cmd, ModelSelection& selection);
 

@@ -18,6 +18,7 @@
 #include "lrchain/jobs/sweep/sweep_figure.hpp"
 #include "lrchain/jobs/sweep/sweep_memory.hpp"
 #include "lrchain/jobs/sweep/sweep_run.hpp"
+#include "model_option.hpp"
 #include "options.hpp"
 #include "stop_signals.hpp"
 #ifdef LRCHAIN_WITH_MPI
@@ -37,7 +38,19 @@ struct SweepArguments {
 // Loads and checks everything, runs the sweep (resuming from its results file), prints a JSON
 // summary; an interrupted sweep ends with exit 130/143 after its results so far are written.
 void run_sweep_command(const SweepArguments& a) {
-  jobs::sweep::SweepConfig c = jobs::sweep::load_sweep_config(a.config, jobs::sweep::launcher_ranks_on_this_node());
+  jobs::sweep::SweepConfig c;
+  // The sweep file, its base and the base's model file (a user's file compiled into the model cache).
+  const auto load = [&] { c = jobs::sweep::load_sweep_config(a.config, jobs::sweep::launcher_ranks_on_this_node(), model_compiler()); };
+#ifdef LRCHAIN_WITH_MPI
+  std::unique_ptr<jobs::sweep::MpiSession> mpi;
+  if (jobs::sweep::started_by_mpi_launcher()) mpi = std::make_unique<jobs::sweep::MpiSession>();
+  if (mpi)
+    jobs::sweep::load_on_rank0_first(*mpi, load);  // one compile of the model file, by rank 0
+  else
+    load();
+#else
+  load();
+#endif
   if (!a.output.empty()) {
     if (const std::string problem = jobs::sweep::output_problem(a.output, !c.figure.empty()); !problem.empty())
       throw InvalidParameter("--output", problem);
@@ -54,8 +67,6 @@ void run_sweep_command(const SweepArguments& a) {
   jobs::sweep::SweepOutcome r;
   int rank = 0, ranks = 1;
 #ifdef LRCHAIN_WITH_MPI
-  std::unique_ptr<jobs::sweep::MpiSession> mpi;
-  if (jobs::sweep::started_by_mpi_launcher()) mpi = std::make_unique<jobs::sweep::MpiSession>();
   if (mpi) {
     rank = mpi->rank();
     ranks = mpi->size();
@@ -77,14 +88,7 @@ void run_sweep_command(const SweepArguments& a) {
   }
   nlohmann::json j;
   j["figures"] = nlohmann::json::array();
-  if (!c.figure.empty() && !r.interrupted) {
-    const auto results = jobs::sweep::read_results(c.output, c, job);
-    const auto figure_files = jobs::sweep::sweep_figure_files(c);
-    jobs::sweep::mark_side_files_pending(c, figure_files);
-    j["figures"] = c.figure == "stability" && c.job == "dark continue" ? jobs::sweep::write_stability_figure(c, results)
-                                                                        : jobs::sweep::write_sweep_figures(c, job, results, c.figure);
-    jobs::sweep::record_side_files(c, figure_files);
-  }
+  if (!r.interrupted) j["figures"] = jobs::sweep::write_requested_figure(c, job);
   j["name"] = c.name;
   j["job"] = c.job;
   j["output"] = c.output.string();
@@ -127,7 +131,8 @@ void register_sweep(CLI::App& app) {
   auto a = std::make_shared<SweepArguments>();
   auto* cmd = app.add_subcommand(
       "sweep",
-      "Run one job (bright, drive, modulated, dark continue, regime intervals) over a grid or list of parameter points described in a TOML "
+      "Run one job (bright, drive, modulated, dark continue, regime intervals; bright, ring, dark continue and regime "
+      "intervals of model files) over a grid or list of parameter points described in a TOML "
       "file, in-process on threads (and over MPI ranks under mpirun or srun); results in one HDF5 file "
       "(and a CSV view for small sweeps). A stopped sweep continues from its results file.");
   cmd->add_option("--config", a->config, "the sweep file (docs/sweeps.md)")->required()->type_name("FILE");

@@ -50,14 +50,18 @@ std::string unknown_argument_message(const CLI::App& app) {
   std::vector<const CLI::App*> chain{&app};
   while (!chain.back()->get_subcommands().empty()) chain.push_back(chain.back()->get_subcommands().front());
   std::string word;
-  for (const CLI::App* cmd : chain) {
-    const auto left = cmd->remaining(false);
+  std::size_t at = 0;  // the command that left it over
+  for (; at < chain.size(); ++at) {
+    const auto left = chain[at]->remaining(false);
     if (!left.empty()) {
       word = left.front();
       break;
     }
   }
   if (word.empty()) return {};
+  // A word that is no option, left over above the deepest command, is that command's: in `lrchain
+  // simulat bright` the misspelt word is lrchain's, not `lrchain bright`'s.
+  if (!is_option_word(word)) chain.resize(at + 1);
   const CLI::App& deepest = *chain.back();
   std::string path = "lrchain";
   for (std::size_t i = 1; i < chain.size(); ++i) path += " " + chain[i]->get_name();

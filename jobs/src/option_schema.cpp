@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "lrchain/jobs/bright_breather_schema.hpp"
 #include "lrchain/jobs/coeffs.hpp"
 #include "lrchain/jobs/dark_schema.hpp"
 #include "lrchain/jobs/regime_schema.hpp"
@@ -40,6 +41,7 @@ const std::map<std::string, const std::vector<JobOption>& (*)()>& registry() {
       {"coeffs", &coeffs_options},
       {"bright", &bright_options},
       {"bright --model", &model_bright_options},
+      {"bright breather", &bright_breather::bright_breather_options},
       {"drive", &drive_options},
       {"modulated", &modulated_options},
       {"ring", &ring_options},

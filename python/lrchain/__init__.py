@@ -11,7 +11,9 @@ Submodules: :mod:`lrchain.regime` (focusing intervals, the regime maps of Figs. 
 boundary curves), :mod:`lrchain.simulate` (bright-breather, driven-chain and modulated-wave runs;
 bright-breather and ring runs of any model file), :mod:`lrchain.dark` (exact dark breathers: Newton,
 continuation, Floquet multipliers, evolution; of the resonant chain or, with ``model=``, of any model
-file).
+file), :mod:`lrchain.bright` (exact bright breathers of any model file: Newton, Floquet multipliers).
+:func:`lrchain.load` reads back any file lrchain writes (HDF5 results, sweep results, JSON summaries);
+:func:`lrchain.sweep` runs a sweep file (``lrchain sweep``) and returns its results as an xarray Dataset.
 Invalid input raises :class:`lrchain.InvalidParameterError` (a ``ValueError``) naming the parameter;
 Ctrl-C interrupts a long computation with ``KeyboardInterrupt``.
 """
@@ -20,9 +22,11 @@ from .errors import InputError, InvalidParameterError, NumericalFailure
 from ._lrchain import Params, build_info as _build_info
 from .coefficients import Coefficients, coefficients
 from .model import SHIPPED_MODELS, Model, load_model
-from . import dark, regime, simulate
+from . import bright, dark, regime, simulate
 from . import labelled as _labelled
 from .labelled import open_sweep
+from .reading import load
+from .sweeps import sweep
 from .progress import set_progress
 
 _labelled.attach()  # result.to_xarray() on every result class
@@ -33,7 +37,15 @@ __version__ = _build_info()["version"]
 def provenance():
     """Which lrchain this is, as ``lrchain --version`` says: a dict with ``version``, ``commit``
     (None outside a git checkout), ``compiler``, ``build_type`` and ``version_line`` (the line
-    ``lrchain --version`` prints)."""
+    ``lrchain --version`` prints).
+
+    Example::
+
+        >>> import lrchain
+        >>> info = lrchain.provenance()
+        >>> info["version"] == lrchain.__version__, info["version_line"].startswith("lrchain " + info["version"])
+        (True, True)
+    """
     return _build_info()
 
 
@@ -41,6 +53,8 @@ __all__ = [
     "__version__",
     "provenance",
     "open_sweep",
+    "load",
+    "sweep",
     "set_progress",
     "Params",
     "Model",
@@ -51,6 +65,7 @@ __all__ = [
     "regime",
     "simulate",
     "dark",
+    "bright",
     "InputError",
     "InvalidParameterError",
     "NumericalFailure",

@@ -94,6 +94,15 @@ def coefficients(params, branch, theta, out=None):
     ``out``: an earlier :class:`Coefficients` of an array of the same shape, whose arrays are
     overwritten and returned in a new :class:`Coefficients` instead of allocating new ones (for
     repeated large evaluations: fresh arrays cost page faults comparable to the evaluation itself).
+
+    Example::
+
+        >>> import lrchain, numpy as np
+        >>> c = lrchain.coefficients(lrchain.Params(), "optical", 1.0)
+        >>> round(c.omega, 6), c.regime
+        (2.067381, 'focusing')
+        >>> lrchain.coefficients(lrchain.Params(), "optical", np.linspace(0.5, 3, 4)).regime.tolist()
+        ['focusing', 'focusing', 'defocusing', 'defocusing']
     """
     scalar = np.ndim(theta) == 0
     theta_array = np.asarray(theta, dtype=np.float64)

@@ -124,7 +124,7 @@ def _job(params, model, omega_b, branch, function):
             raise InputError(f"{function}: give params (the resonant chain) or model, not both")
         if omega_b is None:
             raise InputError(f"{function}: omega_b is required with model= (the breather frequency, on the side of "
-                             f"the defocusing band edge where (omega_b - omega) h_tilde > 0)")
+                             f"the defocusing band edge where (omega_b - omega) h > 0)")
         return None, model, omega_b, branch
     return (Params() if params is None else params), None, (2.42 if omega_b is None else omega_b), \
         ("optical" if branch is None else branch)
@@ -137,7 +137,15 @@ def solve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D[
           tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], *, model=None):
     """Newton (least squares) from the seed of eq. (48) (omega_b default 2.42, branch "optical");
     returns :class:`DarkSolution`. With ``model``: the model's seed at its defocusing edge; returns
-    :class:`ModelDarkSolution`."""
+    :class:`ModelDarkSolution`.
+
+    Example::
+
+        >>> import lrchain
+        >>> s = lrchain.dark.solve(lrchain.Params(), omega_b=2.42, sites=11)
+        >>> len(s.x), bool(s.newton_residuals[-1] < 1e-10), bool(s.measures["E_b"] < 1e-8)
+        (11, True, True)
+    """
     params, model, omega_b, branch = _job(params, model, omega_b, branch, "solve")
     if model is not None:
         return _model_solution(python_names(lambda: _lrchain.dark_model_solve(
@@ -156,7 +164,15 @@ def floquet(params=None, omega_b=None, branch=None, center=_D["center"], sites=_
     """Solve, then the Floquet multipliers of the monodromy matrix (from the reversible reduction,
     or integrated over a full period with ``full_monodromy``); returns :class:`DarkSolution` with
     ``floquet`` set. With ``model`` the multipliers always come from the full-period monodromy (the
-    symplectic pairing defect is a check); returns :class:`ModelDarkSolution`."""
+    symplectic pairing defect is a check); returns :class:`ModelDarkSolution`.
+
+    Example::
+
+        >>> import lrchain
+        >>> s = lrchain.dark.floquet(lrchain.Params(), omega_b=2.42, sites=11)
+        >>> s.floquet.kind, len(s.floquet.multipliers), round(s.floquet.max_modulus, 3)
+        ('oscillatory', 44, 1.188)
+    """
     params, model, omega_b, branch = _job(params, model, omega_b, branch, "floquet")
     if model is not None:
         if full_monodromy:
@@ -291,7 +307,15 @@ def continue_branch(params=None, omega_b=None, branch=None, center=_D["center"],
     Floquet multipliers at every point if ``floquet``; returns :class:`Branch`. With ``model``: away
     from the model's edge (into the gap below it, upwards from an edge the branch rises from, as
     ``lrchain dark continue --model``); returns :class:`ModelBranch`. ``progress``: a bar over the
-    points (see :mod:`lrchain.progress`)."""
+    points (see :mod:`lrchain.progress`).
+
+    Example::
+
+        >>> import lrchain
+        >>> b = lrchain.dark.continue_branch(lrchain.Params(), omega_b=2.42, sites=11, points=3, ds=0.05, progress=False)
+        >>> len(b.omega_b), b.stop_reason, b.x.shape
+        (3, 'reached 3 points', (3, 11))
+    """
     params, model, omega_b, branch = _job(params, model, omega_b, branch, "continue_branch")
     if model is not None:
         with Bar("dark-breather branch", progress, unit="point") as bar:
@@ -385,20 +409,31 @@ class Evolution:
 @renamed("dark")
 @real_numbers
 def evolve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
-           tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], t_end=None, samples=_D["samples"], *, model=None):
+           tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], t_end=None, samples=_D["samples"], *, model=None,
+           progress=None):
     """Solve, then integrate from Z(0) over floor(t_end / T_b) periods (default: 10 periods),
     sampling every site ``samples`` times per period for the position measure; returns
     :class:`Evolution` (with ``model``: :class:`ModelEvolution`). Ctrl-C interrupts it with
-    ``KeyboardInterrupt``."""
+    ``KeyboardInterrupt``. ``progress``: a bar over the periods (see :mod:`lrchain.progress`).
+
+    Example::
+
+        >>> import lrchain, math
+        >>> e = lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=11, t_end=2 * 2 * math.pi / 2.42, progress=False)
+        >>> len(e.t), e.x.shape, bool(e.E_b.max() < 1e-8)
+        (2, (3, 11), True)
+    """
     params, model, omega_b, branch = _job(params, model, omega_b, branch, "evolve")
     if t_end is None:
         t_end = 10 * 2 * np.pi / omega_b
     if model is not None:
-        d = _edge(python_names(lambda: _lrchain.dark_model_evolve(
-            model, omega_b, branch, center, sites, mode, tolerance, max_iterations, t_end, samples)))
+        with Bar("dark-breather evolution", progress) as bar:
+            d = _edge(python_names(lambda: _lrchain.dark_model_evolve(
+                model, omega_b, branch, center, sites, mode, tolerance, max_iterations, t_end, samples, bar.callback)))
         return ModelEvolution(**d)
-    d = python_names(lambda: _lrchain.dark_evolve(params, omega_b, branch, center, sites, mode, tolerance,
-                                                  max_iterations, t_end, samples))
+    with Bar("dark-breather evolution", progress) as bar:
+        d = python_names(lambda: _lrchain.dark_evolve(params, omega_b, branch, center, sites, mode, tolerance,
+                                                      max_iterations, t_end, samples, bar.callback))
     return Evolution(params=params, **d)
 
 

@@ -22,6 +22,8 @@ file's run adds lattice_code).
   :class:`~lrchain.dark.ModelEvolution` (the same with ``--model``): the profiles ``z`` in the
   lattice's variables and the band edge as root attributes (docs/dark-models.md).
 
+:func:`lrchain.load` reads any of these files back into its result class (:mod:`lrchain.reading`).
+
 The file is written under a temporary name and renamed into place; ``path`` must be a new name or an
 existing regular file (an existing directory, FIFO, device or socket raises
 :class:`lrchain.InputError` and is left as it is).

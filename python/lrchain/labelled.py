@@ -348,7 +348,20 @@ def open_sweep(path):
     coordinates along it. ``status`` (0 missing, 1 ok, 2 blew_up, 3 numerical_failure, 4 invalid),
     ``reason`` and ``wall_seconds`` come along; the file's attributes (lrchain version, commit,
     date, the sweep and base configs' text, the job) become the Dataset's. Needs h5py (Debian
-    ``python3-h5py``)."""
+    ``python3-h5py``).
+
+    Example::
+
+        >>> import lrchain, pathlib, tempfile
+        >>> folder = pathlib.Path(tempfile.mkdtemp())
+        >>> _ = (folder / "base.toml").write_text('experiment = "regime intervals"\\n')
+        >>> _ = (folder / "rho.toml").write_text(f'job = "regime intervals"\\nbase = "base.toml"\\noutput = "{folder}/rho.h5"\\n'
+        ...                                      '[[axis]]\\nparameter = "model.rho"\\nvalues = [0.2, 5.0]\\n')
+        >>> _ = lrchain.sweep(folder / "rho.toml", threads=1, progress=False)  # or: lrchain sweep --config rho.toml
+        >>> ds = lrchain.open_sweep(folder / "rho.h5")
+        >>> ds.optical_intervals.dims, ds["model.rho"].values.tolist(), ds.status.values.tolist()
+        (('model.rho',), [0.2, 5.0], [1, 1])
+    """
     import h5py
 
     with h5py.File(path, "r") as f:

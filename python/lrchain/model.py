@@ -58,6 +58,16 @@ def load_model(source, **parameters):
     and RuntimeError when the C++ compiler cannot be run. A compilation that takes over half a second
     says so on standard error, and how long it took, when progress is shown (interactive use, or
     ``lrchain.set_progress(True)``; ``set_progress(False)`` silences it; :mod:`lrchain.progress`).
+
+    Example::
+
+        >>> import lrchain
+        >>> kg = lrchain.load_model("klein_gordon", w0=1.2)
+        >>> kg
+        Model('klein_gordon', C=0.1, w0=1.2, a=0.25, b=0.5)
+        >>> import math  # omega(pi) = sqrt(w0^2 + 4 C), the chain's linear dispersion at the band edge
+        >>> round(lrchain.coefficients(kg, kg.branches[0], math.pi).omega, 6), round(math.sqrt(1.2**2 + 4 * 0.1), 6)
+        (1.356466, 1.356466)
     """
     with _CompileNotice(os.fspath(source), None):
         return _lrchain.load_model(os.fspath(source), **parameters)

@@ -1,10 +1,10 @@
 """Progress of long calls: a bar with rate and ETA when a person is watching, silence otherwise.
 
-Lattice runs (``lrchain.simulate.bright``, ``drive``, ``modulated``), dark-breather continuation
-(``lrchain.dark.continue_branch``) and model compilation (``lrchain.load_model`` of a new file) take
-``progress=``: True shows progress, False keeps quiet, None (the default) shows it when the call runs
-interactively (a Jupyter notebook, or a terminal on standard error) and the default set by
-:func:`set_progress` allows it. The bar is tqdm's (Debian ``python3-tqdm``: a widget in a notebook,
+Lattice runs (``lrchain.simulate.bright``, ``drive``, ``modulated``, ``ring``; ``bright`` of a model
+file too), dark-breather continuation (``lrchain.dark.continue_branch``), sweeps (``lrchain.sweep``)
+and model compilation (``lrchain.load_model`` of a new file) take ``progress=``: True shows
+progress, False keeps quiet, None (the default) shows it when the call runs interactively (a Jupyter
+notebook, or a terminal on standard error) and the default set by :func:`set_progress` allows it. The bar is tqdm's (Debian ``python3-tqdm``: a widget in a notebook,
 a text bar in a terminal); without tqdm a line on standard error says what runs and how long it took.
 """
 
@@ -16,7 +16,14 @@ _default = None  # None: automatic; True/False: set by set_progress
 
 def set_progress(enabled):
     """Sets the default of every call's ``progress=``: True (always), False (never) or None (when
-    interactive)."""
+    interactive).
+
+    Example::
+
+        >>> import lrchain
+        >>> lrchain.set_progress(False)  # no progress anywhere, also in a notebook
+        >>> lrchain.set_progress(None)   # the default again: shown when interactive
+    """
     global _default
     if enabled not in (True, False, None):
         raise ValueError("set_progress: enabled must be True, False or None")
@@ -48,17 +55,13 @@ class Bar:
     the C++ jobs call (at most every 0.2 s). Use as a context manager; ``callback`` is None when
     progress is off, so that the job runs without any call into Python."""
 
-    def __init__(self, what, progress=None, unit="%", fractions=True):
-        """``fractions=False``: the call reports no fractions (a model-file run); a line says when it
-        starts and how long it took."""
+    def __init__(self, what, progress=None, unit="%"):
         self.what = what
         self.on = enabled(progress)
         self._bar = None
         self._start = time.monotonic()
         if self.on:
             try:
-                if not fractions:
-                    raise ImportError
                 from tqdm.auto import tqdm
             except ImportError:
                 print(f"lrchain: {what} ...", file=sys.stderr, flush=True)

@@ -67,7 +67,14 @@ def intervals(params, branch=None, samples=_INTERVALS["samples"], tolerance=_INT
 
     ``params`` is an :class:`lrchain.Params` (the paper's resonant chain) or an :class:`lrchain.Model`
     (any model file, e.g. ``lrchain.load_model("fput")``); ``branch`` defaults to "optical" (or a
-    model's only branch). The same job as ``lrchain regime intervals [--model FILE]``."""
+    model's only branch). The same job as ``lrchain regime intervals [--model FILE]``.
+
+    Example::
+
+        >>> import lrchain
+        >>> lrchain.regime.intervals(lrchain.Params(), "optical")
+        Intervals([0.000000, 1.891589])
+    """
     d = _lrchain.regime_structure(params, branch or "", int(samples), tolerance)
     d.pop("branch")
     return Intervals(**d)
@@ -141,7 +148,15 @@ def theta_rho_map(params, branch, rho=None, theta=None, rho_log=_MAP["rho_log"])
     ``rho`` = (lo, hi) or (lo, hi, n) with 0 < lo, by default (0.01, 30) on the optical branch and
     (0.01, 2.5) on the acoustic one (as ``lrchain regime map``), 600 points; ``theta`` = (lo, hi, n)
     inside (0, pi] (default (pi/600, pi, 600)); ``rho_log`` spaces rho geometrically. ``params`` may be
-    an :class:`lrchain.Model` with a parameter rho (see :func:`theta_parameter_map`)."""
+    an :class:`lrchain.Model` with a parameter rho (see :func:`theta_parameter_map`).
+
+    Example::
+
+        >>> import lrchain, math
+        >>> m = lrchain.regime.theta_rho_map(lrchain.Params(), "optical", rho=(0.1, 10, 20), theta=(0.1, math.pi, 20))
+        >>> m.values.shape, float(m.rho[0]), bool(m.theta[-1] == math.pi)
+        ((20, 20), 0.1, True)
+    """
     return _map(params, "theta-rho", branch, "rho", rho, theta, rho_log, "rho", "theta", "rho", "theta")
 
 
@@ -154,7 +169,16 @@ def theta_parameter_map(model, branch, axis=None, x=None, theta=None):
 
     ``x`` = (lo, hi) or (lo, hi, n) inside the parameter's range (default: its declared range when
     bounded, open ends moved in by 1e-3 of its width; rho of the resonant chain as Fig. 2), 600
-    points; ``theta`` as in :func:`theta_rho_map`. The map's ``x_name`` is the parameter's name."""
+    points; ``theta`` as in :func:`theta_rho_map`. The map's ``x_name`` is the parameter's name.
+
+    Example::
+
+        >>> import lrchain, math
+        >>> m = lrchain.regime.theta_parameter_map(lrchain.load_model("fput"), "acoustic", axis="b", x=(0.1, 2, 20),
+        ...                                        theta=(0.1, math.pi, 20))
+        >>> m.x_name, m.values.shape
+        ('b', (20, 20))
+    """
     return _map(model, "theta-parameter", branch, axis or "", x, theta, False, "x", "theta", None, "theta")
 
 
@@ -165,13 +189,28 @@ def delta0_omega_map(params, branch, delta0=None, omega=None, delta0_log=_MAP["d
     band at delta0_i are OUTSIDE. ``delta0`` = (lo, hi) or (lo, hi, n), default (0.001, 1, 600);
     ``omega`` = (lo, hi) or (lo, hi, n), by default the branch's band over the delta0 range (optical
     [0.98 omega_lo, 1.02 omega_hi], acoustic [0, 1.02 omega_hi], as ``lrchain regime map --plane
-    delta0-omega``), 600 points; each end within [0, twice the top of the optical band]."""
+    delta0-omega``), 600 points; each end within [0, twice the top of the optical band].
+
+    Example::
+
+        >>> import lrchain
+        >>> m = lrchain.regime.delta0_omega_map(lrchain.Params(), "optical", delta0=(0.1, 1, 20), omega=(2.0, 3.0, 20))
+        >>> m.values.shape, int((m.values == lrchain.regime.OUTSIDE).sum()) > 0
+        ((20, 20), True)
+    """
     return _map(params, "delta0-omega", branch, "", delta0, omega, delta0_log, "delta0", "omega", "delta0", "omega")
 
 
 def map_defaults(params, branch):
     """The default ranges of the maps at ``params`` on ``branch``: {"rho": (lo, hi), "delta0": ...,
-    "omega": ...} (those of ``lrchain regime map``)."""
+    "omega": ...} (those of ``lrchain regime map``).
+
+    Example::
+
+        >>> import lrchain
+        >>> lrchain.regime.map_defaults(lrchain.Params(), "optical")["rho"]
+        (0.01, 30.0)
+    """
     return {k: tuple(v) for k, v in _lrchain.regime_map_defaults(params, branch).items()}
 
 
@@ -197,7 +236,15 @@ def boundary_curves(params, branch, axis=None, lo=None, hi=None, omega_plane=_CU
     ``params`` is an :class:`lrchain.Params` (``axis`` "rho", the default, or "delta0") or an
     :class:`lrchain.Model` (any of its parameters; default as :func:`theta_parameter_map`). Without
     ``lo``/``hi`` the range is the map's: rho (0.01, 30) optical, (0.01, 2.5) acoustic; delta0
-    (0.001, 1); a model's parameter its declared range."""
+    (0.001, 1); a model's parameter its declared range.
+
+    Example::
+
+        >>> import lrchain
+        >>> curves = lrchain.regime.boundary_curves(lrchain.Params(), "optical", lo=0.1, hi=2)
+        >>> [c.cause for c in curves], curves[0].points.shape[1]
+        (['curvature_zero'], 2)
+    """
     if (lo is None) != (hi is None):
         raise TypeError("boundary_curves() takes both lo and hi, or neither (the map's default range)")
     span = None if lo is None else (lo, hi)
@@ -212,7 +259,15 @@ def thresholds(model=None, scan=None, branch=None, axis=None, axis_range=None):
     printed values), else the events along ``axis`` of ``model`` (an :class:`lrchain.Model`) in
     ``axis_range`` (lo, hi) on ``branch`` (default: every branch). ``scan`` points per scan (default:
     built-in 300-400; a model 300). The same job and JSON as ``lrchain regime thresholds``: a dict
-    with "scenarios" (paper) or "model" and "scans", each scan with its "events"."""
+    with "scenarios" (paper) or "model" and "scans", each scan with its "events".
+
+    Example::
+
+        >>> import lrchain
+        >>> t = lrchain.regime.thresholds(lrchain.load_model("fput"), scan=50, axis="b", axis_range=(0.1, 2))
+        >>> [(s["axis"], s["branch"], len(s["events"])) for s in t["scans"]]
+        [('b', 'acoustic', 0)]
+    """
     text = _lrchain.regime_thresholds(model, int(scan or 0), branch or "", axis or "",
                                       None if axis_range is None else (axis_range[0], axis_range[1]))
     return json.loads(text)
@@ -220,5 +275,13 @@ def thresholds(model=None, scan=None, branch=None, axis=None, axis_range=None):
 
 @real_numbers
 def frequency_band(params, branch):
-    """(lo, hi) of the linear band: optical [omega_+(0), omega_+(pi)], acoustic [0, omega_-(pi)]."""
+    """(lo, hi) of the linear band: optical [omega_+(0), omega_+(pi)], acoustic [0, omega_-(pi)].
+
+    Example::
+
+        >>> import lrchain
+        >>> lo, hi = lrchain.regime.frequency_band(lrchain.Params(), "optical")
+        >>> round(lo, 6), round(hi, 6)
+        (2.0, 2.44949)
+    """
     return _lrchain.frequency_band(params, branch)

@@ -10,6 +10,8 @@
 
 Each run integrates in C++ without holding the GIL; Ctrl-C stops it at the next step (model-file
 runs with the symplectic stepper and ``ring``: at the next sample) and raises ``KeyboardInterrupt``.
+Every run takes ``progress=``: a bar with rate and ETA when interactive, or True/False
+(:mod:`lrchain.progress`; ``ring``'s bar moves after each plane wave and after the packet).
 Keyword arguments left out (or None)
 take the library's defaults, the same as the ``lrchain simulate`` command's, and the keywords are
 its options' names (``sites`` for ``--sites``, ``switch_off_time`` for ``--switch-off-time``, ...).
@@ -156,6 +158,17 @@ def bright(params=None, branch=_BRIGHT["branch"]["default"], theta=_BRIGHT["thet
     linear mode) and ``ansatz_ends`` (emitting ends, integrated with rkf78); the other keywords are
     refused as the command refuses them. Ctrl-C stops the model run at its next sample (emitting
     ends: its next step) with ``KeyboardInterrupt``. Returns :class:`ModelBrightResult`.
+
+    Example::
+
+        >>> import lrchain, math
+        >>> r = lrchain.simulate.bright(lrchain.Params(), "optical", math.pi / 2, sites=41, periods=1, progress=False)
+        >>> len(r.t), r.energy_density.values.shape
+        (5, (2, 42))
+        >>> fput = lrchain.load_model("fput")
+        >>> m = lrchain.simulate.bright(fput, "acoustic", math.pi / 2, sites=41, periods=1, progress=False)
+        >>> type(m).__name__, len(m.E)
+        ('ModelBrightResult', 1)
     """
     if model is None and isinstance(params, Model):  # bright(lrchain.load_model(...), ...)
         model, params = params, None
@@ -173,8 +186,8 @@ def bright(params=None, branch=_BRIGHT["branch"]["default"], theta=_BRIGHT["thet
                            ansatz_ends=ansatz_ends)
         if detuning is not None:
             options["detuning"] = detuning
-        with Bar(f"bright run of {model.name}", progress, fractions=False):
-            out = python_names(lambda: _lrchain.simulate_model_bright(model, branch, options))
+        with Bar(f"bright run of {model.name}", progress) as bar:
+            out = python_names(lambda: _lrchain.simulate_model_bright(model, branch, options, bar.callback))
         return _model_bright_result(out)
     options = _options(params=params, branch=branch, theta=theta, n0=n0, sites=sites, periods=periods,
                        sample_every=sample_every, spacetime_every=spacetime_every,
@@ -280,7 +293,7 @@ class RingResult:
 @documented(("ring", "Options (None: the default; the job's schema, as ``lrchain simulate ring --help``):"))
 @real_numbers
 def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, steps_per_period=None,
-         packet_amplitude=None, packet_width=None):
+         packet_amplitude=None, packet_width=None, progress=None):
     """``lrchain simulate ring --model FILE``: plane waves of amplitude U (``amplitudes``, default
     (0.02, 0.01)) on a periodic ring of ``sites`` (default the smallest >= 8 with theta on it),
     their frequency measured over ``periods`` carrier periods (default 400, ``steps_per_period`` 80
@@ -288,12 +301,22 @@ def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, ste
     a tenth of the smallest U; ``packet_width`` 24 sites) whose speed is compared with c.
     ``model`` is an :class:`lrchain.Model`. Ctrl-C stops it at its next sample (8 per carrier
     period) with ``KeyboardInterrupt``. Returns
-    :class:`RingResult`."""
+    :class:`RingResult`.
+
+    Example::
+
+        >>> import lrchain, math
+        >>> r = lrchain.simulate.ring(lrchain.load_model("fput"), "acoustic", math.pi / 2, periods=20, packet_width=8,
+        ...                           progress=False)
+        >>> r.amplitude.tolist(), bool((r.relative_disagreement < 1e-3).all())
+        ([0.02, 0.01], True)
+    """
     checked_model(model)
     options = _options(theta=theta, amplitudes=None if amplitudes is None else [float(a) for a in amplitudes],
                        sites=sites, periods=periods, steps_per_period=steps_per_period,
                        packet_amplitude=packet_amplitude, packet_width=packet_width)
-    out = python_names(lambda: _lrchain.simulate_ring(model, branch, options))
+    with Bar(f"ring run of {model.name}", progress) as bar:
+        out = python_names(lambda: _lrchain.simulate_ring(model, branch, options, bar.callback))
     series = out["record"]["series"]
     names = list(series)
     return RingResult(amplitude=out["amplitude"], measured_frequency=out["measured_frequency"],
@@ -341,7 +364,15 @@ def drive(params=None, *, sites=None, amplitude=None, omega0=None, ramp_rate=Non
     bead driven by A0 sin(omega0 t) chi(t). Library defaults: params rho=10 (alpha=3/2,
     delta0=4/9, kappa=1), sites=2000, amplitude=0.06, omega0=2.1, ramp_rate=0.046,
     switch_off_time=700 (t_m of chi(t)), t_end=2400, sample_every=1, spacetime_every=2, stepper
-    rkf78 at 1e-10. Returns :class:`DriveResult`."""
+    rkf78 at 1e-10. Returns :class:`DriveResult`.
+
+    Example::
+
+        >>> import lrchain
+        >>> r = lrchain.simulate.drive(sites=50, t_end=4, switch_off_time=2, progress=False)
+        >>> r.t.tolist()
+        [0.0, 1.0, 2.0, 3.0, 4.0]
+    """
     options = _options(params=params, sites=sites, amplitude=amplitude, omega0=omega0, ramp_rate=ramp_rate,
                        switch_off_time=switch_off_time, t_end=t_end, sample_every=sample_every, spacetime_every=spacetime_every,
                        snapshot_times=None if snapshot_times is None else list(snapshot_times),
@@ -393,7 +424,15 @@ def modulated(params=None, *, sites=None, epsilon=None, theta_waves=None, modula
     """Periodic chain of ``sites`` sites (``lrchain simulate modulated``) started from the modulated
     acoustic wave (eq. (43)). Library defaults: params delta0=0.27, rho=0.32, sites=401,
     epsilon=0.03, theta_waves=252, modulation_depth=0.01 (b of eq. (43)), t_end=45000,
-    sample_every=10, symplectic stepper with dt=0.05. Returns :class:`ModulatedResult`."""
+    sample_every=10, symplectic stepper with dt=0.05. Returns :class:`ModulatedResult`.
+
+    Example::
+
+        >>> import lrchain
+        >>> r = lrchain.simulate.modulated(sites=21, theta_waves=13, t_end=4, sample_every=1, progress=False)
+        >>> r.t.tolist(), r.energy_density.values.shape[1]
+        ([0.0, 1.0, 2.0, 3.0, 4.0], 21)
+    """
     options = _options(params=params, sites=sites, epsilon=epsilon, theta_waves=theta_waves,
                        modulation_depth=modulation_depth,
                        t_end=t_end, sample_every=sample_every,

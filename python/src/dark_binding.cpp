@@ -69,10 +69,11 @@ py::dict continue_job(const Params& p, double omega_b, const std::string& branch
 }
 
 py::dict evolve_job(const Params& p, double omega_b, const std::string& branch, const std::string& center, double sites,
-                    const std::string& mode, double tolerance, double max_iterations, double t_end, double samples) {
+                    const std::string& mode, double tolerance, double max_iterations, double t_end, double samples,
+                    const py::object& progress) {
   DarkConfig c = chain_config(DarkStep::evolve, p, omega_b, branch, center, sites, mode, tolerance, max_iterations);
   set_evolve_keywords(c, t_end, samples);
-  const DarkResult r = run_dark_job(c);
+  const DarkResult r = run_dark_job(c, progress);
   const sim::dark::DarkEvolution& e = r.evolution;
   const py::ssize_t N = e.sites;
   const py::ssize_t rows = static_cast<py::ssize_t>(e.snapshots.size());
@@ -115,7 +116,7 @@ void register_dark(py::module_& m) {
         py::arg("progress") = py::none());
   m.def("dark_evolve", &evolve_job, py::arg("params"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("t_end"),
-        py::arg("samples"));
+        py::arg("samples"), py::arg("progress") = py::none());
 }
 
 }  // namespace lrchain::python

@@ -55,10 +55,12 @@ DarkResult run_dark_job(const DarkConfig& c, const pybind11::object& progress) {
   hooks.newton_progress = [stop = guard.flag()](const sim::dark::NewtonRecord&) {
     if (stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
   };
-  if (const auto report = progress_hook.hook())
+  if (const auto report = progress_hook.hook()) {
     hooks.on_point = [report, done = Index(0), points = c.points](const sim::dark::BranchPoint&) mutable {
       report(double(++done) / double(points));
     };
+    hooks.evolution_progress = report;
+  }
   DarkResult r = guard.run([&] { return run(c, hooks); });
   if (!r.newton.converged) throw NumericalFailure(*failure(r));
   return r;

@@ -24,7 +24,8 @@ Index integer_keyword(double value, const std::string& keyword, std::int64_t lea
 
 // Validates `c` and runs it without the GIL (Ctrl-C: KeyboardInterrupt, also inside an integration);
 // NumericalFailure with Newton's history when Newton does not converge.
-// `progress(fraction)` (None: none) is called after every branch point with points done / points.
+// `progress(fraction)` (None: none) is called after every branch point with points done / points, and
+// after every period of an evolution with periods done / periods.
 jobs::dark::DarkResult run_dark_job(const jobs::dark::DarkConfig& c, const pybind11::object& progress = pybind11::none());
 
 }  // namespace lrchain::python

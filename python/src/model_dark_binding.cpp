@@ -72,7 +72,7 @@ py::object count_or_none(const std::optional<Index>& count) {
   return count ? py::object(py::int_(*count)) : py::object(py::none());
 }
 
-py::dict solve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
+py::dict model_dark_solve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
                    double sites, const std::string& mode, double tolerance, double max_iterations, bool floquet) {
   const DarkConfig c = model_config(floquet ? DarkStep::floquet : DarkStep::solve, loaded, omega_b, branch, center,
                                     sites, mode, tolerance, max_iterations);
@@ -88,7 +88,7 @@ py::dict solve_job(const LoadedModel& loaded, double omega_b, std::optional<std:
 }
 
 // Solve, then continue away from the edge as `lrchain dark continue --model` does: into the gap
-// (omega_b falling) below an edge, rising above one (h_tilde > 0), within [omega_min, omega_max].
+// (omega_b falling) below an edge, rising above one (h > 0), within [omega_min, omega_max].
 py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch,
                       const std::string& center, double sites, const std::string& mode, double tolerance,
                       double max_iterations, double points, double ds, double omega_min, std::optional<double> omega_max,
@@ -115,10 +115,10 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
 // Solve, then integrate from Z(0) over floor(t_end / T_b) periods (`lrchain dark evolve --model`).
 py::dict evolve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
                     double sites, const std::string& mode, double tolerance, double max_iterations, double t_end,
-                    double samples) {
+                    double samples, const py::object& progress) {
   DarkConfig c = model_config(DarkStep::evolve, loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations);
   set_evolve_keywords(c, t_end, samples);
-  const DarkResult r = run_dark_job(c);
+  const DarkResult r = run_dark_job(c, progress);
   std::vector<const Eigen::VectorXd*> rows;
   for (const auto& z : r.evolution.snapshots) rows.push_back(&z);
   py::dict d = edge_dict(loaded, r);
@@ -130,7 +130,7 @@ py::dict evolve_job(const LoadedModel& loaded, double omega_b, std::optional<std
 }  // namespace
 
 void register_model_dark(py::module_& m) {
-  m.def("dark_model_solve", &solve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
+  m.def("dark_model_solve", &model_dark_solve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("floquet"));
   m.def("dark_model_continue", &continue_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"),
         py::arg("center"), py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"),
@@ -138,7 +138,7 @@ void register_model_dark(py::module_& m) {
         py::arg("progress") = py::none());
   m.def("dark_model_evolve", &evolve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("t_end"),
-        py::arg("samples"));
+        py::arg("samples"), py::arg("progress") = py::none());
 }
 
 }  // namespace lrchain::python

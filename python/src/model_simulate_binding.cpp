@@ -1,13 +1,14 @@
 // lrchain.simulate.bright(model=...) and lrchain.simulate.ring: lattice runs of any model file on its
 // generated lattice code: the jobs of jobs/simulate/model_simulate_job.hpp, with the checks of
 // `lrchain simulate bright|ring --model FILE`, run without the GIL (Ctrl-C raises KeyboardInterrupt
-// during the integration); records as numpy arrays.
+// during the integration; `progress(fraction)` follows it); records as numpy arrays.
 #include <nlohmann/json.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
 #include "interrupt_guard.hpp"
+#include "progress_hook.hpp"
 #include "loaded_model.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/simulate/model_simulate_job.hpp"
@@ -26,7 +27,8 @@ using namespace lrchain::sim;
 // The bright breather of a model (the checks and order of `lrchain simulate bright --model`):
 // branch, options, theta on the branch, focusing and detuning, then the run. options: theta,
 // detuning, n0, sites (2N + 1), periods, sample_every, dt, ansatz_ends.
-py::dict model_bright(const LoadedModel& loaded, const std::string& branch, const py::dict& options) {
+py::dict model_bright(const LoadedModel& loaded, const std::string& branch, const py::dict& options,
+                      const py::object& progress) {
   const Model& model = loaded.model;
   ModelBrightConfig c;
   std::optional<double> detuning;
@@ -41,6 +43,8 @@ py::dict model_bright(const LoadedModel& loaded, const std::string& branch, cons
   jobs::prepare(model, c, branch);
   const lrchain_lattice_kernels& kernels = lattice_kernels(loaded);
   const jobs::ModelRunLabel label{model_summary_json(loaded), ""};
+  ProgressHook progress_hook(progress);  // `progress(fraction)` or None: the run's share done
+  c.progress = progress_hook.hook();
   InterruptGuard guard;  // Ctrl-C: the run stops at its next step boundary, KeyboardInterrupt follows
   const auto report = guard.run([&] { return jobs::simulate_model_bright(model, kernels, c, label, {}, guard.flag()); });
   const ModelBrightResult& r = report.result;
@@ -54,7 +58,8 @@ py::dict model_bright(const LoadedModel& loaded, const std::string& branch, cons
 
 // Plane waves and a packet on a periodic ring (the checks and order of `lrchain simulate ring`).
 // options: theta, amplitudes, sites, periods, steps_per_period, packet_amplitude, packet_width.
-py::dict model_ring(const LoadedModel& loaded, const std::string& branch, const py::dict& options) {
+py::dict model_ring(const LoadedModel& loaded, const std::string& branch, const py::dict& options,
+                    const py::object& progress) {
   const Model& model = loaded.model;
   RingRunConfig c;
   std::map<std::string, OptionTarget> t{{"theta", &c.theta},
@@ -68,6 +73,8 @@ py::dict model_ring(const LoadedModel& loaded, const std::string& branch, const 
   jobs::prepare(model, c, branch);
   const lrchain_lattice_kernels& kernels = lattice_kernels(loaded);
   const jobs::ModelRunLabel label{model_summary_json(loaded), ""};
+  ProgressHook progress_hook(progress);  // `progress(fraction)` or None: the run's share done
+  c.progress = progress_hook.hook();
   InterruptGuard guard;  // Ctrl-C: the run stops at its next sample, KeyboardInterrupt follows
   const auto report = guard.run([&] { return jobs::simulate_ring(model, kernels, c, label, {}, guard.flag()); });
   const RingRunResult& r = report.result;
@@ -99,8 +106,10 @@ py::dict model_ring(const LoadedModel& loaded, const std::string& branch, const 
 }  // namespace
 
 void register_model_simulate(py::module_& m) {
-  m.def("simulate_model_bright", &model_bright, py::arg("model"), py::arg("branch"), py::arg("options"));
-  m.def("simulate_ring", &model_ring, py::arg("model"), py::arg("branch"), py::arg("options"));
+  m.def("simulate_model_bright", &model_bright, py::arg("model"), py::arg("branch"), py::arg("options"),
+        py::arg("progress") = py::none());
+  m.def("simulate_ring", &model_ring, py::arg("model"), py::arg("branch"), py::arg("options"),
+        py::arg("progress") = py::none());
 }
 
 }  // namespace lrchain::python

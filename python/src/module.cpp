@@ -12,8 +12,10 @@ PYBIND11_MODULE(_lrchain, m) {
   lrchain::python::register_dark(m);
   lrchain::python::register_model_simulate(m);
   lrchain::python::register_model_dark(m);
+  lrchain::python::register_bright_breather(m);
   lrchain::python::register_renamed_options(m);
   lrchain::python::register_option_caps(m);
   lrchain::python::register_real_numbers(m);
   lrchain::python::register_build_info(m);
+  lrchain::python::register_sweep(m);
 }

@@ -184,6 +184,7 @@ ModelBrightResult run_model_bright(const Model& model, const lrchain_lattice_ker
     return r.mean_flow ? now - U[f * stride + i + offset - 1] : now;
   };
   const auto observe = [&](const State& x, double t) {
+    if (c.progress) c.progress(std::min(1.0, t / t_end));
     chain.displacements_of(x.data(), lattice.data());
     ansatz_displacements(t, ua.data(), va.data());
     std::fill(error.begin(), error.end(), 0.0);

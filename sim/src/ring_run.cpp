@@ -211,6 +211,24 @@ RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernel
   const std::vector<double> parameters = lattice_parameters(model);
   r.sites = ring_sites(c);
   r.mode_number = mode_number_on(c.theta, r.sites);
+  // The packet ring: a multiple of the plane-wave ring with >= 40 widths; the packet travels a
+  // quarter of it (at most 4000 carrier periods).
+  r.packet_width = c.packet_width;
+  double smallest = c.amplitudes.front();
+  for (double U : c.amplitudes) smallest = std::min(smallest, U);
+  r.packet_amplitude = c.packet_amplitude.value_or(smallest / 10);
+  const long multiple = std::max(1L, long(std::ceil(40 * c.packet_width / double(r.sites))));
+  r.packet_sites = multiple * r.sites;
+  const double period = 2 * std::numbers::pi / r.omega;
+  r.standing = std::abs(r.group_velocity) <= kZeroGroupVelocity * std::max(1.0, r.omega);
+  r.packet_duration = !r.standing ? std::min(0.25 * double(r.packet_sites) / std::abs(r.group_velocity),
+                                                                4000 * period)
+                                                     : 4000 * period;
+  // Progress: the share of lattice steps (sites x steps) done; the packet runs at half the steps per period.
+  const double wave_work = double(r.sites) * c.periods * c.steps_per_period;
+  const double total_work = double(c.amplitudes.size()) * wave_work +
+                            double(r.packet_sites) * r.packet_duration / period * c.steps_per_period / 2;
+  double work_done = 0;
   for (double U : c.amplitudes) {
     RingAmplitude a;
     a.amplitude = U;
@@ -235,23 +253,13 @@ RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernel
                               "energy in the carrier mode fell to {:.4f} < {:g}; modulational instability)",
                               U, *a.broke_up_at, a.least_carrier_fraction, kPlaneWaveCarrierFraction);
     r.amplitudes.push_back(a);
+    work_done += wave_work;
+    if (c.progress) c.progress(work_done / total_work);
   }
-  // The packet ring: a multiple of the plane-wave ring with >= 40 widths; the packet travels a
-  // quarter of it (at most 4000 carrier periods).
-  r.packet_width = c.packet_width;
-  double smallest = c.amplitudes.front();
-  for (double U : c.amplitudes) smallest = std::min(smallest, U);
-  r.packet_amplitude = c.packet_amplitude.value_or(smallest / 10);
-  const long multiple = std::max(1L, long(std::ceil(40 * c.packet_width / double(r.sites))));
-  r.packet_sites = multiple * r.sites;
-  const double period = 2 * std::numbers::pi / r.omega;
-  r.standing = std::abs(r.group_velocity) <= kZeroGroupVelocity * std::max(1.0, r.omega);
-  r.packet_duration = !r.standing ? std::min(0.25 * double(r.packet_sites) / std::abs(r.group_velocity),
-                                                                4000 * period)
-                                                     : 4000 * period;
   r.packet_speed = measure_packet_speed(kernels, parameters, r.mode, r.standing ? 0.0 : r.group_velocity, r.packet_sites,
                                         multiple * r.mode_number, r.packet_amplitude, r.packet_width,
                                         r.packet_duration, c.steps_per_period / 2, r.record.series, c.stop);
+  if (c.progress) c.progress(1.0);
   if (!r.standing)
     r.packet_relative_disagreement = std::abs(r.packet_speed - r.group_velocity) / std::abs(r.group_velocity);
   return r;

@@ -41,6 +41,10 @@ const std::map<std::string, std::vector<std::string>>& base_commands() {
       {"dark floquet", {"--omega-b", "2.42", "--sites", "21", "--quiet", "--out", "@OUT@"}},
       {"dark continue", {"--omega-b", "2.42", "--sites", "21", "--points", "2", "--quiet", "--out", "@OUT@"}},
       {"dark evolve", {"--omega-b", "2.42", "--sites", "21", "--t-end", "3", "--quiet", "--out", "@OUT@"}},
+      {"bright solve", {"--model", "klein_gordon", "--omega-b", "1.3", "--sites", "21", "--quiet", "--out", "@OUT@"}},
+      {"bright floquet", {"--model", "klein_gordon", "--omega-b", "1.3", "--sites", "21", "--quiet", "--out", "@OUT@"}},
+      {"bright continue",
+       {"--model", "klein_gordon", "--omega-b", "1.3", "--sites", "21", "--points", "2", "--quiet", "--out", "@OUT@"}},
       {"reproduce", {"--only", "coefficients", "--jobs", "1", "--out", "@OUT@"}},
       {"sweep",
        {"--config", LRCHAIN_SOURCE_DIR "/tests/corpus/sweep_small.toml", "--output", "@TMP@/sweep.h5", "--threads", "1",
@@ -126,6 +130,7 @@ const std::vector<OutputOption>& output_options() {
       {"simulate modulated", "out", false}, {"simulate modulated", "checkpoint", true},
       {"dark solve", "out", false},         {"dark floquet", "out", false},    {"dark continue", "out", false},
       {"dark evolve", "out", false},        {"reproduce", "out", false},
+      {"bright solve", "out", false},       {"bright floquet", "out", false},  {"bright continue", "out", false},
       {"sweep", "output", true},
   };
   return outputs;

@@ -93,3 +93,20 @@ def test_model_file_runs_interrupted():
     # The library still works: a short ring run completes.
     r = lrchain.simulate.ring(fput, "acoustic", math.pi / 2, periods=10)
     assert len(r.amplitude) == 2
+
+
+def test_sweep_interrupted_keeps_its_results_file(tmp_path):
+    # Two bright points of 1e5 breather periods on 4001 sites each: hours of work without the interrupt.
+    (tmp_path / "base.toml").write_text('experiment = "bright"\n[bright]\nbranch = "optical"\ntheta = "pi/2"\n'
+                                        'sites = 4001\nperiods = 1e5\nsample_every = 10\nspacetime_every = 1000\n'
+                                        'snapshot_periods = [0.0]\n')
+    (tmp_path / "s.toml").write_text(f'job = "bright"\nbase = "base.toml"\noutput = "{tmp_path}/s.h5"\n'
+                                     '[[axis]]\nparameter = "bright.detuning"\nvalues = [-1e-4, -2e-4]\n')
+    start = time.monotonic()
+    timer = interrupt_after(1.0)
+    with pytest.raises(KeyboardInterrupt):
+        lrchain.sweep(tmp_path / "s.toml", threads=1, progress=False)
+    timer.join()
+    assert time.monotonic() - start < 60
+    ds = lrchain.open_sweep(tmp_path / "s.h5")  # written before the KeyboardInterrupt: both points missing
+    assert ds.status.values.tolist() == [0, 0]

@@ -12,7 +12,7 @@ import subprocess
 import pytest
 
 import lrchain
-from lrchain import _lrchain, dark, regime, simulate
+from lrchain import _lrchain, bright, dark, regime, simulate
 from lrchain._keywords import schema_line
 
 from conftest import _cli_path
@@ -26,6 +26,7 @@ COMMANDS = {
     "ring": [["simulate", "ring"]],
     "coeffs": [["coeffs"]],
     "dark": [["dark", "solve"], ["dark", "floquet"], ["dark", "continue"], ["dark", "evolve"]],
+    "bright breather": [["bright", "solve"], ["bright", "floquet"], ["bright", "continue"]],
     "regime intervals": [["regime", "intervals"]],
     "regime map": [["regime", "map"]],
     "regime curves": None,  # Python only (lrchain.regime.boundary_curves)
@@ -40,6 +41,7 @@ FUNCTIONS = {
     "ring": [simulate.ring],
     "coeffs": [lrchain.coefficients],
     "dark": [dark.solve, dark.floquet, dark.continue_branch, dark.evolve],
+    "bright breather": [bright.solve, bright.floquet, bright.continue_branch],
     "regime intervals": [regime.intervals],
     "regime map": [regime.theta_rho_map, regime.theta_parameter_map, regime.delta0_omega_map],
     "regime curves": [regime.boundary_curves],
@@ -73,7 +75,7 @@ def _help_lines(command):
 
 
 def _steps(command, job):
-    return command[-1:] if job == "dark" else []
+    return command[-1:] if job in ("dark", "bright breather") else []
 
 
 @pytest.mark.parametrize("job", sorted(j for j, c in COMMANDS.items() if c))

@@ -85,7 +85,7 @@ def test_sigint_while_compiling_raises_keyboard_interrupt_and_kills_the_compiler
     elapsed = time.monotonic() - start
     assert child.returncode == 7, err
     assert out.startswith("KeyboardInterrupt")
-    assert elapsed < 2  # before: not until the compiler ended (here: 300 s)
+    assert elapsed < 20  # before: not until the compiler ended (here: 300 s)
     assert gone(grandchild)
     assert cache_files(tmp_path) == []
 

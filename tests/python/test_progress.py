@@ -61,3 +61,54 @@ def test_compile_notice_after_half_a_second(capfd):
 def test_set_progress_refuses_other_values():
     with pytest.raises(ValueError, match="True, False or None"):
         lrchain.set_progress("yes")
+
+
+def test_model_file_runs_show_a_bar_that_reaches_the_end(capfd):
+    import math
+
+    fput = lrchain.load_model("fput")
+    quiet = lrchain.simulate.bright(fput, "acoustic", math.pi / 2, sites=41, periods=2, progress=False)
+    ring_quiet = lrchain.simulate.ring(fput, "acoustic", math.pi / 2, periods=20, packet_width=8, progress=False)
+    assert capfd.readouterr().err == ""
+    watched = lrchain.simulate.bright(fput, "acoustic", math.pi / 2, sites=41, periods=2, progress=True)
+    ring_watched = lrchain.simulate.ring(fput, "acoustic", math.pi / 2, periods=20, packet_width=8, progress=True)
+    err = capfd.readouterr().err
+    assert "bright run of fput" in err and "ring run of fput" in err and err.count("100%") >= 2
+    np.testing.assert_array_equal(quiet.E_x, watched.E_x)  # watching does not change the run
+    np.testing.assert_array_equal(ring_quiet.measured_frequency, ring_watched.measured_frequency)
+
+
+def test_model_run_fractions_rise_to_one():
+    """The C++ jobs' fractions as the bar receives them: in [0, 1], never falling, the last one 1."""
+    import math
+
+    from lrchain import _lrchain
+
+    fput = lrchain.load_model("fput")
+    for run in (lambda seen: _lrchain.simulate_model_bright(fput, "acoustic", {"theta": math.pi / 2, "sites": 41,
+                                                                               "periods": 2.0}, seen.append),
+                lambda seen: _lrchain.simulate_ring(fput, "acoustic", {"theta": math.pi / 2, "periods": 20.0,
+                                                                       "packet_width": 8.0}, seen.append)):
+        seen = []
+        run(seen)
+        assert seen and seen[-1] == 1.0 and all(0 <= f <= 1 for f in seen) and seen == sorted(seen)
+
+
+def test_sweep_shows_a_bar_per_point(tmp_path, capfd):
+    (tmp_path / "base.toml").write_text('experiment = "regime intervals"\n')
+    (tmp_path / "s.toml").write_text(f'job = "regime intervals"\nbase = "base.toml"\noutput = "{tmp_path}/s.h5"\n'
+                                     '[[axis]]\nparameter = "model.rho"\nvalues = [0.5, 2.0]\n')
+    ds = lrchain.sweep(tmp_path / "s.toml", threads=1, progress=True)
+    err = capfd.readouterr().err
+    assert "sweep s.toml" in err and "100%" in err and (ds.status.values == 1).all()
+    lrchain.sweep(tmp_path / "s.toml", output=tmp_path / "quiet.h5", threads=1, progress=False)
+    assert capfd.readouterr().err == ""
+
+
+def test_evolution_shows_a_bar_per_period(capfd):
+    quiet = lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=11, t_end=3 * 2 * np.pi / 2.42, progress=False)
+    assert capfd.readouterr().err == ""
+    watched = lrchain.dark.evolve(lrchain.Params(), omega_b=2.42, sites=11, t_end=3 * 2 * np.pi / 2.42, progress=True)
+    err = capfd.readouterr().err
+    assert "dark-breather evolution" in err and "100%" in err
+    np.testing.assert_array_equal(quiet.E_b, watched.E_b)  # the same run, bit for bit

@@ -76,3 +76,29 @@ TEST_CASE("dark --model: exit 0, the model's JSON, profile.csv and an earlier ru
   CHECK(fs::exists(out / "profile.csv"));
   fs::remove_all(out);
 }
+
+TEST_CASE("dark --model: the Morse chain of issue 27 is refused below its edge, solved above it" * doctest::test_suite("fast")) {
+  // h = 14 > 0, h_tilde = -22 at theta = pi (`lrchain coeffs`): with the far-field mean strain fixed to
+  // zero the background's frequency is 2 + h A^2, so no dark breather lies below the edge (main
+  // "converged" there to an irregular profile with exit 0) and one lies above it.
+  const fs::path dir = fs::temp_directory_path() / ("lrchain-dark-morse-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::vector<std::string> cache{"XDG_CACHE_HOME=" + (dir / "cache").string()};
+  const auto below = run_lrchain({"dark", "floquet", "--model", "tests/data/models/morse.toml", "--omega-b", "1.99",
+                                  "--sites", "61", "--quiet", "--out", (dir / "out").string()},
+                                 source_dir, cache);
+  INFO(below.err);
+  CHECK(below.exit_code == 2);
+  CHECK(below.out.empty());
+  CHECK(std::count(below.err.begin(), below.err.end(), '\n') == 1);
+  CHECK(below.err.find("invalid omega-b: must lie above omega = 2") != std::string::npos);
+  CHECK(below.err.find("h = 14") != std::string::npos);
+  CHECK(!fs::exists(dir / "out"));
+  const auto above = run_lrchain({"dark", "solve", "--model", "tests/data/models/morse.toml", "--omega-b", "2.002",
+                                  "--sites", "61", "--quiet"},
+                                 source_dir, cache);
+  INFO(above.err);
+  CHECK(above.exit_code == 0);
+  CHECK(nlohmann::json::parse(above.out)["failure"].is_null());
+  fs::remove_all(dir);
+}

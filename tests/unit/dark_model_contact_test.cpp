@@ -195,7 +195,7 @@ TEST_CASE("dark evolve --model: the paper chain's evolution files and figures" *
   std::ifstream gp(out / "evolution.gp");
   const std::string script((std::istreambuf_iterator<char>(gp)), std::istreambuf_iterator<char>());
   CHECK(script.find("set xlabel 'site n'") != std::string::npos);
-  CHECK(script.find("set ylabel 't (dimensionless)'") != std::string::npos);
+  CHECK(script.find("set ylabel 't (model units)'") != std::string::npos);  // a model's time unit
   CHECK(script.find("set cblabel 'u0[n]'") != std::string::npos);
   fs::remove_all(out);
 }

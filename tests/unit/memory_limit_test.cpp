@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -75,12 +74,10 @@ TEST_CASE("CLI: a 9.4 GB bright run under a 6 GB RLIMIT_AS is exit 2 naming --si
   return;  // AddressSanitizer's shadow memory cannot be mapped under a 6 GB RLIMIT_AS (the Release build runs this)
 #endif
   // 10.3e6 strain sites: ~9.3 GB by estimate_lattice_run (rkf78: ~900 bytes a site).
-  const auto start = std::chrono::steady_clock::now();
   const auto r = run_command({"prlimit", "--as=6000000000", "--", LRCHAIN_CLI, "simulate", "bright", "--branch", "optical",
                               "--theta", "pi/2", "--sites", "10300001", "--periods", "1", "--stepper", "rkf78"});
   CHECK(r.exit_code == 2);
   CHECK(r.err.find("invalid sites") != std::string::npos);
   CHECK(r.err.find("RLIMIT_AS") != std::string::npos);
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(20));
 }

@@ -87,7 +87,7 @@ TEST_CASE("sweep safety: a hostile name never runs in gnuplot, neither during th
   const std::string apostrophe = "\xE2\x80\x99";  // U+2019, how a quote is shown (gnuplot_text.hpp)
   CHECK(script.find("set title 'x" + apostrophe + "; system(" + apostrophe + "touch PWNED1" + apostrophe + "); print " + apostrophe +
                     ": log10(max_Ex)") != std::string::npos);
-  CHECK(script.find("splot './r_max_Ex.dat'") != std::string::npos);
+  CHECK(script.find("plot './r_max_Ex.dat'") != std::string::npos);
   if (lrchain::program_in_path("gnuplot")) {
     CHECK(fs::exists(d / "out" / "r_max_Ex.png"));  // the figure is drawn all the same
     lrchain::ProcessOptions o;

@@ -322,12 +322,16 @@ TEST_CASE("sweep: docs/sweeps.md lists every key of the sweep schema (generated 
 
 TEST_CASE("sweep: the shipped sweep files load — the optical atlas is 38 theta x 9 detunings") {
   int loaded = 0;
+  // From the source directory, as the examples say: a model-file base names its model relative to it.
+  const fs::path here = fs::current_path();
+  fs::current_path(LRCHAIN_SOURCE_DIR);
   for (const auto& e : fs::directory_iterator(fs::path(LRCHAIN_SOURCE_DIR) / "examples" / "sweeps")) {
     if (e.path().extension() != ".toml") continue;
     CAPTURE(e.path().string());
     CHECK_NOTHROW(load_sweep_config(e.path()));
     ++loaded;
   }
+  fs::current_path(here);
   CHECK(loaded >= 1);
   const SweepConfig atlas = load_sweep_config(fs::path(LRCHAIN_SOURCE_DIR) / "examples" / "sweeps" / "atlas_bright_optical.toml");
   CHECK(atlas.shape() == std::vector<std::size_t>{38, 9});

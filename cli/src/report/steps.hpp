@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "lrchain/params.hpp"
 #include "report.hpp"
 
 namespace lrchain::report {
@@ -32,6 +33,10 @@ std::vector<Step> regime_steps();       // steps_regime.cpp: Sec. 3.3 intervals,
 std::vector<Step> bright_steps();       // steps_bright.cpp: Sec. 4.2 experiments 1-5, Figs. 6-13
 std::vector<Step> lattice_steps();      // steps_lattice.cpp: Sec. 4.3 drive, Sec. 5.1 modulated wave
 std::vector<Step> dark_steps();         // steps_dark.cpp: Secs. 5.3-5.4 dark breathers, Figs. 17-25
+
+// The paper's chain (Hertz exponent alpha = 3/2, kappa = 1) at precompression delta0 and mass ratio rho;
+// delta0 defaults to the paper's 4/9.
+inline Params paper_chain(double rho, double delta0 = 4.0 / 9.0) { return Params{1.5, delta0, 1.0, rho}; }
 
 // All steps in report order.
 std::vector<Step> all_steps();

@@ -16,8 +16,6 @@ namespace {
 
 using namespace lrchain::regime;
 
-Params with(double rho, double delta0 = 4.0 / 9.0) { return Params{1.5, delta0, 1.0, rho}; }
-
 // Interval end closest to `target` among all ends of the focusing intervals.
 double closest_end(const std::vector<FocusingInterval>& iv, double target) {
   double best = not_computed, dist = 1e300;
@@ -43,10 +41,10 @@ Section regime_section(const StepContext& ctx) {
             "numerator of h_tilde or of the non-resonance factors (eq:nonresonance1 and eq:nonresonance2), located "
             "by TOMS 748; the special parameter values are codimension-two points of that "
             "structure along the paper's parameter lines (lrchain regime thresholds).";
-  const auto opt13 = focusing_intervals(with(1.0 / 3.0), Branch::optical);
-  const auto ac13 = focusing_intervals(with(1.0 / 3.0), Branch::acoustic);
-  const auto opt10 = focusing_intervals(with(10.0), Branch::optical);
-  const auto ac032 = focusing_intervals(with(0.32, 0.27), Branch::acoustic);
+  const auto opt13 = focusing_intervals(paper_chain(1.0 / 3.0), Branch::optical);
+  const auto ac13 = focusing_intervals(paper_chain(1.0 / 3.0), Branch::acoustic);
+  const auto opt10 = focusing_intervals(paper_chain(10.0), Branch::optical);
+  const auto ac032 = focusing_intervals(paper_chain(0.32, 0.27), Branch::acoustic);
   s.rows.push_back(interval_row("theta_c: omega_+''(theta_c) = 0, rho = 1/3", "Sec. 4.2", "1.892", opt13));
   s.rows.push_back(interval_row("acoustic focusing interval, lower end, rho = 1/3", "Sec. 4.2", "1.7841", ac13));
   s.rows.push_back(interval_row("acoustic focusing interval, upper end, rho = 1/3", "Secs. 3.3, 4.2", "1.949", ac13, true));

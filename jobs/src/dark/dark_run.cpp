@@ -5,11 +5,13 @@
 
 #include <fmt/format.h>
 
+#include "../breather_outputs.hpp"
 #include "dark_steps.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/dispersion.hpp"
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/sim/dark/dark_ansatz.hpp"
+#include "lrchain/sim/dark/dark_shape.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 
@@ -48,7 +50,8 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
       continue_from(shooting, r.newton.q, c, hooks, r);
       return;
     case DarkStep::evolve:
-      r.evolution = evolve_dark_breather(c.params, r.z0, c.omega_b, c.t_end, c.samples, shooting.integration(), hooks.stop);
+      r.evolution = evolve_dark_breather(c.params, r.z0, c.omega_b, c.t_end, c.samples, shooting.integration(), hooks.stop,
+                                       hooks.evolution_progress);
       return;
     case DarkStep::solve:
     case DarkStep::floquet:
@@ -73,16 +76,6 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
     r.z_period = dark_breather_evolution(c.params, r.z0, period, 1, shooting.integration()).back();
 }
 
-// Names and meanings of a model's lattice variables: strains r, w_f (translation-invariant models)
-// or displacements u_f (on-site models).
-void model_variables(DarkEdge& e) {
-  for (int f = 0; f < e.fields; ++f) {
-    e.variables.push_back(e.mean_flow ? (f == 0 ? "r" : fmt::format("w{}", f)) : fmt::format("u{}", f));
-    e.variable_meanings.push_back(e.mean_flow ? (f == 0 ? "r[n] = u0[n] - u0[n-1]" : fmt::format("w{0}[n] = u{0}[n] - u0[n]", f))
-                                              : fmt::format("u{}[n]", f));
-  }
-}
-
 // A model file on its generated lattice kernels: the seed at its defocusing edge, full-period shooting.
 void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactIntegrationOptions& integration,
                DarkResult& r) {
@@ -92,13 +85,20 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   const ContactBonds contacts = model_contact_bonds(*c.kernels, sim::lattice_parameters(model), ansatz.mean_flow);
   r.edge = {model.definition().branch_names.at(std::size_t(ansatz.branch)), ansatz.theta, ansatz.omega,
             ansatz.curvature, ansatz.h_tilde, ansatz.lambda, ansatz.mean_flow, c.kernels->fields, {}, {}, {}};
-  model_variables(r.edge);
+  lattice_variable_names(r.edge.mean_flow, r.edge.fields, r.edge.variables, r.edge.variable_meanings);
   for (const auto& bond : contacts) r.edge.one_sided_contacts.push_back(bond.name);
   const DarkShooting shooting(*c.kernels, sim::lattice_parameters(model), c.sites, ansatz.mean_flow,
                                    parse_shooting_mode(c.mode), integration, contacts);
   r.seed = dark_seed(ansatz, parse_dark_center(c.center), c.sites);
   r.newton = newton_solve(shooting, r.seed, c.omega_b, newton_options(c, hooks));
   if (!r.newton.converged) return;
+  // A zero of the shooting map is any periodic orbit: keep it only if it is a dark breather.
+  if (const std::string shape = dark_shape_failure(ansatz, parse_dark_center(c.center), c.sites, r.newton.q);
+      !shape.empty()) {
+    r.newton.converged = false;
+    r.newton.failure = "it converged to a state that is not a dark breather (" + shape + ")";
+    return;
+  }
   r.z0 = r.newton.q;
   if (c.step == DarkStep::branch) {  // the start's contact changes are its branch point's
     continue_from(shooting, r.z0, c, hooks, r);
@@ -106,7 +106,8 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   }
   r.contact_changes_per_period = shooting.contact_changes_per_period(r.z0, c.omega_b);
   if (c.step == DarkStep::evolve) {
-    r.evolution = evolve_dark_orbit(shooting.advance(), r.z0, c.sites, c.omega_b, c.t_end, c.samples, hooks.stop);
+    r.evolution = evolve_dark_orbit(shooting.advance(), r.z0, c.sites, c.omega_b, c.t_end, c.samples, hooks.stop,
+                                    hooks.evolution_progress);
     return;
   }
   shooting.measure(r.z0, c.omega_b, r.measures);
@@ -125,7 +126,7 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
 }  // namespace
 
 // Continues a solved breather q0 away from the band edge: into the gap (omega_b falling) below an
-// edge, rising above one (a model edge with h_tilde > 0), within [omega_min, omega_max].
+// edge, rising above one (a model edge with h > 0), within [omega_min, omega_max].
 void continue_from(const DarkShootingProblem& shooting, const Eigen::VectorXd& q0, const DarkConfig& c,
                    const DarkRunHooks& hooks, DarkResult& r) {
   const double edge = r.edge.omega;
@@ -146,7 +147,8 @@ DarkResult run(const DarkConfig& c, const DarkRunHooks& hooks) {
   DarkResult r;
   r.config = c;
   ContactIntegrationOptions integration;
-  if (hooks.stop_integrations) integration.stop = hooks.stop;
+  // A branch keeps its points when a signal ends it inside an integration (continue_branch).
+  if (hooks.stop_integrations || c.step == DarkStep::branch) integration.stop = hooks.stop;
   if (c.model) run_model(c, hooks, integration, r);
   else run_chain(c, hooks, integration, r);
   return r;

@@ -24,7 +24,7 @@ std::vector<DarkOption> make_options() {
   const nlohmann::json none;
   return {
       {"omega_b", "--omega-b", "omega_b", all_steps, none, true,
-       "> 0, on the side of the edge where (omega_b - omega) h_tilde > 0: below it for the resonant chain",
+       "> 0, on the side of the edge where (omega_b - omega) h > 0: below it for the resonant chain",
        "breather frequency omega_b (dimensionless, time unit of Sec. 2; period T_b = 2 pi/omega_b)"},
       {"branch", "--branch", "branch", all_steps, d.branch.empty() ? none : nlohmann::json(d.branch), false,
        "optical|acoustic, or with a model file one of its branches",

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "../breather_outputs.hpp"
 #include "dark_keys.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/checked_number.hpp"
@@ -114,12 +115,7 @@ void validate(const DarkConfig& c) {
     sim::check_memory(e, c.max_memory, "t_end", "lower t_end");
   else
     sim::check_memory(e, c.max_memory, "sites", "lower sites");
-  if (!c.out.empty()) {
-    std::error_code ec;
-    if (std::filesystem::exists(c.out, ec) && !std::filesystem::is_directory(c.out, ec))
-      throw InputError("--out '" + c.out + "' exists and is not a directory");
-    sim::check_output_space(e, c.out, "out", "choose another --out");
-  }
+  check_output_directory(e, c.out);
 }
 
 }  // namespace lrchain::jobs::dark

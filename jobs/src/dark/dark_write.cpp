@@ -34,16 +34,22 @@ void write_profile(const DarkResult& r, const std::string& dir, sim::Figures& fi
       os << fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", i - (N - 1) / 2, r.z0(i),
                         r.z0(N + i), r.seed(i), r.seed(N + i), r.z_period(i), r.z_period(N + i));
     sim::write_file_atomic(dir, "profile.csv", os.str());
+    // x_n and y_n in panels of their own (drawn together, each hid the other).
     figures.draw({"profile.gp",
                   fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
-                              "set terminal pngcairo size 1000,700\nset output outfile\n"
-                              "set datafile separator ','\nset xlabel 'site n'\n"
-                              "set ylabel 'strains x_{{n}}, y_{{n}} (dimensionless)'\nset key outside\n"
-                              "set title 'dark breather ({} centred), ω_{{b}} = {:.5f}: Z(0), Z(T_{{b}}), seed eq. (48)'\n"
+                              "set terminal pngcairo size 1000,900\nset output outfile\n"
+                              "set datafile separator ','\nset xlabel 'site n'\nset key outside\n"
+                              "set offsets 0, 0, graph 0.05, graph 0.05\n"  // no marker on the frame
+                              "set xrange [{2}:{3}]\n"
+                              "set multiplot layout 2,1 title 'dark breather ({0} centred), ω_{{b}} = {1:.5f}: Z(0), Z(T_{{b}}), seed eq. (48)'\n"
+                              "set ylabel 'strain x_{{n}} (dimensionless)'\n"
                               "plot 'profile.csv' skip 1 u 1:2 w lp pt 3 t 'x_{{n}}(0)', '' skip 1 u 1:6 w p pt 4 ps 1.5 t 'x_{{n}}(T_{{b}})', "
-                              "'' skip 1 u 1:4 w p pt 6 t 'x seed', '' skip 1 u 1:3 w lp pt 3 t 'y_{{n}}(0)', "
-                              "'' skip 1 u 1:7 w p pt 4 ps 1.5 t 'y_{{n}}(T_{{b}})', '' skip 1 u 1:5 w p pt 6 t 'y seed'\n",
-                              c.center, c.omega_b),
+                              "'' skip 1 u 1:4 w p pt 6 t 'x seed'\n"
+                              "set ylabel 'strain y_{{n}} (dimensionless)'\n"
+                              "plot 'profile.csv' skip 1 u 1:3 w lp pt 3 t 'y_{{n}}(0)', '' skip 1 u 1:7 w p pt 4 ps 1.5 t 'y_{{n}}(T_{{b}})', "
+                              "'' skip 1 u 1:5 w p pt 6 t 'y seed'\n"
+                              "unset multiplot\n",
+                              c.center, c.omega_b, -(N - 1) / 2 - 1, (N - 1) / 2 + 1),
                   "profile.png"});
     return;
   }
@@ -61,17 +67,24 @@ void write_profile(const DarkResult& r, const std::string& dir, sim::Figures& fi
   }
   sim::write_file_atomic(dir, "profile.csv", os.str());
   const auto literal = [](const std::string& text) { return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced); };
-  std::string plot = "plot ";
+  // One panel per lattice variable, labelled with what it is ("r[n] = u0[n] - u0[n-1]").
+  std::string panels;
   for (std::size_t v = 0; v < variables.size(); ++v)
-    plot += fmt::format("{0}'profile.csv' skip 1 u 1:{1} w lp pt 3 t '{2}(0)', '' skip 1 u 1:{3} w p pt 4 ps 1.5 t "
-                        "'{2}(T_{{b}})', '' skip 1 u 1:{4} w p pt 6 t '{2} seed'",
-                        v == 0 ? "" : ", ", 2 + 3 * v, literal(variables[v]), 4 + 3 * v, 3 + 3 * v);
+    panels += fmt::format("set ylabel '{0}'\n"
+                          "plot 'profile.csv' skip 1 u 1:{1} w lp pt 3 t '{2}(0)', '' skip 1 u 1:{3} w p pt 4 ps 1.5 t "
+                          "'{2}(T_{{b}})', '' skip 1 u 1:{4} w p pt 6 t '{2} seed'\n",
+                          v < r.edge.variable_meanings.size() ? literal(r.edge.variable_meanings[v]) : literal(variables[v]),
+                          2 + 3 * v, literal(variables[v]), 4 + 3 * v, 3 + 3 * v);
   figures.draw({"profile.gp",
                 fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
-                            "set terminal pngcairo size 1000,700\nset output outfile\n"
-                            "set datafile separator ','\nset xlabel 'site n'\nset ylabel 'lattice variables: strains or displacements (model units)'\n"
-                            "set key outside\nset title '{} dark breather ({} centred), ω_{{b}} = {:.5f}: Z(0), Z(T_{{b}}), seed'\n{}\n",
-                            literal(c.model->name()), c.center, c.omega_b, plot),
+                            "set terminal pngcairo size 1000,{5}\nset output outfile\n"
+                            "set datafile separator ','\nset xlabel 'site n'\nset key outside\nset xrange [{6}:{7}]\n"
+                            // no marker on the frame; the panels' frames aligned whatever their y labels
+                            "set offsets 0, 0, graph 0.05, graph 0.05\nset lmargin 12\n"
+                            "set multiplot layout {4},1 title '{0} dark breather ({1} centred), ω_{{b}} = {2:.5f}: Z(0), "
+                            "Z(T_{{b}}), seed (model units)'\n{3}unset multiplot\n",
+                            literal(c.model->name()), c.center, c.omega_b, panels, variables.size(),
+                            150 + 350 * variables.size(), -(N - 1) / 2 - 1, N - 1 - (N - 1) / 2 + 1),
                 "profile.png"});
 }
 

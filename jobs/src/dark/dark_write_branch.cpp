@@ -44,44 +44,74 @@ void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& fig
   }
   sim::write_file_atomic(dir, "branch.csv", csv.str());
   sim::write_file_atomic(dir, "floquet_moduli.csv", mult.str());
-  // The figures' titles name the branch as the command was given it (optical unless --branch).
-  const std::string branch = c.branch.empty() ? "optical" : c.branch;
+  // The figures' titles name the branch the breathers bifurcate from (a model's own branch name).
+  const std::string branch = sim::gnuplot_text(r.edge.branch, sim::GnuplotTextMode::enhanced);
   const std::string label = sim::gnuplot_text(lattice_label(r), sim::GnuplotTextMode::enhanced);
-  // The x range reaches the band edge, so that its line (omega_opt or omega_acs) is inside the frame.
+  // The x range holds the band edge (its line inside the frame) and every point, on whichever side
+  // of the edge the branch lies (below it for the resonant chain, above it where h_tilde > 0).
   const double omega_edge = r.edge.omega;
-  double lowest = omega_edge;
-  for (const auto& b : r.branch.points) lowest = std::min(lowest, b.omega_b);
-  const double margin = 0.03 * std::max(omega_edge - lowest, 1e-3);
+  double lowest = omega_edge, highest = omega_edge;
+  for (const auto& b : r.branch.points) {
+    lowest = std::min(lowest, b.omega_b);
+    highest = std::max(highest, b.omega_b);
+  }
+  const double margin = 0.03 * std::max(highest - lowest, 1e-3);
+  const bool above_edge = highest > omega_edge;  // the edge's label goes on the side away from the points
+  // eq. (51) is the resonant chain's measure; a model's sums the same over its lattice variables.
+  const std::string norm_label = model_points ? "renormalised ℓ^{2} norm squared Σ_{n,v} (K_v^2 − (z_{v,n}(0) − C_v)^2)"
+                                              : "renormalised ℓ^{2} norm squared, eq. (51)";
   figures.draw({"branch.gp",
                 fmt::format("if (!exists(\"outfile\")) outfile = 'branch.png'\n"
                             "set terminal pngcairo size 900,650\nset output outfile\n"
                             "set datafile separator ','\nset xlabel 'breather frequency ω_{{b}}'\n"
-                            "set ylabel 'renormalised ℓ^{{2}} norm squared, eq. (51)'\n"
-                            "set xrange [{4:.8g}:{5:.8g}]\nset key top left\n"
+                            "set ylabel '{6}'\n"
+                            "set xrange [{4:.8g}:{5:.8g}]\nset key below\nset offsets 0, 0, graph 0.05, graph 0.05\n"
                             "set arrow from {0},graph 0 to {0},graph 1 nohead lc 'black'\n"
-                            "set label 'band edge {0:.4f}' at {0},graph 0.96 right offset -0.5,0\n"
+                            "set label 'band edge {0:.4f}' at {0},graph 0.96 {7}\n"
                             "set title '{1} {2}-centred dark breathers, {3} (red: real instability)'\n"
                             "plot 'branch.csv' skip 1 u 1:2 w l lc 'blue' t 'branch', "
                             "'' skip 1 u 1:(strstrt(strcol(8),'real') > 0 ? $2 : 1/0) w p pt 7 lc 'red' t 'real instability'\n",
-                            omega_edge, branch, c.center, label, lowest - margin, omega_edge + margin),
+                            omega_edge, branch, c.center, label, lowest - margin, highest + margin, norm_label,
+                            above_edge ? "left offset 0.5,0" : "right offset -0.5,0"),
                 "branch.png"});
   // One panel per part of the branch that was computed (before / after the first turning point);
   // a part without multipliers off the unit circle says so instead of showing an empty frame.
+  // Grey: the band next to 1 where the symmetry multipliers lie, which the stability does not count.
   const bool turned = part >= 1;
+  const double symmetry_band = sim::dark::FloquetOptions{}.symmetry_tolerance;
+  // Every panel over the branch's omega_b (3 % beyond its ends, at least 1e-6), the tics with the
+  // decimals that tell them apart (a branch that moved 2e-6 in omega_b had its tics all "1.002000").
+  double first = r.branch.points.empty() ? omega_edge : r.branch.points.front().omega_b, last = first;
+  for (const auto& b : r.branch.points) {
+    first = std::min(first, b.omega_b);
+    last = std::max(last, b.omega_b);
+  }
+  const double spread = std::max(last - first, 1e-6 * std::max(1.0, std::abs(first)));
+  const int decimals = std::max(0, int(std::ceil(-std::log10(spread))) + 1);
   std::string moduli = fmt::format(
       "if (!exists(\"outfile\")) outfile = 'floquet_moduli.png'\n"
       "set terminal pngcairo size 1000,{3}\nset output outfile\n"
       "set datafile separator ','\nset xlabel 'breather frequency ω_{{b}}'\nset ylabel 'Floquet modulus |λ|'\n"
-      "set offsets 0, 0, graph 0.1, 0\nset key off\n"
-      "set multiplot layout {4},1 title '{0} {1}-centred, {2}: Floquet moduli |λ| > 1 (blue: complex, red: real > 0, green: real < 0)'\n",
-      branch, c.center, label, turned ? 700 : 400, turned ? 2 : 1);
+      "set xrange [{6:.12g}:{7:.12g}]\nset format x '%.{8}f'\n"
+      // Room below the lowest modulus as above the highest (a modulus next to 1 lay on the frame),
+      // the y range not widened to the next tic.
+      "set offsets 0, 0, graph 0.1, graph 0.05\nset autoscale yfix\nset key off\n"
+      "set object 1 rectangle from graph 0, first 1 to graph 1, first {5:.6g} behind fillcolor rgb '#e4e4e4' "
+      "fillstyle solid noborder\n"
+      "set multiplot layout {4},1 title '{0} {1}-centred, {2}: Floquet moduli |λ| > 1 (blue: complex, red: real > 0, "
+      "green: real < 0)'\n",
+      branch, c.center, label, turned ? 720 : 420, turned ? 2 : 1, 1 + symmetry_band, first - 0.03 * spread,
+      last + 0.03 * spread, decimals);
   for (int p = 0; p < (turned ? 2 : 1); ++p) {
     const std::string select = p == 0 ? "$4==0" : "$4>=1";
-    moduli += fmt::format("set title '{}'\n", p == 0 ? "weakly nonlinear (before the turning point)"
-                                                     : "strongly nonlinear (after the turning point)");
+    moduli += fmt::format("set title \"{}{}\"\n",
+                          p == 0 ? "weakly nonlinear (before the turning point)" : "strongly nonlinear (after the turning point)",
+                          p == 0 ? fmt::format("\\ngrey: |λ| − 1 ≤ {:g}, where the symmetry multipliers lie (not counted as instability)",
+                                               symmetry_band)
+                                 : "");
     if (!unstable_in[p]) {
       moduli += "set yrange [0.9:1.1]\nset label 1 'all multipliers on the unit circle: linearly stable' at graph 0.5, graph 0.7 center\n"
-                "plot 'branch.csv' skip 1 u 1:(1) w l lc 'grey' dt 2\nunset label 1\nset autoscale y\n";
+                "plot 'branch.csv' skip 1 u 1:(1) w l lc 'grey' dt 2\nunset label 1\nset autoscale yfix\n";
       continue;
     }
     moduli += fmt::format("plot 'floquet_moduli.csv' skip 1 u 1:({0} && $3==0 ? $2 : 1/0) w p pt 7 ps 0.5 lc 'blue', "

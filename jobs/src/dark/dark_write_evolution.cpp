@@ -78,6 +78,7 @@ void write_evolution(const DarkResult& r, const std::string& dir, sim::Figures& 
   const double T = e.periods.back().t;
   const double nmin = double(-(N - 1) / 2) - 0.5, nmax = double((N - 1) / 2) + 0.5;
   const double height = 0.94 / double(V);
+  const char* time_unit = r.model_file() ? "model units" : "dimensionless";  // the chain's of Sec. 2
   std::string maps, snapshots, right;
   for (Index k = 0; k < V; ++k) {
     const EvolutionVariable& v = variables[std::size_t(k)];
@@ -99,28 +100,33 @@ void write_evolution(const DarkResult& r, const std::string& dir, sim::Figures& 
                   "set terminal pngcairo size 1500,{5}\nset output outfile\n"
                   "set datafile separator ','\n"
                   "set multiplot title '{0}: snapshots at t = 0 and t = {1:.1f} (left), space-time {6} (right)'\n"
-                  "set key outside top center horizontal\nset xrange [{2}:{3}]\nset xlabel 'site n'\n"
+                  "set key outside top center horizontal\nset xlabel 'site n'\n"
+                  // the snapshots half a site beyond the end sites and 5 % above and below the
+                  // curves (their markers lay on the frame), the maps over the sites' cells
+                  "set xrange [{10}:{11}]\nset offsets 0, 0, graph 0.05, graph 0.05\n"
                   "{7}"
+                  "set xrange [{2}:{3}]\nset offsets 0, 0, 0, 0\n"
                   "set datafile separator whitespace\n"
-                  "set ylabel 't (dimensionless)'\nset yrange [0:{1}]\n"
+                  "set ylabel 't ({9})'\nset yrange [0:{1}]\n"
                   "{4}\nset colorbox\n{8}"
                   "unset multiplot\n",
-                  title, T, nmin, nmax, sim::viridis_palette, 450 * std::max<Index>(V, 2), maps, snapshots, right),
+                  title, T, nmin, nmax, sim::viridis_palette, 450 * std::max<Index>(V, 2), maps, snapshots, right, time_unit,
+                  nmin - 0.5, nmax + 0.5),
       "evolution.png"});
   figures.draw({
       "diagnostics.gp",
       fmt::format("if (!exists(\"outfile\")) outfile = 'diagnostics.png'\n"
                   "set terminal pngcairo size 1000,800\nset output outfile\n"
-                  "set datafile separator ','\nset xlabel 't (dimensionless)'\n"
+                  "set datafile separator ','\nset xlabel 't ({1})'\n"
                   "set multiplot layout 2,1 title '{0}'\n"
-                  "set logscale y\nset format y '%.0e'\nset ylabel 'E_{{b}}(t), eq. (52)'\n"
+                  "set logscale y\nset format y '%.0e'\nset ylabel '{2}'\n"
                   "set title 'relative error E_{{b}}(m T_{{b}})'\n"
                   "plot 'evolution.csv' skip 1 u 1:($2 > 1e-16 ? $2 : 1e-16) w l lc 'blue' notitle\n"
                   "unset logscale y\nset format y '%g'\nset ylabel 'site n'\n"
                   "set title 'breather position (amplitude dip over each period; unwrapped)'\n"
                   "plot 'evolution.csv' skip 1 u 1:5 w l lc 'red' notitle\n"
                   "unset multiplot\n",
-                  title),
+                  title, time_unit, r.model_file() ? "E_{b}(t) = max|Z(t) − Z(0)| / max|Z(0)|" : "E_{b}(t), eq. (52)"),
       "diagnostics.png"});
   figures.finish(summary);
   sim::write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");

@@ -1,5 +1,6 @@
 // The files of a regime map (regime_job.hpp): pixel maps and boundary polylines as CSV, the gnuplot
 // script of each figure (Fig. 2, Figs. 4-5, or a model's (parameter, theta) plane) and its figure.
+#include <algorithm>
 #include <cstddef>
 #include <numbers>
 #include <sstream>
@@ -62,12 +63,15 @@ std::string cause_style(BoundaryCause c) {
   }
   return "";
 }
-std::string cause_title(BoundaryCause c) {
+
+// The legend's name of a boundary, enhanced text; omega'' as d^2ω/dθ^2 (at 9 pt a double prime
+// reads as a tilde). Only the resonant chain's second non-resonance condition has a known formula.
+std::string cause_title(BoundaryCause c, bool resonant_chain) {
   switch (c) {
-    case BoundaryCause::curvature_zero: return "ω″=0";
-    case BoundaryCause::nonresonance2: return "c^2(1+ρ)=K_2 (nonres. 2)";
+    case BoundaryCause::curvature_zero: return "d^2ω/dθ^2 = 0";
+    case BoundaryCause::nonresonance2: return resonant_chain ? "c^2(1+ρ) = K_2 (nonres. 2)" : "nonres. 2 violated";
     case BoundaryCause::nonresonance1: return "nonres. 1 violated";
-    case BoundaryCause::h_tilde_zero: return "h̃=0";
+    case BoundaryCause::h_tilde_zero: return "h̃ = 0";
     case BoundaryCause::band_edge: return "band edge";
   }
   return "";
@@ -78,13 +82,32 @@ std::string gnuplot_literal(const std::string& text) {
   return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced);
 }
 
+// Legend entries for the colours of the pixel map (the palette of kPalette): focusing and
+// defocusing always, no frequency and singular where a pixel has them.
+std::string regime_key(const std::vector<std::int8_t>& values) {
+  const auto has = [&values](int v) { return std::find(values.begin(), values.end(), v) != values.end(); };
+  const auto entry = [](const char* colour, const char* title) {
+    return fmt::format(", \\\n  keyentry with boxes fillstyle solid 1.0 border lc rgb '#000000' fillcolor rgb '{}' "
+                       "title '{}'",
+                       colour, title);
+  };
+  std::string key = entry("#ffaacc", "focusing") + entry("#ffffff", "defocusing");
+  if (has(regime::PixelRegime::outside)) key += entry("#dddddd", "no frequency");
+  if (has(regime::PixelRegime::singular)) key += entry("#000000", "singular");
+  return key;
+}
+
 const char* kPalette =
     "set palette defined (-1 '#dddddd', 0 '#ffffff', 1 '#ffaacc', 2 '#000000')\n"
     "set cbrange [-1:2]\nunset colorbox\n";
 
+// The legend below the panels, where it hides no part of the map, in a bottom margin of the same
+// height in every panel (so that the panels' frames line up).
+const char* kKeyBelow = "set key outside below center horizontal box font ',9' maxrows 3\nset bmargin 8\n";
+
 // Writes the boundary files of one panel ("<prefix>_<cause>.csv") and adds them to `plot`.
 void write_curves(const RegimeMapPanel& panel, const fs::path& dir, const std::string& prefix,
-                  const std::string& xname, const std::string& yname, bool cause_titles, std::ostream& plot,
+                  const std::string& xname, const std::string& yname, bool resonant_chain, std::ostream& plot,
                   std::vector<std::string>& files) {
   if (!panel.curves_traced) return;
   for (BoundaryCause c : kSmoothCauses) {
@@ -93,17 +116,17 @@ void write_curves(const RegimeMapPanel& panel, const fs::path& dir, const std::s
     const std::string f = prefix + "_" + std::string(to_string(c)) + ".csv";
     sim::write_file_atomic(dir, f, csv);
     files.push_back(f);
-    plot << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title \""
-         << (cause_titles ? cause_title(c) : std::string(to_string(c))) << "\"";
+    plot << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title '"
+         << cause_title(c, resonant_chain) << "'";
   }
 }
 
 // Draws `script` unless the result says no figures.
 std::optional<bool> draw(const RegimeMapResult& r, sim::Figures& figures, const std::string& script,
-                         const std::string& png, bool format_name, std::vector<std::string>& files) {
+                         const std::string& png, std::vector<std::string>& files) {
   if (!r.figures) return std::nullopt;
   const bool ok = figures.draw_written(script, png);
-  if (ok) files.push_back(format_name ? sim::figure_file_name(png) : png);
+  if (ok) files.push_back(sim::figure_file_name(png));  // drawn in the --figure-format
   return ok;
 }
 
@@ -120,25 +143,23 @@ void write_theta_rho(const RegimeMapResult& r, const fs::path& dir, sim::Figures
      << "set output outfile\nset datafile separator ','\n" << kPalette
      << "set multiplot\n"
      << "set xlabel 'ρ'\nset ylabel 'θ'\n"
-        "set key top right opaque box font ',9'\n";
+     << kKeyBelow;
   const double panel_w = 1.0 / static_cast<double>(r.panels.size());
   for (std::size_t k = 0; k < r.panels.size(); ++k) {
     const RegimeMapPanel& panel = r.panels[k];
     const std::string& bn = panel.branch;
-    const bool acoustic = panel.resonant_branch == Branch::acoustic;
     const std::string mapfile = "regime_theta-rho_" + bn + ".csv";
     sim::write_file_atomic(dir, mapfile, map_csv(panel.x, panel.y, panel.values, "rho", "theta"));
     files.push_back(mapfile);
     const bool inset = panel.inset_x.has_value();
     gp << "set origin " << k * panel_w << ",0\nset size " << panel_w << ",1\n"
        << fmt::format("set title '{} branch (α = {:.4g}, δ_0 = {:.4g}, κ = {:.4g})'\n", bn, p.alpha, p.delta0, p.kappa)
-       << "set xrange [" << panel.x.lo << ":" << panel.x.hi << "]\nset yrange [0:pi]\n"
-       << (acoustic ? "set key bottom left\n" : "set key top right\n");
+       << "set xrange [" << panel.x.lo << ":" << panel.x.hi << "]\nset yrange [0:pi]\n";
     if (inset)
       gp << "set object 1 rect from " << panel.inset_x->lo << "," << panel.inset_y->lo << " to " << panel.inset_x->hi
          << ",pi front fs empty border lc rgb '#000000' lw 1\n";
     std::ostringstream plot;
-    plot << "plot '" << mapfile << "' using 1:2:3 with image notitle";
+    plot << "plot '" << mapfile << "' using 1:2:3 with image notitle" << regime_key(panel.values);
     write_curves(panel, dir, "boundary_theta-rho_" + bn, "rho", "theta", true, plot, files);
     gp << plot.str() << "\n";
     if (inset) {
@@ -147,20 +168,20 @@ void write_theta_rho(const RegimeMapResult& r, const fs::path& dir, sim::Figures
       files.push_back(zf);
       std::string zplot = plot.str();
       zplot.replace(zplot.find(mapfile), mapfile.size(), zf);
-      gp << "unset object 1\nset origin " << k * panel_w + 0.45 * panel_w << ",0.14\nset size "
-         << 0.5 * panel_w << ",0.45\nunset title\nunset xlabel\nunset ylabel\nunset key\n"
+      gp << "unset object 1\nset origin " << k * panel_w + 0.45 * panel_w << ",0.23\nset size "
+         << 0.5 * panel_w << ",0.42\nunset title\nunset xlabel\nunset ylabel\nunset key\nset bmargin -1\n"
          << "set xrange [" << panel.inset_x->lo << ":" << panel.inset_x->hi << "]\nset yrange ["
          << panel.inset_y->lo << ":pi]\n"
          << "set xtics 0.1 font ',8'\nset ytics 0.5 font ',8'\n"
          << zplot << "\n"
-         << "set xlabel 'ρ'\nset ylabel 'θ'\nset key\nset xtics auto\n"
+         << "set xlabel 'ρ'\nset ylabel 'θ'\nset key\nset bmargin 8\nset xtics auto\n"
             "set ytics auto\n";
     }
   }
   gp << "unset multiplot\n";
   sim::write_file_atomic(dir, "regime_theta-rho.gp", gp.str());
   files.push_back("regime_theta-rho.gp");
-  out.drawn.push_back(draw(r, figures, "regime_theta-rho.gp", "regime_theta-rho.png", true, files));
+  out.drawn.push_back(draw(r, figures, "regime_theta-rho.gp", "regime_theta-rho.png", files));
   out.files.push_back(std::move(files));
 }
 
@@ -205,15 +226,15 @@ void write_delta0_omega(const RegimeMapResult& r, const RegimeMapPanel& panel, c
      << " band versus precompression delta0, cf. Figs. 4-5 of the paper.\n"
      << "# Re-run: gnuplot regime_" << tag << ".gp\n"
      << "if (!exists('outfile')) outfile = 'regime_" << tag << ".png'\n"
-     << "set terminal pngcairo size 800,900 font 'DejaVu Sans,11'\nset output outfile\n"
+     << "set terminal pngcairo size 1000,900 font 'DejaVu Sans,11'\nset output outfile\n"
      << "set datafile separator ','\n"
-     << "set multiplot layout 2,1 margins 0.12,0.96,0.07,0.95 spacing 0,0.12\n"
+     << "set multiplot layout 2,1 margins 0.09,0.71,0.07,0.95 spacing 0,0.12\n"
      << (r.delta0_log ? "set logscale x\n" : "") << "set xrange [" << panel.x.lo << ":" << panel.x.hi
      << "]\nset yrange [" << panel.y.lo << ":" << panel.y.hi << "]\n"
      << "set xlabel 'δ_0'\nset ylabel 'ω'\n"
-     << fmt::format("set title \"{} band, ρ = {:.4g}, κ = {:.4g}, α = {:.4g}: hatched = focusing (ω″h̃ < 0)\"\n", bn,
+     << fmt::format("set title \"{} band, ρ = {:.4g}, κ = {:.4g}, α = {:.4g}: hatched = focusing (h̃ d^2ω/dθ^2 < 0)\"\n", bn,
                     p.rho, p.kappa, p.alpha)
-     << "set key top left opaque box font ',9'\n"
+     << "# the legend beside the map, where it hides none of it\nset key outside right top box font ',9'\n"
      << "plot 'intervals_" << tag
      << ".csv' using 1:(($2+$3)/2):8:9:2:3 with boxxyerror fs pattern 4 noborder lc rgb "
         "'#cc3366' title 'focusing', \\\n"
@@ -223,12 +244,12 @@ void write_delta0_omega(const RegimeMapResult& r, const RegimeMapPanel& panel, c
     gp << ", \\\n  'band_edges_" << tag << ".csv' using 1:2 with lines lc rgb '#ff0000' lw 2 title 'ω_+(0)'";
   write_curves(panel, dir, "boundary_" + tag, "delta0", "omega", true, gp, files);
   gp << "\nset title 'number of focusing frequency bands'\nset ylabel 'bands'\n"
-        "set yrange [-0.2:*]\nset ytics 1\nunset key\n"
+        "set yrange [-0.2:*]\nset offsets 0, 0, 0.4, 0\nset ytics 1\nunset key\n"
      << "plot 'band_count_" << tag << ".csv' using 1:2 with steps lw 2 lc rgb '#cc3366'\n"
      << "unset multiplot\n";
   sim::write_file_atomic(dir, "regime_" + tag + ".gp", gp.str());
   files.push_back("regime_" + tag + ".gp");
-  out.drawn.push_back(draw(r, figures, "regime_" + tag + ".gp", "regime_" + tag + ".png", true, files));
+  out.drawn.push_back(draw(r, figures, "regime_" + tag + ".gp", "regime_" + tag + ".png", files));
   out.files.push_back(std::move(files));
 }
 
@@ -244,7 +265,7 @@ void write_model(const RegimeMapResult& r, const fs::path& dir, sim::Figures& fi
      << "set terminal pngcairo size " << 700 * r.panels.size() << ",620 font 'DejaVu Sans,11'\n"
      << "set output outfile\nset datafile separator ','\n" << kPalette
      << "set multiplot\nset xlabel '" << gnuplot_literal(r.axis) << "'\nset ylabel 'θ'\n"
-     << "set key top right opaque box font ',9'\n";
+     << kKeyBelow;
   const double panel_w = 1.0 / static_cast<double>(r.panels.size());
   for (std::size_t k = 0; k < r.panels.size(); ++k) {
     const RegimeMapPanel& panel = r.panels[k];
@@ -256,7 +277,7 @@ void write_model(const RegimeMapResult& r, const fs::path& dir, sim::Figures& fi
        << "set title '" << gnuplot_literal(r.model_name) << ", " << gnuplot_literal(bn) << " branch'\n"
        << "set xrange [" << panel.x.lo << ":" << panel.x.hi << "]\nset yrange [0:pi]\n";
     std::ostringstream plot;
-    plot << "plot '" << mapfile << "' using 1:2:3 with image notitle";
+    plot << "plot '" << mapfile << "' using 1:2:3 with image notitle" << regime_key(panel.values);
     write_curves(panel, dir, "boundary_" + plane + "_" + bn, r.axis, "theta", false, plot, files);
     gp << plot.str() << "\n";
   }
@@ -264,7 +285,7 @@ void write_model(const RegimeMapResult& r, const fs::path& dir, sim::Figures& fi
   const std::string script = "regime_" + plane + ".gp";
   sim::write_file_atomic(dir, script, gp.str());
   files.push_back(script);
-  out.drawn.push_back(draw(r, figures, script, "regime_" + plane + ".png", false, files));
+  out.drawn.push_back(draw(r, figures, script, "regime_" + plane + ".png", files));
   out.files.push_back(std::move(files));
 }
 

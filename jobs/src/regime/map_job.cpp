@@ -20,6 +20,7 @@
 #include "lrchain/regime/regime_map.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
 #include "regime_lattice.hpp"
+#include "seconds_since.hpp"
 
 namespace lrchain::jobs {
 
@@ -37,10 +38,6 @@ Range default_omega_range(const Params& p, Branch b, const Range& dr) {
 }
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 std::vector<Branch> branches_of(const std::string& text) {
   if (text == "both") return {Branch::optical, Branch::acoustic};

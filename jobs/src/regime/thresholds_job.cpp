@@ -10,6 +10,7 @@
 #include "lrchain/model_json.hpp"
 #include "lrchain/regime/model_regime.hpp"
 #include "regime_lattice.hpp"
+#include "seconds_since.hpp"
 
 namespace lrchain::jobs {
 
@@ -18,10 +19,6 @@ using namespace lrchain::regime;
 using namespace regime_detail;
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 ModelAxisPlan model_plan(const RegimeThresholdsConfig& c) {
   return plan_model_axis(*c.model, c.axis, c.branch.empty() ? "both" : c.branch, c.axis_range);

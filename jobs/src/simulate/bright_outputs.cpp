@@ -79,38 +79,29 @@ std::string snapshots_script(const BrightRunResult& r) {
   const auto& series = r.record.series;
   const std::size_t rows = series.rows();
   const double t_end = rows > 0 ? series.at(rows - 1, 0) : 0.0;
-  // Early times on their own scale (Fig. 8's inset: the error stays below 3 % for t <= 150). It
-  // goes top left when E_x stays below half its maximum over the first half of the run (the
-  // error grows late, as in exp2), else bottom right (below an error that grows steadily).
-  double max_all = 0, max_first_half = 0, max_to_150 = 0;
-  for (std::size_t k = 0; k < rows; ++k) {
-    const double e = series.at(k, 1);
-    if (!std::isfinite(e)) continue;
-    max_all = std::max(max_all, e);
-    if (series.at(k, 0) <= t_end / 2) max_first_half = std::max(max_first_half, e);
+  // Early times on their own scale (Fig. 8's inset: the error stays below 3 % for t <= 150).
+  double max_to_150 = 0;
+  for (std::size_t k = 0; k < rows; ++k)
     if (series.at(k, 0) <= 150)
       for (std::size_t column : {1, 2})
         if (std::isfinite(series.at(k, column))) max_to_150 = std::max(max_to_150, series.at(k, column));
-  }
-  const bool top_left = max_first_half < 0.5 * max_all;
-  const double ox = top_left ? 0.1 : 0.5, oy = top_left ? 0.14 : 0.06, width = 0.34, height = 0.17;
   // 0 to 6 % when the errors up to t = 150 fit (the 3 % line at half height), else gnuplot's range.
   const bool percent_scale = max_to_150 < 0.05;
-  const std::string inset =
-      t_end > 400
-          ? fmt::format("set origin {0:g},{1:g}\nset size {2:g},{3:g}\n"
-                        "# an opaque inset: a white rectangle under it hides the main curves\n"
-                        "set object 20 rectangle from screen {0:g},{1:g} to screen {4:g},{5:g} behind "
-                        "fillcolor rgb 'white' fillstyle solid 1.0 border lc rgb 'gray70'\n"
-                        "unset key\nset xrange [0:200]\nset yrange [0:{6}]\nset ytics {7}\n"
-                        "unset xlabel\nset ylabel ''\n"
-                        "set title 'E_x, E_y for t ≤ 200 (dotted: 3 % and t = 150)' offset 0,-0.6\n"
+  // A long run gets the early times as a panel of its own right of E_x, E_y (an inset over the
+  // curves hid them where it lay).
+  const bool early_panel = t_end > 400;
+  const std::string errors_size = early_panel ? "set size 0.64,0.333\n" : "";
+  const std::string early =
+      early_panel
+          ? fmt::format("set origin 0.64,0\nset size 0.36,0.333\n"
+                        "unset key\nset xrange [0:200]\nset yrange [0:{}]\nset ytics {}\n"
+                        "set ylabel ''\n"
+                        "set title 'E_x, E_y for t ≤ 200 (dotted: 3 % and t = 150)'\n"
                         "set arrow 21 from 150, graph 0 to 150, graph 1 nohead dt 3 lc rgb 'black'\n"
                         "plot 'series.csv' using 1:2 skip 1 with lines lw 1.5 lc rgb 'red', "
                         "'series.csv' using 1:3 skip 1 with lines dt 2 lw 1.5 lc rgb 'blue', "
                         "0.03 with lines dt 3 lc rgb 'black'\n",
-                        ox, oy, width, height, ox + width, oy + height, percent_scale ? "0.06" : "*",
-                        percent_scale ? "0.03" : "autofreq")
+                        percent_scale ? "0.06" : "*", percent_scale ? "0.03" : "autofreq")
           : "";
   return fmt::format(R"GP(# Snapshots of x_n, y_n (lattice, solid lines) vs the NLS ansatz eq. (38) (black dashed), and E_x, E_y.
 if (!exists("outfile")) outfile = 'snapshots.png'
@@ -132,13 +123,13 @@ set ylabel "y_n (dimensionless)"
 plot for [i=1:words(files)] word(files,i) using 1:3 with lines lw 2 title "lattice ".word(titles,i), \
      for [i=1:words(files)] word(files,i) using 1:5 with lines dt 2 lw 0.8 lc rgb "black" title (i==1 ? "ansatz" : "")
 set origin 0,0
-set xlabel "t (dimensionless)"
+{}set xlabel "t (dimensionless)"
 set ylabel "relative error E_x, E_y"
 plot 'series.csv' using 1:2 skip 1 with lines lw 1.5 lc rgb "red" title "E_x", \
      'series.csv' using 1:3 skip 1 with lines dt 2 lw 1.5 lc rgb "blue" title "E_y"
 {}unset multiplot
 )GP",
-                     files, titles, inset);
+                     files, titles, errors_size, early);
 }
 
 std::string energy_script(const BrightRunResult& r) {
@@ -154,6 +145,10 @@ set lmargin at screen 0.57
 set rmargin at screen 0.97
 set xlabel "t (dimensionless)"
 set ylabel "energy centre X, eq. (41) (sites)" noenhanced
+# t over the run, X with room above and below (its ends lay on the frame's corners)
+set autoscale xfix
+set autoscale y
+set offsets 0, 0, graph 0.05, graph 0.05
 plot 'series.csv' using 1:5 skip 1 with lines lw 1.5 notitle
 unset multiplot
 )GP",

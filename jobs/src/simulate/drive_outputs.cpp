@@ -46,6 +46,8 @@ std::string drive_energy_script(const DriveRunResult& r) {
 # (dashed), and the front of the wave pattern (right).
 {}set xrange [1:{:.1f}]
 set yrange [0:{:.1f}]
+# a dark legend box, on which the white dashed line shows (an opaque white box hid it)
+set key top right opaque fc rgb "#404040" box lc rgb "white" textcolor rgb "white"
 plot 'energy_density_spacetime.bin' binary matrix {}using 1:2:($3 > {:.3e} ? $3 : {:.3e}) with image notitle, \
      (x/{:.6f}) with lines dt 2 lw 2 lc rgb "white" title "n = c_+ t"
 unset logscale cb
@@ -56,6 +58,7 @@ set autoscale
 set datafile separator ","
 set xlabel "t (dimensionless)"
 set ylabel "front site n, participation number"
+set key top left noopaque nobox textcolor rgb "black"
 plot 'series.csv' using 1:3 skip 1 with lines lw 1.5 title "front", \
      'series.csv' using 1:4 skip 1 with lines lw 1.5 title "participation (sum e)^2/sum e^2", \
      {:.6f}*x with lines dt 2 lc rgb "black" title "c_+ t"

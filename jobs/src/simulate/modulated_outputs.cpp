@@ -69,6 +69,8 @@ set ylabel "t (dimensionless)"
 set cblabel "energy density e_{{n}}, eq. (40)"
 set rmargin at screen 0.40
 set cbrange [0:{:.3e}]
+# both panels with room below for the right panel's legend (there it hides none of its points)
+set bmargin 6
 set autoscale fix
 plot 'energy_density_spacetime.bin' binary matrix {}with image notitle
 unset cblabel
@@ -82,8 +84,8 @@ set y2label "site of the minimum of e_{{n}}"
 set y2tics
 set ytics nomirror
 set yrange [0:*]
-set offsets 0, 0, graph 0.12, 0
-set key top left opaque box
+set offsets 0, 0, graph 0.05, 0
+set key below center horizontal box
 {}plot 'series.csv' using 1:3 skip 1 with lines lw 1.2 title "contrast", \
      {:g} with lines dt 2 lw 1.5 lc rgb "black" title "threshold {:g}", \
      'series.csv' using 1:4 skip 1 axes x1y2 with points pt 7 ps 0.2 lc rgb "red" title "min-e site"

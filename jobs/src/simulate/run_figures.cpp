@@ -44,6 +44,7 @@ set datafile separator ","
 set multiplot layout {},1
 set xlabel "site n"
 set ylabel "bead velocity du_n/dt"
+set offsets 0, 0, graph 0.05, graph 0.05
 {}unset multiplot
 )GP",
                      figure, row_height * k, k, body);

@@ -12,8 +12,11 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
+#include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/jobs/more_experiment_config.hpp"
 #include "lrchain/jobs/sweep/study_jobs.hpp"
+#include "model_jobs.hpp"
+#include "scalar_extractors.hpp"
 
 namespace lrchain::jobs::sweep {
 
@@ -22,9 +25,6 @@ using namespace lrchain::sim;  // the numerics this job layer runs
 namespace {
 
 constexpr double none = std::numeric_limits<double>::quiet_NaN();
-
-template <class Summary>
-using Extractors = std::vector<std::pair<std::string, std::function<double(const Summary&)>>>;
 
 // The scalars of a bright run (bright_run.hpp), in file order.
 const Extractors<BrightRunSummary>& bright_scalars() {
@@ -86,17 +86,10 @@ const Extractors<ModulatedRunSummary>& modulated_scalars() {
   return e;
 }
 
-template <class Summary>
-std::vector<std::string> names_of(const Extractors<Summary>& e) {
-  std::vector<std::string> n;
-  for (const auto& [name, f] : e) n.push_back(name);
-  return n;
-}
-
 // Fills the result from a finished run's summary: scalars, and the status from interrupt/blow-up.
 template <class Summary>
 void reduce(const Summary& s, const Extractors<Summary>& e, JobResult& r) {
-  for (const auto& [name, f] : e) r.scalars.push_back(f(s));
+  append_scalars(s, e, r.scalars);
   if (s.interrupted) {
     r.status = PointStatus::missing;
     r.reason = "interrupted";
@@ -140,6 +133,7 @@ std::string status_legend() { return "0 missing, 1 ok, 2 blew_up, 3 numerical_fa
 
 std::vector<std::string> job_kinds() {
   std::vector<std::string> k = experiment_kinds();
+  k.push_back("ring");  // model files only
   k.insert(k.end(), study_kinds().begin(), study_kinds().end());
   return k;
 }
@@ -152,10 +146,22 @@ std::string job_kind(const config::Document& doc) {
   return kind;
 }
 
-std::string Job::rows_legend() const { return is_study_kind(kind_) ? study_rows_legend(kind_) : std::string(); }
+std::string Job::rows_legend() const {
+  return is_study_kind(kind_) ? study_rows_legend(kind_, model_ ? model_->definition().get() : nullptr) : std::string();
+}
 
-Job::Job(config::Document base) : base_(std::move(base)), kind_(job_kind(base_)) {
-  if (is_study_kind(kind_)) {
+Job::Job(config::Document base, std::shared_ptr<const ModelCompiler> compiler)
+    : base_(std::move(base)), kind_(job_kind(base_)) {
+  if (is_model_experiment(base_) || kind_ == "ring") {
+    model_ = load_base_model(kind_, base_, std::move(compiler));
+    if (is_study_kind(kind_)) {
+      check_study_config(kind_, base_, model_.get());
+      scalar_names_ = study_scalar_names(kind_, model_->definition().get());
+      row_names_ = study_row_names(kind_);
+    } else {
+      scalar_names_ = model_job_scalar_names(kind_);
+    }
+  } else if (is_study_kind(kind_)) {
     check_study_config(kind_, base_);
     scalar_names_ = study_scalar_names(kind_);
     row_names_ = study_row_names(kind_);
@@ -172,6 +178,7 @@ Job::Job(config::Document base) : base_(std::move(base)), kind_(job_kind(base_))
 }
 
 std::vector<std::string> Job::parameters() const {
+  if (model_) return model_job_parameters(kind_, *model_->definition());
   std::vector<std::string> p;
   const auto& schema = is_study_kind(kind_) ? study_schema(kind_) : experiment_schema(kind_);
   for (const auto& table : schema.keys) {
@@ -190,7 +197,7 @@ bool Job::has_parameter(const std::string& parameter) const {
 }
 
 std::optional<config::RenamedKey> Job::renamed_parameter(const std::string& parameter) const {
-  const auto& schema = is_study_kind(kind_) ? study_schema(kind_) : experiment_schema(kind_);
+  const auto& schema = model_ ? model_job_schema(kind_) : is_study_kind(kind_) ? study_schema(kind_) : experiment_schema(kind_);
   for (const auto& table : schema.keys) {
     if (table.type != config::ValueType::table) continue;
     for (const auto& r : table.table->renamed)
@@ -211,7 +218,9 @@ JobResult Job::run(const Overrides& overrides, const RunControl& control, JobWor
   try {
     const config::Document doc = with_overrides(base_, overrides);
     if (is_study_kind(kind_))
-      r = run_study(kind_, doc, control);
+      r = run_study(kind_, doc, control, model_.get());
+    else if (model_)
+      r = run_model_job(kind_, *model_, doc, control);
     else if (kind_ == "bright")
       reduce(run_bright(load_experiment_config(doc).bright, workspace.bright, control), bright_scalars(), r);
     else if (kind_ == "drive")

@@ -223,6 +223,8 @@ std::vector<std::pair<std::string, std::string>> sweep_identity(const SweepConfi
   }
   id.emplace_back("scalars", joined(scalar_names));
   if (!row_names.empty()) id.emplace_back("rows", joined(row_names));
+  // A model-file base: the model file's bytes too (SHA-256), so that a sweep resumes on the same model.
+  if (c.base_job && c.base_job->model_source()) id.emplace_back("model file", c.base_job->model_source()->definition()->file_sha256);
   return id;
 }
 

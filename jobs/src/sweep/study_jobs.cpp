@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -17,7 +18,10 @@
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/dark_job.hpp"
+#include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/jobs/regime_job.hpp"
+#include "lrchain/sim/dark/dark_ansatz.hpp"
+#include "model_jobs.hpp"
 
 namespace lrchain::jobs::sweep {
 
@@ -26,7 +30,7 @@ using namespace lrchain::sim;  // the numerics this job layer runs
 namespace {
 
 using namespace lrchain::config;
-constexpr double none = std::numeric_limits<double>::quiet_NaN();
+constexpr double no_scalar = std::numeric_limits<double>::quiet_NaN();
 
 // [dark]: the options of `lrchain dark continue`.
 std::shared_ptr<const TableSchema> dark_table() {
@@ -66,6 +70,27 @@ TableSchema study_top(const std::string& kind, const std::string& table_name, st
                      std::nullopt};
 }
 
+using StudySchemas = std::map<std::string, TableSchema, std::less<>>;
+
+// The base schema of a study kind; InvalidParameter("experiment") for any other kind.
+const TableSchema& schema_of(const StudySchemas& schemas, std::string_view kind) {
+  const auto it = schemas.find(kind);
+  if (it == schemas.end()) throw InvalidParameter("experiment", "must be \"dark continue\" or \"regime intervals\"");
+  return it->second;
+}
+
+// A model-file base of a study job: `model = "models/x.toml"` and its [parameters] (as a model-file
+// simulate config has them, model_experiment_config.hpp) in place of the resonant chain's [model].
+TableSchema model_study_top(const std::string& kind, const std::string& table_name, std::shared_ptr<const TableSchema> t,
+                            bool table_required) {
+  const TableSchema& simulate = model_experiment_schema("bright");
+  return TableSchema{"a \"" + kind + "\" sweep base of a model file",
+                     {choice("experiment", {kind}, "", "which job this file describes").require(),
+                      string("name", "the file name without .toml", "a label"), *simulate.find("model"),
+                      *simulate.find("parameters"), table_required ? table(table_name, t).require() : table(table_name, t)},
+                     std::nullopt};
+}
+
 Params read_model(const CheckedTable& root) {
   Params p;
   if (auto m = root.table("model")) {
@@ -80,6 +105,66 @@ Params read_model(const CheckedTable& root) {
 
 // ---- dark continue ---------------------------------------------------------------------------
 
+// The name a refused [dark] key goes by in a point's reason.
+std::string dark_key(const Document& doc, std::string_view key) { return fmt::format("[dark] {} in {}", key, doc.source()); }
+
+// The options of [dark] that the chain's and a model file's bases share, read into `c`.
+void read_dark_options(const CheckedTable& d, jobs::dark::DarkConfig& c) {
+  d.read("branch", c.branch);
+  d.read("center", c.center);
+  d.read("mode", c.mode);
+  d.read("sites", c.sites);
+  d.read("points", c.points);
+  d.read("ds", c.ds);
+  d.read("omega_min", c.omega_min);
+  d.read("omega_max", c.omega_max);
+}
+
+// [dark] of a model-file base: the chain's options, with the branch one of the model's (none: its
+// first defocusing edge) and edge_offset measured on the breather's side of that edge.
+std::shared_ptr<const TableSchema> model_dark_table() {
+  TableSchema t = *dark_table();
+  t.meaning = "a dark-breather branch of the model continued in omega_b, as `lrchain dark continue --model`";
+  for (auto& key : t.keys) {
+    if (key.name == "branch")
+      key = string("branch", "none", "branch of the model whose band edge the breather bifurcates from (none: the first defocusing edge)");
+    if (key.name == "edge_offset")
+      key.meaning = "start at omega_b = omega(edge) + sign(h_tilde) edge_offset instead (the breather's side of the edge)";
+  }
+  return std::make_shared<const TableSchema>(std::move(t));
+}
+
+// Reads a model-file base's [dark] into the dark job's config (branch step) on `model` (the point's
+// Model) and `source`'s lattice kernels, with the dark job's checks (InvalidParameter naming the key).
+jobs::dark::DarkConfig read_model_dark(const Document& doc, const Model& model, const ModelSource& source) {
+  const CheckedTable root = check(doc, model_study_schema("dark continue"));
+  jobs::dark::DarkConfig c;
+  c.step = jobs::dark::DarkStep::branch;
+  c.model = &model;
+  c.kernels = source.lattice().kernels.get();
+  const CheckedTable d = *root.table("dark");
+  const std::optional<double> start = d.number("omega_b"), edge_offset = d.number("edge_offset");
+  read_dark_options(d, c);
+  if (start.has_value() == edge_offset.has_value())
+    throw InvalidParameter(dark_key(doc, "omega_b"), "give exactly one of 'omega_b' and 'edge_offset'");
+  try {
+    if (edge_offset) {  // (omega_b - omega) h_tilde > 0 at the edge the dark job starts from
+      const std::optional<Index> given = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
+      const sim::dark::DefocusingEdge edge = sim::dark::defocusing_edge(model, given);
+      const NlsCoefficients k = coefficients(model, edge.branch, edge.theta);
+      c.omega_b = k.omega + (k.h_tilde > 0 ? *edge_offset : -*edge_offset);
+    } else {
+      c.omega_b = *start;
+    }
+    jobs::dark::validate(c);
+  } catch (const InvalidParameter& e) {
+    const std::string what = e.what(), prefix = "invalid " + e.parameter() + ": ";
+    const std::string parameter = e.parameter() == "omega_b" && edge_offset ? "edge_offset" : e.parameter();
+    throw InvalidParameter(dark_key(doc, parameter), what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+  }
+  return c;
+}
+
 // Reads [model] and [dark] into the dark job's config (branch step) with the checks of `lrchain dark
 // continue` (InvalidParameter naming the key in the file); also the ansatz at the start frequency.
 std::pair<jobs::dark::DarkConfig, DarkBreatherAnsatz> read_dark(const Document& doc) {
@@ -90,15 +175,8 @@ std::pair<jobs::dark::DarkConfig, DarkBreatherAnsatz> read_dark(const Document& 
   c.branch = "optical";
   const CheckedTable d = *root.table("dark");
   const std::optional<double> start = d.number("omega_b"), edge_offset = d.number("edge_offset");
-  d.read("branch", c.branch);
-  d.read("center", c.center);
-  d.read("mode", c.mode);
-  d.read("sites", c.sites);
-  d.read("points", c.points);
-  d.read("ds", c.ds);
-  d.read("omega_min", c.omega_min);
-  d.read("omega_max", c.omega_max);
-  const auto key = [&](const char* k) { return fmt::format("[dark] {} in {}", k, doc.source()); };
+  read_dark_options(d, c);
+  const auto key = [&](const char* k) { return dark_key(doc, k); };
   if (start.has_value() == edge_offset.has_value())
     throw InvalidParameter(key("omega_b"), "give exactly one of 'omega_b' and 'edge_offset'");
   if (c.sites % 2 == 0)
@@ -145,7 +223,7 @@ int stability_code(const sim::dark::FloquetResult& f) {
 // The branch reduced to the scalars of dark_scalar_names() and one row per point.
 void reduce_branch(const sim::dark::BranchResult& br, double omega_b, double omega_edge, int newton_iterations, JobResult& r) {
   const auto& pts = br.points;
-  double low = none, high = none, max_mod = 0, max_real = 1, max_osc = 1, max_E = 0, stable_extent = 0, unstable_extent = 0;
+  double low = no_scalar, high = no_scalar, max_mod = 0, max_real = 1, max_osc = 1, max_E = 0, stable_extent = 0, unstable_extent = 0;
   int stable = 0, real = 0, doubling = 0, oscillatory = 0, stable_windows = 0, unstable_windows = 0, part = 0;
   double last_tangent = -1;
   for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -172,21 +250,28 @@ void reduce_branch(const sim::dark::BranchResult& br, double omega_b, double ome
                                  double(b.iterations)});
   }
   r.scalars = {omega_b, omega_edge, double(newton_iterations), double(pts.size()), double(br.turning_points.size()),
-               br.turning_points.empty() ? none : br.turning_points.front(), low, high, double(stable), double(real),
+               br.turning_points.empty() ? no_scalar : br.turning_points.front(), low, high, double(stable), double(real),
                double(doubling), double(oscillatory), double(stable_windows), double(unstable_windows), stable_extent,
                unstable_extent, max_mod, max_real, max_osc, max_E};
 }
 
 // Seed, Newton, continuation with Floquet at every point: the dark job's branch step (dark_job.hpp).
-JobResult run_dark(const Document& doc, const RunControl& control) {
-  const auto [c, ansatz] = read_dark(doc);
+JobResult run_dark(const Document& doc, const RunControl& control, const ModelSource* source) {
+  std::optional<Model> model;  // a model-file base: the point's model (the job's config points at it)
+  jobs::dark::DarkConfig c;
+  if (source) {
+    model.emplace(source->model(model_parameter_values(check(doc, model_study_schema("dark continue")))));
+    c = read_model_dark(doc, *model, *source);
+  } else {
+    c = read_dark(doc).first;
+  }
   jobs::dark::DarkRunHooks hooks;
   hooks.stop = control.stop;
   const jobs::dark::DarkResult d = jobs::dark::run(c, hooks);
   JobResult r;
   if (!d.newton.converged) {
     r.status = PointStatus::numerical_failure;
-    r.reason = fmt::format("Newton found no breather at omega_b = {}: {}", ansatz.omega_b, d.newton.failure);
+    r.reason = fmt::format("Newton found no breather at omega_b = {}: {}", c.omega_b, d.newton.failure);
     return r;
   }
   if (d.branch.interrupted) {
@@ -194,7 +279,7 @@ JobResult run_dark(const Document& doc, const RunControl& control) {
     r.reason = "interrupted";
     return r;
   }
-  reduce_branch(d.branch, ansatz.omega_b, ansatz.omega, int(d.newton.history.size()), r);
+  reduce_branch(d.branch, c.omega_b, d.edge.omega, int(d.newton.history.size()), r);
   if (const auto failure = jobs::dark::failure(d)) {  // the corrector failed at once
     r.status = PointStatus::numerical_failure;
     r.reason = *failure;
@@ -206,39 +291,48 @@ JobResult run_dark(const Document& doc, const RunControl& control) {
 
 // ---- regime intervals ------------------------------------------------------------------------
 
-constexpr Branch both_branches[] = {Branch::optical, Branch::acoustic};
+// The branches a regime point runs: both of the resonant chain, or every branch of a model file.
+std::vector<std::string> regime_branches(const ModelDefinition* model) {
+  if (model) return model->branch_names;
+  return {std::string(to_string(Branch::optical)), std::string(to_string(Branch::acoustic))};
+}
 
-std::vector<std::string> regime_scalar_names() {
+std::vector<std::string> regime_scalar_names(const ModelDefinition* model) {
   std::vector<std::string> n;
-  for (Branch b : both_branches)
+  for (const auto& b : regime_branches(model))
     for (const char* s : {"intervals", "focusing_length", "first_lo", "first_hi", "last_lo", "last_hi"})
-      n.push_back(fmt::format("{}_{}", to_string(b), s));
+      n.push_back(fmt::format("{}_{}", b, s));
   return n;
 }
 
-// The focusing intervals of both branches: the job of `lrchain regime intervals --branch B`.
-JobResult run_regime(const Document& doc) {
-  const CheckedTable root = check(doc, study_schema("regime intervals"));
-  const Params p = read_model(root);
+// The focusing intervals of every branch: the job of `lrchain regime intervals --branch B` (with
+// `--model FILE` for a model-file base, whose point's Model takes the base's [parameters]).
+JobResult run_regime(const Document& doc, const ModelSource* source) {
+  const CheckedTable root = check(doc, source ? model_study_schema("regime intervals") : study_schema("regime intervals"));
+  RegimeLattice lattice;
+  if (source)
+    lattice.model = std::make_shared<const Model>(source->model(model_parameter_values(root)));
+  else
+    lattice.params = read_model(root);
   std::int64_t samples = RegimeIntervalsConfig{}.samples;
   if (auto r = root.table("regime")) r->read("samples", samples);
   JobResult r;
-  for (Branch b : both_branches) {
+  const std::vector<std::string> branches = regime_branches(source ? source->definition().get() : nullptr);
+  for (std::size_t b = 0; b < branches.size(); ++b) {
     RegimeIntervalsConfig config;
-    config.lattice.params = p;
-    config.branch = std::string(to_string(b));
+    config.lattice = lattice;
+    config.branch = branches[b];
     config.samples = int(samples);
     const auto s = run(config).structure;
     double length = 0;
     for (const auto& i : s.intervals) {
       length += i.hi - i.lo;
-      r.rows.insert(r.rows.end(), {double(b == Branch::optical ? 0 : 1), i.lo, i.hi, i.hi - i.lo, double(int(i.lo_cause)),
-                                   double(int(i.hi_cause))});
+      r.rows.insert(r.rows.end(), {double(b), i.lo, i.hi, i.hi - i.lo, double(int(i.lo_cause)), double(int(i.hi_cause))});
     }
     const bool any = !s.intervals.empty();
-    r.scalars.insert(r.scalars.end(), {double(s.intervals.size()), length, any ? s.intervals.front().lo : none,
-                                       any ? s.intervals.front().hi : none, any ? s.intervals.back().lo : none,
-                                       any ? s.intervals.back().hi : none});
+    r.scalars.insert(r.scalars.end(), {double(s.intervals.size()), length, any ? s.intervals.front().lo : no_scalar,
+                                       any ? s.intervals.front().hi : no_scalar, any ? s.intervals.back().lo : no_scalar,
+                                       any ? s.intervals.back().hi : no_scalar});
   }
   r.status = PointStatus::ok;
   return r;
@@ -256,23 +350,30 @@ bool is_study_kind(std::string_view kind) {
 }
 
 const TableSchema& study_schema(std::string_view kind) {
-  static const std::map<std::string, TableSchema, std::less<>> schemas{
-      {"dark continue", study_top("dark continue", "dark", dark_table(), true)},
-      {"regime intervals", study_top("regime intervals", "regime", regime_table(), false)}};
-  const auto it = schemas.find(kind);
-  if (it == schemas.end()) throw InvalidParameter("experiment", "must be \"dark continue\" or \"regime intervals\"");
-  return it->second;
+  static const StudySchemas schemas{{"dark continue", study_top("dark continue", "dark", dark_table(), true)},
+                                    {"regime intervals", study_top("regime intervals", "regime", regime_table(), false)}};
+  return schema_of(schemas, kind);
 }
 
-void check_study_config(std::string_view kind, const Document& doc) {
-  if (kind == "dark continue")
+const TableSchema& model_study_schema(std::string_view kind) {
+  static const StudySchemas schemas{
+      {"dark continue", model_study_top("dark continue", "dark", model_dark_table(), true)},
+      {"regime intervals", model_study_top("regime intervals", "regime", regime_table(), false)}};
+  return schema_of(schemas, kind);
+}
+
+void check_study_config(std::string_view kind, const Document& doc, const ModelSource* model) {
+  if (model) {
+    const Model point = model->model(model_parameter_values(check(doc, model_study_schema(kind))));
+    if (kind == "dark continue") read_model_dark(doc, point, *model);
+  } else if (kind == "dark continue")
     read_dark(doc);
   else
     read_model(check(doc, study_schema(kind)));
 }
 
-std::vector<std::string> study_scalar_names(std::string_view kind) {
-  return kind == "dark continue" ? dark_scalar_names() : regime_scalar_names();
+std::vector<std::string> study_scalar_names(std::string_view kind, const ModelDefinition* model) {
+  return kind == "dark continue" ? dark_scalar_names() : regime_scalar_names(model);
 }
 
 std::vector<std::string> study_row_names(std::string_view kind) {
@@ -280,19 +381,22 @@ std::vector<std::string> study_row_names(std::string_view kind) {
   return {"branch", "lo", "hi", "length", "lo_cause", "hi_cause"};
 }
 
-std::string study_rows_legend(std::string_view kind) {
+std::string study_rows_legend(std::string_view kind, const ModelDefinition* model) {
   if (kind == "dark continue")
     return "one row per branch point in continuation order; stability: 0 stable, +1 real, +2 period doubling, "
            "+4 oscillatory instability; part: 0 before the first turning point, +1 after each; max_real, "
            "max_period_doubling, max_oscillatory: 1 when there is none";
-  return "one row per focusing interval; branch: 0 optical, 1 acoustic; causes: 0 curvature_zero, 1 h_tilde_zero, "
-         "2 nonresonance1, 3 nonresonance2, 4 band_edge";
+  std::string branches;
+  const std::vector<std::string> names = regime_branches(model);
+  for (std::size_t b = 0; b < names.size(); ++b) branches += fmt::format("{}{} {}", b == 0 ? "" : ", ", b, names[b]);
+  return "one row per focusing interval; branch: " + branches +
+         "; causes: 0 curvature_zero, 1 h_tilde_zero, 2 nonresonance1, 3 nonresonance2, 4 band_edge";
 }
 
-JobResult run_study(std::string_view kind, const Document& doc, const RunControl& control) {
+JobResult run_study(std::string_view kind, const Document& doc, const RunControl& control, const ModelSource* model) {
   JobResult r;
   try {
-    r = kind == "dark continue" ? run_dark(doc, control) : run_regime(doc);
+    r = kind == "dark continue" ? run_dark(doc, control, model) : run_regime(doc, model);
   } catch (const Interrupted&) {
     throw;
   } catch (const std::runtime_error& e) {  // NumericalFailure, the contact integrator's step underflow

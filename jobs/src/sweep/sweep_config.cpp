@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -234,7 +235,8 @@ Overrides SweepConfig::overrides(std::size_t point) const {
   return o;
 }
 
-SweepConfig load_sweep_config(const std::filesystem::path& file, int ranks_on_node) {
+SweepConfig load_sweep_config(const std::filesystem::path& file, int ranks_on_node,
+                              std::shared_ptr<const ModelCompiler> compiler) {
   const Document doc = Document::from_file(file);
   const CheckedTable root = check(doc, sweep_schema());
   SweepConfig c;
@@ -256,7 +258,8 @@ SweepConfig load_sweep_config(const std::filesystem::path& file, int ranks_on_no
   c.output = output;
   c.base = std::filesystem::path(base).is_absolute() ? std::filesystem::path(base) : file.parent_path() / base;
 
-  const Job job = make_job(c);
+  c.base_job = std::make_shared<const Job>(Document::from_file(c.base), std::move(compiler));
+  const Job& job = *c.base_job;
   if (job.kind() != c.job)
     throw error_at(root, "the top level", "job",
                    fmt::format("the base config '{}' is a \"{}\" experiment, not \"{}\"", base, job.kind(), c.job));
@@ -314,6 +317,6 @@ SweepConfig load_sweep_config(const std::filesystem::path& file, int ranks_on_no
   return c;
 }
 
-Job make_job(const SweepConfig& c) { return Job(Document::from_file(c.base)); }
+Job make_job(const SweepConfig& c) { return c.base_job ? *c.base_job : Job(Document::from_file(c.base)); }
 
 }  // namespace lrchain::jobs::sweep

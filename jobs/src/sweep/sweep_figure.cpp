@@ -10,6 +10,8 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/regime/focusing_intervals.hpp"
+#include "lrchain/regime/model_regime.hpp"
+#include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
 #include "lrchain/jobs/gnuplot_text.hpp"
 #include "lrchain/sim/least_squares.hpp"
@@ -24,9 +26,18 @@ namespace {
 
 // The theta values where a focusing interval of the base config's chain begins or ends.
 std::vector<double> focusing_boundaries(const Job& job) {
-  const BrightRunConfig b = load_experiment_config(job.base()).bright;
+  std::vector<regime::FocusingInterval> intervals;
+  if (const ModelSource* source = job.model_source()) {
+    // A model file's base: its branch at the base's [parameters].
+    const ModelExperimentConfig mc = load_model_experiment_config(job.base());
+    const Model model = source->model(mc.parameters);
+    intervals = regime::focusing_intervals(model, model.branch(mc.branch));
+  } else {
+    const BrightRunConfig b = load_experiment_config(job.base()).bright;
+    intervals = regime::focusing_intervals(b.params, b.branch);
+  }
   std::vector<double> ends;
-  for (const auto& i : regime::focusing_intervals(b.params, b.branch)) {
+  for (const auto& i : intervals) {
     if (i.lo > 0) ends.push_back(i.lo);
     ends.push_back(i.hi);
   }
@@ -70,6 +81,36 @@ bool second_axis_log(const Axis& y) {
 bool draws_detuning_exponent(const SweepConfig& c) {
   return c.job == "bright" && c.axes.size() == 2 && c.axes[0].parameter == "bright.theta" &&
          c.axes[1].parameter == "bright.detuning" && second_axis_log(c.axes[1]);
+}
+
+// The cell of each axis value on the drawn axis: from half way to the next lower value to half way
+// to the next higher one (on a log axis half way in the logarithm); an end value's cell is as wide
+// on its open side as on the other, a single value's a unit (a decade) wide.
+std::vector<std::pair<double, double>> cell_edges(const std::vector<double>& drawn, bool log_axis) {
+  std::vector<double> at(drawn);
+  if (log_axis)
+    for (double& v : at) v = std::log10(v);
+  std::vector<std::pair<double, double>> cells;
+  for (const double v : at) {
+    double below = -INFINITY, above = INFINITY;
+    for (const double w : at) {
+      if (w < v) below = std::max(below, w);
+      if (w > v) above = std::min(above, w);
+    }
+    const double half_below = std::isfinite(below) ? (v - below) / 2 : std::isfinite(above) ? (above - v) / 2 : 0.5;
+    const double half_above = std::isfinite(above) ? (above - v) / 2 : half_below;
+    cells.emplace_back(v - half_below, v + half_above);
+  }
+  if (log_axis)
+    for (auto& [lo, hi] : cells) lo = std::pow(10.0, lo), hi = std::pow(10.0, hi);
+  return cells;
+}
+
+// A gnuplot array of `values` in order: "array name[n] = [v1, v2, ...]".
+std::string gnuplot_array(const std::string& name, const std::vector<double>& values) {
+  std::string a = fmt::format("array {}[{}] = [", name, values.size());
+  for (std::size_t k = 0; k < values.size(); ++k) a += fmt::format("{}{:.17g}", k ? ", " : "", values[k]);
+  return a + "]\n";
 }
 
 std::size_t index_of(const std::vector<std::string>& names, const std::string& name) {
@@ -124,24 +165,41 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
   // Every text that comes from the sweep file (its name, the output's name, the axes) goes into the
   // script as a gnuplot string (gnuplot_text.hpp), never as script text.
   const std::string x_name = gnuplot_text(x.parameter), y_name = gnuplot_text(y.parameter), value = gnuplot_text(scalar);
+  // Each point is drawn as its own cell (a box from cell_edges around it, in its own colour; a
+  // point without a value is left blank), not as the corner of pm3d's interpolated quadrangles.
+  // In the data file the block (column -1) is the x index and the line number ($0) counts x-major.
+  std::vector<double> drawn_y;
+  for (double v : y.values) drawn_y.push_back(sign * v);
+  const auto x_cells = cell_edges(x.values, false), y_cells = cell_edges(drawn_y, y_log);
+  std::vector<double> xlo, xhi, ylo, yhi;
+  for (const auto& [lo, hi] : x_cells) xlo.push_back(lo), xhi.push_back(hi);
+  for (const auto& [lo, hi] : y_cells) ylo.push_back(lo), yhi.push_back(hi);
+  std::vector<double> ends;  // the focusing interval ends inside the drawn theta range
+  if (c.job == "bright" && x.parameter == "bright.theta")
+    for (double b : focusing_boundaries(job))
+      if (b >= *std::min_element(xlo.begin(), xlo.end()) && b <= *std::max_element(xhi.begin(), xhi.end()))
+        ends.push_back(b);
   std::ostringstream gp;
   gp << "# log10(" << value << ") over (" << x_name << ", " << y_name << ") from " << gnuplot_string(c.output.filename().string())
      << ". Re-run: gnuplot " << gnuplot_file_name(stem + ".gp") << "\n"
      << "if (!exists(\"outfile\")) outfile = " << gnuplot_file_name(stem + ".png") << "\n"
      << "set terminal pngcairo size 900,640 noenhanced\nset output outfile\n"
      << "set xlabel '" << x_name << "'\nset ylabel '" << (y_negative ? "|" + y_name + "|" : y_name) << "'\n"
-     << "set cblabel 'log10(" << value << ")'\nset palette rgbformulae 33,13,10\nset view map\n"
+     << "set cblabel 'log10(" << value << ")'\nset palette rgbformulae 33,13,10\n"
      << (y_log ? "set logscale y\nset format y '1e%L'\n" : "")
-     << fmt::format("set yrange [{}:{}]\n", std::min(sign * y.values.front(), sign * y.values.back()),
-                    std::max(sign * y.values.front(), sign * y.values.back()))
-     << "set title '" << gnuplot_text(c.name) << ": log10(" << value << "); dashed: focusing interval ends'\n";
-  const bool theta_axis = c.job == "bright" && x.parameter == "bright.theta";
-  if (theta_axis)
-    for (double b : focusing_boundaries(job))
-      if (b >= std::min(x.values.front(), x.values.back()) && b <= std::max(x.values.front(), x.values.back()))
-        gp << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dashtype 2 linewidth 2 front\n", b);
-  gp << "set xrange [" << std::min(x.values.front(), x.values.back()) << ":" << std::max(x.values.front(), x.values.back())
-     << "]\nsplot " << gnuplot_file_name(stem + ".dat") << " using 1:2:3 with pm3d notitle\n";
+     << "# the cell of each point on both axes\n"
+     << gnuplot_array("xlo", xlo) << gnuplot_array("xhi", xhi) << gnuplot_array("ylo", ylo) << gnuplot_array("yhi", yhi)
+     << "ny = " << y.values.size() << "\n"
+     << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", *std::min_element(xlo.begin(), xlo.end()),
+                    *std::max_element(xhi.begin(), xhi.end()), *std::min_element(ylo.begin(), ylo.end()),
+                    *std::max_element(yhi.begin(), yhi.end()))
+     << "set title '" << gnuplot_text(c.name) << ": log10(" << value << ")"
+     << (ends.empty() ? "" : "; dashed: focusing interval ends") << "; blank: no value'\n";
+  for (double b : ends)
+    gp << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dashtype 2 linewidth 2 front\n", b);
+  gp << "plot " << gnuplot_file_name(stem + ".dat")
+     << " using 1:2:(xlo[column(-1)+1]):(xhi[column(-1)+1]):(ylo[int(column(0))%ny+1]):(yhi[int(column(0))%ny+1]):3 "
+        "with boxxyerror fillstyle solid 1.0 noborder fillcolor palette notitle\n";
   std::vector<FigureScript> figures{{stem + ".gp", gp.str(), stem + ".png"}};
 
   if (draws_detuning_exponent(c)) {
@@ -163,6 +221,19 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
   draw_figures(dir, figures, files);
   return files;
 }
+
+namespace {
+
+// Tics at the swept values when there are at most 20 (on a log axis gnuplot labels only the
+// decades, which left the values of the columns unnamed); else gnuplot's own.
+std::string axis_value_tics(const std::vector<double>& values) {
+  if (values.size() > 20) return "";
+  std::string tics = "set format x '%.3g'\nset xtics (";
+  for (std::size_t k = 0; k < values.size(); ++k) tics += fmt::format("{}{:.17g}", k ? ", " : "", values[k]);
+  return tics + ")\n";
+}
+
+}  // namespace
 
 std::vector<std::string> write_stability_figure(const SweepConfig& c, const SweepResults& r) {
   if (c.axes.size() != 1 || r.row_names.empty()) throw InvalidParameter("figure", "needs a one-axis \"dark continue\" sweep");
@@ -205,6 +276,8 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
   std::vector<std::string> files{stem + ".dat", stem + "_marks.dat"};
   const auto [lo, hi] = std::minmax_element(x.values.begin(), x.values.end());
   const std::string x_name = gnuplot_text(x.parameter);
+  // The band edge is known at the axis values only: a mark at each (a line between them invented
+  // the values in between).
   std::ostringstream gp;
   gp << "# Dark-breather branches in the (" << x_name << ", omega_b) plane from " << gnuplot_string(c.output.filename().string())
      << ". Re-run: gnuplot " << gnuplot_file_name(stem + ".gp") << "\n"
@@ -214,14 +287,27 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
      << "set ylabel 'omega_b'\nset key outside right top\nset grid\n"
      << (x_log ? "set logscale x\n" : "")
      << fmt::format("set xrange [{}:{}]\n", shifted(*lo, -3), shifted(*hi, 3))
+     << axis_value_tics(x.values)
      << "set title '" << gnuplot_text(c.name) << ": dark-breather branches and their Floquet stability'\n"
      << "plot " << gnuplot_file_name(stem + ".dat") << " using 1:($3 == 0 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#009900' title 'stable', \\\n"
      << "     '' using 1:($3 == 1 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#dd0000' title 'real-unstable', \\\n"
      << "     '' using 1:($3 == 2 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#0000dd' title 'oscillatory-unstable', \\\n"
      << "     " << gnuplot_file_name(stem + "_marks.dat") << " using 1:2 with points pointtype 2 pointsize 2 lw 2 lc rgb 'black' title 'turning point', \\\n"
-     << "     '' using 1:3 with lines dashtype 2 lc rgb 'gray40' title 'band edge omega(pi)'\n";
+     << "     '' using 1:3 with points pointtype '—' pointsize 2 lc rgb 'gray40' title 'band edge omega(pi)'\n";
   draw_figures(dir, {{stem + ".gp", gp.str(), stem + ".png"}}, files);
   return files;
+}
+
+std::vector<std::string> write_requested_figure(const SweepConfig& c, const Job& job) {
+  if (c.figure.empty()) return {};
+  const SweepResults results = read_results(c.output, c, job);
+  const std::vector<std::string> files = sweep_figure_files(c);
+  mark_side_files_pending(c, files);
+  std::vector<std::string> written = c.figure == "stability" && c.job == "dark continue"
+                                         ? write_stability_figure(c, results)
+                                         : write_sweep_figures(c, job, results, c.figure);
+  record_side_files(c, files);
+  return written;
 }
 
 }  // namespace lrchain::jobs::sweep

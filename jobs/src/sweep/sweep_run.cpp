@@ -60,6 +60,7 @@ ResultsKeeper::ResultsKeeper(const SweepConfig& c, const Job& job, const SweepRu
       results_(job, c.points()),
       last_write_(std::chrono::steady_clock::now()),
       progress_(0, 0, false),
+      on_progress_(o.on_progress),
       csv_files_(csv_view_files(c, job)) {
   check_side_files(c, job);
   std::error_code ec;
@@ -88,6 +89,7 @@ void ResultsKeeper::record(std::size_t point, const JobResult& r) {
   results_.set(point, r);
   const std::size_t done = results_.finished();
   progress_.update(done);
+  if (on_progress_) on_progress_(done, results_.points);
   const auto now = std::chrono::steady_clock::now();
   if (std::chrono::duration<double>(now - last_write_).count() >= config_.checkpoint_seconds) {
     write_results(config_.output, config_, results_);
@@ -115,6 +117,7 @@ void ResultsKeeper::write_final() {
     record_side_files(config_, csv_files_);
   }
   progress_.finish(results_.finished());
+  if (on_progress_) on_progress_(results_.finished(), results_.points);
 }
 
 SweepOutcome outcome_of(const ResultsKeeper& keeper, std::size_t ran, bool interrupted, double seconds) {

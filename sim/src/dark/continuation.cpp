@@ -3,6 +3,8 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "lrchain/errors.hpp"
+
 namespace lrchain::sim::dark {
 
 namespace {
@@ -58,12 +60,16 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
   accept(r.lpNorm<Eigen::Infinity>());
   const double first_amplitude = state_amplitude(shooting, q0);
 
-  while (Index(out.points.size()) < o.max_points) {
-    if (o.stop && o.stop->load(std::memory_order_relaxed)) {
-      out.interrupted = true;
-      out.stop_reason = fmt::format("interrupted after {} points at omega_b = {:.6f}", out.points.size(), u(k));
-      return out;
-    }
+  // A signal ends the branch between points, between corrector iterations, or inside an integration
+  // (Interrupted, when the shooting's integration options carry the stop flag): the points so far stay.
+  auto interrupted = [&](double omega_b) {
+    out.interrupted = true;
+    out.stop_reason = fmt::format("interrupted after {} points at omega_b = {:.6f}", out.points.size(), omega_b);
+    return out;
+  };
+  auto stopped = [&] { return o.stop && o.stop->load(std::memory_order_relaxed); };
+  while (Index(out.points.size()) < o.max_points) try {
+    if (stopped()) return interrupted(u(k));
     const Eigen::VectorXd u_prev = u;
     const Eigen::VectorXd t = t_prev;
     // Chord corrector with the Jacobian of the last point, refreshed when it stalls.
@@ -77,6 +83,7 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
     const Eigen::VectorXd u_pred = u;
     iterations = 0;
     for (Index it = 0; it < o.max_corrector; ++it) {
+      if (stopped()) return interrupted(u_prev(k));
       shooting.evaluate(u.head(k), u(k), r, nullptr);
       res = r.lpNorm<Eigen::Infinity>();
       iterations = it;
@@ -96,6 +103,9 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
       rhs.head(r.size()) = r;
       rhs(r.size()) = t.dot(u - u_pred);
       u -= qr.solve(rhs);
+      // A corrector that moves farther than the step itself (or to omega_b <= 0, where T_b < 0 makes
+      // any Z(0) at rest a solution) has jumped off the branch: a smaller step instead.
+      if (!(u(k) > 0.0) || (u - u_pred).norm() > ds) break;
     }
     if (!converged) {
       u = u_prev;
@@ -123,6 +133,8 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
     accept(res);
     if (iterations <= 4) ds = std::min(ds * 1.5, o.ds_max);
     if (iterations >= 7) ds *= 0.7;
+  } catch (const Interrupted&) {
+    return interrupted(out.points.empty() ? omega0 : out.points.back().omega_b);
   }
   out.stop_reason = fmt::format("reached {} points", o.max_points);
   return out;

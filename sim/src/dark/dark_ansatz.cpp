@@ -14,10 +14,10 @@
 
 namespace lrchain::sim::dark {
 
-namespace {
-// "defocusing", "focusing (omega'' h_tilde = ...)" or why there are no coefficients at theta.
-std::string edge_regime(const Model& model, Index branch, double theta, bool& defocusing) {
-  defocusing = false;
+// The NLS regime at the edge theta of `branch` (singular where there are no coefficients, or h_tilde
+// diverges there) and its text, e.g. "focusing (omega'' h_tilde = -0.0312)".
+std::string band_edge_regime(const Model& model, Index branch, double theta, Regime& regime) {
+  regime = Regime::singular;
   try {
     const NlsCoefficients c = coefficients_from_evaluators(model, branch, theta);
     if (c.regime == Regime::singular || !std::isfinite(c.curvature * c.h_tilde)) return "singular coefficients";
@@ -29,13 +29,14 @@ std::string edge_regime(const Model& model, Index branch, double theta, bool& de
     if (!(std::abs(c.h_tilde - near.h_tilde) <= 1e-3 * std::abs(near.h_tilde) + 1e-12))
       return fmt::format("singular coefficients (h_tilde = {:.4g} at the edge, {:.4g} at theta = {:.6g})", c.h_tilde,
                          near.h_tilde, inside);
-    defocusing = c.regime == Regime::defocusing;
+    regime = c.regime;
     return fmt::format("{} (omega'' h_tilde = {:.4g})", to_string(c.regime), c.curvature * c.h_tilde);
   } catch (const InvalidParameter&) {
     return "no real positive frequency";
   }
 }
 
+namespace {
 // The Bloch vector (K_0 = 1) of frequency omega at theta = 0 from the generated Jacobian at rest:
 // D_{gf} = (J 1_f)_g, D K = -omega^2 K. (bloch_mode needs every branch to have a positive
 // frequency, and an acoustic branch has omega = 0 at theta = 0.)
@@ -75,9 +76,9 @@ DefocusingEdge defocusing_edge(const Model& model, std::optional<Index> branch) 
   for (Index b = 0; b < static_cast<Index>(names.size()); ++b) {
     if (branch && *branch != b) continue;
     for (const double theta : {std::numbers::pi, 0.0}) {
-      bool defocusing = false;
-      const std::string regime = edge_regime(model, b, theta, defocusing);
-      if (defocusing) return {b, theta};
+      Regime found = Regime::singular;
+      const std::string regime = band_edge_regime(model, b, theta, found);
+      if (found == Regime::defocusing) return {b, theta};
       checked += fmt::format("{}{} at theta = {}: {}", checked.empty() ? "" : "; ", names[static_cast<std::size_t>(b)], theta == 0 ? "0" : "pi",
                              regime);
     }
@@ -93,22 +94,36 @@ DarkAnsatz make_dark_ansatz(const Model& model, const lrchain_lattice_kernels& k
   const std::string where = fmt::format("the theta = {} edge of {} branch {}", edge.theta == 0 ? "0" : "pi",
                                         model.name(), model.definition().branch_names.at(static_cast<std::size_t>(branch)));
   if (c.regime != Regime::defocusing) throw InvalidParameter("branch", where + " is not defocusing");
-  const double detuning = 3.0 * (omega_b - c.omega);
-  if (!(std::isfinite(omega_b) && omega_b > 0.0 && detuning / c.h_tilde > 0.0))
+  // With the far-field mean strain fixed to zero (the shooting's C_x row; on-site models have no mean
+  // strain) the background plane wave of NLS amplitude A (carrier 2 A cos) has
+  // omega_b - omega = h A^2, while h_tilde = h - lambda beta sets the dip (eq:defocus_app with
+  // f = lambda mu/h_tilde, as eq:Ftau does for the resonant chain): a dark breather exists only on the
+  // side where (omega_b - omega) h > 0.
+  const double detuning = omega_b - c.omega;
+  if (!(std::isfinite(c.h) && c.h != 0.0))
+    throw InvalidParameter("branch", fmt::format("{} has no dark breather: h = {:.6g} there, so the background's "
+                                                 "frequency omega + h A^2 does not move off the edge",
+                                                 where, c.h));
+  if (!(std::isfinite(omega_b) && omega_b > 0.0 && detuning / c.h > 0.0))
     throw InvalidParameter("omega_b", fmt::format("must lie {} omega = {:.10g}, {} (the side where (omega_b - omega) "
-                                                  "h_tilde > 0, h_tilde = {:.6g})",
-                                                  c.h_tilde < 0 ? "below" : "above", c.omega, where, c.h_tilde));
+                                                  "h > 0, h = {:.6g}: the background's frequency omega + h A^2 with "
+                                                  "the far-field mean strain fixed to zero{})",
+                                                  c.h < 0 ? "below" : "above", c.omega, where, c.h,
+                                                  c.h * c.h_tilde < 0 ? fmt::format("; h_tilde = {:.6g} only sets "
+                                                                                    "the dip's width", c.h_tilde)
+                                                                      : std::string()));
   DarkAnsatz a;
   a.branch = branch;
   a.theta = edge.theta;
   a.omega_b = omega_b;
   a.omega = c.omega;
   a.curvature = c.curvature;
+  a.h = c.h;
   a.h_tilde = c.h_tilde;
   a.mean_flow = model.definition().mean_flow;
   a.lambda = a.mean_flow ? c.lambda : 0.0;
-  a.amplitude = std::sqrt(detuning / c.h_tilde);
-  a.inverse_width = std::sqrt(detuning / c.curvature);
+  a.amplitude = std::sqrt(detuning / c.h);                                 // omega_b - omega = h A^2
+  a.inverse_width = std::sqrt(c.h_tilde * a.amplitude * a.amplitude / c.curvature);  // eta^2 = -mu/omega'' = h_tilde A^2/omega''
   a.mean_factor = a.mean_flow ? -c.lambda * std::sqrt(c.curvature * c.h_tilde) / std::abs(c.h_tilde) : 0.0;
   if (edge.theta == 0)
     a.kernel = uniform_kernel(model, kernels, c.omega);

@@ -30,7 +30,8 @@ double dark_dip_position(const Eigen::VectorXd& amplitude) {
 
 // Direct integration of eq:Hertzd0S from (Z(0), 0) with per-period measures (eq:relerr, eq:center).
 DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, Index sites, double omega_b,
-                                double t_end, Index samples_per_period, const std::atomic<bool>* stop) {
+                                double t_end, Index samples_per_period, const std::atomic<bool>* stop,
+                                const std::function<void(double)>& progress) {
   if (!(omega_b > 0)) throw InvalidParameter("omega_b", "must be > 0");
   if (samples_per_period < 4) throw InvalidParameter("samples", "at least 4 samples per period");
   const Index N = sites;
@@ -85,6 +86,7 @@ DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::Vector
     previous = pos;
     r.position = pos;
     out.periods.push_back(r);
+    if (progress) progress(static_cast<double>(m) / static_cast<double>(M));
   }
   return out;
 }
@@ -92,12 +94,12 @@ DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::Vector
 DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
                                    double t_end, Index samples_per_period,
                                    const ContactIntegrationOptions& integration,
-                                   const std::atomic<bool>* stop) {
+                                   const std::atomic<bool>* stop, const std::function<void(double)>& progress) {
   const Index N = z0.size() / 2;
   StrainLatticeOrbit orbit(p, N);
   ContactIntegrator integrator(orbit, integration);
   return evolve_dark_orbit([&](std::vector<double>& s, double t0, double t1) { integrator.integrate(s, t0, t1); },
-                           z0, N, omega_b, t_end, samples_per_period, stop);
+                           z0, N, omega_b, t_end, samples_per_period, stop, progress);
 }
 
 }  // namespace lrchain::sim::dark

@@ -4,13 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <csignal>
 #include <numbers>
 #include <string>
 
-#include <boost/numeric/odeint/integrate/integrate_adaptive.hpp>
 #include <boost/numeric/odeint/stepper/generation.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
+#include <boost/numeric/odeint/util/detail/less_with_sign.hpp>
+#include <boost/numeric/odeint/integrate/max_step_checker.hpp>
+#include <utility>
 
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/dark/floquet.hpp"
@@ -71,6 +74,50 @@ void DarkOrbit::rhs(const double* s, double* ds) const {
   lattice_.acceleration(s, ds + P);
 }
 
+// integrate_adaptive's loop for a controlled stepper, kept here so that steps can be counted,
+// recorded a chunk at a time and interrupted: the same accepted steps, bit for bit.
+struct DarkOrbit::AdaptiveRun {
+  using Controlled = decltype(odeint::make_controlled(0.0, 0.0, 0.0, std::declval<odeint::runge_kutta_fehlberg78<OrbitState>>()));
+  Controlled stepper;
+  double t, t1, dt;
+  std::size_t steps = 0, max_steps;
+  bool ran_away = false;
+  odeint::failed_step_checker fail{};
+};
+
+bool DarkOrbit::smooth_chunk(AdaptiveRun& run, std::vector<double>& state, bool record) const {
+  auto system = [this](const OrbitState& s, OrbitState& ds, double) { rhs(s.data(), ds.data()); };
+  times_.clear();
+  steps_.clear();
+  for (std::size_t k = 0; k < chunk_steps; ++k) {
+    if (options_.stop && options_.stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
+    if (!odeint::detail::less_with_sign(run.t, run.t1, run.dt)) return false;
+    if (odeint::detail::less_with_sign(run.t1, run.t + run.dt, run.dt)) run.dt = run.t1 - run.t;
+    const double start = run.t;
+    odeint::controlled_step_result result;
+    do {
+      result = run.stepper.try_step(system, state, run.t, run.dt);
+      run.fail();  // throws after 500 rejected trials in a row
+    } while (result == odeint::fail);
+    run.fail.reset();
+    // An orbit that runs away (a corrector's guess beyond a polynomial force's range) oscillates ever
+    // faster: a step below min_step, or more steps than max_steps, abandons it as NaN, which Newton
+    // and the corrector report as a residual that is not finite.
+    if ((run.t < run.t1 && run.t - start < options_.min_step) || ++run.steps > run.max_steps) {
+      std::fill(state.begin(), state.end(), std::numeric_limits<double>::quiet_NaN());
+      run.ran_away = true;
+      times_.clear();
+      steps_.clear();
+      return false;
+    }
+    if (record) {
+      times_.push_back(start);
+      steps_.push_back(run.t - start);
+    }
+  }
+  return true;
+}
+
 void DarkOrbit::integrate(std::vector<double>& state, double t0, double t1) const {
   if (contact_integrator_) {  // contact changes located; the accepted step times kept for the tangents
     record_.clear();
@@ -79,26 +126,23 @@ void DarkOrbit::integrate(std::vector<double>& state, double t0, double t1) cons
     steps_.assign(record_.dt.begin(), record_.dt.end());
     return;
   }
-  auto system = [this](const OrbitState& s, OrbitState& ds, double) { rhs(s.data(), ds.data()); };
-  auto stepper = odeint::make_controlled(options_.abs_tol, options_.rel_tol, options_.max_step, steppers_->orbit);
-  const std::atomic<bool>* stop = options_.stop;
-  times_.clear();
-  odeint::integrate_adaptive(stepper, system, state, t0, t1, std::min(options_.initial_step, t1 - t0),
-                             [this, stop](const OrbitState&, double t) {
-                               if (stop && stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
-                               times_.push_back(t);
-                             });
-  steps_.clear();
-  for (std::size_t k = 0; k + 1 < times_.size(); ++k) steps_.push_back(times_[k + 1] - times_[k]);
+  AdaptiveRun run{odeint::make_controlled(options_.abs_tol, options_.rel_tol, options_.max_step, steppers_->orbit), t0,
+                  t1, std::min(options_.initial_step, t1 - t0), 0,
+                  1000 + std::size_t(options_.max_steps_per_time * std::max(0.0, t1 - t0))};
+  while (smooth_chunk(run, state, false)) {
+  }
 }
 
-// Orbit with error control first (its accepted step times), then orbit and tangents together on
-// exactly those steps: the tangents are the derivative of the discrete flow.
+// Orbit with error control first (its accepted step times, a chunk at a time for smooth models),
+// then orbit and tangents together on exactly those steps: the tangents are the derivative of the
+// discrete flow.
 void DarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi, double t0, double t1) const {
   const std::size_t P = std::size_t(positions_), n = 2 * P, columns = std::size_t(phi.cols());
   if (phi.rows() != Eigen::Index(n)) throw std::invalid_argument("DarkOrbit: phi must have 2 positions() rows");
-  std::vector<double> orbit_only = state;
-  integrate(orbit_only, t0, t1);
+  auto run_away = [&] {  // the orbit ran away (above): so do its tangents
+    std::fill(state.begin(), state.end(), std::numeric_limits<double>::quiet_NaN());
+    phi.setConstant(std::numeric_limits<double>::quiet_NaN());
+  };
   extended_.resize(n * (1 + columns));
   std::copy(state.begin(), state.end(), extended_.begin());
   for (std::size_t j = 0; j < columns; ++j)
@@ -112,11 +156,28 @@ void DarkOrbit::integrate(std::vector<double>& state, Eigen::MatrixXd& phi, doub
       lattice_.jacobian_action(s.data(), column, out + P);
     }
   };
-  const std::vector<double> times = times_, steps = steps_;
   odeint::runge_kutta_fehlberg78<OrbitState> stepper;
-  for (std::size_t k = 0; k < steps.size(); ++k) {
-    if (options_.stop && options_.stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
-    stepper.do_step(system, extended_, times[k], steps[k]);
+  auto replay = [&] {  // orbit and tangents on the recorded steps
+    for (std::size_t k = 0; k < steps_.size(); ++k) {
+      if (options_.stop && options_.stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
+      stepper.do_step(system, extended_, times_[k], steps_[k]);
+    }
+  };
+  orbit_only_.assign(state.begin(), state.end());
+  if (contact_integrator_) {
+    integrate(orbit_only_, t0, t1);
+    if (!std::isfinite(orbit_only_.front())) return run_away();
+    replay();
+  } else {
+    AdaptiveRun run{odeint::make_controlled(options_.abs_tol, options_.rel_tol, options_.max_step, steppers_->orbit),
+                    t0, t1, std::min(options_.initial_step, t1 - t0), 0,
+                    1000 + std::size_t(options_.max_steps_per_time * std::max(0.0, t1 - t0))};
+    bool more = true;
+    while (more) {
+      more = smooth_chunk(run, orbit_only_, true);
+      if (run.ran_away) return run_away();
+      replay();
+    }
   }
   std::copy(extended_.begin(), extended_.begin() + Eigen::Index(n), state.begin());
   for (std::size_t j = 0; j < columns; ++j)

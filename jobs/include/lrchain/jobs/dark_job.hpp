@@ -41,7 +41,7 @@ struct DarkConfig {
   Params params;
   const Model* model = nullptr;
   const lrchain_lattice_kernels* kernels = nullptr;
-  double omega_b = 0;  // breather frequency, on the side of the edge where (omega_b - omega) h_tilde > 0 (required)
+  double omega_b = 0;  // breather frequency, on the side of the edge where (omega_b - omega) h > 0 (required)
   std::string branch;  // optical|acoustic, or a model's branch; "": optical / the model's first defocusing edge
   std::string center = "bond";      // bond (n0 = 1/2) | site (n0 = 0)
   std::string mode = "reversible";  // shooting over a half/quarter period | full (the whole period, a check)
@@ -74,6 +74,7 @@ struct DarkRunHooks {
   bool stop_integrations = false;           // `stop` also ends a running integration (Interrupted)
   std::function<void(const sim::dark::NewtonRecord&)> newton_progress;  // after every Newton iteration
   std::function<void(const sim::dark::BranchPoint&)> on_point;          // after every branch point
+  std::function<void(double fraction)> evolution_progress;  // after every period of evolve: periods done / periods
 };
 
 // The band edge the breather bifurcates from and the lattice's variables.

@@ -24,7 +24,7 @@ struct ExperimentConfig {
 std::vector<std::string> experiment_kinds();
 // The schema of a simulate config's top level for one kind (its tables are its keys' schemas);
 // InvalidParameter("experiment") for another kind.
-const config::TableSchema& experiment_schema(std::string_view kind);
+const lrchain::config::TableSchema& experiment_schema(std::string_view kind);
 // The reference of every key of every kind as Markdown (the generated part of docs/configs.md).
 std::string experiment_configs_markdown();
 
@@ -32,6 +32,6 @@ std::string experiment_configs_markdown();
 // unknown keys, wrong types, values out of range) is a config::ConfigError (an InputError: exit 2)
 // naming the file, line and key; cross-key checks of validate(BrightRunConfig) give InvalidParameter.
 ExperimentConfig load_experiment_config(const std::filesystem::path& file);
-ExperimentConfig load_experiment_config(const config::Document& doc);
+ExperimentConfig load_experiment_config(const lrchain::config::Document& doc);
 
 }  // namespace lrchain::jobs

@@ -29,10 +29,10 @@ struct ModelExperimentConfig {
 
 // True when the config's top-level `model` is a string (a model file), not the resonant chain's
 // [model] table.
-bool is_model_experiment(const config::Document& doc);
+bool is_model_experiment(const lrchain::config::Document& doc);
 // The schema of a model config of this experiment ("bright" or "ring"), its tables included.
-const config::TableSchema& model_experiment_schema(const std::string& experiment);
+const lrchain::config::TableSchema& model_experiment_schema(const std::string& experiment);
 // Reads a checked model config (ConfigError naming file, line and key otherwise).
-ModelExperimentConfig load_model_experiment_config(const config::Document& doc);
+ModelExperimentConfig load_model_experiment_config(const lrchain::config::Document& doc);
 
 }  // namespace lrchain::jobs

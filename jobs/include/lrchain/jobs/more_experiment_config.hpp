@@ -14,7 +14,7 @@ namespace lrchain::jobs {
 // The top-level `experiment` key of a config: "bright", "drive" or "modulated". A file that cannot
 // be read or parsed, or whose `experiment` is missing or another value, is a config::ConfigError.
 std::string experiment_kind(const std::filesystem::path& file);
-std::string experiment_kind(const config::Document& doc);
+std::string experiment_kind(const lrchain::config::Document& doc);
 
 struct DriveExperiment {
   std::string name, out_dir;
@@ -28,8 +28,8 @@ struct ModulatedExperiment {
 // Read and check a config of that kind (config::ConfigError naming file, line and key; the
 // cross-key checks of validate() give InvalidParameter).
 DriveExperiment load_drive_config(const std::filesystem::path& file);
-DriveExperiment load_drive_config(const config::Document& doc);
+DriveExperiment load_drive_config(const lrchain::config::Document& doc);
 ModulatedExperiment load_modulated_config(const std::filesystem::path& file);
-ModulatedExperiment load_modulated_config(const config::Document& doc);
+ModulatedExperiment load_modulated_config(const lrchain::config::Document& doc);
 
 }  // namespace lrchain::jobs

@@ -13,8 +13,11 @@
 #include <cstring>
 #include <deque>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -260,6 +263,26 @@ MpiSession::MpiSession() {
 
 MpiSession::~MpiSession() {
   if (!abandoned_) MPI_Finalize();
+}
+
+void load_on_rank0_first(const MpiSession& mpi, const std::function<void()>& step) {
+  int rank0_loaded = 1;
+  if (mpi.rank() == 0) {
+    std::exception_ptr failure;
+    try {
+      step();
+    } catch (...) {
+      failure = std::current_exception();
+      rank0_loaded = 0;
+    }
+    MPI_Bcast(&rank0_loaded, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (failure) std::rethrow_exception(failure);
+    return;
+  }
+  MPI_Bcast(&rank0_loaded, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  step();
+  if (rank0_loaded == 0)
+    throw std::runtime_error("rank " + std::to_string(mpi.rank()) + ": rank 0 could not load the sweep (its error is on its stderr)");
 }
 
 SweepOutcome run_sweep_mpi(const MpiSession& mpi, const SweepConfig& c, const Job& job, const SweepRunOptions& o) {

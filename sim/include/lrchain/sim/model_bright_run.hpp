@@ -18,6 +18,7 @@
 #include <complex>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,6 +52,8 @@ struct ModelBrightConfig {
   // Set (SIGINT): the run ends at its next step boundary (an observation time for the symplectic
   // stepper) with lrchain::Interrupted.
   const std::atomic<bool>* stop = nullptr;
+  // Called at every sample with t / t_end in [0, 1] (a front end's progress display; empty: none).
+  std::function<void(double fraction)> progress;
 };
 
 // The ansatz of one model, branch, theta and detuning.

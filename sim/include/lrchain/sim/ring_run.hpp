@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +30,9 @@ struct RingRunConfig {
   std::optional<double> packet_amplitude;     // default: a tenth of the smallest amplitude
   double packet_width = 24;                   // standard deviation of the packet's Gaussian envelope, in sites
   const std::atomic<bool>* stop = nullptr;    // set (SIGINT): lrchain::Interrupted at the next sample
+  // Called after each plane wave and after the packet with the share of the run's lattice steps
+  // (sites x steps) done, in [0, 1] (a front end's progress display; empty: none).
+  std::function<void(double fraction)> progress;
 };
 
 // Throws InvalidParameter naming the option (theta, sites, amplitudes, periods, ...).

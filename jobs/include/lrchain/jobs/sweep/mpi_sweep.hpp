@@ -5,6 +5,7 @@
 // back the results with the request. No static split: a rank stuck on slow points takes fewer.
 // Only in builds with MPI (library lrchain_sweep_mpi).
 #include <atomic>
+#include <functional>
 
 #include "lrchain/jobs/sweep/sweep_run.hpp"
 
@@ -32,6 +33,13 @@ class MpiSession {
   int rank_ = 0, size_ = 1, local_size_ = 1;
   bool threads_allowed_ = false, abandoned_ = false;
 };
+
+// Runs `step` (loading the sweep: its model file compiled into the model cache) on rank 0 first,
+// then on the other ranks, which find rank 0's compiled model in the cache: one compile per sweep,
+// not one per rank. Rank 0's exception is rethrown there; the other ranks run `step` all the same
+// (the same bad input gives them the same error) and, if it succeeds where rank 0's failed, throw
+// std::runtime_error rather than wait for a rank 0 that never starts.
+void load_on_rank0_first(const MpiSession& mpi, const std::function<void()>& step);
 
 // Runs the sweep on every rank of the session; rank 0 writes the results. The outcome is rank 0's
 // (the other ranks report the points they ran).

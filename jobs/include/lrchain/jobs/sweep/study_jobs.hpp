@@ -9,11 +9,15 @@
 //   "regime intervals": the focusing theta-intervals of both branches (regime/focusing_intervals.hpp),
 //                       as `lrchain regime intervals`; scalars: count, total length, first and last
 //                       interval per branch; one row per interval.
+// Each base is of the resonant chain ([model] rho, ...) or of a model file (`model = "models/x.toml"`
+// and its [parameters], loaded once per sweep by Job: jobs::ModelSource), as `lrchain dark continue
+// --model` and `lrchain regime intervals --model` run it.
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "lrchain/config/strict_toml.hpp"
+#include "lrchain/jobs/model_source.hpp"
 #include "lrchain/sim/run_control.hpp"
 #include "lrchain/jobs/sweep/job.hpp"
 
@@ -23,17 +27,24 @@ namespace lrchain::jobs::sweep {
 const std::vector<std::string>& study_kinds();
 bool is_study_kind(std::string_view kind);
 // The base config's schema of a study kind (top level: experiment, [model], [dark] or [regime]).
-const config::TableSchema& study_schema(std::string_view kind);
-// Checks a base config of a study kind beyond its schema (ConfigError / InvalidParameter).
-void check_study_config(std::string_view kind, const config::Document& doc);
+const lrchain::config::TableSchema& study_schema(std::string_view kind);
+// The schema of a model-file base of a study kind (experiment, model = "FILE", [parameters], and
+// [dark] or [regime]).
+const lrchain::config::TableSchema& model_study_schema(std::string_view kind);
+// Checks a base config of a study kind beyond its schema (ConfigError / InvalidParameter); `model`:
+// the loaded model of a model-file base (its [parameters] checked against it), else null.
+void check_study_config(std::string_view kind, const lrchain::config::Document& doc, const ModelSource* model = nullptr);
 
-std::vector<std::string> study_scalar_names(std::string_view kind);
+// The scalars of a point; a model-file base's regime scalars are named after the model's branches.
+std::vector<std::string> study_scalar_names(std::string_view kind, const ModelDefinition* model = nullptr);
 // The columns of the job's rows, and what their codes mean.
 std::vector<std::string> study_row_names(std::string_view kind);
-std::string study_rows_legend(std::string_view kind);
+std::string study_rows_legend(std::string_view kind, const ModelDefinition* model = nullptr);
 
-// Runs one point from its (overridden) base config; InputError for a config the checks refuse,
-// a failed Newton solve or continuation gives status numerical_failure with the reason.
-JobResult run_study(std::string_view kind, const config::Document& doc, const sim::RunControl& control);
+// Runs one point from its (overridden) base config (`model`: the loaded model of a model-file base);
+// InputError for a config the checks refuse, a failed Newton solve or continuation gives status
+// numerical_failure with the reason.
+JobResult run_study(std::string_view kind, const lrchain::config::Document& doc, const sim::RunControl& control,
+                    const ModelSource* model = nullptr);
 
 }  // namespace lrchain::jobs::sweep

@@ -5,6 +5,7 @@
 // last axis varying fastest) or the i-th values of every axis together (`layout = "list"`).
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,6 +32,7 @@ struct SweepConfig {
   std::size_t csv_max_points = 10000;  // a CSV view next to it when the sweep has at most this many points
   double checkpoint_seconds = 30;      // the results file is rewritten at least this often
   std::string figure;                  // scalar drawn as log10 over a two-axis grid (empty: none)
+  std::shared_ptr<const Job> base_job;  // the job of `base`, made (its model file loaded) by load_sweep_config
 
   std::size_t points() const;
   std::vector<std::size_t> shape() const;      // grid: one extent per axis; list: {points}
@@ -38,7 +40,7 @@ struct SweepConfig {
 };
 
 // The schema of a sweep file (for the docs and the checks).
-const config::TableSchema& sweep_schema();
+const lrchain::config::TableSchema& sweep_schema();
 // The reference of every key as Markdown (docs/sweeps.md holds it).
 std::string sweep_config_markdown();
 
@@ -46,12 +48,16 @@ std::string sweep_config_markdown();
 // key for an unknown key, an unknown job or axis parameter, an empty range, list axes of different
 // lengths, a base config of another job, a control character in a name, and a sweep whose results
 // need more than the available memory with `ranks_on_node` ranks on rank 0's node (checked from the
-// axes' counts before their values are generated; sweep_memory.hpp).
-SweepConfig load_sweep_config(const std::filesystem::path& file, int ranks_on_node = 1);
+// axes' counts before their values are generated; sweep_memory.hpp). A model-file base has its
+// model loaded once (jobs::ModelSource with the front end's `compiler`; null: shipped model files
+// only), and a missing or bad model file or an unknown `parameters.NAME` axis is a ConfigError too.
+SweepConfig load_sweep_config(const std::filesystem::path& file, int ranks_on_node = 1,
+                              std::shared_ptr<const ModelCompiler> compiler = nullptr);
 // Why `output` cannot be a sweep's results file name (a control character, no file name, with a
 // figure a quote or backslash in its name), or "" when it can.
 std::string output_problem(const std::filesystem::path& output, bool figure);
-// The job of a loaded sweep (its base config, checked).
+// The job of a loaded sweep (its base config, checked; the job load_sweep_config made, sharing its
+// model file, when there is one).
 Job make_job(const SweepConfig& c);
 
 }  // namespace lrchain::jobs::sweep

@@ -29,4 +29,10 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
 // edge omega(pi) of each point. Returns the files written, as write_sweep_figures.
 std::vector<std::string> write_stability_figure(const SweepConfig& c, const SweepResults& r);
 
+// The figure the sweep file asks for (`figure`: a scalar's name, or "stability" for a "dark
+// continue" sweep) from its complete results file, its files marked pending while they are written
+// (side_files.hpp); returns the files written (none without a figure). `lrchain sweep` and
+// lrchain.sweep() call it after a run that was not interrupted.
+std::vector<std::string> write_requested_figure(const SweepConfig& c, const Job& job);
+
 }  // namespace lrchain::jobs::sweep

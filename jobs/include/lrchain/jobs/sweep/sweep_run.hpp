@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -26,6 +27,10 @@ struct SweepRunOptions {
   const std::atomic<bool>* stop = nullptr;   // set (SIGINT/SIGTERM): finish no more points, write, return
   int (*stop_signal)() = nullptr;            // the signal that set `stop` (0 or absent: unknown)
   bool progress = true;                      // progress on stderr
+  // Called (from the thread that finished a point, under the results' lock) with the points finished
+  // in all (including those resumed) and the sweep's points, and once more at the end: a front
+  // end's own display (lrchain.sweep's bar). Empty: none.
+  std::function<void(std::size_t done, std::size_t total)> on_progress;
 };
 
 // Where a process's threads get points and leave results. Both calls are thread-safe.
@@ -66,6 +71,7 @@ class ResultsKeeper {
   std::mutex mutex_;
   std::chrono::steady_clock::time_point last_write_;
   SweepProgress progress_;
+  std::function<void(std::size_t, std::size_t)> on_progress_;
   std::vector<std::string> csv_files_;  // the CSV views written next to the results (side_files.hpp)
 };
 

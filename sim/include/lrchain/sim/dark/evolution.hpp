@@ -6,6 +6,7 @@
 // oscillation amplitude; our measure, the paper gives none - see docs/dark-breathers.md).
 #include <Eigen/Dense>
 #include <atomic>
+#include <functional>
 #include <vector>
 
 #include "lrchain/index.hpp"
@@ -37,9 +38,11 @@ struct DarkEvolution {
 double dark_dip_position(const Eigen::VectorXd& amplitude);
 
 // The same for any orbit: Z(0) = z0 holds the positions of all variables (`sites` per variable,
-// field-major); the amplitudes, centre and position use variable 0.
+// field-major); the amplitudes, centre and position use variable 0. `progress` (empty: none) is
+// called after every period with the periods done / periods.
 DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, Index sites, double omega_b,
-                                double t_end, Index samples_per_period, const std::atomic<bool>* stop = nullptr);
+                                double t_end, Index samples_per_period, const std::atomic<bool>* stop = nullptr,
+                                const std::function<void(double fraction)>& progress = {});
 
 // Integrates from Z(0) over floor(t_end / T_b) periods, sampling every site `samples_per_period`
 // times per period for the amplitudes A_n = (sup - inf)/2 of x_n(t) (the position measure).
@@ -47,6 +50,7 @@ DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::Vector
 DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
                                    double t_end, Index samples_per_period = 24,
                                    const ContactIntegrationOptions& integration = {},
-                                   const std::atomic<bool>* stop = nullptr);
+                                   const std::atomic<bool>* stop = nullptr,
+                                   const std::function<void(double fraction)>& progress = {});
 
 }  // namespace lrchain::sim::dark

@@ -44,6 +44,11 @@ class DarkOrbit {
   const ContactBonds& contact_bonds() const { return bonds_; }
   // Contact changes located by the integrations since the orbit was made (0 for smooth models).
   Index contact_changes() const;
+  // Accepted steps of a smooth orbit are recorded (for the tangents) at most this many at a time,
+  // so that memory stays bounded however many steps an integration takes.
+  static constexpr std::size_t chunk_steps = 4096;
+  // Step starts held for the tangent replay (bounded by chunk_steps for smooth models).
+  std::size_t recorded_step_capacity() const { return times_.capacity(); }
 
   // Integrates [q qdot] (2 positions() entries) from t0 to t1 with error control (RKF78).
   void integrate(std::vector<double>& state, double t0, double t1) const;
@@ -63,8 +68,12 @@ class DarkOrbit {
   ContactBonds bonds_;
   std::unique_ptr<Contacts> contacts_;
   std::unique_ptr<ContactIntegrator> contact_integrator_;  // with bonds only
+  struct AdaptiveRun;  // odeint's adaptive RKF78 stepping from t0 to t1, one accepted step at a time
+  // Up to chunk_steps accepted steps of `run` (their starts and sizes into times_, steps_ when
+  // `record`); false once the run is over: at its end time, or abandoned as running away (state NaN).
+  bool smooth_chunk(AdaptiveRun& run, std::vector<double>& state, bool record) const;
   mutable OrbitRecord record_;
-  mutable std::vector<double> times_, steps_, extended_;  // accepted step starts and sizes
+  mutable std::vector<double> times_, steps_, extended_, orbit_only_;  // accepted step starts and sizes
 };
 
 class DarkShooting : public DarkShootingProblem {

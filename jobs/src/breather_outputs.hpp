@@ -1,0 +1,35 @@
+#pragma once
+// What the dark and bright breather jobs share about a model's lattice and their output directory.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/resource_estimate.hpp"
+
+namespace lrchain::jobs {
+
+// Names and meanings of a model lattice's variables: strains r, w_f (translation-invariant models,
+// mean_flow) or displacements u_f (on-site models), appended to `names` and `meanings`.
+inline void lattice_variable_names(bool mean_flow, int fields, std::vector<std::string>& names,
+                                   std::vector<std::string>& meanings) {
+  for (int f = 0; f < fields; ++f) {
+    names.push_back(mean_flow ? (f == 0 ? "r" : fmt::format("w{}", f)) : fmt::format("u{}", f));
+    meanings.push_back(mean_flow ? (f == 0 ? "r[n] = u0[n] - u0[n-1]" : fmt::format("w{0}[n] = u{0}[n] - u0[n]", f))
+                                 : fmt::format("u{}[n]", f));
+  }
+}
+
+// The output directory `out` ("" : none) of a job with estimate `e`: InputError when it exists and is
+// no directory, or (check_output_space) when its file system has too little room.
+inline void check_output_directory(const sim::ResourceEstimate& e, const std::string& out) {
+  if (out.empty()) return;
+  std::error_code ec;
+  if (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
+    throw InputError("--out '" + out + "' exists and is not a directory");
+  sim::check_output_space(e, out, "out", "choose another --out");
+}
+
+}  // namespace lrchain::jobs

@@ -1,0 +1,110 @@
+// to_json(BrightBreatherResult): the summary `lrchain bright` prints (bright_breather_job.hpp).
+#include <cmath>
+
+#include "lrchain/jobs/bright_breather_job.hpp"
+#include "lrchain/model_json.hpp"
+#include "lrchain/provenance_json.hpp"
+
+namespace lrchain::jobs::bright_breather {
+
+using nlohmann::json;
+
+namespace {
+
+json complex_list(const std::vector<std::complex<double>>& values) {
+  json list = json::array();
+  for (auto l : values) list.push_back({l.real(), l.imag()});
+  return list;
+}
+
+json profile_json(const sim::bright::BrightProfile& p) {
+  return {{"peak", p.peak}, {"peak_site", p.peak_site}, {"tail", p.tail}, {"width", p.width},
+          {"norm_squared", p.norm_squared}, {"localized", p.localized},
+          {"reason", p.reason.empty() ? json(nullptr) : json(p.reason)}};
+}
+
+json floquet_json(const sim::bright::BrightFloquet& f) {
+  return {{"stable", f.stable},
+          {"kind", f.multipliers.kind()},
+          {"trivial_expected", f.trivial_expected},
+          {"trivial_found", f.trivial_found},
+          {"trivial", complex_list(f.trivial)},
+          {"trivial_distance", f.trivial_distance},
+          {"max_nontrivial_modulus", f.max_nontrivial_modulus},
+          {"unit_circle_defect", f.unit_circle_defect},
+          {"pairing_defect", f.multipliers.pairing_defect},
+          {"det_defect", f.det_defect},
+          {"multipliers", complex_list(f.multipliers.multipliers)}};
+}
+
+json edge_json(const BrightEdge& e) {
+  return {{"branch", e.branch}, {"theta", e.theta}, {"omega", e.nls.omega}, {"curvature", e.nls.curvature},
+          {"h_tilde", e.nls.h_tilde}, {"lambda", e.mean_flow ? json(e.nls.lambda) : json(nullptr)},
+          {"seed_amplitude", e.amplitude}, {"seed_inverse_width", e.inverse_width}};
+}
+
+// The continuation: why it stopped, the non-resonant window, turning points, and per point omega_b,
+// the profile's peak, norm and width, the corrector's iterations and (with Floquet) the stability.
+json branch_json(const BrightBreatherResult& r) {
+  json points = json::array();
+  for (std::size_t k = 0; k < r.branch.points.size(); ++k) {
+    const auto& p = r.branch.points[k];
+    const auto& profile = r.branch_profiles.at(k);
+    json point = {{"omega_b", p.omega_b}, {"peak", profile.peak}, {"norm_squared", profile.norm_squared},
+                  {"width", profile.width}, {"residual", p.residual}, {"corrector_iterations", p.iterations},
+                  {"stable", nullptr}, {"max_nontrivial_modulus", nullptr}};
+    if (k < r.branch_floquets.size()) {
+      point["stable"] = r.branch_floquets[k].stable;
+      point["max_nontrivial_modulus"] = r.branch_floquets[k].max_nontrivial_modulus;
+    }
+    points.push_back(point);
+  }
+  return {{"points", r.branch.points.size()},
+          {"stop_reason", r.branch.stop_reason},
+          {"window", {r.window_low, std::isfinite(r.window_high) ? json(r.window_high) : json(nullptr)}},
+          {"turning_points", r.branch.turning_points},
+          {"branch_points", points}};
+}
+
+const char* step_name(BrightStep step) {
+  return step == BrightStep::floquet ? "floquet" : step == BrightStep::branch ? "continue" : "solve";
+}
+
+}  // namespace
+
+json to_json(const BrightBreatherResult& r) {
+  const BrightBreatherConfig& c = r.config;
+  json bands = json::array();
+  for (const auto& b : r.bands) bands.push_back({{"branch", b.branch}, {"lowest", b.lowest}, {"highest", b.highest}});
+  json residuals = json::array();
+  for (const auto& record : r.newton.history) residuals.push_back(record.residual);
+  json j = {{"model", model_json(*c.model)},
+            {"step", step_name(c.step)},
+            {"omega_b", c.omega_b},
+            {"center", c.center},
+            {"sites", c.sites},
+            {"bands", bands},
+            {"harmonics_checked", r.harmonics_checked},
+            {"edge", edge_json(r.edge)},
+            {"lattice_form", r.edge.mean_flow ? "strain" : "displacement"},
+            {"variables", r.edge.variable_meanings},
+            {"one_sided_contacts", r.edge.one_sided_contacts},
+            {"newton_converged", r.newton.converged},
+            {"newton_iterations", r.newton.history.empty() ? 0 : r.newton.history.size() - 1},
+            {"newton_residuals", residuals},
+            {"seed_profile", profile_json(r.seed_profile)},
+            {"seconds", r.seconds},
+            {"failure", nullptr},
+            {"provenance", provenance_json()}};
+  if (r.newton.converged) {
+    j["profile"] = profile_json(r.profile);
+    j["seed_difference"] = r.seed_difference;
+  }
+  if (r.floquet) j["floquet"] = floquet_json(*r.floquet);
+  if (c.step == BrightStep::branch && r.newton.converged && r.rejected.empty()) j["branch"] = branch_json(r);
+  if (const auto f = failure(r))
+    j["failure"] = {{"kind", r.newton.converged ? "not_a_bright_breather" : "newton"}, {"message", *f}};
+  return j;
+}
+
+}  // namespace lrchain::jobs::bright_breather

@@ -1,0 +1,58 @@
+// validate(BrightBreatherConfig): every option, the non-resonance of omega_b and its focusing edge,
+// the memory and the output directory, checked before any Newton iteration (bright_breather_job.hpp).
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "../breather_outputs.hpp"
+#include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/config/option_caps.hpp"
+#include "lrchain/errors.hpp"
+#include "lrchain/jobs/bright_breather_job.hpp"
+#include "lrchain/sim/bright/bright_seed.hpp"
+#include "lrchain/sim/resource_estimate.hpp"
+
+namespace lrchain::jobs::bright_breather {
+
+namespace {
+// The largest omega_b accepted, in units of the top of the highest linear band.
+constexpr double omega_b_cap = 10;
+}  // namespace
+
+void validate(const BrightBreatherConfig& c) {
+  if (c.model == nullptr || c.kernels == nullptr)
+    throw InvalidParameter("model", "needs a loaded model and its lattice kernels (model, kernels)");
+  if (!(std::isfinite(c.omega_b) && c.omega_b > 0))
+    throw InvalidParameter("omega_b", "must be a finite frequency > 0 (dimensionless)");
+  config::checked_option(double(c.sites), config::dark_sites, "sites");
+  sim::bright::check_bright_sites(c.sites);
+  parse_dark_center(c.center);
+  if (!(c.tolerance > 0 && c.tolerance < 1)) throw InvalidParameter("tolerance", "must be in (0, 1)");
+  if (c.max_iterations < 1) throw InvalidParameter("max_iterations", "must be an integer >= 1");
+  if (!(c.tail_tolerance > 0 && c.tail_tolerance < 1)) throw InvalidParameter("tail_tolerance", "must be in (0, 1)");
+  if (!(c.unit_tolerance > 0 && c.unit_tolerance < 1)) throw InvalidParameter("unit_tolerance", "must be in (0, 1)");
+  if (c.step == BrightStep::branch) {
+    config::checked_option(double(c.points), config::dark_points, "points");
+    if (!(std::isfinite(c.ds) && c.ds > 0 && c.ds <= 1)) throw InvalidParameter("ds", "must be in (0, 1] (it adapts within [1e-5, 1])");
+  }
+  const Model& model = *c.model;
+  const std::optional<Index> branch = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
+  const auto bands = sim::bright::linear_bands(model);
+  double top = 0;
+  for (const auto& band : bands) top = std::max(top, band.highest);
+  if (!(c.omega_b <= omega_b_cap * top))
+    throw InvalidParameter("omega_b", fmt::format("must be at most {:g} times the top of the highest band, {:.10g} (the "
+                                                  "NLS seed, an expansion about a band edge, does not reach a breather "
+                                                  "that far beyond the bands)", omega_b_cap, omega_b_cap * top));
+  sim::bright::check_non_resonance(bands, c.omega_b);
+  sim::bright::focusing_edge(model, branch, c.omega_b);
+  const double sites = double(c.sites) * double(c.kernels->fields) / 2.0;  // the estimate counts two fields per site
+  const sim::ResourceEstimate e = sim::estimate_dark_breather(sites, true, 2 * std::numbers::pi / c.omega_b, 0);
+  sim::check_memory(e, c.max_memory, "sites", "lower sites");
+  check_output_directory(e, c.out);
+}
+
+}  // namespace lrchain::jobs::bright_breather

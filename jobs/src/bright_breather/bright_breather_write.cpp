@@ -1,0 +1,85 @@
+// write(BrightBreatherResult, out): profile.csv and (floquet) multipliers.csv with their gnuplot
+// figures, and summary.json (bright_breather_job.hpp).
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "../dark/dark_steps.hpp"
+#include "lrchain/jobs/bright_breather_job.hpp"
+#include "lrchain/sim/gnuplot_text.hpp"
+#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_lock.hpp"
+
+namespace lrchain::jobs::bright_breather {
+
+using nlohmann::json;
+
+namespace {
+
+// profile.csv: n, then Z(0) and the NLS seed per variable; profile.gp draws them.
+void write_profile(const BrightBreatherResult& r, const std::string& dir, sim::Figures& figures) {
+  const BrightBreatherConfig& c = r.config;
+  const Index N = c.sites;
+  const std::vector<std::string>& variables = r.edge.variables;
+  std::ostringstream os;
+  os << "n";
+  for (const auto& v : variables) os << "," << v << "_0," << v << "_seed";
+  os << "\n";
+  for (Index i = 0; i < N; ++i) {
+    os << i - (N - 1) / 2;
+    for (std::size_t v = 0; v < variables.size(); ++v) {
+      const Index at = Index(v) * N + i;
+      os << fmt::format(",{:.17g},{:.17g}", r.z0(at), r.seed(at));
+    }
+    os << "\n";
+  }
+  sim::write_file_atomic(dir, "profile.csv", os.str());
+  const auto literal = [](const std::string& text) { return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced); };
+  std::string plot = "plot ";
+  for (std::size_t v = 0; v < variables.size(); ++v)
+    plot += fmt::format("{0}'profile.csv' skip 1 u 1:{1} w lp pt 7 t '{2}(0)', '' skip 1 u 1:{3} w p pt 6 ps 1.5 t '{2} NLS seed'",
+                        v == 0 ? "" : ", ", 2 + 2 * v, literal(variables[v]), 3 + 2 * v);
+  figures.draw({"profile.gp",
+                fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
+                            "set terminal pngcairo size 1000,700\nset output outfile\n"
+                            "set datafile separator ','\nset xlabel 'site n'\nset ylabel 'lattice variables: strains or displacements (model units)'\n"
+                            "set key outside\nset title '{} bright breather ({} centred), ω_{{b}} = {:.6g}: exact Z(0) and NLS seed'\n{}\n",
+                            literal(c.model->name()), c.center, c.omega_b, plot),
+                "profile.png"});
+}
+
+// branch.csv: one row per branch point (omega_b, peak, norm_squared, width, stable, max |lambda|).
+void write_branch(const BrightBreatherResult& r, const std::string& dir) {
+  std::ostringstream os;
+  os << "omega_b,peak,norm_squared,width,stable,max_nontrivial_modulus\n";
+  for (std::size_t k = 0; k < r.branch.points.size(); ++k) {
+    const auto& profile = r.branch_profiles.at(k);
+    os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}", r.branch.points[k].omega_b, profile.peak,
+                      profile.norm_squared, profile.width);
+    if (k < r.branch_floquets.size())
+      os << fmt::format(",{},{:.17g}\n", r.branch_floquets[k].stable ? 1 : 0, r.branch_floquets[k].max_nontrivial_modulus);
+    else
+      os << ",,\n";
+  }
+  sim::write_file_atomic(dir, "branch.csv", os.str());
+}
+
+}  // namespace
+
+json write(const BrightBreatherResult& r, const std::filesystem::path& out) {
+  json j = to_json(r);
+  if (failure(r)) return j;
+  const std::string dir = out.string();
+  const OutputLock lock(dir);
+  const sim::OutputListing earlier = sim::list_output_files(dir);  // before this run writes
+  sim::Figures figures(dir);
+  write_profile(r, dir, figures);
+  if (r.config.step == BrightStep::branch) write_branch(r, dir);
+  if (r.floquet) dark::write_multipliers(dir, "multipliers", r.floquet->multipliers, r.config.omega_b, figures);
+  figures.finish(j);
+  sim::write_file_atomic(dir, "summary.json", j.dump(2) + "\n");
+  sim::record_stale_files(out, earlier, j);
+  return j;
+}
+
+}  // namespace lrchain::jobs::bright_breather

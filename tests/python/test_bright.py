@@ -1,0 +1,66 @@
+"""lrchain.bright: the exact bright-breather job (lrchain/jobs/bright_breather_job.hpp) from Python. The
+numbers are the job's own tests' (tests/unit/bright_breather_job_test.cpp); here the keywords, the
+result's arrays, the errors, and that Python and `lrchain bright` give the same bits."""
+
+import json
+import subprocess
+
+import numpy as np
+import pytest
+
+import lrchain
+from lrchain import bright
+
+from conftest import _cli_path
+
+
+def test_klein_gordon_solve_matches_the_command_line():
+    kg = lrchain.load_model("klein_gordon")
+    b = bright.solve(kg, omega_b=1.19, sites=61)
+    assert b.z.shape == (1, 61) and b.seed.shape == (1, 61) and b.variables == ("u0",)
+    assert b.n[0] == -30 and b.n[-1] == 30
+    assert b.edge["theta"] == pytest.approx(np.pi) and b.edge["omega"] == pytest.approx(np.sqrt(1.4), rel=1e-12)
+    assert b.newton_residuals[-1] <= 1e-11
+    assert b.profile["localized"] and abs(b.z[0]).max() == b.profile["peak"]
+    assert b.floquet is None
+    done = subprocess.run([str(_cli_path()), "bright", "solve", "--model", "klein_gordon", "--omega-b", "1.19",
+                           "--sites", "61", "--quiet", "--json"], capture_output=True, text=True, check=True)
+    cli = json.loads(done.stdout)
+    assert cli["profile"]["peak"] == b.profile["peak"]
+    assert cli["newton_residuals"] == list(b.newton_residuals)
+
+
+def test_fpu_page_mode_is_stable_with_the_trivial_multipliers_found():
+    # Sandusky, Page & Schmidt, Phys. Rev. B 46, 6161 (1992): the bond-centred mode is stable.
+    b = bright.floquet(lrchain.load_model("fput", a=0), omega_b=2.2, center="bond", sites=41)
+    f = b.floquet
+    assert f.stable and f.trivial_found and f.trivial_expected == 4 and len(f.trivial) == 4
+    assert f.multipliers.dtype == complex and len(f.multipliers) == 2 * 41
+    assert f.unit_circle_defect <= 1e-8 and f.det_defect <= 1e-8
+
+
+def test_refusals_name_omega_b_and_failures_raise_numerical_failure():
+    kg = lrchain.load_model("klein_gordon")
+    with pytest.raises(lrchain.InvalidParameterError, match="inside the linear band") as e:
+        bright.solve(kg, omega_b=1.1)
+    assert e.value.parameter == "omega_b"
+    with pytest.raises(lrchain.InvalidParameterError) as e:
+        bright.solve(kg)
+    assert e.value.parameter == "omega_b"
+    with pytest.raises(lrchain.InvalidParameterError) as e:
+        bright.solve(omega_b=2.5, sites=41)  # the resonant chain: no focusing band edge
+    assert e.value.parameter == "omega_b" and "no focusing band edge" in str(e.value)
+    with pytest.raises(lrchain.InvalidParameterError) as e:
+        bright.solve(kg, omega_b=1.19, tail_tolerance=2)
+    assert e.value.parameter == "tail_tolerance"
+    with pytest.raises(lrchain.NumericalFailure, match="not localized"):
+        bright.solve(lrchain.load_model("fput", a=0), omega_b=2.05, sites=41)
+
+
+def test_continue_branch_rises_from_the_edge():
+    b = bright.continue_branch(lrchain.load_model("klein_gordon"), omega_b=1.19, sites=61, points=4)
+    assert len(b.omega_b) == 4 and b.z.shape == (4, 1, 61)
+    assert np.all(np.diff(b.omega_b) > 0) and np.all(np.diff(b.peak) > 0)
+    assert all(b.stable) and b.window[0] == pytest.approx(np.sqrt(1.4), rel=1e-12) and b.window[1] is None
+    assert b.stop_reason == "reached 4 points"
+    assert np.array_equal(b.z[0], b.start.z)
