@@ -127,13 +127,16 @@ inline CLI::Option* add_parameter(CLI::App& app, const std::string& name, double
 // The model parameters every subcommand shares: --rho, --kappa, --delta0, --alpha, each refused
 // outside its range (lrchain/params.hpp). The help shows the values in `p` at registration as the
 // defaults (the paper's: alpha=3/2, delta0=4/9, kappa=1, rho=1/3, unless the subcommand's
-// experiment uses others), so set them before calling this.
+// experiment uses others), so set them before calling this. The help lists them under their own
+// heading, apart from the options every model takes.
 inline void add_model_options(CLI::App& app, Params& p, bool rho_required) {
+  const std::string group = "The paper's resonant chain";
   auto* r = add_parameter(app, "--rho", p.rho, rho_range, rho_required ? "required" : "default " + default_text(p.rho));
   if (rho_required) r->required();
-  add_parameter(app, "--kappa", p.kappa, kappa_range, "default " + default_text(p.kappa));
-  add_parameter(app, "--delta0", p.delta0, delta0_range, "default " + default_text(p.delta0));
-  add_parameter(app, "--alpha", p.alpha, alpha_range, "default " + default_text(p.alpha));
+  r->group(group);
+  add_parameter(app, "--kappa", p.kappa, kappa_range, "default " + default_text(p.kappa))->group(group);
+  add_parameter(app, "--delta0", p.delta0, delta0_range, "default " + default_text(p.delta0))->group(group);
+  add_parameter(app, "--alpha", p.alpha, alpha_range, "default " + default_text(p.alpha))->group(group);
 }
 
 }  // namespace lrchain::cli

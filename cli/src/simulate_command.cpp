@@ -262,7 +262,7 @@ void register_simulate(CLI::App& app) {
   auto bright_branch = std::make_shared<std::string>();
   const auto& bright_schema = jobs::bright_options();
   const auto bright_help = [&bright_schema](const char* key) { return schema_help(bright_schema, key); };
-  bright->add_option("--branch", *bright_branch, bright_help("branch"))->required()->type_name("NAME");
+  bright->add_option("--branch", *bright_branch, bright_help("branch"))->type_name("NAME");
   add_number(*bright, "--theta", cfg->theta, bright_help("theta"))->required();
   add_model_options(*bright, cfg->params, false);
   auto bright_model = std::make_shared<ModelSelection>();

@@ -55,7 +55,7 @@ void register_simulate_ring(CLI::App& simulate, const ModelRunOutput& output) {
               "small wave packet's speed against c (the derived coefficients checked by the lattice itself)");
   add_model_file_options(*ring, o->model);
   const auto help = [](const char* key) { return schema_help(jobs::ring_options(), key); };
-  ring->add_option("--branch", o->branch, help("branch"))->required()->type_name("NAME");
+  ring->add_option("--branch", o->branch, help("branch"))->type_name("NAME");
   add_number(*ring, "--theta", o->run.theta, help("theta"))->required();
   add_number_list(*ring, "--amplitudes", o->run.amplitudes, help("amplitudes"));
   add_integer(*ring, "--sites", o->run.sites, config::ring_sites.least, config::ring_sites.most, help("sites"));

@@ -15,6 +15,7 @@ const std::vector<std::string>& branch_spellings() {
 }
 
 Branch parse_branch(std::string_view text) {
+  if (text.empty()) throw InvalidParameter("branch", "is required: 'optical' (or 'opt', '+') or 'acoustic' (or 'acs', '-')");
   if (text == "optical" || text == "+" || text == "opt") return Branch::optical;
   if (text == "acoustic" || text == "-" || text == "acs") return Branch::acoustic;
   throw InvalidParameter("branch", "must be 'optical' (or 'opt', '+') or 'acoustic' (or 'acs', '-'), got '" +

@@ -93,3 +93,21 @@ TEST_CASE("coeffs job: the table of every branch, highest first, with lambda nul
   // Klein-Gordon: omega^2 = w0^2 + 4 C sin^2(theta/2) (the textbook dispersion), at theta = pi.
   CHECK(kg["branches"][0]["rows"][5]["omega"].get<double>() == doctest::Approx(std::sqrt(1.44 + 1.2)).epsilon(1e-14));
 }
+
+TEST_CASE("coeffs job: without a branch, a model's only branch, and a model with several names them") {
+  jobs::CoeffsConfig config;
+  config.theta = 1.0;
+  config.model = shipped_model("fput");  // one branch, 'acoustic'
+  const jobs::CoeffsResult r = jobs::run_coeffs(config);
+  CHECK(r.branch == "acoustic");
+  // FPU: omega = 2 sin(theta/2) with unit mass and K2 = 1 (the textbook monatomic chain).
+  CHECK(r.coefficients.omega == doctest::Approx(2 * std::sin(0.5)).epsilon(1e-14));
+  config.model = shipped_model("diatomic_chain");
+  try {
+    jobs::run_coeffs(config);
+    FAIL("a model with two branches needs --branch");
+  } catch (const InvalidParameter& e) {
+    CHECK(e.parameter() == "branch");
+    CHECK(std::string(e.what()).find("'acoustic', 'optical'") != std::string::npos);
+  }
+}

@@ -159,7 +159,7 @@ TEST_CASE("sweep of a model file: a results file does not resume once the model 
   lrchain::test::write_text(d / "base.toml", fput_bright_base("1/2", (d / "model.toml").string()));
   lrchain::test::write_text(d / "s.toml", sweep_over("parameters.b", "0.5", d / "r.h5"));
   const SweepConfig first = load_sweep_config(d / "s.toml");
-  SweepOutcome outcome = run_sweep(first, make_job(first), SweepRunOptions{.threads = 1, .progress = false});
+  SweepOutcome outcome = run_sweep(first, make_job(first), SweepRunOptions{.threads = 1, .progress = false, .on_progress = {}});
   CHECK(outcome.finished == 1);
   CHECK_NOTHROW(read_results(first.output, first, make_job(first)));
   // The same name now holds klein_gordon's bytes (parameters a and b too): the sweep's identity differs.

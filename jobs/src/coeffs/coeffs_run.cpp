@@ -46,10 +46,10 @@ CoeffsTableBranch table_branch(const Model& model, Index branch) {
 }
 
 // The branch index of `name`: the resonant chain's spellings (optical, opt, +, acoustic, acs, -)
-// for the chain, the model's branch names otherwise.
+// for the chain, the model's branch names otherwise (none: the model's only branch).
 Index branch_index(const Model& model, const std::string& name) {
   if (model.resonant_chain_params()) return model.branch(to_string(parse_branch(name)));
-  return model.branch(name);
+  return model.branch_or_only(name);
 }
 
 }  // namespace
@@ -69,8 +69,11 @@ void validate(const CoeffsConfig& config) {
   }
   if (config.table) return;  // the table has its own wavenumbers and every branch
   if (!config.theta) throw InvalidParameter("theta", "is required: a wavenumber in (-pi, pi]");
-  if (config.branch.empty())
-    throw InvalidParameter("branch", "is required: 'optical' or 'acoustic' (or the model's branch names)");
+  if (config.branch.empty()) {
+    if (!config.model || config.model->resonant_chain_params())
+      throw InvalidParameter("branch", "is required: 'optical' or 'acoustic'");
+    config.model->branch_or_only("");  // the model's only branch, or "is required" naming its branches
+  }
 }
 
 CoeffsResult run_coeffs(const CoeffsConfig& config) {

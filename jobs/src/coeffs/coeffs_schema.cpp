@@ -20,7 +20,7 @@ std::vector<JobOption> make_options() {
        coeffs_help, "alpha=3/2, delta0=4/9, kappa=1, rho=1/3"},
       {"branch", "--branch", "branch", {}, none, false,
        "optical (omega_+) or acoustic (omega_-); other models: the names `lrchain derive` lists (acoustic/optical or "
-       "branch0, branch1, ...)",
+       "branch0, branch1, ...), by default a model's only branch",
        "dispersion branch", coeffs_help, one_wavenumber},
       {"theta", "--theta", "theta", {}, none, false, "in (-pi, pi], nonzero on an acoustic branch",
        "carrier wavenumber, e.g. pi/2", coeffs_help, one_wavenumber},

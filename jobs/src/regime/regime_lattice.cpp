@@ -21,9 +21,7 @@ using nlohmann::json;
 using namespace lrchain::regime;
 
 Index model_branch(const Model& m, const std::string& name) {
-  if (!name.empty()) return m.branch(name);
-  const auto& names = m.definition().branch_names;
-  if (names.size() == 1) return 0;
+  if (!name.empty() || m.definition().branch_names.size() == 1) return m.branch_or_only(name);
   return m.branch("optical");
 }
 

@@ -35,10 +35,10 @@ auto simulate_model_job(const Model& model, const Config& c, const ModelRunLabel
   return SimulateReport<decltype(result)>{std::move(result), std::move(j), {}};
 }
 
-// The branch by name, every option, theta on the branch.
+// The branch by name (none: the model's only one), every option, theta on the branch.
 template <class Config>
 void prepare_run(const Model& model, Config& c, const std::string& branch) {
-  c.branch = model.branch(branch);
+  c.branch = model.branch_or_only(branch);
   sim::validate(c);
   coefficients(model, c.branch, c.theta);  // theta on the branch (InvalidParameter otherwise)
 }

@@ -84,7 +84,8 @@ std::vector<JobOption> make_bright() {
   const auto sites = sim::strain_site_count(d.N);
   std::vector<JobOption> o{
       {"branch", "--branch", "branch", {}, std::string(to_string(d.branch)), true,
-       "optical or acoustic (with --model: a branch of the model)", "dispersion branch of the carrier", "{range}"},
+       "optical or acoustic (with --model: a branch of the model, by default its only one)",
+       "dispersion branch of the carrier", "{range}"},
       {"theta", "--theta", "theta", {}, std::numbers::pi / 2, true, "in (0, pi]", "carrier wavenumber",
        "{doc} {range}, e.g. pi/2", "pi/2"},
       with_note("sign(h_tilde)*1e-4", both("detuning", nullptr, "", "omega_b - omega")),
@@ -118,7 +119,10 @@ std::vector<JobOption> make_model_bright() {
   for (const char* key : {"branch", "theta", "detuning", "n0", "sites", "periods", "sample_every", "ansatz_ends", "dt"})
     o.push_back(find_option(bright_options(), key));
   for (JobOption& option : o) {
-    if (option.key == "branch") option.range = "a branch of the model";
+    if (option.key == "branch") {
+      option.range = "a branch of the model (default: its only one; required when it has several)";
+      option.required = false;
+    }
     if (option.key == "sites") {
       option.default_value = sim::strain_site_count(d.N);
       option.range = fmt::format("odd, in [{}, {}]", sim::model_bright_sites.least, sim::model_bright_sites.most);
@@ -179,7 +183,9 @@ std::vector<JobOption> make_modulated() {
 std::vector<JobOption> make_ring() {
   const sim::RingRunConfig d;
   return {
-      {"branch", "--branch", "branch", {}, nullptr, true, "a branch of the model", "branch name of the model (acoustic, optical, branch0, ...)", "{doc}"},
+      {"branch", "--branch", "branch", {}, nullptr, false, "a branch of the model",
+       "branch name of the model (acoustic, optical, branch0, ...); default: its only one, required when it has several",
+       "{doc}"},
       {"theta", "--theta", "theta", {}, nullptr, true, "in (0, pi]", "carrier wavenumber 2 pi k / N", "{doc} {range}, e.g. pi/2"},
       both("amplitudes", d.amplitudes, "each in (0, 10]", "plane-wave amplitudes U of the first field"),
       with_note("the smallest N >= 8 with theta N / (2 pi) whole",

@@ -127,6 +127,9 @@ class Model {
   double parameter(std::string_view name) const;
   // Index of a branch name (throws InvalidParameter("branch", ...) naming the model's branches).
   Index branch(std::string_view name) const;
+  // branch(name), or the model's only branch when name is empty (several: InvalidParameter("branch",
+  // "is required") naming them).
+  Index branch_or_only(std::string_view name) const;
   // The resonant chain's alpha, delta0, kappa, rho when the model is that chain
   // (ModelDefinition::is_resonant_chain), else empty: coefficients() then takes the specialised path.
   const std::optional<Params>& resonant_chain_params() const { return resonant_chain_params_; }

@@ -99,14 +99,31 @@ double Model::parameter(std::string_view name) const {
   throw InvalidParameter(std::string(name), "model " + definition_->name + " has no such parameter");
 }
 
+namespace {
+
+// 'a', 'b', 'c': a model's branch names as messages list them.
+std::string quoted_branch_names(const std::vector<std::string>& names) {
+  std::string known;
+  for (const auto& n : names) known += (known.empty() ? "'" : ", '") + n + "'";
+  return known;
+}
+
+}  // namespace
+
 Index Model::branch(std::string_view name) const {
   const auto& names = definition_->branch_names;
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == name) return static_cast<Index>(i);
-  std::string known;
-  for (const auto& n : names) known += (known.empty() ? "'" : ", '") + n + "'";
-  throw InvalidParameter("branch", "model " + definition_->name + " has the branches " + known + ", not '" +
-                                       std::string(name) + "'");
+  throw InvalidParameter("branch", "model " + definition_->name + " has the branches " + quoted_branch_names(names) +
+                                       ", not '" + std::string(name) + "'");
+}
+
+Index Model::branch_or_only(std::string_view name) const {
+  const auto& names = definition_->branch_names;
+  if (!name.empty()) return branch(name);
+  if (names.size() == 1) return 0;
+  throw InvalidParameter("branch", "is required: model " + definition_->name + " has the branches " +
+                                       quoted_branch_names(names));
 }
 
 // Linear and quadratic in closed form (the quadratic without cancellation), higher degrees by
