@@ -68,7 +68,7 @@ bool first_field_at_rest(const ModelDefinition& definition, Index branch, double
 TEST_CASE("the check refuses no regular point of the shipped models, theta = 0 and pi included") {
   // 200 wavenumbers per branch in (-pi, pi] (0 and pi among them) plus 1e-3 and pi - 1e-3, every
   // shipped model at its defaults and with each parameter scaled by 0.7 and 1.5: never refused, in
-  // the full check (coefficients_from_evaluators) and in the hot path's screen (coefficients_at),
+  // the full check (coefficients_from_evaluators) and in the hot path's derivative check (coefficients_at),
   // and c, omega'' equal to the finite differences of omega from det M (branch_derivatives).
   std::vector<double> thetas{1e-3, std::numbers::pi - 1e-3};
   for (int k = -99; k <= 100; ++k) thetas.push_back(std::numbers::pi * k / 100.0);
@@ -147,6 +147,13 @@ TEST_CASE("omega's derivatives from det M agree with the resonant chain's closed
       // as 1/omega on the acoustic branch near theta = 0 (1.3e-5 at theta = 0.05).
       CHECK(std::abs(d.curvature - c.curvature) <= d.curvature_error);
       CHECK(agrees_with_derivatives(c, d));
+      // The hot path's derivatives (det M at fixed omega^2, implicit function theorem): as close.
+      BranchDerivatives implicit;
+      REQUIRE(implicit_derivatives(chain.definition(), chain.inputs().data(), theta, c.omega, implicit));
+      CHECK(std::abs(implicit.group_velocity - c.group_velocity) <= 1e-9);
+      CHECK(std::abs(implicit.curvature - c.curvature) <= 1e-7);
+      CHECK(std::abs(implicit.curvature - c.curvature) <= implicit.curvature_error);
+      CHECK(agrees_with_derivatives(c, implicit));
     }
   }
 }
@@ -159,11 +166,15 @@ TEST_CASE("a wrong c or omega'' fails the check") {
   NlsCoefficients c = coefficients(chain, branch, 1.0);
   BranchDerivatives d;
   REQUIRE(branch_derivatives(chain.definition(), chain.inputs().data(), branch, 1.0, c.omega, d));
+  BranchDerivatives implicit;
+  REQUIRE(implicit_derivatives(chain.definition(), chain.inputs().data(), 1.0, c.omega, implicit));
   c.group_velocity += 1e-4;
   CHECK_FALSE(agrees_with_derivatives(c, d));
+  CHECK_FALSE(agrees_with_derivatives(c, implicit));
   c.group_velocity -= 1e-4;
   c.curvature += 1e-3;
   CHECK_FALSE(agrees_with_derivatives(c, d));
+  CHECK_FALSE(agrees_with_derivatives(c, implicit));
 }
 
 namespace {
@@ -175,6 +186,11 @@ void noisy_fput_nls(double D1, double sigma, double omega, const double* q, doub
   fput_nls(D1, sigma, omega, q, out);
   out[out_h] += 1e-3 * std::sin(1e9 * D1);
   out[out_h_tilde] = out[out_h] - out[out_lambda] * out[out_beta];
+}
+// The same with c spoiled too (as a 0/0 of c's expression does).
+void noisy_c_fput_nls(double D1, double sigma, double omega, const double* q, double* out) {
+  noisy_fput_nls(D1, sigma, omega, q, out);
+  out[out_group_velocity] += 1e-3 * std::sin(1e9 * D1);
 }
 
 }  // namespace
@@ -191,9 +207,15 @@ TEST_CASE("coefficients whose expressions are noise at and around a wavenumber a
   CHECK(std::isnan(c.h));
   CHECK(std::isnan(c.group_velocity));
   CHECK(singular_reason(c).find("removable singularity") != std::string_view::npos);
-  NlsCoefficients hot;  // the hot path's screen sees the noise too
+  // The hot path checks c and omega'' against det M (lrchain/coefficient_check.hpp): noise in h alone
+  // passes it; noise in c as well is refused there too.
+  NlsCoefficients hot;
+  REQUIRE(coefficients_at(noisy, model.inputs().data(), 0, 1.0, hot));
+  CHECK(hot.evaluation == CoefficientEvaluation::direct);
+  noisy.evaluators.nls = noisy_c_fput_nls;
   REQUIRE(coefficients_at(noisy, model.inputs().data(), 0, 1.0, hot));
   CHECK(hot.evaluation == CoefficientEvaluation::refused);
+  CHECK(std::isnan(hot.h));
   // The same point of the unspoiled fput is direct.
   const Model fput = shipped_model("fput");
   CHECK(coefficients_from_evaluators(fput, 0, 1.0).evaluation == CoefficientEvaluation::direct);

@@ -6,8 +6,12 @@
 // coefficients() evaluates them by their limit (h, lambda, h_tilde NaN with the regime singular
 // where they have a pole, e.g. where the carrier has no amplitude in the first field); what fails
 // both is refused as singular. coefficients() and coefficients_from_evaluators() run the full
-// check; coefficients_at() (regime maps, scans) a screen for lost digits (one more evaluation at
-// theta + 1e-8) and the full check only where the screen fails.
+// check; coefficients_at() (regime maps, scans) checks c and omega'' against det M's implicit
+// derivatives (three evaluations of det M, no second evaluation of the emitted NLS expressions) and
+// runs the full check only where they disagree: at and near a 0/0 of the emitted c or omega''
+// (omega'', c's derivative along the branch, carries the square of c's denominators). Digits that
+// h alone loses (a 0/0 in h's own denominators that c and omega'' do not have) are found by the
+// full check only.
 #include <string_view>
 
 #include "lrchain/coefficients.hpp"
@@ -28,6 +32,12 @@ struct BranchDerivatives {
 // det M evaluator only; false where the branch has no positive omega^2 at a nearby wavenumber.
 bool branch_derivatives(const ModelDefinition& definition, const double* q, Index branch, double theta, double omega,
                         BranchDerivatives& out) noexcept;
+
+// The same derivatives at theta by the implicit function theorem on det M at fixed omega^2 (its
+// central differences in theta at step 1e-4, no root of det M solved): three det M evaluations, the
+// hot path's check (coefficients_at); false where they are not finite (e.g. omega = 0).
+bool implicit_derivatives(const ModelDefinition& definition, const double* q, double theta, double omega,
+                          BranchDerivatives& out) noexcept;
 
 // True when c and omega'' of `c` agree with `d` (tolerance: 1e-7 relative to |c| + omega, resp.
 // |omega''| + |c| + omega, plus ten times the estimated error of the differences).

@@ -20,6 +20,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kDerivativeStep = 2e-3;  // theta offset of the central differences of omega^2 (and half of it)
 constexpr double kScreenStep = 1e-8;      // theta offset of the screen's second evaluation
 constexpr double kScreenTolerance = 1e-6; // relative change over kScreenStep above which the full check runs
+constexpr double kImplicitStep = 1e-4;    // theta offset of the hot path's differences of det M at fixed omega^2
 constexpr double kNoiseStep = 1e-6;       // theta offset of the second differences that measure rounding noise
 constexpr double kNoiseTolerance = 1e-7;  // relative second difference above which a field counts as noisy (if not smooth)
 constexpr double kLimitStep = 0.02;       // largest offset of the limit evaluation (then halved three times)
@@ -33,6 +34,21 @@ void polynomial_and_slope(const double* w, Index degree, double x, double& p, do
   for (Index k = degree - 1; k >= 0; --k) {
     dp = dp * x + p;
     p = p * x + w[k];
+  }
+}
+
+// sum_k w[k] x^k, its first and second derivative, and sum_k |w[k] x^k| (the size of its rounding).
+void polynomial_derivatives(const double* w, Index degree, double x, double& p, double& dp, double& ddp,
+                            double& size) noexcept {
+  p = w[degree];
+  dp = ddp = 0;
+  size = std::abs(w[degree]);
+  const double ax = std::abs(x);
+  for (Index k = degree - 1; k >= 0; --k) {
+    ddp = ddp * x + 2.0 * dp;
+    dp = dp * x + p;
+    p = p * x + w[k];
+    size = size * ax + std::abs(w[k]);
   }
 }
 
@@ -109,7 +125,7 @@ void checked_fields(const NlsCoefficients& c, double (&v)[kCheckedFieldCount]) n
 }
 
 // |a - b| small against |a| + |b| (both NaN: equal, e.g. lambda of an on-site model).
-bool close(double a, double b, double tolerance) noexcept {
+bool relatively_close(double a, double b, double tolerance) noexcept {
   if (std::isnan(a) && std::isnan(b)) return true;
   return std::abs(a - b) <= tolerance * (std::abs(a) + std::abs(b));
 }
@@ -273,6 +289,57 @@ bool branch_derivatives(const ModelDefinition& d, const double* q, Index branch,
   return std::isfinite(out.curvature) && std::isfinite(out.curvature_error);
 }
 
+bool implicit_derivatives(const ModelDefinition& d, const double* q, double theta, double omega,
+                          BranchDerivatives& out) noexcept {
+  detail::DetMAtTheta at;
+  detail::half_angle_sincos(0.5 * theta, at.sin_half, at.cos_half);
+  d.evaluators.evaluate_dispersion(4.0 * at.sin_half * at.sin_half, 2.0 * at.sin_half * at.cos_half, q, at.w);
+  return detail::implicit_derivatives(d, q, at, omega, out);
+}
+
+bool detail::implicit_derivatives(const ModelDefinition& d, const double* q, const DetMAtTheta& at, double omega,
+                                  BranchDerivatives& out) noexcept {
+  // P(theta, W) = det M = sum_k w_k(theta) W^k at W = omega^2 and theta, theta +- step: P_theta,
+  // P_theta_theta, P_theta_W by central differences, P_W, P_WW exactly; then W' = -P_theta / P_W,
+  // W'' = -(P_theta_theta + 2 P_theta_W W' + P_WW W'^2) / P_W.
+  const double W0 = omega * omega;
+  // sin and cos of the half angles (theta +- step) / 2 by the addition theorem from theta / 2's;
+  // those of step / 2 by their Taylor series (exact in double at this step).
+  constexpr double x = 0.5 * kImplicitStep;
+  constexpr double sin_x = x - x * x * x / 6.0 + x * x * x * x * x / 120.0, cos_x = 1.0 - x * x / 2.0 + x * x * x * x / 24.0;
+  double P0, PW0, PWW, size;  // size: P's rounding scale at theta (the same at the nearby points)
+  polynomial_derivatives(at.w, d.degree, W0, P0, PW0, PWW, size);
+  double P[2], PW[2];  // at theta - step, theta + step
+  for (int side = 0; side < 2; ++side) {
+    const double s = side ? sin_x : -sin_x;
+    const double sh = at.sin_half * cos_x + at.cos_half * s, ch = at.cos_half * cos_x - at.sin_half * s;
+    double w[kMaxModelDegree + 1];
+    d.evaluators.evaluate_dispersion(4.0 * sh * sh, 2.0 * sh * ch, q, w);
+    polynomial_and_slope(w, d.degree, W0, P[side], PW[side]);
+  }
+  constexpr double h = kImplicitStep, inv_2h = 1.0 / (2.0 * h), inv_h2 = 1.0 / (h * h);
+  const double Pt = (P[1] - P[0]) * inv_2h, Ptt = (P[1] - 2.0 * P0 + P[0]) * inv_h2, PtW = (PW[1] - PW[0]) * inv_2h;
+  // Errors: the truncation, step^2 times P's derivatives (taken as 10 step^2 times the largest of
+  // P's size, |P_theta|, |P_theta_theta|: det M is a trigonometric polynomial of low degree in
+  // theta), plus the rounding of the differences (P_W's rounding taken as P's size over max(W, 1)).
+  const double truncation = 10.0 * h * h * std::max({size, std::abs(Pt), std::abs(Ptt)});
+  const double Pt_error = truncation + 8.0 * kEps * size * inv_2h;
+  const double Ptt_error = truncation + 8.0 * kEps * size * inv_h2;
+  const double PtW_error = truncation + 8.0 * kEps * size * inv_2h / std::max(W0, 1.0);
+  const double inv_Pw = 1.0 / PW0, inv_2omega = 0.5 / omega;
+  const double W1 = -Pt * inv_Pw, W2 = -(Ptt + 2.0 * PtW * W1 + PWW * W1 * W1) * inv_Pw;
+  const double W1_error = Pt_error * std::abs(inv_Pw);
+  const double W2_error =
+      (Ptt_error + 2.0 * std::abs(W1) * PtW_error + (2.0 * std::abs(PtW) + 2.0 * std::abs(PWW * W1)) * W1_error) *
+      std::abs(inv_Pw);
+  // omega = sqrt(W): c = W' / (2 omega), omega'' = (W'' - 2 c^2) / (2 omega).
+  out.group_velocity = W1 * inv_2omega;
+  out.group_velocity_error = W1_error * inv_2omega;
+  out.curvature = (W2 - 2.0 * out.group_velocity * out.group_velocity) * inv_2omega;
+  out.curvature_error = (W2_error + 4.0 * std::abs(out.group_velocity) * out.group_velocity_error) * inv_2omega;
+  return std::isfinite(out.group_velocity) && std::isfinite(out.curvature) && std::isfinite(out.curvature_error);
+}
+
 bool agrees_with_derivatives(const NlsCoefficients& c, const BranchDerivatives& d) noexcept {
   // Absolute parts scaled by omega (c and omega'' are omega per radian, per radian^2): at theta = 0
   // and pi, c = 0 by symmetry and a relative test alone would fail on rounding.
@@ -313,7 +380,7 @@ bool screen_passes(const ModelDefinition& d, const double* q, const NlsCoefficie
   checked_fields(c, here);
   checked_fields(next, there);
   for (int f = 0; f < kCheckedFieldCount; ++f)
-    if (!close(here[f], there[f], kScreenTolerance)) return false;
+    if (!relatively_close(here[f], there[f], kScreenTolerance)) return false;
   return true;
 }
 
@@ -326,8 +393,11 @@ void check_or_limit(const ModelDefinition& d, const double* q, Index branch, Nls
   refuse(c);
 }
 
-void screen_or_check(const ModelDefinition& d, const double* q, Index branch, NlsCoefficients& c) noexcept {
-  if (!screen_passes(d, q, c)) check_or_limit(d, q, branch, c);
+void derivatives_or_check(const ModelDefinition& d, const double* q, Index branch, const DetMAtTheta& at,
+                          NlsCoefficients& c) noexcept {
+  BranchDerivatives det_m;
+  if (implicit_derivatives(d, q, at, c.omega, det_m) && agrees_with_derivatives(c, det_m)) return;
+  check_or_limit(d, q, branch, c);
 }
 
 }  // namespace detail

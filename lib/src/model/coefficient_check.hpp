@@ -1,7 +1,8 @@
 #pragma once
 // The checked evaluation of a loaded model's coefficients (lrchain/coefficient_check.hpp): the full
 // check in coefficients() and coefficients_from_evaluators() (coeffs, ring, bright, dark), the
-// screen with the full check as its fallback in coefficients_at() (regime maps, scans, the batch).
+// derivative check with the full check as its fallback in coefficients_at() (regime maps, scans, the batch).
+#include "lrchain/coefficient_check.hpp"
 #include "lrchain/coefficients.hpp"
 #include "lrchain/index.hpp"
 #include "lrchain/model.hpp"
@@ -11,6 +12,17 @@ namespace lrchain {
 struct ModelDefinition;
 
 namespace detail {
+
+// det M's coefficients in omega^2 at theta (ascending) and sin, cos of theta / 2: what the
+// evaluation at theta computed, reused by the hot path's check.
+struct DetMAtTheta {
+  double sin_half, cos_half;
+  double w[kMaxModelDegree + 1];
+};
+
+// implicit_derivatives (lrchain/coefficient_check.hpp) from det M at theta as computed already.
+bool implicit_derivatives(const ModelDefinition& d, const double* q, const DetMAtTheta& at, double omega,
+                          BranchDerivatives& out) noexcept;
 
 // c, omega'', gamma, beta, the non-resonance values and h_tilde_numerator from the emitted NLS
 // evaluator's outputs (ModelOutput order); h, lambda, h_tilde are left to the caller.
@@ -38,8 +50,10 @@ void check_or_limit(const ModelDefinition& d, const double* q, Index branch, Nls
 // lost to a 0/0 of the expressions. Not a check of c and omega'' against det M.
 bool screen_passes(const ModelDefinition& d, const double* q, const NlsCoefficients& c) noexcept;
 
-// The hot path's check (regime maps, scans, the batch): the screen, and check_or_limit where it fails.
-void screen_or_check(const ModelDefinition& d, const double* q, Index branch, NlsCoefficients& c) noexcept;
+// The hot path's check (regime maps, scans, the batch): c and omega'' against det M's implicit
+// derivatives (implicit_derivatives), and check_or_limit where they disagree.
+void derivatives_or_check(const ModelDefinition& d, const double* q, Index branch, const DetMAtTheta& at,
+                          NlsCoefficients& c) noexcept;
 
 }  // namespace detail
 }  // namespace lrchain

@@ -177,12 +177,14 @@ namespace {
 // Roots of det M in omega^2, the branch's omega, the emitted NLS evaluator, the singular test
 // (inlined into both entry points: this is the hot path of every map and scan).
 [[gnu::always_inline]] inline bool evaluate_unchecked(const ModelDefinition& d, const double* q, Index branch,
-                                                         double theta, NlsCoefficients& c) noexcept {
-  double sh, ch;
+                                                      double theta, NlsCoefficients& c, detail::DetMAtTheta& at) noexcept {
+  double& sh = at.sin_half;
+  double& ch = at.cos_half;
   detail::half_angle_sincos(0.5 * theta, sh, ch);
   const double D1 = 4.0 * sh * sh;  // no cancellation near theta = 0
   const double sigma = 2.0 * sh * ch;
-  double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
+  double* w = at.w;
+  double roots[kMaxModelDegree];
   d.evaluators.evaluate_dispersion(D1, sigma, q, w);
   if (!omega_squared_roots(w, d.degree, roots)) return false;
   const double w2 = roots[branch];
@@ -210,13 +212,14 @@ namespace {
 
 // The unchecked evaluation, then its check (coefficient_check.cpp): full (c, omega'' against omega's
 // derivatives from det M, digits lost to a 0/0) for one wavenumber's numbers, or the hot path's
-// screen (digits lost to a 0/0) with the full check where the screen fails.
+// (c, omega'' against det M's implicit derivatives) with the full check where they disagree.
 template <bool full>
 [[gnu::always_inline]] inline bool evaluate_coefficients(const ModelDefinition& d, const double* q, Index branch,
                                                          double theta, NlsCoefficients& c) noexcept {
-  if (!evaluate_unchecked(d, q, branch, theta, c)) return false;
+  detail::DetMAtTheta at;
+  if (!evaluate_unchecked(d, q, branch, theta, c, at)) return false;
   if constexpr (full) detail::check_or_limit(d, q, branch, c);
-  else detail::screen_or_check(d, q, branch, c);
+  else detail::derivatives_or_check(d, q, branch, at, c);
   return true;
 }
 
@@ -225,7 +228,8 @@ bool coefficients_with(const ModelDefinition& d, const std::vector<double>& para
   std::vector<double> q(d.parameters.size() + d.intermediates.size(), 0.0);
   d.evaluators.evaluate_intermediates(parameters.data(), q.data());
   NlsCoefficients c;
-  return evaluate_unchecked(d, q.data(), branch, theta, c);
+  detail::DetMAtTheta at;
+  return evaluate_unchecked(d, q.data(), branch, theta, c, at);
 }
 
 // Where the coefficients at (branch, theta) fail although they exist there at the model's defaults:
@@ -266,7 +270,8 @@ void blame_parameter(const Model& model, Index branch, double theta) {
 
 bool detail::unchecked_model_coefficients(const ModelDefinition& d, const double* q, Index branch, double theta,
                                           NlsCoefficients& c) noexcept {
-  return evaluate_unchecked(d, q, branch, theta, c);
+  detail::DetMAtTheta at;
+  return evaluate_unchecked(d, q, branch, theta, c, at);
 }
 
 bool coefficients_at(const ModelDefinition& d, const double* q, Index branch, double theta,
