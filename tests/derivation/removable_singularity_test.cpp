@@ -40,7 +40,7 @@ struct BuildTreeCache {
 }  // namespace
 
 TEST_CASE("mass-in-mass-in-mass at omega^2 = k3/m3: c, omega'' and h by their limit, not 0/0") {
-  const test::BuildTreeCache cache;  // the compile takes minutes: cached in the build tree between runs
+  const BuildTreeCache cache;  // the compile takes minutes: kept in the build tree between runs
   const auto definition =
       compile_model_file(std::filesystem::path(LRCHAIN_SOURCE_DIR) / "tests" / "derivation" / "mim3.toml");
   const Model model(definition, {{"g3", -1.0}});
@@ -56,6 +56,14 @@ TEST_CASE("mass-in-mass-in-mass at omega^2 = k3/m3: c, omega'' and h by their li
   CHECK(c.evaluation == CoefficientEvaluation::limit);
   CHECK(std::abs(c.group_velocity - 0.3061862178) <= 1e-8);
   CHECK(std::abs(c.curvature - 0.2430679666) <= 1e-7);
+  // The hot path (regime maps, scans) sees the 0/0 too: its c, omega'' disagree with det M's
+  // implicit derivatives there, and it gives the same limit.
+  NlsCoefficients hot;
+  REQUIRE(coefficients_at(*definition, model.inputs().data(), branch, theta, hot));
+  CHECK(hot.evaluation == CoefficientEvaluation::limit);
+  CHECK(std::abs(hot.group_velocity - 0.3061862178) <= 1e-8);
+  CHECK(std::abs(hot.curvature - 0.2430679666) <= 1e-7);
+  CHECK(hot.h == doctest::Approx(c.h).epsilon(1e-12));
   // h: the mean of the (regular) evaluations at theta -+ 1e-3 (error ~ h'' 1e-6 / 2), -8.2019;
   // the issue's -8.20 (main gave 3.6e34 at the point and -10.65 or -4.44 within 1e-7 of it).
   NlsCoefficients below, above;
@@ -68,11 +76,16 @@ TEST_CASE("mass-in-mass-in-mass at omega^2 = k3/m3: c, omega'' and h by their li
   CHECK(c.h == doctest::Approx(-8.20).epsilon(2e-3));
   // Within 1e-7 of the point the emitted h loses its digits (main: -8.31 and -8.23 there): the
   // checked evaluation gives the limit's value too.
-  for (const double offset : {-1e-7, 1e-7}) {
+  // The hot path too: there c and omega'' keep their digits (to 1e-12) while h loses them (-285 at
+  // 1e-8, -2.8e10 at 1e-10), seen by h_tilde two ways (h_tilde_consistent).
+  for (const double offset : {-1e-7, 1e-7, -1e-8, 1e-8, -1e-10, 1e-10}) {
     INFO("offset " << offset);
     const NlsCoefficients near = coefficients(model, branch, theta + offset);
     REQUIRE(near.evaluation != CoefficientEvaluation::refused);
     CHECK(std::abs(near.h - c.h) <= 1e-4 * std::abs(c.h));
     CHECK(std::abs(near.group_velocity - c.group_velocity) <= 1e-6);
+    NlsCoefficients near_hot;
+    REQUIRE(coefficients_at(*definition, model.inputs().data(), branch, theta + offset, near_hot));
+    CHECK(std::abs(near_hot.h - c.h) <= 1e-4 * std::abs(c.h));
   }
 }

@@ -6,12 +6,11 @@
 // coefficients() evaluates them by their limit (h, lambda, h_tilde NaN with the regime singular
 // where they have a pole, e.g. where the carrier has no amplitude in the first field); what fails
 // both is refused as singular. coefficients() and coefficients_from_evaluators() run the full
-// check; coefficients_at() (regime maps, scans) checks c and omega'' against det M's implicit
-// derivatives (three evaluations of det M, no second evaluation of the emitted NLS expressions) and
-// runs the full check only where they disagree: at and near a 0/0 of the emitted c or omega''
-// (omega'', c's derivative along the branch, carries the square of c's denominators). Digits that
-// h alone loses (a 0/0 in h's own denominators that c and omega'' do not have) are found by the
-// full check only.
+// check; coefficients_at() (regime maps, scans) checks, without a second evaluation of the emitted
+// NLS expressions, c and omega'' against det M's implicit derivatives (three evaluations of det M)
+// and h_tilde against its numerator over the non-resonance values (two emitted forms that round
+// independently, so they disagree where h's expressions lose digits to a 0/0), and runs the full
+// check only where either fails.
 #include <string_view>
 
 #include "lrchain/coefficients.hpp"

@@ -20,6 +20,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kDerivativeStep = 2e-3;  // theta offset of the central differences of omega^2 (and half of it)
 constexpr double kScreenStep = 1e-8;      // theta offset of the screen's second evaluation
 constexpr double kScreenTolerance = 1e-6; // relative change over kScreenStep above which the full check runs
+constexpr double kConsistencyTolerance = 1e-10;  // h_tilde two ways (h_tilde_consistent), relative to h's terms
 constexpr double kImplicitStep = 1e-4;    // theta offset of the hot path's differences of det M at fixed omega^2
 constexpr double kNoiseStep = 1e-6;       // theta offset of the second differences that measure rounding noise
 constexpr double kNoiseTolerance = 1e-7;  // relative second difference above which a field counts as noisy (if not smooth)
@@ -393,10 +394,23 @@ void check_or_limit(const ModelDefinition& d, const double* q, Index branch, Nls
   refuse(c);
 }
 
+bool h_tilde_consistent(const NlsCoefficients& c) noexcept {
+  if (c.regime == Regime::singular) return true;  // a violated non-resonance condition: no h to check
+  // The emitted h_tilde is h - lambda beta, h and lambda each divided by its non-resonance value; the
+  // emitted h_tilde_numerator is one expression. Their roundings are independent, so they disagree
+  // where a 0/0 of h's expressions loses its digits (mass-in-mass-in-mass at omega^2 = k3/m3: by
+  // 2e-6 at 1e-6 from the point, 3e-3 at 1e-7, 1 at 1e-8), and agree to ~1e-14 elsewhere.
+  const double other = c.h_tilde_numerator / (c.nonresonance1 * c.nonresonance2);
+  const double scale = std::abs(c.h) + std::abs(c.h - c.h_tilde) + std::abs(c.h_tilde);
+  if (!std::isfinite(other) || !std::isfinite(scale)) return false;
+  return std::abs(c.h_tilde - other) <= kConsistencyTolerance * scale;
+}
+
 void derivatives_or_check(const ModelDefinition& d, const double* q, Index branch, const DetMAtTheta& at,
                           NlsCoefficients& c) noexcept {
   BranchDerivatives det_m;
-  if (implicit_derivatives(d, q, at, c.omega, det_m) && agrees_with_derivatives(c, det_m)) return;
+  if (h_tilde_consistent(c) && implicit_derivatives(d, q, at, c.omega, det_m) && agrees_with_derivatives(c, det_m))
+    return;
   check_or_limit(d, q, branch, c);
 }
 

@@ -50,8 +50,14 @@ void check_or_limit(const ModelDefinition& d, const double* q, Index branch, Nls
 // lost to a 0/0 of the expressions. Not a check of c and omega'' against det M.
 bool screen_passes(const ModelDefinition& d, const double* q, const NlsCoefficients& c) noexcept;
 
-// The hot path's check (regime maps, scans, the batch): c and omega'' against det M's implicit
-// derivatives (implicit_derivatives), and check_or_limit where they disagree.
+// True when c's h_tilde equals its h_tilde_numerator / (nonresonance1 nonresonance2) to 1e-10 of
+// |h| + |lambda beta| + |h_tilde| (or the regime is singular): the two emitted forms round
+// independently, so digits lost to a 0/0 of h's expressions show as their disagreement.
+bool h_tilde_consistent(const NlsCoefficients& c) noexcept;
+
+// The hot path's check (regime maps, scans, the batch): h_tilde two ways (h_tilde_consistent), c and
+// omega'' against det M's implicit derivatives (implicit_derivatives), and check_or_limit where
+// either fails.
 void derivatives_or_check(const ModelDefinition& d, const double* q, Index branch, const DetMAtTheta& at,
                           NlsCoefficients& c) noexcept;
 
