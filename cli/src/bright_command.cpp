@@ -47,6 +47,9 @@ void add_common(CLI::App& sub, BrightArgs& a) {
   sub.add_flag("--json", a.json_out, "print the JSON summary on one line (default: indented)");
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr (default: progress shown)");
   sub.add_option("--out", c.out, bright_help("out"))->type_name("DIR");
+  sub.add_option("--format", c.format, bright_help("format"))
+      ->check(CLI::IsMember({"csv", "hdf5"}).description(""))
+      ->type_name("csv|hdf5");
   add_max_memory(sub, c.max_memory);
   add_figure_format(sub);
 }
@@ -54,7 +57,7 @@ void add_common(CLI::App& sub, BrightArgs& a) {
 // Validates, runs and reports one job: JSON on stdout, then exit 3 when Newton did not converge or
 // its zero is no localized bright breather; files in --out.
 void run_job(const BrightArgs& a, BrightStep step, const CLI::App& cmd) {
-  refuse_without_out(cmd, a.config.out, {"--figure-format"});
+  refuse_without_out(cmd, a.config.out, {"--format", "--figure-format"});
   BrightBreatherConfig config = a.config;
   config.step = step;
   const Model model = load_selected_model(a.model, cmd, a.chain, true);

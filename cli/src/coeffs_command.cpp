@@ -10,6 +10,7 @@
 #include "help_text.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/coeffs.hpp"
+#include "lrchain/jobs/coeffs_hdf5.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
 
@@ -23,6 +24,7 @@ struct CoeffsOptions {
   std::string branch;
   bool json = false;
   bool table = false;
+  std::string out;
 };
 
 // The help of a CoeffsConfig key: its documentation, range and default (coeffs_options()).
@@ -43,9 +45,11 @@ void register_coeffs(CLI::App& app) {
   cmd->add_option("--branch", opts->branch, help_of("branch"))->type_name("NAME");
   cmd->add_flag("--json", opts->json, help_of("format"));
   cmd->add_flag("--table", opts->table, help_of("table"));
+  cmd->add_option("--out", opts->out, help_of("out"))->type_name("DIR");
   add_examples(*cmd, {"lrchain coeffs --branch optical --theta pi/2 --rho 1/3",
                       "lrchain coeffs --branch acoustic --theta 3*pi/5 --rho 1 --json",
-                      "lrchain coeffs --table --rho 10", "lrchain coeffs --table --json"});
+                      "lrchain coeffs --table --rho 10", "lrchain coeffs --table --json",
+                      "lrchain coeffs --branch optical --theta 1 --out out/coeffs"});
   cmd->callback([opts, cmd] {
     if (opts->table)  // the table has its own wavenumbers and every branch
       for (const char* name : {"--theta", "--branch"})
@@ -58,7 +62,9 @@ void register_coeffs(CLI::App& app) {
     if (cmd->count("--theta") > 0) config.theta = opts->theta;
     config.table = opts->table;
     config.format = opts->json ? jobs::CoeffsFormat::json : jobs::CoeffsFormat::text;
+    config.out = opts->out;
     const jobs::CoeffsResult result = jobs::run_coeffs(config);
+    if (!config.out.empty()) jobs::write(result, config.out);
     if (config.format == jobs::CoeffsFormat::json) std::printf("%s\n", jobs::to_json(result).dump().c_str());
     else fmt::print("{}", jobs::to_text(result, &report::plain_citations));
   });

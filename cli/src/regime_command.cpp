@@ -16,6 +16,7 @@
 #include "help_text.hpp"
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/jobs/regime_hdf5.hpp"
 #include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/jobs/regime_schema.hpp"
 #include "lrchain/provenance_json.hpp"
@@ -56,6 +57,7 @@ struct IntervalsArgs {
   std::string branch;  // empty: optical (or a model's only branch)
   int samples = jobs::RegimeIntervalsConfig{}.samples;
   bool json_flag = false;
+  std::string out;  // --out DIR: also result.h5
 };
 
 void run_intervals(const IntervalsArgs& a, const CLI::App& cmd) {
@@ -65,7 +67,10 @@ void run_intervals(const IntervalsArgs& a, const CLI::App& cmd) {
   c.lattice = lattice_of(a.model, model);
   c.branch = a.branch;
   c.samples = a.samples;
-  json out = with_option_names(jobs::regime_intervals_options(), [&] { return jobs::to_json(jobs::run(c)); });
+  const jobs::RegimeIntervalsResult result =
+      with_option_names(jobs::regime_intervals_options(), [&] { return jobs::run(c); });
+  if (!a.out.empty()) jobs::write_hdf5(result, a.out);
+  json out = jobs::to_json(result);
   out["provenance"] = provenance_json();
   std::cout << out.dump(a.json_flag ? -1 : 2) << '\n';
 }
@@ -86,6 +91,7 @@ struct MapArgs {
   bool delta0_log = false;
   bool no_curves = false;
   bool no_figures = false;
+  std::string format = jobs::RegimeMapConfig{}.format;
 };
 
 // The options of the other resonant-chain plane would do nothing.
@@ -114,6 +120,7 @@ void run_map(const MapArgs& a, const CLI::App& cmd) {
   c.curves = !a.no_curves;
   c.figures = !a.no_figures;
   c.max_memory = a.max_memory;
+  c.format = a.format;
   const bool resonant_plane = a.model.file.empty() || (a.plane == "delta0-omega" && m.name() == "resonant_chain");
   if (resonant_plane && (a.plane == "theta-rho" || a.plane == "delta0-omega")) refuse_other_plane_options(a);
   c.axis_range = range_option(a.axis_range, "axis-range");
@@ -188,6 +195,7 @@ void register_regime(CLI::App& app) {
   add_integer(*in, "--samples", ia->samples, config::intervals_samples.least, config::intervals_samples.most,
               intervals_help("samples"));
   in->add_flag("--json", ia->json_flag, "print the JSON on one line (default: indented)");
+  in->add_option("--out", ia->out, intervals_help("out"))->type_name("DIR");
   add_examples(*in, {"lrchain regime intervals --branch acoustic --rho 1 --delta0 4/9"});
   in->callback([ia, in] { run_intervals(*ia, *in); });
 
@@ -222,6 +230,9 @@ void register_regime(CLI::App& app) {
   add_integer(*mp, "--ny", ma->res_y, config::map_pixels_y.least, config::map_pixels_y.most, map_help("ny"));
   add_max_memory(*mp, ma->max_memory);
   add_figure_format(*mp);
+  mp->add_option("--format", ma->format, map_help("format"))
+      ->check(CLI::IsMember({"csv", "hdf5"}).description(""))
+      ->type_name("csv|hdf5");
   mp->add_flag("--no-curves", ma->no_curves, map_help("curves"));
   mp->add_flag("--no-figures", ma->no_figures, "write the data and .gp scripts but draw no figures (no gnuplot run; default: figures)");
   add_examples(*mp, {"lrchain regime map --plane theta-rho --branch both --out out/fig2",

@@ -150,7 +150,7 @@ void add_strain_sites(CLI::App& app, std::int64_t& sites) {
       [&sites](const std::string& text) {
         const double v = parse_number(text, "sites");
         if (!(std::isfinite(v) && v == std::floor(v) && std::abs(v) <= 9e18))
-          throw InvalidParameter("sites", "must be an odd integer: the strain sites are n = -N..N, 2N + 1 of them");
+          throw InvalidParameter("sites", "must be an odd integer: the sites are n = -N..N, 2N + 1 of them");
         sites = static_cast<std::int64_t>(v);
       },
       schema_help(jobs::bright_options(), "sites"));

@@ -26,7 +26,7 @@ std::shared_ptr<const TableSchema> model_bright_table() {
        number("detuning", NumberRange::any(), "sign(h_tilde) 1e-4", "omega_b - omega"),
        number("n0", NumberRange::any(), number_text(d.n0), "initial centre (site), in [-N, N] with sites = 2N + 1"),
        integer("sites", model_bright_sites.least, model_bright_sites.most, std::to_string(strain_site_count(d.N)),
-               "odd number of strain sites 2N + 1, n = -N..N"),
+               "odd number of lattice sites 2N + 1, n = -N..N (strains, or displacements of on-site models)"),
        number("periods", positive, number_text(d.periods), "run length in breather periods T_b"),
        number("sample_every", positive, number_text(d.sample_every), "E, energy and centre sampled every this many T_b"),
        number("dt", positive, "2 pi / (24 omega_max)", "srkn11b step (omega_max: the fastest linear mode)"),

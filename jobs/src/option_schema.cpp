@@ -80,7 +80,9 @@ std::string default_text(const JobOption& o) {
 std::string help_text(const JobOption& o) {
   if (!o.help.empty()) return filled(filled(filled(o.help, "doc", o.doc), "range", o.range), "default", default_text(o));
   std::string facts = o.range;
-  const std::string value = o.required ? "required" : o.default_value.is_null() ? "default: none" : "default " + default_text(o);
+  const std::string value = o.required                                           ? "required"
+                            : o.default_value.is_null() && o.default_note.empty() ? "default: none"
+                                                                                   : "default " + default_text(o);
   facts += (facts.empty() ? "" : "; ") + value;
   return o.doc + " [" + facts + "]";
 }

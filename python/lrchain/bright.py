@@ -13,6 +13,7 @@ converge, or converges to something that is no localized bright breather, raises
 :class:`lrchain.NumericalFailure`. Ctrl-C raises ``KeyboardInterrupt`` after the current Newton step.
 """
 
+import json
 from dataclasses import dataclass
 
 import numpy as np
@@ -63,7 +64,9 @@ class BrightBreather:
     (branch, theta, omega, curvature, h_tilde, lambda, seed_amplitude, seed_inverse_width), the linear
     ``bands`` and ``harmonics_checked``, the ``profile`` and ``seed_profile`` (peak, peak_site, tail,
     width, norm_squared, localized), ``seed_difference`` (max |Z(0) - seed| / max |Z(0)|), ``floquet`` (a
-    :class:`BrightFloquet`, or None) and the job's whole JSON ``summary`` (as ``lrchain bright`` prints)."""
+    :class:`BrightFloquet`, or None) and the job's whole JSON ``summary`` (as ``lrchain bright`` prints).
+    ``to_hdf5(path)`` writes the file ``lrchain bright solve|floquet --format hdf5`` writes
+    (:mod:`lrchain.hdf5`); :func:`lrchain.load` reads it back; ``to_xarray()`` gives a Dataset."""
 
     omega_b: float
     center: str
@@ -81,11 +84,25 @@ class BrightBreather:
     floquet: BrightFloquet
     summary: dict
 
+    def to_hdf5(self, path):
+        """Writes the breather with the C++ job layer's writer (layout: :mod:`lrchain.hdf5`)."""
+        _write(path, self, None)
+
     def __repr__(self):
         f = f", {self.floquet!r}" if self.floquet else ""
         return (f"BrightBreather(omega_b={self.omega_b}, {self.center}-centred, {len(self.n)} sites, peak "
                 f"{self.profile['peak']:.6g}, Newton residual {self.newton_residuals[-1]:.3g} after "
                 f"{len(self.newton_residuals) - 1} steps{f})")
+
+
+def _write(path, breather, branch_z):
+    """A bright breather (branch_z None) or a branch (its start and every point's Z(0)) to ``path``."""
+    from . import _hdf5
+    from .hdf5 import checked_destination
+
+    _hdf5.write_bright_breather(checked_destination(path), json.dumps(breather.summary), list(breather.variables),
+                                np.asarray(breather.z, float), np.asarray(breather.seed, float),
+                                None if branch_z is None else np.asarray(branch_z, float))
 
 
 def _breather(d):
@@ -171,7 +188,9 @@ class BrightBranch:
     """A bright-breather family continued in omega_b away from its band edge: the first point ``start`` (a
     :class:`BrightBreather`), per point ``omega_b``, ``peak``, ``norm_squared``, ``width``, ``stable`` and
     ``max_nontrivial_modulus`` (None without Floquet), ``z`` (points x fields x sites), the
-    ``turning_points``, the non-resonant ``window`` (low, high; high None when unbounded) and ``stop_reason``."""
+    ``turning_points``, the non-resonant ``window`` (low, high; high None when unbounded) and ``stop_reason``.
+    ``to_hdf5(path)`` writes the file ``lrchain bright continue --format hdf5`` writes (:mod:`lrchain.hdf5`);
+    :func:`lrchain.load` reads it back; ``to_xarray()`` gives a Dataset on ``point``."""
 
     start: BrightBreather
     omega_b: np.ndarray
@@ -184,6 +203,10 @@ class BrightBranch:
     turning_points: list
     window: tuple
     stop_reason: str
+
+    def to_hdf5(self, path):
+        """Writes the branch with the C++ job layer's writer (layout: :mod:`lrchain.hdf5`)."""
+        _write(path, self.start, self.z)
 
     def __repr__(self):
         return (f"BrightBranch({len(self.omega_b)} points, omega_b {self.omega_b[0]:.6g} .. {self.omega_b[-1]:.6g}, "
@@ -207,6 +230,11 @@ def continue_branch(model=None, omega_b=None, branch=None, center=_D["center"], 
     """
     d = _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance,
              "continue", points, ds, floquet)
+    return _branch(d)
+
+
+def _branch(d):
+    """The BrightBranch of the job's dict (its summary, Z(0), the seed, variables and branch_z)."""
     z = d.pop("branch_z")
     start = _breather(d)
     b = start.summary["branch"]

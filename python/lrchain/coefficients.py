@@ -1,6 +1,7 @@
 """NLS coefficients of the modulation equations, vectorised over the carrier wavenumber."""
 
-from dataclasses import dataclass, fields
+import json
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
@@ -9,6 +10,10 @@ from ._keywords import documented, real_numbers
 from .errors import InvalidParameterError
 
 REGIME_NAMES = np.array(_lrchain.regime_names)
+
+# The coefficient arrays, in the order of the HDF5 file (lrchain/jobs/coeffs_hdf5.hpp); "lambda" is lambda_.
+_COLUMNS = ("omega", "group_velocity", "curvature", "gamma", "beta", "h", "lambda", "h_tilde", "nonresonance1",
+            "nonresonance2")
 
 
 @dataclass(frozen=True, repr=False)
@@ -32,6 +37,9 @@ class Coefficients:
     NaN policy: ``h``, ``lambda_`` and ``h_tilde`` are NaN exactly where ``regime == "singular"``
     (a non-resonance value vanishes to within 1e-12 of its terms: h_tilde has a pole there). All other
     fields are finite everywhere.
+
+    ``branch`` and ``model`` (name, file_hash, parameters) say what was evaluated; ``to_hdf5(path)``
+    writes the file ``lrchain coeffs --out DIR`` writes (:mod:`lrchain.hdf5`), ``to_xarray()`` a Dataset.
     """
 
     theta: object
@@ -46,6 +54,28 @@ class Coefficients:
     nonresonance1: object
     nonresonance2: object
     regime_code: object
+    branch: object = None
+    # The Params or Model evaluated (its model object made when asked), or the model dict read from a file.
+    source: object = field(default=None, repr=False, compare=False)
+
+    @property
+    def model(self):
+        """The model evaluated as a dict (name, file_hash, parameters), as every output's "model"; None
+        for coefficients made by hand."""
+        if self.source is None or isinstance(self.source, dict):
+            return self.source
+        return json.loads(_lrchain.lattice_model_json(self.source))
+
+    def to_hdf5(self, path):
+        """Writes the coefficients with the C++ job layer's writer: the file ``lrchain coeffs ... --out
+        DIR`` writes (theta of any shape; layout: :mod:`lrchain.hdf5`). :func:`lrchain.load` reads it back."""
+        from . import _hdf5
+        from .hdf5 import checked_destination
+
+        columns = {name: np.asarray(self[name], dtype=np.float64) for name in _COLUMNS}
+        _hdf5.write_coefficients(checked_destination(path), json.dumps(self.model), self.branch or "",
+                                 np.asarray(self.theta, dtype=np.float64), columns,
+                                 np.asarray(self.regime_code, dtype=np.int8))
 
     @property
     def regime(self):
@@ -60,7 +90,8 @@ class Coefficients:
 
     def as_dict(self):
         """{name: value} with the key "lambda" for lambda_."""
-        d = {("lambda" if f.name == "lambda_" else f.name): getattr(self, f.name) for f in fields(self)}
+        d = {("lambda" if f.name == "lambda_" else f.name): getattr(self, f.name) for f in fields(self)
+             if f.name not in ("branch", "source")}
         d["regime"] = self.regime
         return d
 
@@ -110,7 +141,7 @@ def coefficients(params, branch, theta, out=None):
     if out is not None:
         if scalar or not isinstance(out, Coefficients) or np.ndim(out.omega) == 0:
             raise InvalidParameterError("out must be an earlier Coefficients of an array theta", "out")
-        arrays = {f.name.rstrip("_"): getattr(out, f.name) for f in fields(out) if f.name not in ("theta", "regime_code")}
+        arrays = {name: out[name] for name in _COLUMNS}
         arrays["regime"] = out.regime_code
     if isinstance(params, _lrchain.Model):
         values = _lrchain.model_coefficients_array(params, branch, theta_array, arrays)
@@ -119,5 +150,7 @@ def coefficients(params, branch, theta, out=None):
     codes = values.pop("regime")
     if scalar:
         values = {k: float(v) for k, v in values.items()}
-        return Coefficients(theta=float(theta_array), lambda_=values.pop("lambda"), regime_code=int(codes), **values)
-    return Coefficients(theta=theta_array, lambda_=values.pop("lambda"), regime_code=codes, **values)
+        return Coefficients(theta=float(theta_array), lambda_=values.pop("lambda"), regime_code=int(codes),
+                            branch=branch, source=params, **values)
+    return Coefficients(theta=theta_array, lambda_=values.pop("lambda"), regime_code=codes, branch=branch,
+                        source=params, **values)

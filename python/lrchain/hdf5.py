@@ -1,8 +1,9 @@
-"""Results to HDF5 files (read them with h5py): ``result.to_hdf5(path)`` on every simulate and dark
-result, written by the C++ library's writers: the same file as the command's ``--format hdf5``.
+"""Results to HDF5 files (read them with h5py): ``result.to_hdf5(path)`` on every result (simulate, dark,
+bright, coefficients, regime), written by the C++ library's writers: the same file as the command's
+``--format hdf5`` (``--out DIR`` of ``lrchain coeffs`` and ``lrchain regime intervals``).
 
 Every file has the root attributes ``lrchain_result`` (the result's class), ``lrchain_version``,
-``git_commit`` and ``model`` (the model object as JSON text: name, file_hash, parameters; a model
+``git_commit`` (the provenance) and ``model`` (the model object as JSON text: name, file_hash, parameters; a model
 file's run adds lattice_code).
 
 - :class:`lrchain.simulate.BrightResult`, :class:`~lrchain.simulate.DriveResult`,
@@ -21,6 +22,18 @@ file's run adds lattice_code).
   (docs/dark-breathers.md); :class:`~lrchain.dark.ModelDarkSolution`, :class:`~lrchain.dark.ModelBranch`,
   :class:`~lrchain.dark.ModelEvolution` (the same with ``--model``): the profiles ``z`` in the
   lattice's variables and the band edge as root attributes (docs/dark-models.md).
+- :class:`lrchain.Coefficients` (``lrchain coeffs ... --out DIR``: ``result.h5``, with ``--table``
+  ``result_<branch>.h5``): ``theta`` and every coefficient with theta's shape, ``regime_code`` (int8), the
+  root attribute ``branch`` (lrchain/jobs/coeffs_hdf5.hpp).
+- :class:`lrchain.regime.Intervals` (``lrchain regime intervals --out DIR``): ``lo``, ``hi``, ``roots``,
+  their causes as JSON attributes; :class:`~lrchain.regime.RegimeMap` (``lrchain regime map --format
+  hdf5``: ``result.h5`` or ``result_<branch>.h5``): ``x``, ``y``, ``values`` (int8, y x x), attributes
+  ``plane``, ``x_name``, ``y_name``, the traced curves in ``curves/<k>``; :class:`~lrchain.regime.BoundaryCurve`:
+  ``points`` (k x 2), attributes ``cause``, ``axis``, ``y_name`` (lrchain/jobs/regime_hdf5.hpp).
+- :class:`lrchain.bright.BrightBreather`, :class:`~lrchain.bright.BrightBranch` (``lrchain bright
+  solve|floquet|continue --format hdf5``): ``n``, ``z``, ``seed``, ``branch_z`` (a branch),
+  ``floquet_multipliers`` (complex), the summary as a tree and as exact JSON text (root attribute
+  ``summary_json``), ``omega_b``, ``center``, ``variables`` (lrchain/jobs/bright_breather_hdf5.hpp).
 
 :func:`lrchain.load` reads any of these files back into its result class (:mod:`lrchain.reading`).
 

@@ -296,9 +296,18 @@ def coefficients_to_xarray(self):
                  for name, label, units in labels}
     data_vars["regime"] = (dims, np.asarray(self.regime, dtype=str), {"long_name": "regime"})
     coords = {"theta": _var(dims, theta, "wavenumber theta", "rad")}
-    attrs = _provenance()
+    attrs = _provenance({"model": self.model} if self.model is not None else None)
+    attrs.update(_scalar_attrs({"branch": self.branch}) if self.branch is not None else {})
     attrs["lrchain_result"] = "coefficients"
     return _dataset(data_vars, coords, attrs)
+
+
+def _regime_attrs(result):
+    """Provenance with the model and branch of a regime result (when it carries them)."""
+    attrs = _provenance({"model": result.model} if result.model is not None else None)
+    if result.branch is not None:
+        attrs["branch"] = result.branch
+    return attrs
 
 
 def intervals_to_xarray(self):
@@ -309,7 +318,7 @@ def intervals_to_xarray(self):
                  "hi_cause": _var(("interval",), np.asarray(self.hi_cause, dtype=str), "what ends it above"),
                  "root": _var(("root",), self.roots, "zero of a regime function", "rad"),
                  "root_cause": _var(("root",), np.asarray(self.root_cause, dtype=str), "which function vanishes")}
-    attrs = _provenance()
+    attrs = _regime_attrs(self)
     attrs["lrchain_result"] = "regime_intervals"
     return _dataset(data_vars, {}, attrs)
 
@@ -322,7 +331,9 @@ def regime_map_to_xarray(self):
                              "flag_meanings": "outside_band defocusing focusing singular"})}
     coords = {self.x_name: ((self.x_name,), np.asarray(self.x), {"long_name": self.x_name}),
               self.y_name: ((self.y_name,), np.asarray(self.y), {"long_name": self.y_name})}
-    attrs = _provenance()
+    attrs = _regime_attrs(self)
+    if self.plane is not None:
+        attrs["plane"] = self.plane
     attrs["lrchain_result"] = "regime_map"
     return _dataset(data_vars, coords, attrs)
 
@@ -332,9 +343,69 @@ def boundary_curve_to_xarray(self):
     p = np.asarray(self.points, dtype=float).reshape(-1, 2)
     data_vars = {"parameter": _var(("point",), p[:, 0], "parameter value"),
                  "theta": _var(("point",), p[:, 1], "theta (or omega) on the curve")}
-    attrs = _provenance()
-    attrs.update({"cause": self.cause, "lrchain_result": "boundary_curve"})
+    attrs = _regime_attrs(self)
+    attrs.update({"cause": self.cause, "axis": self.axis or "", "y_name": self.y_name,
+                  "lrchain_result": "boundary_curve"})
     return _dataset(data_vars, {"point": np.arange(len(p))}, attrs)
+
+
+def floquet_to_xarray(self):
+    """Floquet multipliers (real and imaginary parts) on ``multiplier``, the classification as attributes."""
+    data_vars = {}
+    _floquet_vars(self, "", ("multiplier",), data_vars)
+    attrs = _provenance()
+    attrs.update(_scalar_attrs({k: v for k, v in vars(self).items() if k not in ("multipliers", "trivial")}))
+    attrs["lrchain_result"] = "floquet"
+    return _dataset(data_vars, {}, attrs)
+
+
+def _bright_vars(floquet, data_vars, attrs):
+    """A bright breather's Floquet multipliers and their classification."""
+    if floquet is None:
+        return
+    _floquet_vars(floquet, "floquet_", ("multiplier",), data_vars)
+    attrs.update(_scalar_attrs({k: v for k, v in vars(floquet).items() if k not in ("multipliers", "trivial")},
+                               "floquet_"))
+
+
+def bright_breather_to_xarray(self):
+    """Bright breather: z and seed on (field, site); Newton's residuals; Floquet multipliers; the edge,
+    profile and summary as attributes."""
+    data_vars = {"z": _var(("field", "site"), self.z, "Z(0) in the lattice's variables"),
+                 "seed": _var(("field", "site"), self.seed, "NLS bright-breather seed"),
+                 "newton_residual": _var(("newton_iteration",), self.newton_residuals, "Newton residual")}
+    coords = {"site": _var(("site",), self.n, *SITE), "field": ("field", list(self.variables))}
+    attrs = _provenance(self.summary)
+    attrs.update(_scalar_attrs({"omega_b": self.omega_b, "center": self.center,
+                                "seed_difference": self.seed_difference}))
+    attrs.update(_scalar_attrs(self.edge, "edge_"))
+    attrs.update(_scalar_attrs(self.profile, "profile_"))
+    _bright_vars(self.floquet, data_vars, attrs)
+    attrs["lrchain_result"] = "bright_breather"
+    return _dataset(data_vars, coords, attrs)
+
+
+def bright_branch_to_xarray(self):
+    """Bright-breather branch: per ``point`` (omega_b its coordinate) peak, norm_squared, width, stability,
+    largest non-trivial Floquet modulus and z on (field, site)."""
+    start = self.start
+    data_vars = {"peak": _var(("point",), self.peak, "peak of Z(0)"),
+                 "norm_squared": _var(("point",), self.norm_squared, "sum of Z(0)^2"),
+                 "width": _var(("point",), self.width, "width (sites)", "1"),
+                 "stable": _var(("point",), [-1 if v is None else int(v) for v in self.stable],
+                                "stable (1), unstable (0), not computed (-1)"),
+                 "max_nontrivial_modulus": _var(("point",), [np.nan if v is None else v
+                                                             for v in self.max_nontrivial_modulus],
+                                                "largest non-trivial Floquet modulus"),
+                 "z": _var(("point", "field", "site"), self.z, "Z(0) in the lattice's variables")}
+    coords = {"point": np.arange(len(self.omega_b)),
+              "omega_b": _var(("point",), self.omega_b, "breather frequency omega_b", "rad/time"),
+              "site": _var(("site",), start.n, *SITE), "field": ("field", list(start.variables))}
+    attrs = _provenance(start.summary)
+    attrs.update({"stop_reason": self.stop_reason, "turning_points": np.asarray(self.turning_points, float),
+                  "window_low": self.window[0], "window_high": "null" if self.window[1] is None else self.window[1],
+                  "center": start.center, "lrchain_result": "bright_branch"})
+    return _dataset(data_vars, coords, attrs)
 
 
 STATUS_MEANINGS = "missing ok blew_up numerical_failure invalid"
@@ -397,7 +468,7 @@ def open_sweep(path):
 
 def attach():
     """Gives each result class its ``to_xarray`` method (called once by ``import lrchain``)."""
-    from . import dark, regime, simulate
+    from . import bright, dark, regime, simulate
     from .coefficients import Coefficients
 
     methods = {
@@ -408,7 +479,9 @@ def attach():
         dark.ModelBranch: model_branch_to_xarray, dark.Evolution: evolution_to_xarray,
         dark.ModelEvolution: model_evolution_to_xarray, Coefficients: coefficients_to_xarray,
         regime.Intervals: intervals_to_xarray, regime.RegimeMap: regime_map_to_xarray,
-        regime.BoundaryCurve: boundary_curve_to_xarray,
+        regime.BoundaryCurve: boundary_curve_to_xarray, bright.BrightBreather: bright_breather_to_xarray,
+        bright.BrightBranch: bright_branch_to_xarray, dark.Floquet: floquet_to_xarray,
+        bright.BrightFloquet: floquet_to_xarray,
     }
     for cls, method in methods.items():
         method.__name__ = method.__qualname__ = "to_xarray"

@@ -1,9 +1,13 @@
 """``lrchain.load(path)``: any file lrchain writes, read back into the object it came from.
 
-- an HDF5 result (``result.to_hdf5(path)``, or ``--format hdf5`` of ``lrchain simulate`` and ``lrchain
-  dark``: the file's root attribute ``lrchain_result`` names the class) -> that result class
-  (:class:`lrchain.simulate.BrightResult`, ..., :class:`lrchain.dark.ModelEvolution`), with the same
-  arrays, bit for bit, and the summary read from its tree (layout: :mod:`lrchain.hdf5`);
+- an HDF5 result (``result.to_hdf5(path)``, or the HDF5 files of ``lrchain simulate|dark|bright ...
+  --format hdf5``, ``lrchain regime map --format hdf5``, ``lrchain coeffs|regime intervals --out DIR``:
+  the file's root attribute ``lrchain_result`` names the class) -> that result class
+  (:class:`lrchain.simulate.BrightResult`, ..., :class:`lrchain.dark.ModelEvolution`,
+  :class:`lrchain.Coefficients`, :class:`lrchain.regime.Intervals`, :class:`~lrchain.regime.RegimeMap`,
+  :class:`~lrchain.regime.BoundaryCurve`, :class:`lrchain.bright.BrightBreather`,
+  :class:`~lrchain.bright.BrightBranch`), with the same arrays, bit for bit, and the summary read from
+  its tree (a bright breather's from its exact JSON text; layout: :mod:`lrchain.hdf5`);
 - a sweep's results file (``lrchain sweep``) -> an :class:`xarray.Dataset` (:func:`lrchain.open_sweep`);
 - a folder a command wrote (``--out DIR``) -> its ``result.h5`` or, failing that, its one sweep file;
 - a JSON file (the command's summary, ``summary.json``) -> a dict.
@@ -215,9 +219,73 @@ def _model_evolution(f, cls):
                **_evolution_series(f), **_edge(f))
 
 
+def _model(f):
+    """The root attribute ``model`` as a dict."""
+    return json.loads(_text(f.attrs["model"]))
+
+
+def _coefficients(f, cls):
+    """Coefficients: a scalar theta comes back as floats (and an int regime_code), an array as arrays."""
+    from .coefficients import _COLUMNS
+
+    theta = f["theta"][()]
+    scalar = np.ndim(theta) == 0
+    value = float if scalar else np.asarray
+    values = {("lambda_" if name == "lambda" else name): value(f[name][()]) for name in _COLUMNS}
+    code = f["regime_code"][()]
+    return cls(theta=value(theta), regime_code=int(code) if scalar else code, branch=_text(f.attrs["branch"]),
+               source=_model(f), **values)
+
+
+def _intervals(f, cls):
+    a = f.attrs
+    return cls(lo=f["lo"][()], hi=f["hi"][()], lo_cause=_string_list(a["lo_cause"]), hi_cause=_string_list(a["hi_cause"]),
+               roots=f["roots"][()], root_cause=_string_list(a["root_cause"]), branch=_text(a["branch"]), model=_model(f))
+
+
+def _boundary_curve(f, cls):
+    a = f.attrs
+    return cls(cause=_text(a["cause"]), points=f["points"][()], branch=_text(a["branch"]), axis=_text(a["axis"]),
+               y_name=_text(a["y_name"]), model=_model(f))
+
+
+def _regime_map(f, cls):
+    from .regime import BoundaryCurve
+
+    a = f.attrs
+    x_name, y_name, branch, model = _text(a["x_name"]), _text(a["y_name"]), _text(a["branch"]), _model(f)
+    group = f["curves"]
+    curves = tuple(BoundaryCurve(cause=_text(group[k].attrs["cause"]), points=group[k]["points"][()], branch=branch,
+                                 axis=x_name, y_name=y_name, model=model) for k in sorted(group, key=int))
+    return cls(x=f["x"][()], y=f["y"][()], values=f["values"][()], x_name=x_name, y_name=y_name, branch=branch,
+               plane=_text(a["plane"]), model=model, curves=curves)
+
+
+def _bright_job(f):
+    """The bright-breather job's dict (bright._run's): the summary from its exact JSON text, Z(0), seed, variables."""
+    d = json.loads(_text(f.attrs["summary_json"]))
+    d.update(z=f["z"][()], seed=f["seed"][()], variables=tuple(_string_list(f.attrs["variables"])))
+    return d
+
+
+def _bright_breather(f, cls):
+    from .bright import _breather
+
+    return _breather(_bright_job(f))
+
+
+def _bright_branch(f, cls):
+    from .bright import _branch
+
+    d = _bright_job(f)
+    d["branch_z"] = f["branch_z"][()]
+    return _branch(d)
+
+
 def _readers():
     """Result class name (the files' ``lrchain_result``) -> (class, reader)."""
-    from . import dark, simulate
+    from . import bright, dark, regime, simulate
+    from .coefficients import Coefficients
 
     return {"BrightResult": (simulate.BrightResult, _simulation), "DriveResult": (simulate.DriveResult, _simulation),
             "ModulatedResult": (simulate.ModulatedResult, _simulation),
@@ -225,7 +293,11 @@ def _readers():
             "RingResult": (simulate.RingResult, _ring), "DarkSolution": (dark.DarkSolution, _dark_solution),
             "ModelDarkSolution": (dark.ModelDarkSolution, _model_dark_solution),
             "Branch": (dark.Branch, _branch), "ModelBranch": (dark.ModelBranch, _model_branch),
-            "Evolution": (dark.Evolution, _evolution), "ModelEvolution": (dark.ModelEvolution, _model_evolution)}
+            "Evolution": (dark.Evolution, _evolution), "ModelEvolution": (dark.ModelEvolution, _model_evolution),
+            "Coefficients": (Coefficients, _coefficients), "Intervals": (regime.Intervals, _intervals),
+            "RegimeMap": (regime.RegimeMap, _regime_map), "BoundaryCurve": (regime.BoundaryCurve, _boundary_curve),
+            "BrightBreather": (bright.BrightBreather, _bright_breather),
+            "BrightBranch": (bright.BrightBranch, _bright_branch)}
 
 
 def _load_hdf5(path):

@@ -29,7 +29,9 @@ OUTSIDE, DEFOCUSING, FOCUSING, SINGULAR = -1, 0, 1, 2
 class Intervals:
     """Focusing intervals [lo[k], hi[k]] in (0, pi] and what ends each (``lo_cause``, ``hi_cause``:
     "curvature_zero", "h_tilde_zero", "nonresonance1", "nonresonance2" or "band_edge"), with every
-    zero of the four smooth functions along (0, pi] (``roots``, ``root_cause``)."""
+    zero of the four smooth functions along (0, pi] (``roots``, ``root_cause``), the ``branch`` and the
+    ``model`` (name, file_hash, parameters). ``to_hdf5(path)`` writes the file ``lrchain regime intervals
+    --out DIR`` writes; :func:`lrchain.load` reads it back."""
 
     lo: np.ndarray
     hi: np.ndarray
@@ -37,6 +39,17 @@ class Intervals:
     hi_cause: list
     roots: np.ndarray
     root_cause: list
+    branch: str = None
+    model: dict = None
+
+    def to_hdf5(self, path):
+        """Writes the intervals with the C++ job layer's writer (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+        from .hdf5 import checked_destination
+
+        _hdf5.write_intervals(checked_destination(path), json.dumps(self.model), self.branch or "",
+                              np.asarray(self.lo, float), np.asarray(self.hi, float), list(self.lo_cause),
+                              list(self.hi_cause), np.asarray(self.roots, float), list(self.root_cause))
 
     def __len__(self):
         return len(self.lo)
@@ -76,7 +89,7 @@ def intervals(params, branch=None, samples=_INTERVALS["samples"], tolerance=_INT
         Intervals([0.000000, 1.891589])
     """
     d = _lrchain.regime_structure(params, branch or "", int(samples), tolerance)
-    d.pop("branch")
+    d["model"] = json.loads(d["model"])
     return Intervals(**d)
 
 
@@ -84,13 +97,31 @@ def intervals(params, branch=None, samples=_INTERVALS["samples"], tolerance=_INT
 class RegimeMap:
     """sign(omega'' h_tilde) on a grid: ``values[j, i]`` at (``x[i]``, ``y[j]``), int8 with
     OUTSIDE (-1, out of the band), DEFOCUSING (0), FOCUSING (1), SINGULAR (2). ``pcolormesh(x, y,
-    values)`` draws it; ``rho``/``theta`` (or ``delta0``/``omega``) name the axes."""
+    values)`` draws it; ``rho``/``theta`` (or ``delta0``/``omega``) name the axes. ``branch``, ``plane``
+    and ``model`` (name, file_hash, parameters) say what it maps; ``curves`` are the traced boundary curves
+    (:class:`BoundaryCurve`; a map read from the file of ``lrchain regime map --format hdf5``, empty for the
+    maps of this module, which trace none: :func:`boundary_curves`). ``to_hdf5(path)`` writes the file
+    ``lrchain regime map --format hdf5`` writes; :func:`lrchain.load` reads it back."""
 
     x: np.ndarray
     y: np.ndarray
     values: np.ndarray
     x_name: str
     y_name: str
+    branch: str = None
+    plane: str = None
+    model: dict = None
+    curves: tuple = ()
+
+    def to_hdf5(self, path):
+        """Writes the map with the C++ job layer's writer (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+        from .hdf5 import checked_destination
+
+        _hdf5.write_regime_map(checked_destination(path), json.dumps(self.model), self.branch or "", self.plane or "",
+                               self.x_name, self.y_name, np.asarray(self.x, float), np.asarray(self.y, float),
+                               np.asarray(self.values, np.int8),
+                               [(c.cause, np.asarray(c.points, float).reshape(-1, 2)) for c in self.curves])
 
     def __getattr__(self, name):
         if name == self.__dict__.get("x_name"):
@@ -137,7 +168,8 @@ def _map(lattice, plane, branch, axis, x, y, x_log, x_keyword, y_keyword, x_name
                 "axis_range": x_keyword, "theta_range": y_keyword, "omega_range": y_keyword}
     m = _keywords_named(lambda: _lrchain.regime_map(lattice, plane, branch or "", axis, x_range, nx, y_range, ny, x_log),
                         keywords)
-    return RegimeMap(m["x"], m["y"], m["values"], x_name or m["axis"], y_name)
+    return RegimeMap(m["x"], m["y"], m["values"], x_name or m["axis"], y_name, branch=m["branch"], plane=m["plane"],
+                     model=json.loads(m["model"]))
 
 
 @documented(("regime map", "Options (the job's schema, as ``lrchain regime map --help``):"))
@@ -217,10 +249,25 @@ def map_defaults(params, branch):
 @dataclass(frozen=True)
 class BoundaryCurve:
     """One traced zero curve: ``cause`` ("curvature_zero", "h_tilde_zero", "nonresonance1" or
-    "nonresonance2") and ``points`` (k, 2): parameter value, theta (or omega)."""
+    "nonresonance2") and ``points`` (k, 2): parameter value, theta (or omega: ``y_name``); the ``branch``,
+    the parameter ``axis`` and the ``model`` (name, file_hash, parameters). ``to_hdf5(path)`` writes it
+    (layout: :mod:`lrchain.hdf5`); :func:`lrchain.load` reads it back."""
 
     cause: str
     points: np.ndarray
+    branch: str = None
+    axis: str = None
+    y_name: str = "theta"
+    model: dict = None
+
+    def to_hdf5(self, path):
+        """Writes the curve with the C++ job layer's writer (layout: :mod:`lrchain.hdf5`)."""
+        from . import _hdf5
+        from .hdf5 import checked_destination
+
+        _hdf5.write_boundary_curve(checked_destination(path), json.dumps(self.model), self.branch or "",
+                                   self.axis or "", self.y_name, self.cause,
+                                   np.asarray(self.points, float).reshape(-1, 2))
 
     def __repr__(self):
         return f"BoundaryCurve({self.cause}, {len(self.points)} points)"
@@ -248,8 +295,11 @@ def boundary_curves(params, branch, axis=None, lo=None, hi=None, omega_plane=_CU
     if (lo is None) != (hi is None):
         raise TypeError("boundary_curves() takes both lo and hi, or neither (the map's default range)")
     span = None if lo is None else (lo, hi)
-    return [BoundaryCurve(cause, points)
-            for cause, points in _lrchain.boundary_curves(params, branch, axis or "", span, omega_plane)]
+    traced = _lrchain.boundary_curves(params, branch, axis or "", span, omega_plane)
+    model = json.loads(_lrchain.lattice_model_json(params))
+    axis = axis or _lrchain.lattice_default_axis(params)
+    return [BoundaryCurve(cause, points, branch=branch, axis=axis, y_name="omega" if omega_plane else "theta",
+                          model=model) for cause, points in traced]
 
 
 @documented(("regime thresholds", "Options (the job's schema, as ``lrchain regime thresholds --help``):"))

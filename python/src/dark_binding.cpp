@@ -18,7 +18,7 @@ namespace {
 using namespace lrchain::jobs::dark;
 
 DarkConfig chain_config(DarkStep step, const Params& p, double omega_b, const std::string& branch,
-                        const std::string& center, double sites, const std::string& mode, double tolerance,
+                        const std::string& center, std::optional<double> sites, const std::string& mode, double tolerance,
                         double max_iterations) {
   DarkConfig c = dark_config(step, omega_b, branch, center, sites, mode, tolerance, max_iterations);
   c.params = p;
@@ -26,13 +26,13 @@ DarkConfig chain_config(DarkStep step, const Params& p, double omega_b, const st
 }
 
 // The solution as a dict: profile x_n(0), y_n(0), the seed, Newton's history, the measures (Sec. 5.3).
-py::dict solve_job(const Params& p, double omega_b, const std::string& branch, const std::string& center, double sites,
+py::dict solve_job(const Params& p, double omega_b, const std::string& branch, const std::string& center, std::optional<double> sites,
                    const std::string& mode, double tolerance, double max_iterations, bool floquet, bool full_monodromy) {
   DarkConfig c = chain_config(floquet ? DarkStep::floquet : DarkStep::solve, p, omega_b, branch, center, sites, mode,
                               tolerance, max_iterations);
   c.full_monodromy = full_monodromy;
   const DarkResult r = run_dark_job(c);
-  const Index N = c.sites;
+  const Index N = dark_sites(r.config);
   py::array_t<double> n(N);
   for (Index i = 0; i < N; ++i) n.mutable_at(i) = i - (N - 1) / 2;
   py::dict d;
@@ -48,7 +48,7 @@ py::dict solve_job(const Params& p, double omega_b, const std::string& branch, c
   return d;
 }
 
-py::dict continue_job(const Params& p, double omega_b, const std::string& branch, const std::string& center, double sites,
+py::dict continue_job(const Params& p, double omega_b, const std::string& branch, const std::string& center, std::optional<double> sites,
                       const std::string& mode, double tolerance, double max_iterations, double points, double ds,
                       double omega_min, std::optional<double> omega_max, bool floquet, const py::object& progress) {
   DarkConfig c = chain_config(DarkStep::branch, p, omega_b, branch, center, sites, mode, tolerance, max_iterations);
@@ -56,7 +56,7 @@ py::dict continue_job(const Params& p, double omega_b, const std::string& branch
   const DarkResult r = run_dark_job(c, progress);
   py::dict d = branch_arrays(r.branch, floquet, [](const sim::dark::DarkMeasures& m) { return measures(m); });
   // x, y: (points, sites) profiles Z(0) of the two fields
-  const py::ssize_t k = static_cast<py::ssize_t>(r.branch.points.size()), N = c.sites;
+  const py::ssize_t k = static_cast<py::ssize_t>(r.branch.points.size()), N = dark_sites(r.config);
   py::array_t<double> x({k, N}), y({k, N});
   for (py::ssize_t i = 0; i < k; ++i)
     for (py::ssize_t n = 0; n < N; ++n) {
@@ -68,7 +68,7 @@ py::dict continue_job(const Params& p, double omega_b, const std::string& branch
   return d;
 }
 
-py::dict evolve_job(const Params& p, double omega_b, const std::string& branch, const std::string& center, double sites,
+py::dict evolve_job(const Params& p, double omega_b, const std::string& branch, const std::string& center, std::optional<double> sites,
                     const std::string& mode, double tolerance, double max_iterations, double t_end, double samples,
                     const py::object& progress) {
   DarkConfig c = chain_config(DarkStep::evolve, p, omega_b, branch, center, sites, mode, tolerance, max_iterations);

@@ -18,13 +18,13 @@ Index integer_keyword(double value, const std::string& keyword, std::int64_t lea
 }
 
 DarkConfig dark_config(DarkStep step, double omega_b, const std::optional<std::string>& branch, const std::string& center,
-                       double sites, const std::string& mode, double tolerance, double max_iterations) {
+                       std::optional<double> sites, const std::string& mode, double tolerance, double max_iterations) {
   DarkConfig c;
   c.step = step;
   c.omega_b = omega_b;
   c.branch = branch.value_or("");
   c.center = center;
-  c.sites = integer_keyword(sites, "sites", config::dark_sites.least, config::dark_sites.most);
+  if (sites) c.sites = integer_keyword(*sites, "sites", config::dark_sites.least, config::dark_sites.most);
   c.mode = mode;
   c.tolerance = tolerance;
   c.max_iterations = integer_keyword(max_iterations, "max_iterations", 1, config::int32_most);

@@ -13,7 +13,7 @@ namespace lrchain::python {
 // The options every lrchain.dark call takes; an integer keyword given as a float (sites=101.0,
 // samples=1e4) is accepted when integral and refused otherwise (InvalidParameter naming it).
 jobs::dark::DarkConfig dark_config(jobs::dark::DarkStep step, double omega_b, const std::optional<std::string>& branch,
-                                   const std::string& center, double sites, const std::string& mode, double tolerance,
+                                   const std::string& center, std::optional<double> sites, const std::string& mode, double tolerance,
                                    double max_iterations);
 // The keywords of continue_branch (omega_max None: the band edge) and of evolve, into `c`.
 void set_branch_keywords(jobs::dark::DarkConfig& c, double points, double ds, double omega_min,

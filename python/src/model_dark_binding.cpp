@@ -20,7 +20,7 @@ using namespace lrchain::jobs::dark;
 
 // The options of a model's job; the model's lattice kernels are loaded here (with the GIL held).
 DarkConfig model_config(DarkStep step, const LoadedModel& loaded, double omega_b, const std::optional<std::string>& branch,
-                        const std::string& center, double sites, const std::string& mode, double tolerance,
+                        const std::string& center, std::optional<double> sites, const std::string& mode, double tolerance,
                         double max_iterations) {
   DarkConfig c = dark_config(step, omega_b, branch, center, sites, mode, tolerance, max_iterations);
   c.model = &loaded.model;
@@ -41,8 +41,9 @@ py::array_t<double> by_field(const std::vector<const Eigen::VectorXd*>& rows, In
 // What every model job reports: the edge, the seed's coefficients, the lattice variables.
 py::dict edge_dict(const LoadedModel& loaded, const DarkResult& r) {
   const DarkEdge& e = r.edge;
-  py::array_t<double> n(r.config.sites);
-  for (Index i = 0; i < r.config.sites; ++i) n.mutable_at(i) = i - (r.config.sites - 1) / 2;
+  const Index sites = dark_sites(r.config);
+  py::array_t<double> n(sites);
+  for (Index i = 0; i < sites; ++i) n.mutable_at(i) = i - (sites - 1) / 2;
   py::dict d;
   d["model"] = py::module_::import("json").attr("loads")(model_summary_json(loaded).dump());
   d["branch"] = e.branch;
@@ -73,13 +74,13 @@ py::object count_or_none(const std::optional<Index>& count) {
 }
 
 py::dict model_dark_solve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
-                   double sites, const std::string& mode, double tolerance, double max_iterations, bool floquet) {
+                   std::optional<double> sites, const std::string& mode, double tolerance, double max_iterations, bool floquet) {
   const DarkConfig c = model_config(floquet ? DarkStep::floquet : DarkStep::solve, loaded, omega_b, branch, center,
                                     sites, mode, tolerance, max_iterations);
   const DarkResult r = run_dark_job(c);
   py::dict d = edge_dict(loaded, r);
-  d["z"] = by_field({&r.z0}, r.edge.fields, c.sites, true);
-  d["seed"] = by_field({&r.seed}, r.edge.fields, c.sites, true);
+  d["z"] = by_field({&r.z0}, r.edge.fields, dark_sites(r.config), true);
+  d["seed"] = by_field({&r.seed}, r.edge.fields, dark_sites(r.config), true);
   d["newton_residuals"] = residuals(r.newton);
   d["measures"] = model_measures(r.edge, r.measures);
   d["floquet"] = floquet ? py::object(floquet_dict(*r.floquet)) : py::object(py::none());
@@ -90,7 +91,7 @@ py::dict model_dark_solve_job(const LoadedModel& loaded, double omega_b, std::op
 // Solve, then continue away from the edge as `lrchain dark continue --model` does: into the gap
 // (omega_b falling) below an edge, rising above one (h > 0), within [omega_min, omega_max].
 py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch,
-                      const std::string& center, double sites, const std::string& mode, double tolerance,
+                      const std::string& center, std::optional<double> sites, const std::string& mode, double tolerance,
                       double max_iterations, double points, double ds, double omega_min, std::optional<double> omega_max,
                       bool floquet, const py::object& progress) {
   DarkConfig c = model_config(DarkStep::branch, loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations);
@@ -107,14 +108,14 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
     rows.push_back(&b.z0);
     contact_rows.append(count_or_none(b.contact_changes_per_period));
   }
-  d["z"] = by_field(rows, e.fields, c.sites, false);
+  d["z"] = by_field(rows, e.fields, dark_sites(r.config), false);
   d["contact_changes_per_period"] = contact_rows;
   return d;
 }
 
 // Solve, then integrate from Z(0) over floor(t_end / T_b) periods (`lrchain dark evolve --model`).
 py::dict evolve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
-                    double sites, const std::string& mode, double tolerance, double max_iterations, double t_end,
+                    std::optional<double> sites, const std::string& mode, double tolerance, double max_iterations, double t_end,
                     double samples, const py::object& progress) {
   DarkConfig c = model_config(DarkStep::evolve, loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations);
   set_evolve_keywords(c, t_end, samples);
@@ -123,7 +124,7 @@ py::dict evolve_job(const LoadedModel& loaded, double omega_b, std::optional<std
   for (const auto& z : r.evolution.snapshots) rows.push_back(&z);
   py::dict d = edge_dict(loaded, r);
   for (const auto& [key, value] : evolution_series(r.evolution)) d[key] = value;
-  d["z"] = by_field(rows, r.edge.fields, c.sites, false);
+  d["z"] = by_field(rows, r.edge.fields, dark_sites(r.config), false);
   return d;
 }
 

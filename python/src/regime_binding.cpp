@@ -9,6 +9,7 @@
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/dispersion.hpp"
 #include "lrchain/jobs/regime_job.hpp"
+#include "lrchain/model_json.hpp"
 #include "lrchain/regime/frequency_band.hpp"
 
 namespace py = pybind11;
@@ -62,6 +63,7 @@ py::dict structure(const py::handle& lattice, const std::string& branch, int sam
   }
   py::dict d;
   d["branch"] = r.branch;
+  d["model"] = r.model.dump();
   d["lo"] = lo;
   d["hi"] = hi;
   d["lo_cause"] = lo_cause;
@@ -100,6 +102,8 @@ py::dict map(const py::handle& lattice, const std::string& plane, const std::str
   py::dict d;
   d["branch"] = panel.branch;
   d["axis"] = r.axis;
+  d["plane"] = r.plane;
+  d["model"] = r.model.dump();
   d["x"] = axis_values(panel.x);
   d["y"] = axis_values(panel.y);
   d["values"] = values;
@@ -175,6 +179,18 @@ py::dict job_defaults() {
   return d;
 }
 
+// The model object of every result's provenance (lrchain/model_json.hpp) of a Params (the resonant
+// chain) or an lrchain.Model, as JSON text.
+// The parameter boundary_curves uses when none is named (jobs::default_axis).
+std::string lattice_default_axis(const py::handle& lattice) { return jobs::default_axis(lattice_of(lattice)); }
+
+std::string lattice_model_json(const py::handle& lattice) {
+  const jobs::RegimeLattice l = lattice_of(lattice);
+  if (l.model) return model_json(*l.model).dump();
+  validate(l.params);
+  return model_json(resonant_chain_model(l.params)).dump();
+}
+
 py::tuple band(const Params& p, const std::string& branch) {
   validate(p);
   const FrequencyBand f = frequency_band(p, parse_branch(branch));
@@ -195,6 +211,8 @@ void register_regime(py::module_& m) {
   m.def("regime_map_defaults", &map_defaults, py::arg("params"), py::arg("branch"));
   m.def("regime_job_defaults", &job_defaults);
   m.def("frequency_band", &band, py::arg("params"), py::arg("branch"));
+  m.def("lattice_model_json", &lattice_model_json, py::arg("lattice"));
+  m.def("lattice_default_axis", &lattice_default_axis, py::arg("lattice"));
 }
 
 }  // namespace lrchain::python

@@ -12,7 +12,7 @@ namespace lrchain::sim {
 namespace {
 // InvalidParameter("sites") stating what `range` allows and the value given (`got`).
 [[noreturn]] void refuse_sites(StrainSiteRange range, const std::string& got) {
-  throw InvalidParameter("sites", fmt::format("must be an odd integer in [{}, {}]: the strain sites are n = -N..N, "
+  throw InvalidParameter("sites", fmt::format("must be an odd integer in [{}, {}]: the sites are n = -N..N, "
                                               "2N + 1 of them (got {})", range.least, range.most, got));
 }
 }  // namespace

@@ -78,9 +78,10 @@ def test_cli_help_is_the_schema_help(step):
 
 
 def test_help_text_says_default_and_range():
-    """help = doc [range; default D] with D the DarkConfig default (101 sites, from dark_job.hpp)."""
+    """help = doc [range; default D]: sites has no single default (None), its help says the two
+    default_dark_sites gives (dark_job.hpp): 101 at a theta = pi edge, 100 at theta = 0."""
     sites = next(o for o in OPTIONS if o["key"] == "sites")
-    assert sites["default"] == 101
-    assert sites["help"] == sites["doc"] + " [" + sites["range"] + "; default 101]"
+    assert sites["default"] is None
+    assert sites["help"] == sites["doc"] + " [" + sites["range"] + "; default 101 at a theta = pi edge, 100 at theta = 0]"
     omega_b = next(o for o in OPTIONS if o["key"] == "omega_b")
     assert omega_b["required"] and omega_b["help"].endswith("; required]")

@@ -154,9 +154,10 @@ def test_model_bright_defaults_are_the_bright_defaults():
 
 
 def test_help_form():
-    """The two forms of a help text: "doc [range; default D]" (dark: DarkConfig's 101 sites) and a job's own
-    form with the range and default filled in (drive: DriveRunConfig's t_end 2400, sim/drive_run.hpp)."""
+    """The two forms of a help text: "doc [range; default D]" (dark: the sites default_dark_sites gives,
+    dark_job.hpp) and a job's own form with the range and default filled in (drive: DriveRunConfig's
+    t_end 2400, sim/drive_run.hpp)."""
     sites = next(o for o in _lrchain.job_options("dark") if o["key"] == "sites")
-    assert sites["help"] == sites["doc"] + " [" + sites["range"] + "; default 101]"
+    assert sites["help"] == sites["doc"] + " [" + sites["range"] + "; default 101 at a theta = pi edge, 100 at theta = 0]"
     t_end = next(o for o in _lrchain.job_options("drive") if o["key"] == "t_end")
     assert t_end["help"] == "final time (default 2400)" and t_end["default"] == 2400

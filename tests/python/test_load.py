@@ -41,6 +41,19 @@ def _runs():
                                                                   ds=0.02, floquet=True, progress=False),
         "model_dark_evolution": lambda: lrchain.dark.evolve(model=kg(), omega_b=1.17, sites=21,
                                                             t_end=2 * 2 * math.pi / 1.17),
+        # theta of any shape; a scalar theta; a model without mean flow (lambda NaN) at a resonance-free edge
+        "coefficients": lambda: lrchain.coefficients(P, "optical", np.linspace(0.1, 3.1, 12).reshape(3, 4)),
+        "coefficients_scalar": lambda: lrchain.coefficients(P, "acoustic", 1.0),
+        "coefficients_model": lambda: lrchain.coefficients(lrchain.load_model("klein_gordon"), "branch0",
+                                                           np.linspace(-3, 3, 5)),
+        "intervals": lambda: lrchain.regime.intervals(P, "acoustic"),
+        "intervals_model": lambda: lrchain.regime.intervals(fput(), "acoustic"),
+        "regime_map": lambda: lrchain.regime.theta_rho_map(P, "optical", rho=(0.1, 5, 20), theta=(0.1, 3, 15)),
+        "boundary_curve": lambda: lrchain.regime.boundary_curves(P, "optical", lo=0.1, hi=2)[0],
+        "bright_floquet": lambda: lrchain.bright.floquet(lrchain.load_model("fput", a=0), omega_b=2.2, center="bond",
+                                                         sites=41),
+        "bright_branch": lambda: lrchain.bright.continue_branch(lrchain.load_model("klein_gordon"), omega_b=1.19,
+                                                                sites=81, points=3),
     }
 
 
@@ -49,7 +62,10 @@ def _assert_equal(a, b, where):
     if dataclasses.is_dataclass(a) and not isinstance(a, type):
         assert type(a) is type(b), where
         for f in dataclasses.fields(a):
-            if f.name != "summary":  # the summary tree drops nulls and reads booleans as 0/1: compared by file
+            if f.name == "source":  # Coefficients: the Params/Model evaluated, or the model read from the file
+                _assert_equal(a.model, b.model, f"{where}.model")
+            elif f.name != "summary" or type(a).__name__ == "BrightBreather":  # a bright breather's summary is
+                # exact JSON text in its file; the others' summary tree drops nulls, reads booleans as 0/1: by file
                 _assert_equal(getattr(a, f.name), getattr(b, f.name), f"{where}.{f.name}")
     elif isinstance(a, dict):
         assert list(a) == list(b) if where.endswith("measures") else sorted(a) == sorted(b), where
@@ -82,7 +98,8 @@ def test_every_result_class_round_trips(tmp_path):
         classes.add(type(r).__name__)
     # every class lrchain.load reads is covered (the writers' lrchain_result names)
     assert classes == {"BrightResult", "DriveResult", "ModulatedResult", "ModelBrightResult", "RingResult",
-                       "DarkSolution", "Branch", "Evolution", "ModelDarkSolution", "ModelBranch", "ModelEvolution"}
+                       "DarkSolution", "Branch", "Evolution", "ModelDarkSolution", "ModelBranch", "ModelEvolution",
+                       "Coefficients", "Intervals", "RegimeMap", "BoundaryCurve", "BrightBreather", "BrightBranch"}
 
 
 def test_cli_out_folder_summary_and_sweep(tmp_path, cli, source_dir):

@@ -2,9 +2,7 @@
 python3-nbclient and python3-ipykernel), each within its time limit, and are kept without outputs."""
 
 import importlib.util
-import os
 import time
-from pathlib import Path
 
 import pytest
 
@@ -15,7 +13,9 @@ if importlib.util.find_spec("ipykernel") is None:  # not imported here: lrchain 
 pytest.importorskip("xarray")
 pytest.importorskip("matplotlib")
 
-NOTEBOOKS = sorted((Path(os.environ["LRCHAIN_SOURCE_DIR"]) / "examples" / "notebooks").glob("*.ipynb"))
+from conftest import SOURCE_DIR, _cli_path  # noqa: E402  (ctest's LRCHAIN_SOURCE_DIR, or this checkout by hand)
+
+NOTEBOOKS = sorted((SOURCE_DIR / "examples" / "notebooks").glob("*.ipynb"))
 
 
 def test_there_are_three_notebooks():
@@ -33,6 +33,7 @@ def test_notebook_is_stripped(path):
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_notebook_runs(path, tmp_path, monkeypatch):
     monkeypatch.setenv("MPLBACKEND", "Agg")
+    monkeypatch.setenv("LRCHAIN_CLI", str(_cli_path()))  # notebook 3 runs the command-line tool
     monkeypatch.setenv("PYDEVD_DISABLE_FILE_VALIDATION", "1")
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))  # a model file compiled afresh, into a cache of its own
     nb = nbformat.read(path, as_version=4)

@@ -19,9 +19,10 @@ from pathlib import Path
 import pytest
 
 import lrchain
+from conftest import SOURCE_DIR, _cli_path
 
 BUILD = Path(lrchain.__file__).resolve().parents[2]
-SOURCE = Path(os.environ["LRCHAIN_SOURCE_DIR"])
+SOURCE = SOURCE_DIR  # ctest's LRCHAIN_SOURCE_DIR, or this checkout by hand
 
 # A model file written for this test: a Fermi-Pasta-Ulam-Tsingou chain with cubic and quartic terms.
 MODEL = textwrap.dedent("""\
@@ -77,7 +78,7 @@ def probe(python, workdir, env):
 def check_probe(result, venv_dir):
     assert Path(result["file"]).resolve().is_relative_to(venv_dir.resolve())
     assert result["version"] == lrchain.__version__
-    cli = subprocess.run([os.environ["LRCHAIN_CLI"], "--version"], capture_output=True, text=True, check=True)
+    cli = subprocess.run([str(_cli_path()), "--version"], capture_output=True, text=True, check=True)
     assert result["version_line"] == cli.stdout.strip()
     # The same compiled code as the build tree's module: bit-equal omega.
     assert result["omega"] == lrchain.coefficients(lrchain.Params(rho=1 / 3), "optical", 1.5707963267948966).omega

@@ -137,13 +137,13 @@ TEST_CASE("list and integer options take every number syntax, and an overflow gu
   CHECK(list.exit_code == 0);
   CHECK(list.out.find("coefficients") != std::string::npos);
   check_refused("simulate bright --branch optical --theta pi/2 --sites 1001.5",
-                "lrchain: invalid sites: must be an odd integer: the strain sites are n = -N..N, 2N + 1 of them");
+                "lrchain: invalid sites: must be an odd integer: the sites are n = -N..N, 2N + 1 of them");
   // The range that applies: the resonant chain's [5, ...], a model file's [21, ...].
   check_refused("simulate bright --branch optical --theta pi/2 --sites 3",
-                "lrchain: invalid sites: must be an odd integer in [5, 2000000000000001]: the strain sites are n = -N..N, "
+                "lrchain: invalid sites: must be an odd integer in [5, 2000000000000001]: the sites are n = -N..N, "
                 "2N + 1 of them (got 3)");
   check_refused("simulate bright --model fput --branch acoustic --theta pi/2 --sites 22",
-                "lrchain: invalid sites: must be an odd integer in [21, 100000001]: the strain sites are n = -N..N, "
+                "lrchain: invalid sites: must be an odd integer in [21, 100000001]: the sites are n = -N..N, "
                 "2N + 1 of them (got 22)");
   check_refused("dark solve --omega-b 2.42 --sites 8.5", "lrchain: invalid sites: must be an integer >= 9");
   check_refused("reproduce --jobs 65", "lrchain: invalid jobs: must be an integer in [0, 64]");

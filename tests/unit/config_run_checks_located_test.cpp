@@ -97,7 +97,7 @@ TEST_CASE("config run checks: the run's checks of sites and switch_off_time name
   ConfigError e = located_error(bright_config.substr(0, bright_config.find("sites")) + "sites = 1000\ntheta = 1\n",
                                 "cfg/sites.toml");
   CHECK(std::string(e.what()) == "invalid value for 'sites' in [bright] at cfg/sites.toml:5: must be an odd integer in "
-                                 "[5, 2000000000000001]: the strain sites are n = -N..N, 2N + 1 of them (got 1000)");
+                                 "[5, 2000000000000001]: the sites are n = -N..N, 2N + 1 of them (got 1000)");
   CHECK(e.key() == "sites");
   // A switch-off time no continuation of the run can reach (sampling_checks.cpp).
   e = located_error(drive_config + "switch_off_time = 1e12\n", "cfg/t.toml");

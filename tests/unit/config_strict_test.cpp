@@ -149,7 +149,7 @@ TEST_CASE("config: [bright] sites is the odd number of strain sites 2N + 1, refu
         "invalid value for 'sites' in [bright] at a.toml:8: expected an integer in [5, 2000000000000001]; got 3");
   CHECK(load_error(bright_head + "[bright]\ntheta = 1\nsites = 1000\n", "a.toml") ==
         "invalid value for 'sites' in [bright] at a.toml:8: must be an odd integer in [5, 2000000000000001]: the "
-        "strain sites are n = -N..N, 2N + 1 of them (got 1000)");
+        "sites are n = -N..N, 2N + 1 of them (got 1000)");
   // sites = 2N + 1: 1001 sites are n = -500..500, however the integer is written.
   const auto half_width = [](const std::string& line) {
     return lrchain::jobs::load_experiment_config(

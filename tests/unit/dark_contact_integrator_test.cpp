@@ -3,9 +3,11 @@
 // steps and the same end state whatever the integrator did before (reproducible Newton residuals).
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/errors.hpp"
 #include "lrchain/sim/dark/contact_integrator.hpp"
 #include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 #include "lrchain/sim/dark/strain_variational.hpp"
@@ -46,4 +48,38 @@ TEST_CASE("contact integrator: a fresh start does not inherit the previous call'
 
   CHECK(used.stats().steps - steps_before == fresh_steps);  // the same step sequence ...
   CHECK(again == once);                                     // ... so bit-identical end states
+}
+
+namespace {
+// x'' = -w^2 x, no contacts: w = 1e4 needs ~ 1e4 steps per time unit at the default 1e-13 tolerance
+// (RKF78 at that tolerance takes several steps per radian).
+struct StiffOscillator final : ContactSystem {
+  double w = 1e4;
+  Index dimension() const override { return 2; }
+  Index stiffness_count() const override { return 0; }
+  void rhs(const double* s, double* ds, double*) const override {
+    ds[0] = s[1];
+    ds[1] = -w * w * s[0];
+  }
+  Index contact_count() const override { return 0; }
+  void contacts(const double*, double*, double*) const override {}
+};
+}  // namespace
+
+TEST_CASE("contact integrator: more steps than max_steps_per_time allows is a NumericalFailure, the record bounded") {
+  const StiffOscillator oscillator;
+  ContactIntegrationOptions capped;
+  capped.max_steps_per_time = 100;  // at most 1000 + 100 steps over one time unit
+  ContactIntegrator integrator(oscillator, capped);
+  std::vector<double> state = {1.0, 0.0};
+  OrbitRecord record;
+  CHECK_THROWS_AS(integrator.integrate(state, 0.0, 1.0, &record), NumericalFailure);
+  CHECK(record.steps() <= 1100);
+  // The same orbit with the default cap (1000 + 1e5 steps) runs: its period is 2 pi/w, and after
+  // one time unit x = cos(w) (the exact solution) to the integration's accuracy.
+  ContactIntegrator uncapped(oscillator);
+  std::vector<double> exact = {1.0, 0.0};
+  uncapped.integrate(exact, 0.0, 1.0);
+  CHECK(uncapped.stats().steps > 1100);
+  CHECK(exact[0] == doctest::Approx(std::cos(1e4)).epsilon(1e-6));
 }

@@ -150,3 +150,25 @@ TEST_CASE("dark job: write lists the files of an earlier run it did not rewrite 
   CHECK(header == "n,x0,y0,x_seed,y_seed,x_T,y_T");
   fs::remove_all(out);
 }
+
+TEST_CASE("dark job: without sites, 101 at a theta = pi edge and 100 at a theta = 0 edge" * doctest::test_suite("fast")) {
+  DarkConfig chain_default;
+  chain_default.omega_b = 2.42;
+  CHECK(dark_sites(chain_default) == 101);  // the resonant chain's optical edge is at theta = pi
+  // klein_gordon at its defaults: its first defocusing edge is at theta = 0 (`dark solve --model
+  // klein_gordon --omega-b 1.1` reports theta 0), so the pair of breathers needs an even ring; with
+  // b = -1/2 it is the theta = pi edge (docs/dark-models.md), an odd one.
+  const Model defaults = shipped_model("klein_gordon");
+  DarkConfig at_zero;
+  at_zero.model = &defaults;
+  at_zero.kernels = sim::shipped_lattice_kernels("klein_gordon");
+  at_zero.omega_b = 1.1;
+  CHECK(dark_sites(at_zero) == 100);
+  CHECK(refused_key(at_zero) == "");
+  at_zero.sites = 101;
+  CHECK(refused_key(at_zero) == "sites");
+  KleinGordon pi_edge;
+  DarkConfig at_pi = pi_edge.config(DarkStep::solve, 1.17);
+  at_pi.sites.reset();
+  CHECK(dark_sites(at_pi) == 101);
+}

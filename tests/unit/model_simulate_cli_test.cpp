@@ -131,7 +131,7 @@ TEST_CASE("model simulate: a model config's [bright] sites is the odd count 2N +
   CHECK(load("sites = 21\n").bright.N == 10);  // n = -10..10
   CHECK(load("").bright.N == lrchain::sim::ModelBrightConfig{}.N);
   CHECK(error("sites = 100\n") ==
-        "invalid value for 'sites' in [bright] at m.toml:6: must be an odd integer in [21, 100000001]: the strain "
+        "invalid value for 'sites' in [bright] at m.toml:6: must be an odd integer in [21, 100000001]: the "
         "sites are n = -N..N, 2N + 1 of them (got 100)");
   CHECK(error("sites = 19\n") == "invalid value for 'sites' in [bright] at m.toml:6: expected an integer in [21, "
                                   "100000001]; got 19");

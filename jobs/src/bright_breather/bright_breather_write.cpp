@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "../dark/dark_steps.hpp"
+#include "lrchain/jobs/bright_breather_hdf5.hpp"
 #include "lrchain/jobs/bright_breather_job.hpp"
 #include "lrchain/sim/gnuplot_text.hpp"
 #include "lrchain/sim/output_files.hpp"
@@ -76,6 +77,7 @@ json write(const BrightBreatherResult& r, const std::filesystem::path& out) {
   write_profile(r, dir, figures);
   if (r.config.step == BrightStep::branch) write_branch(r, dir);
   if (r.floquet) dark::write_multipliers(dir, "multipliers", r.floquet->multipliers, r.config.omega_b, figures);
+  if (r.config.format == "hdf5") write_bright_breather_hdf5(out / "result.h5", bright_breather_record(r));
   figures.finish(j);
   sim::write_file_atomic(dir, "summary.json", j.dump(2) + "\n");
   sim::record_stale_files(out, earlier, j);

@@ -30,6 +30,9 @@ std::vector<JobOption> make_options() {
        "text, or one JSON object on one line: theta, branch, the coefficients (singular ones as null), the model with "
        "its parameter values, provenance; with the table every branch's rows",
        std::string(coeffs_help) + " (--json: JSON)"},
+      {"out", "--out", "", {}, none, false, "a directory (created)",
+       "also write the coefficients as HDF5 in this directory: result.h5, with --table result_<branch>.h5 "
+       "(lrchain.load reads them)", coeffs_help, "none: only stdout"},
   };
 }
 

@@ -43,13 +43,13 @@ json base_json(const DarkResult& r) {
   for (const auto& record : r.newton.history) residuals.push_back(record.residual);
   if (!r.model_file())
     return {{"model", model_json(resonant_chain_model(c.params))},
-            {"branch", r.edge.branch}, {"center", c.center}, {"sites", c.sites}, {"mode", c.mode},
+            {"branch", r.edge.branch}, {"center", c.center}, {"sites", dark_sites(c)}, {"mode", c.mode},
             {"omega_b", c.omega_b}, {"omega_edge", r.edge.omega},
             {"newton_converged", r.newton.converged}, {"newton_residuals", residuals}, {"failure", nullptr},
             {"provenance", provenance_json()}};
   const DarkEdge& e = r.edge;
   return {{"model", model_json(*c.model)}, {"branch", e.branch},
-          {"theta", e.theta}, {"center", c.center}, {"sites", c.sites}, {"mode", c.mode},
+          {"theta", e.theta}, {"center", c.center}, {"sites", dark_sites(c)}, {"mode", c.mode},
           {"omega_b", c.omega_b}, {"omega_edge", e.omega}, {"curvature", e.curvature},
           {"h_tilde", e.h_tilde}, {"lambda", e.mean_flow ? json(e.lambda) : json(nullptr)},
           {"lattice_form", e.mean_flow ? "strain" : "displacement"}, {"variables", e.variable_meanings},

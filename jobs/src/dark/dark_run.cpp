@@ -39,8 +39,8 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   r.edge.theta = std::numbers::pi;
   r.edge.omega = ansatz.omega;
   r.edge.variables = {"x", "y"};
-  const ResonantChainShooting shooting(c.params, c.sites, center, parse_shooting_mode(c.mode), integration);
-  r.seed = resonant_chain_dark_seed(ansatz, center, c.sites);
+  const ResonantChainShooting shooting(c.params, *c.sites, center, parse_shooting_mode(c.mode), integration);
+  r.seed = resonant_chain_dark_seed(ansatz, center, *c.sites);
   r.newton = newton_solve(shooting, shooting.unknowns_from_z(r.seed), c.omega_b, newton_options(c, hooks));
   if (!r.newton.converged) return;
   r.z0 = shooting.z_from_unknowns(r.newton.q);
@@ -62,7 +62,7 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
     Eigen::VectorXd residual;
     Eigen::MatrixXd jacobian, propagator;
     if (c.full_monodromy || shooting.mode() == ShootingMode::full) {
-      const ResonantChainShooting full(c.params, c.sites, center, ShootingMode::full, shooting.integration());
+      const ResonantChainShooting full(c.params, *c.sites, center, ShootingMode::full, shooting.integration());
       full.evaluate(full.unknowns_from_z(r.z0), c.omega_b, residual, &jacobian, &propagator);
       r.floquet = floquet_from_monodromy(propagator);
       r.monodromy = "full period";
@@ -87,13 +87,13 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
             ansatz.curvature, ansatz.h_tilde, ansatz.lambda, ansatz.mean_flow, c.kernels->fields, {}, {}, {}};
   lattice_variable_names(r.edge.mean_flow, r.edge.fields, r.edge.variables, r.edge.variable_meanings);
   for (const auto& bond : contacts) r.edge.one_sided_contacts.push_back(bond.name);
-  const DarkShooting shooting(*c.kernels, sim::lattice_parameters(model), c.sites, ansatz.mean_flow,
+  const DarkShooting shooting(*c.kernels, sim::lattice_parameters(model), *c.sites, ansatz.mean_flow,
                                    parse_shooting_mode(c.mode), integration, contacts);
-  r.seed = dark_seed(ansatz, parse_dark_center(c.center), c.sites);
+  r.seed = dark_seed(ansatz, parse_dark_center(c.center), *c.sites);
   r.newton = newton_solve(shooting, r.seed, c.omega_b, newton_options(c, hooks));
   if (!r.newton.converged) return;
   // A zero of the shooting map is any periodic orbit: keep it only if it is a dark breather.
-  if (const std::string shape = dark_shape_failure(ansatz, parse_dark_center(c.center), c.sites, r.newton.q);
+  if (const std::string shape = dark_shape_failure(ansatz, parse_dark_center(c.center), *c.sites, r.newton.q);
       !shape.empty()) {
     r.newton.converged = false;
     r.newton.failure = "it converged to a state that is not a dark breather (" + shape + ")";
@@ -106,7 +106,7 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   }
   r.contact_changes_per_period = shooting.contact_changes_per_period(r.z0, c.omega_b);
   if (c.step == DarkStep::evolve) {
-    r.evolution = evolve_dark_orbit(shooting.advance(), r.z0, c.sites, c.omega_b, c.t_end, c.samples, hooks.stop,
+    r.evolution = evolve_dark_orbit(shooting.advance(), r.z0, *c.sites, c.omega_b, c.t_end, c.samples, hooks.stop,
                                     hooks.evolution_progress);
     return;
   }
@@ -143,9 +143,11 @@ void continue_from(const DarkShootingProblem& shooting, const Eigen::VectorXd& q
   r.branch = continue_branch(shooting, q0, c.omega_b, o, hooks.on_point);
 }
 
-DarkResult run(const DarkConfig& c, const DarkRunHooks& hooks) {
+DarkResult run(const DarkConfig& config, const DarkRunHooks& hooks) {
   DarkResult r;
-  r.config = c;
+  r.config = config;
+  r.config.sites = dark_sites(config);  // the result says how many
+  const DarkConfig& c = r.config;
   ContactIntegrationOptions integration;
   // A branch keeps its points when a signal ends it inside an integration (continue_branch).
   if (hooks.stop_integrations || c.step == DarkStep::branch) integration.stop = hooks.stop;

@@ -31,8 +31,11 @@ std::vector<DarkOption> make_options() {
        "branch whose band edge the breather bifurcates from (none: optical, or with a model file the first "
        "whose theta = pi edge is defocusing)"},
       {"center", "--center", "center", all_steps, d.center, false, "bond|site", "family: bond (n0 = 1/2) or site (n0 = 0)"},
-      {"sites", "--sites", "sites", all_steps, d.sites, false, integer_range(config::dark_sites, "odd"),
-       "lattice sites per field (periodic ends; even at a model's theta = 0 edge)"},
+      {"sites", "--sites", "sites", all_steps, none, false,
+       integer_range(config::dark_sites, "odd") + " (even at a model's theta = 0 edge)",
+       "lattice sites per field (periodic ends)", "",
+       fmt::format("{} at a theta = pi edge, {} at theta = 0", default_dark_sites(std::numbers::pi),
+                   default_dark_sites(0))},
       {"mode", "--mode", "mode", all_steps, d.mode, false, "reversible|full",
        "shooting over a half/quarter period (reversible) or the whole period (full, a check)"},
       {"tolerance", "", "tolerance", all_steps, d.tolerance, false, "(0, 1)",

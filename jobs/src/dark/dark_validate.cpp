@@ -31,7 +31,7 @@ void validate_chain(const DarkConfig& c) {
   });
   parse_dark_center(c.center);
   parse_shooting_mode(c.mode);
-  if (c.sites < 9 || c.sites % 2 == 0)
+  if (dark_sites(c) % 2 == 0)
     throw InvalidParameter("sites", "must be an odd integer >= 9 (a staggered dark breather fits "
                                     "periodic ends only on an odd number of sites)");
   if (c.step == DarkStep::branch) {
@@ -55,7 +55,7 @@ sim::ResourceEstimate chain_estimate(const DarkConfig& c, double periods) {
   const double shooting_time = mode == ShootingMode::full || c.step == DarkStep::floquet
                                    ? period : (center == DarkCenter::site ? period / 2 : period / 4);
   const bool floquet = c.step == DarkStep::floquet || (c.step == DarkStep::branch && c.branch_floquet);
-  return sim::estimate_dark_breather(c.sites, floquet, shooting_time, periods);
+  return sim::estimate_dark_breather(dark_sites(c), floquet, shooting_time, periods);
 }
 
 // A model file: its defocusing edge (or the branch given), omega_b on its gap side, sites, window.
@@ -70,7 +70,7 @@ void validate_model(const DarkConfig& c) {
   const std::optional<Index> given = c.branch.empty() ? std::nullopt : std::optional(model.branch(c.branch));
   const DarkAnsatz ansatz = with_config_keys(
       [&] { return make_dark_ansatz(model, *c.kernels, defocusing_edge(model, given), c.omega_b); });
-  check_dark_sites(ansatz, c.sites);
+  check_dark_sites(ansatz, c.sites.value_or(default_dark_sites(ansatz.theta)));
   if (c.step == DarkStep::branch) {
     checked_finite(c.ds, "ds");
     if (!(c.ds > 0 && c.ds <= 1)) throw InvalidParameter("ds", "must be in (0, 1] (it adapts within [1e-5, 1])");
@@ -85,14 +85,21 @@ void validate_model(const DarkConfig& c) {
 
 // The same for a model: the estimate counts two fields per site, scaled to the model's fields.
 sim::ResourceEstimate model_estimate(const DarkConfig& c, double periods) {
-  const double sites = double(c.sites) * double(c.kernels->fields) / 2.0;
+  const double sites = double(dark_sites(c)) * double(c.kernels->fields) / 2.0;
   return sim::estimate_dark_breather(sites, true, 2 * std::numbers::pi / c.omega_b, periods);
 }
 
 }  // namespace
 
+Index dark_sites(const DarkConfig& c) {
+  if (c.sites) return *c.sites;
+  if (!c.model) return default_dark_sites(std::numbers::pi);
+  const std::optional<Index> given = c.branch.empty() ? std::nullopt : std::optional(c.model->branch(c.branch));
+  return default_dark_sites(defocusing_edge(*c.model, given).theta);
+}
+
 void validate(const DarkConfig& c) {
-  config::checked_option(double(c.sites), config::dark_sites, "sites");
+  if (c.sites) config::checked_option(double(*c.sites), config::dark_sites, "sites");
   if (!(c.tolerance > 0 && c.tolerance < 1)) throw InvalidParameter("tolerance", "must be in (0, 1)");
   if (c.max_iterations < 1) throw InvalidParameter("max_iterations", "must be an integer >= 1");
   if (c.format != "csv" && c.format != "hdf5") throw InvalidParameter("format", "must be csv or hdf5");

@@ -26,7 +26,7 @@ std::string lattice_label(const DarkResult& r) {
 // x_T, y_T); profile.gp draws them.
 void write_profile(const DarkResult& r, const std::string& dir, sim::Figures& figures) {
   const DarkConfig& c = r.config;
-  const Index N = c.sites;
+  const Index N = dark_sites(c);
   std::ostringstream os;
   if (!r.model_file()) {
     os << "n,x0,y0,x_seed,y_seed,x_T,y_T\n";
@@ -124,7 +124,7 @@ json write(const DarkResult& r, const std::filesystem::path& out) {
     if (c.format == "hdf5" && r.model_file())
       write_model_dark_branch_hdf5(out / "result.h5", model_dark_branch_record(r, j["model"]));
     else if (c.format == "hdf5")
-      write_dark_branch_hdf5(out / "result.h5", dark_branch_record(c.params, r.branch, c.sites, c.branch_floquet));
+      write_dark_branch_hdf5(out / "result.h5", dark_branch_record(c.params, r.branch, dark_sites(c), c.branch_floquet));
     figures.finish(j);
   } else if (c.step == DarkStep::evolve) {
     if (c.format == "hdf5" && r.model_file())

@@ -33,7 +33,7 @@ ModelDarkEdgeRecord model_dark_edge_record(const DarkResult& r, const json& mode
   edge.lattice_form = e.mean_flow ? "strain" : "displacement";
   edge.variables = e.variables;
   edge.one_sided_contacts = e.one_sided_contacts;
-  edge.sites = r.config.sites;
+  edge.sites = dark_sites(r.config);
   return edge;
 }
 
@@ -70,7 +70,7 @@ ModelDarkSolutionRecord model_dark_solution_record(const DarkResult& r, const js
 ModelDarkBranchRecord model_dark_branch_record(const DarkResult& r, const json& model) {
   ModelDarkBranchRecord b;
   b.edge = model_dark_edge_record(r, model);
-  b.points = sim::dark::dark_branch_record(Params{}, r.branch, r.config.sites, r.config.branch_floquet);
+  b.points = sim::dark::dark_branch_record(Params{}, r.branch, dark_sites(r.config), r.config.branch_floquet);
   for (const auto& p : r.branch.points) {
     b.z.insert(b.z.end(), p.z0.data(), p.z0.data() + p.z0.size());
     if (p.contact_changes_per_period) b.contact_changes_per_period.push_back(*p.contact_changes_per_period);

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "lrchain/dispersion.hpp"
+#include "lrchain/jobs/regime_hdf5.hpp"
 #include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/regime/regime_map.hpp"
 #include "lrchain/sim/figure_format.hpp"
@@ -299,6 +300,7 @@ RegimeMapFiles write(const RegimeMapResult& r, const fs::path& dir, sim::Figures
     write_theta_rho(r, dir, figures, out);
   else
     for (const RegimeMapPanel& panel : r.panels) write_delta0_omega(r, panel, dir, figures, out);
+  if (r.format == "hdf5") out.hdf5 = write_hdf5(r, dir);
   return out;
 }
 

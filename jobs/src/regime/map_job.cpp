@@ -227,6 +227,7 @@ void run_model(const RegimeMapConfig& c, const ModelAxisPlan& plan, RegimeMapRes
 
 void validate(const RegimeMapConfig& config, const fs::path& out_dir) {
   const RegimeMapConfig c = through_params(config);
+  if (c.format != "csv" && c.format != "hdf5") throw InvalidParameter("format", "must be csv or hdf5");
   if (c.lattice.model)
     validate_model(c, out_dir);
   else
@@ -241,6 +242,7 @@ RegimeMapResult run(const RegimeMapConfig& config) {
   r.delta0_log = c.delta0_log;
   r.curves = c.curves;
   r.figures = c.figures;
+  r.format = c.format;
   if (c.lattice.model) {
     const ModelAxisPlan plan = validate_model(c, {});
     r.resonant_chain = false;

@@ -87,6 +87,7 @@ json to_json(const RegimeMapResult& r, const RegimeMapFiles& files) {
     add_files(out, files, 0);
   }
   out["model"] = r.model;
+  if (!files.hdf5.empty()) out["hdf5_files"] = files.hdf5;
   return out;
 }
 

@@ -13,6 +13,18 @@ RegimeLattice resonant_chain_lattice(const Model& m) {
   return {Params{m.parameter("alpha"), m.parameter("delta0"), m.parameter("kappa"), m.parameter("rho")}, nullptr};
 }
 
+namespace {
+
+// rho for the resonant chain (null: through Params), else the model's first parameter.
+std::string default_axis_of(const Model* m) {
+  if (m == nullptr || m->name() == "resonant_chain") return "rho";
+  return m->definition().parameters.at(0).name;
+}
+
+}  // namespace
+
+std::string default_axis(const RegimeLattice& lattice) { return default_axis_of(lattice.model.get()); }
+
 }  // namespace lrchain::jobs
 
 namespace lrchain::jobs::regime_detail {
@@ -61,7 +73,7 @@ Range default_axis_range(const Model& m, const ParameterLine& line, Index branch
 ModelAxisPlan plan_model_axis(const Model& m, const std::string& axis, const std::string& branch,
                               const std::optional<Range>& axis_range) {
   ModelAxisPlan plan;
-  plan.axis = !axis.empty() ? axis : m.name() == "resonant_chain" ? "rho" : m.definition().parameters.at(0).name;
+  plan.axis = !axis.empty() ? axis : default_axis_of(&m);
   const ParameterLine line(m, plan.axis);
   if (branch == "both" || branch == "all") {
     for (auto b = static_cast<Index>(m.definition().branch_names.size()); b-- > 0;) plan.branches.push_back(b);

@@ -34,6 +34,9 @@ std::vector<JobOption> make_intervals() {
       {"samples", "--samples", "samples", {}, d.samples, false, integer_range(config::intervals_samples),
        "theta samples used to bracket the zeros", "{doc} (default {default})"},
       {"tolerance", "", "tolerance", {}, d.tolerance, false, "(0, 1e-2)", "accuracy of each interval end in theta"},
+      {"out", "--out", "", {}, nullptr, false, "a directory (created)",
+       "also write the intervals as HDF5 to result.h5 in this directory (lrchain.load reads it)",
+       "{doc} (default: {default})", "none: only the JSON on stdout"},
   };
 }
 
@@ -68,6 +71,9 @@ std::vector<JobOption> make_map() {
        "{doc}, default {default}"},
       {"curves", "--no-curves", "", {}, d.curves, false, "true|false", "trace the boundary curves",
        "skip tracing the boundary curves"},
+      {"format", "--format", "", {}, d.format, false, "csv|hdf5",
+       "data files in --out: csv (CSV, gnuplot scripts, figures) or hdf5 (also result.h5, or result_<branch>.h5 per "
+       "branch: the map, its axes and boundary curves; lrchain.load reads them)", "{doc} (default {default})"},
   };
 }
 

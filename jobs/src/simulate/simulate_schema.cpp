@@ -83,8 +83,8 @@ std::vector<JobOption> make_bright() {
   const sim::BrightRunConfig d;
   const auto sites = sim::strain_site_count(d.N);
   std::vector<JobOption> o{
-      {"branch", "--branch", "branch", {}, std::string(to_string(d.branch)), true,
-       "optical or acoustic (with --model: a branch of the model, by default its only one)",
+      {"branch", "--branch", "branch", {}, std::string(to_string(d.branch)), false,
+       "optical or acoustic, required (with --model: a branch of the model, by default its only one)",
        "dispersion branch of the carrier", "{range}"},
       {"theta", "--theta", "theta", {}, std::numbers::pi / 2, true, "in (0, pi]", "carrier wavenumber",
        "{doc} {range}, e.g. pi/2", "pi/2"},
@@ -93,7 +93,8 @@ std::vector<JobOption> make_bright() {
       both("sites", sites,
            fmt::format("odd, in [{}, {}] (with --model [{}, {}])", sim::bright_sites.least, sim::bright_sites.most,
                        sim::model_bright_sites.least, sim::model_bright_sites.most),
-           "odd number of strain sites 2N + 1, n = -N..N",
+           "odd number of lattice sites 2N + 1, n = -N..N (strains of the resonant chain and of translation-invariant "
+           "models, displacements of on-site models)",
            fmt::format("{{doc}} (default {{default}}, N = {}; with --model {} or more)", d.N,
                        sim::model_bright_sites.least)),
       both("periods", d.periods, "> 0", "run length in breather periods T_b"),

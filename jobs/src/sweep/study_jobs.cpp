@@ -113,7 +113,7 @@ void read_dark_options(const CheckedTable& d, jobs::dark::DarkConfig& c) {
   d.read("branch", c.branch);
   d.read("center", c.center);
   d.read("mode", c.mode);
-  d.read("sites", c.sites);
+  if (Index sites = 0; d.read("sites", sites)) c.sites = sites;
   d.read("points", c.points);
   d.read("ds", c.ds);
   d.read("omega_min", c.omega_min);
@@ -179,7 +179,7 @@ std::pair<jobs::dark::DarkConfig, DarkBreatherAnsatz> read_dark(const Document& 
   const auto key = [&](const char* k) { return dark_key(doc, k); };
   if (start.has_value() == edge_offset.has_value())
     throw InvalidParameter(key("omega_b"), "give exactly one of 'omega_b' and 'edge_offset'");
-  if (c.sites % 2 == 0)
+  if (c.sites && *c.sites % 2 == 0)
     throw InvalidParameter(key("sites"), "must be an odd integer >= 9 (a staggered dark breather fits periodic ends only on an odd number of sites)");
   const Branch edge = parse_branch(c.branch);
   const double edge_omega = dispersion_omega(c.params, edge, std::acos(-1.0));

@@ -1,6 +1,7 @@
 // lrchain._hdf5: lrchain's results to HDF5 through the C++ writers of the CLI's `--format hdf5` files
 // (sim/result_hdf5.hpp, sim/dark/dark_hdf5.hpp, jobs/simulate/model_run_hdf5.hpp,
-// jobs/model_dark_hdf5.hpp, jobs/dark_evolution_hdf5.hpp): each function rebuilds the writer's
+// jobs/model_dark_hdf5.hpp, jobs/dark_evolution_hdf5.hpp; coefficients, regime and bright breathers:
+// regime_bright_writers.cpp): each function rebuilds the writer's
 // record from a Python result's fields. A module of its own, imported by result.to_hdf5(): `import
 // lrchain` does not load libhdf5.
 #include <complex>
@@ -8,6 +9,7 @@
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include "arrays.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/dark_evolution_hdf5.hpp"
 #include "lrchain/jobs/model_dark_hdf5.hpp"
@@ -24,12 +26,6 @@ namespace lrchain::python {
 namespace {
 
 
-template <class T>
-std::vector<T> vector_of(const py::handle& a) {
-  const auto c = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
-  if (!c) throw py::type_error("to_hdf5: expected a numeric array");
-  return std::vector<T>(c.data(), c.data() + c.size());
-}
 
 // A series {column: array} of equal-length arrays as row-major columns.
 sim::TimeSeries series_of(const py::dict& series) {
@@ -303,5 +299,6 @@ PYBIND11_MODULE(_hdf5, m) {
         }
       },
       py::arg("path"), "Why `path` may not be written (lrchain::check_output_target, every writer's check), or ''.");
+  register_regime_and_bright_writers(m);
   m.attr("version") = LRCHAIN_VERSION_STRING;
 }

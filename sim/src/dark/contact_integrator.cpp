@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <boost/math/tools/roots.hpp>
+#include <fmt/format.h>
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 #include <cmath>
 #include <csignal>
@@ -189,6 +190,8 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
   double cap = continued ? cap_ : options_.max_step;
   double target = continued ? target_ : -1.0;
   double contact_step = continued ? contact_step_ : options_.contact_step;
+  const double step_cap = 1000.0 + options_.max_steps_per_time * (t1 - t0);
+  double accepted = 0;
   while (t < t1) {
     if (options_.stop && options_.stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
     const double remaining = t1 - t;
@@ -247,6 +250,10 @@ void ContactIntegrator::integrate(State& state, double t0, double t1, OrbitRecor
       }
     }
     const double next = step * std::min(4.0, 0.9 * std::pow(std::max(e, 1e-12), -1.0 / 8.0));
+    if (++accepted > step_cap)
+      throw NumericalFailure(fmt::format("dark-breather integration: more than {:.0f} steps over t = {:.6g} .. {:.6g} "
+                                         "(the orbit oscillates ever faster: a guess far outside the force's range)",
+                                         step_cap, t0, t1));
     state.swap(out_);
     ++stats_.steps;
     if (options_.locate_contacts && contacts > 0) {

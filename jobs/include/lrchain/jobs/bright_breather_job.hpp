@@ -57,6 +57,7 @@ struct BrightBreatherConfig {
   bool branch_floquet = true;      // Floquet multipliers at every branch point
   double max_memory = 0;           // bytes the job may use; 0: the machine's available memory
   std::string out;                 // output directory ("": no files)
+  std::string format = "csv";      // csv | hdf5: hdf5 also writes result.h5 in `out` (bright_breather_hdf5.hpp)
 };
 
 // Checks every option, the non-resonance of omega_b, its focusing edge, the memory the job needs and
@@ -116,7 +117,8 @@ std::optional<std::string> failure(const BrightBreatherResult& r);
 nlohmann::json to_json(const BrightBreatherResult& r);
 
 // Writes profile.csv (n, Z(0) and the seed per variable), multipliers.csv (floquet), branch.csv
-// (continue: omega_b, peak, norm, width, stability per point), their gnuplot figures and summary.json into `out`; returns to_json(r) with "figures" and "figures_skipped".
+// (continue: omega_b, peak, norm, width, stability per point), their gnuplot figures and summary.json into `out`
+// (format hdf5: also result.h5); returns to_json(r) with "figures" and "figures_skipped".
 nlohmann::json write(const BrightBreatherResult& r, const std::filesystem::path& out);
 
 }  // namespace lrchain::jobs::bright_breather

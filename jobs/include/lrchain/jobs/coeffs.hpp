@@ -28,6 +28,7 @@ struct CoeffsConfig {
   std::optional<double> theta;   // carrier wavenumber in (-pi, pi]; required for one wavenumber, not used with `table`
   bool table = false;            // every branch at theta = pi/8, pi/4, pi/2, 3pi/5, 3pi/4, pi instead
   CoeffsFormat format = CoeffsFormat::text;  // text, or one JSON object on one line
+  std::string out;               // directory for the HDF5 file(s) (coeffs_hdf5.hpp); "": none
 };
 
 // Every key of CoeffsConfig with its default, range and one line of documentation (option_schema.hpp):

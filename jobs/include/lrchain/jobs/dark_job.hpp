@@ -45,7 +45,9 @@ struct DarkConfig {
   std::string branch;  // optical|acoustic, or a model's branch; "": optical / the model's first defocusing edge
   std::string center = "bond";      // bond (n0 = 1/2) | site (n0 = 0)
   std::string mode = "reversible";  // shooting over a half/quarter period | full (the whole period, a check)
-  Index sites = 101;                // odd, >= 9: lattice sites per field (periodic ends)
+  // Lattice sites per field (periodic ends): odd at a theta = pi edge, even at theta = 0; none:
+  // 101 or 100 (default_dark_sites).
+  std::optional<Index> sites;
   double tolerance = 1e-11;         // Newton and corrector: converged when max|F| <= tolerance, in (0, 1)
   Index max_iterations = 20;        // Newton iterations, >= 1
   bool full_monodromy = false;      // floquet: integrate the full period (check of the reversible reduction)
@@ -67,6 +69,14 @@ struct DarkConfig {
 // Checks every option, the memory the job needs and the output directory before anything is
 // computed or written: InvalidParameter naming the DarkConfig key, InputError for `out`.
 void validate(const DarkConfig& c);
+
+// The default number of sites at a band edge theta: 101 at pi (a staggered breather needs an odd
+// ring), 100 at 0 (a pair of breathers half a ring apart needs an even one).
+constexpr Index default_dark_sites(double edge_theta) { return edge_theta != 0 ? 101 : 100; }
+
+// c.sites, or the default at the edge the job's breather bifurcates from (the resonant chain's is
+// at theta = pi; a model's from its branch and regimes).
+Index dark_sites(const DarkConfig& c);
 
 // What a front end observes while the job runs.
 struct DarkRunHooks {

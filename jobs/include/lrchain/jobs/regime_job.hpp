@@ -40,6 +40,10 @@ struct RegimeLattice {
 // The resonant chain (its specialised path) at the parameters of a loaded resonant_chain model.
 RegimeLattice resonant_chain_lattice(const Model& resonant_chain);
 
+// The parameter a map, curves or a scan use when none is named: rho for the resonant chain, else the
+// model's first parameter.
+std::string default_axis(const RegimeLattice& lattice);
+
 // ---- intervals ------------------------------------------------------------------------------
 
 // Focusing theta-intervals of one branch (`lrchain regime intervals`, lrchain.regime.intervals).
@@ -100,6 +104,8 @@ struct RegimeMapConfig {
   bool figures = true;      // draw the figures (write: gnuplot); the scripts are always written
   // memory limit in bytes for the map; 0: the machine's available memory.
   double max_memory = 0;
+  // csv | hdf5: hdf5 also writes the map as HDF5 beside the CSV files (regime_hdf5.hpp: write_hdf5).
+  std::string format = "csv";
 };
 
 // The defaults of a map's ranges (the CLI's, the reference).
@@ -142,6 +148,7 @@ struct RegimeMapResult {
   int nx = 0, ny = 0;
   bool delta0_log = false;
   bool curves = true, figures = true;
+  std::string format = "csv";  // the config's: hdf5 also writes the HDF5 file(s)
   std::vector<RegimeMapPanel> panels;
 };
 
@@ -155,10 +162,13 @@ RegimeMapResult run(const RegimeMapConfig& config);
 struct RegimeMapFiles {
   std::vector<std::vector<std::string>> files;
   std::vector<std::optional<bool>> drawn;
+  std::vector<std::string> hdf5;  // format hdf5: the HDF5 files written
 };
-// Pixel maps and curves as CSV, the gnuplot scripts and (result.figures) their figures in dir.
+// Pixel maps and curves as CSV, the gnuplot scripts and (result.figures) their figures in dir; format
+// hdf5: also the HDF5 files (regime_hdf5.hpp), listed in RegimeMapFiles::hdf5.
 RegimeMapFiles write(const RegimeMapResult& result, const std::filesystem::path& dir, sim::Figures& figures);
-// The JSON summary of `lrchain regime map` (without out, figures, stale files, provenance).
+// The JSON summary of `lrchain regime map` (without out, figures, stale files, provenance); format hdf5
+// adds "hdf5_files".
 nlohmann::json to_json(const RegimeMapResult& result, const RegimeMapFiles& files);
 
 // ---- curves ---------------------------------------------------------------------------------

@@ -31,8 +31,9 @@ struct ContactIntegrationOptions {
   double max_step = 0.25;      // upper bound on a step (time units of Sec. 2)
   double initial_step = 0.02;
   double min_step = 1e-13;     // below this the integration throws std::runtime_error
-  // Smooth model orbits (DarkOrbit): more accepted steps than 1000 + this times the interval abandon
-  // the orbit as running away (a guess far outside the force's range oscillates ever faster).
+  // More accepted steps than 1000 + this times the interval abandon the orbit as running away (a
+  // guess far outside the force's range oscillates ever faster): smooth model orbits (DarkOrbit)
+  // become NaN, the contact integrator throws NumericalFailure (its OrbitRecord stays bounded).
   double max_steps_per_time = 1e5;
   double contact_step = 1e-4;  // step next to a contact change (steps grade geometrically from it)
   double grading = 3.0;        // growth factor of steps away from a contact change
