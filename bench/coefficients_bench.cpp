@@ -65,6 +65,26 @@ static void BM_coefficients_model(benchmark::State& state) {
 }
 BENCHMARK(BM_coefficients_model)->Args({1, 0})->Args({0, 0})->Args({1, 1})->Args({0, 1});
 
+// Another model file's evaluators (0: resonant_chain, 1: diatomic_chain; optical branch). Arg 2 = 1:
+// coefficients() (the full check of one wavenumber's numbers, as coeffs prints them); 0:
+// coefficients_at() (the hot path of regime maps and scans: the screen for lost digits).
+static void BM_coefficients_model_file(benchmark::State& state) {
+  const lrchain::Model model = lrchain::shipped_model(state.range(0) ? "diatomic_chain" : "resonant_chain");
+  const lrchain::Index branch = model.branch("optical");
+  const bool full = state.range(1) != 0;
+  const std::vector<double> thetas = wavenumbers();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const double theta = thetas[i++ & 1023];
+    lrchain::NlsCoefficients c;
+    if (full) c = lrchain::coefficients_from_evaluators(model, branch, theta);
+    else lrchain::coefficients_at(model.definition(), model.inputs().data(), branch, theta, c);
+    benchmark::DoNotOptimize(c);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_coefficients_model_file)->Args({0, 0})->Args({0, 1})->Args({1, 0})->Args({1, 1});
+
 // The vectorised batch loop (lrchain/coefficients_batch.hpp) over 4096 wavenumbers per call.
 static void BM_coefficients_batch(benchmark::State& state) {
   const lrchain::Params p = lrchain::paper_params();

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "lrchain/checked_number.hpp"
+#include "lrchain/coefficient_check.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/sim/integrator.hpp"
 #include "lrchain/config/option_caps.hpp"
@@ -200,6 +201,9 @@ RingRunResult run_ring(const Model& model, const lrchain_lattice_kernels& kernel
   r.omega = nls.omega;
   r.h = nls.h;
   r.group_velocity = nls.group_velocity;
+  if (nls.evaluation == CoefficientEvaluation::refused)  // no prediction to compare with: exit 3 with the reason
+    throw NumericalFailure(fmt::format("the NLS coefficients of {} at theta = {} are singular: {}", model.name(), c.theta,
+                                       singular_reason(nls)));
   if (!std::isfinite(r.h))
     throw InvalidParameter("theta", fmt::format("the NLS coefficient h of {} is singular (a resonance) at theta = {}",
                                                 model.name(), c.theta));

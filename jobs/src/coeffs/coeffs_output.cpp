@@ -2,6 +2,7 @@
 #include <cmath>
 #include <fmt/core.h>
 
+#include "lrchain/coefficient_check.hpp"
 #include "lrchain/jobs/coeffs.hpp"
 #include "lrchain/model_json.hpp"
 #include "lrchain/provenance_json.hpp"
@@ -12,8 +13,10 @@ namespace {
 
 nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
+// The coefficients; a refused evaluation or a pole found by the limit adds "singular" (the reason), a
+// limit "evaluation": "limit".
 nlohmann::json coefficients_json(const NlsCoefficients& c) {
-  return {{"theta", c.theta},
+  nlohmann::json j = {{"theta", c.theta},
           {"omega", number_or_null(c.omega)},
           {"group_velocity", number_or_null(c.group_velocity)},
           {"curvature", number_or_null(c.curvature)},
@@ -25,6 +28,9 @@ nlohmann::json coefficients_json(const NlsCoefficients& c) {
           {"nonresonance1", number_or_null(c.nonresonance1)},
           {"nonresonance2", number_or_null(c.nonresonance2)},
           {"regime", std::string(to_string(c.regime))}};
+  if (c.evaluation != CoefficientEvaluation::direct && c.regime == Regime::singular) j["singular"] = std::string(singular_reason(c));
+  if (c.evaluation == CoefficientEvaluation::limit) j["evaluation"] = "limit";
+  return j;
 }
 
 std::string value_text(double v) { return std::isfinite(v) ? fmt::format("{:.17g}", v) : "singular"; }
@@ -70,7 +76,12 @@ std::string model_text(const CoeffsResult& r) {
   row("h_tilde", c.h_tilde);
   row("nonresonance1", c.nonresonance1);
   if (d.mean_flow) row("nonresonance2", c.nonresonance2);
-  return text + fmt::format("  {:<15} {}\n", "regime", to_string(c.regime));
+  text += fmt::format("  {:<15} {}\n", "regime", to_string(c.regime));
+  if (c.evaluation != CoefficientEvaluation::direct && c.regime == Regime::singular)
+    text += fmt::format("  {:<15} {}\n", "singular", singular_reason(c));
+  if (c.evaluation == CoefficientEvaluation::limit)
+    text += fmt::format("  {:<15} {}\n", "evaluation", "limit (the derived expressions are 0/0 here)");
+  return text;
 }
 
 // One column of the table: a space and 12 characters, right-aligned under its header.

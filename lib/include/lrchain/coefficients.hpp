@@ -13,6 +13,11 @@ namespace lrchain {
 enum class Regime { focusing, defocusing, degenerate, singular };
 std::string_view to_string(Regime r);
 
+// How a loaded model's coefficients were obtained (lrchain/coefficient_check.hpp): directly from the
+// emitted expressions, by their limit at a removable singularity (0/0) of those expressions, or not
+// at all (refused: c, omega'', gamma, beta, h, lambda, h_tilde are NaN; singular_reason() says why).
+enum class CoefficientEvaluation : signed char { direct, limit, refused };
+
 struct NlsCoefficients {
   double theta = 0;           // carrier wavenumber
   double omega = 0;           // carrier frequency omega_+-(theta) (eq:disp1d)
@@ -27,6 +32,7 @@ struct NlsCoefficients {
   double nonresonance1 = 0;   // (4w^2-4K2 sin^2 th-k)(k-4w^2 rho)+k^2 (eq:nonresonance1), != 0 required
   double nonresonance2 = 0;   // c^2(1+rho)-K2 (eq:nonresonance2), != 0 required
   Regime regime = Regime::singular;  // focusing iff curvature*h_tilde < 0
+  CoefficientEvaluation evaluation = CoefficientEvaluation::direct;  // refused: singular, see singular_reason()
 };
 
 // Relative size below which a non-resonance value counts as violated (|value| <= tol * scale).

@@ -9,6 +9,7 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/half_angle.hpp"
+#include "coefficient_check.hpp"
 
 namespace lrchain {
 
@@ -175,13 +176,15 @@ namespace {
 
 // Roots of det M in omega^2, the branch's omega, the emitted NLS evaluator, the singular test
 // (inlined into both entry points: this is the hot path of every map and scan).
-[[gnu::always_inline]] inline bool evaluate_coefficients(const ModelDefinition& d, const double* q, Index branch,
-                                                         double theta, NlsCoefficients& c) noexcept {
-  double sh, ch;
+[[gnu::always_inline]] inline bool evaluate_unchecked(const ModelDefinition& d, const double* q, Index branch,
+                                                      double theta, NlsCoefficients& c, detail::DetMAtTheta& at) noexcept {
+  double& sh = at.sin_half;
+  double& ch = at.cos_half;
   detail::half_angle_sincos(0.5 * theta, sh, ch);
   const double D1 = 4.0 * sh * sh;  // no cancellation near theta = 0
   const double sigma = 2.0 * sh * ch;
-  double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
+  double* w = at.w;
+  double roots[kMaxModelDegree];
   d.evaluators.evaluate_dispersion(D1, sigma, q, w);
   if (!omega_squared_roots(w, d.degree, roots)) return false;
   const double w2 = roots[branch];
@@ -191,13 +194,7 @@ namespace {
   d.evaluators.evaluate_nls(D1, sigma, omega, q, out);
   c.theta = theta;
   c.omega = omega;
-  c.group_velocity = out[out_group_velocity];
-  c.curvature = out[out_curvature];
-  c.gamma = out[out_gamma];
-  c.beta = out[out_beta];
-  c.nonresonance1 = out[out_nonresonance1];
-  c.nonresonance2 = out[out_nonresonance2];
-  c.h_tilde_numerator = out[out_h_tilde_numerator];
+  detail::store_linear_outputs(out, c);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   if (std::abs(c.nonresonance1) <= kNonresonanceTolerance * out[out_nonresonance1_scale] ||
       std::abs(c.nonresonance2) <= kNonresonanceTolerance * out[out_nonresonance2_scale]) {
@@ -213,12 +210,26 @@ namespace {
   return true;
 }
 
+// The unchecked evaluation, then its check (coefficient_check.cpp): full (c, omega'' against omega's
+// derivatives from det M, digits lost to a 0/0) for one wavenumber's numbers, or the hot path's
+// (c, omega'' against det M's implicit derivatives) with the full check where they disagree.
+template <bool full>
+[[gnu::always_inline]] inline bool evaluate_coefficients(const ModelDefinition& d, const double* q, Index branch,
+                                                         double theta, NlsCoefficients& c) noexcept {
+  detail::DetMAtTheta at;
+  if (!evaluate_unchecked(d, q, branch, theta, c, at)) return false;
+  if constexpr (full) detail::check_or_limit(d, q, branch, c);
+  else detail::derivatives_or_check(d, q, branch, at, c);
+  return true;
+}
+
 // The coefficients at `parameters` (one value per parameter), intermediates recomputed.
 bool coefficients_with(const ModelDefinition& d, const std::vector<double>& parameters, Index branch, double theta) {
   std::vector<double> q(d.parameters.size() + d.intermediates.size(), 0.0);
   d.evaluators.evaluate_intermediates(parameters.data(), q.data());
   NlsCoefficients c;
-  return evaluate_coefficients(d, q.data(), branch, theta, c);
+  detail::DetMAtTheta at;
+  return evaluate_unchecked(d, q.data(), branch, theta, c, at);
 }
 
 // Where the coefficients at (branch, theta) fail although they exist there at the model's defaults:
@@ -257,9 +268,15 @@ void blame_parameter(const Model& model, Index branch, double theta) {
 
 }  // namespace
 
+bool detail::unchecked_model_coefficients(const ModelDefinition& d, const double* q, Index branch, double theta,
+                                          NlsCoefficients& c) noexcept {
+  detail::DetMAtTheta at;
+  return evaluate_unchecked(d, q, branch, theta, c, at);
+}
+
 bool coefficients_at(const ModelDefinition& d, const double* q, Index branch, double theta,
                      NlsCoefficients& c) noexcept {
-  return evaluate_coefficients(d, q, branch, theta, c);
+  return evaluate_coefficients<false>(d, q, branch, theta, c);
 }
 
 namespace {
@@ -277,7 +294,7 @@ void check_wavenumber_and_branch(const ModelDefinition& d, Index branch, double 
 NlsCoefficients checked_evaluator_coefficients(const Model& model, Index branch, double theta) {
   const ModelDefinition& d = model.definition();
   NlsCoefficients c;
-  if (evaluate_coefficients(d, model.inputs().data(), branch, theta, c)) [[likely]] return c;
+  if (evaluate_coefficients<true>(d, model.inputs().data(), branch, theta, c)) [[likely]] return c;
   double w[kMaxModelDegree + 1], roots[kMaxModelDegree];
   double sh, ch;
   detail::half_angle_sincos(0.5 * theta, sh, ch);
