@@ -17,6 +17,17 @@ using namespace lrchain::sim;
 
 namespace {
 
+// fput's acoustic breather at theta = pi/2 (mean flow, strain form), detuning 1e-4, from n0.
+ModelBrightConfig fput_at_half_pi(const Model& fput, double n0, double periods) {
+  ModelBrightConfig c;
+  c.branch = fput.branch("acoustic");
+  c.theta = std::numbers::pi / 2;
+  c.detuning = 1e-4;
+  c.n0 = n0;
+  c.periods = periods;
+  return c;
+}
+
 double max_E_x(const Model& model, ModelBrightConfig c, long N, bool ansatz_ends) {
   c.N = N;
   c.ansatz_ends = ansatz_ends;
@@ -48,12 +59,7 @@ TEST_CASE("model bright: ansatz ends make a short chain match a long one (klein_
     // moves 157 sites and leaves the chain n = -100..100 through its right end. Measured: long chain
     // (N = 1000) 0.015 %, short with ansatz ends 0.015 %, short with strain-free ends 117 %.
     const Model model = shipped_model("fput");
-    ModelBrightConfig c;
-    c.branch = model.branch("acoustic");
-    c.theta = std::numbers::pi / 2;
-    c.detuning = 1e-4;
-    c.n0 = -40;
-    c.periods = 50;
+    const ModelBrightConfig c = fput_at_half_pi(model, -40, 50);
     const double reference = max_E_x(model, c, 1000, false), fixed = max_E_x(model, c, 100, false),
                  emitting = max_E_x(model, c, 100, true);
     std::printf("fput ends: long %.5f, short fixed %.5f, short ansatz ends %.5f\n", reference, fixed, emitting);
@@ -67,13 +73,8 @@ TEST_CASE("model bright: a breather that runs into a fixed end is reported, one 
   // fput, theta = pi/2, detuning 1e-4: c = cos(pi/4) = 0.7071 (the textbook monatomic chain), width
   // 1/a = 42 sites (a = 0.02378, the run's inverse_width), T_b = 4.443.
   const Model model = shipped_model("fput");
-  ModelBrightConfig c;
-  c.branch = model.branch("acoustic");
-  c.theta = std::numbers::pi / 2;
-  c.detuning = 1e-4;
-  // 201 sites, n0 = -40: the left end is 1.4 widths away, a quarter of the energy is near it at once.
-  c.n0 = -40;
-  c.periods = 10;
+  // 201 sites, n0 = -40: the left end is 1.4 widths away.
+  ModelBrightConfig c = fput_at_half_pi(model, -40, 10);
   c.N = 100;
   const ModelBrightResult short_chain = run_model_bright(model, lattice_kernels_of(model), c);
   CHECK(short_chain.end_zone == 10);  // 201 sites / 20
