@@ -46,7 +46,8 @@ void add_common(CLI::App& sub, BrightArgs& a) {
       ->type_name("site|bond");
   add_integer(sub, "--sites", c.sites, config::dark_sites.least, config::dark_sites.most, bright_help("sites"));
   add_number(sub, "--tail-tolerance", c.tail_tolerance, bright_help("tail_tolerance"));
-  add_solver_options(sub, c.krylov, bright_help);
+  add_solver_options(sub, c.krylov,
+                     [](const std::string& key) -> const jobs::JobOption& { return bright_breather_option(key); });
   sub.add_flag("--json", a.json_out, "print the JSON summary on one line (default: indented)");
   sub.add_flag("--quiet", a.quiet, "no Newton progress on stderr (default: progress shown)");
   sub.add_option("--out", c.out, bright_help("out"))->type_name("DIR");

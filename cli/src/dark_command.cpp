@@ -64,7 +64,7 @@ void add_common(CLI::App& sub, DarkArgs& a) {
       ->check(CLI::IsMember({"bond", "site"}).description(""))
       ->type_name("bond|site");
   add_integer(sub, "--sites", c.sites, config::dark_sites.least, config::dark_sites.most, help("sites"));
-  add_solver_options(sub, c.krylov, help);
+  add_solver_options(sub, c.krylov, [](const std::string& key) -> const jobs::JobOption& { return dark_option(key); });
   sub.add_option("--mode", c.mode, help("mode"))
       ->check(CLI::IsMember({"reversible", "full"}).description(""))
       ->type_name("reversible|full");

@@ -17,7 +17,8 @@ OPTIONS = _lrchain.dark_options()
 FUNCTIONS = {"solve": dark.solve, "floquet": dark.floquet, "continue": dark.continue_branch, "evolve": dark.evolve}
 # DarkConfig keys the schema must hold (the options lrchain dark and lrchain.dark offer).
 EXPECTED_KEYS = {"omega_b", "branch", "center", "sites", "mode", "tolerance", "max_iterations", "full_monodromy",
-                 "points", "ds", "omega_min", "omega_max", "branch_floquet", "t_end", "samples", "format", "out"}
+                 "points", "ds", "omega_min", "omega_max", "branch_floquet", "t_end", "samples", "format", "out",
+                 "solver", "krylov_sites", "krylov_band", "floquet_count"}
 
 
 def _help(step):
