@@ -408,6 +408,25 @@ def bright_branch_to_xarray(self):
     return _dataset(data_vars, coords, attrs)
 
 
+def travelling_wave_to_xarray(self):
+    """The wave's profile U_f(xi) on (field, xi); after lrchain.wave.stability also the growth rate and
+    the NLS growth rate on the perturbation wavenumber K; the scalars (theta, A, omega, ...) as attributes."""
+    fields = list(self.summary["profile"]["fields"])
+    data_vars = {"profile": _var(("field", "xi"), self.profile, "U_f(xi), the wave's profile in the phase")}
+    coords = {"field": ("field", fields), "xi": _var(("xi",), self.xi, "phase xi = theta n - omega t", "rad")}
+    if self.stability is not None:
+        coords["K"] = _var(("K",), self.stability["k"], "perturbation wavenumber K", "rad")
+        data_vars["growth_rate"] = _var(("K",), self.stability["growth_rate"], "largest Re lambda at K", "1/time")
+        data_vars["nls_growth_rate"] = _var(("K",), self.stability["nls_growth_rate"],
+                                            "the NLS's modulational growth rate at K", "1/time")
+    attrs = _provenance(self.summary)
+    attrs.update({"theta": self.theta, "amplitude": self.amplitude, "omega": self.omega,
+                  "omega_linear": self.omega_linear, "harmonics": self.harmonics, "tail": self.tail,
+                  "residual": self.residual, "nls_omega_shift": self.nls_omega_shift,
+                  "lrchain_result": "travelling_wave"})
+    return _dataset(data_vars, coords, attrs)
+
+
 STATUS_MEANINGS = "missing ok blew_up numerical_failure invalid"
 
 
@@ -468,7 +487,7 @@ def open_sweep(path):
 
 def attach():
     """Gives each result class its ``to_xarray`` method (called once by ``import lrchain``)."""
-    from . import bright, dark, regime, simulate
+    from . import bright, dark, regime, simulate, wave
     from .coefficients import Coefficients
 
     methods = {
@@ -481,7 +500,7 @@ def attach():
         regime.Intervals: intervals_to_xarray, regime.RegimeMap: regime_map_to_xarray,
         regime.BoundaryCurve: boundary_curve_to_xarray, bright.BrightBreather: bright_breather_to_xarray,
         bright.BrightBranch: bright_branch_to_xarray, dark.Floquet: floquet_to_xarray,
-        bright.BrightFloquet: floquet_to_xarray,
+        bright.BrightFloquet: floquet_to_xarray, wave.TravellingWave: travelling_wave_to_xarray,
     }
     for cls, method in methods.items():
         method.__name__ = method.__qualname__ = "to_xarray"

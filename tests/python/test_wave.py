@@ -38,3 +38,20 @@ def test_stability_arrays():
     assert s["k"].shape == s["growth_rate"].shape == s["nls_growth_rate"].shape == (50,)
     assert not s["stable"]
     assert abs(s["largest_rate"] / s["nls_largest_rate"] - 1) < 2e-3
+
+
+def test_to_xarray_labels_profile_and_growth_rate(tmp_path):
+    w = lrchain.wave.stability(lrchain.load_model("fput"), branch="acoustic", theta=2.5, amplitude=0.02, k_points=50)
+    ds = w.to_xarray()
+    assert ds.profile.dims == ("field", "xi") and list(ds.field.values) == ["u0"]
+    assert ds.growth_rate.dims == ("K",) and ds.K.size == 50
+    # the same numbers as the result's arrays, relabelled
+    assert np.array_equal(ds.profile.values, w.profile)
+    assert np.array_equal(ds.growth_rate.values, w.stability["growth_rate"])
+    assert ds.attrs["omega"] == w.omega and ds.attrs["lrchain_result"] == "travelling_wave"
+    # the largest rate in the Dataset is the job's (|h_tilde| A^2/4 at the NLS's K within 0.2 %:
+    # tests/unit/wave_nls_test.cpp)
+    assert float(ds.growth_rate.max()) <= w.stability["largest_rate"] * (1 + 1e-12)
+    ds.to_netcdf(tmp_path / "wave.nc")
+    solved = lrchain.wave.solve(lrchain.load_model("fput"), branch="acoustic", theta=2.5, amplitude=0.02).to_xarray()
+    assert "growth_rate" not in solved and solved.profile.shape == (1, 2 * w.harmonics + 1)
