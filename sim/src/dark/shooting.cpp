@@ -27,7 +27,10 @@ using OrbitState = std::vector<double>;
 // storage once, and the number of tangent columns changes between calls).
 struct DarkOrbit::Steppers {
   odeint::runge_kutta_fehlberg78<OrbitState> orbit;
-  odeint::runge_kutta_fehlberg78<OrbitState> replay;  // record/replay: sized once per extended size
+  // record/replay. Odeint sizes a stepper's stage storage at its first step only (initially_resizer),
+  // so it is made afresh whenever the extended size changes (replay_size: the size it was made for).
+  odeint::runge_kutta_fehlberg78<OrbitState> replay;
+  std::size_t replay_size = 0;
 };
 
 namespace {
@@ -219,6 +222,10 @@ void DarkOrbit::replay(const RecordedSteps& steps, std::vector<double>& extended
   const std::size_t n = 2 * std::size_t(positions_), m = std::size_t(columns);
   if (extended.size() != n * (1 + m)) throw std::invalid_argument("DarkOrbit::replay: extended must have 2 positions() (1 + columns) entries");
   auto system = [this, m](const OrbitState& s, OrbitState& ds, double) { extended_rhs(*this, s.data(), ds.data(), m); };
+  if (steppers_->replay_size != extended.size()) {
+    steppers_->replay = odeint::runge_kutta_fehlberg78<OrbitState>();
+    steppers_->replay_size = extended.size();
+  }
   for (std::size_t k = 0; k < steps.size.size(); ++k) {
     if (options_.stop && options_.stop->load(std::memory_order_relaxed)) throw Interrupted(SIGINT, "interrupted by SIGINT");
     steppers_->replay.do_step(system, extended, steps.start[k], steps.size[k]);
