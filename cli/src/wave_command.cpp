@@ -34,7 +34,7 @@ void add_common(CLI::App& sub, WaveArgs& a) {
   WaveConfig& c = a.config;
   add_model_options(sub, a.chain, false);
   add_model_file_options(sub, a.model);
-  sub.add_option("--branch", c.branch, wave_help("branch"))->type_name("NAME")->required();
+  sub.add_option("--branch", c.branch, wave_help("branch"))->type_name("NAME");
   add_number(sub, "--theta", c.theta, wave_help("theta"))->required();
   add_integer(sub, "--harmonics", c.initial_harmonics, 0, 1000000, wave_help("initial_harmonics"));
   add_integer(sub, "--max-harmonics", c.max_harmonics, 0, 1000000, wave_help("max_harmonics"));

@@ -301,16 +301,16 @@ class RingResult:
 
 @documented(("ring", "Options (None: the default; the job's schema, as ``lrchain simulate ring --help``):"))
 @real_numbers
-def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, steps_per_period=None,
+def ring(model, branch=None, theta=None, *, amplitudes=None, sites=None, periods=None, steps_per_period=None,
          packet_amplitude=None, packet_width=None, progress=None):
     """``lrchain simulate ring --model FILE``: plane waves of amplitude U (``amplitudes``, default
     (0.02, 0.01)) on a periodic ring of ``sites`` (default the smallest >= 8 with theta on it),
     their frequency measured over ``periods`` carrier periods (default 400, ``steps_per_period`` 80
     srkn11b steps) against omega + h U^2/4, and a Gaussian wave packet (``packet_amplitude``, default
     a tenth of the smallest U; ``packet_width`` 24 sites) whose speed is compared with c.
-    ``model`` is an :class:`lrchain.Model`. Ctrl-C stops it at its next sample (8 per carrier
-    period) with ``KeyboardInterrupt``. Returns
-    :class:`RingResult`.
+    ``model`` is an :class:`lrchain.Model`; ``branch`` may be left out for a model with one branch;
+    ``theta`` is required. Ctrl-C stops it at its next sample (8 per carrier period) with
+    ``KeyboardInterrupt``. Returns :class:`RingResult`.
 
     Example::
 
@@ -321,11 +321,14 @@ def ring(model, branch, theta, *, amplitudes=None, sites=None, periods=None, ste
         ([0.02, 0.01], True)
     """
     checked_model(model)
+    if theta is None:
+        from .errors import InvalidParameterError
+        raise InvalidParameterError("invalid theta: required, the carrier wavenumber in (-pi, pi]", "theta")
     options = _options(theta=theta, amplitudes=None if amplitudes is None else [float(a) for a in amplitudes],
                        sites=sites, periods=periods, steps_per_period=steps_per_period,
                        packet_amplitude=packet_amplitude, packet_width=packet_width)
     with Bar(f"ring run of {model.name}", progress) as bar:
-        out = python_names(lambda: _lrchain.simulate_ring(model, branch, options, bar.callback))
+        out = python_names(lambda: _lrchain.simulate_ring(model, "" if branch is None else branch, options, bar.callback))
     series = out["record"]["series"]
     names = list(series)
     return _warned(RingResult(amplitude=out["amplitude"], measured_frequency=out["measured_frequency"],

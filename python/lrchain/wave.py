@@ -66,13 +66,12 @@ def _run(model, step, branch, theta, amplitude=_D["amplitude"], ramp=_D["ramp"],
     from .errors import InvalidParameterError
 
     model = _model(model)
-    for name, value in (("branch", branch), ("theta", theta)):
-        if value is None:
-            raise InvalidParameterError(f"invalid {name}: required", name)
+    if theta is None:
+        raise InvalidParameterError("invalid theta: required", "theta")
     if step != "continue" and amplitude is None:
         raise InvalidParameterError("invalid amplitude: required (> 0)", "amplitude")
     return python_names(lambda: _lrchain.wave_job(
-        model, step, branch, theta, 0.0 if amplitude is None else amplitude, ramp, list(np.atleast_1d(amplitudes)),
+        model, step, "" if branch is None else branch, theta, 0.0 if amplitude is None else amplitude, ramp, list(np.atleast_1d(amplitudes)),
         harmonics, max_harmonics, tail_tolerance, tolerance, max_iterations, k_points, unstable_tolerance))
 
 

@@ -90,9 +90,10 @@ def test_model_file_runs_interrupted():
             run()
         timer.join()
         assert time.monotonic() - start < 60
-    # The library still works: a short ring run completes.
-    r = lrchain.simulate.ring(fput, "acoustic", math.pi / 2, periods=10)
+    # The library still works: a short ring run completes (fput's only branch, branch left out).
+    r = lrchain.simulate.ring(fput, theta=math.pi / 2, periods=10)
     assert len(r.amplitude) == 2
+    assert r.summary["branch"] == "acoustic"
 
 
 def test_sweep_interrupted_keeps_its_results_file(tmp_path):

@@ -8,7 +8,8 @@ import lrchain
 
 
 def test_solve_gives_the_profile_as_numpy_and_the_nls_shift():
-    w = lrchain.wave.solve(lrchain.load_model("klein_gordon"), branch="branch0", theta=3 * np.pi / 4, amplitude=0.01)
+    w = lrchain.wave.solve(lrchain.load_model("klein_gordon"), theta=3 * np.pi / 4, amplitude=0.01)  # its only branch
+    assert w.summary["branch"] == "branch0"
     assert isinstance(w.profile, np.ndarray) and w.profile.shape == (1, 2 * w.harmonics + 1)
     assert w.xi.shape == (2 * w.harmonics + 1,)
     # the first harmonic of the first field is A cos xi (the phase condition)
@@ -30,6 +31,10 @@ def test_bad_keyword_names_the_python_keyword():
     assert e.value.parameter == "harmonics"
     with pytest.raises(lrchain.InvalidParameterError):
         lrchain.wave.solve(lrchain.load_model("fput"), branch="acoustic", theta=2.5)
+    # the paper's chain has two branches: branch may not be left out (its names are listed)
+    with pytest.raises(lrchain.InvalidParameterError) as e:
+        lrchain.wave.solve(theta=2.5, amplitude=0.1)
+    assert e.value.parameter == "branch" and "'acoustic', 'optical'" in str(e.value)
 
 
 def test_stability_arrays():

@@ -31,16 +31,20 @@ TEST_CASE("wave cli: bad input exits 2 with one line, nothing written" * doctest
                      "0.1"}, "invalid amplitudes", source_dir);
   check_refused_run({"wave", "solve", "--model", "fput", "--branch", "optical", "--theta", "2.5", "--amplitude", "0.1"},
                     "branch", source_dir);
+  // The resonant chain has two branches: --branch may not be left out, and the refusal names both.
+  check_refused_run({"wave", "solve", "--theta", "2.5", "--amplitude", "0.1"}, "'acoustic', 'optical'", source_dir);
 }
 
 TEST_CASE("wave cli: solve exits 0 with its JSON, no wave exits 3" * doctest::test_suite("fast")) {
-  const auto r = run_lrchain({"wave", "solve", "--model", "klein_gordon", "--branch", "branch0", "--theta", "3*pi/4",
+  // Klein-Gordon has one branch: --branch may be left out (Model::branch_or_only).
+  const auto r = run_lrchain({"wave", "solve", "--model", "klein_gordon", "--theta", "3*pi/4",
                               "--amplitude", "0.1", "--json"}, source_dir);
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["model"]["name"] == "klein_gordon");
   CHECK(j["step"] == "solve");
+  CHECK(j["branch"] == "branch0");
   CHECK(j["waves"].back()["amplitude"] == doctest::Approx(0.1));
   CHECK(j["profile"]["fields"]["u0"].size() == j["profile"]["xi"].size());
   CHECK(j["failure"].is_null());

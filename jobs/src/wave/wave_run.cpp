@@ -10,7 +10,7 @@ WaveResult run(const WaveConfig& c) {
   const auto start = std::chrono::steady_clock::now();
   WaveResult r;
   r.config = c;
-  const Index branch = c.model->branch(c.branch);
+  const Index branch = c.model->branch_or_only(c.branch);
   r.branch = c.model->definition().branch_names[std::size_t(branch)];
   r.nls = coefficients_from_evaluators(*c.model, branch, c.theta);
   r.mode = sim::bloch_mode(*c.model, *c.kernels, branch, c.theta);

@@ -10,9 +10,9 @@ std::vector<JobOption> make_options() {
   const nlohmann::json none;
   const std::vector<std::string> one{"solve", "stability"}, all{"solve", "continue", "stability"};
   return {
-      {"branch", "--branch", "branch", all, none, true,
-       "optical or acoustic; other models: the names `lrchain derive` lists (acoustic/optical or branch0, ...)",
-       "dispersion branch of the wave"},
+      {"branch", "--branch", "branch", all, none, false,
+       "the model's branch names (`lrchain derive` lists them: acoustic/optical or branch0, ...)",
+       "dispersion branch of the wave", "", "the model's only branch (required when it has several)"},
       {"theta", "--theta", "theta", all, none, true, "in (-pi, pi], any real value there",
        "carrier wavenumber theta of u_n(t) = U(theta n - omega t), e.g. 2.5 or 3*pi/4"},
       {"amplitude", "--amplitude", "amplitude", one, none, true, "(0, 1000]",

@@ -25,8 +25,7 @@ void check_range(const char* key, double value, double low, double high, bool op
 
 void validate(const WaveConfig& c) {
   if (!c.model || !c.kernels) throw InvalidParameter("model", "the job needs a model and its lattice kernels");
-  if (c.branch.empty()) throw InvalidParameter("branch", "is required: the model's branch names: " + fmt::format("{}", fmt::join(c.model->definition().branch_names, ", ")));
-  const Index branch = c.model->branch(c.branch);
+  const Index branch = c.model->branch_or_only(c.branch);  // "is required" naming the branches of a model with several
   if (!std::isfinite(c.theta) || !(c.theta > -std::numbers::pi && c.theta <= std::numbers::pi))
     throw InvalidParameter("theta", fmt::format("{} is outside (-pi, pi]", c.theta));
   if (c.step == WaveStep::branch) {
