@@ -572,7 +572,22 @@ class Generator {
     return true;
   }
 
-  // An antiderivative in s of sums of constants times s^k, (a + b s)^p and exp(a + b s).
+  // The antiderivative F of f(x) for the elementary functions f with one in closed form (exp, sin,
+  // cos, tan, sinh, cosh, tanh, log): int f(a + b s) ds = F(a + b s) / b. 0 for any other name.
+  static ex elementary_antiderivative(const std::string& name, const ex& x) {
+    if (name == "exp") return exp(x);
+    if (name == "sin") return -cos(x);
+    if (name == "cos") return sin(x);
+    if (name == "tan") return -log(cos(x));
+    if (name == "sinh") return cosh(x);
+    if (name == "cosh") return sinh(x);
+    if (name == "tanh") return log(cosh(x));
+    if (name == "log") return x * log(x) - x;
+    return 0;
+  }
+
+  // An antiderivative in s of sums of constants times s^k, (a + b s)^p and f(a + b s) for the
+  // elementary f of elementary_antiderivative.
   ex antiderivative(const ex& g, const symbol& s) const {
     if (!g.has(s)) return g * s;
     if (is_a<add>(g)) {
@@ -602,13 +617,18 @@ class Generator {
         return pow(base, p + 1) / ((p + 1) * slope);
       }
     }
-    if (is_exactly_a<function>(g) && ex_to<function>(g).get_name() == "exp") {
+    if (is_exactly_a<function>(g)) {
       const ex slope = g.op(0).diff(s);
-      if (!slope.has(s) && !slope.is_zero()) return g / slope;
+      if (!slope.has(s) && !slope.is_zero()) {
+        const ex integral = elementary_antiderivative(ex_to<function>(g).get_name(), g.op(0));
+        if (!integral.is_zero()) return integral / slope;
+      }
     }
     const ex expanded = expand(g);
     if (!expanded.is_equal(g)) return antiderivative(expanded, s);
-    throw InputError(m_.path + ": cannot integrate the force law " + to_text(g) + " for the lattice energy");
+    throw InputError(m_.path + ": cannot integrate the force law " + to_text(g) +
+                     " for the lattice energy: lattice runs integrate sums of constants times s^k, (a + b s)^p and "
+                     "exp, sin, cos, tan, sinh, cosh, tanh or log of a + b s (a, b free of s)");
   }
 
   void emit_energy_entry(std::ostream& os, const Form& form, bool specialised, const exmap& special) const {
