@@ -42,9 +42,12 @@ void add_common(CLI::App& sub, WaveArgs& a) {
   add_number(sub, "--tolerance", c.tolerance, wave_help("tolerance"));
   add_integer(sub, "--max-iterations", c.max_iterations, 0, 1000000, wave_help("max_iterations"));
   sub.add_flag("--json", a.json_out, "print the JSON summary on one line (default: indented)");
-  sub.add_option("--out", c.out, "output directory: profile.csv, branch.csv, growth.csv and growth.gp, summary.json (default: none, no files)")
+  sub.add_option("--out", c.out, "output directory: profile.csv, branch.csv, growth.csv and growth.gp, summary.json, with --format hdf5 result.h5 (default: none, no files)")
       ->type_name("DIR");
   add_figure_format(sub);
+  sub.add_option("--format", c.format, wave_help("format"))
+      ->check(CLI::IsMember({"csv", "hdf5"}).description(""))
+      ->type_name("csv|hdf5");
 }
 
 // The amplitude of solve and stability.
@@ -55,7 +58,7 @@ void add_amplitude(CLI::App& sub, WaveArgs& a) {
 
 // Validates, runs and reports one job: JSON on stdout, then exit 3 when there is no wave.
 void run_job(const WaveArgs& a, WaveStep step, const CLI::App& cmd) {
-  refuse_without_out(cmd, a.config.out, {"--figure-format"});
+  refuse_without_out(cmd, a.config.out, {"--format", "--figure-format"});
   WaveConfig config = a.config;
   config.step = step;
   const Model model = load_selected_model(a.model, cmd, a.chain, true);

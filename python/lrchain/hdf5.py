@@ -1,5 +1,5 @@
 """Results to HDF5 files (read them with h5py): ``result.to_hdf5(path)`` on every result (simulate, dark,
-bright, coefficients, regime), written by the C++ library's writers: the same file as the command's
+bright, wave, coefficients, regime), written by the C++ library's writers: the same file as the command's
 ``--format hdf5`` (``--out DIR`` of ``lrchain coeffs`` and ``lrchain regime intervals``).
 
 Every file has the root attributes ``lrchain_result`` (the result's class), ``lrchain_version``,
@@ -34,6 +34,11 @@ file's run adds lattice_code).
   solve|floquet|continue --format hdf5``): ``n``, ``z``, ``seed``, ``branch_z`` (a branch),
   ``floquet_multipliers`` (complex), the summary as a tree and as exact JSON text (root attribute
   ``summary_json``), ``omega_b``, ``center``, ``variables`` (lrchain/jobs/bright_breather_hdf5.hpp).
+- :class:`lrchain.wave.TravellingWave`, :class:`~lrchain.wave.WaveBranch` (``lrchain wave
+  solve|stability|continue --format hdf5``): one entry per wave in ``amplitude``, ``omega``, ``omega_shift``,
+  ``nls_omega_shift``, ``harmonics``; a wave's ``xi`` and ``profile`` (fields x phases); after stability
+  ``K``, ``growth_rate``, ``nls_growth_rate``; the summary as a tree and as exact JSON text
+  (``summary_json``), ``branch``, ``theta`` (lrchain/jobs/wave_hdf5.hpp).
 
 :func:`lrchain.load` reads any of these files back into its result class (:mod:`lrchain.reading`).
 

@@ -427,6 +427,21 @@ def travelling_wave_to_xarray(self):
     return _dataset(data_vars, coords, attrs)
 
 
+def wave_branch_to_xarray(self):
+    """The branch omega(A): omega, its shift and the NLS shift, the harmonics used, on ``amplitude``."""
+    data_vars = {
+        "omega": _var(("amplitude",), self.omega, "wave frequency omega", "rad/time"),
+        "omega_shift": _var(("amplitude",), self.omega_shift, "omega - omega_linear", "rad/time"),
+        "nls_omega_shift": _var(("amplitude",), self.nls_omega_shift, "h A^2/4, the NLS shift", "rad/time"),
+        "harmonics": _var(("amplitude",), self.harmonics, "harmonics H of the collocation"),
+    }
+    coords = {"amplitude": _var(("amplitude",), self.amplitude, "amplitude A (the first field's cos xi harmonic)")}
+    attrs = _provenance(self.summary)
+    attrs.update({"theta": self.theta, "stopped": "null" if self.stopped is None else self.stopped,
+                  "lrchain_result": "wave_branch"})
+    return _dataset(data_vars, coords, attrs)
+
+
 STATUS_MEANINGS = "missing ok blew_up numerical_failure invalid"
 
 
@@ -501,6 +516,7 @@ def attach():
         regime.BoundaryCurve: boundary_curve_to_xarray, bright.BrightBreather: bright_breather_to_xarray,
         bright.BrightBranch: bright_branch_to_xarray, dark.Floquet: floquet_to_xarray,
         bright.BrightFloquet: floquet_to_xarray, wave.TravellingWave: travelling_wave_to_xarray,
+        wave.WaveBranch: wave_branch_to_xarray,
     }
     for cls, method in methods.items():
         method.__name__ = method.__qualname__ = "to_xarray"

@@ -1,13 +1,14 @@
 """``lrchain.load(path)``: any file lrchain writes, read back into the object it came from.
 
-- an HDF5 result (``result.to_hdf5(path)``, or the HDF5 files of ``lrchain simulate|dark|bright ...
+- an HDF5 result (``result.to_hdf5(path)``, or the HDF5 files of ``lrchain simulate|dark|bright|wave ...
   --format hdf5``, ``lrchain regime map --format hdf5``, ``lrchain coeffs|regime intervals --out DIR``:
   the file's root attribute ``lrchain_result`` names the class) -> that result class
   (:class:`lrchain.simulate.BrightResult`, ..., :class:`lrchain.dark.ModelEvolution`,
   :class:`lrchain.Coefficients`, :class:`lrchain.regime.Intervals`, :class:`~lrchain.regime.RegimeMap`,
   :class:`~lrchain.regime.BoundaryCurve`, :class:`lrchain.bright.BrightBreather`,
-  :class:`~lrchain.bright.BrightBranch`), with the same arrays, bit for bit, and the summary read from
-  its tree (a bright breather's from its exact JSON text; layout: :mod:`lrchain.hdf5`);
+  :class:`~lrchain.bright.BrightBranch`, :class:`lrchain.wave.TravellingWave`,
+  :class:`~lrchain.wave.WaveBranch`), with the same arrays, bit for bit, and the summary read from its
+  tree (a bright breather's and a wave's from its exact JSON text; layout: :mod:`lrchain.hdf5`);
 - a sweep's results file (``lrchain sweep``) -> an :class:`xarray.Dataset` (:func:`lrchain.open_sweep`);
 - a folder a command wrote (``--out DIR``) -> its ``result.h5`` or, failing that, its one sweep file;
 - a JSON file (the command's summary, ``summary.json``) -> a dict.
@@ -282,9 +283,23 @@ def _bright_branch(f, cls):
     return _branch(d)
 
 
+def _travelling_wave(f, cls):
+    from .wave import _wave
+
+    d = json.loads(_text(f.attrs["summary_json"]))
+    d["profile_array"] = f["profile"][()]
+    return _wave(d)
+
+
+def _wave_branch(f, cls):
+    from .wave import _branch
+
+    return _branch(json.loads(_text(f.attrs["summary_json"])))
+
+
 def _readers():
     """Result class name (the files' ``lrchain_result``) -> (class, reader)."""
-    from . import bright, dark, regime, simulate
+    from . import bright, dark, regime, simulate, wave
     from .coefficients import Coefficients
 
     return {"BrightResult": (simulate.BrightResult, _simulation), "DriveResult": (simulate.DriveResult, _simulation),
@@ -297,7 +312,8 @@ def _readers():
             "Coefficients": (Coefficients, _coefficients), "Intervals": (regime.Intervals, _intervals),
             "RegimeMap": (regime.RegimeMap, _regime_map), "BoundaryCurve": (regime.BoundaryCurve, _boundary_curve),
             "BrightBreather": (bright.BrightBreather, _bright_breather),
-            "BrightBranch": (bright.BrightBranch, _bright_branch)}
+            "BrightBranch": (bright.BrightBranch, _bright_branch),
+            "TravellingWave": (wave.TravellingWave, _travelling_wave), "WaveBranch": (wave.WaveBranch, _wave_branch)}
 
 
 def _load_hdf5(path):

@@ -13,6 +13,7 @@ the paper's resonant chain. No wave at an amplitude (Newton fails, near a harmon
 harmonics do not decay; a one-sided contact opens) raises :class:`lrchain.NumericalFailure` with the reason.
 """
 
+import json
 from dataclasses import dataclass
 
 import numpy as np
@@ -46,9 +47,50 @@ class TravellingWave:
     stability: dict
     summary: dict
 
+    def to_hdf5(self, path):
+        """Writes the wave with the C++ job layer's writer: the file ``lrchain wave solve|stability --format
+        hdf5`` writes (layout: lrchain/jobs/wave_hdf5.hpp); :func:`lrchain.load` reads it back."""
+        _write(path, self.summary)
+
     def __repr__(self):
         return (f"TravellingWave(theta={self.theta}, A={self.amplitude}, omega={self.omega:.12g}, "
                 f"{self.harmonics} harmonics, residual {self.residual:.3g})")
+
+
+@dataclass(frozen=True, repr=False)
+class WaveBranch:
+    """The branch omega(A) of :func:`continue_branch`: numpy arrays ``amplitude``, ``omega``, ``omega_shift``
+    (omega - omega_linear), ``nls_omega_shift`` (h A^2/4) and ``harmonics``, one entry per wave; ``stopped``
+    (the reason there is no wave at the next amplitude, None when every amplitude has one) and the job's JSON
+    ``summary``. ``branch["omega"]`` reads a field as a dict would."""
+
+    theta: float
+    amplitude: np.ndarray
+    omega: np.ndarray
+    omega_shift: np.ndarray
+    nls_omega_shift: np.ndarray
+    harmonics: np.ndarray
+    stopped: str
+    summary: dict
+
+    def __getitem__(self, key):
+        return getattr(self, key)
+
+    def to_hdf5(self, path):
+        """Writes the branch with the C++ job layer's writer: the file ``lrchain wave continue --format hdf5``
+        writes; :func:`lrchain.load` reads it back."""
+        _write(path, self.summary)
+
+    def __repr__(self):
+        end = "" if self.stopped is None else f", stopped: {self.stopped}"
+        return f"WaveBranch(theta={self.theta}, {len(self.amplitude)} waves{end})"
+
+
+def _write(path, summary):
+    from . import _hdf5
+    from .hdf5 import checked_destination
+
+    _hdf5.write_wave(checked_destination(path), json.dumps(summary))
 
 
 def _model(model):
@@ -112,9 +154,9 @@ def solve(model=None, branch=None, theta=None, amplitude=None, ramp=_D["ramp"], 
 def continue_branch(model=None, branch=None, theta=None, amplitudes=None, harmonics=_D["harmonics"],
                     max_harmonics=_D["max_harmonics"], tail_tolerance=_D["tail_tolerance"], tolerance=_D["tolerance"],
                     max_iterations=_D["max_iterations"]):
-    """The branch omega(A) through increasing ``amplitudes``, each wave seeded by the previous one; returns a
-    dict of numpy arrays ``amplitude``, ``omega``, ``omega_shift``, ``nls_omega_shift``, ``harmonics`` and the
-    ``stopped`` reason (None when every amplitude has a wave), with the JSON ``summary``.
+    """The branch omega(A) through increasing ``amplitudes``, each wave seeded by the previous one; returns
+    :class:`WaveBranch`: numpy arrays ``amplitude``, ``omega``, ``omega_shift``, ``nls_omega_shift``,
+    ``harmonics`` and the ``stopped`` reason (None when every amplitude has a wave), with the JSON ``summary``.
 
     Example::
 
@@ -131,11 +173,19 @@ def continue_branch(model=None, branch=None, theta=None, amplitudes=None, harmon
     d = _run(model, "continue", branch, theta, None, _D["ramp"], amplitudes, harmonics, max_harmonics,
              tail_tolerance, tolerance, max_iterations)
     d.pop("profile_array", None)
+    return _branch(d)
+
+
+def _branch(d):
+    """The WaveBranch of the job's summary ``d`` (continue)."""
     waves = d["waves"]
-    return {"amplitude": np.array([w["amplitude"] for w in waves]), "omega": np.array([w["omega"] for w in waves]),
-            "omega_shift": np.array([w["omega_shift"] for w in waves]),
-            "nls_omega_shift": np.array([w["nls_omega_shift"] for w in waves]),
-            "harmonics": np.array([w["harmonics"] for w in waves]), "stopped": d["failure"], "summary": d}
+
+    def column(key, dtype=float):
+        return np.array([np.nan if w[key] is None else w[key] for w in waves], dtype=dtype)
+
+    return WaveBranch(theta=d["theta"], amplitude=column("amplitude"), omega=column("omega"),
+                      omega_shift=column("omega_shift"), nls_omega_shift=column("nls_omega_shift"),
+                      harmonics=column("harmonics", int), stopped=d["failure"], summary=d)
 
 
 @documented(_SECTION)

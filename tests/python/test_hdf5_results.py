@@ -108,12 +108,38 @@ def test_bright_cli_file_equals_python(tmp_path, cli):
     assert attrs["lrchain_result"] == "BrightBreather" and model["name"] == "fput" and model["parameters"]["a"] == 0
 
 
+def test_wave_cli_file_equals_python(tmp_path, cli):
+    fput = lrchain.load_model("fput")
+    cli("wave", "stability", "--model", "fput", "--theta", "2.5", "--amplitude", "0.02", "--k-points", "20",
+        "--out", tmp_path / "cli", "--format", "hdf5")
+    assert (tmp_path / "cli" / "growth.csv").is_file()  # the CSV files stay; result.h5 beside them
+    python = lrchain.wave.stability(fput, theta=2.5, amplitude=0.02, k_points=20)
+    python.to_hdf5(tmp_path / "python.h5")
+    loaded = lrchain.load(tmp_path / "cli")
+    assert isinstance(loaded, lrchain.wave.TravellingWave)
+    np.testing.assert_array_equal(loaded.profile, python.profile)  # the same job: the same bits
+    np.testing.assert_array_equal(loaded.stability["growth_rate"], python.stability["growth_rate"])
+    with h5py.File(tmp_path / "cli" / "result.h5", "r") as a, h5py.File(tmp_path / "python.h5", "r") as b:
+        for name in ("amplitude", "omega", "xi", "profile", "K", "growth_rate", "nls_growth_rate"):
+            np.testing.assert_array_equal(a[name][()], b[name][()])
+    attrs, model = _provenance(tmp_path / "cli" / "result.h5")
+    assert attrs["lrchain_result"] == "TravellingWave" and model["name"] == "fput"
+    # a branch (continue): WaveBranch, its omega(A) as in the JSON
+    printed = cli("wave", "continue", "--model", "fput", "--theta", "2.5", "--amplitudes", "0.05", "0.1",
+                  "--out", tmp_path / "branch", "--format", "hdf5")
+    branch = lrchain.load(tmp_path / "branch")
+    assert isinstance(branch, lrchain.wave.WaveBranch) and branch.stopped is None
+    assert branch["omega"].tolist() == [w["omega"] for w in printed["waves"]]
+
+
 def test_new_options_refuse_bad_input_and_write_nothing(tmp_path):
     blocker = tmp_path / "file"
     blocker.write_text("x")
     for args, names in ((["coeffs", "--branch", "optical", "--theta", "1", "--out", blocker / "d"], "file"),
                         (["regime", "map", "--format", "netcdf", "--out", tmp_path / "m"], "--format"),
-                        (["bright", "solve", "--model", "fput", "--omega-b", "2.2", "--format", "hdf5"], "--format")):
+                        (["bright", "solve", "--model", "fput", "--omega-b", "2.2", "--format", "hdf5"], "--format"),
+                        (["wave", "solve", "--model", "fput", "--theta", "2.5", "--amplitude", "0.1", "--format",
+                          "hdf5"], "--format")):
         done = subprocess.run([str(_cli_path()), *map(str, args)], capture_output=True, text=True, check=False)
         assert done.returncode == 2, (args, done.stderr)
         assert len(done.stderr.strip().splitlines()) == 1 and names in done.stderr, done.stderr

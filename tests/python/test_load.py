@@ -54,6 +54,8 @@ def _runs():
                                                          sites=41),
         "bright_branch": lambda: lrchain.bright.continue_branch(lrchain.load_model("klein_gordon"), omega_b=1.19,
                                                                 sites=81, points=3),
+        "wave": lambda: lrchain.wave.stability(fput(), theta=2.5, amplitude=0.02, k_points=10),
+        "wave_branch": lambda: lrchain.wave.continue_branch(fput(), theta=2.5, amplitudes=[0.05, 0.1]),
     }
 
 
@@ -64,8 +66,9 @@ def _assert_equal(a, b, where):
         for f in dataclasses.fields(a):
             if f.name == "source":  # Coefficients: the Params/Model evaluated, or the model read from the file
                 _assert_equal(a.model, b.model, f"{where}.model")
-            elif f.name != "summary" or type(a).__name__ == "BrightBreather":  # a bright breather's summary is
-                # exact JSON text in its file; the others' summary tree drops nulls, reads booleans as 0/1: by file
+            elif f.name != "summary" or type(a).__name__ in ("BrightBreather", "TravellingWave", "WaveBranch"):
+                # a bright breather's and a wave's summary is exact JSON text in its file; the others' summary
+                # tree drops nulls, reads booleans as 0/1: compared by file
                 _assert_equal(getattr(a, f.name), getattr(b, f.name), f"{where}.{f.name}")
     elif isinstance(a, dict):
         assert list(a) == list(b) if where.endswith("measures") else sorted(a) == sorted(b), where
@@ -99,7 +102,8 @@ def test_every_result_class_round_trips(tmp_path):
     # every class lrchain.load reads is covered (the writers' lrchain_result names)
     assert classes == {"BrightResult", "DriveResult", "ModulatedResult", "ModelBrightResult", "RingResult",
                        "DarkSolution", "Branch", "Evolution", "ModelDarkSolution", "ModelBranch", "ModelEvolution",
-                       "Coefficients", "Intervals", "RegimeMap", "BoundaryCurve", "BrightBreather", "BrightBranch"}
+                       "Coefficients", "Intervals", "RegimeMap", "BoundaryCurve", "BrightBreather", "BrightBranch",
+                       "TravellingWave", "WaveBranch"}
 
 
 def test_cli_out_folder_summary_and_sweep(tmp_path, cli, source_dir):

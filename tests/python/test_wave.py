@@ -60,3 +60,15 @@ def test_to_xarray_labels_profile_and_growth_rate(tmp_path):
     ds.to_netcdf(tmp_path / "wave.nc")
     solved = lrchain.wave.solve(lrchain.load_model("fput"), branch="acoustic", theta=2.5, amplitude=0.02).to_xarray()
     assert "growth_rate" not in solved and solved.profile.shape == (1, 2 * w.harmonics + 1)
+
+
+def test_branch_result_reads_as_before_and_labels_on_amplitude():
+    b = lrchain.wave.continue_branch(lrchain.load_model("fput"), theta=2.5, amplitudes=[0.05, 0.1, 0.2])
+    assert isinstance(b, lrchain.wave.WaveBranch) and b.stopped is None
+    assert b["omega"] is b.omega and b.omega.shape == (3,)  # the dict-style reading of earlier versions
+    ds = b.to_xarray()
+    assert ds.omega.dims == ("amplitude",) and ds.amplitude.values.tolist() == [0.05, 0.1, 0.2]
+    # omega - omega_linear approaches the NLS shift h A^2/4 as A -> 0 (docs/waves.md: O(A^4) apart)
+    ratio = ds.omega_shift.values / ds.nls_omega_shift.values
+    assert abs(ratio[0] - 1) < abs(ratio[-1] - 1) and abs(ratio[0] - 1) < 1e-2
+    assert ds.attrs["lrchain_result"] == "wave_branch" and ds.attrs["stopped"] == "null"

@@ -35,6 +35,9 @@ std::vector<JobOption> make_options() {
        "perturbation wavenumbers K_i = pi (i/k_points)^2, i = 1..k_points (dense near K = 0)"},
       {"unstable_tolerance", "--unstable-tolerance", "unstable_tolerance", {"stability"}, d.unstable_tolerance, false,
        "(0, 1)", "Re lambda above this x omega counts as growth"},
+      {"format", "--format", "", all, d.format, false, "csv|hdf5",
+       "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: the waves, the profile, the growth "
+       "rates, the summary; lrchain.load reads it)"},
   };
 }
 

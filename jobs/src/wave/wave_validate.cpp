@@ -46,6 +46,7 @@ void validate(const WaveConfig& c) {
   check_range("max_iterations", double(c.max_iterations), 1, 1000, false, false);
   check_range("k_points", double(c.k_points), 1, 100000, false, false);
   check_range("unstable_tolerance", c.unstable_tolerance, 0, 1, true, true);
+  if (c.format != "csv" && c.format != "hdf5") throw InvalidParameter("format", "must be csv or hdf5");
   std::error_code ec;
   if (!c.out.empty() && std::filesystem::exists(c.out, ec) && !std::filesystem::is_directory(c.out, ec))
     throw InputError("--out '" + c.out + "' exists and is not a directory");

@@ -1,10 +1,11 @@
-// write(WaveResult, out): profile.csv, branch.csv, growth.csv with growth.gp, summary.json (wave_job.hpp).
+// write(WaveResult, out): profile.csv, branch.csv, growth.csv with growth.gp, summary.json, result.h5 (wave_job.hpp).
 #include <numbers>
 #include <sstream>
 
 #include <fmt/format.h>
 
 #include "lrchain/jobs/output_lock.hpp"
+#include "lrchain/jobs/wave_hdf5.hpp"
 #include "lrchain/jobs/wave_job.hpp"
 #include "lrchain/sim/gnuplot_text.hpp"
 #include "lrchain/sim/output_files.hpp"
@@ -68,6 +69,7 @@ void write_growth(const WaveResult& r, const std::string& dir, sim::Figures& fig
 
 json write(const WaveResult& r, const std::filesystem::path& out) {
   json j = to_json(r);
+  const json summary = j;  // result.h5's: the summary without the figures
   const std::string dir = out.string();
   const OutputLock lock(dir);
   const sim::OutputListing earlier = sim::list_output_files(dir);
@@ -78,6 +80,7 @@ json write(const WaveResult& r, const std::filesystem::path& out) {
   }
   if (r.stability) write_growth(r, dir, figures);
   figures.finish(j);
+  if (r.config.format == "hdf5") write_wave_hdf5(out / "result.h5", summary);
   sim::write_file_atomic(dir, "summary.json", j.dump(2) + "\n");
   sim::record_stale_files(out, earlier, j);
   return j;

@@ -5,6 +5,7 @@
 
 #include "arrays.hpp"
 #include "lrchain/jobs/bright_breather_hdf5.hpp"
+#include "lrchain/jobs/wave_hdf5.hpp"
 #include "lrchain/jobs/coeffs_hdf5.hpp"
 #include "lrchain/jobs/regime_hdf5.hpp"
 
@@ -86,6 +87,11 @@ void write_bright_breather(const std::string& path, const std::string& summary, 
   jobs::bright_breather::write_bright_breather_hdf5(path, r);
 }
 
+// TravellingWave.to_hdf5 / WaveBranch.to_hdf5: everything is in the wave job's summary.
+void write_wave(const std::string& path, const std::string& summary) {
+  jobs::wave::write_wave_hdf5(path, json::parse(summary));
+}
+
 }  // namespace
 
 void register_regime_and_bright_writers(py::module_& m) {
@@ -101,6 +107,8 @@ void register_regime_and_bright_writers(py::module_& m) {
   m.def("write_boundary_curve", &write_boundary_curve, py::arg("path"), py::arg("model"), py::arg("branch"),
         py::arg("axis"), py::arg("y_name"), py::arg("cause"), py::arg("points"),
         "Writes one boundary curve with the job layer's writer.");
+  m.def("write_wave", &write_wave, py::arg("path"), py::arg("summary"),
+        "Writes a travelling wave or wave branch with the job layer's writer (lrchain wave ... --format hdf5).");
   m.def("write_bright_breather", &write_bright_breather, py::arg("path"), py::arg("summary"), py::arg("variables"),
         py::arg("z"), py::arg("seed"), py::arg("branch_z"),
         "Writes a bright breather or branch with the job layer's writer (lrchain bright ... --format hdf5).");

@@ -47,6 +47,7 @@ struct WaveConfig {
   Index max_iterations = 30;          // Newton iterations per amplitude, in [1, 1000]
   Index k_points = 200;               // stability: K_i = pi (i/k_points)^2, i = 1..k_points, in [1, 100000]
   double unstable_tolerance = 1e-9;   // stability: Re lambda > this x omega is growth, in (0, 1)
+  std::string format = "csv";         // files in `out`: csv (CSV and figures) or hdf5 (also result.h5)
   std::string out;                    // output directory ("": no files)
 };
 
@@ -77,7 +78,8 @@ WaveResult run(const WaveConfig& c);
 nlohmann::json to_json(const WaveResult& r);
 
 // profile.csv (xi and U_f of the last wave), branch.csv (every wave: A, omega and its NLS value, harmonics,
-// tail, residual), growth.csv (stability: K, exact and NLS growth rate) with growth.gp, summary.json; returns
+// tail, residual), growth.csv (stability: K, exact and NLS growth rate) with growth.gp, summary.json, and with
+// format "hdf5" result.h5 (wave_hdf5.hpp); returns
 // to_json(r) with "figures" and "figures_skipped".
 nlohmann::json write(const WaveResult& r, const std::filesystem::path& out);
 

@@ -1,0 +1,22 @@
+#pragma once
+// The HDF5 file of a travelling-wave job: `lrchain wave solve|continue|stability --out DIR --format
+// hdf5` (DIR/result.h5 beside the CSV files) and Python's TravellingWave.to_hdf5 and WaveBranch.to_hdf5
+// (the same file); lrchain.load reads it back. Everything comes from the job's JSON summary (to_json of
+// wave_job.hpp). Layout:
+//   root attributes  lrchain_result ("TravellingWave" for solve and stability, "WaveBranch" for continue),
+//                    lrchain_version, git_commit, model (JSON text: name, file_hash, parameters), branch,
+//                    theta, summary_json (the summary as text: nulls and booleans kept)
+//   datasets         amplitude, omega, omega_shift, nls_omega_shift, harmonics (one entry per wave: the
+//                    ramp, or the branch); a single wave also xi (2H+1 phases) and profile (fields x phases);
+//                    after stability K, growth_rate and nls_growth_rate
+//   /summary         the summary as a tree (objects groups, numbers and strings attributes, null left out)
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+namespace lrchain::jobs::wave {
+
+// Writes `summary` (to_json of a WaveResult, or the same JSON a front end kept) to `path`.
+void write_wave_hdf5(const std::filesystem::path& path, const nlohmann::json& summary);
+
+}  // namespace lrchain::jobs::wave

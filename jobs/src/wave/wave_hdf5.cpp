@@ -1,0 +1,64 @@
+// The HDF5 file of a travelling-wave job (lrchain/jobs/wave_hdf5.hpp).
+#include "lrchain/jobs/wave_hdf5.hpp"
+
+#include <string>
+#include <vector>
+
+#include "lrchain/sim/hdf5_tree.hpp"
+#include "lrchain/sim/result_hdf5.hpp"
+
+namespace lrchain::jobs::wave {
+
+using nlohmann::json;
+using sim::Hdf5Element;
+
+namespace {
+
+// The numbers of `key` in every wave of the summary (null, e.g. an undefined NLS shift, as NaN).
+std::vector<double> per_wave(const json& waves, const char* key) {
+  std::vector<double> values;
+  for (const json& w : waves) values.push_back(w.at(key).is_null() ? std::nan("") : w.at(key).get<double>());
+  return values;
+}
+
+void write_vector(sim::Hdf5TreeFile& file, const std::string& name, const std::vector<double>& v) {
+  file.write_dataset(name, Hdf5Element::float64, v.data(), {v.size()});
+}
+
+}  // namespace
+
+void write_wave_hdf5(const std::filesystem::path& path, const json& s) {
+  sim::Hdf5TreeFile file(path);
+  const bool branch = s.at("step") == "continue";
+  file.write_attribute("/", "lrchain_result", std::string(branch ? "WaveBranch" : "TravellingWave"));
+  sim::write_provenance_attributes(file, s);
+  file.write_attribute("/", "branch", s.at("branch").get<std::string>());
+  file.write_attribute("/", "theta", s.at("theta").get<double>());
+  file.write_attribute("/", "summary_json", s.dump());
+  const json& waves = s.at("waves");
+  for (const char* key : {"amplitude", "omega", "omega_shift", "nls_omega_shift", "harmonics"})
+    write_vector(file, std::string("/") + key, per_wave(waves, key));
+  if (s.contains("profile")) {
+    const json& p = s["profile"];
+    const std::vector<double> xi = p.at("xi").get<std::vector<double>>();
+    std::vector<double> profile;
+    const std::size_t fields = p.at("fields").size();
+    for (std::size_t f = 0; f < fields; ++f) {
+      const auto values = p["fields"].at("u" + std::to_string(f)).get<std::vector<double>>();
+      profile.insert(profile.end(), values.begin(), values.end());
+    }
+    write_vector(file, "/xi", xi);
+    file.write_dataset("/profile", Hdf5Element::float64, profile.data(), {fields, xi.size()});
+  }
+  if (s.contains("stability") && s["stability"].is_object()) {
+    const json& st = s["stability"];
+    write_vector(file, "/K", st.at("k").get<std::vector<double>>());
+    write_vector(file, "/growth_rate", st.at("growth_rate").get<std::vector<double>>());
+    write_vector(file, "/nls_growth_rate", st.at("nls_growth_rate").get<std::vector<double>>());
+  }
+  file.create_group("/summary");
+  sim::write_json_tree(file, "/summary", s);
+  file.commit();
+}
+
+}  // namespace lrchain::jobs::wave
