@@ -1,4 +1,4 @@
-// The "dark continue" and "regime intervals" sweep jobs (sweep/study_jobs.hpp): their base
+// The "dark continue", "regime intervals" and "wave stability" sweep jobs (sweep/study_jobs.hpp): their base
 // configs' schemas, and one point run in-process and reduced to scalars and rows.
 #include "lrchain/jobs/sweep/study_jobs.hpp"
 
@@ -22,6 +22,7 @@
 #include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/sim/dark/dark_ansatz.hpp"
 #include "model_jobs.hpp"
+#include "wave_study.hpp"
 
 namespace lrchain::jobs::sweep {
 
@@ -341,7 +342,7 @@ JobResult run_regime(const Document& doc, const ModelSource* source) {
 }  // namespace
 
 const std::vector<std::string>& study_kinds() {
-  static const std::vector<std::string> k{"dark continue", "regime intervals"};
+  static const std::vector<std::string> k{"dark continue", "regime intervals", "wave stability"};
   return k;
 }
 
@@ -351,19 +352,23 @@ bool is_study_kind(std::string_view kind) {
 
 const TableSchema& study_schema(std::string_view kind) {
   static const StudySchemas schemas{{"dark continue", study_top("dark continue", "dark", dark_table(), true)},
-                                    {"regime intervals", study_top("regime intervals", "regime", regime_table(), false)}};
+                                    {"regime intervals", study_top("regime intervals", "regime", regime_table(), false)},
+                                    {"wave stability", study_top("wave stability", "wave", wave_table(), true)}};
   return schema_of(schemas, kind);
 }
 
 const TableSchema& model_study_schema(std::string_view kind) {
   static const StudySchemas schemas{
       {"dark continue", model_study_top("dark continue", "dark", model_dark_table(), true)},
-      {"regime intervals", model_study_top("regime intervals", "regime", regime_table(), false)}};
+      {"regime intervals", model_study_top("regime intervals", "regime", regime_table(), false)},
+      {"wave stability", model_study_top("wave stability", "wave", wave_table(), true)}};
   return schema_of(schemas, kind);
 }
 
 void check_study_config(std::string_view kind, const Document& doc, const ModelSource* model) {
-  if (model) {
+  if (kind == "wave stability") {
+    check_wave_base(doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model);
+  } else if (model) {
     const Model point = model->model(model_parameter_values(check(doc, model_study_schema(kind))));
     if (kind == "dark continue") read_model_dark(doc, point, *model);
   } else if (kind == "dark continue")
@@ -373,15 +378,18 @@ void check_study_config(std::string_view kind, const Document& doc, const ModelS
 }
 
 std::vector<std::string> study_scalar_names(std::string_view kind, const ModelDefinition* model) {
+  if (kind == "wave stability") return wave_scalar_names();
   return kind == "dark continue" ? dark_scalar_names() : regime_scalar_names(model);
 }
 
 std::vector<std::string> study_row_names(std::string_view kind) {
   if (kind == "dark continue") return dark_row_names();
+  if (kind == "wave stability") return wave_row_names();
   return {"branch", "lo", "hi", "length", "lo_cause", "hi_cause"};
 }
 
 std::string study_rows_legend(std::string_view kind, const ModelDefinition* model) {
+  if (kind == "wave stability") return wave_rows_legend();
   if (kind == "dark continue")
     return "one row per branch point in continuation order; stability: 0 stable, +1 real, +2 period doubling, "
            "+4 oscillatory instability; part: 0 before the first turning point, +1 after each; max_real, "
@@ -396,7 +404,10 @@ std::string study_rows_legend(std::string_view kind, const ModelDefinition* mode
 JobResult run_study(std::string_view kind, const Document& doc, const RunControl& control, const ModelSource* model) {
   JobResult r;
   try {
-    r = kind == "dark continue" ? run_dark(doc, control, model) : run_regime(doc, model);
+    if (kind == "wave stability")
+      r = run_wave(doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model);
+    else
+      r = kind == "dark continue" ? run_dark(doc, control, model) : run_regime(doc, model);
   } catch (const Interrupted&) {
     throw;
   } catch (const std::runtime_error& e) {  // NumericalFailure, the contact integrator's step underflow

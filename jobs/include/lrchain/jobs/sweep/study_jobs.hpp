@@ -9,6 +9,10 @@
 //   "regime intervals": the focusing theta-intervals of both branches (regime/focusing_intervals.hpp),
 //                       as `lrchain regime intervals`; scalars: count, total length, first and last
 //                       interval per branch; one row per interval.
+//   "wave stability":   the exact travelling wave and its Floquet-Bloch growth rates (wave_job.hpp),
+//                       as `lrchain wave stability`; scalars: omega and its shift beside the NLS's,
+//                       stable, the largest growth rate and its K beside the NLS's, ...; one row per
+//                       unstable band.
 // Each base is of the resonant chain ([model] rho, ...) or of a model file (`model = "models/x.toml"`
 // and its [parameters], loaded once per sweep by Job: jobs::ModelSource), as `lrchain dark continue
 // --model` and `lrchain regime intervals --model` run it.
@@ -23,10 +27,10 @@
 
 namespace lrchain::jobs::sweep {
 
-// "dark continue" and "regime intervals".
+// "dark continue", "regime intervals" and "wave stability".
 const std::vector<std::string>& study_kinds();
 bool is_study_kind(std::string_view kind);
-// The base config's schema of a study kind (top level: experiment, [model], [dark] or [regime]).
+// The base config's schema of a study kind (top level: experiment, [model], [dark], [regime] or [wave]).
 const lrchain::config::TableSchema& study_schema(std::string_view kind);
 // The schema of a model-file base of a study kind (experiment, model = "FILE", [parameters], and
 // [dark] or [regime]).

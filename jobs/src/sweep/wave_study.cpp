@@ -1,0 +1,162 @@
+// The "wave stability" sweep job (wave_study.hpp): the wave job's Config read from [wave], run, and
+// its result reduced to scalars and rows.
+#include "wave_study.hpp"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/jobs/wave_job.hpp"
+#include "model_jobs.hpp"
+
+namespace lrchain::jobs::sweep {
+
+using namespace lrchain::config;
+using jobs::wave::WaveConfig;
+
+namespace {
+
+constexpr double no_value = std::numeric_limits<double>::quiet_NaN();
+
+// The wave job's options a sweep point takes: those of the stability step but the output's.
+bool sweep_key(const JobOption& o) {
+  return !o.python.empty() && std::find(o.steps.begin(), o.steps.end(), "stability") != o.steps.end();
+}
+
+// The base's model at this point: a model file's with its [parameters], or the shipped resonant
+// chain with [model]'s rho, kappa, delta0 and alpha.
+struct PointModel {
+  std::shared_ptr<const ModelSource> chain;  // the resonant chain's source (no model file)
+  std::optional<Model> model;
+  const lrchain_lattice_kernels* kernels = nullptr;
+};
+
+PointModel point_model(const CheckedTable& root, const ModelSource* source) {
+  PointModel p;
+  if (source) {
+    p.model.emplace(source->model(model_parameter_values(root)));
+    p.kernels = source->lattice().kernels.get();
+    return p;
+  }
+  p.chain = std::make_shared<const ModelSource>(ModelSource::shipped("resonant_chain", "[model]"));
+  std::vector<std::pair<std::string, double>> values;
+  if (auto m = root.table("model"))
+    for (const char* name : {"alpha", "delta0", "kappa", "rho"})
+      if (double v = 0; m->read(name, v)) values.emplace_back(name, v);
+  p.model.emplace(p.chain->model(values));
+  p.kernels = p.chain->lattice().kernels.get();
+  return p;
+}
+
+// [wave] into the job's config (stability step) at the point's model, with the job's checks.
+WaveConfig read_wave(const Document& doc, const CheckedTable& root, const PointModel& p) {
+  WaveConfig c;
+  c.step = jobs::wave::WaveStep::stability;
+  c.model = &*p.model;
+  c.kernels = p.kernels;
+  const CheckedTable w = *root.table("wave");
+  w.read("branch", c.branch);
+  w.read("theta", c.theta);
+  w.read("amplitude", c.amplitude);
+  std::int64_t integer = 0;
+  if (w.read("ramp", integer)) c.ramp = Index(integer);
+  if (w.read("harmonics", integer)) c.initial_harmonics = Index(integer);
+  if (w.read("max_harmonics", integer)) c.max_harmonics = Index(integer);
+  if (w.read("max_iterations", integer)) c.max_iterations = Index(integer);
+  if (w.read("k_points", integer)) c.k_points = Index(integer);
+  w.read("tail_tolerance", c.tail_tolerance);
+  w.read("tolerance", c.tolerance);
+  w.read("unstable_tolerance", c.unstable_tolerance);
+  try {
+    jobs::wave::validate(c);
+  } catch (const InvalidParameter& e) {  // the Config key, spelled as [wave] names it
+    std::string key = e.parameter();
+    for (const JobOption& o : jobs::wave::wave_options())
+      if (o.key == key) key = o.python;
+    const std::string what = e.what(), prefix = "invalid " + e.parameter() + ": ";
+    throw InvalidParameter(fmt::format("[wave] {} in {}", key, doc.source()),
+                           what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+  }
+  return c;
+}
+
+}  // namespace
+
+std::shared_ptr<const TableSchema> wave_table() {
+  std::vector<KeySchema> keys;
+  for (const JobOption& o : jobs::wave::wave_options()) {
+    if (!sweep_key(o)) continue;
+    const std::string default_text = o.default_value.is_null() ? (o.default_note.empty() ? "none" : o.default_note)
+                                                               : o.default_value.dump();
+    const std::string meaning = o.doc + (o.range.empty() ? "" : " (" + o.range + ")");
+    if (o.key == "branch") keys.push_back(string(o.python, default_text, meaning));
+    else if (o.default_value.is_number_integer())
+      keys.push_back(integer(o.python, 1, 1'000'000, default_text, meaning));
+    else keys.push_back(number(o.python, NumberRange::any(), default_text, meaning));
+    if (o.required) keys.back() = keys.back().require();
+  }
+  return std::make_shared<const TableSchema>(
+      TableSchema{"an exact travelling wave and its Floquet-Bloch growth rates, as `lrchain wave stability`", keys,
+                  std::nullopt});
+}
+
+const std::vector<std::string>& wave_scalar_names() {
+  static const std::vector<std::string> n{"omega",       "omega_linear",     "omega_shift", "nls_omega_shift",
+                                          "harmonics",   "residual",         "stable",      "largest_rate",
+                                          "at_k",        "nls_largest_rate", "nls_k",       "unstable_bands",
+                                          "h_tilde",     "focusing"};
+  return n;
+}
+
+const std::vector<std::string>& wave_row_names() {
+  static const std::vector<std::string> n{"k_from", "k_to", "largest_rate", "at_k"};
+  return n;
+}
+
+std::string wave_rows_legend() {
+  return "one row per band of perturbation wavenumbers K with growth (Re lambda above unstable_tolerance x omega): "
+         "its ends, its largest rate and the K of it";
+}
+
+void check_wave_base(const Document& doc, const CheckedTable& root, const ModelSource* source) {
+  const PointModel p = point_model(root, source);
+  read_wave(doc, root, p);
+}
+
+JobResult run_wave(const Document& doc, const CheckedTable& root, const ModelSource* source) {
+  const PointModel p = point_model(root, source);
+  const WaveConfig c = read_wave(doc, root, p);
+  const jobs::wave::WaveResult w = jobs::wave::run(c);
+  JobResult r;
+  if (w.failure || !w.stability) {
+    r.status = PointStatus::numerical_failure;
+    r.reason = fmt::format("no wave at amplitude {}: {}", w.failed_at.value_or(c.amplitude), w.failure.value_or("no stability"));
+    return r;
+  }
+  const nlohmann::json j = jobs::wave::to_json(w);  // the command's numbers, NLS predictions included
+  const auto& s = j.at("stability");
+  const auto number = [](const nlohmann::json& x) { return x.is_null() ? no_value : x.get<double>(); };
+  const auto& wave = w.waves.back();
+  r.scalars = {wave.omega,
+               wave.omega_linear,
+               wave.omega - wave.omega_linear,
+               number(j.at("waves").back().at("nls_omega_shift")),
+               double(wave.harmonics),
+               wave.residual,
+               s.at("stable").get<bool>() ? 1.0 : 0.0,
+               s.at("largest_rate").get<double>(),
+               number(s.at("at_k")),
+               number(s.at("nls_largest_rate")),
+               number(s.at("nls_k")),
+               double(s.at("bands").size()),
+               number(j.at("nls").at("h_tilde")),
+               j.at("nls").at("regime") == "focusing" ? 1.0 : 0.0};
+  for (const auto& b : w.stability->bands) r.rows.insert(r.rows.end(), {b.k_from, b.k_to, b.largest_rate, b.at_k});
+  r.status = PointStatus::ok;
+  return r;
+}
+
+}  // namespace lrchain::jobs::sweep

@@ -1,0 +1,30 @@
+#pragma once
+// The "wave stability" sweep job (docs/sweeps.md): at every point the exact travelling wave of
+// `lrchain wave stability` (jobs/wave_job.hpp) and its Floquet-Bloch growth rates, reduced to scalars
+// (omega, its shift and the NLS's, the largest growth rate and its K beside the NLS's, stable or not)
+// and one row per unstable band. Its base: [wave] with the job's options, and the resonant chain's
+// [model] or a model file.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lrchain/config/strict_toml.hpp"
+#include "lrchain/jobs/model_source.hpp"
+#include "lrchain/jobs/sweep/job.hpp"
+
+namespace lrchain::jobs::sweep {
+
+// [wave]: the options of `lrchain wave stability` (keys as Python names them), from the job's schema.
+std::shared_ptr<const lrchain::config::TableSchema> wave_table();
+const std::vector<std::string>& wave_scalar_names();
+const std::vector<std::string>& wave_row_names();
+std::string wave_rows_legend();
+// `root`: the base checked against its schema; `source`: a model-file base's model, else null (the
+// resonant chain with [model]). The wave job's checks, InvalidParameter naming "[wave] KEY in FILE".
+void check_wave_base(const lrchain::config::Document& doc, const lrchain::config::CheckedTable& root,
+                     const ModelSource* source);
+// One point: the wave, its stability and the reduction; no wave at an amplitude is numerical_failure.
+JobResult run_wave(const lrchain::config::Document& doc, const lrchain::config::CheckedTable& root,
+                   const ModelSource* source);
+
+}  // namespace lrchain::jobs::sweep
