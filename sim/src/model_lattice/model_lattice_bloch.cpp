@@ -80,11 +80,8 @@ std::vector<BlochMode> bloch_modes(const lrchain_lattice_kernels& kernels, const
     BlochMode mode;
     mode.omega = branch_frequency(kernels, p, i, theta);
     const auto v = p.solver.eigenvectors().col(Eigen::Index(i));
-    if (std::abs(v(0)) <= 1e-10 * v.cwiseAbs().maxCoeff())
-      throw InvalidParameter("theta", fmt::format("{}: the first field is at rest in a Bloch mode at theta = {}, so "
-                                                  "the NLS amplitude is undefined there; choose another theta",
-                                                  kernels.model_name, theta));
-    for (Eigen::Index f = 0; f < v.size(); ++f) mode.kernel.push_back(v(f) / v(0));
+    if (std::abs(v(0)) > 1e-10 * v.cwiseAbs().maxCoeff())  // else the first field is at rest: no kernel
+      for (Eigen::Index f = 0; f < v.size(); ++f) mode.kernel.push_back(v(f) / v(0));
     modes.push_back(std::move(mode));
   }
   return modes;
@@ -119,6 +116,10 @@ BlochMode bloch_mode(const Model& model, const lrchain_lattice_kernels& kernels,
     throw NumericalFailure(fmt::format("{}: the lattice code gives omega = {:.12g} at theta = {}, the coefficient "
                                        "evaluators {:.12g}; they do not describe the same lattice",
                                        model.name(), modes[branch].omega, theta, nls.omega));
+  if (modes[branch].kernel.empty())
+    throw InvalidParameter("theta", fmt::format("{}: the first field is at rest in the Bloch mode of branch {} at theta = "
+                                                "{}, so the NLS amplitude is undefined there; choose another theta",
+                                                model.name(), model.definition().branch_names[std::size_t(branch)], theta));
   return modes[branch];
 }
 

@@ -13,12 +13,13 @@ namespace lrchain::sim {
 
 struct BlochMode {
   double omega = 0;                             // frequency of the branch
-  std::vector<std::complex<double>> kernel;     // Bloch vector per field, kernel[0] = 1
+  std::vector<std::complex<double>> kernel;     // Bloch vector per field, kernel[0] = 1; empty where the first field is at rest
 };
 
-// Every branch's mode at theta, in increasing frequency (the branch order of the model file).
-// Throws InvalidParameter("theta", ...) where a branch frequency is not real and positive or the
-// first field does not move (kernel[0] = 0: the NLS amplitude is undefined there).
+// Every branch's mode at theta, in increasing frequency (the branch order of the model file). A mode
+// whose first field does not move has an empty kernel (the NLS amplitude is undefined there; e.g. the
+// light beads of a diatomic chain's acoustic mode at theta = pi). Throws InvalidParameter("theta", ...)
+// where a branch frequency is not real and positive.
 std::vector<BlochMode> bloch_modes(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
                                    double theta);
 
@@ -28,7 +29,8 @@ std::vector<double> branch_frequencies(const lrchain_lattice_kernels& kernels, c
 
 // Branch `branch` of bloch_modes, checked against the model's own dispersion relation: throws
 // NumericalFailure when the lattice kernels and the coefficient evaluators disagree on omega by
-// more than 1e-9 (relative): they would not describe the same lattice.
+// more than 1e-9 (relative): they would not describe the same lattice; InvalidParameter("theta")
+// when that branch's first field is at rest.
 BlochMode bloch_mode(const Model& model, const lrchain_lattice_kernels& kernels, Index branch, double theta);
 
 // The lattice parameters of `model` (its first parameter_count inputs, in the file's order).
