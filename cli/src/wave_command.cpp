@@ -4,6 +4,9 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
+#include <optional>
+
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
@@ -14,6 +17,7 @@
 #include "lattice_job.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
+#include "stop_signals.hpp"
 
 namespace lrchain::cli {
 
@@ -63,10 +67,17 @@ void run_job(const WaveArgs& a, WaveStep step, const CLI::App& cmd) {
   config.step = step;
   const Model model = load_selected_model(a.model, cmd, a.chain, true);
   const LatticeCode code = validated_lattice_job(config, model, a.model, wave_options());
+  std::optional<StopSignals> signals;  // a ring run (fate) stops at its next carrier period, with its files so far
+  if (step == WaveStep::fate) {
+    signals.emplace();
+    config.stop = StopSignals::flag();
+  }
   const WaveResult r = run(config);
   const nlohmann::json j = config.out.empty() ? to_json(r) : write(r, config.out);
   std::printf("%s\n", j.dump(a.json_out ? -1 : 2).c_str());
   std::fflush(stdout);
+  if (r.fate && r.fate->interrupted)
+    throw Interrupted(StopSignals::received(), fmt::format("interrupted at t = {:.6g}", r.fate->t.back()));
   if (r.failure) throw NumericalFailure(*r.failure);
 }
 
@@ -100,6 +111,21 @@ void register_wave(CLI::App& app) {
   add_number(*stab, "--unstable-tolerance", args->config.unstable_tolerance, wave_help("unstable_tolerance"));
   add_examples(*stab, {"lrchain wave stability --model fput --branch acoustic --theta 2.5 --amplitude 0.02 --out out/wave"});
   stab->callback([args, stab] { run_job(*args, WaveStep::stability, *stab); });
+  auto* fate = wave->add_subcommand(
+      "fate", "What the wave becomes: stability at the nearest ring wavenumber, then the wave plus noise on a ring of "
+              "--ring-sites sites for --periods carrier periods, classified stable, modulated, localized or "
+              "disordered by its deviation, energy participation and spectral entropy (docs/waves.md)");
+  add_common(*fate, *args);
+  add_amplitude(*fate, *args);
+  add_integer(*fate, "--k-points", args->config.k_points, 0, 1000000, wave_help("k_points"));
+  add_number(*fate, "--unstable-tolerance", args->config.unstable_tolerance, wave_help("unstable_tolerance"));
+  add_integer(*fate, "--ring-sites", args->config.ring_sites, 0, 1000000, wave_help("ring_sites"));
+  add_number(*fate, "--noise", args->config.noise, wave_help("noise"));
+  add_integer(*fate, "--seed", args->config.seed, 0, 2147483647, wave_help("seed"));
+  add_number(*fate, "--periods", args->config.periods, wave_help("periods"));
+  add_integer(*fate, "--steps-per-period", args->config.steps_per_period, 0, 1000000, wave_help("steps_per_period"));
+  add_examples(*fate, {"lrchain wave fate --model fput --theta 2.5 --amplitude 0.2 --periods 500 --out out/fate"});
+  fate->callback([args, fate] { run_job(*args, WaveStep::fate, *fate); });
 }
 
 }  // namespace lrchain::cli

@@ -46,6 +46,7 @@ class TravellingWave:
     nls_omega_shift: float
     stability: dict
     summary: dict
+    fate: dict = None
 
     def to_hdf5(self, path):
         """Writes the wave with the C++ job layer's writer: the file ``lrchain wave solve|stability --format
@@ -104,7 +105,8 @@ def _model(model):
 def _run(model, step, branch, theta, amplitude=_D["amplitude"], ramp=_D["ramp"], amplitudes=(),
          harmonics=_D["harmonics"], max_harmonics=_D["max_harmonics"], tail_tolerance=_D["tail_tolerance"],
          tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], k_points=_D["k_points"],
-         unstable_tolerance=_D["unstable_tolerance"]):
+         unstable_tolerance=_D["unstable_tolerance"], ring_sites=_D["ring_sites"], noise=_D["noise"], seed=_D["seed"],
+         periods=_D["periods"], steps_per_period=_D["steps_per_period"]):
     from .errors import InvalidParameterError
 
     model = _model(model)
@@ -114,7 +116,8 @@ def _run(model, step, branch, theta, amplitude=_D["amplitude"], ramp=_D["ramp"],
         raise InvalidParameterError("invalid amplitude: required (> 0)", "amplitude")
     return python_names(lambda: _lrchain.wave_job(
         model, step, "" if branch is None else branch, theta, 0.0 if amplitude is None else amplitude, ramp, list(np.atleast_1d(amplitudes)),
-        harmonics, max_harmonics, tail_tolerance, tolerance, max_iterations, k_points, unstable_tolerance))
+        harmonics, max_harmonics, tail_tolerance, tolerance, max_iterations, k_points, unstable_tolerance, ring_sites,
+        noise, seed, periods, steps_per_period))
 
 
 def _wave(d):
@@ -124,10 +127,15 @@ def _wave(d):
         s = dict(s)
         for key in ("k", "growth_rate", "nls_growth_rate"):
             s[key] = np.array(s[key])
+    f = d.get("fate")
+    if f is not None:
+        f = dict(f)
+        for key in ("t", "deviation", "participation", "entropy", "energy_density"):
+            f[key] = np.array(f[key])
     return TravellingWave(theta=d["theta"], amplitude=w["amplitude"], omega=w["omega"], omega_linear=d["linear"]["omega"],
                           harmonics=w["harmonics"], tail=w["tail"], residual=w["residual"],
                           xi=np.array(d["profile"]["xi"]), profile=d.pop("profile_array"),
-                          nls_omega_shift=w["nls_omega_shift"], stability=s, summary=d)
+                          nls_omega_shift=w["nls_omega_shift"], stability=s, summary=d, fate=f)
 
 
 @documented(_SECTION)
@@ -207,3 +215,29 @@ def stability(model=None, branch=None, theta=None, amplitude=None, ramp=_D["ramp
     """
     return _wave(_run(model, "stability", branch, theta, amplitude, ramp, (), harmonics, max_harmonics,
                       tail_tolerance, tolerance, max_iterations, k_points, unstable_tolerance))
+
+
+@documented(_SECTION)
+@real_numbers
+def fate(model=None, branch=None, theta=None, amplitude=None, ramp=_D["ramp"], harmonics=_D["harmonics"],
+         max_harmonics=_D["max_harmonics"], tail_tolerance=_D["tail_tolerance"], tolerance=_D["tolerance"],
+         max_iterations=_D["max_iterations"], k_points=_D["k_points"], unstable_tolerance=_D["unstable_tolerance"],
+         ring_sites=_D["ring_sites"], noise=_D["noise"], seed=_D["seed"], periods=_D["periods"],
+         steps_per_period=_D["steps_per_period"]):
+    """What the wave becomes (``lrchain wave fate``): :func:`stability` at the ring's nearest wavenumber
+    2 pi j / ``ring_sites``, then the wave plus noise on that ring; returns :class:`TravellingWave` with
+    ``fate`` set: the ``fate`` (stable, intact, modulated, localized or disordered), ``broke_at`` and the
+    ``predicted_breakup``, numpy series ``t``, ``deviation``, ``participation``, ``entropy`` (one per carrier
+    period) and the final ``energy_density`` (docs/waves.md, "The fate of a wave"). Ctrl-C stops the ring
+    run at its next period with ``KeyboardInterrupt``.
+
+    Example::
+
+        >>> import lrchain
+        >>> w = lrchain.wave.fate(lrchain.load_model("fput"), theta=2.5, amplitude=0.3, ring_sites=64, periods=400)
+        >>> w.fate["fate"] in ("modulated", "localized", "disordered"), w.fate["broke_at"] is not None
+        (True, True)
+    """
+    return _wave(_run(model, "fate", branch, theta, amplitude, ramp, (), harmonics, max_harmonics, tail_tolerance,
+                      tolerance, max_iterations, k_points, unstable_tolerance, ring_sites, noise, seed, periods,
+                      steps_per_period))

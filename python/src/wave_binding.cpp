@@ -1,4 +1,4 @@
-// lrchain.wave.solve|continue_branch|stability(model, ...): exact periodic travelling waves of any model and
+// lrchain.wave.solve|continue_branch|stability|fate(model, ...): exact periodic travelling waves of any model and
 // their Floquet-Bloch growth rates by the wave job (lrchain/jobs/wave_job.hpp), run without the GIL. The
 // result as the job's JSON summary (a dict) with the profile (fields, 2H+1) and the growth rates as numpy arrays.
 #include <algorithm>
@@ -23,9 +23,13 @@ using namespace lrchain::jobs::wave;
 py::dict wave_job(const LoadedModel& loaded, const std::string& step, const std::string& branch, double theta,
                   double amplitude, double ramp, const std::vector<double>& amplitudes, double harmonics,
                   double max_harmonics, double tail_tolerance, double tolerance, double max_iterations,
-                  double k_points, double unstable_tolerance) {
+                  double k_points, double unstable_tolerance, double ring_sites, double noise, double seed,
+                  double periods, double steps_per_period) {
   WaveConfig c;
-  c.step = step == "continue" ? WaveStep::branch : step == "stability" ? WaveStep::stability : WaveStep::solve;
+  c.step = step == "continue"    ? WaveStep::branch
+           : step == "stability" ? WaveStep::stability
+           : step == "fate"      ? WaveStep::fate
+                                 : WaveStep::solve;
   c.model = &loaded.model;
   c.kernels = &lattice_kernels(loaded);
   c.branch = branch;
@@ -40,6 +44,11 @@ py::dict wave_job(const LoadedModel& loaded, const std::string& step, const std:
   c.max_iterations = integer_keyword(max_iterations, "max_iterations", 1, config::int32_most);
   c.k_points = integer_keyword(k_points, "k_points", 1, config::int32_most);
   c.unstable_tolerance = unstable_tolerance;
+  c.ring_sites = integer_keyword(ring_sites, "ring_sites", 1, config::int32_most);
+  c.noise = noise;
+  c.seed = integer_keyword(seed, "seed", 1, config::int32_most);
+  c.periods = periods;
+  c.steps_per_period = integer_keyword(steps_per_period, "steps_per_period", 1, config::int32_most);
   try {
     validate(c);
   } catch (const InvalidParameter& e) {
@@ -48,6 +57,7 @@ py::dict wave_job(const LoadedModel& loaded, const std::string& step, const std:
     throw;
   }
   InterruptGuard guard;
+  c.stop = guard.flag();
   const WaveResult r = guard.run([&] { return run(c); });
   if (r.failure && (c.step != WaveStep::branch || r.waves.empty())) throw NumericalFailure(*r.failure);
   nlohmann::json j = to_json(r);
@@ -67,7 +77,8 @@ void register_wave(py::module_& m) {
   m.def("wave_job", &wave_job, py::arg("model"), py::arg("step"), py::arg("branch"), py::arg("theta"),
         py::arg("amplitude"), py::arg("ramp"), py::arg("amplitudes"), py::arg("harmonics"), py::arg("max_harmonics"),
         py::arg("tail_tolerance"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("k_points"),
-        py::arg("unstable_tolerance"));
+        py::arg("unstable_tolerance"), py::arg("ring_sites"), py::arg("noise"), py::arg("seed"), py::arg("periods"),
+        py::arg("steps_per_period"));
 }
 
 }  // namespace lrchain::python

@@ -51,6 +51,9 @@ const std::map<std::string, std::vector<std::string>>& base_commands() {
       {"wave stability",
        {"--model", "fput", "--branch", "acoustic", "--theta", "2.5", "--amplitude", "0.02", "--k-points", "20", "--out",
         "@OUT@"}},
+      {"wave fate",
+       {"--model", "fput", "--theta", "2.5", "--amplitude", "0.02", "--k-points", "10", "--ring-sites", "16", "--periods",
+        "10", "--out", "@OUT@"}},
       {"reproduce", {"--only", "coefficients", "--jobs", "1", "--out", "@OUT@"}},
       {"sweep",
        {"--config", LRCHAIN_SOURCE_DIR "/tests/corpus/sweep_small.toml", "--output", "@TMP@/sweep.h5", "--threads", "1",
@@ -138,6 +141,7 @@ const std::vector<OutputOption>& output_options() {
       {"dark evolve", "out", false},        {"reproduce", "out", false},
       {"bright solve", "out", false},       {"bright floquet", "out", false},  {"bright continue", "out", false},
       {"wave solve", "out", false},         {"wave continue", "out", false},   {"wave stability", "out", false},
+      {"wave fate", "out", false},
       {"sweep", "output", true},
   };
   return outputs;

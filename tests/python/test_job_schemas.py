@@ -31,7 +31,7 @@ COMMANDS = {
     "regime map": [["regime", "map"]],
     "regime curves": None,  # Python only (lrchain.regime.boundary_curves)
     "regime thresholds": [["regime", "thresholds"]],
-    "wave": [["wave", "solve"], ["wave", "continue"], ["wave", "stability"]],
+    "wave": [["wave", "solve"], ["wave", "continue"], ["wave", "stability"], ["wave", "fate"]],
 }
 # job -> the Python functions that run it
 FUNCTIONS = {
@@ -47,7 +47,7 @@ FUNCTIONS = {
     "regime map": [regime.theta_rho_map, regime.theta_parameter_map, regime.delta0_omega_map],
     "regime curves": [regime.boundary_curves],
     "regime thresholds": [regime.thresholds],
-    "wave": [wave.solve, wave.continue_branch, wave.stability],
+    "wave": [wave.solve, wave.continue_branch, wave.stability, wave.fate],
 }
 # Options a command has that are no job option: how it reports (--out, --json, figures, files), the model
 # (--model, --set and the resonant chain's parameters, lrchain/params.hpp) and the memory limit.

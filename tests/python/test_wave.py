@@ -72,3 +72,19 @@ def test_branch_result_reads_as_before_and_labels_on_amplitude():
     ratio = ds.omega_shift.values / ds.nls_omega_shift.values
     assert abs(ratio[0] - 1) < abs(ratio[-1] - 1) and abs(ratio[0] - 1) < 1e-2
     assert ds.attrs["lrchain_result"] == "wave_branch" and ds.attrs["stopped"] == "null"
+
+
+def test_fate_gives_the_ring_run_as_numpy_and_loads_back(tmp_path):
+    w = lrchain.wave.fate(lrchain.load_model("fput"), theta=2.5, amplitude=0.3, ring_sites=64, periods=200)
+    f = w.fate
+    assert f["t"].shape == f["deviation"].shape == f["participation"].shape == (201,)
+    assert f["energy_density"].shape == (64,)
+    # the exact wave at t = 0 is the wave to the noise (1e-4 A) plus its sampling on the ring
+    assert f["deviation"][0] < 1e-3
+    assert f["broke_at"] is not None and f["fate"] in ("modulated", "localized", "disordered")
+    w.to_hdf5(tmp_path / "fate.h5")
+    loaded = lrchain.load(tmp_path / "fate.h5")
+    assert loaded.fate["fate"] == f["fate"] and np.array_equal(loaded.fate["entropy"], f["entropy"])
+    with pytest.raises(lrchain.InvalidParameterError) as e:
+        lrchain.wave.fate(lrchain.load_model("fput"), theta=2.5, amplitude=0.3, ring_sites=4)
+    assert e.value.parameter == "ring_sites"

@@ -20,20 +20,6 @@ using namespace lrchain;
 using namespace lrchain::sim;
 using namespace lrchain::sim::wave;
 
-namespace {
-
-// U(xi) and U'(xi) of field 0 from its harmonics.
-void profile_at(const std::vector<std::complex<double>>& c, double xi, double& u, double& du) {
-  u = c[0].real();
-  du = 0;
-  for (std::size_t k = 1; k < c.size(); ++k) {
-    const std::complex<double> e = c[k] * std::polar(1.0, double(k) * xi);
-    u += 2 * e.real();
-    du -= 2 * double(k) * e.imag();
-  }
-}
-
-}  // namespace
 
 TEST_CASE("wave stability: a ring run of the exact wave plus noise grows at the computed rate" * doctest::test_suite("fast")) {
   const Model model = shipped_model("klein_gordon");

@@ -342,7 +342,7 @@ JobResult run_regime(const Document& doc, const ModelSource* source) {
 }  // namespace
 
 const std::vector<std::string>& study_kinds() {
-  static const std::vector<std::string> k{"dark continue", "regime intervals", "wave stability"};
+  static const std::vector<std::string> k{"dark continue", "regime intervals", "wave stability", "wave fate"};
   return k;
 }
 
@@ -353,7 +353,8 @@ bool is_study_kind(std::string_view kind) {
 const TableSchema& study_schema(std::string_view kind) {
   static const StudySchemas schemas{{"dark continue", study_top("dark continue", "dark", dark_table(), true)},
                                     {"regime intervals", study_top("regime intervals", "regime", regime_table(), false)},
-                                    {"wave stability", study_top("wave stability", "wave", wave_table(), true)}};
+                                    {"wave stability", study_top("wave stability", "wave", wave_table("wave stability"), true)},
+                                    {"wave fate", study_top("wave fate", "wave", wave_table("wave fate"), true)}};
   return schema_of(schemas, kind);
 }
 
@@ -361,13 +362,14 @@ const TableSchema& model_study_schema(std::string_view kind) {
   static const StudySchemas schemas{
       {"dark continue", model_study_top("dark continue", "dark", model_dark_table(), true)},
       {"regime intervals", model_study_top("regime intervals", "regime", regime_table(), false)},
-      {"wave stability", model_study_top("wave stability", "wave", wave_table(), true)}};
+      {"wave stability", model_study_top("wave stability", "wave", wave_table("wave stability"), true)},
+      {"wave fate", model_study_top("wave fate", "wave", wave_table("wave fate"), true)}};
   return schema_of(schemas, kind);
 }
 
 void check_study_config(std::string_view kind, const Document& doc, const ModelSource* model) {
-  if (kind == "wave stability") {
-    check_wave_base(doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model);
+  if (kind == "wave stability" || kind == "wave fate") {
+    check_wave_base(kind, doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model);
   } else if (model) {
     const Model point = model->model(model_parameter_values(check(doc, model_study_schema(kind))));
     if (kind == "dark continue") read_model_dark(doc, point, *model);
@@ -378,18 +380,18 @@ void check_study_config(std::string_view kind, const Document& doc, const ModelS
 }
 
 std::vector<std::string> study_scalar_names(std::string_view kind, const ModelDefinition* model) {
-  if (kind == "wave stability") return wave_scalar_names();
+  if (kind == "wave stability" || kind == "wave fate") return wave_scalar_names(kind);
   return kind == "dark continue" ? dark_scalar_names() : regime_scalar_names(model);
 }
 
 std::vector<std::string> study_row_names(std::string_view kind) {
   if (kind == "dark continue") return dark_row_names();
-  if (kind == "wave stability") return wave_row_names();
+  if (kind == "wave stability" || kind == "wave fate") return wave_row_names();
   return {"branch", "lo", "hi", "length", "lo_cause", "hi_cause"};
 }
 
 std::string study_rows_legend(std::string_view kind, const ModelDefinition* model) {
-  if (kind == "wave stability") return wave_rows_legend();
+  if (kind == "wave stability" || kind == "wave fate") return wave_rows_legend();
   if (kind == "dark continue")
     return "one row per branch point in continuation order; stability: 0 stable, +1 real, +2 period doubling, "
            "+4 oscillatory instability; part: 0 before the first turning point, +1 after each; max_real, "
@@ -404,8 +406,8 @@ std::string study_rows_legend(std::string_view kind, const ModelDefinition* mode
 JobResult run_study(std::string_view kind, const Document& doc, const RunControl& control, const ModelSource* model) {
   JobResult r;
   try {
-    if (kind == "wave stability")
-      r = run_wave(doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model);
+    if (kind == "wave stability" || kind == "wave fate")
+      r = run_wave(kind, doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model, control.stop);
     else
       r = kind == "dark continue" ? run_dark(doc, control, model) : run_regime(doc, model);
   } catch (const Interrupted&) {

@@ -148,14 +148,29 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
   const double sign = y_negative ? -1.0 : 1.0;  // of the values drawn
   const std::string stem = c.output.stem().string() + "_" + scalar;
   const std::filesystem::path dir = output_directory(c);
+  // A "wave fate" sweep's fate is a category (0 stable .. 4 disordered), drawn in its own colour, with
+  // the points the NLS calls focusing (+) and those whose exact wave has growth (x) marked.
+  const bool categorical = c.job == "wave fate" && scalar == "fate";
+  const auto column = [&](const std::string& name) {
+    const auto at = std::find(r.scalar_names.begin(), r.scalar_names.end(), name);
+    return at == r.scalar_names.end() ? std::size_t(0) : std::size_t(at - r.scalar_names.begin());
+  };
+  const std::size_t focusing = column("focusing"), stable = column("stable");
 
   std::ostringstream data;
-  data << "# " << x.parameter << ' ' << (y_negative ? "-" : "") << y.parameter << " log10(" << scalar << ")\n";
+  data << "# " << x.parameter << ' ' << (y_negative ? "-" : "") << y.parameter
+       << (categorical ? " fate focusing stable" : " log10(" + scalar + ")") << "\n";
   for (std::size_t i = 0; i < x.values.size(); ++i) {
     for (std::size_t j = 0; j < y.values.size(); ++j) {
-      const double v = r.scalars[s * r.points + i * y.values.size() + j];
-      data << fmt::format("{} {} {}\n", x.values[i], y_negative ? -y.values[j] : y.values[j],
-                          v > 0 && std::isfinite(v) ? fmt::format("{}", std::log10(v)) : std::string("NaN"));
+      const std::size_t point = i * y.values.size() + j;
+      const double v = r.scalars[s * r.points + point];
+      if (categorical)
+        data << fmt::format("{} {} {} {} {}\n", x.values[i], y_negative ? -y.values[j] : y.values[j],
+                            std::isfinite(v) ? fmt::format("{}", v) : "NaN", r.scalars[focusing * r.points + point],
+                            r.scalars[stable * r.points + point]);
+      else
+        data << fmt::format("{} {} {}\n", x.values[i], y_negative ? -y.values[j] : y.values[j],
+                            v > 0 && std::isfinite(v) ? fmt::format("{}", std::log10(v)) : std::string("NaN"));
     }
     data << '\n';
   }
@@ -185,7 +200,10 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
      << "if (!exists(\"outfile\")) outfile = " << gnuplot_file_name(stem + ".png") << "\n"
      << "set terminal pngcairo size 900,640 noenhanced\nset output outfile\n"
      << "set xlabel '" << x_name << "'\nset ylabel '" << (y_negative ? "|" + y_name + "|" : y_name) << "'\n"
-     << "set cblabel 'log10(" << value << ")'\nset palette rgbformulae 33,13,10\n"
+     << (categorical ? "set rmargin 16\nset cbrange [-0.5:4.5]\nset cbtics ('stable' 0, 'intact' 1, 'modulated' 2, 'localized' 3, "
+                       "'disordered' 4)\nset palette maxcolors 5 defined (0 '#1a9850', 1 '#a6d96a', 2 '#fee08b', 3 "
+                       "'#f46d43', 4 '#762a83')\n"
+                     : "set cblabel 'log10(" + value + ")'\nset palette rgbformulae 33,13,10\n")
      << (y_log ? "set logscale y\nset format y '1e%L'\n" : "")
      << "# the cell of each point on both axes\n"
      << gnuplot_array("xlo", xlo) << gnuplot_array("xhi", xhi) << gnuplot_array("ylo", ylo) << gnuplot_array("yhi", yhi)
@@ -193,13 +211,17 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
      << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", *std::min_element(xlo.begin(), xlo.end()),
                     *std::max_element(xhi.begin(), xhi.end()), *std::min_element(ylo.begin(), ylo.end()),
                     *std::max_element(yhi.begin(), yhi.end()))
-     << "set title '" << gnuplot_text(c.name) << ": log10(" << value << ")"
+     << "set title '" << gnuplot_text(c.name) << (categorical ? ": fate; + NLS focusing, x exact growth" : ": log10(" + value + ")")
      << (ends.empty() ? "" : "; dashed: focusing interval ends") << "; blank: no value'\n";
   for (double b : ends)
     gp << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dashtype 2 linewidth 2 front\n", b);
   gp << "plot " << gnuplot_file_name(stem + ".dat")
      << " using 1:2:(xlo[column(-1)+1]):(xhi[column(-1)+1]):(ylo[int(column(0))%ny+1]):(yhi[int(column(0))%ny+1]):3 "
-        "with boxxyerror fillstyle solid 1.0 noborder fillcolor palette notitle\n";
+        "with boxxyerror fillstyle solid 1.0 noborder fillcolor palette notitle"
+     << (categorical ? ", '' using 1:($4 > 0 ? $2 : NaN) with points pointtype 1 pointsize 1.5 lc rgb 'black' notitle, "
+                       "'' using 1:($5 < 1 ? $2 : NaN) with points pointtype 2 pointsize 1.5 lc rgb 'black' notitle"
+                     : "")
+     << "\n";
   std::vector<FigureScript> figures{{stem + ".gp", gp.str(), stem + ".png"}};
 
   if (draws_detuning_exponent(c)) {

@@ -2,6 +2,7 @@
 // its result reduced to scalars and rows.
 #include "wave_study.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -21,9 +22,12 @@ namespace {
 
 constexpr double no_value = std::numeric_limits<double>::quiet_NaN();
 
-// The wave job's options a sweep point takes: those of the stability step but the output's.
-bool sweep_key(const JobOption& o) {
-  return !o.python.empty() && std::find(o.steps.begin(), o.steps.end(), "stability") != o.steps.end();
+// The wave job's step of a sweep kind: "stability" or "fate".
+std::string step_of(std::string_view kind) { return kind == "wave fate" ? "fate" : "stability"; }
+
+// The wave job's options a sweep point takes: those of its step but the output's.
+bool sweep_key(const JobOption& o, std::string_view kind) {
+  return !o.python.empty() && std::find(o.steps.begin(), o.steps.end(), step_of(kind)) != o.steps.end();
 }
 
 // The base's model at this point: a model file's with its [parameters], or the shipped resonant
@@ -52,9 +56,9 @@ PointModel point_model(const CheckedTable& root, const ModelSource* source) {
 }
 
 // [wave] into the job's config (stability step) at the point's model, with the job's checks.
-WaveConfig read_wave(const Document& doc, const CheckedTable& root, const PointModel& p) {
+WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTable& root, const PointModel& p) {
   WaveConfig c;
-  c.step = jobs::wave::WaveStep::stability;
+  c.step = kind == "wave fate" ? jobs::wave::WaveStep::fate : jobs::wave::WaveStep::stability;
   c.model = &*p.model;
   c.kernels = p.kernels;
   const CheckedTable w = *root.table("wave");
@@ -67,6 +71,13 @@ WaveConfig read_wave(const Document& doc, const CheckedTable& root, const PointM
   if (w.read("max_harmonics", integer)) c.max_harmonics = Index(integer);
   if (w.read("max_iterations", integer)) c.max_iterations = Index(integer);
   if (w.read("k_points", integer)) c.k_points = Index(integer);
+  if (c.step == jobs::wave::WaveStep::fate) {
+    if (w.read("ring_sites", integer)) c.ring_sites = Index(integer);
+    if (w.read("seed", integer)) c.seed = Index(integer);
+    if (w.read("steps_per_period", integer)) c.steps_per_period = Index(integer);
+    w.read("noise", c.noise);
+    w.read("periods", c.periods);
+  }
   w.read("tail_tolerance", c.tail_tolerance);
   w.read("tolerance", c.tolerance);
   w.read("unstable_tolerance", c.unstable_tolerance);
@@ -85,29 +96,34 @@ WaveConfig read_wave(const Document& doc, const CheckedTable& root, const PointM
 
 }  // namespace
 
-std::shared_ptr<const TableSchema> wave_table() {
+std::shared_ptr<const TableSchema> wave_table(std::string_view kind) {
   std::vector<KeySchema> keys;
   for (const JobOption& o : jobs::wave::wave_options()) {
-    if (!sweep_key(o)) continue;
+    if (!sweep_key(o, kind)) continue;
     const std::string default_text = o.default_value.is_null() ? (o.default_note.empty() ? "none" : o.default_note)
                                                                : o.default_value.dump();
     const std::string meaning = o.doc + (o.range.empty() ? "" : " (" + o.range + ")");
     if (o.key == "branch") keys.push_back(string(o.python, default_text, meaning));
     else if (o.default_value.is_number_integer())
-      keys.push_back(integer(o.python, 1, 1'000'000, default_text, meaning));
+      keys.push_back(integer(o.python, 0, 1'000'000'000, default_text, meaning));
     else keys.push_back(number(o.python, NumberRange::any(), default_text, meaning));
     if (o.required) keys.back() = keys.back().require();
   }
   return std::make_shared<const TableSchema>(
-      TableSchema{"an exact travelling wave and its Floquet-Bloch growth rates, as `lrchain wave stability`", keys,
-                  std::nullopt});
+      TableSchema{kind == "wave fate" ? "an exact travelling wave, its growth rates and what it becomes on a ring, as "
+                                        "`lrchain wave fate`"
+                                      : "an exact travelling wave and its Floquet-Bloch growth rates, as `lrchain wave stability`",
+                  keys, std::nullopt});
 }
 
-const std::vector<std::string>& wave_scalar_names() {
-  static const std::vector<std::string> n{"omega",       "omega_linear",     "omega_shift", "nls_omega_shift",
+std::vector<std::string> wave_scalar_names(std::string_view kind) {
+  std::vector<std::string> n{"omega",       "omega_linear",     "omega_shift", "nls_omega_shift",
                                           "harmonics",   "residual",         "stable",      "largest_rate",
                                           "at_k",        "nls_largest_rate", "nls_k",       "unstable_bands",
                                           "h_tilde",     "focusing"};
+  if (kind == "wave fate")
+    n.insert(n.end(), {"fate", "broke_at", "predicted_breakup", "participation_end", "entropy_end", "structures",
+                       "ring_theta"});
   return n;
 }
 
@@ -121,14 +137,16 @@ std::string wave_rows_legend() {
          "its ends, its largest rate and the K of it";
 }
 
-void check_wave_base(const Document& doc, const CheckedTable& root, const ModelSource* source) {
+void check_wave_base(std::string_view kind, const Document& doc, const CheckedTable& root, const ModelSource* source) {
   const PointModel p = point_model(root, source);
-  read_wave(doc, root, p);
+  read_wave(kind, doc, root, p);
 }
 
-JobResult run_wave(const Document& doc, const CheckedTable& root, const ModelSource* source) {
+JobResult run_wave(std::string_view kind, const Document& doc, const CheckedTable& root, const ModelSource* source,
+                   const std::atomic<bool>* stop) {
   const PointModel p = point_model(root, source);
-  const WaveConfig c = read_wave(doc, root, p);
+  WaveConfig c = read_wave(kind, doc, root, p);
+  c.stop = stop;
   const jobs::wave::WaveResult w = jobs::wave::run(c);
   JobResult r;
   if (w.failure || !w.stability) {
@@ -154,6 +172,16 @@ JobResult run_wave(const Document& doc, const CheckedTable& root, const ModelSou
                double(s.at("bands").size()),
                number(j.at("nls").at("h_tilde")),
                j.at("nls").at("regime") == "focusing" ? 1.0 : 0.0};
+  if (w.fate) {
+    const auto& f = j.at("fate");
+    if (w.fate->interrupted) {
+      r.status = PointStatus::missing;
+      r.reason = "interrupted";
+      return r;
+    }
+    r.scalars.insert(r.scalars.end(), {double(int(w.fate->fate)), number(f.at("broke_at")), number(f.at("predicted_breakup")),
+                                       w.fate->participation_end, w.fate->entropy_end, double(w.fate->structures), w.theta});
+  }
   for (const auto& b : w.stability->bands) r.rows.insert(r.rows.end(), {b.k_from, b.k_to, b.largest_rate, b.at_k});
   r.status = PointStatus::ok;
   return r;

@@ -1,11 +1,14 @@
 #pragma once
-// The "wave stability" sweep job (docs/sweeps.md): at every point the exact travelling wave of
-// `lrchain wave stability` (jobs/wave_job.hpp) and its Floquet-Bloch growth rates, reduced to scalars
-// (omega, its shift and the NLS's, the largest growth rate and its K beside the NLS's, stable or not)
-// and one row per unstable band. Its base: [wave] with the job's options, and the resonant chain's
-// [model] or a model file.
+// The "wave stability" and "wave fate" sweep jobs (docs/sweeps.md): at every point the exact travelling
+// wave of `lrchain wave stability` (jobs/wave_job.hpp) and its Floquet-Bloch growth rates, reduced to
+// scalars (omega, its shift and the NLS's, the largest growth rate and its K beside the NLS's, stable or
+// not) and one row per unstable band; "wave fate" also runs `lrchain wave fate` (the perturbed wave on a
+// ring) and adds its fate and diagnostics. Its base: [wave] with the job's options, and the resonant
+// chain's [model] or a model file. `kind` is "wave stability" or "wave fate".
+#include <atomic>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "lrchain/config/strict_toml.hpp"
@@ -15,16 +18,17 @@
 namespace lrchain::jobs::sweep {
 
 // [wave]: the options of `lrchain wave stability` (keys as Python names them), from the job's schema.
-std::shared_ptr<const lrchain::config::TableSchema> wave_table();
-const std::vector<std::string>& wave_scalar_names();
+std::shared_ptr<const lrchain::config::TableSchema> wave_table(std::string_view kind);
+std::vector<std::string> wave_scalar_names(std::string_view kind);
 const std::vector<std::string>& wave_row_names();
 std::string wave_rows_legend();
 // `root`: the base checked against its schema; `source`: a model-file base's model, else null (the
 // resonant chain with [model]). The wave job's checks, InvalidParameter naming "[wave] KEY in FILE".
-void check_wave_base(const lrchain::config::Document& doc, const lrchain::config::CheckedTable& root,
-                     const ModelSource* source);
+void check_wave_base(std::string_view kind, const lrchain::config::Document& doc,
+                     const lrchain::config::CheckedTable& root, const ModelSource* source);
 // One point: the wave, its stability and the reduction; no wave at an amplitude is numerical_failure.
-JobResult run_wave(const lrchain::config::Document& doc, const lrchain::config::CheckedTable& root,
-                   const ModelSource* source);
+JobResult run_wave(std::string_view kind, const lrchain::config::Document& doc,
+                   const lrchain::config::CheckedTable& root, const ModelSource* source,
+                   const std::atomic<bool>* stop);
 
 }  // namespace lrchain::jobs::sweep

@@ -56,6 +56,12 @@ void write_wave_hdf5(const std::filesystem::path& path, const json& s) {
     write_vector(file, "/growth_rate", st.at("growth_rate").get<std::vector<double>>());
     write_vector(file, "/nls_growth_rate", st.at("nls_growth_rate").get<std::vector<double>>());
   }
+  if (s.contains("fate") && s["fate"].is_object()) {  // the ring run: one sample per carrier period
+    const json& f = s["fate"];
+    file.write_attribute("/", "fate", f.at("fate").get<std::string>());
+    for (const char* key : {"t", "deviation", "participation", "entropy", "energy_density"})
+      write_vector(file, std::string("/fate_") + key, f.at(key).get<std::vector<double>>());
+  }
   file.create_group("/summary");
   sim::write_json_tree(file, "/summary", s);
   file.commit();

@@ -20,6 +20,7 @@ const char* step_name(WaveStep s) {
     case WaveStep::solve: return "solve";
     case WaveStep::branch: return "continue";
     case WaveStep::stability: return "stability";
+    case WaveStep::fate: return "fate";
   }
   return "";
 }
@@ -95,6 +96,33 @@ json to_json(const WaveResult& r) {
                       {"k", s.k},
                       {"growth_rate", s.growth_rate},
                       {"nls_growth_rate", nls_rate}};
+  }
+  if (r.fate) {
+    const auto& f = *r.fate;
+    const double rate = r.stability ? r.stability->largest_rate : 0;
+    j["fate"] = {{"fate", std::string(sim::wave::to_string(f.fate))},
+                 {"ring_sites", c.ring_sites},
+                 {"ring_theta", r.theta},
+                 {"noise", c.noise},
+                 {"seed", c.seed},
+                 {"periods", f.t.empty() ? 0.0 : std::round(f.t.back() * r.waves.back().omega / (2 * std::numbers::pi))},
+                 {"steps_per_period", c.steps_per_period},
+                 {"broke_at", f.broke_at < 0 ? json(nullptr) : json(f.broke_at)},
+                 // the noise grows e^{rate t} from c.noise to the breakup deviation (the Floquet-Bloch prediction)
+                 {"predicted_breakup", rate > 0 ? json(std::log(sim::wave::kBrokenDeviation / c.noise) / rate) : json(nullptr)},
+                 {"participation_end", f.participation_end},
+                 {"entropy_end", f.entropy_end},
+                 {"structures", f.structures},
+                 {"max_relative_energy_drift", f.max_relative_energy_drift},
+                 {"interrupted", f.interrupted},
+                 {"thresholds", {{"broken_deviation", sim::wave::kBrokenDeviation},
+                                 {"localized_participation", sim::wave::kLocalizedParticipation},
+                                 {"disordered_entropy", sim::wave::kDisorderedEntropy}}},
+                 {"t", f.t},
+                 {"deviation", f.deviation},
+                 {"participation", f.participation},
+                 {"entropy", f.entropy},
+                 {"energy_density", f.energy_density}};
   }
   j["failure"] = r.failure ? json(*r.failure) : json(nullptr);
   j["failed_at"] = r.failed_at ? json(*r.failed_at) : json(nullptr);

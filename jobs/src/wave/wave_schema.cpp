@@ -8,7 +8,8 @@ namespace {
 std::vector<JobOption> make_options() {
   const WaveConfig d;
   const nlohmann::json none;
-  const std::vector<std::string> one{"solve", "stability"}, all{"solve", "continue", "stability"};
+  const std::vector<std::string> one{"solve", "stability", "fate"}, all{"solve", "continue", "stability", "fate"},
+      stable{"stability", "fate"}, fate{"fate"};
   return {
       {"branch", "--branch", "branch", all, none, false,
        "the model's branch names (`lrchain derive` lists them: acoustic/optical or branch0, ...)",
@@ -31,10 +32,19 @@ std::vector<JobOption> make_options() {
        "Newton converged when max |omega^2 U'' - a| <= this x omega_linear^2 A"},
       {"max_iterations", "--max-iterations", "max_iterations", all, d.max_iterations, false, "[1, 1000]",
        "Newton iterations per amplitude"},
-      {"k_points", "--k-points", "k_points", {"stability"}, d.k_points, false, "[1, 100000]",
+      {"k_points", "--k-points", "k_points", stable, d.k_points, false, "[1, 100000]",
        "perturbation wavenumbers K_i = pi (i/k_points)^2, i = 1..k_points (dense near K = 0)"},
-      {"unstable_tolerance", "--unstable-tolerance", "unstable_tolerance", {"stability"}, d.unstable_tolerance, false,
+      {"unstable_tolerance", "--unstable-tolerance", "unstable_tolerance", stable, d.unstable_tolerance, false,
        "(0, 1)", "Re lambda above this x omega counts as growth"},
+      {"ring_sites", "--ring-sites", "ring_sites", fate, d.ring_sites, false, "[8, 100000]",
+       "sites N of the ring the perturbed wave runs on; theta moves to the nearest 2 pi j / N"},
+      {"noise", "--noise", "noise", fate, d.noise, false, "(0, 1)",
+       "standard deviation of the noise added to every displacement, relative to A"},
+      {"seed", "--seed", "seed", fate, d.seed, false, "[1, 2147483647]", "seed of the noise"},
+      {"periods", "--periods", "periods", fate, d.periods, false, "0 (auto) or [1, 1e6]",
+       "carrier periods 2 pi/omega integrated; 0: three times the predicted breakup ln(0.1/noise)/rate, in [2000, 1e5]"},
+      {"steps_per_period", "--steps-per-period", "steps_per_period", fate, d.steps_per_period, false, "[8, 10000]",
+       "srkn11b steps per carrier period"},
       {"format", "--format", "", all, d.format, false, "csv|hdf5",
        "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: the waves, the profile, the growth "
        "rates, the summary; lrchain.load reads it)"},

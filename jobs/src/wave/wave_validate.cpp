@@ -46,6 +46,20 @@ void validate(const WaveConfig& c) {
   check_range("max_iterations", double(c.max_iterations), 1, 1000, false, false);
   check_range("k_points", double(c.k_points), 1, 100000, false, false);
   check_range("unstable_tolerance", c.unstable_tolerance, 0, 1, true, true);
+  if (c.step == WaveStep::fate) {
+    check_range("ring_sites", double(c.ring_sites), 8, 100000, false, false);
+    check_range("noise", c.noise, 0, 1, true, true);
+    check_range("seed", double(c.seed), 1, 2147483647.0, false, false);
+    if (c.periods != 0) check_range("periods", c.periods, 1, 1e6, false, false);
+    check_range("steps_per_period", double(c.steps_per_period), 8, 10000, false, false);
+    const double theta = ring_theta(c.theta, c.ring_sites);
+    if (theta == 0 || std::abs(std::abs(theta) - std::numbers::pi) < 1e-12)
+      throw InvalidParameter("theta", fmt::format("moves to {} on a ring of {} sites (ring_sites): a uniform or "
+                                                  "standing wave, not a travelling one; give a theta inside (0, pi)",
+                                                  theta, c.ring_sites));
+    if (c.kernels->energy_density == nullptr)
+      throw InvalidParameter("model", "the fate of a wave needs the lattice energy; this model's forces have none");
+  }
   if (c.format != "csv" && c.format != "hdf5") throw InvalidParameter("format", "must be csv or hdf5");
   std::error_code ec;
   if (!c.out.empty() && std::filesystem::exists(c.out, ec) && !std::filesystem::is_directory(c.out, ec))

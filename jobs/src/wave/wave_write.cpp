@@ -65,6 +65,39 @@ void write_growth(const WaveResult& r, const std::string& dir, sim::Figures& fig
                 "growth.png"});
 }
 
+// fate.csv (per carrier period: t, deviation, participation, entropy), fate_energy.csv (e_n at the end)
+// and fate.gp drawing the three against t with the thresholds of the classification.
+void write_fate(const WaveResult& r, const std::string& dir, sim::Figures& figures) {
+  const auto& f = *r.fate;
+  std::ostringstream os;
+  os << "t,deviation,participation,entropy\n";
+  for (std::size_t i = 0; i < f.t.size(); ++i)
+    os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}\n", f.t[i], f.deviation[i], f.participation[i], f.entropy[i]);
+  sim::write_file_atomic(dir, "fate.csv", os.str());
+  std::ostringstream e;
+  e << "n,energy_density\n";
+  for (std::size_t n = 0; n < f.energy_density.size(); ++n) e << fmt::format("{},{:.17g}\n", n, f.energy_density[n]);
+  sim::write_file_atomic(dir, "fate_energy.csv", e.str());
+  const auto literal = [](const std::string& text) { return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced); };
+  figures.draw({"fate.gp",
+                fmt::format("if (!exists(\"outfile\")) outfile = 'fate.png'\n"
+                            "set terminal pngcairo size 1000,900\nset output outfile\nset datafile separator ','\n"
+                            "set multiplot layout 2,1 title '{} {} wave, θ = {:.6g}, A = {:.6g} on {} sites: {}'\n"
+                            "set xlabel 'time'\nset ylabel 'max_n |u_n - U| / A'\nset logscale y\nset key top left\n"
+                            "plot 'fate.csv' skip 1 u 1:2 w l lw 2 t 'deviation from the exact wave', {} w l dt 2 t "
+                            "'broken ({})'\n"
+                            "unset logscale y\nset ylabel 'participation P, entropy S'\nset yrange [0:1.05]\n"
+                            "plot 'fate.csv' skip 1 u 1:3 w l lw 2 t 'energy participation P', "
+                            "'' skip 1 u 1:4 w l lw 2 t 'spectral entropy S', {} w l dt 2 t 'localized below ({})', "
+                            "{} w l dt 3 t 'disordered above ({})'\nunset multiplot\n",
+                            literal(r.config.model->name()), literal(r.branch), r.theta, r.config.amplitude,
+                            r.config.ring_sites, sim::wave::to_string(f.fate), sim::wave::kBrokenDeviation,
+                            sim::wave::kBrokenDeviation, sim::wave::kLocalizedParticipation,
+                            sim::wave::kLocalizedParticipation, sim::wave::kDisorderedEntropy,
+                            sim::wave::kDisorderedEntropy),
+                "fate.png"});
+}
+
 }  // namespace
 
 json write(const WaveResult& r, const std::filesystem::path& out) {
@@ -79,6 +112,7 @@ json write(const WaveResult& r, const std::filesystem::path& out) {
     write_branch(r, dir);
   }
   if (r.stability) write_growth(r, dir, figures);
+  if (r.fate) write_fate(r, dir, figures);
   figures.finish(j);
   if (r.config.format == "hdf5") write_wave_hdf5(out / "result.h5", summary);
   sim::write_file_atomic(dir, "summary.json", j.dump(2) + "\n");

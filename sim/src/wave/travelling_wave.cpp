@@ -200,4 +200,14 @@ WaveBranch continue_travelling_wave(WaveLattice& lattice, const BlochMode& mode,
   return branch;
 }
 
+void profile_at(const std::vector<std::complex<double>>& c, double xi, double& u, double& du) {
+  u = c[0].real();
+  du = 0;
+  for (std::size_t k = 1; k < c.size(); ++k) {
+    const std::complex<double> e = c[k] * std::polar(1.0, double(k) * xi);
+    u += 2 * e.real();
+    du -= 2 * double(k) * e.imag();
+  }
+}
+
 }  // namespace lrchain::sim::wave

@@ -3,12 +3,13 @@
 // hdf5` (DIR/result.h5 beside the CSV files) and Python's TravellingWave.to_hdf5 and WaveBranch.to_hdf5
 // (the same file); lrchain.load reads it back. Everything comes from the job's JSON summary (to_json of
 // wave_job.hpp). Layout:
-//   root attributes  lrchain_result ("TravellingWave" for solve and stability, "WaveBranch" for continue),
+//   root attributes  lrchain_result ("TravellingWave" for solve, stability and fate, "WaveBranch" for continue),
 //                    lrchain_version, git_commit, model (JSON text: name, file_hash, parameters), branch,
 //                    theta, summary_json (the summary as text: nulls and booleans kept)
 //   datasets         amplitude, omega, omega_shift, nls_omega_shift, harmonics (one entry per wave: the
 //                    ramp, or the branch); a single wave also xi (2H+1 phases) and profile (fields x phases);
-//                    after stability K, growth_rate and nls_growth_rate
+//                    after stability K, growth_rate and nls_growth_rate; after fate fate_t, fate_deviation,
+//                    fate_participation, fate_entropy, fate_energy_density and the root attribute fate
 //   /summary         the summary as a tree (objects groups, numbers and strings attributes, null left out)
 #include <filesystem>
 

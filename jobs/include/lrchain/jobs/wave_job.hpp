@@ -5,6 +5,7 @@
 // Gauss-Newton (sim/wave/travelling_wave.hpp), its Floquet-Bloch growth rates over K
 // (sim/wave/wave_stability.hpp), both beside the NLS predictions (sim/wave/wave_nls.hpp).
 // docs/waves.md.
+#include <atomic>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -18,6 +19,7 @@
 #include "lrchain/sim/model_lattice_abi.h"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 #include "lrchain/sim/wave/travelling_wave.hpp"
+#include "lrchain/sim/wave/wave_fate.hpp"
 #include "lrchain/sim/wave/wave_stability.hpp"
 
 namespace lrchain::jobs::wave {
@@ -26,6 +28,7 @@ enum class WaveStep {
   solve,      // the wave at `amplitude`, continued from amplitude/ramp in `ramp` steps
   branch,     // the branch omega(A) through `amplitudes` (`lrchain wave continue`)
   stability,  // solve, then the growth rate max Re lambda over K in (0, pi]
+  fate,       // stability at the ring's theta, then the perturbed wave on a ring: what it becomes
 };
 
 // Every option of the job with its default and range (wave_options()); validate() names a refused one
@@ -47,6 +50,12 @@ struct WaveConfig {
   Index max_iterations = 30;          // Newton iterations per amplitude, in [1, 1000]
   Index k_points = 200;               // stability: K_i = pi (i/k_points)^2, i = 1..k_points, in [1, 100000]
   double unstable_tolerance = 1e-9;   // stability: Re lambda > this x omega is growth, in (0, 1)
+  Index ring_sites = 256;             // fate: sites N of the ring, theta moved to the nearest 2 pi j / N, in [8, 100000]
+  double noise = 1e-4;                // fate: noise on every displacement, relative to A, in (0, 1)
+  Index seed = 1;                     // fate: of the noise, in [1, 2^31)
+  double periods = 0;                 // fate: carrier periods integrated, in [1, 1e6]; 0: auto_periods
+  Index steps_per_period = 40;        // fate: srkn11b steps per carrier period, in [8, 10000]
+  const std::atomic<bool>* stop = nullptr;  // fate: raised (e.g. by SIGINT) ends the ring run early
   std::string format = "csv";         // files in `out`: csv (CSV and figures) or hdf5 (also result.h5)
   std::string out;                    // output directory ("": no files)
 };
@@ -66,10 +75,20 @@ struct WaveResult {
   std::optional<std::string> failure;      // no wave at an amplitude: the reason (the CLI's exit 3)
   std::optional<double> failed_at;         // that amplitude
   std::optional<sim::wave::WaveStability> stability;
+  double theta = 0;                        // the wave's theta: config.theta, or for fate the ring's nearest
+  std::optional<sim::wave::WaveFateResult> fate;
   double seconds = 0;
 };
 
-// validate(), then the job. No wave at an amplitude ends the job and is reported (failure), not thrown.
+// The fate's run length when not given: three times the predicted breakup ln(0.1 / noise) / rate, in
+// carrier periods 2 pi / omega, within [2000, 1e5]; 2000 for a stable wave (rate 0).
+double auto_periods(double omega, double growth_rate, double noise);
+
+// The ring's wavenumber nearest theta: 2 pi j / sites, j = round(theta sites / 2 pi).
+double ring_theta(double theta, Index sites);
+
+// validate(), then the job. No wave at an amplitude ends the job and is reported (failure), not thrown;
+// nor is a ring run (fate) that blows up.
 WaveResult run(const WaveConfig& c);
 
 // {model, step, branch, theta, options, nls: {...}, waves: [...], profile (solve, stability),

@@ -12,7 +12,8 @@
 //   "wave stability":   the exact travelling wave and its Floquet-Bloch growth rates (wave_job.hpp),
 //                       as `lrchain wave stability`; scalars: omega and its shift beside the NLS's,
 //                       stable, the largest growth rate and its K beside the NLS's, ...; one row per
-//                       unstable band.
+//                       unstable band; "wave fate" also what the wave becomes on a ring
+//                       (`lrchain wave fate`): its fate, breakup time, participation, entropy.
 // Each base is of the resonant chain ([model] rho, ...) or of a model file (`model = "models/x.toml"`
 // and its [parameters], loaded once per sweep by Job: jobs::ModelSource), as `lrchain dark continue
 // --model` and `lrchain regime intervals --model` run it.
@@ -27,7 +28,7 @@
 
 namespace lrchain::jobs::sweep {
 
-// "dark continue", "regime intervals" and "wave stability".
+// "dark continue", "regime intervals", "wave stability" and "wave fate".
 const std::vector<std::string>& study_kinds();
 bool is_study_kind(std::string_view kind);
 // The base config's schema of a study kind (top level: experiment, [model], [dark], [regime] or [wave]).

@@ -62,4 +62,8 @@ WaveBranch continue_travelling_wave(WaveLattice& lattice, const BlochMode& mode,
 // Harmonic k (0..H) of field f of a solved wave: complex c_k of U_f = sum_k c_k e^{i k xi}.
 std::vector<std::complex<double>> wave_harmonics(const TravellingWave& wave, Index field);
 
+// U(xi) = sum_k c_k e^{i k xi} (c_{-k} = conj c_k) and its derivative dU/dxi, from the harmonics c_0..c_H
+// of wave_harmonics.
+void profile_at(const std::vector<std::complex<double>>& harmonics, double xi, double& u, double& du);
+
 }  // namespace lrchain::sim::wave

@@ -1,0 +1,64 @@
+#pragma once
+// What an exact travelling wave becomes (docs/waves.md, "The fate of a wave"): the wave U(theta n -
+// omega t) on a ring of N sites (theta = 2 pi j / N), plus noise of a given size on every field's
+// displacements, integrated well past the growth of its instability (srkn11b, symplectic), and
+// classified by three measured quantities sampled once per carrier period:
+//   deviation      max_n |u_0[n](t) - U_0(theta n - omega t)| / A: the departure from the exact wave;
+//   participation  P = (sum_n e_n)^2 / (N sum_n e_n^2) of the energy density |e_n|: 1 for a uniform
+//                  wave, about w/N for energy held in w sites;
+//   entropy        S = -sum_j p_j log p_j / log N of the spatial spectrum p_j = |u^_0(j)|^2 / sum
+//                  of the first field: log 2 / log N for one plane wave, near 1 when every mode is
+//                  excited alike.
+// The fate (over the last tenth of the run): stable when the deviation never exceeded
+// kBrokenDeviation and the wave has no growing perturbation (intact when it has one but did not break
+// up within the run: run longer); otherwise localized when P < kLocalizedParticipation, disordered
+// when S > kDisorderedEntropy, and else modulated (energy spread over the ring in a few modes).
+// Thresholds: site energies of a thermalised ring are exponentially distributed (Gibbs), which gives
+// P = E[e]^2 / E[e^2] = 1/2, and a wave under a sinusoidal envelope P = 2/3; energy held in fewer
+// sites than half the thermal value, P < 1/4, is localized.
+#include <atomic>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "lrchain/index.hpp"
+#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/sim/wave/travelling_wave.hpp"
+
+namespace lrchain::sim::wave {
+
+inline constexpr double kBrokenDeviation = 0.1;          // the wave broke up: a tenth of A
+inline constexpr double kLocalizedParticipation = 0.25;  // half the thermal value 1/2
+inline constexpr double kDisorderedEntropy = 0.5;        // spectrum spread over a power N^0.5 of modes
+
+enum class WaveFate { stable, intact, modulated, localized, disordered };
+std::string_view to_string(WaveFate f);
+
+struct WaveFateOptions {
+  Index ring_sites = 256;          // N, with theta = 2 pi j / N for an integer j
+  double noise = 1e-4;             // standard deviation of the noise, relative to A
+  std::uint64_t seed = 1;          // of the noise (std::mt19937_64)
+  double periods = 2000;           // carrier periods 2 pi / omega integrated
+  Index steps_per_period = 40;     // srkn11b steps per carrier period
+  double growth_rate = 0;          // the wave's largest Floquet-Bloch rate (0: stable), for the fate `intact`
+};
+
+struct WaveFateResult {
+  std::vector<double> t, deviation, participation, entropy;  // one sample per carrier period, t = 0 first
+  std::vector<double> energy_density;  // e_n at the end (N entries)
+  double broke_at = -1;                // first t with deviation > kBrokenDeviation (-1: never)
+  double participation_end = 0, entropy_end = 0;  // means over the last tenth of the samples
+  Index structures = 0;                // localized: peaks of e_n at the end above 4 x its mean, 3 sites apart
+  double max_relative_energy_drift = 0;
+  WaveFate fate = WaveFate::stable;
+  bool interrupted = false;
+};
+
+// The run above for `wave` (solved at `theta` = 2 pi j / options.ring_sites on `kernels` with
+// `parameters`). InvalidParameter("ring_sites") when theta is not on the ring; NumericalFailure when
+// the run blows up (a non-finite state). `stop` (e.g. SIGINT) ends it early with `interrupted`.
+WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                         const TravellingWave& wave, const WaveFateOptions& options,
+                         const std::atomic<bool>* stop = nullptr);
+
+}  // namespace lrchain::sim::wave

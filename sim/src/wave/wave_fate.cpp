@@ -1,0 +1,145 @@
+// The fate of a travelling wave on a ring (wave_fate.hpp).
+#include "lrchain/sim/wave/wave_fate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/sim/integrator.hpp"
+#include "lrchain/sim/model_lattice.hpp"
+
+namespace lrchain::sim::wave {
+
+std::string_view to_string(WaveFate f) {
+  switch (f) {
+    case WaveFate::stable: return "stable";
+    case WaveFate::intact: return "intact";
+    case WaveFate::modulated: return "modulated";
+    case WaveFate::localized: return "localized";
+    case WaveFate::disordered: return "disordered";
+  }
+  return "";
+}
+
+namespace {
+
+// S = -sum_j p_j log p_j / log N of the spatial spectrum of x[0..N) (a direct DFT: N^2, once per period).
+// `twiddle` holds e^{-2 pi i k / N}, `power` N/2 + 1 entries of workspace.
+double spectral_entropy(const double* x, Index n, const std::vector<std::complex<double>>& twiddle,
+                        std::vector<double>& power) {
+  double total = 0, sum_plogp = 0;
+  for (Index j = 0; j <= n / 2; ++j) {
+    std::complex<double> a = 0;
+    for (Index i = 0; i < n; ++i) a += x[i] * twiddle[std::size_t((j * i) % n)];
+    const double weight = (j == 0 || 2 * j == n) ? 1.0 : 2.0;  // modes +j and -j
+    power[std::size_t(j)] = weight * std::norm(a);
+    total += power[std::size_t(j)];
+  }
+  if (!(total > 0)) return 0;
+  for (Index j = 0; j <= n / 2; ++j) {
+    const double weight = (j == 0 || 2 * j == n) ? 1.0 : 2.0;
+    const double p = power[std::size_t(j)] / total / weight;  // each of the weight modes
+    if (p > 0) sum_plogp += weight * p * std::log(p);
+  }
+  return -sum_plogp / std::log(double(n));
+}
+
+double participation(const std::vector<double>& e) {
+  double s = 0, s2 = 0;
+  for (double x : e) s += std::abs(x), s2 += x * x;
+  return s2 > 0 ? s * s / (double(e.size()) * s2) : 1.0;
+}
+
+// Peaks of e above 4 x its mean, merged when closer than 3 sites (periodic).
+Index count_peaks(const std::vector<double>& e) {
+  const Index n = Index(e.size());
+  double mean = 0;
+  for (double x : e) mean += std::abs(x);
+  mean /= double(n);
+  Index count = 0, last = -1000, first = -1;
+  for (Index i = 0; i < n; ++i) {
+    const double x = std::abs(e[std::size_t(i)]);
+    const bool peak = x > 4 * mean && x >= std::abs(e[std::size_t((i + n - 1) % n)]) &&
+                      x >= std::abs(e[std::size_t((i + 1) % n)]);
+    if (!peak) continue;
+    if (i - last >= 3) ++count;
+    if (first < 0) first = i;
+    last = i;
+  }
+  if (count > 1 && first + n - last < 3) --count;  // the first and last peaks wrap around
+  return count;
+}
+
+}  // namespace
+
+WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                         const TravellingWave& wave, const WaveFateOptions& o, const std::atomic<bool>* stop) {
+  const Index n = o.ring_sites, fields = kernels.fields;
+  const double modes = wave.theta * double(n) / (2 * std::numbers::pi);
+  if (std::abs(modes - std::round(modes)) > 1e-9 * double(n))
+    throw InvalidParameter("ring_sites", fmt::format("theta = {} is not 2 pi j / {} for an integer j", wave.theta, n));
+  const ModelLattice ring(kernels, parameters, n, true, LatticeForm::displacement);
+  State s(std::size_t(2 * fields * n));
+  std::vector<std::vector<std::complex<double>>> harmonics;
+  for (Index f = 0; f < fields; ++f) harmonics.push_back(wave_harmonics(wave, f));
+  std::mt19937_64 random(o.seed);
+  std::normal_distribution<double> noise(0.0, o.noise * wave.amplitude);
+  for (Index f = 0; f < fields; ++f)
+    for (Index i = 0; i < n; ++i) {
+      double u, du;
+      profile_at(harmonics[std::size_t(f)], wave.theta * double(i), u, du);
+      s[std::size_t(f * n + i)] = u + noise(random);
+      s[std::size_t(fields * n + f * n + i)] = -wave.omega * du;  // d/dt U(theta n - omega t)
+    }
+  const double period = 2 * std::numbers::pi / wave.omega;
+  std::vector<double> times;
+  for (Index p = 0; p <= Index(std::ceil(o.periods)); ++p) times.push_back(double(p) * period);
+  IntegratorOptions opt;
+  opt.stepper = StepperKind::srkn11b;
+  opt.dt = period / double(o.steps_per_period);
+
+  WaveFateResult r;
+  std::vector<double> e(static_cast<std::size_t>(n)), power(static_cast<std::size_t>(n / 2 + 1));
+  std::vector<std::complex<double>> twiddle(static_cast<std::size_t>(n));
+  for (Index k = 0; k < n; ++k) twiddle[std::size_t(k)] = std::polar(1.0, -2 * std::numbers::pi * double(k) / double(n));
+  const double e0 = ring.energy(s);
+  const auto observe = [&](const State& x, double t) {
+    double deviation = 0;
+    for (Index i = 0; i < n; ++i) {
+      double u, du;
+      profile_at(harmonics[0], wave.theta * double(i) - wave.omega * t, u, du);
+      deviation = std::max(deviation, std::abs(x[std::size_t(i)] - u) / wave.amplitude);
+    }
+    ring.energy_density(x.data(), x.data() + ring.positions(), e.data());
+    r.t.push_back(t);
+    r.deviation.push_back(deviation);
+    r.participation.push_back(participation(e));
+    r.entropy.push_back(spectral_entropy(x.data(), n, twiddle, power));
+    if (r.broke_at < 0 && deviation > kBrokenDeviation) r.broke_at = t;
+    r.max_relative_energy_drift = std::max(r.max_relative_energy_drift, std::abs(ring.energy(x) - e0) / std::abs(e0));
+    return true;
+  };
+  const IntegrationStats stats = integrate_observed(ring, s, times, observe, opt, {}, 0, stop);
+  if (stats.blew_up) throw NumericalFailure(fmt::format("the ring run blew up after t = {:.6g}", stats.t_reached));
+  if (r.t.empty()) throw NumericalFailure("the ring run made no observation");
+  r.interrupted = stats.stopped;
+  r.energy_density = e;
+  const std::size_t samples = r.t.size(), tail = std::max<std::size_t>(1, samples / 10);
+  for (std::size_t i = samples - tail; i < samples; ++i) {
+    r.participation_end += r.participation[i] / double(tail);
+    r.entropy_end += r.entropy[i] / double(tail);
+  }
+  r.structures = count_peaks(e);
+  if (r.broke_at < 0) r.fate = o.growth_rate > 0 ? WaveFate::intact : WaveFate::stable;
+  else if (r.participation_end < kLocalizedParticipation) r.fate = WaveFate::localized;
+  else if (r.entropy_end > kDisorderedEntropy) r.fate = WaveFate::disordered;
+  else r.fate = WaveFate::modulated;
+  return r;
+}
+
+}  // namespace lrchain::sim::wave

@@ -1,0 +1,71 @@
+// What a travelling wave becomes (jobs/wave_job.hpp, step fate; sim/wave/wave_fate.hpp): a wave the
+// Floquet-Bloch spectrum calls stable stays the wave on the ring; an unstable one breaks up when its
+// noise, grown at the computed largest rate, reaches a tenth of A: at t ~ ln(0.1 / noise) / rate (a
+// second method for the rate, as wave_ring_growth_test.cpp), within the slack of the noise's projection
+// onto the growing mode; the spectral entropy of one plane wave is log 2 / log N (its modes +-j).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "lrchain/errors.hpp"
+#include "lrchain/jobs/wave_job.hpp"
+#include "lrchain/model.hpp"
+#include "lrchain/sim/model_lattice_bloch.hpp"
+
+using namespace lrchain;
+using namespace lrchain::jobs::wave;
+
+namespace {
+
+WaveConfig fate_of(const Model& model, double theta, double amplitude) {
+  WaveConfig c;
+  c.step = WaveStep::fate;
+  c.model = &model;
+  c.kernels = &sim::lattice_kernels_of(model);
+  c.theta = theta;
+  c.amplitude = amplitude;
+  c.k_points = 40;
+  c.ring_sites = 64;
+  c.periods = 400;
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("wave fate: a stable wave stays, an unstable one breaks up when the computed growth says" *
+          doctest::test_suite("fast")) {
+  const Model fput = shipped_model("fput");
+  // theta = 0.5: the NLS is defocusing and the spectrum has no growth at A = 0.03
+  const WaveResult calm = run(fate_of(fput, 0.5, 0.03));
+  REQUIRE(calm.fate);
+  CHECK(calm.stability->stable);
+  CHECK(calm.fate->fate == sim::wave::WaveFate::stable);
+  CHECK(calm.fate->broke_at < 0);
+  CHECK(calm.fate->max_relative_energy_drift < 1e-10);  // srkn11b, symplectic
+  CHECK(calm.fate->entropy.front() == doctest::Approx(std::log(2.0) / std::log(64.0)).epsilon(0.02));
+  CHECK(calm.theta == doctest::Approx(2 * std::numbers::pi * 5 / 64));  // the ring's nearest 2 pi j / N
+
+  // theta = 2.5, A = 0.3: modulationally unstable (measured 96.8 vs a predicted 80.5 on 128 sites)
+  const WaveResult broken = run(fate_of(fput, 2.5, 0.3));
+  REQUIRE(broken.fate);
+  REQUIRE(!broken.stability->stable);
+  const double predicted = std::log(sim::wave::kBrokenDeviation / 1e-4) / broken.stability->largest_rate;
+  CHECK(broken.fate->broke_at > 0.8 * predicted);
+  CHECK(broken.fate->broke_at < 1.5 * predicted);
+  CHECK(broken.fate->fate != sim::wave::WaveFate::stable);
+  CHECK(broken.fate->fate != sim::wave::WaveFate::intact);
+  CHECK(broken.fate->t.size() == 401);
+
+  // refusals name their key
+  WaveConfig bad = fate_of(fput, 2.5, 0.3);
+  bad.ring_sites = 4;
+  try {
+    validate(bad);
+    FAIL("ring_sites = 4 was accepted");
+  } catch (const InvalidParameter& e) {
+    CHECK(e.parameter() == "ring_sites");
+  }
+  bad = fate_of(fput, 0.01, 0.3);  // moves to theta = 0 on 64 sites
+  CHECK_THROWS_AS(validate(bad), InvalidParameter);
+}
