@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/model_json.hpp"
 #include "lrchain/provenance_json.hpp"
@@ -65,7 +67,13 @@ void branch_json(const DarkResult& r, json& j) {
   const BranchResult& br = r.branch;
   j["points"] = br.points.size();
   j["stop_reason"] = br.stop_reason;
+  j["stop"] = to_string(br.stop);
   j["turning_points"] = br.turning_points;
+  json folds = json::array();  // interpolated between the points on either side (continuation.hpp)
+  for (const auto& f : br.folds)
+    folds.push_back({{"omega_b", f.omega_b}, {"norm_squared", f.norm_squared}, {"after_point", f.after},
+                     {"fraction", f.fraction}});
+  j["folds"] = folds;
   j["interrupted"] = br.interrupted;
   double worst = 0;
   for (const auto& b : br.points) worst = std::max(worst, b.measures.E_b);
@@ -76,6 +84,7 @@ void branch_json(const DarkResult& r, json& j) {
       points.push_back({{"omega_b", b.omega_b}, {"E_b", b.measures.E_b},
                         {"contact_changes_per_period", count_json(b.contact_changes_per_period)}});
     j["branch_points"] = points;
+    j["symmetry"] = r.symmetry.empty() ? json(nullptr) : json(r.symmetry);
     j["contact_changes_per_period"] = points.empty() ? json(nullptr) : points.front()["contact_changes_per_period"];
   }
 }
@@ -114,6 +123,8 @@ std::optional<std::string> failure(const DarkResult& r) {
   if (!r.newton.converged) return newton_failure_message(r.newton, r.config.omega_b);
   if (r.config.step == DarkStep::branch && r.branch.points.size() < 2 && !r.branch.interrupted)
     return "continuation stopped: " + r.branch.stop_reason;  // the corrector failed at once
+  if (r.config.step == DarkStep::branch && r.branch.stop == BranchStop::step_too_small)  // it could not go on
+    return fmt::format("continuation stopped after {} points: {}", r.branch.points.size(), r.branch.stop_reason);
   return std::nullopt;
 }
 

@@ -12,7 +12,9 @@
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/sim/dark/dark_ansatz.hpp"
 #include "lrchain/sim/dark/dark_shape.hpp"
+#include "lrchain/sim/dark/lattice_reflection.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/symmetric_shooting.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 
 namespace lrchain::jobs::dark {
@@ -76,6 +78,33 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
     r.z_period = dark_breather_evolution(c.params, r.z0, period, 1, shooting.integration()).back();
 }
 
+// Continues a model's solved breather r.z0 within its reflection family (symmetric_shooting.hpp), so
+// that the steps cannot slide along the translation mode; without a reflection symmetry, on all of Z(0).
+void continue_in_family(const DarkShooting& shooting, const DarkAnsatz& ansatz, const DarkConfig& c,
+                        const DarkRunHooks& hooks, DarkResult& r) {
+  const DarkCenter center = parse_dark_center(c.center);
+  const std::optional<LatticeReflection> reflection =
+      find_dark_reflection(shooting.orbit().lattice(), dark_seed_centre(ansatz, center, *c.sites), r.seed,
+                           dark_seed_half_period(ansatz, center, *c.sites));
+  if (!reflection) {
+    continue_from(shooting, r.z0, c, hooks, r);
+    return;
+  }
+  r.symmetry = reflection->description;
+  const SymmetricDarkShooting family(shooting, *reflection);
+  NewtonOptions polish = newton_options(c, hooks);
+  polish.progress = {};
+  // Newton's solution is symmetric to round-off: a step or two in the family's unknowns.
+  const NewtonResult start = newton_solve(family, family.unknowns_from_z(r.z0), c.omega_b, polish);
+  if (!start.converged) {
+    r.newton.converged = false;
+    r.newton.failure = "the solution is not in its reflection family (" + reflection->description + "): " + start.failure;
+    return;
+  }
+  r.z0 = family.z_from_unknowns(start.q);
+  continue_from(family, start.q, c, hooks, r);
+}
+
 // A model file on its generated lattice kernels: the seed at its defocusing edge, full-period shooting.
 void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactIntegrationOptions& integration,
                DarkResult& r) {
@@ -103,7 +132,7 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   }
   r.z0 = r.newton.q;
   if (c.step == DarkStep::branch) {  // the start's contact changes are its branch point's
-    continue_from(shooting, r.z0, c, hooks, r);
+    continue_in_family(shooting, ansatz, c, hooks, r);
     return;
   }
   r.contact_changes_per_period = shooting.contact_changes_per_period(r.z0, c.omega_b);
@@ -140,6 +169,13 @@ void continue_from(const DarkShootingProblem& shooting, const Eigen::VectorXd& q
   o.ds = c.ds;
   o.tolerance = c.tolerance;
   o.floquet = c.branch_floquet;
+  // A model's arclength weighs the unknowns so that ds is a step of about ds in omega_b (continuation.hpp).
+  if (r.model_file()) {
+    o.state_weight = 0;
+    o.easy_corrector = 6;
+    o.hard_corrector = 10;
+    o.chord_contraction = 0.1;
+  }
   const bool above = c.omega_b > edge;
   o.direction = above ? 1.0 : -1.0;
   o.omega_min = above ? std::max(c.omega_min, edge) : c.omega_min;

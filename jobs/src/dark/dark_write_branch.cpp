@@ -44,6 +44,11 @@ void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& fig
   }
   sim::write_file_atomic(dir, "branch.csv", csv.str());
   sim::write_file_atomic(dir, "floquet_moduli.csv", mult.str());
+  std::ostringstream folds;  // the turning points, interpolated between the points on either side
+  folds << "omega_b,norm_squared,after_point,fraction\n";
+  for (const FoldPoint& f : r.branch.folds)
+    folds << fmt::format("{:.12g},{:.12g},{},{:.6g}\n", f.omega_b, f.norm_squared, f.after, f.fraction);
+  sim::write_file_atomic(dir, "folds.csv", folds.str());
   // The figures' titles name the branch the breathers bifurcate from (a model's own branch name).
   const std::string branch = sim::gnuplot_text(r.edge.branch, sim::GnuplotTextMode::enhanced);
   const std::string label = sim::gnuplot_text(lattice_label(r), sim::GnuplotTextMode::enhanced);

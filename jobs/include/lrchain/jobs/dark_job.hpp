@@ -116,6 +116,9 @@ struct DarkResult {
   std::string monodromy;  // "full period" | "reversible reduction"
   std::optional<Index> contact_changes_per_period;  // models with one-sided contacts
   sim::dark::BranchResult branch;
+  // (model files, continue) the reflection family imposed on the branch, e.g. "i -> (61 - i) mod 61
+  // with sign +, at all times"; empty: none (the lattice has no reflection symmetry, or the paper chain's own families)
+  std::string symmetry;
   sim::dark::DarkEvolution evolution;
   std::optional<KrylovRecord> krylov;  // the matrix-free path's record (floquet: the leading multipliers), absent on the dense one
   bool model_file() const { return config.model != nullptr; }
