@@ -168,6 +168,10 @@ void register_dark(CLI::App& app) {
   add_number(*cont, "--ds", c.ds, help("ds"));
   add_number(*cont, "--omega-min", c.omega_min, help("omega_min"));
   add_number(*cont, "--omega-max", c.omega_max, help("omega_max"));
+  cont->add_option("--parameter", c.parameter, help("parameter"))->type_name("NAME");
+  cont->add_option_function<std::string>(
+          "--to", [&c](const std::string& text) { c.to = parse_number(text, "to"); }, help("to"))
+      ->type_name("NUM");
   add_examples(*cont, {"lrchain dark continue --rho 1/3 --branch optical --center bond --omega-b 2.44 --points 10 --out out/dark"});
   cont->callback([args, cont] { dispatch(*args, DarkStep::branch, *cont); });
   auto* evo = dark->add_subcommand(

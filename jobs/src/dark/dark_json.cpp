@@ -68,6 +68,7 @@ void branch_json(const DarkResult& r, json& j) {
   j["points"] = br.points.size();
   j["stop_reason"] = br.stop_reason;
   j["stop"] = to_string(br.stop);
+  j["parameter"] = r.config.parameter;
   j["turning_points"] = br.turning_points;
   json folds = json::array();  // interpolated between the points on either side (continuation.hpp)
   for (const auto& f : br.folds)
@@ -83,6 +84,8 @@ void branch_json(const DarkResult& r, json& j) {
     for (const auto& b : br.points)
       points.push_back({{"omega_b", b.omega_b}, {"E_b", b.measures.E_b},
                         {"contact_changes_per_period", count_json(b.contact_changes_per_period)}});
+    if (r.config.parameter != "omega_b")  // each point's value of the continued parameter
+      for (std::size_t i = 0; i < br.points.size(); ++i) points[i][r.config.parameter] = br.points[i].parameter;
     j["branch_points"] = points;
     j["symmetry"] = r.symmetry.empty() ? json(nullptr) : json(r.symmetry);
     j["contact_changes_per_period"] = points.empty() ? json(nullptr) : points.front()["contact_changes_per_period"];

@@ -13,6 +13,7 @@
 #include "lrchain/sim/dark/dark_ansatz.hpp"
 #include "lrchain/sim/dark/dark_shape.hpp"
 #include "lrchain/sim/dark/lattice_reflection.hpp"
+#include "lrchain/sim/dark/parameter_shooting.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
 #include "lrchain/sim/dark/symmetric_shooting.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
@@ -78,6 +79,42 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
     r.z_period = dark_breather_evolution(c.params, r.z0, period, 1, shooting.integration()).back();
 }
 
+// Continues a model's breather (unknowns q0 of its family, or all of Z(0)) in the model parameter
+// c.parameter at fixed omega_b, from its value towards c.to, the last point solved at c.to.
+void continue_in_parameter(const DarkConfig& c, const DarkRunHooks& hooks, const Eigen::VectorXd& q0,
+                           const std::optional<LatticeReflection>& reflection, DarkResult& r) {
+  const Model& model = *c.model;
+  const auto& parameters = model.definition().parameters;
+  ParameterShootingSetup setup;
+  setup.kernels = c.kernels;
+  setup.parameters = sim::lattice_parameters(model);
+  for (std::size_t i = 0; i < parameters.size(); ++i)
+    if (parameters[i].name == c.parameter) setup.index = Index(i), setup.range = parameters[i];
+  setup.sites = *c.sites;
+  setup.mean_flow = r.edge.mean_flow;
+  setup.mode = parse_shooting_mode(c.mode);
+  if (hooks.stop) setup.integration.stop = hooks.stop;
+  setup.reflection = reflection;
+  setup.omega_b = c.omega_b;
+  const ParameterShooting shooting(std::move(setup));
+  const double start = model.parameter(c.parameter), end = *c.to;
+  ContinuationOptions o;
+  o.stop = hooks.stop;
+  o.max_points = c.points;
+  o.ds = c.ds;
+  o.tolerance = c.tolerance;
+  o.floquet = c.branch_floquet;
+  o.direction = end > start ? 1.0 : -1.0;
+  o.omega_min = std::min(start, end);
+  o.omega_max = std::max(start, end);
+  o.land_on_bounds = true;
+  o.state_weight = 0;  // ds: a step of about ds in the parameter
+  o.easy_corrector = 6;
+  o.hard_corrector = 10;
+  o.chord_contraction = 0.1;
+  r.branch = continue_branch(shooting, q0, start, o, hooks.on_point);
+}
+
 // Continues a model's solved breather r.z0 within its reflection family (symmetric_shooting.hpp), so
 // that the steps cannot slide along the translation mode; without a reflection symmetry, on all of Z(0).
 void continue_in_family(const DarkShooting& shooting, const DarkAnsatz& ansatz, const DarkConfig& c,
@@ -87,11 +124,16 @@ void continue_in_family(const DarkShooting& shooting, const DarkAnsatz& ansatz, 
       find_dark_reflection(shooting.orbit().lattice(), dark_seed_centre(ansatz, center, *c.sites), r.seed,
                            dark_seed_half_period(ansatz, center, *c.sites));
   if (!reflection) {
-    continue_from(shooting, r.z0, c, hooks, r);
+    if (c.parameter != "omega_b") continue_in_parameter(c, hooks, r.z0, std::nullopt, r);
+    else continue_from(shooting, r.z0, c, hooks, r);
     return;
   }
   r.symmetry = reflection->description;
   const SymmetricDarkShooting family(shooting, *reflection);
+  if (c.parameter != "omega_b") {
+    continue_in_parameter(c, hooks, family.unknowns_from_z(r.z0), reflection, r);
+    return;
+  }
   NewtonOptions polish = newton_options(c, hooks);
   polish.progress = {};
   // Newton's solution is symmetric to round-off: a step or two in the family's unknowns.
@@ -180,6 +222,11 @@ void continue_from(const DarkShootingProblem& shooting, const Eigen::VectorXd& q
   o.direction = above ? 1.0 : -1.0;
   o.omega_min = above ? std::max(c.omega_min, edge) : c.omega_min;
   o.omega_max = c.omega_max > 0 ? c.omega_max : above ? 1e300 : edge;
+  if (c.to) {  // the direction and the end of the range, its last point solved there
+    o.direction = *c.to > c.omega_b ? 1.0 : -1.0;
+    (*c.to > c.omega_b ? o.omega_max : o.omega_min) = *c.to;
+    o.land_on_bounds = true;
+  }
   r.branch = continue_branch(shooting, q0, c.omega_b, o, hooks.on_point);
 }
 

@@ -55,7 +55,7 @@ FoldPoint locate_fold(const BranchPoint& a, const BranchPoint& b, double ds, Ind
   // Cubic Hermite interpolant of omega_b(s) on [0, ds] at s = f ds.
   const double h00 = (1 + 2 * f) * (1 - f) * (1 - f), h10 = f * (1 - f) * (1 - f), h01 = f * f * (3 - 2 * f),
                h11 = f * f * (f - 1);
-  fold.omega_b = h00 * a.omega_b + h10 * ds * a.tangent_omega + h01 * b.omega_b + h11 * ds * b.tangent_omega;
+  fold.omega_b = h00 * a.parameter + h10 * ds * a.tangent_omega + h01 * b.parameter + h11 * ds * b.tangent_omega;
   fold.norm_squared = (1 - f) * a.measures.norm_squared + f * b.measures.norm_squared;
   return fold;
 }
@@ -82,11 +82,12 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
   // Accepts the converged point u: Jacobian (and Floquet propagator), measures, tangent.
   auto accept = [&](double residual) {
     BranchPoint pt;
-    pt.omega_b = u(k);
+    pt.parameter = u(k);
+    pt.omega_b = shooting.omega_b_at(u(k));
     pt.z0 = shooting.z_from_unknowns(u.head(k));
     shooting.jacobian_and_floquet(u.head(k), u(k), r, J, o.floquet ? &pt.floquet : nullptr);
-    shooting.measure(pt.z0, pt.omega_b, pt.measures);
-    pt.contact_changes_per_period = shooting.contact_changes_per_period(pt.z0, pt.omega_b);
+    shooting.measure(pt.z0, u(k), pt.measures);
+    pt.contact_changes_per_period = shooting.contact_changes_per_period(pt.z0, u(k));
     pt.iterations = iterations;
     pt.residual = residual;
     if (out.points.empty() && o.state_weight == 0) {  // w |dq/domega_b|^2 = 1 along the first tangent
@@ -98,7 +99,7 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
     const Eigen::VectorXd t = tangent(J, t_prev, metric);
     pt.tangent_omega = t(k);
     if (!out.points.empty() && (t(k) > 0) != (out.points.back().tangent_omega > 0)) {
-      out.turning_points.push_back(pt.omega_b);
+      out.turning_points.push_back(pt.parameter);
       out.folds.push_back(locate_fold(out.points.back(), pt, last_step, Index(out.points.size()) - 1));
     }
     t_prev = t;
@@ -115,10 +116,27 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
   auto interrupted = [&](double omega_b) {
     out.interrupted = true;
     out.stop = BranchStop::interrupted;
-    out.stop_reason = fmt::format("interrupted after {} points at omega_b = {:.6f}", out.points.size(), omega_b);
+    out.stop_reason = fmt::format("interrupted after {} points at {} = {:.6f}", out.points.size(),
+                                  shooting.parameter_name(), omega_b);
     return out;
   };
   auto stopped = [&] { return o.stop && o.stop->load(std::memory_order_relaxed); };
+  // The solution at parameter = bound from the state interpolated between u_prev and u (Newton at
+  // fixed parameter), accepted as the last point; false if Newton does not converge there.
+  auto land = [&](const Eigen::VectorXd& u_prev, double bound) {
+    const double f = (bound - u_prev(k)) / (u(k) - u_prev(k));
+    const Eigen::VectorXd q = u_prev.head(k) + f * (u.head(k) - u_prev.head(k));
+    NewtonOptions newton;
+    newton.tolerance = o.tolerance;
+    const NewtonResult solved = newton_solve(shooting, q, bound, newton);
+    if (!solved.converged) return false;
+    u.head(k) = solved.q;
+    u(k) = bound;
+    last_step = metric.norm(u - u_prev);
+    shooting.evaluate(u.head(k), u(k), r, nullptr);
+    accept(r.lpNorm<Eigen::Infinity>());
+    return true;
+  };
   while (Index(out.points.size()) < o.max_points) try {
     if (stopped()) return interrupted(u(k));
     const Eigen::VectorXd u_prev = u;
@@ -133,6 +151,25 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
     u = u_prev + ds * t;
     const Eigen::VectorXd u_pred = u;
     iterations = 0;
+    // A predictor beyond the end of the range: the last point is solved at the end itself.
+    if (o.land_on_bounds && (u(k) < o.omega_min || u(k) > o.omega_max)) {
+      const double bound = u(k) < o.omega_min ? o.omega_min : o.omega_max;
+      if (land(u_prev, bound)) {
+        out.stop = BranchStop::window;
+        out.stop_reason = fmt::format("reached {} = {:g}, the end of the range", shooting.parameter_name(), bound);
+        return out;
+      }
+      u = u_prev;
+      shooting.evaluate(u.head(k), u(k), r, &J);
+      ds *= 0.5;
+      if (ds < o.ds_min) {
+        out.stop = BranchStop::step_too_small;
+        out.stop_reason = fmt::format("arclength step below {:g} at {} = {:.6f} (Newton did not converge at {} = {:g})",
+                                      o.ds_min, shooting.parameter_name(), u(k), shooting.parameter_name(), bound);
+        return out;
+      }
+      continue;
+    }
     for (Index it = 0; it < o.max_corrector; ++it) {
       if (stopped()) return interrupted(u_prev(k));
       shooting.evaluate(u.head(k), u(k), r, nullptr);
@@ -156,7 +193,7 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
       u -= qr.solve(rhs);
       // A corrector that moves farther than the step itself (or to omega_b <= 0, where T_b < 0 makes
       // any Z(0) at rest a solution) has jumped off the branch: a smaller step instead.
-      if (!(u(k) > 0.0) || metric.norm(u - u_pred) > ds) break;
+      if (!shooting.parameter_allowed(u(k)) || metric.norm(u - u_pred) > ds) break;
     }
     if (!converged) {
       u = u_prev;
@@ -165,8 +202,8 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
       ds *= 0.5;
       if (ds < o.ds_min) {
         out.stop = BranchStop::step_too_small;
-        out.stop_reason = fmt::format("arclength step below {:g} at omega_b = {:.6f} (corrector did not "
-                                      "converge, last residual {:.3g})", o.ds_min, u(k), res);
+        out.stop_reason = fmt::format("arclength step below {:g} at {} = {:.6f} (corrector did not "
+                                      "converge, last residual {:.3g})", o.ds_min, shooting.parameter_name(), u(k), res);
         return out;
       }
       continue;
@@ -181,7 +218,13 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
     }
     if (u(k) < o.omega_min || u(k) > o.omega_max) {
       out.stop = BranchStop::window;
-      out.stop_reason = fmt::format("omega_b = {:.6f} left [{:g}, {:g}]", u(k), o.omega_min, o.omega_max);
+      const double bound = u(k) < o.omega_min ? o.omega_min : o.omega_max;
+      if (o.land_on_bounds && land(u_prev, bound)) {
+        out.stop_reason = fmt::format("reached {} = {:g}, the end of the range", shooting.parameter_name(), bound);
+        return out;
+      }
+      out.stop_reason = fmt::format("{} = {:.6f} left [{:g}, {:g}]", shooting.parameter_name(), u(k), o.omega_min,
+                                    o.omega_max);
       return out;
     }
     last_step = metric.norm(u - u_prev);
@@ -189,7 +232,7 @@ BranchResult continue_branch(const DarkShootingProblem& shooting, const Eigen::V
     if (iterations <= o.easy_corrector) ds = std::min(ds * 1.5, o.ds_max);
     if (iterations >= o.hard_corrector) ds *= 0.7;
   } catch (const Interrupted&) {
-    return interrupted(out.points.empty() ? omega0 : out.points.back().omega_b);
+    return interrupted(out.points.empty() ? omega0 : out.points.back().parameter);
   }
   out.stop_reason = fmt::format("reached {} points", o.max_points);
   return out;

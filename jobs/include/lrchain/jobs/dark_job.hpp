@@ -58,6 +58,11 @@ struct DarkConfig {
   double omega_min = 0;     // stop when omega_b falls below this
   double omega_max = 0;     // stop when omega_b rises above this; 0: the band edge (none above a rising edge)
   bool branch_floquet = true;  // Floquet multipliers at every branch point
+  // The continued parameter: omega_b, or (model files) one of the model's parameters at fixed omega_b
+  std::string parameter = "omega_b";
+  // Where the continuation goes and ends (its last point solved there): required for a model
+  // parameter, in its range; for omega_b it replaces omega_min (below omega_b) or omega_max (above)
+  std::optional<double> to;
   // evolve:
   double t_end = 0;   // integration time, at least one period T_b = 2 pi/omega_b (required)
   Index samples = 24;  // samples of x_n(t) per period for the position measure, in [4, 1e6]

@@ -21,8 +21,11 @@ struct ContinuationOptions {
   double ds_min = 1e-5;      // stop when the step falls below this
   double ds_max = 1.0;
   Index max_points = 100;
-  double omega_min = 0;      // stop when omega_b leaves [omega_min, omega_max]
+  double omega_min = 0;      // stop when the parameter (omega_b) leaves [omega_min, omega_max]
   double omega_max = 1e300;
+  // A point beyond the window is replaced by the solution at the bound it crossed (Newton at that
+  // parameter value from the interpolated state), the branch's last point: e.g. C = 0 exactly.
+  bool land_on_bounds = false;
   double direction = -1;     // initial sign of d omega_b (into the gap: -1)
   // Weight w of the unknowns against omega_b in the arclength: |du|^2 = w |dq|^2 + domega_b^2.
   // 1: unweighted (the resonant chain's figures). 0: chosen at the first point so that the state's
@@ -44,6 +47,7 @@ struct ContinuationOptions {
 
 struct BranchPoint {
   double omega_b = 0;
+  double parameter = 0;    // the continued parameter's value (omega_b when continuing in omega_b)
   Eigen::VectorXd z0;      // (x(0), y(0))
   DarkMeasures measures;
   FloquetResult floquet;   // empty multipliers if not requested
@@ -59,7 +63,7 @@ struct BranchPoint {
 struct FoldPoint {
   Index after = 0;         // between points after and after + 1
   double fraction = 0;     // of the arclength between them
-  double omega_b = 0;
+  double omega_b = 0;      // the continued parameter's value at the fold (omega_b when continuing in omega_b)
   double norm_squared = 0;  // ||Z(0)||^2 (eq:l2norm) interpolated
 };
 
