@@ -118,6 +118,16 @@ void evolution_json(const DarkResult& r, json& j) {
   j["depth_end"] = last.depth;
   if (!r.model_file()) j["max_strain"] = e.max_strain;
   j["samples_per_period"] = r.config.samples;
+  const DarkConfig& c = r.config;  // the perturbation the start carried (perturb none: null)
+  if (c.perturb == "none") {
+    j["perturbation"] = nullptr;
+  } else {
+    json p = {{"kind", c.perturb}, {"size", c.perturb_size}};
+    if (c.perturb == "random") p["seed"] = c.seed;
+    if (c.perturb == "unstable") p["multiplier"] = {r.perturbation.multiplier.real(), r.perturbation.multiplier.imag()};
+    if (c.perturb == "unstable") p["multiplier_modulus"] = std::abs(r.perturbation.multiplier);
+    j["perturbation"] = p;
+  }
 }
 
 }  // namespace

@@ -52,10 +52,20 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
     case DarkStep::branch:
       continue_from(shooting, r.newton.q, c, hooks, r);
       return;
-    case DarkStep::evolve:
+    case DarkStep::evolve: {
+      if (c.perturb == "unstable") {  // the full-period monodromy's leading eigenvector
+        Eigen::VectorXd residual;
+        Eigen::MatrixXd jacobian, monodromy;
+        const ResonantChainShooting full(c.params, *c.sites, center, ShootingMode::full, shooting.integration());
+        full.evaluate(full.unknowns_from_z(r.z0), c.omega_b, residual, &jacobian, &monodromy);
+        r.perturbation = unstable_perturbation(monodromy, c.perturb_size);
+      } else if (c.perturb == "random") {
+        r.perturbation = random_perturbation(r.z0.size(), c.perturb_size, c.seed);
+      }
       r.evolution = evolve_dark_breather(c.params, r.z0, c.omega_b, c.t_end, c.samples, shooting.integration(), hooks.stop,
-                                       hooks.evolution_progress);
+                                       hooks.evolution_progress, r.perturbation.vector);
       return;
+    }
     case DarkStep::solve:
     case DarkStep::floquet:
       break;
@@ -179,8 +189,12 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   }
   r.contact_changes_per_period = shooting.contact_changes_per_period(r.z0, c.omega_b);
   if (c.step == DarkStep::evolve) {
+    if (c.perturb == "unstable")
+      r.perturbation = unstable_perturbation(shooting.monodromy(r.z0, c.omega_b), c.perturb_size);
+    else if (c.perturb == "random")
+      r.perturbation = random_perturbation(r.z0.size(), c.perturb_size, c.seed);
     r.evolution = evolve_dark_orbit(shooting.advance(), r.z0, *c.sites, c.omega_b, c.t_end, c.samples, hooks.stop,
-                                    hooks.evolution_progress);
+                                    hooks.evolution_progress, r.perturbation.vector);
     return;
   }
   shooting.measure(r.z0, c.omega_b, r.measures);

@@ -75,6 +75,12 @@ std::vector<DarkOption> make_options() {
        "integration time (dimensionless, time unit of Sec. 2)"},
       {"samples", "--samples", "samples", {"evolve"}, d.samples, false, integer_range(config::dark_samples),
        "samples of x_n(t) per period for the amplitudes of the position measure"},
+      {"perturb", "--perturb", "", {"evolve"}, d.perturb, false, "none|unstable|random",
+       "start from the breather plus a perturbation: along the eigenvector of the largest Floquet multiplier "
+       "(unstable) or random positions (random), to watch an instability grow"},
+      {"perturb_size", "--perturb-size", "", {"evolve"}, d.perturb_size, false, "(0, 1)",
+       "max-norm of the perturbation of Z(0) and Zdot(0)"},
+      {"seed", "--seed", "", {"evolve"}, d.seed, false, ">= 0", "perturb random: the seed of the generator (mt19937_64)"},
       {"format", "--format", "", all_steps, d.format, false, "csv|hdf5",
        "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: profiles, the branch or the evolution, "
        "Floquet multipliers as complex numbers)"},
