@@ -181,7 +181,7 @@ void register_dark(CLI::App& app) {
   add_integer(*evo, "--samples", c.samples, config::dark_samples.least, config::dark_samples.most, help("samples"));
   evo->add_option("--perturb", c.perturb, help("perturb"))
       ->check(CLI::IsMember({"none", "unstable", "random"}).description(""))
-      ->type_name("none|unstable|random");
+      ->type_name("KIND");
   add_number(*evo, "--perturb-size", c.perturb_size, help("perturb_size"));
   evo->add_option("--seed", c.seed, help("seed"))->type_name("N");
   add_examples(*evo, {"lrchain dark evolve --rho 1/3 --center bond --omega-b 2.44 --t-end 500 --out out/dark-evolve"});

@@ -24,6 +24,25 @@ using namespace lrchain::sim::dark;
 
 namespace {
 
+// The continuation's options from the config. A model's arclength weighs the unknowns so that ds is a
+// step of about ds in the parameter, its chord corrector refreshes below 10x contraction
+// (continuation.hpp); the resonant chain keeps the plain arclength of its figures.
+ContinuationOptions continuation_options(const DarkConfig& c, const DarkRunHooks& hooks, bool model_file) {
+  ContinuationOptions o;
+  o.stop = hooks.stop;
+  o.max_points = c.points;
+  o.ds = c.ds;
+  o.tolerance = c.tolerance;
+  o.floquet = c.branch_floquet;
+  if (model_file) {
+    o.state_weight = 0;
+    o.easy_corrector = 6;
+    o.hard_corrector = 10;
+    o.chord_contraction = 0.1;
+  }
+  return o;
+}
+
 sim::dark::NewtonOptions newton_options(const DarkConfig& c, const DarkRunHooks& hooks) {
   NewtonOptions o;
   o.tolerance = c.tolerance;
@@ -108,20 +127,11 @@ void continue_in_parameter(const DarkConfig& c, const DarkRunHooks& hooks, const
   setup.omega_b = c.omega_b;
   const ParameterShooting shooting(std::move(setup));
   const double start = model.parameter(c.parameter), end = *c.to;
-  ContinuationOptions o;
-  o.stop = hooks.stop;
-  o.max_points = c.points;
-  o.ds = c.ds;
-  o.tolerance = c.tolerance;
-  o.floquet = c.branch_floquet;
+  ContinuationOptions o = continuation_options(c, hooks, true);
   o.direction = end > start ? 1.0 : -1.0;
   o.omega_min = std::min(start, end);
   o.omega_max = std::max(start, end);
   o.land_on_bounds = true;
-  o.state_weight = 0;  // ds: a step of about ds in the parameter
-  o.easy_corrector = 6;
-  o.hard_corrector = 10;
-  o.chord_contraction = 0.1;
   r.branch = continue_branch(shooting, q0, start, o, hooks.on_point);
 }
 
@@ -219,19 +229,7 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
 void continue_from(const DarkShootingProblem& shooting, const Eigen::VectorXd& q0, const DarkConfig& c,
                    const DarkRunHooks& hooks, DarkResult& r) {
   const double edge = r.edge.omega;
-  ContinuationOptions o;
-  o.stop = hooks.stop;
-  o.max_points = c.points;
-  o.ds = c.ds;
-  o.tolerance = c.tolerance;
-  o.floquet = c.branch_floquet;
-  // A model's arclength weighs the unknowns so that ds is a step of about ds in omega_b (continuation.hpp).
-  if (r.model_file()) {
-    o.state_weight = 0;
-    o.easy_corrector = 6;
-    o.hard_corrector = 10;
-    o.chord_contraction = 0.1;
-  }
+  ContinuationOptions o = continuation_options(c, hooks, r.model_file());
   const bool above = c.omega_b > edge;
   o.direction = above ? 1.0 : -1.0;
   o.omega_min = above ? std::max(c.omega_min, edge) : c.omega_min;

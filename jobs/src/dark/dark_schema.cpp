@@ -62,10 +62,10 @@ std::vector<DarkOption> make_options() {
       {"omega_max", "--omega-max", "omega_max", {"continue"}, d.omega_max, false,
        "0 (the band edge omega(pi)) or > omega_b, at most twice the top of the optical band",
        "stop when omega_b rises above this (dimensionless frequency)"},
-      {"parameter", "--parameter", "", {"continue"}, d.parameter, false,
+      {"parameter", "--parameter", "parameter", {"continue"}, d.parameter, false,
        "omega_b, or with a model file one of its parameters",
        "the continued parameter (a model parameter at fixed omega_b, e.g. C down to the anti-continuum limit 0)"},
-      {"to", "--to", "", {"continue"}, none, false,
+      {"to", "--to", "to", {"continue"}, none, false,
        "a model parameter: in its range (required); omega_b: > 0",
        "where the continuation ends, its last point solved there (sets the direction; omega_b: replaces omega_min "
        "or omega_max)"},
@@ -75,12 +75,12 @@ std::vector<DarkOption> make_options() {
        "integration time (dimensionless, time unit of Sec. 2)"},
       {"samples", "--samples", "samples", {"evolve"}, d.samples, false, integer_range(config::dark_samples),
        "samples of x_n(t) per period for the amplitudes of the position measure"},
-      {"perturb", "--perturb", "", {"evolve"}, d.perturb, false, "none|unstable|random",
+      {"perturb", "--perturb", "perturb", {"evolve"}, d.perturb, false, "none|unstable|random",
        "start from the breather plus a perturbation: along the eigenvector of the largest Floquet multiplier "
        "(unstable) or random positions (random), to watch an instability grow"},
-      {"perturb_size", "--perturb-size", "", {"evolve"}, d.perturb_size, false, "(0, 1)",
+      {"perturb_size", "--perturb-size", "perturb_size", {"evolve"}, d.perturb_size, false, "(0, 1)",
        "max-norm of the perturbation of Z(0) and Zdot(0)"},
-      {"seed", "--seed", "", {"evolve"}, d.seed, false, ">= 0", "perturb random: the seed of the generator (mt19937_64)"},
+      {"seed", "--seed", "seed", {"evolve"}, d.seed, false, ">= 0", "perturb random: the seed of the generator (mt19937_64)"},
       {"format", "--format", "", all_steps, d.format, false, "csv|hdf5",
        "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: profiles, the branch or the evolution, "
        "Floquet multipliers as complex numbers)"},
