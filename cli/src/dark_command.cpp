@@ -168,6 +168,10 @@ void register_dark(CLI::App& app) {
   add_number(*cont, "--ds", c.ds, help("ds"));
   add_number(*cont, "--omega-min", c.omega_min, help("omega_min"));
   add_number(*cont, "--omega-max", c.omega_max, help("omega_max"));
+  cont->add_option("--parameter", c.parameter, help("parameter"))->type_name("NAME");
+  cont->add_option_function<std::string>(
+          "--to", [&c](const std::string& text) { c.to = parse_number(text, "to"); }, help("to"))
+      ->type_name("NUM");
   add_examples(*cont, {"lrchain dark continue --rho 1/3 --branch optical --center bond --omega-b 2.44 --points 10 --out out/dark"});
   cont->callback([args, cont] { dispatch(*args, DarkStep::branch, *cont); });
   auto* evo = dark->add_subcommand(
@@ -175,6 +179,11 @@ void register_dark(CLI::App& app) {
   add_common(*evo, *args);
   from_schema(add_number(*evo, "--t-end", c.t_end, help("t_end")), "t_end");
   add_integer(*evo, "--samples", c.samples, config::dark_samples.least, config::dark_samples.most, help("samples"));
+  evo->add_option("--perturb", c.perturb, help("perturb"))
+      ->check(CLI::IsMember({"none", "unstable", "random"}).description(""))
+      ->type_name("KIND");
+  add_number(*evo, "--perturb-size", c.perturb_size, help("perturb_size"));
+  evo->add_option("--seed", c.seed, help("seed"))->type_name("N");
   add_examples(*evo, {"lrchain dark evolve --rho 1/3 --center bond --omega-b 2.44 --t-end 500 --out out/dark-evolve"});
   evo->callback([args, evo] { dispatch(*args, DarkStep::evolve, *evo); });
   for (auto* sub : {solve_cmd, floq, cont, evo})

@@ -301,12 +301,14 @@ class Branch:
 def continue_branch(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
                     tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], points=_D["points"], ds=_D["ds"],
                     omega_min=_D["omega_min"], omega_max=_D["omega_max"],
-                    floquet=_D["floquet"], *, model=None, progress=None):
+                    floquet=_D["floquet"], parameter=_D["parameter"], to=_D["to"], *, model=None, progress=None):
     """Solve at ``omega_b``, then continue the family (at most ``points`` points, initial arclength step
     ``ds``) while omega_b stays in [omega_min, omega_max] (default: up to the band edge), with the
     Floquet multipliers at every point if ``floquet``; returns :class:`Branch`. With ``model``: away
     from the model's edge (into the gap below it, upwards from an edge the branch rises from, as
-    ``lrchain dark continue --model``); returns :class:`ModelBranch`. ``progress``: a bar over the
+    ``lrchain dark continue --model``); returns :class:`ModelBranch`. ``parameter`` (with ``model``:
+    one of its parameters, at fixed omega_b) and ``to`` (where the branch ends, its last point solved
+    there, e.g. ``parameter="C", to=0``) as ``--parameter``/``--to``. ``progress``: a bar over the
     points (see :mod:`lrchain.progress`).
 
     Example::
@@ -321,13 +323,13 @@ def continue_branch(params=None, omega_b=None, branch=None, center=_D["center"],
         with Bar("dark-breather branch", progress, unit="point") as bar:
             d = _edge(python_names(lambda: _lrchain.dark_model_continue(
                 model, omega_b, branch, center, sites, mode, tolerance, max_iterations, points, ds, omega_min,
-                omega_max, floquet, bar.callback)))
+                omega_max, floquet, parameter, to, bar.callback)))
         d["floquet"] = [_floquet(f) for f in d["floquet"]]
         return ModelBranch(**d)
     with Bar("dark-breather branch", progress, unit="point") as bar:
         d = python_names(lambda: _lrchain.dark_continue(params, omega_b, branch, center, sites, mode, tolerance,
                                                         max_iterations, points, ds, omega_min, omega_max, floquet,
-                                                        bar.callback))
+                                                        parameter, to, bar.callback))
     d["floquet"] = [_floquet(f) for f in d["floquet"]]
     return Branch(params=params, **d)
 
@@ -353,6 +355,8 @@ class ModelBranch(_ModelEdge):
     contact_changes_per_period: list
     turning_points: list
     stop_reason: str
+    parameter: str = "omega_b"  # the continued parameter
+    parameter_values: list = None  # its value at each point
 
     def to_hdf5(self, path):
         """Writes the branch with the C++ job layer's writer, the file ``lrchain dark continue --model
@@ -409,12 +413,14 @@ class Evolution:
 @renamed("dark")
 @real_numbers
 def evolve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], mode=_D["mode"],
-           tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], t_end=None, samples=_D["samples"], *, model=None,
-           progress=None):
+           tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], t_end=None, samples=_D["samples"],
+           perturb=_D["perturb"], perturb_size=_D["perturb_size"], seed=_D["seed"], *, model=None, progress=None):
     """Solve, then integrate from Z(0) over floor(t_end / T_b) periods (default: 10 periods),
     sampling every site ``samples`` times per period for the position measure; returns
     :class:`Evolution` (with ``model``: :class:`ModelEvolution`). Ctrl-C interrupts it with
-    ``KeyboardInterrupt``. ``progress``: a bar over the periods (see :mod:`lrchain.progress`).
+    ``KeyboardInterrupt``. ``perturb``: "none", "unstable" (along the eigenvector of the largest
+    Floquet multiplier) or "random" (``seed``), of max-norm ``perturb_size``, added to the start so
+    that an instability can be watched. ``progress``: a bar over the periods (see :mod:`lrchain.progress`).
 
     Example::
 
@@ -429,11 +435,13 @@ def evolve(params=None, omega_b=None, branch=None, center=_D["center"], sites=_D
     if model is not None:
         with Bar("dark-breather evolution", progress) as bar:
             d = _edge(python_names(lambda: _lrchain.dark_model_evolve(
-                model, omega_b, branch, center, sites, mode, tolerance, max_iterations, t_end, samples, bar.callback)))
+                model, omega_b, branch, center, sites, mode, tolerance, max_iterations, t_end, samples, perturb,
+                perturb_size, seed, bar.callback)))
         return ModelEvolution(**d)
     with Bar("dark-breather evolution", progress) as bar:
         d = python_names(lambda: _lrchain.dark_evolve(params, omega_b, branch, center, sites, mode, tolerance,
-                                                      max_iterations, t_end, samples, bar.callback))
+                                                      max_iterations, t_end, samples, perturb, perturb_size, seed,
+                                                      bar.callback))
     return Evolution(params=params, **d)
 
 

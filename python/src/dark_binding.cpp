@@ -50,9 +50,10 @@ py::dict solve_job(const Params& p, double omega_b, const std::string& branch, c
 
 py::dict continue_job(const Params& p, double omega_b, const std::string& branch, const std::string& center, std::optional<double> sites,
                       const std::string& mode, double tolerance, double max_iterations, double points, double ds,
-                      double omega_min, std::optional<double> omega_max, bool floquet, const py::object& progress) {
+                      double omega_min, std::optional<double> omega_max, bool floquet, const std::string& parameter,
+                      std::optional<double> to, const py::object& progress) {
   DarkConfig c = chain_config(DarkStep::branch, p, omega_b, branch, center, sites, mode, tolerance, max_iterations);
-  set_branch_keywords(c, points, ds, omega_min, omega_max, floquet);
+  set_branch_keywords(c, points, ds, omega_min, omega_max, floquet, parameter, to);
   const DarkResult r = run_dark_job(c, progress);
   py::dict d = branch_arrays(r.branch, floquet, [](const sim::dark::DarkMeasures& m) { return measures(m); });
   // x, y: (points, sites) profiles Z(0) of the two fields
@@ -70,9 +71,9 @@ py::dict continue_job(const Params& p, double omega_b, const std::string& branch
 
 py::dict evolve_job(const Params& p, double omega_b, const std::string& branch, const std::string& center, std::optional<double> sites,
                     const std::string& mode, double tolerance, double max_iterations, double t_end, double samples,
-                    const py::object& progress) {
+                    const std::string& perturb, double perturb_size, double seed, const py::object& progress) {
   DarkConfig c = chain_config(DarkStep::evolve, p, omega_b, branch, center, sites, mode, tolerance, max_iterations);
-  set_evolve_keywords(c, t_end, samples);
+  set_evolve_keywords(c, t_end, samples, perturb, perturb_size, seed);
   const DarkResult r = run_dark_job(c, progress);
   const sim::dark::DarkEvolution& e = r.evolution;
   const py::ssize_t N = e.sites;
@@ -112,11 +113,11 @@ void register_dark(py::module_& m) {
         py::arg("full_monodromy"));
   m.def("dark_continue", &continue_job, py::arg("params"), py::arg("omega_b"), py::arg("branch"),
         py::arg("center"), py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"),
-        py::arg("points"), py::arg("ds"), py::arg("omega_min"), py::arg("omega_max"), py::arg("floquet"),
+        py::arg("points"), py::arg("ds"), py::arg("omega_min"), py::arg("omega_max"), py::arg("floquet"), py::arg("parameter"), py::arg("to"),
         py::arg("progress") = py::none());
   m.def("dark_evolve", &evolve_job, py::arg("params"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("t_end"),
-        py::arg("samples"), py::arg("progress") = py::none());
+        py::arg("samples"), py::arg("perturb"), py::arg("perturb_size"), py::arg("seed"), py::arg("progress") = py::none());
 }
 
 }  // namespace lrchain::python

@@ -32,7 +32,9 @@ DarkConfig dark_config(DarkStep step, double omega_b, const std::optional<std::s
 }
 
 void set_branch_keywords(DarkConfig& c, double points, double ds, double omega_min, std::optional<double> omega_max,
-                         bool floquet) {
+                         bool floquet, const std::string& parameter, std::optional<double> to) {
+  c.parameter = parameter;
+  c.to = to;
   c.points = integer_keyword(points, "points", config::dark_points.least, config::dark_points.most);
   c.ds = ds;
   c.omega_min = omega_min;
@@ -40,7 +42,11 @@ void set_branch_keywords(DarkConfig& c, double points, double ds, double omega_m
   c.branch_floquet = floquet;
 }
 
-void set_evolve_keywords(DarkConfig& c, double t_end, double samples) {
+void set_evolve_keywords(DarkConfig& c, double t_end, double samples, const std::string& perturb, double perturb_size,
+                         double seed) {
+  c.perturb = perturb;
+  c.perturb_size = perturb_size;
+  c.seed = std::uint64_t(integer_keyword(seed, "seed", 0, config::int32_most));
   c.t_end = t_end;
   c.samples = integer_keyword(samples, "samples", config::dark_samples.least, config::dark_samples.most);
 }

@@ -17,8 +17,10 @@ jobs::dark::DarkConfig dark_config(jobs::dark::DarkStep step, double omega_b, co
                                    double max_iterations);
 // The keywords of continue_branch (omega_max None: the band edge) and of evolve, into `c`.
 void set_branch_keywords(jobs::dark::DarkConfig& c, double points, double ds, double omega_min,
-                         std::optional<double> omega_max, bool floquet);
-void set_evolve_keywords(jobs::dark::DarkConfig& c, double t_end, double samples);
+                         std::optional<double> omega_max, bool floquet, const std::string& parameter,
+                         std::optional<double> to);
+void set_evolve_keywords(jobs::dark::DarkConfig& c, double t_end, double samples, const std::string& perturb,
+                         double perturb_size, double seed);
 // The integer keyword `value` (checked_integer; caps from lrchain/config/option_caps.hpp where there is one).
 Index integer_keyword(double value, const std::string& keyword, std::int64_t least, std::int64_t most);
 

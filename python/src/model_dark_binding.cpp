@@ -93,9 +93,9 @@ py::dict model_dark_solve_job(const LoadedModel& loaded, double omega_b, std::op
 py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch,
                       const std::string& center, std::optional<double> sites, const std::string& mode, double tolerance,
                       double max_iterations, double points, double ds, double omega_min, std::optional<double> omega_max,
-                      bool floquet, const py::object& progress) {
+                      bool floquet, const std::string& parameter, std::optional<double> to, const py::object& progress) {
   DarkConfig c = model_config(DarkStep::branch, loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations);
-  set_branch_keywords(c, points, ds, omega_min, omega_max, floquet);
+  set_branch_keywords(c, points, ds, omega_min, omega_max, floquet, parameter, to);
   const DarkResult r = run_dark_job(c, progress);
   const DarkEdge& e = r.edge;
   py::dict d = edge_dict(loaded, r);
@@ -110,15 +110,20 @@ py::dict continue_job(const LoadedModel& loaded, double omega_b, std::optional<s
   }
   d["z"] = by_field(rows, e.fields, dark_sites(r.config), false);
   d["contact_changes_per_period"] = contact_rows;
+  py::list values;  // the continued parameter's value at each point (omega_b when continuing in omega_b)
+  for (const auto& b : r.branch.points) values.append(b.parameter);
+  d["parameter"] = c.parameter;
+  d["parameter_values"] = values;
   return d;
 }
 
 // Solve, then integrate from Z(0) over floor(t_end / T_b) periods (`lrchain dark evolve --model`).
 py::dict evolve_job(const LoadedModel& loaded, double omega_b, std::optional<std::string> branch, const std::string& center,
                     std::optional<double> sites, const std::string& mode, double tolerance, double max_iterations, double t_end,
-                    double samples, const py::object& progress) {
+                    double samples, const std::string& perturb, double perturb_size, double seed,
+                    const py::object& progress) {
   DarkConfig c = model_config(DarkStep::evolve, loaded, omega_b, branch, center, sites, mode, tolerance, max_iterations);
-  set_evolve_keywords(c, t_end, samples);
+  set_evolve_keywords(c, t_end, samples, perturb, perturb_size, seed);
   const DarkResult r = run_dark_job(c, progress);
   std::vector<const Eigen::VectorXd*> rows;
   for (const auto& z : r.evolution.snapshots) rows.push_back(&z);
@@ -135,11 +140,11 @@ void register_model_dark(py::module_& m) {
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("floquet"));
   m.def("dark_model_continue", &continue_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"),
         py::arg("center"), py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"),
-        py::arg("points"), py::arg("ds"), py::arg("omega_min"), py::arg("omega_max"), py::arg("floquet"),
+        py::arg("points"), py::arg("ds"), py::arg("omega_min"), py::arg("omega_max"), py::arg("floquet"), py::arg("parameter"), py::arg("to"),
         py::arg("progress") = py::none());
   m.def("dark_model_evolve", &evolve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("mode"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("t_end"),
-        py::arg("samples"), py::arg("progress") = py::none());
+        py::arg("samples"), py::arg("perturb"), py::arg("perturb_size"), py::arg("seed"), py::arg("progress") = py::none());
 }
 
 }  // namespace lrchain::python

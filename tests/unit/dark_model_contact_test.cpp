@@ -162,7 +162,7 @@ TEST_CASE("dark job: every branch point of a model reports its own contact chang
   const DarkResult solved = job.run(c);
   c.step = DarkStep::branch;
   c.points = 3;
-  c.ds = 0.5;
+  c.ds = 0.01;  // a model's ds is a step of about ds in omega_b (0.5 passed the turning point at 2.37)
   const DarkResult r = job.run(c);
   REQUIRE(solved.contact_changes_per_period.has_value());
   REQUIRE(r.branch.points.size() == 3);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/model_json.hpp"
 #include "lrchain/provenance_json.hpp"
@@ -65,7 +67,14 @@ void branch_json(const DarkResult& r, json& j) {
   const BranchResult& br = r.branch;
   j["points"] = br.points.size();
   j["stop_reason"] = br.stop_reason;
+  j["stop"] = to_string(br.stop);
+  j["parameter"] = r.config.parameter;
   j["turning_points"] = br.turning_points;
+  json folds = json::array();  // interpolated between the points on either side (continuation.hpp)
+  for (const auto& f : br.folds)
+    folds.push_back({{"omega_b", f.omega_b}, {"norm_squared", f.norm_squared}, {"after_point", f.after},
+                     {"fraction", f.fraction}});
+  j["folds"] = folds;
   j["interrupted"] = br.interrupted;
   double worst = 0;
   for (const auto& b : br.points) worst = std::max(worst, b.measures.E_b);
@@ -75,7 +84,10 @@ void branch_json(const DarkResult& r, json& j) {
     for (const auto& b : br.points)
       points.push_back({{"omega_b", b.omega_b}, {"E_b", b.measures.E_b},
                         {"contact_changes_per_period", count_json(b.contact_changes_per_period)}});
+    if (r.config.parameter != "omega_b")  // each point's value of the continued parameter
+      for (std::size_t i = 0; i < br.points.size(); ++i) points[i][r.config.parameter] = br.points[i].parameter;
     j["branch_points"] = points;
+    j["symmetry"] = r.symmetry.empty() ? json(nullptr) : json(r.symmetry);
     j["contact_changes_per_period"] = points.empty() ? json(nullptr) : points.front()["contact_changes_per_period"];
   }
 }
@@ -106,6 +118,16 @@ void evolution_json(const DarkResult& r, json& j) {
   j["depth_end"] = last.depth;
   if (!r.model_file()) j["max_strain"] = e.max_strain;
   j["samples_per_period"] = r.config.samples;
+  const DarkConfig& c = r.config;  // the perturbation the start carried (perturb none: null)
+  if (c.perturb == "none") {
+    j["perturbation"] = nullptr;
+  } else {
+    json p = {{"kind", c.perturb}, {"size", c.perturb_size}};
+    if (c.perturb == "random") p["seed"] = c.seed;
+    if (c.perturb == "unstable") p["multiplier"] = {r.perturbation.multiplier.real(), r.perturbation.multiplier.imag()};
+    if (c.perturb == "unstable") p["multiplier_modulus"] = std::abs(r.perturbation.multiplier);
+    j["perturbation"] = p;
+  }
 }
 
 }  // namespace
@@ -114,6 +136,8 @@ std::optional<std::string> failure(const DarkResult& r) {
   if (!r.newton.converged) return newton_failure_message(r.newton, r.config.omega_b);
   if (r.config.step == DarkStep::branch && r.branch.points.size() < 2 && !r.branch.interrupted)
     return "continuation stopped: " + r.branch.stop_reason;  // the corrector failed at once
+  if (r.config.step == DarkStep::branch && r.branch.stop == BranchStop::step_too_small)  // it could not go on
+    return fmt::format("continuation stopped after {} points: {}", r.branch.points.size(), r.branch.stop_reason);
   return std::nullopt;
 }
 

@@ -12,7 +12,10 @@
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/sim/dark/dark_ansatz.hpp"
 #include "lrchain/sim/dark/dark_shape.hpp"
+#include "lrchain/sim/dark/lattice_reflection.hpp"
+#include "lrchain/sim/dark/parameter_shooting.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/dark/symmetric_shooting.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 
 namespace lrchain::jobs::dark {
@@ -20,6 +23,25 @@ namespace lrchain::jobs::dark {
 using namespace lrchain::sim::dark;
 
 namespace {
+
+// The continuation's options from the config. A model's arclength weighs the unknowns so that ds is a
+// step of about ds in the parameter, its chord corrector refreshes below 10x contraction
+// (continuation.hpp); the resonant chain keeps the plain arclength of its figures.
+ContinuationOptions continuation_options(const DarkConfig& c, const DarkRunHooks& hooks, bool model_file) {
+  ContinuationOptions o;
+  o.stop = hooks.stop;
+  o.max_points = c.points;
+  o.ds = c.ds;
+  o.tolerance = c.tolerance;
+  o.floquet = c.branch_floquet;
+  if (model_file) {
+    o.state_weight = 0;
+    o.easy_corrector = 6;
+    o.hard_corrector = 10;
+    o.chord_contraction = 0.1;
+  }
+  return o;
+}
 
 sim::dark::NewtonOptions newton_options(const DarkConfig& c, const DarkRunHooks& hooks) {
   NewtonOptions o;
@@ -49,10 +71,20 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
     case DarkStep::branch:
       continue_from(shooting, r.newton.q, c, hooks, r);
       return;
-    case DarkStep::evolve:
+    case DarkStep::evolve: {
+      if (c.perturb == "unstable") {  // the full-period monodromy's leading eigenvector
+        Eigen::VectorXd residual;
+        Eigen::MatrixXd jacobian, monodromy;
+        const ResonantChainShooting full(c.params, *c.sites, center, ShootingMode::full, shooting.integration());
+        full.evaluate(full.unknowns_from_z(r.z0), c.omega_b, residual, &jacobian, &monodromy);
+        r.perturbation = unstable_perturbation(monodromy, c.perturb_size);
+      } else if (c.perturb == "random") {
+        r.perturbation = random_perturbation(r.z0.size(), c.perturb_size, c.seed);
+      }
       r.evolution = evolve_dark_breather(c.params, r.z0, c.omega_b, c.t_end, c.samples, shooting.integration(), hooks.stop,
-                                       hooks.evolution_progress);
+                                       hooks.evolution_progress, r.perturbation.vector);
       return;
+    }
     case DarkStep::solve:
     case DarkStep::floquet:
       break;
@@ -74,6 +106,65 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   }
   if (!c.out.empty())  // the profile's Z(T_b)
     r.z_period = dark_breather_evolution(c.params, r.z0, period, 1, shooting.integration()).back();
+}
+
+// Continues a model's breather (unknowns q0 of its family, or all of Z(0)) in the model parameter
+// c.parameter at fixed omega_b, from its value towards c.to, the last point solved at c.to.
+void continue_in_parameter(const DarkConfig& c, const DarkRunHooks& hooks, const Eigen::VectorXd& q0,
+                           const std::optional<LatticeReflection>& reflection, DarkResult& r) {
+  const Model& model = *c.model;
+  const auto& parameters = model.definition().parameters;
+  ParameterShootingSetup setup;
+  setup.kernels = c.kernels;
+  setup.parameters = sim::lattice_parameters(model);
+  for (std::size_t i = 0; i < parameters.size(); ++i)
+    if (parameters[i].name == c.parameter) setup.index = Index(i), setup.range = parameters[i];
+  setup.sites = *c.sites;
+  setup.mean_flow = r.edge.mean_flow;
+  setup.mode = parse_shooting_mode(c.mode);
+  if (hooks.stop) setup.integration.stop = hooks.stop;
+  setup.reflection = reflection;
+  setup.omega_b = c.omega_b;
+  const ParameterShooting shooting(std::move(setup));
+  const double start = model.parameter(c.parameter), end = *c.to;
+  ContinuationOptions o = continuation_options(c, hooks, true);
+  o.direction = end > start ? 1.0 : -1.0;
+  o.omega_min = std::min(start, end);
+  o.omega_max = std::max(start, end);
+  o.land_on_bounds = true;
+  r.branch = continue_branch(shooting, q0, start, o, hooks.on_point);
+}
+
+// Continues a model's solved breather r.z0 within its reflection family (symmetric_shooting.hpp), so
+// that the steps cannot slide along the translation mode; without a reflection symmetry, on all of Z(0).
+void continue_in_family(const DarkShooting& shooting, const DarkAnsatz& ansatz, const DarkConfig& c,
+                        const DarkRunHooks& hooks, DarkResult& r) {
+  const DarkCenter center = parse_dark_center(c.center);
+  const std::optional<LatticeReflection> reflection =
+      find_dark_reflection(shooting.orbit().lattice(), dark_seed_centre(ansatz, center, *c.sites), r.seed,
+                           dark_seed_half_period(ansatz, center, *c.sites));
+  if (!reflection) {
+    if (c.parameter != "omega_b") continue_in_parameter(c, hooks, r.z0, std::nullopt, r);
+    else continue_from(shooting, r.z0, c, hooks, r);
+    return;
+  }
+  r.symmetry = reflection->description;
+  const SymmetricDarkShooting family(shooting, *reflection);
+  if (c.parameter != "omega_b") {
+    continue_in_parameter(c, hooks, family.unknowns_from_z(r.z0), reflection, r);
+    return;
+  }
+  NewtonOptions polish = newton_options(c, hooks);
+  polish.progress = {};
+  // Newton's solution is symmetric to round-off: a step or two in the family's unknowns.
+  const NewtonResult start = newton_solve(family, family.unknowns_from_z(r.z0), c.omega_b, polish);
+  if (!start.converged) {
+    r.newton.converged = false;
+    r.newton.failure = "the solution is not in its reflection family (" + reflection->description + "): " + start.failure;
+    return;
+  }
+  r.z0 = family.z_from_unknowns(start.q);
+  continue_from(family, start.q, c, hooks, r);
 }
 
 // A model file on its generated lattice kernels: the seed at its defocusing edge, full-period shooting.
@@ -103,13 +194,17 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   }
   r.z0 = r.newton.q;
   if (c.step == DarkStep::branch) {  // the start's contact changes are its branch point's
-    continue_from(shooting, r.z0, c, hooks, r);
+    continue_in_family(shooting, ansatz, c, hooks, r);
     return;
   }
   r.contact_changes_per_period = shooting.contact_changes_per_period(r.z0, c.omega_b);
   if (c.step == DarkStep::evolve) {
+    if (c.perturb == "unstable")
+      r.perturbation = unstable_perturbation(shooting.monodromy(r.z0, c.omega_b), c.perturb_size);
+    else if (c.perturb == "random")
+      r.perturbation = random_perturbation(r.z0.size(), c.perturb_size, c.seed);
     r.evolution = evolve_dark_orbit(shooting.advance(), r.z0, *c.sites, c.omega_b, c.t_end, c.samples, hooks.stop,
-                                    hooks.evolution_progress);
+                                    hooks.evolution_progress, r.perturbation.vector);
     return;
   }
   shooting.measure(r.z0, c.omega_b, r.measures);
@@ -134,16 +229,16 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
 void continue_from(const DarkShootingProblem& shooting, const Eigen::VectorXd& q0, const DarkConfig& c,
                    const DarkRunHooks& hooks, DarkResult& r) {
   const double edge = r.edge.omega;
-  ContinuationOptions o;
-  o.stop = hooks.stop;
-  o.max_points = c.points;
-  o.ds = c.ds;
-  o.tolerance = c.tolerance;
-  o.floquet = c.branch_floquet;
+  ContinuationOptions o = continuation_options(c, hooks, r.model_file());
   const bool above = c.omega_b > edge;
   o.direction = above ? 1.0 : -1.0;
   o.omega_min = above ? std::max(c.omega_min, edge) : c.omega_min;
   o.omega_max = c.omega_max > 0 ? c.omega_max : above ? 1e300 : edge;
+  if (c.to) {  // the direction and the end of the range, its last point solved there
+    o.direction = *c.to > c.omega_b ? 1.0 : -1.0;
+    (*c.to > c.omega_b ? o.omega_max : o.omega_min) = *c.to;
+    o.land_on_bounds = true;
+  }
   r.branch = continue_branch(shooting, q0, c.omega_b, o, hooks.on_point);
 }
 

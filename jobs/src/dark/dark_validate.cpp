@@ -1,5 +1,6 @@
 // validate(DarkConfig): every option of a dark job, its memory and its output directory, checked
 // before any Newton iteration and before anything is written (dark_job.hpp).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -75,6 +76,22 @@ void validate_model(const DarkConfig& c) {
   const DarkAnsatz ansatz = with_config_keys(
       [&] { return make_dark_ansatz(model, *c.kernels, defocusing_edge(model, given), c.omega_b); });
   check_dark_sites(ansatz, c.sites.value_or(default_dark_sites(ansatz.theta)));
+  if (c.step == DarkStep::branch && c.parameter != "omega_b") {  // a model parameter at fixed omega_b
+    const auto& parameters = model.definition().parameters;
+    const auto found = std::find_if(parameters.begin(), parameters.end(),
+                                    [&](const ModelParameter& p) { return p.name == c.parameter; });
+    if (found == parameters.end()) {
+      std::string names = "omega_b";
+      for (const auto& p : parameters) names += ", " + p.name;
+      throw InvalidParameter("parameter", fmt::format("must be omega_b or a parameter of {} ({}), got '{}'",
+                                                      model.name(), names, c.parameter));
+    }
+    if (!c.to) throw InvalidParameter("to", "is required with parameter " + c.parameter + " (where the continuation ends)");
+    checked_finite(*c.to, "to");
+    if (!found->contains(*c.to) || *c.to == model.parameter(c.parameter))
+      throw InvalidParameter("to", fmt::format("must lie in the range {} of {} and differ from its value {:g}",
+                                               found->range_text, c.parameter, model.parameter(c.parameter)));
+  }
   if (c.step == DarkStep::branch) {
     checked_finite(c.ds, "ds");
     if (!(c.ds > 0 && c.ds <= 1)) throw InvalidParameter("ds", "must be in (0, 1] (it adapts within [1e-5, 1])");
@@ -108,6 +125,14 @@ Index dark_sites(const DarkConfig& c) {
 }
 
 void validate(const DarkConfig& c) {
+  if (!c.model && c.parameter != "omega_b")
+    throw InvalidParameter("parameter", "must be omega_b for the paper chain (continue a model file's parameters with "
+                                        "a model, e.g. the shipped resonant_chain), got '" + c.parameter + "'");
+  if (c.step == DarkStep::branch && c.parameter == "omega_b" && c.to) {
+    checked_finite(*c.to, "to");
+    if (!(*c.to > 0 && *c.to != c.omega_b))
+      throw InvalidParameter("to", "must be a frequency > 0 other than omega-b (where the continuation in omega_b ends)");
+  }
   if (c.sites) config::checked_option(double(*c.sites), config::dark_sites, "sites");
   if (!(c.tolerance > 0 && c.tolerance < 1)) throw InvalidParameter("tolerance", "must be in (0, 1)");
   if (c.max_iterations < 1) throw InvalidParameter("max_iterations", "must be an integer >= 1");
@@ -127,6 +152,10 @@ void validate(const DarkConfig& c) {
                                                   "(dimensionless time of Sec. 2)", period));
     periods = double(config::checked_option_count(c.t_end, period, config::dark_periods, "t_end"));
     config::checked_option(double(c.samples), config::dark_samples, "samples");
+    if (c.perturb != "none" && c.perturb != "unstable" && c.perturb != "random")
+      throw InvalidParameter("perturb", "must be none, unstable or random, got '" + c.perturb + "'");
+    if (!(std::isfinite(c.perturb_size) && c.perturb_size > 0 && c.perturb_size < 1))
+      throw InvalidParameter("perturb_size", "must be in (0, 1) (the max-norm of the perturbation of Z(0) and Zdot(0))");
   }
   const sim::ResourceEstimate e = c.model ? model_estimate(c, periods) : chain_estimate(c, periods);
   if (e.dominant == "period" && !c.model)  // (a model's refusal names sites, as `dark --model` did)

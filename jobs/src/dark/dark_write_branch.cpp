@@ -17,16 +17,18 @@ void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& fig
   const DarkConfig& c = r.config;
   const bool model_points = r.model_file();  // also the contact changes per period
   std::ostringstream csv;
-  csv << "omega_b,norm_squared,K_x,K_y,C_x,C_y,E_b,stability,max_modulus,max_real,max_period_doubling,"
+  const bool in_parameter = c.parameter != "omega_b";  // the continued model parameter first
+  csv << (in_parameter ? c.parameter + "," : std::string()) << "omega_b,norm_squared,K_x,K_y,C_x,C_y,E_b,stability,max_modulus,max_real,max_period_doubling,"
          "max_oscillatory,iterations" << (model_points ? ",contact_changes_per_period" : "") << "\n";
   std::ostringstream mult;  // omega_b, |lambda|, type (0 complex, 1 real>0, 2 real<0)
-  mult << "omega_b,modulus,type,branch_part\n";
+  mult << (in_parameter ? c.parameter : std::string("omega_b")) << ",modulus,type,branch_part\n";
   int part = 0;
   bool unstable_in[2] = {false, false};  // a modulus > 1 before / after the first turning point
   double last_tangent = -1;
   for (const BranchPoint& b : r.branch.points) {
     if ((b.tangent_omega > 0) != (last_tangent > 0)) ++part;
     last_tangent = b.tangent_omega;
+    if (in_parameter) csv << fmt::format("{:.12g},", b.parameter);
     csv << fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.6g},{:.6g},{:.3g},{},{:.12g},{:.12g},{:.12g},{:.12g},{}",
                        b.omega_b, b.measures.norm_squared, b.measures.K_x, b.measures.K_y, b.measures.C_x,
                        b.measures.C_y, b.measures.E_b, b.floquet.kind(), b.floquet.max_modulus,
@@ -38,15 +40,34 @@ void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& fig
     for (auto l : b.floquet.multipliers) {
       if (std::abs(l) < 1.0 + 1e-6) continue;
       const bool real = std::abs(l.imag()) <= 1e-7 * std::abs(l);
-      mult << fmt::format("{:.12g},{:.12g},{},{}\n", b.omega_b, std::abs(l), real ? (l.real() > 0 ? 1 : 2) : 0, part);
+      mult << fmt::format("{:.12g},{:.12g},{},{}\n", in_parameter ? b.parameter : b.omega_b, std::abs(l), real ? (l.real() > 0 ? 1 : 2) : 0, part);
       unstable_in[part >= 1] = true;
     }
   }
   sim::write_file_atomic(dir, "branch.csv", csv.str());
   sim::write_file_atomic(dir, "floquet_moduli.csv", mult.str());
+  std::ostringstream folds;  // the turning points, interpolated between the points on either side
+  folds << c.parameter << ",norm_squared,after_point,fraction\n";
+  for (const FoldPoint& f : r.branch.folds)
+    folds << fmt::format("{:.12g},{:.12g},{},{:.6g}\n", f.omega_b, f.norm_squared, f.after, f.fraction);
+  sim::write_file_atomic(dir, "folds.csv", folds.str());
   // The figures' titles name the branch the breathers bifurcate from (a model's own branch name).
   const std::string branch = sim::gnuplot_text(r.edge.branch, sim::GnuplotTextMode::enhanced);
   const std::string label = sim::gnuplot_text(lattice_label(r), sim::GnuplotTextMode::enhanced);
+  if (in_parameter) {  // a model parameter at fixed omega_b: the norm over the parameter
+    figures.draw({"branch.gp",
+                  fmt::format("if (!exists(\"outfile\")) outfile = 'branch.png'\n"
+                              "set terminal pngcairo size 900,650\nset output outfile\n"
+                              "set datafile separator ','\nset xlabel '{0}'\n"
+                              "set ylabel 'renormalised ℓ^{{2}} norm squared'\nset key below\n"
+                              "set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\n"
+                              "set title '{1} dark breathers at ω_{{b}} = {2:.6g}, {3} (red: real instability)'\n"
+                              "plot 'branch.csv' skip 1 u 1:3 w lp pt 7 ps 0.6 lc 'blue' t 'branch', "
+                              "'' skip 1 u 1:(strstrt(strcol(9),'real') > 0 ? $3 : 1/0) w p pt 7 lc 'red' t 'real instability'\n",
+                              sim::gnuplot_text(c.parameter, sim::GnuplotTextMode::enhanced), branch, c.omega_b, label),
+                  "branch.png"});
+    return;
+  }
   // The x range holds the band edge (its line inside the frame) and every point, on whichever side
   // of the edge the branch lies (below it for the resonant chain, above it where h_tilde > 0).
   const double omega_edge = r.edge.omega;

@@ -173,4 +173,15 @@ Eigen::VectorXd dark_seed(const DarkAnsatz& a, DarkCenter center, Index sites) {
   return z;
 }
 
+Eigen::VectorXd dark_seed_half_period(const DarkAnsatz& ansatz, DarkCenter center, Index sites) {
+  DarkAnsatz later = ansatz;
+  for (double& k : later.kernel) k = -k;
+  return dark_seed(later, center, sites);
+}
+
+double dark_seed_centre(const DarkAnsatz& a, DarkCenter center, Index sites) {
+  const double n0 = dark_center_n0(center);
+  return a.theta != 0 ? 0.5 * static_cast<double>(sites - 1) + n0 : 0.25 * static_cast<double>(sites) + n0;
+}
+
 }  // namespace lrchain::sim::dark

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <limits>
 #include <numbers>
 
@@ -31,7 +32,7 @@ double dark_dip_position(const Eigen::VectorXd& amplitude) {
 // Direct integration of eq:Hertzd0S from (Z(0), 0) with per-period measures (eq:relerr, eq:center).
 DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, Index sites, double omega_b,
                                 double t_end, Index samples_per_period, const std::atomic<bool>* stop,
-                                const std::function<void(double)>& progress) {
+                                const std::function<void(double)>& progress, const Eigen::VectorXd& perturbation) {
   if (!(omega_b > 0)) throw InvalidParameter("omega_b", "must be > 0");
   if (samples_per_period < 4) throw InvalidParameter("samples", "at least 4 samples per period");
   const Index N = sites;
@@ -43,15 +44,20 @@ DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::Vector
   const Eigen::Index positions = z0.size();
   std::vector<double> s(static_cast<std::size_t>(2 * positions), 0.0);
   for (Eigen::Index i = 0; i < positions; ++i) s[static_cast<std::size_t>(i)] = z0(i);
+  if (perturbation.size() == 2 * positions)
+    for (Eigen::Index i = 0; i < 2 * positions; ++i) s[static_cast<std::size_t>(i)] += perturbation(i);
+  else if (perturbation.size() != 0)
+    throw std::invalid_argument("evolve_dark_orbit: the perturbation needs 2 x positions entries");
+  const Eigen::VectorXd start = Eigen::Map<const Eigen::VectorXd>(s.data(), positions);
   const double zmax = z0.cwiseAbs().maxCoeff();
 
   DarkEvolution out;
   out.sites = N;
   out.period = period;
   out.snapshots.reserve(static_cast<std::size_t>(M + 1));
-  out.snapshots.push_back(z0);
+  out.snapshots.push_back(start);
   out.periods.reserve(static_cast<std::size_t>(M));
-  out.max_strain = z0.head(N).maxCoeff();
+  out.max_strain = start.head(N).maxCoeff();
   Eigen::VectorXd lo(N), hi(N);
   double previous = 0;
   for (Index m = 1; m <= M; ++m) {
@@ -94,12 +100,13 @@ DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::Vector
 DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, double omega_b,
                                    double t_end, Index samples_per_period,
                                    const ContactIntegrationOptions& integration,
-                                   const std::atomic<bool>* stop, const std::function<void(double)>& progress) {
+                                   const std::atomic<bool>* stop, const std::function<void(double)>& progress,
+                                   const Eigen::VectorXd& perturbation) {
   const Index N = z0.size() / 2;
   StrainLatticeOrbit orbit(p, N);
   ContactIntegrator integrator(orbit, integration);
   return evolve_dark_orbit([&](std::vector<double>& s, double t0, double t1) { integrator.integrate(s, t0, t1); },
-                           z0, N, omega_b, t_end, samples_per_period, stop, progress);
+                           z0, N, omega_b, t_end, samples_per_period, stop, progress, perturbation);
 }
 
 }  // namespace lrchain::sim::dark

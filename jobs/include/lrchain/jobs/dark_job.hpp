@@ -4,6 +4,7 @@
 // gnuplot, HDF5 in an output directory) and to_json (the summary `lrchain dark` prints). The
 // `lrchain dark` command, lrchain.dark and the "dark continue" sweep are adapters onto it.
 #include <atomic>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -20,6 +21,7 @@
 #include "lrchain/sim/dark/evolution.hpp"
 #include "lrchain/sim/dark/floquet.hpp"
 #include "lrchain/sim/dark/measures.hpp"
+#include "lrchain/sim/dark/perturbation.hpp"
 #include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 #include "lrchain/sim/model_lattice_abi.h"
 
@@ -58,9 +60,17 @@ struct DarkConfig {
   double omega_min = 0;     // stop when omega_b falls below this
   double omega_max = 0;     // stop when omega_b rises above this; 0: the band edge (none above a rising edge)
   bool branch_floquet = true;  // Floquet multipliers at every branch point
+  // The continued parameter: omega_b, or (model files) one of the model's parameters at fixed omega_b
+  std::string parameter = "omega_b";
+  // Where the continuation goes and ends (its last point solved there): required for a model
+  // parameter, in its range; for omega_b it replaces omega_min (below omega_b) or omega_max (above)
+  std::optional<double> to;
   // evolve:
   double t_end = 0;   // integration time, at least one period T_b = 2 pi/omega_b (required)
   Index samples = 24;  // samples of x_n(t) per period for the position measure, in [4, 1e6]
+  std::string perturb = "none";  // none | unstable (the largest Floquet multiplier's eigenvector) | random
+  double perturb_size = 1e-6;    // max-norm of the perturbation of [Z(0), Zdot(0)], in (0, 1)
+  std::uint64_t seed = 1;        // random: the generator's seed
   // resources and files:
   // with a model file, solve/floquet/evolve: the dense path or the matrix-free one (breather_solver.hpp);
   // continue, full mode and the paper chain's own shooting are dense
@@ -116,7 +126,12 @@ struct DarkResult {
   std::string monodromy;  // "full period" | "reversible reduction"
   std::optional<Index> contact_changes_per_period;  // models with one-sided contacts
   sim::dark::BranchResult branch;
+  // (model files, continue) the reflection family imposed on the branch, e.g. "i -> (61 - i) mod 61
+  // with sign +, at all times"; empty: none (the lattice has no reflection symmetry, or the paper chain's own families)
+  std::string symmetry;
   sim::dark::DarkEvolution evolution;
+  // evolve --perturb: the perturbation added to the breather's start (empty vector: none)
+  sim::dark::DarkPerturbation perturbation;
   std::optional<KrylovRecord> krylov;  // the matrix-free path's record (floquet: the leading multipliers), absent on the dense one
   bool model_file() const { return config.model != nullptr; }
 };

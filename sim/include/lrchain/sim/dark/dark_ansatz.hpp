@@ -73,4 +73,11 @@ void check_dark_sites(const DarkAnsatz& ansatz, Index sites);
 // w_f[n] = u_f[n] - u_0[n] (mean flow) or displacements u_f[n], field-major.
 Eigen::VectorXd dark_seed(const DarkAnsatz& ansatz, DarkCenter center, Index sites);
 
+// The same seed half a period T_b/2 later: the carrier's sign reversed (K_f -> -K_f), the mean flow kept.
+Eigen::VectorXd dark_seed_half_period(const DarkAnsatz& ansatz, DarkCenter center, Index sites);
+
+// The seed's centre as an array position: (sites - 1)/2 + n0 at theta = pi, the first of the pair's
+// sites/4 + n0 at theta = 0 (the reflection about it maps the second onto itself).
+double dark_seed_centre(const DarkAnsatz& ansatz, DarkCenter center, Index sites);
+
 }  // namespace lrchain::sim::dark

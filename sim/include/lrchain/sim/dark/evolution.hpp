@@ -37,12 +37,15 @@ struct DarkEvolution {
 // i weighted by (max A - A_i)^2, returned as a physical site n = i - (N - 1)/2 in (-N/2, N/2].
 double dark_dip_position(const Eigen::VectorXd& amplitude);
 
+// `perturbation` (empty: none): added to the start [Z(0), 0] (positions then velocities), so that an
+// instability can be watched; E_b(m T_b) still measures the distance from the breather Z(0).
 // The same for any orbit: Z(0) = z0 holds the positions of all variables (`sites` per variable,
 // field-major); the amplitudes, centre and position use variable 0. `progress` (empty: none) is
 // called after every period with the periods done / periods.
 DarkEvolution evolve_dark_orbit(const OrbitAdvance& advance, const Eigen::VectorXd& z0, Index sites, double omega_b,
                                 double t_end, Index samples_per_period, const std::atomic<bool>* stop = nullptr,
-                                const std::function<void(double fraction)>& progress = {});
+                                const std::function<void(double fraction)>& progress = {},
+                                const Eigen::VectorXd& perturbation = {});
 
 // Integrates from Z(0) over floor(t_end / T_b) periods, sampling every site `samples_per_period`
 // times per period for the amplitudes A_n = (sup - inf)/2 of x_n(t) (the position measure).
@@ -51,6 +54,7 @@ DarkEvolution evolve_dark_breather(const Params& p, const Eigen::VectorXd& z0, d
                                    double t_end, Index samples_per_period = 24,
                                    const ContactIntegrationOptions& integration = {},
                                    const std::atomic<bool>* stop = nullptr,
-                                   const std::function<void(double fraction)>& progress = {});
+                                   const std::function<void(double fraction)>& progress = {},
+                                   const Eigen::VectorXd& perturbation = {});
 
 }  // namespace lrchain::sim::dark

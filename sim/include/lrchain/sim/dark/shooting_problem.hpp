@@ -40,6 +40,14 @@ class DarkShootingProblem {
   // Sign changes of the one-sided contacts' overlaps over one period T_b of the orbit from Z(0) = z0
   // where the problem locates them (a model lattice with contacts); nullopt where it does not.
   virtual std::optional<Index> contact_changes_per_period(const Eigen::VectorXd&, double) const { return std::nullopt; }
+  // The continuation parameter: the second argument of evaluate, measure, ... is omega_b here; a
+  // problem continued in a model parameter (parameter_shooting.hpp) takes that parameter's value
+  // instead, at a fixed omega_b.
+  virtual std::string parameter_name() const { return "omega_b"; }
+  virtual double omega_b_at(double parameter) const { return parameter; }
+  // Whether the corrector may evaluate at this parameter value (omega_b > 0: T_b < 0 makes any Z(0)
+  // at rest a solution; a model parameter inside its range).
+  virtual bool parameter_allowed(double value) const { return value > 0.0; }
 };
 
 struct NewtonRecord {
