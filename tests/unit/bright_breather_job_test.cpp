@@ -237,6 +237,8 @@ TEST_CASE("bright job: continuation in omega_b away from the edge, within the no
     CHECK(r.branch.points[k].residual <= 1e-11);
     CHECK(r.branch_floquets[k].stable);
   }
+  // Monotone in omega_b and stable throughout: no fold, no multiplier crossing (branch_bifurcations.hpp).
+  CHECK(r.bifurcations.empty());
   // Below the band of the soft lattice (h_tilde < 0) the window ends where 2 omega_b meets the band
   // top sqrt(1.4): (sqrt(1.4)/2, 1).
   const Lattice soft("klein_gordon", {{"a", 0.0}, {"b", -0.5}});
