@@ -96,7 +96,9 @@ void continue_away_from_edge(const sim::dark::DarkShooting& shooting, const Brig
     if (!c.branch_floquet) continue;
     const Eigen::MatrixXd monodromy = shooting.monodromy(p.z0, p.omega_b);
     r.branch_floquets.push_back(bright_floquet(monodromy, r.edge.mean_flow, {c.unit_tolerance}));
-    if (!r.edge.mean_flow) r.branch_krein.push_back(krein_signatures(monodromy, masses, c.unit_tolerance));
+    if (!r.edge.mean_flow)
+      r.branch_krein.push_back(
+          krein_signatures(monodromy, masses, c.unit_tolerance, r.branch_floquets.back().trivial_distance));
   }
   r.bifurcations = branch_bifurcations(branch_samples(r, c.unit_tolerance));
 }

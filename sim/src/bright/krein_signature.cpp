@@ -11,7 +11,7 @@
 namespace lrchain::sim::bright {
 
 std::vector<KreinMultiplier> krein_signatures(const Eigen::MatrixXd& monodromy, const Eigen::VectorXd& masses,
-                                              double unit_tolerance) {
+                                              double unit_tolerance, double trivial_radius) {
   const Eigen::Index n = masses.size();
   if (monodromy.rows() != 2 * n || monodromy.cols() != 2 * n)
     throw InvalidParameter("masses", "one per position: half the size of the monodromy matrix");
@@ -21,6 +21,7 @@ std::vector<KreinMultiplier> krein_signatures(const Eigen::MatrixXd& monodromy, 
   for (Eigen::Index k = 0; k < solver.eigenvalues().size(); ++k) {
     const std::complex<double> l = solver.eigenvalues()[k];
     if (l.imag() <= 1e-9 || std::abs(std::abs(l) - 1.0) > unit_tolerance) continue;
+    if (std::abs(l - 1.0) <= trivial_radius * (1 + 1e-6)) continue;
     const Eigen::VectorXcd v = solver.eigenvectors().col(k);
     // v^H J v = sum_i m_i (conj(q_i) qdot_i - conj(qdot_i) q_i) = 2 i sum_i m_i Im(conj(q_i) qdot_i)
     double form = 0;

@@ -18,9 +18,10 @@ struct KreinMultiplier {
   int signature = 0;            // +1 or -1
 };
 
-// The signatures of the simple multipliers with ||lambda| - 1| <= unit_tolerance and Im lambda > 1e-9,
-// ordered by angle; `masses` has one entry per position (half the size of `monodromy`).
+// The signatures of the multipliers with ||lambda| - 1| <= unit_tolerance, Im lambda > 1e-9 and
+// |lambda - 1| > trivial_radius (the trivial ones, BrightFloquet::trivial_distance), ordered by angle;
+// `masses` has one entry per position (half the size of `monodromy`).
 std::vector<KreinMultiplier> krein_signatures(const Eigen::MatrixXd& monodromy, const Eigen::VectorXd& masses,
-                                              double unit_tolerance);
+                                              double unit_tolerance, double trivial_radius = 0);
 
 }  // namespace lrchain::sim::bright
