@@ -188,7 +188,10 @@ class BrightBranch:
     """A bright-breather family continued in omega_b away from its band edge: the first point ``start`` (a
     :class:`BrightBreather`), per point ``omega_b``, ``peak``, ``norm_squared``, ``width``, ``stable`` and
     ``max_nontrivial_modulus`` (None without Floquet), ``z`` (points x fields x sites), the
-    ``turning_points``, the non-resonant ``window`` (low, high; high None when unbounded) and ``stop_reason``.
+    ``turning_points``, the non-resonant ``window`` (low, high; high None when unbounded), ``stop_reason``,
+    ``bifurcations`` (dicts: kind fold | branch_point | period_doubling | krein_collision, index, omega_b,
+    norm_squared, omega_low, omega_high) and ``krein`` (per point a list of dicts angle, modulus,
+    signature for the multipliers on the upper unit circle; None in strain form or without Floquet).
     ``to_hdf5(path)`` writes the file ``lrchain bright continue --format hdf5`` writes (:mod:`lrchain.hdf5`);
     :func:`lrchain.load` reads it back; ``to_xarray()`` gives a Dataset on ``point``."""
 
@@ -203,6 +206,8 @@ class BrightBranch:
     turning_points: list
     window: tuple
     stop_reason: str
+    bifurcations: list
+    krein: list
 
     def to_hdf5(self, path):
         """Writes the branch with the C++ job layer's writer (layout: :mod:`lrchain.hdf5`)."""
@@ -244,4 +249,4 @@ def _branch(d):
         norm_squared=np.array([p["norm_squared"] for p in rows]), width=np.array([p["width"] for p in rows]),
         stable=[p["stable"] for p in rows], max_nontrivial_modulus=[p["max_nontrivial_modulus"] for p in rows],
         z=z, turning_points=b["turning_points"], window=tuple(b["window"]),
-        stop_reason=b["stop_reason"])
+        stop_reason=b["stop_reason"], bifurcations=b["bifurcations"], krein=[p["krein"] for p in rows])

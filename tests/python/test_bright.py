@@ -64,3 +64,7 @@ def test_continue_branch_rises_from_the_edge():
     assert all(b.stable) and b.window[0] == pytest.approx(np.sqrt(1.4), rel=1e-12) and b.window[1] is None
     assert b.stop_reason == "reached 4 points"
     assert np.array_equal(b.z[0], b.start.z)
+    # stable and monotone: no bifurcation; the phonons' multipliers (upper circle) carry Krein signature -1
+    # (tests/unit/bright_breather_job_test.cpp explains the arc)
+    assert b.bifurcations == [] and len(b.krein) == 4
+    assert len(b.krein[0]) >= 55 and all(m["signature"] == -1 for m in b.krein[0])

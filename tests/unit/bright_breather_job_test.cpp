@@ -237,6 +237,24 @@ TEST_CASE("bright job: continuation in omega_b away from the edge, within the no
     CHECK(r.branch.points[k].residual <= 1e-11);
     CHECK(r.branch_floquets[k].stable);
   }
+  // Monotone in omega_b and stable throughout: no fold, no multiplier crossing (branch_bifurcations.hpp).
+  CHECK(r.bifurcations.empty());
+  // Krein signatures: away from the breather the ring is the linear chain, whose phonons
+  // (omega_q in [1, sqrt(1.4)], positive energy) give multipliers exp(i omega_q T_b); with
+  // omega_q T_b in (pi, 2 pi) the one on the upper circle is exp(-i omega_q T_b), at angle
+  // 2 pi (1 - omega_q / omega_b) in [2 pi (1 - sqrt(1.4)/1.19), 2 pi (1 - 1/1.19)] = [0.0356, 1.0029],
+  // with signature -1 (the conjugate of a positive one). The trivial pair is left out; one multiplier
+  // outside the arc, near +1, is the breather's own pinning mode (its translation along the lattice).
+  REQUIRE(r.branch_krein.size() == 6);
+  const auto& krein = r.branch_krein.front();
+  std::size_t in_arc = 0;
+  for (const auto& m : krein) {
+    const double angle = std::arg(m.lambda);
+    if (angle >= 2 * M_PI * (1 - std::sqrt(1.4) / 1.19) - 1e-6 && angle <= 2 * M_PI * (1 - 1 / 1.19) + 1e-6) ++in_arc;
+    CHECK(m.signature == -1);
+  }
+  CHECK(in_arc >= 55);
+  CHECK(krein.size() - in_arc <= 1);
   // Below the band of the soft lattice (h_tilde < 0) the window ends where 2 omega_b meets the band
   // top sqrt(1.4): (sqrt(1.4)/2, 1).
   const Lattice soft("klein_gordon", {{"a", 0.0}, {"b", -0.5}});

@@ -1,5 +1,6 @@
 // to_json(BrightBreatherResult): the summary `lrchain bright` prints (bright_breather_job.hpp).
 #include <cmath>
+#include <complex>
 
 #include "lrchain/jobs/bright_breather_job.hpp"
 #include "lrchain/model_json.hpp"
@@ -43,8 +44,10 @@ json edge_json(const BrightEdge& e) {
           {"seed_amplitude", e.amplitude}, {"seed_inverse_width", e.inverse_width}};
 }
 
-// The continuation: why it stopped, the non-resonant window, turning points, and per point omega_b,
-// the profile's peak, norm and width, the corrector's iterations and (with Floquet) the stability.
+// The continuation: why it stopped, the non-resonant window, turning points, per point omega_b,
+// the profile's peak, norm and width, the corrector's iterations and (with Floquet) the stability and
+// the Krein signatures (angle of each multiplier on the upper unit circle, its signature), and
+// the bifurcations (kind, index, omega_b, norm_squared, bracket).
 json branch_json(const BrightBreatherResult& r) {
   json points = json::array();
   for (std::size_t k = 0; k < r.branch.points.size(); ++k) {
@@ -57,13 +60,25 @@ json branch_json(const BrightBreatherResult& r) {
       point["stable"] = r.branch_floquets[k].stable;
       point["max_nontrivial_modulus"] = r.branch_floquets[k].max_nontrivial_modulus;
     }
+    point["krein"] = nullptr;  // strain form or no Floquet: no signatures
+    if (k < r.branch_krein.size()) {
+      json krein = json::array();
+      for (const auto& m : r.branch_krein[k])
+        krein.push_back({{"angle", std::arg(m.lambda)}, {"modulus", std::abs(m.lambda)}, {"signature", m.signature}});
+      point["krein"] = krein;
+    }
     points.push_back(point);
   }
+  json bifurcations = json::array();
+  for (const auto& b : r.bifurcations)
+    bifurcations.push_back({{"kind", b.kind}, {"index", b.index}, {"omega_b", b.omega_b},
+                            {"norm_squared", b.norm_squared}, {"omega_low", b.omega_low}, {"omega_high", b.omega_high}});
   return {{"points", r.branch.points.size()},
           {"stop_reason", r.branch.stop_reason},
           {"window", {r.window_low, std::isfinite(r.window_high) ? json(r.window_high) : json(nullptr)}},
           {"turning_points", r.branch.turning_points},
-          {"branch_points", points}};
+          {"branch_points", points},
+          {"bifurcations", bifurcations}};
 }
 
 const char* step_name(BrightStep step) {

@@ -28,6 +28,39 @@ sim::dark::NewtonOptions newton_options(const BrightBreatherConfig& c, const Bri
   return o;
 }
 
+// The mass of every position of the displacement-form state, field-major (the symplectic form's weights).
+Eigen::VectorXd position_masses(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                                Index sites) {
+  std::vector<double> field_mass(std::size_t(kernels.fields));
+  kernels.masses(parameters.data(), field_mass.data());
+  Eigen::VectorXd masses(kernels.fields * sites);
+  for (Index f = 0; f < kernels.fields; ++f) masses.segment(f * sites, sites).setConstant(field_mass[std::size_t(f)]);
+  return masses;
+}
+
+// The kept branch points as the bifurcation detector sees them: arclength |d(Z(0), omega_b)| summed
+// from the first point, slope, norm and (with Floquet) the real multipliers beyond +1 and -1.
+std::vector<BranchSample> branch_samples(const BrightBreatherResult& r, double unit_tolerance) {
+  std::vector<BranchSample> samples;
+  double s = 0;
+  for (std::size_t k = 0; k < r.branch_profiles.size(); ++k) {
+    const sim::dark::BranchPoint& p = r.branch.points[k];
+    if (k > 0) {
+      const sim::dark::BranchPoint& q = r.branch.points[k - 1];
+      s += std::sqrt((p.z0 - q.z0).squaredNorm() + (p.omega_b - q.omega_b) * (p.omega_b - q.omega_b));
+    }
+    BranchSample sample{s, p.omega_b, p.tangent_omega, r.branch_profiles[k].norm_squared, std::nullopt, std::nullopt,
+                        std::nullopt};
+    if (k < r.branch_floquets.size()) {
+      sample.real_unstable = real_multipliers_beyond(r.branch_floquets[k], +1, unit_tolerance);
+      sample.period_doubling = real_multipliers_beyond(r.branch_floquets[k], -1, unit_tolerance);
+      sample.oscillatory = r.branch_floquets[k].multipliers.oscillatory;
+    }
+    samples.push_back(sample);
+  }
+  return samples;
+}
+
 // Continues the solved breather away from its edge (omega_b rising above an edge with h_tilde > 0,
 // falling below one with h_tilde < 0) within the non-resonant window; each point's profile checked
 // and (branch_floquet) its multipliers; the branch ends before its first point that is no breather.
@@ -45,6 +78,7 @@ void continue_away_from_edge(const sim::dark::DarkShooting& shooting, const Brig
   o.omega_max = rising ? r.window_high : std::min(r.window_high, r.edge.nls.omega);
   const BrightProfileOptions profile_options{c.tail_tolerance};
   r.branch = sim::dark::continue_branch(shooting, r.z0, c.omega_b, o, hooks.on_point);
+  const Eigen::VectorXd masses = position_masses(*c.kernels, sim::lattice_parameters(*c.model), c.sites);
   for (std::size_t k = 0; k < r.branch.points.size(); ++k) {
     const sim::dark::BranchPoint& p = r.branch.points[k];
     BrightProfile profile = inspect_bright_profile(p.z0, c.sites, profile_options);
@@ -59,9 +93,14 @@ void continue_away_from_edge(const sim::dark::DarkShooting& shooting, const Brig
       break;
     }
     r.branch_profiles.push_back(std::move(profile));
-    if (c.branch_floquet)
-      r.branch_floquets.push_back(bright_floquet(shooting.monodromy(p.z0, p.omega_b), r.edge.mean_flow, {c.unit_tolerance}));
+    if (!c.branch_floquet) continue;
+    const Eigen::MatrixXd monodromy = shooting.monodromy(p.z0, p.omega_b);
+    r.branch_floquets.push_back(bright_floquet(monodromy, r.edge.mean_flow, {c.unit_tolerance}));
+    if (!r.edge.mean_flow)
+      r.branch_krein.push_back(
+          krein_signatures(monodromy, masses, c.unit_tolerance, r.branch_floquets.back().trivial_distance));
   }
+  r.bifurcations = branch_bifurcations(branch_samples(r, c.unit_tolerance));
 }
 
 }  // namespace

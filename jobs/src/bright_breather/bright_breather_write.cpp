@@ -65,6 +65,16 @@ void write_branch(const BrightBreatherResult& r, const std::string& dir) {
   sim::write_file_atomic(dir, "branch.csv", os.str());
 }
 
+// bifurcations.csv: one row per fold or multiplier crossing (branch_bifurcations.hpp).
+void write_bifurcations(const BrightBreatherResult& r, const std::string& dir) {
+  std::ostringstream os;
+  os << "kind,index,omega_b,norm_squared,omega_low,omega_high\n";
+  for (const auto& b : r.bifurcations)
+    os << fmt::format("{},{},{:.17g},{:.17g},{:.17g},{:.17g}\n", b.kind, b.index, b.omega_b, b.norm_squared,
+                      b.omega_low, b.omega_high);
+  sim::write_file_atomic(dir, "bifurcations.csv", os.str());
+}
+
 }  // namespace
 
 json write(const BrightBreatherResult& r, const std::filesystem::path& out) {
@@ -75,7 +85,10 @@ json write(const BrightBreatherResult& r, const std::filesystem::path& out) {
   const sim::OutputListing earlier = sim::list_output_files(dir);  // before this run writes
   sim::Figures figures(dir);
   write_profile(r, dir, figures);
-  if (r.config.step == BrightStep::branch) write_branch(r, dir);
+  if (r.config.step == BrightStep::branch) {
+    write_branch(r, dir);
+    write_bifurcations(r, dir);
+  }
   if (r.floquet) dark::write_multipliers(dir, "multipliers", r.floquet->multipliers, r.config.omega_b, figures);
   if (r.config.format == "hdf5") write_bright_breather_hdf5(out / "result.h5", bright_breather_record(r));
   figures.finish(j);

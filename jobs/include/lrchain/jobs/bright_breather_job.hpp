@@ -20,8 +20,10 @@
 #include "lrchain/coefficients.hpp"
 #include "lrchain/jobs/breather_solver.hpp"
 #include "lrchain/model.hpp"
+#include "lrchain/sim/bright/branch_bifurcations.hpp"
 #include "lrchain/sim/bright/bright_floquet.hpp"
 #include "lrchain/sim/bright/bright_profile.hpp"
+#include "lrchain/sim/bright/krein_signature.hpp"
 #include "lrchain/sim/bright/linear_bands.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
 #include "lrchain/sim/dark/shooting_problem.hpp"
@@ -104,6 +106,12 @@ struct BrightBreatherResult {
   sim::dark::BranchResult branch;
   std::vector<sim::bright::BrightProfile> branch_profiles;
   std::vector<sim::bright::BrightFloquet> branch_floquets;
+  // folds (located) and multiplier crossings at +1 / -1 (bracketed) along the kept points
+  // (sim/bright/branch_bifurcations.hpp)
+  std::vector<sim::bright::BranchBifurcation> bifurcations;
+  // branch_floquet, displacement form: per point the Krein signatures of the multipliers on the upper
+  // unit circle (krein_signature.hpp); empty in strain form (no canonical form there)
+  std::vector<std::vector<sim::bright::KreinMultiplier>> branch_krein;
   double window_low = 0, window_high = 0;  // the non-resonant window of omega_b (high: inf when unbounded)
   std::optional<KrylovRecord> krylov;  // the matrix-free path's record (floquet: the leading multipliers), absent on the dense one
   double seconds = 0;               // wall time of run()
@@ -121,7 +129,7 @@ std::optional<std::string> failure(const BrightBreatherResult& r);
 nlohmann::json to_json(const BrightBreatherResult& r);
 
 // Writes profile.csv (n, Z(0) and the seed per variable), multipliers.csv (floquet), branch.csv
-// (continue: omega_b, peak, norm, width, stability per point), their gnuplot figures and summary.json into `out`
+// (continue: omega_b, peak, norm, width, stability per point) and bifurcations.csv (continue), their gnuplot figures and summary.json into `out`
 // (format hdf5: also result.h5); returns to_json(r) with "figures" and "figures_skipped".
 nlohmann::json write(const BrightBreatherResult& r, const std::filesystem::path& out);
 
