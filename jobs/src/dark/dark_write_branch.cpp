@@ -7,13 +7,13 @@
 #include <fmt/format.h>
 
 #include "dark_steps.hpp"
-#include "lrchain/sim/gnuplot_text.hpp"
+#include "lrchain/jobs/gnuplot_text.hpp"
 
 namespace lrchain::jobs::dark {
 
 using namespace lrchain::sim::dark;
 
-void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& figures) {
+void write_branch(const DarkResult& r, const std::string& dir, jobs::Figures& figures) {
   const DarkConfig& c = r.config;
   const bool model_points = r.model_file();  // also the contact changes per period
   std::ostringstream csv;
@@ -42,11 +42,11 @@ void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& fig
       unstable_in[part >= 1] = true;
     }
   }
-  sim::write_file_atomic(dir, "branch.csv", csv.str());
-  sim::write_file_atomic(dir, "floquet_moduli.csv", mult.str());
+  jobs::write_file_atomic(dir, "branch.csv", csv.str());
+  jobs::write_file_atomic(dir, "floquet_moduli.csv", mult.str());
   // The figures' titles name the branch the breathers bifurcate from (a model's own branch name).
-  const std::string branch = sim::gnuplot_text(r.edge.branch, sim::GnuplotTextMode::enhanced);
-  const std::string label = sim::gnuplot_text(lattice_label(r), sim::GnuplotTextMode::enhanced);
+  const std::string branch = jobs::gnuplot_text(r.edge.branch, jobs::GnuplotTextMode::enhanced);
+  const std::string label = jobs::gnuplot_text(lattice_label(r), jobs::GnuplotTextMode::enhanced);
   // The x range holds the band edge (its line inside the frame) and every point, on whichever side
   // of the edge the branch lies (below it for the resonant chain, above it where h_tilde > 0).
   const double omega_edge = r.edge.omega;
