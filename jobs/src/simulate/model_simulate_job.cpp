@@ -6,7 +6,7 @@
 #include "lrchain/coefficients.hpp"
 #include "lrchain/jobs/simulate/model_bright_outputs.hpp"
 #include "lrchain/jobs/simulate/model_run_hdf5.hpp"
-#include "lrchain/jobs/simulate/ring_outputs.hpp"
+#include "ring_outputs.hpp"
 #include "lrchain/jobs/output_files.hpp"
 #include "lrchain/jobs/output_lock.hpp"
 

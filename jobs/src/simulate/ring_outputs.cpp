@@ -7,7 +7,7 @@
 
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/jobs/output_files.hpp"
-#include "lrchain/jobs/simulate/ring_outputs.hpp"
+#include "ring_outputs.hpp"
 
 namespace lrchain::jobs {
 
