@@ -4,14 +4,14 @@
 // ("diatomic_chain") is shown as written.
 #include <string>
 
-#include "lrchain/sim/gnuplot_text.hpp"
+#include "lrchain/jobs/gnuplot_text.hpp"
 
 namespace lrchain::cli {
 
 // `text` for a single-quoted gnuplot string in enhanced mode, shown literally (the project's one
-// escaping function, lrchain/sim/gnuplot_text.hpp).
+// escaping function, lrchain/jobs/gnuplot_text.hpp).
 inline std::string gnuplot_literal(const std::string& text) {
-  return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced);
+  return jobs::gnuplot_text(text, jobs::GnuplotTextMode::enhanced);
 }
 
 }  // namespace lrchain::cli

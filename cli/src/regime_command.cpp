@@ -20,8 +20,8 @@
 #include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/jobs/regime_schema.hpp"
 #include "lrchain/provenance_json.hpp"
-#include "lrchain/sim/output_files.hpp"
-#include "lrchain/sim/output_lock.hpp"
+#include "lrchain/jobs/output_files.hpp"
+#include "lrchain/jobs/output_lock.hpp"
 #include "model_option.hpp"
 #include "options.hpp"
 #include "schema_help.hpp"
@@ -129,14 +129,14 @@ void run_map(const MapArgs& a, const CLI::App& cmd) {
   c.omega_range = range_option(a.omega_range, "omega-range");
   with_option_names(jobs::regime_map_options(), [&] { jobs::validate(c, a.out); });
   const fs::path dir(a.out);
-  const sim::OutputLock lock(dir);
-  const sim::OutputListing earlier = sim::list_output_files(dir);  // files of an earlier run
-  sim::Figures figures(dir);
+  const jobs::OutputLock lock(dir);
+  const jobs::OutputListing earlier = jobs::list_output_files(dir);  // files of an earlier run
+  jobs::Figures figures(dir);
   const jobs::RegimeMapResult result = with_option_names(jobs::regime_map_options(), [&] { return jobs::run(c); });
   json out = jobs::to_json(result, jobs::write(result, dir, figures));
   out["out"] = fs::absolute(dir).string();
   figures.finish(out);
-  sim::record_stale_files(dir, earlier, out);
+  jobs::record_stale_files(dir, earlier, out);
   out["provenance"] = provenance_json();
   std::cout << out.dump(2) << '\n';
 }

@@ -19,9 +19,9 @@
 #include "shipped_data.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/provenance_json.hpp"
-#include "lrchain/sim/figure_format.hpp"
-#include "lrchain/sim/output_files.hpp"
-#include "lrchain/sim/output_lock.hpp"
+#include "lrchain/jobs/figure_format.hpp"
+#include "lrchain/jobs/output_files.hpp"
+#include "lrchain/jobs/output_lock.hpp"
 #include "report/html_report.hpp"
 #include "report/lrchain_process.hpp"
 #include "report/published_paths.hpp"
@@ -169,9 +169,9 @@ void run_reproduce(const ReproduceArgs& a) {
   }
 
   ctx.out = partial;
-  sim::OutputLock lock(partial);  // refuses a second reproduce into the same --out
+  jobs::OutputLock lock(partial);  // refuses a second reproduce into the same --out
   clear_partial(partial);
-  sim::write_file_atomic(partial, report_marker, marker_text);
+  jobs::write_file_atomic(partial, report_marker, marker_text);
   forward_interrupts_to_children();
 
   // Long steps first so that the two cores stay busy; the report keeps the paper's order.
@@ -234,7 +234,7 @@ void run_reproduce(const ReproduceArgs& a) {
   }
   // The steps name their figures as PNG; with --figure-format they were drawn as SVG or PDF.
   for (auto& section : sections)
-    for (auto& figure : section.figures) figure.file = sim::figure_file_name(figure.file);
+    for (auto& figure : section.figures) figure.file = jobs::figure_file_name(figure.file);
   info.total_seconds = elapsed();
   report::point_json_files_at(partial, out);  // the runs' JSON files name DIR, not DIR.partial
   write_html_report(ctx.out, sections, info);

@@ -5,7 +5,7 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/half_angle.hpp"
-#include "lrchain/coefficients_kernel.hpp"
+#include "coefficients_kernel.hpp"
 
 namespace lrchain {
 

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "lrchain/coefficients_kernel.hpp"
+#include "coefficients_kernel.hpp"
 #include "lrchain/half_angle.hpp"
 #include "lrchain/model.hpp"
 

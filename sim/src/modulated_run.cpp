@@ -17,7 +17,7 @@
 #include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/energy.hpp"
 #include "lrchain/sim/least_squares.hpp"
-#include "lrchain/sim/observation.hpp"
+#include "observation.hpp"
 #include "checkpointing.hpp"
 #include "sampling_checks.hpp"
 

@@ -1,5 +1,5 @@
 // Observation times and displacement snapshots shared by the run observers (observation.hpp).
-#include "lrchain/sim/observation.hpp"
+#include "observation.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,8 +8,9 @@
 #  3. every installed header compiles on its own (the public headers include no private one);
 #  4. the exported targets name no absolute include path, and the installed lrchain binary holds
 #     no path of the source or build tree;
-#  5. without HDF5 (no pkg-config), find_package(lrchain COMPONENTS sim) of the static package fails
-#     at find_package with a message naming HDF5, not later when CMake generates the build.
+#  5. without HDF5 (no pkg-config), find_package(lrchain COMPONENTS jobs) (a static archive, which
+#     writes the HDF5 result files) fails at find_package with a message naming HDF5, not later
+#     when CMake generates the build.
 include(${CMAKE_CURRENT_LIST_DIR}/consumer_checks.cmake)
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
@@ -34,7 +35,7 @@ project(lrchain_headers LANGUAGES CXX)
 find_package(lrchain REQUIRED)
 add_library(each_header OBJECT ${sources})
 target_compile_features(each_header PRIVATE cxx_std_20)
-target_link_libraries(each_header PRIVATE lrchain::lrchain lrchain::sim)
+target_link_libraries(each_header PRIVATE lrchain::lrchain lrchain::sim lrchain::jobs)
 ")
 run(${CMAKE_COMMAND} -S ${WORK_DIR}/headers -B ${WORK_DIR}/headers/build -DCMAKE_PREFIX_PATH=${prefix})
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/headers/build -j 2)
@@ -55,12 +56,16 @@ if(strings)
   message(FATAL_ERROR "the installed lrchain holds the source tree's path: ${strings}")
 endif()
 
-# 5. the static sim component without HDF5
-execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer_sim -B ${WORK_DIR}/build-no-hdf5
+# 5. the jobs component without HDF5
+file(WRITE ${WORK_DIR}/jobs-no-hdf5/CMakeLists.txt "cmake_minimum_required(VERSION 3.20)
+project(lrchain_jobs_no_hdf5 LANGUAGES CXX)
+find_package(lrchain REQUIRED COMPONENTS jobs)
+")
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${WORK_DIR}/jobs-no-hdf5 -B ${WORK_DIR}/build-no-hdf5
                         -DCMAKE_PREFIX_PATH=${prefix} -DPKG_CONFIG_EXECUTABLE=${WORK_DIR}/no-such-pkg-config
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(rc EQUAL 0)
-  message(FATAL_ERROR "find_package(lrchain COMPONENTS sim) succeeded without pkg-config (no HDF5):\n${out}\n${err}")
+  message(FATAL_ERROR "find_package(lrchain COMPONENTS jobs) succeeded without pkg-config (no HDF5):\n${out}\n${err}")
 endif()
 string(REGEX REPLACE "[ \n]+" " " err_one_line "${err}")  # CMake wraps the reason it prints
 expect_in("${err_one_line}" "needs HDF5's C library, which pkg-config did not find")

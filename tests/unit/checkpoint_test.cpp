@@ -23,7 +23,7 @@
 #include "lrchain/jobs/checkpoint/checkpoint_files.hpp"
 #include "lrchain/sim/drive_run.hpp"
 #include "lrchain/sim/modulated_run.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim;

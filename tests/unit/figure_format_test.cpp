@@ -11,7 +11,7 @@
 
 #include "../support/run_lrchain.hpp"
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/figure_format.hpp"
+#include "lrchain/jobs/figure_format.hpp"
 
 using namespace lrchain::test;
 namespace fs = std::filesystem;
@@ -34,27 +34,27 @@ std::string head(const fs::path& file, std::size_t n) {
 }  // namespace
 
 TEST_CASE("figure format: scripts and file names for png, svg and pdf") {
-  sim::set_figure_format(sim::FigureFormat::png);
-  CHECK(sim::script_for_format(script) == script);  // png: the script as written
-  CHECK(sim::figure_file_name("dark/branch.png") == "dark/branch.png");
+  jobs::set_figure_format(jobs::FigureFormat::png);
+  CHECK(jobs::script_for_format(script) == script);  // png: the script as written
+  CHECK(jobs::figure_file_name("dark/branch.png") == "dark/branch.png");
 
-  sim::set_figure_format(sim::parse_figure_format("svg"));
-  const std::string svg = sim::script_for_format(script);
+  jobs::set_figure_format(jobs::parse_figure_format("svg"));
+  const std::string svg = jobs::script_for_format(script);
   CHECK(svg.find("set terminal svg size 720,540 dynamic background rgb 'white' font ',11'\n") != std::string::npos);
   CHECK(svg.find("outfile = 'branch.svg'") != std::string::npos);
   CHECK(svg.find("pngcairo") == std::string::npos);
-  CHECK(sim::figure_file_name("dark/branch.png") == "dark/branch.svg");
-  CHECK(sim::figure_format_name() == "svg");
+  CHECK(jobs::figure_file_name("dark/branch.png") == "dark/branch.svg");
+  CHECK(jobs::figure_format_name() == "svg");
 
   // pdf: 72 points per inch, so 720 x 540 pixels become 10 x 7.5 inches.
-  sim::set_figure_format(sim::parse_figure_format("pdf"));
-  CHECK(sim::script_for_format(script).find("set terminal pdfcairo size 10.000in,7.500in font ',11'\n") !=
+  jobs::set_figure_format(jobs::parse_figure_format("pdf"));
+  CHECK(jobs::script_for_format(script).find("set terminal pdfcairo size 10.000in,7.500in font ',11'\n") !=
         std::string::npos);
-  CHECK(sim::figure_file_name("a.png") == "a.pdf");
-  CHECK(sim::figure_file_name("summary.json") == "summary.json");
+  CHECK(jobs::figure_file_name("a.png") == "a.pdf");
+  CHECK(jobs::figure_file_name("summary.json") == "summary.json");
 
-  CHECK_THROWS_AS(sim::parse_figure_format("jpg"), lrchain::InvalidParameter);
-  sim::set_figure_format(sim::FigureFormat::png);
+  CHECK_THROWS_AS(jobs::parse_figure_format("jpg"), lrchain::InvalidParameter);
+  jobs::set_figure_format(jobs::FigureFormat::png);
 }
 
 TEST_CASE("dark solve --figure-format svg and pdf draw SVG and PDF files — a bad format exits 2") {

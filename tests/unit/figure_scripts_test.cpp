@@ -23,11 +23,11 @@
 #include "lrchain/jobs/simulate/model_bright_outputs.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/process.hpp"
-#include "lrchain/sim/figure_format.hpp"
+#include "lrchain/jobs/figure_format.hpp"
 #include "lrchain/sim/model_bright_run.hpp"
 #include "lrchain/sim/model_lattice.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace lrchain;
@@ -58,7 +58,7 @@ RegimeMapResult klein_gordon_map(bool figures) {
 TEST_CASE("figure scripts: a model's regime map shows its name and boundary names as written") {
   const fs::path dir = scratch_directory("figure-regime-model");
   const RegimeMapResult r = klein_gordon_map(false);
-  sim::Figures figures(dir);
+  jobs::Figures figures(dir);
   const RegimeMapFiles files = write(r, dir, figures);
   const std::string script = file_text(dir / "regime_theta-b.gp");
   REQUIRE(script.find("boundary_theta-b_branch0_curvature_zero.csv") != std::string::npos);  // a boundary is drawn
@@ -72,11 +72,11 @@ TEST_CASE("figure scripts: a model's regime map shows its name and boundary name
 
 TEST_CASE("figure scripts: a model's regime map drawn as SVG lists the SVG file") {
   const fs::path dir = scratch_directory("figure-regime-svg");
-  sim::set_figure_format(sim::FigureFormat::svg);
+  jobs::set_figure_format(jobs::FigureFormat::svg);
   const RegimeMapResult r = klein_gordon_map(true);
-  sim::Figures figures(dir);
+  jobs::Figures figures(dir);
   const RegimeMapFiles files = write(r, dir, figures);
-  sim::set_figure_format(sim::FigureFormat::png);
+  jobs::set_figure_format(jobs::FigureFormat::png);
   REQUIRE(files.drawn.size() == 1);
   REQUIRE(files.drawn[0] == std::optional<bool>(true));  // gnuplot drew it
   const auto& listed = files.files[0];

@@ -19,8 +19,8 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/output_target.hpp"
 #include "lrchain/jobs/checkpoint/checkpoint_file.hpp"
-#include "lrchain/sim/hdf5_tree.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/hdf5_tree.hpp"
+#include "lrchain/jobs/output_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace lrchain;
@@ -93,32 +93,32 @@ TEST_CASE("check_output_target: a missing path, a regular file and a dangling li
 
 TEST_CASE("write_file_atomic, CSV and space-time writers refuse a FIFO, a directory and a link to /dev/null") {
   check_refuses_every_kind("atomic", "summary.json",
-                           [](const fs::path& d, const std::string& n) { sim::write_file_atomic(d, n, "{}\n"); });
+                           [](const fs::path& d, const std::string& n) { jobs::write_file_atomic(d, n, "{}\n"); });
   check_refuses_every_kind("csv", "series.csv", [](const fs::path& d, const std::string& n) {
     sim::TimeSeries ts;
     ts.names = {"t", "x"};
     ts.data = {0, 1};
-    sim::write_csv(d, n, ts);
+    jobs::write_csv(d, n, ts);
   });
   check_refuses_every_kind("spacetime", "field.bin", [](const fs::path& d, const std::string& n) {
     sim::SpaceTime f;
     f.sites = 2;
     f.times = {0};
     f.values = {1, 2};
-    sim::write_spacetime_binary(d, n, f);
+    jobs::write_spacetime_binary(d, n, f);
   });
 }
 
 TEST_CASE("figures refuse a FIFO, a directory and a link to /dev/null where their PNG goes") {
   check_refuses_every_kind("figure", "plot.png", [](const fs::path& d, const std::string& n) {
-    sim::Figures figures(d);
+    jobs::Figures figures(d);
     figures.draw_written("none.gp", n);
   });
 }
 
 TEST_CASE("the HDF5 writer (to_hdf5, --format hdf5, dark HDF5) refuses a FIFO, a directory and a link to /dev/null") {
   check_refuses_every_kind("hdf5", "result.h5", [](const fs::path& d, const std::string& n) {
-    sim::Hdf5TreeFile file(d / n);
+    jobs::Hdf5TreeFile file(d / n);
     file.commit();
   });
 }

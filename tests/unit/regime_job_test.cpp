@@ -13,7 +13,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/regime/regime_map.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace lrchain;
@@ -144,7 +144,7 @@ TEST_CASE("regime job map write: the CSV pixel map, the boundary polylines and t
   c.ny = 4;
   c.figures = false;
   const RegimeMapResult r = run(c);
-  sim::Figures figures(dir);
+  jobs::Figures figures(dir);
   const RegimeMapFiles files = write(r, dir, figures);
   REQUIRE(files.files.size() == 1);
   CHECK(files.files[0].front() == "regime_theta-rho_optical.csv");

@@ -11,7 +11,7 @@
 #include <numbers>
 
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/drive_run.hpp"

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "lrchain_process.hpp"
 
 namespace lrchain::report {
@@ -84,8 +84,8 @@ ExperimentRun run_experiment(const StepContext& ctx, const std::string& id, cons
        << config << "\n"
        << table << "\n";
   const fs::path configs = ctx.out / "configs";
-  sim::ensure_directory(configs);
-  sim::write_file_atomic(configs, id + ".toml", text.str());
+  jobs::ensure_directory(configs);
+  jobs::write_file_atomic(configs, id + ".toml", text.str());
 
   ExperimentRun run;
   run.dir = ctx.out / id;

@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "markdown_html.hpp"
 #include "rich_text.hpp"
 
@@ -215,8 +215,8 @@ void write_html_report(const fs::path& dir, const std::vector<Section>& sections
          "<p class=\"muted\">docs/paper-errata.md of lrchain " + html_escape(info.provenance.build.version) + "</p>\n";
   e += "</body></html>\n";
 
-  sim::write_file_atomic(dir, "errata.html", e);
-  sim::write_file_atomic(dir, "index.html", h);
+  jobs::write_file_atomic(dir, "errata.html", e);
+  jobs::write_file_atomic(dir, "index.html", h);
 }
 
 }  // namespace lrchain::report

@@ -12,8 +12,8 @@
 
 #include "lrchain/output_target.hpp"
 #include "lrchain/process.hpp"
-#include "lrchain/sim/figure_format.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/figure_format.hpp"
+#include "lrchain/jobs/output_files.hpp"
 
 namespace lrchain::report {
 
@@ -111,9 +111,9 @@ nlohmann::json run_lrchain(const StepContext& ctx, const std::vector<std::string
                            const fs::path& dir, const std::string& log_stem,
                            std::vector<std::string>& commands) {
   if (interrupt_signal() != 0) throw std::runtime_error("interrupted before it started");
-  sim::ensure_directory(dir);
+  jobs::ensure_directory(dir);
   std::vector<std::string> format_args;  // the report's --figure-format, passed to every child
-  if (sim::figure_format() != sim::FigureFormat::png) format_args = {"--figure-format", sim::figure_format_name()};
+  if (jobs::figure_format() != jobs::FigureFormat::png) format_args = {"--figure-format", jobs::figure_format_name()};
   std::string shown = "lrchain";
   for (const auto& a : args) {
     shown += ' ';

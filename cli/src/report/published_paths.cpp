@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 
 namespace lrchain::report {
 
@@ -71,7 +71,7 @@ void point_json_files_at(const fs::path& building, const fs::path& published) {
       throw std::runtime_error("invalid JSON in " + entry.path().string() + ": " + e.what());
     }
     if (rewrite(j, from, to))
-      sim::write_file_atomic(entry.path().parent_path(), entry.path().filename().string(), j.dump(2) + "\n");
+      jobs::write_file_atomic(entry.path().parent_path(), entry.path().filename().string(), j.dump(2) + "\n");
   }
 }
 

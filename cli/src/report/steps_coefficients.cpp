@@ -14,7 +14,7 @@
 #include "lrchain/ansatz/bright_breather.hpp"
 #include "lrchain/coefficients.hpp"
 #include "lrchain/dispersion.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "steps.hpp"
 
 namespace lrchain::report {
@@ -77,7 +77,7 @@ std::vector<double> figure_thetas_over_pi(const Params& p) {
 }
 
 void write_figures(const std::filesystem::path& dir, Section& s) {
-  sim::ensure_directory(dir);
+  jobs::ensure_directory(dir);
   // Fig. 1: the two branches at rho = 1/3; Fig. 3: c, omega'', h_tilde for rho = 1/3 and 10.
   for (double rho : {1.0 / 3.0, 10.0}) {
     std::ostringstream csv;
@@ -93,9 +93,9 @@ void write_figures(const std::filesystem::path& dir, Section& s) {
                          v(o.h_tilde), v(a.h_tilde));
     }
     const std::string tag = rho < 1 ? "rho_1_3" : "rho_10";
-    sim::write_file_atomic(dir, "coefficients_" + tag + ".csv", csv.str());
+    jobs::write_file_atomic(dir, "coefficients_" + tag + ".csv", csv.str());
   }
-  sim::Figures figures(dir);
+  jobs::Figures figures(dir);
   figures.draw({"dispersion.gp",
                       "if (!exists(\"outfile\")) outfile = 'dispersion.png'\n"
                       "set terminal pngcairo size 700,500 font 'DejaVu Sans,11' noenhanced\n"

@@ -3,13 +3,13 @@
 
 #include <complex>
 
-#include "lrchain/sim/hdf5_tree.hpp"
-#include "lrchain/sim/result_hdf5.hpp"
+#include "lrchain/jobs/hdf5_tree.hpp"
+#include "lrchain/jobs/result_hdf5.hpp"
 
 namespace lrchain::jobs::bright_breather {
 
 using nlohmann::json;
-using sim::Hdf5Element;
+using jobs::Hdf5Element;
 
 BrightBreatherRecord bright_breather_record(const BrightBreatherResult& r) {
   BrightBreatherRecord b;
@@ -24,10 +24,10 @@ BrightBreatherRecord bright_breather_record(const BrightBreatherResult& r) {
 }
 
 void write_bright_breather_hdf5(const std::filesystem::path& path, const BrightBreatherRecord& b) {
-  sim::Hdf5TreeFile file(path);
+  jobs::Hdf5TreeFile file(path);
   const json& s = b.summary;
   file.write_attribute("/", "lrchain_result", std::string(b.branch ? "BrightBranch" : "BrightBreather"));
-  sim::write_provenance_attributes(file, s);
+  jobs::write_provenance_attributes(file, s);
   file.write_attribute("/", "omega_b", s.at("omega_b").get<double>());
   file.write_attribute("/", "center", s.at("center").get<std::string>());
   file.write_attribute("/", "variables", json(b.variables).dump());
@@ -47,7 +47,7 @@ void write_bright_breather_hdf5(const std::filesystem::path& path, const BrightB
     file.write_dataset("/floquet_multipliers", Hdf5Element::complex128, m.data(), {m.size()});
   }
   file.create_group("/summary");
-  sim::write_json_tree(file, "/summary", s);
+  jobs::write_json_tree(file, "/summary", s);
   file.commit();
 }
 

@@ -7,8 +7,8 @@
 #include "../dark/dark_steps.hpp"
 #include "lrchain/jobs/bright_breather_hdf5.hpp"
 #include "lrchain/jobs/bright_breather_job.hpp"
-#include "lrchain/sim/gnuplot_text.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/gnuplot_text.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "lrchain/jobs/output_lock.hpp"
 
 namespace lrchain::jobs::bright_breather {
@@ -18,7 +18,7 @@ using nlohmann::json;
 namespace {
 
 // profile.csv: n, then Z(0) and the NLS seed per variable; profile.gp draws them.
-void write_profile(const BrightBreatherResult& r, const std::string& dir, sim::Figures& figures) {
+void write_profile(const BrightBreatherResult& r, const std::string& dir, jobs::Figures& figures) {
   const BrightBreatherConfig& c = r.config;
   const Index N = c.sites;
   const std::vector<std::string>& variables = r.edge.variables;
@@ -34,8 +34,8 @@ void write_profile(const BrightBreatherResult& r, const std::string& dir, sim::F
     }
     os << "\n";
   }
-  sim::write_file_atomic(dir, "profile.csv", os.str());
-  const auto literal = [](const std::string& text) { return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced); };
+  jobs::write_file_atomic(dir, "profile.csv", os.str());
+  const auto literal = [](const std::string& text) { return jobs::gnuplot_text(text, jobs::GnuplotTextMode::enhanced); };
   std::string plot = "plot ";
   for (std::size_t v = 0; v < variables.size(); ++v)
     plot += fmt::format("{0}'profile.csv' skip 1 u 1:{1} w lp pt 7 t '{2}(0)', '' skip 1 u 1:{3} w p pt 6 ps 1.5 t '{2} NLS seed'",
@@ -62,7 +62,7 @@ void write_branch(const BrightBreatherResult& r, const std::string& dir) {
     else
       os << ",,\n";
   }
-  sim::write_file_atomic(dir, "branch.csv", os.str());
+  jobs::write_file_atomic(dir, "branch.csv", os.str());
 }
 
 // bifurcations.csv: one row per fold or multiplier crossing (branch_bifurcations.hpp).
@@ -72,7 +72,7 @@ void write_bifurcations(const BrightBreatherResult& r, const std::string& dir) {
   for (const auto& b : r.bifurcations)
     os << fmt::format("{},{},{:.17g},{:.17g},{:.17g},{:.17g}\n", b.kind, b.index, b.omega_b, b.norm_squared,
                       b.omega_low, b.omega_high);
-  sim::write_file_atomic(dir, "bifurcations.csv", os.str());
+  jobs::write_file_atomic(dir, "bifurcations.csv", os.str());
 }
 
 }  // namespace
@@ -82,8 +82,8 @@ json write(const BrightBreatherResult& r, const std::filesystem::path& out) {
   if (failure(r)) return j;
   const std::string dir = out.string();
   const OutputLock lock(dir);
-  const sim::OutputListing earlier = sim::list_output_files(dir);  // before this run writes
-  sim::Figures figures(dir);
+  const jobs::OutputListing earlier = jobs::list_output_files(dir);  // before this run writes
+  jobs::Figures figures(dir);
   write_profile(r, dir, figures);
   if (r.config.step == BrightStep::branch) {
     write_branch(r, dir);
@@ -92,8 +92,8 @@ json write(const BrightBreatherResult& r, const std::filesystem::path& out) {
   if (r.floquet) dark::write_multipliers(dir, "multipliers", r.floquet->multipliers, r.config.omega_b, figures);
   if (r.config.format == "hdf5") write_bright_breather_hdf5(out / "result.h5", bright_breather_record(r));
   figures.finish(j);
-  sim::write_file_atomic(dir, "summary.json", j.dump(2) + "\n");
-  sim::record_stale_files(out, earlier, j);
+  jobs::write_file_atomic(dir, "summary.json", j.dump(2) + "\n");
+  jobs::record_stale_files(out, earlier, j);
   return j;
 }
 

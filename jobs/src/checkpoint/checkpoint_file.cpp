@@ -22,7 +22,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/output_target.hpp"
 #include "lrchain/sha256.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 
 namespace lrchain::jobs {
 
@@ -229,7 +229,7 @@ void write_checkpoint(const fs::path& file, const std::string& identity, const s
   crc.process_bytes(w.bytes.data(), w.bytes.size());
   w.put(std::uint32_t(crc.checksum()));
 
-  const fs::path tmp = sim::temporary_name(file);
+  const fs::path tmp = jobs::temporary_name(file);
   {
     std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
     os.write(w.bytes.data(), std::streamsize(w.bytes.size()));

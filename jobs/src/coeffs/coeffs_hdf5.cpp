@@ -6,14 +6,14 @@
 #include "lrchain/jobs/output_lock.hpp"
 #include "lrchain/model_json.hpp"
 #include "lrchain/provenance_json.hpp"
-#include "lrchain/sim/hdf5_tree.hpp"
-#include "lrchain/sim/result_hdf5.hpp"
+#include "lrchain/jobs/hdf5_tree.hpp"
+#include "lrchain/jobs/result_hdf5.hpp"
 
 namespace lrchain::jobs {
 
 namespace {
 
-using sim::Hdf5Element;
+using jobs::Hdf5Element;
 
 // The record of `rows` (one branch) at their wavenumbers; `shape` empty for one wavenumber.
 CoefficientsRecord record_of(const nlohmann::json& model, const std::string& branch,
@@ -56,9 +56,9 @@ std::vector<CoefficientsRecord> coefficients_records(const CoeffsResult& result)
 }
 
 void write_coefficients_hdf5(const std::filesystem::path& path, const CoefficientsRecord& r) {
-  sim::Hdf5TreeFile file(path);
+  jobs::Hdf5TreeFile file(path);
   file.write_attribute("/", "lrchain_result", std::string("Coefficients"));
-  sim::write_provenance_attributes(file, {{"model", r.model}, {"provenance", provenance_json()}});
+  jobs::write_provenance_attributes(file, {{"model", r.model}, {"provenance", provenance_json()}});
   file.write_attribute("/", "branch", r.branch);
   file.write_dataset("/theta", Hdf5Element::float64, r.theta.data(), r.shape);
   for (const auto& [name, values] : r.columns) file.write_dataset("/" + name, Hdf5Element::float64, values.data(), r.shape);

@@ -3,20 +3,20 @@
 
 #include "lrchain/model_json.hpp"
 #include "lrchain/provenance_json.hpp"
-#include "lrchain/sim/hdf5_tree.hpp"
-#include "lrchain/sim/result_hdf5.hpp"
+#include "lrchain/jobs/hdf5_tree.hpp"
+#include "lrchain/jobs/result_hdf5.hpp"
 
 namespace lrchain::jobs::dark {
 
 namespace {
 
-using sim::Hdf5Element;
+using jobs::Hdf5Element;
 
 // period, max_strain and the per-period series.
-void write_periods(sim::Hdf5TreeFile& file, const DarkEvolutionRecord& e) {
+void write_periods(jobs::Hdf5TreeFile& file, const DarkEvolutionRecord& e) {
   file.write_attribute("/", "period", e.period);
   file.write_attribute("/", "max_strain", e.max_strain);
-  sim::write_series_datasets(file, e.periods);
+  jobs::write_series_datasets(file, e.periods);
 }
 
 }  // namespace
@@ -35,9 +35,9 @@ DarkEvolutionRecord dark_evolution_record(const DarkResult& r) {
 }
 
 void write_dark_evolution_hdf5(const std::filesystem::path& path, const Params& params, const DarkEvolutionRecord& e) {
-  sim::Hdf5TreeFile file(path);
+  jobs::Hdf5TreeFile file(path);
   file.write_attribute("/", "lrchain_result", std::string("Evolution"));
-  sim::write_provenance_attributes(file, {{"model", model_json(resonant_chain_model(params))},
+  jobs::write_provenance_attributes(file, {{"model", model_json(resonant_chain_model(params))},
                                           {"provenance", provenance_json()}});
   write_periods(file, e);
   // The chain's two strains x, y apart: (M+1) x sites each.
@@ -55,7 +55,7 @@ void write_dark_evolution_hdf5(const std::filesystem::path& path, const Params& 
 
 void write_model_dark_evolution_hdf5(const std::filesystem::path& path, const ModelDarkEdgeRecord& edge,
                                      const DarkEvolutionRecord& e) {
-  sim::Hdf5TreeFile file(path);
+  jobs::Hdf5TreeFile file(path);
   write_model_dark_root(file, "ModelEvolution", edge);
   write_periods(file, e);
   const std::size_t fields = std::size_t(e.fields), sites = std::size_t(e.sites);

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/jobs/dark_job.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 
 namespace lrchain::jobs::dark {
 
@@ -18,12 +18,12 @@ void continue_from(const sim::dark::DarkShootingProblem& shooting, const Eigen::
 std::string lattice_label(const DarkResult& r);
 
 // profile.csv/.gp and (floquet) multipliers.csv/.gp of a solved breather.
-void write_profile(const DarkResult& r, const std::string& dir, sim::Figures& figures);
+void write_profile(const DarkResult& r, const std::string& dir, jobs::Figures& figures);
 void write_multipliers(const std::string& dir, const std::string& stem, const sim::dark::FloquetResult& f,
-                       double omega_b, sim::Figures& figures);
+                       double omega_b, jobs::Figures& figures);
 // branch.csv, floquet_moduli.csv and their figures.
-void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& figures);
+void write_branch(const DarkResult& r, const std::string& dir, jobs::Figures& figures);
 // The evolution's space-time files, evolution.csv, snapshots.csv, figures and summary.json (`summary`).
-void write_evolution(const DarkResult& r, const std::string& dir, sim::Figures& figures, nlohmann::json& summary);
+void write_evolution(const DarkResult& r, const std::string& dir, jobs::Figures& figures, nlohmann::json& summary);
 
 }  // namespace lrchain::jobs::dark

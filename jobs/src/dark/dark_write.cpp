@@ -9,9 +9,9 @@
 #include "dark_steps.hpp"
 #include "lrchain/jobs/dark_evolution_hdf5.hpp"
 #include "lrchain/jobs/model_dark_hdf5.hpp"
-#include "lrchain/sim/dark/dark_hdf5.hpp"
-#include "lrchain/sim/gnuplot_text.hpp"
-#include "lrchain/sim/output_lock.hpp"
+#include "lrchain/jobs/dark_hdf5.hpp"
+#include "lrchain/jobs/gnuplot_text.hpp"
+#include "lrchain/jobs/output_lock.hpp"
 
 namespace lrchain::jobs::dark {
 
@@ -24,7 +24,7 @@ std::string lattice_label(const DarkResult& r) {
 
 // profile.csv: n, then Z(0), the seed and Z(T_b) per variable (the chain: x0, y0, x_seed, y_seed,
 // x_T, y_T); profile.gp draws them.
-void write_profile(const DarkResult& r, const std::string& dir, sim::Figures& figures) {
+void write_profile(const DarkResult& r, const std::string& dir, jobs::Figures& figures) {
   const DarkConfig& c = r.config;
   const Index N = dark_sites(c);
   std::ostringstream os;
@@ -33,7 +33,7 @@ void write_profile(const DarkResult& r, const std::string& dir, sim::Figures& fi
     for (Index i = 0; i < N; ++i)
       os << fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", i - (N - 1) / 2, r.z0(i),
                         r.z0(N + i), r.seed(i), r.seed(N + i), r.z_period(i), r.z_period(N + i));
-    sim::write_file_atomic(dir, "profile.csv", os.str());
+    jobs::write_file_atomic(dir, "profile.csv", os.str());
     // x_n and y_n in panels of their own (drawn together, each hid the other).
     figures.draw({"profile.gp",
                   fmt::format("if (!exists(\"outfile\")) outfile = 'profile.png'\n"
@@ -65,8 +65,8 @@ void write_profile(const DarkResult& r, const std::string& dir, sim::Figures& fi
     }
     os << "\n";
   }
-  sim::write_file_atomic(dir, "profile.csv", os.str());
-  const auto literal = [](const std::string& text) { return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced); };
+  jobs::write_file_atomic(dir, "profile.csv", os.str());
+  const auto literal = [](const std::string& text) { return jobs::gnuplot_text(text, jobs::GnuplotTextMode::enhanced); };
   // One panel per lattice variable, labelled with what it is ("r[n] = u0[n] - u0[n-1]").
   std::string panels;
   for (std::size_t v = 0; v < variables.size(); ++v)
@@ -90,11 +90,11 @@ void write_profile(const DarkResult& r, const std::string& dir, sim::Figures& fi
 
 // <stem>.csv (re, im, modulus) and <stem>.gp: the multipliers in the complex plane with the unit circle.
 void write_multipliers(const std::string& dir, const std::string& stem, const FloquetResult& f, double omega_b,
-                       sim::Figures& figures) {
+                       jobs::Figures& figures) {
   std::ostringstream os;
   os << "re,im,modulus\n";
   for (auto l : f.multipliers) os << fmt::format("{:.17g},{:.17g},{:.17g}\n", l.real(), l.imag(), std::abs(l));
-  sim::write_file_atomic(dir, stem + ".csv", os.str());
+  jobs::write_file_atomic(dir, stem + ".csv", os.str());
   // Equal scales on both axes (the unit circle drawn as a circle), a square frame around all multipliers.
   double reach = 1.0;
   for (auto l : f.multipliers) reach = std::max(reach, std::abs(l));
@@ -116,9 +116,9 @@ json write(const DarkResult& r, const std::filesystem::path& out) {
   const DarkConfig& c = r.config;
   if (!r.newton.converged || (c.step == DarkStep::evolve && r.evolution.periods.empty())) return j;
   const std::string dir = out.string();
-  const sim::OutputLock lock(dir);
-  const sim::OutputListing earlier = sim::list_output_files(dir);  // before this run writes
-  sim::Figures figures(dir);
+  const jobs::OutputLock lock(dir);
+  const jobs::OutputListing earlier = jobs::list_output_files(dir);  // before this run writes
+  jobs::Figures figures(dir);
   if (c.step == DarkStep::branch) {
     write_branch(r, dir, figures);
     if (c.format == "hdf5" && r.model_file())
@@ -143,7 +143,7 @@ json write(const DarkResult& r, const std::filesystem::path& out) {
                                                     r.measures, r.floquet ? &*r.floquet : nullptr));
     figures.finish(j);
   }
-  sim::record_stale_files(out, earlier, j);
+  jobs::record_stale_files(out, earlier, j);
   return j;
 }
 

@@ -7,13 +7,13 @@
 #include <fmt/format.h>
 
 #include "dark_steps.hpp"
-#include "lrchain/sim/gnuplot_text.hpp"
+#include "lrchain/jobs/gnuplot_text.hpp"
 
 namespace lrchain::jobs::dark {
 
 using namespace lrchain::sim::dark;
 
-void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& figures) {
+void write_branch(const DarkResult& r, const std::string& dir, jobs::Figures& figures) {
   const DarkConfig& c = r.config;
   const bool model_points = r.model_file();  // also the contact changes per period
   std::ostringstream csv;
@@ -44,16 +44,16 @@ void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& fig
       unstable_in[part >= 1] = true;
     }
   }
-  sim::write_file_atomic(dir, "branch.csv", csv.str());
-  sim::write_file_atomic(dir, "floquet_moduli.csv", mult.str());
+  jobs::write_file_atomic(dir, "branch.csv", csv.str());
+  jobs::write_file_atomic(dir, "floquet_moduli.csv", mult.str());
   std::ostringstream folds;  // the turning points, interpolated between the points on either side
   folds << c.parameter << ",norm_squared,after_point,fraction\n";
   for (const FoldPoint& f : r.branch.folds)
     folds << fmt::format("{:.12g},{:.12g},{},{:.6g}\n", f.omega_b, f.norm_squared, f.after, f.fraction);
-  sim::write_file_atomic(dir, "folds.csv", folds.str());
+  jobs::write_file_atomic(dir, "folds.csv", folds.str());
   // The figures' titles name the branch the breathers bifurcate from (a model's own branch name).
-  const std::string branch = sim::gnuplot_text(r.edge.branch, sim::GnuplotTextMode::enhanced);
-  const std::string label = sim::gnuplot_text(lattice_label(r), sim::GnuplotTextMode::enhanced);
+  const std::string branch = jobs::gnuplot_text(r.edge.branch, jobs::GnuplotTextMode::enhanced);
+  const std::string label = jobs::gnuplot_text(lattice_label(r), jobs::GnuplotTextMode::enhanced);
   if (in_parameter) {  // a model parameter at fixed omega_b: the norm over the parameter
     figures.draw({"branch.gp",
                   fmt::format("if (!exists(\"outfile\")) outfile = 'branch.png'\n"
@@ -64,7 +64,7 @@ void write_branch(const DarkResult& r, const std::string& dir, sim::Figures& fig
                               "set title '{1} dark breathers at ω_{{b}} = {2:.6g}, {3} (red: real instability)'\n"
                               "plot 'branch.csv' skip 1 u 1:3 w lp pt 7 ps 0.6 lc 'blue' t 'branch', "
                               "'' skip 1 u 1:(strstrt(strcol(9),'real') > 0 ? $3 : 1/0) w p pt 7 lc 'red' t 'real instability'\n",
-                              sim::gnuplot_text(c.parameter, sim::GnuplotTextMode::enhanced), branch, c.omega_b, label),
+                              jobs::gnuplot_text(c.parameter, jobs::GnuplotTextMode::enhanced), branch, c.omega_b, label),
                   "branch.png"});
     return;
   }

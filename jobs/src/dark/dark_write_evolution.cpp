@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "dark_steps.hpp"
-#include "lrchain/sim/figure_format.hpp"
-#include "lrchain/sim/gnuplot_text.hpp"
+#include "lrchain/jobs/figure_format.hpp"
+#include "lrchain/jobs/gnuplot_text.hpp"
 #include "lrchain/sim/run_record.hpp"
 
 namespace lrchain::jobs::dark {
@@ -22,7 +22,7 @@ struct EvolutionVariable {
   std::string name, label;
 };
 
-std::string enhanced(const std::string& text) { return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced); }
+std::string enhanced(const std::string& text) { return jobs::gnuplot_text(text, jobs::GnuplotTextMode::enhanced); }
 
 // The variables with their axis labels, and the figures' title.
 std::pair<std::vector<EvolutionVariable>, std::string> evolution_labels(const DarkResult& r) {
@@ -40,7 +40,7 @@ std::pair<std::vector<EvolutionVariable>, std::string> evolution_labels(const Da
 
 }  // namespace
 
-void write_evolution(const DarkResult& r, const std::string& dir, sim::Figures& figures, nlohmann::json& summary) {
+void write_evolution(const DarkResult& r, const std::string& dir, jobs::Figures& figures, nlohmann::json& summary) {
   const DarkEvolution& e = r.evolution;
   const auto [variables, title] = evolution_labels(r);
   const Index N = e.sites;
@@ -54,13 +54,13 @@ void write_evolution(const DarkResult& r, const std::string& dir, sim::Figures& 
       st.times.push_back(static_cast<double>(m) * e.period);
       for (Index i = 0; i < N; ++i) st.values.push_back(static_cast<float>(e.snapshots[m](field * N + i)));
     }
-    sim::write_spacetime_binary(dir, variables[std::size_t(field)].name + "_spacetime.bin", st);
+    jobs::write_spacetime_binary(dir, variables[std::size_t(field)].name + "_spacetime.bin", st);
   }
   std::ostringstream ev;
   ev << "t,E_b,C_x,K_x,position,depth\n";
   for (const auto& p : e.periods)
     ev << fmt::format("{:.12g},{:.6e},{:.9g},{:.9g},{:.6f},{:.6g}\n", p.t, p.E_b, p.C_x, p.K_x, p.position, p.depth);
-  sim::write_file_atomic(dir, "evolution.csv", ev.str());
+  jobs::write_file_atomic(dir, "evolution.csv", ev.str());
   const Eigen::VectorXd& z0 = e.snapshots.front();
   const Eigen::VectorXd& zT = e.snapshots.back();
   std::ostringstream sn;
@@ -74,7 +74,7 @@ void write_evolution(const DarkResult& r, const std::string& dir, sim::Figures& 
       for (Index field = 0; field < V; ++field) sn << fmt::format(",{:.17g}", (*z)(field * N + i));
     sn << "\n";
   }
-  sim::write_file_atomic(dir, "snapshots.csv", sn.str());
+  jobs::write_file_atomic(dir, "snapshots.csv", sn.str());
   const double T = e.periods.back().t;
   const double nmin = double(-(N - 1) / 2) - 0.5, nmax = double((N - 1) / 2) + 0.5;
   const double height = 0.94 / double(V);
@@ -110,7 +110,7 @@ void write_evolution(const DarkResult& r, const std::string& dir, sim::Figures& 
                   "set ylabel 't ({9})'\nset yrange [0:{1}]\n"
                   "{4}\nset colorbox\n{8}"
                   "unset multiplot\n",
-                  title, T, nmin, nmax, sim::viridis_palette, 450 * std::max<Index>(V, 2), maps, snapshots, right, time_unit,
+                  title, T, nmin, nmax, jobs::viridis_palette, 450 * std::max<Index>(V, 2), maps, snapshots, right, time_unit,
                   nmin - 0.5, nmax + 0.5),
       "evolution.png"});
   figures.draw({
@@ -129,7 +129,7 @@ void write_evolution(const DarkResult& r, const std::string& dir, sim::Figures& 
                   title, time_unit, r.model_file() ? "E_{b}(t) = max|Z(t) − Z(0)| / max|Z(0)|" : "E_{b}(t), eq. (52)"),
       "diagnostics.png"});
   figures.finish(summary);
-  sim::write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
+  jobs::write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
 }
 
 }  // namespace lrchain::jobs::dark

@@ -4,16 +4,16 @@
 #include <cstdint>
 
 #include "lrchain/provenance_json.hpp"
-#include "lrchain/sim/hdf5_tree.hpp"
-#include "lrchain/sim/result_hdf5.hpp"
+#include "lrchain/jobs/hdf5_tree.hpp"
+#include "lrchain/jobs/result_hdf5.hpp"
 
 namespace lrchain::jobs::dark {
 
 namespace {
 
 using nlohmann::json;
-using sim::Hdf5Element;
-using sim::Hdf5TreeFile;
+using jobs::Hdf5Element;
+using jobs::Hdf5TreeFile;
 
 // K_y and C_y exist where the lattice has a second strain-form variable.
 bool second_strain(const ModelDarkEdgeRecord& e) { return e.lattice_form == "strain" && e.variables.size() >= 2; }
@@ -39,8 +39,8 @@ ModelDarkEdgeRecord model_dark_edge_record(const DarkResult& r, const json& mode
 
 void write_model_dark_root(Hdf5TreeFile& file, const char* result_class, const ModelDarkEdgeRecord& e) {
   file.write_attribute("/", "lrchain_result", std::string(result_class));
-  sim::write_provenance_attributes(file, {{"model", e.model}, {"provenance", provenance_json()}});
-  sim::write_json_tree(file, "", {{"branch", e.branch},
+  jobs::write_provenance_attributes(file, {{"model", e.model}, {"provenance", provenance_json()}});
+  jobs::write_json_tree(file, "", {{"branch", e.branch},
                                   {"theta", e.theta},
                                   {"omega_edge", e.omega_edge},
                                   {"curvature", e.curvature},
@@ -62,7 +62,7 @@ ModelDarkSolutionRecord model_dark_solution_record(const DarkResult& r, const js
   s.seed.assign(r.seed.data(), r.seed.data() + r.seed.size());
   for (const auto& h : r.newton.history) s.newton_residuals.push_back(h.residual);
   s.measures = r.measures;
-  if (r.floquet) s.floquet = sim::dark::floquet_record(*r.floquet);
+  if (r.floquet) s.floquet = jobs::dark::floquet_record(*r.floquet);
   s.contact_changes_per_period = r.contact_changes_per_period;
   return s;
 }
@@ -70,7 +70,7 @@ ModelDarkSolutionRecord model_dark_solution_record(const DarkResult& r, const js
 ModelDarkBranchRecord model_dark_branch_record(const DarkResult& r, const json& model) {
   ModelDarkBranchRecord b;
   b.edge = model_dark_edge_record(r, model);
-  b.points = sim::dark::dark_branch_record(Params{}, r.branch, dark_sites(r.config), r.config.branch_floquet);
+  b.points = jobs::dark::dark_branch_record(Params{}, r.branch, dark_sites(r.config), r.config.branch_floquet);
   for (const auto& p : r.branch.points) {
     b.z.insert(b.z.end(), p.z0.data(), p.z0.data() + p.z0.size());
     if (p.contact_changes_per_period) b.contact_changes_per_period.push_back(*p.contact_changes_per_period);
@@ -88,21 +88,21 @@ void write_model_dark_solution_hdf5(const std::filesystem::path& path, const Mod
   const std::size_t fields = s.edge.variables.size(), sites = std::size_t(s.edge.sites);
   file.write_dataset("/z", Hdf5Element::float64, s.z.data(), {fields, sites});
   file.write_dataset("/seed", Hdf5Element::float64, s.seed.data(), {fields, sites});
-  sim::dark::write_solution_parts(file, s.newton_residuals, s.measures, s.floquet, second_strain(s.edge));
+  jobs::dark::write_solution_parts(file, s.newton_residuals, s.measures, s.floquet, second_strain(s.edge));
   file.commit();
 }
 
 void write_model_dark_branch_hdf5(const std::filesystem::path& path, const ModelDarkBranchRecord& b) {
   Hdf5TreeFile file(path);
   write_model_dark_root(file, "ModelBranch", b.edge);
-  sim::dark::write_branch_series(file, b.points);
+  jobs::dark::write_branch_series(file, b.points);
   const std::size_t points = b.points.omega_b.size(), fields = b.edge.variables.size(), sites = std::size_t(b.edge.sites);
   file.write_dataset("/z", Hdf5Element::float64, b.z.data(), {points, fields, sites});
   if (!b.contact_changes_per_period.empty()) {
     const std::vector<std::int64_t> counts(b.contact_changes_per_period.begin(), b.contact_changes_per_period.end());
     file.write_dataset("/contact_changes_per_period", Hdf5Element::int64, counts.data(), {points});
   }
-  sim::dark::write_branch_parts(file, b.points, second_strain(b.edge));
+  jobs::dark::write_branch_parts(file, b.points, second_strain(b.edge));
   file.commit();
 }
 

@@ -12,9 +12,9 @@
 #include "lrchain/jobs/regime_hdf5.hpp"
 #include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/regime/regime_map.hpp"
-#include "lrchain/sim/figure_format.hpp"
-#include "lrchain/sim/gnuplot_text.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/figure_format.hpp"
+#include "lrchain/jobs/gnuplot_text.hpp"
+#include "lrchain/jobs/output_files.hpp"
 
 namespace lrchain::jobs {
 
@@ -80,7 +80,7 @@ std::string cause_title(BoundaryCause c, bool resonant_chain) {
 
 // A title for a single-quoted gnuplot string in enhanced mode, shown literally.
 std::string gnuplot_literal(const std::string& text) {
-  return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced);
+  return jobs::gnuplot_text(text, jobs::GnuplotTextMode::enhanced);
 }
 
 // Legend entries for the colours of the pixel map (the palette of kPalette): focusing and
@@ -115,7 +115,7 @@ void write_curves(const RegimeMapPanel& panel, const fs::path& dir, const std::s
     const std::string csv = curves_csv(panel.curves, c, xname, yname);
     if (csv.empty()) continue;
     const std::string f = prefix + "_" + std::string(to_string(c)) + ".csv";
-    sim::write_file_atomic(dir, f, csv);
+    jobs::write_file_atomic(dir, f, csv);
     files.push_back(f);
     plot << ", \\\n  '" << f << "' using 1:2 with lines " << cause_style(c) << " title '"
          << cause_title(c, resonant_chain) << "'";
@@ -123,16 +123,16 @@ void write_curves(const RegimeMapPanel& panel, const fs::path& dir, const std::s
 }
 
 // Draws `script` unless the result says no figures.
-std::optional<bool> draw(const RegimeMapResult& r, sim::Figures& figures, const std::string& script,
+std::optional<bool> draw(const RegimeMapResult& r, jobs::Figures& figures, const std::string& script,
                          const std::string& png, std::vector<std::string>& files) {
   if (!r.figures) return std::nullopt;
   const bool ok = figures.draw_written(script, png);
-  if (ok) files.push_back(sim::figure_file_name(png));  // drawn in the --figure-format
+  if (ok) files.push_back(jobs::figure_file_name(png));  // drawn in the --figure-format
   return ok;
 }
 
 // Fig. 2: every branch a panel over (rho, theta), the acoustic one with its inset.
-void write_theta_rho(const RegimeMapResult& r, const fs::path& dir, sim::Figures& figures, RegimeMapFiles& out) {
+void write_theta_rho(const RegimeMapResult& r, const fs::path& dir, jobs::Figures& figures, RegimeMapFiles& out) {
   std::vector<std::string> files;
   std::ostringstream gp;
   const Params& p = r.params;
@@ -150,7 +150,7 @@ void write_theta_rho(const RegimeMapResult& r, const fs::path& dir, sim::Figures
     const RegimeMapPanel& panel = r.panels[k];
     const std::string& bn = panel.branch;
     const std::string mapfile = "regime_theta-rho_" + bn + ".csv";
-    sim::write_file_atomic(dir, mapfile, map_csv(panel.x, panel.y, panel.values, "rho", "theta"));
+    jobs::write_file_atomic(dir, mapfile, map_csv(panel.x, panel.y, panel.values, "rho", "theta"));
     files.push_back(mapfile);
     const bool inset = panel.inset_x.has_value();
     gp << "set origin " << k * panel_w << ",0\nset size " << panel_w << ",1\n"
@@ -165,7 +165,7 @@ void write_theta_rho(const RegimeMapResult& r, const fs::path& dir, sim::Figures
     gp << plot.str() << "\n";
     if (inset) {
       const std::string zf = "regime_theta-rho_" + bn + "_inset.csv";
-      sim::write_file_atomic(dir, zf, map_csv(*panel.inset_x, *panel.inset_y, panel.inset_values, "rho", "theta"));
+      jobs::write_file_atomic(dir, zf, map_csv(*panel.inset_x, *panel.inset_y, panel.inset_values, "rho", "theta"));
       files.push_back(zf);
       std::string zplot = plot.str();
       zplot.replace(zplot.find(mapfile), mapfile.size(), zf);
@@ -180,7 +180,7 @@ void write_theta_rho(const RegimeMapResult& r, const fs::path& dir, sim::Figures
     }
   }
   gp << "unset multiplot\n";
-  sim::write_file_atomic(dir, "regime_theta-rho.gp", gp.str());
+  jobs::write_file_atomic(dir, "regime_theta-rho.gp", gp.str());
   files.push_back("regime_theta-rho.gp");
   out.drawn.push_back(draw(r, figures, "regime_theta-rho.gp", "regime_theta-rho.png", files));
   out.files.push_back(std::move(files));
@@ -189,13 +189,13 @@ void write_theta_rho(const RegimeMapResult& r, const fs::path& dir, sim::Figures
 // Figs. 4-5: one figure for one branch, the map with the hatched focusing bands over the number of
 // focusing bands versus delta0.
 void write_delta0_omega(const RegimeMapResult& r, const RegimeMapPanel& panel, const fs::path& dir,
-                        sim::Figures& figures, RegimeMapFiles& out) {
+                        jobs::Figures& figures, RegimeMapFiles& out) {
   std::vector<std::string> files;
   const std::string& bn = panel.branch;
   const Branch b = panel.resonant_branch;
   const GridAxis& delta0 = panel.x;
   const std::string tag = "delta0-omega_" + bn;
-  sim::write_file_atomic(dir, "regime_" + tag + ".csv", map_csv(panel.x, panel.y, panel.values, "delta0", "omega"));
+  jobs::write_file_atomic(dir, "regime_" + tag + ".csv", map_csv(panel.x, panel.y, panel.values, "delta0", "omega"));
   files.push_back("regime_" + tag + ".csv");
 
   std::ostringstream iv, cnt, edges;
@@ -216,9 +216,9 @@ void write_delta0_omega(const RegimeMapResult& r, const RegimeMapPanel& panel, c
     cnt << d << ',' << panel.bands[i].size() << '\n';
     edges << d << ',' << panel.band_edges[i][0] << ',' << panel.band_edges[i][1] << '\n';
   }
-  sim::write_file_atomic(dir, "intervals_" + tag + ".csv", iv.str());
-  sim::write_file_atomic(dir, "band_count_" + tag + ".csv", cnt.str());
-  sim::write_file_atomic(dir, "band_edges_" + tag + ".csv", edges.str());
+  jobs::write_file_atomic(dir, "intervals_" + tag + ".csv", iv.str());
+  jobs::write_file_atomic(dir, "band_count_" + tag + ".csv", cnt.str());
+  jobs::write_file_atomic(dir, "band_edges_" + tag + ".csv", edges.str());
   for (auto f : {"intervals_", "band_count_", "band_edges_"}) files.push_back(f + tag + ".csv");
 
   const Params& p = r.params;
@@ -248,18 +248,18 @@ void write_delta0_omega(const RegimeMapResult& r, const RegimeMapPanel& panel, c
         "set yrange [-0.2:*]\nset offsets 0, 0, 0.4, 0\nset ytics 1\nunset key\n"
      << "plot 'band_count_" << tag << ".csv' using 1:2 with steps lw 2 lc rgb '#cc3366'\n"
      << "unset multiplot\n";
-  sim::write_file_atomic(dir, "regime_" + tag + ".gp", gp.str());
+  jobs::write_file_atomic(dir, "regime_" + tag + ".gp", gp.str());
   files.push_back("regime_" + tag + ".gp");
   out.drawn.push_back(draw(r, figures, "regime_" + tag + ".gp", "regime_" + tag + ".png", files));
   out.files.push_back(std::move(files));
 }
 
 // A model's (parameter, theta) plane: every branch a panel (the counterpart of Fig. 2).
-void write_model(const RegimeMapResult& r, const fs::path& dir, sim::Figures& figures, RegimeMapFiles& out) {
+void write_model(const RegimeMapResult& r, const fs::path& dir, jobs::Figures& figures, RegimeMapFiles& out) {
   std::vector<std::string> files;
   const std::string& plane = r.plane;
   std::ostringstream gp;
-  gp << "# Regime map sign(omega'' h_tilde) of model " << sim::gnuplot_string(r.model_name) << " over (" << r.axis
+  gp << "# Regime map sign(omega'' h_tilde) of model " << jobs::gnuplot_string(r.model_name) << " over (" << r.axis
      << ", theta).\n# Pink: focusing (omega'' h_tilde < 0), white: defocusing, grey: no frequency. Re-run: gnuplot "
      << "regime_" << plane << ".gp\n"
      << "if (!exists('outfile')) outfile = 'regime_" << plane << ".png'\n"
@@ -272,7 +272,7 @@ void write_model(const RegimeMapResult& r, const fs::path& dir, sim::Figures& fi
     const RegimeMapPanel& panel = r.panels[k];
     const std::string& bn = panel.branch;
     const std::string mapfile = "regime_" + plane + "_" + bn + ".csv";
-    sim::write_file_atomic(dir, mapfile, map_csv(panel.x, panel.y, panel.values, r.axis, "theta"));
+    jobs::write_file_atomic(dir, mapfile, map_csv(panel.x, panel.y, panel.values, r.axis, "theta"));
     files.push_back(mapfile);
     gp << "set origin " << k * panel_w << ",0\nset size " << panel_w << ",1\n"
        << "set title '" << gnuplot_literal(r.model_name) << ", " << gnuplot_literal(bn) << " branch'\n"
@@ -284,7 +284,7 @@ void write_model(const RegimeMapResult& r, const fs::path& dir, sim::Figures& fi
   }
   gp << "unset multiplot\n";
   const std::string script = "regime_" + plane + ".gp";
-  sim::write_file_atomic(dir, script, gp.str());
+  jobs::write_file_atomic(dir, script, gp.str());
   files.push_back(script);
   out.drawn.push_back(draw(r, figures, script, "regime_" + plane + ".png", files));
   out.files.push_back(std::move(files));
@@ -292,7 +292,7 @@ void write_model(const RegimeMapResult& r, const fs::path& dir, sim::Figures& fi
 
 }  // namespace
 
-RegimeMapFiles write(const RegimeMapResult& r, const fs::path& dir, sim::Figures& figures) {
+RegimeMapFiles write(const RegimeMapResult& r, const fs::path& dir, jobs::Figures& figures) {
   RegimeMapFiles out;
   if (!r.resonant_chain)
     write_model(r, dir, figures, out);

@@ -6,21 +6,21 @@
 
 #include "lrchain/jobs/output_lock.hpp"
 #include "lrchain/provenance_json.hpp"
-#include "lrchain/sim/hdf5_tree.hpp"
-#include "lrchain/sim/result_hdf5.hpp"
+#include "lrchain/jobs/hdf5_tree.hpp"
+#include "lrchain/jobs/result_hdf5.hpp"
 
 namespace lrchain::jobs {
 
 namespace {
 
-using sim::Hdf5Element;
-using sim::Hdf5TreeFile;
+using jobs::Hdf5Element;
+using jobs::Hdf5TreeFile;
 
 // lrchain_result, the provenance attributes, the branch and the result's other text attributes `texts`.
 void write_root(Hdf5TreeFile& file, const char* result_class, const nlohmann::json& model, const std::string& branch,
                 std::initializer_list<std::pair<const char*, std::string>> texts = {}) {
   file.write_attribute("/", "lrchain_result", std::string(result_class));
-  sim::write_provenance_attributes(file, {{"model", model}, {"provenance", provenance_json()}});
+  jobs::write_provenance_attributes(file, {{"model", model}, {"provenance", provenance_json()}});
   file.write_attribute("/", "branch", branch);
   for (const auto& [name, text] : texts) file.write_attribute("/", name, text);
 }

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "lrchain/sim/figure_format.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/figure_format.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "lrchain/sim/strain_sites.hpp"
 #include "run_figures.hpp"
 #include "run_json.hpp"

@@ -5,7 +5,7 @@
 
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/jobs/simulate/model_bright_outputs.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "lrchain/sim/strain_sites.hpp"
 
 namespace lrchain::jobs {

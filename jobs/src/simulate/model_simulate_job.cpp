@@ -6,8 +6,8 @@
 #include "lrchain/coefficients.hpp"
 #include "lrchain/jobs/simulate/model_bright_outputs.hpp"
 #include "lrchain/jobs/simulate/model_run_hdf5.hpp"
-#include "lrchain/jobs/simulate/ring_outputs.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "ring_outputs.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "lrchain/jobs/output_lock.hpp"
 
 namespace lrchain::jobs {
@@ -21,7 +21,7 @@ auto simulate_model_job(const Model& model, const Config& c, const ModelRunLabel
                         Run run, Write write) {
   std::optional<OutputLock> lock;  // (refuses an output directory that is not a directory)
   if (!output.dir.empty()) lock.emplace(output.dir);
-  const sim::OutputListing earlier = output.dir.empty() ? sim::OutputListing{} : sim::list_output_files(output.dir);
+  const jobs::OutputListing earlier = output.dir.empty() ? jobs::OutputListing{} : jobs::list_output_files(output.dir);
   auto result = run();
   nlohmann::json j = to_json(model, c, result);
   if (!label.name.empty()) j["name"] = label.name;
@@ -30,7 +30,7 @@ auto simulate_model_job(const Model& model, const Config& c, const ModelRunLabel
     j["out"] = output.dir;
     j["figures"] = output.format == "hdf5" ? write_hdf5_outputs(output.dir, result, j)
                                            : write(output.dir, result, j, output.figures);
-    sim::record_stale_files(output.dir, earlier, j);
+    jobs::record_stale_files(output.dir, earlier, j);
   }
   return SimulateReport<decltype(result)>{std::move(result), std::move(j), {}};
 }

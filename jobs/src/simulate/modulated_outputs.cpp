@@ -8,8 +8,8 @@
 
 #include "lrchain/model_json.hpp"
 #include "lrchain/provenance_json.hpp"
-#include "lrchain/sim/figure_format.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/figure_format.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "run_figures.hpp"
 #include "run_json.hpp"
 

@@ -2,9 +2,9 @@
 #include <limits>
 
 #include "lrchain/jobs/simulate/model_run_hdf5.hpp"
-#include "lrchain/sim/hdf5_tree.hpp"
-#include "lrchain/sim/output_files.hpp"
-#include "lrchain/sim/result_hdf5.hpp"
+#include "lrchain/jobs/hdf5_tree.hpp"
+#include "lrchain/jobs/output_files.hpp"
+#include "lrchain/jobs/result_hdf5.hpp"
 
 namespace lrchain::jobs {
 
@@ -21,17 +21,17 @@ sim::TimeSeries ring_amplitude_table(const sim::RingRunResult& r) {
 
 void write_ring_hdf5(const std::filesystem::path& path, const sim::RunRecord& record, const sim::TimeSeries& amplitudes,
                      const nlohmann::json& summary) {
-  sim::Hdf5TreeFile file(path);
-  sim::write_simulation_tree(file, {"RingResult", {{"t", "packet_t"}}}, record, summary);
-  sim::write_series_datasets(file, amplitudes);
+  jobs::Hdf5TreeFile file(path);
+  jobs::write_simulation_tree(file, {"RingResult", {{"t", "packet_t"}}}, record, summary);
+  jobs::write_series_datasets(file, amplitudes);
   file.commit();
 }
 
 std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const sim::RingRunResult& r,
                                             const nlohmann::json& summary) {
-  sim::ensure_directory(dir);
+  jobs::ensure_directory(dir);
   write_ring_hdf5(dir / "result.h5", r.record, ring_amplitude_table(r), summary);
-  sim::write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
+  jobs::write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
   return {};
 }
 

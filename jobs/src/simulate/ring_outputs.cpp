@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/provenance_json.hpp"
-#include "lrchain/sim/output_files.hpp"
-#include "lrchain/jobs/simulate/ring_outputs.hpp"
+#include "lrchain/jobs/output_files.hpp"
+#include "ring_outputs.hpp"
 
 namespace lrchain::jobs {
 

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "lrchain/sim/figure_format.hpp"
+#include "lrchain/jobs/figure_format.hpp"
 
 namespace lrchain::jobs {
 
@@ -30,7 +30,7 @@ set cblabel "energy density e_{{n}}, eq. (40)"
 set rmargin at screen 0.40
 set format cb "%.0e"
 )GP",
-                     height, low, high, sim::viridis_palette);
+                     height, low, high, jobs::viridis_palette);
 }
 
 std::string velocity_snapshots_script(const std::string& figure, std::size_t row_height, std::size_t snapshots,

@@ -12,9 +12,9 @@
 #include "lrchain/jobs/simulate/drive_outputs.hpp"
 #include "lrchain/jobs/simulate/modulated_outputs.hpp"
 #include "lrchain/output_target.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "lrchain/jobs/output_lock.hpp"
-#include "lrchain/sim/result_hdf5.hpp"
+#include "lrchain/jobs/result_hdf5.hpp"
 
 namespace lrchain::jobs {
 
@@ -93,7 +93,7 @@ auto simulate_job(const Config& given, const RunOutput& output, const sim::RunCo
   std::optional<OutputLock> lock;  // one run per output directory, taken after validation
   if (!output.dir.empty()) lock.emplace(output.dir);
   refuse_earlier_checkpoint(c);  // (after the lock: a run still writing it is named by the lock)
-  const sim::OutputListing earlier = output.dir.empty() ? sim::OutputListing{} : sim::list_output_files(output.dir);
+  const jobs::OutputListing earlier = output.dir.empty() ? jobs::OutputListing{} : jobs::list_output_files(output.dir);
   auto result = run(c, with_checkpoint_files(control, c));  // checkpoints as files (checkpoint_files.hpp)
   nlohmann::json j = to_json(c, result.summary);
   j["checkpoint_file"] = c.checkpoint_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.checkpoint_file);
@@ -101,13 +101,13 @@ auto simulate_job(const Config& given, const RunOutput& output, const sim::RunCo
   j["t_start"] = result.summary.t_start;
   if (!output.dir.empty()) {
     j["out"] = output.dir;
-    j["figures"] = output.format == "hdf5" ? sim::write_hdf5_outputs(output.dir, result, j)
+    j["figures"] = output.format == "hdf5" ? jobs::write_hdf5_outputs(output.dir, result, j)
                                            : write(output.dir, result, j, output.figures);
     // Files of an earlier run this one did not write (never its checkpoint or restart file).
     std::vector<std::string> keep;
     for (const std::string& f : {c.checkpoint_file, c.restart_file})
       if (!f.empty() && fs::path(f).parent_path() == fs::path(output.dir)) keep.push_back(fs::path(f).filename().string());
-    sim::record_stale_files(output.dir, earlier, j, keep);
+    jobs::record_stale_files(output.dir, earlier, j, keep);
   }
   return SimulateReport<decltype(result)>{std::move(result), std::move(j), c.checkpoint_file};
 }

@@ -9,7 +9,7 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/sha256.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "lrchain/jobs/sweep/sweep_figure.hpp"
 
 namespace lrchain::jobs::sweep {

@@ -15,7 +15,7 @@
 #include "lrchain/jobs/experiment_config.hpp"
 #include "lrchain/jobs/gnuplot_text.hpp"
 #include "lrchain/sim/least_squares.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "lrchain/jobs/sweep/side_files.hpp"
 
 namespace lrchain::jobs::sweep {

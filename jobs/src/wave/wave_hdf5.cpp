@@ -4,13 +4,13 @@
 #include <string>
 #include <vector>
 
-#include "lrchain/sim/hdf5_tree.hpp"
-#include "lrchain/sim/result_hdf5.hpp"
+#include "lrchain/jobs/hdf5_tree.hpp"
+#include "lrchain/jobs/result_hdf5.hpp"
 
 namespace lrchain::jobs::wave {
 
 using nlohmann::json;
-using sim::Hdf5Element;
+using jobs::Hdf5Element;
 
 namespace {
 
@@ -21,17 +21,17 @@ std::vector<double> per_wave(const json& waves, const char* key) {
   return values;
 }
 
-void write_vector(sim::Hdf5TreeFile& file, const std::string& name, const std::vector<double>& v) {
+void write_vector(jobs::Hdf5TreeFile& file, const std::string& name, const std::vector<double>& v) {
   file.write_dataset(name, Hdf5Element::float64, v.data(), {v.size()});
 }
 
 }  // namespace
 
 void write_wave_hdf5(const std::filesystem::path& path, const json& s) {
-  sim::Hdf5TreeFile file(path);
+  jobs::Hdf5TreeFile file(path);
   const bool branch = s.at("step") == "continue";
   file.write_attribute("/", "lrchain_result", std::string(branch ? "WaveBranch" : "TravellingWave"));
-  sim::write_provenance_attributes(file, s);
+  jobs::write_provenance_attributes(file, s);
   file.write_attribute("/", "branch", s.at("branch").get<std::string>());
   file.write_attribute("/", "theta", s.at("theta").get<double>());
   file.write_attribute("/", "summary_json", s.dump());
@@ -63,7 +63,7 @@ void write_wave_hdf5(const std::filesystem::path& path, const json& s) {
       write_vector(file, std::string("/fate_") + key, f.at(key).get<std::vector<double>>());
   }
   file.create_group("/summary");
-  sim::write_json_tree(file, "/summary", s);
+  jobs::write_json_tree(file, "/summary", s);
   file.commit();
 }
 

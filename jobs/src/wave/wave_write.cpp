@@ -7,8 +7,8 @@
 #include "lrchain/jobs/output_lock.hpp"
 #include "lrchain/jobs/wave_hdf5.hpp"
 #include "lrchain/jobs/wave_job.hpp"
-#include "lrchain/sim/gnuplot_text.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/gnuplot_text.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "lrchain/sim/wave/wave_nls.hpp"
 
 namespace lrchain::jobs::wave {
@@ -30,7 +30,7 @@ void write_profile(const WaveResult& r, const std::string& dir) {
     for (Index f = 0; f < fields; ++f) os << fmt::format(",{:.17g}", w.profile(f * points + i));
     os << "\n";
   }
-  sim::write_file_atomic(dir, "profile.csv", os.str());
+  jobs::write_file_atomic(dir, "profile.csv", os.str());
 }
 
 // branch.csv: one row per wave.
@@ -40,19 +40,19 @@ void write_branch(const WaveResult& r, const std::string& dir) {
   for (const auto& w : r.waves)
     os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{},{:.6g},{:.6g}\n", w.amplitude, w.omega, w.omega - w.omega_linear,
                       sim::wave::nls_frequency_shift(r.nls.h, w.amplitude), w.harmonics, w.tail, w.residual);
-  sim::write_file_atomic(dir, "branch.csv", os.str());
+  jobs::write_file_atomic(dir, "branch.csv", os.str());
 }
 
 // growth.csv (K, exact and NLS growth rate) and growth.gp drawing both.
-void write_growth(const WaveResult& r, const std::string& dir, sim::Figures& figures) {
+void write_growth(const WaveResult& r, const std::string& dir, jobs::Figures& figures) {
   const auto& s = *r.stability;
   std::ostringstream os;
   os << "K,growth_rate,nls_growth_rate\n";
   for (std::size_t i = 0; i < s.k.size(); ++i)
     os << fmt::format("{:.17g},{:.17g},{:.17g}\n", s.k[i], s.growth_rate[i],
                       sim::wave::nls_growth_rate(r.nls.curvature, r.nls.h_tilde, r.config.amplitude, s.k[i]));
-  sim::write_file_atomic(dir, "growth.csv", os.str());
-  const auto literal = [](const std::string& text) { return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced); };
+  jobs::write_file_atomic(dir, "growth.csv", os.str());
+  const auto literal = [](const std::string& text) { return jobs::gnuplot_text(text, jobs::GnuplotTextMode::enhanced); };
   figures.draw({"growth.gp",
                 fmt::format("if (!exists(\"outfile\")) outfile = 'growth.png'\n"
                             "set terminal pngcairo size 1000,700\nset output outfile\n"
@@ -67,18 +67,18 @@ void write_growth(const WaveResult& r, const std::string& dir, sim::Figures& fig
 
 // fate.csv (per carrier period: t, deviation, participation, entropy), fate_energy.csv (e_n at the end)
 // and fate.gp drawing the three against t with the thresholds of the classification.
-void write_fate(const WaveResult& r, const std::string& dir, sim::Figures& figures) {
+void write_fate(const WaveResult& r, const std::string& dir, jobs::Figures& figures) {
   const auto& f = *r.fate;
   std::ostringstream os;
   os << "t,deviation,participation,entropy\n";
   for (std::size_t i = 0; i < f.t.size(); ++i)
     os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}\n", f.t[i], f.deviation[i], f.participation[i], f.entropy[i]);
-  sim::write_file_atomic(dir, "fate.csv", os.str());
+  jobs::write_file_atomic(dir, "fate.csv", os.str());
   std::ostringstream e;
   e << "n,energy_density\n";
   for (std::size_t n = 0; n < f.energy_density.size(); ++n) e << fmt::format("{},{:.17g}\n", n, f.energy_density[n]);
-  sim::write_file_atomic(dir, "fate_energy.csv", e.str());
-  const auto literal = [](const std::string& text) { return sim::gnuplot_text(text, sim::GnuplotTextMode::enhanced); };
+  jobs::write_file_atomic(dir, "fate_energy.csv", e.str());
+  const auto literal = [](const std::string& text) { return jobs::gnuplot_text(text, jobs::GnuplotTextMode::enhanced); };
   figures.draw({"fate.gp",
                 fmt::format("if (!exists(\"outfile\")) outfile = 'fate.png'\n"
                             "set terminal pngcairo size 1000,900\nset output outfile\nset datafile separator ','\n"
@@ -105,8 +105,8 @@ json write(const WaveResult& r, const std::filesystem::path& out) {
   const json summary = j;  // result.h5's: the summary without the figures
   const std::string dir = out.string();
   const OutputLock lock(dir);
-  const sim::OutputListing earlier = sim::list_output_files(dir);
-  sim::Figures figures(dir);
+  const jobs::OutputListing earlier = jobs::list_output_files(dir);
+  jobs::Figures figures(dir);
   if (!r.waves.empty()) {
     write_profile(r, dir);
     write_branch(r, dir);
@@ -115,8 +115,8 @@ json write(const WaveResult& r, const std::filesystem::path& out) {
   if (r.fate) write_fate(r, dir, figures);
   figures.finish(j);
   if (r.config.format == "hdf5") write_wave_hdf5(out / "result.h5", summary);
-  sim::write_file_atomic(dir, "summary.json", j.dump(2) + "\n");
-  sim::record_stale_files(out, earlier, j);
+  jobs::write_file_atomic(dir, "summary.json", j.dump(2) + "\n");
+  jobs::record_stale_files(out, earlier, j);
   return j;
 }
 

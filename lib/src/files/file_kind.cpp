@@ -1,4 +1,4 @@
-#include "lrchain/file_kind.hpp"
+#include "file_kind.hpp"
 
 #include <sys/stat.h>
 

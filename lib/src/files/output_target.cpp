@@ -7,7 +7,7 @@
 #include <string>
 
 #include "lrchain/errors.hpp"
-#include "lrchain/file_kind.hpp"
+#include "file_kind.hpp"
 
 namespace lrchain {
 

@@ -8,7 +8,7 @@
 #include <cstring>
 
 #include "lrchain/errors.hpp"
-#include "lrchain/file_kind.hpp"
+#include "../files/file_kind.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sha256.hpp"
 

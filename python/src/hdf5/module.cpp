@@ -15,8 +15,8 @@
 #include "lrchain/jobs/model_dark_hdf5.hpp"
 #include "lrchain/jobs/simulate/model_run_hdf5.hpp"
 #include "lrchain/output_target.hpp"
-#include "lrchain/sim/dark/dark_hdf5.hpp"
-#include "lrchain/sim/result_hdf5.hpp"
+#include "lrchain/jobs/dark_hdf5.hpp"
+#include "lrchain/jobs/result_hdf5.hpp"
 #include "lrchain/version.hpp"
 
 namespace py = pybind11;
@@ -81,15 +81,15 @@ sim::RunRecord record_of(const py::dict& series, const py::object& energy_densit
 // writes); `extra` [(name, quantity, n, t, values)] are the fields recorded at every sample.
 void write_simulation(const std::string& path, const std::string& kind, const py::dict& series, const py::object& field,
                       const py::list& snapshots, const std::string& summary_json, const py::list& extra) {
-  const sim::SimulationKind k = sim::simulation_kind(kind);
+  const jobs::SimulationKind k = jobs::simulation_kind(kind);
   const sim::RunRecord record = record_of(series, field, snapshots);
-  std::vector<sim::SampledField> fields;
+  std::vector<jobs::SampledField> fields;
   for (const auto& item : extra) {
     const auto e = item.cast<py::tuple>();
     fields.push_back({e[0].cast<std::string>(), e[1].cast<std::string>(), vector_of<double>(e[2]),
                       vector_of<double>(e[3]), vector_of<double>(e[4])});
   }
-  sim::write_simulation_hdf5(path, k, record, nlohmann::json::parse(summary_json), fields);
+  jobs::write_simulation_hdf5(path, k, record, nlohmann::json::parse(summary_json), fields);
 }
 
 // A model file's bright run through the job layer's writer (the file `lrchain simulate bright --model
@@ -125,8 +125,8 @@ sim::dark::DarkMeasures measures_of(const py::dict& m) {
   return r;
 }
 
-sim::dark::FloquetRecord floquet_of(const py::dict& f) {
-  sim::dark::FloquetRecord r;
+jobs::dark::FloquetRecord floquet_of(const py::dict& f) {
+  jobs::dark::FloquetRecord r;
   r.multipliers = vector_of<std::complex<double>>(f["multipliers"]);
   r.kind = f["kind"].cast<std::string>();
   r.max_modulus = f["max_modulus"].cast<double>();
@@ -143,7 +143,7 @@ sim::dark::FloquetRecord floquet_of(const py::dict& f) {
 // A dark breather through the sim library's writer (the file `lrchain dark solve|floquet --format hdf5`
 // writes): `d` holds the DarkSolution's fields (floquet: a dict or None), `params` (alpha, delta0, kappa, rho).
 void write_dark_solution(const std::string& path, const py::tuple& params, const py::dict& d) {
-  sim::dark::DarkSolutionRecord r;
+  jobs::dark::DarkSolutionRecord r;
   r.params = params_of(params);
   r.omega_b = d["omega_b"].cast<double>();
   r.omega_edge = d["omega_edge"].cast<double>();
@@ -154,14 +154,14 @@ void write_dark_solution(const std::string& path, const py::tuple& params, const
   r.newton_residuals = vector_of<double>(d["newton_residuals"]);
   r.measures = measures_of(d["measures"].cast<py::dict>());
   if (!d["floquet"].is_none()) r.floquet = floquet_of(d["floquet"].cast<py::dict>());
-  sim::dark::write_dark_solution_hdf5(path, r);
+  jobs::dark::write_dark_solution_hdf5(path, r);
 }
 
 // A branch through the sim library's writer (`lrchain dark continue --format hdf5`): `d` holds the
 // Branch's fields (measures: list of dicts; floquet: list of dicts, or None when not computed).
 // The per-point series of a branch (omega_b, ..., measures, floquet, turning_points, stop_reason).
-sim::dark::DarkBranchRecord branch_points_of(const py::dict& d) {
-  sim::dark::DarkBranchRecord r;
+jobs::dark::DarkBranchRecord branch_points_of(const py::dict& d) {
+  jobs::dark::DarkBranchRecord r;
   r.omega_b = vector_of<double>(d["omega_b"]);
   r.tangent_omega = vector_of<double>(d["tangent_omega"]);
   r.residual = vector_of<double>(d["residual"]);
@@ -175,13 +175,13 @@ sim::dark::DarkBranchRecord branch_points_of(const py::dict& d) {
 }
 
 void write_dark_branch(const std::string& path, const py::tuple& params, const py::dict& d) {
-  sim::dark::DarkBranchRecord r = branch_points_of(d);
+  jobs::dark::DarkBranchRecord r = branch_points_of(d);
   r.params = params_of(params);
   const auto x = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(d["x"]);
   r.sites = x.ndim() == 2 ? Index(x.shape(1)) : 0;
   r.x = vector_of<double>(d["x"]);
   r.y = vector_of<double>(d["y"]);
-  sim::dark::write_dark_branch_hdf5(path, r);
+  jobs::dark::write_dark_branch_hdf5(path, r);
 }
 
 // The edge of a model-file dark result from its fields (model: a dict; lambda_ None without mean flow).

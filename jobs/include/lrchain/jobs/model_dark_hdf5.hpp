@@ -23,7 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/jobs/dark_job.hpp"
-#include "lrchain/sim/dark/dark_hdf5.hpp"
+#include "lrchain/jobs/dark_hdf5.hpp"
 
 namespace lrchain::jobs::dark {
 
@@ -44,13 +44,13 @@ struct ModelDarkSolutionRecord {
   std::vector<double> z, seed;  // fields x sites, field-major
   std::vector<double> newton_residuals;
   sim::dark::DarkMeasures measures;
-  std::optional<sim::dark::FloquetRecord> floquet;
+  std::optional<jobs::dark::FloquetRecord> floquet;
   std::optional<Index> contact_changes_per_period;
 };
 
 struct ModelDarkBranchRecord {
   ModelDarkEdgeRecord edge;
-  sim::dark::DarkBranchRecord points;  // per point: omega_b, ..., measures, floquet (its x, y, params unused)
+  jobs::dark::DarkBranchRecord points;  // per point: omega_b, ..., measures, floquet (its x, y, params unused)
   std::vector<double> z;               // points x fields x sites
   std::vector<Index> contact_changes_per_period;  // per point; empty for a smooth model
 };
@@ -63,7 +63,7 @@ ModelDarkBranchRecord model_dark_branch_record(const DarkResult& r, const nlohma
 
 // The root of a model-file dark file in `file`: lrchain_result `result_class`, provenance, the edge
 // attributes above and the dataset n.
-void write_model_dark_root(sim::Hdf5TreeFile& file, const char* result_class, const ModelDarkEdgeRecord& e);
+void write_model_dark_root(jobs::Hdf5TreeFile& file, const char* result_class, const ModelDarkEdgeRecord& e);
 
 // Writers (temporary name + rename; InputError naming `path` if its directory is missing or it is not a regular file).
 void write_model_dark_solution_hdf5(const std::filesystem::path& path, const ModelDarkSolutionRecord& s);

@@ -22,11 +22,9 @@
 #include "lrchain/regime/paper_thresholds.hpp"
 #include "lrchain/regime/regime_events.hpp"
 
-namespace lrchain::sim {
-class Figures;
-}
-
 namespace lrchain::jobs {
+
+class Figures;
 
 using Range = std::array<double, 2>;  // lo hi
 
@@ -166,7 +164,7 @@ struct RegimeMapFiles {
 };
 // Pixel maps and curves as CSV, the gnuplot scripts and (result.figures) their figures in dir; format
 // hdf5: also the HDF5 files (regime_hdf5.hpp), listed in RegimeMapFiles::hdf5.
-RegimeMapFiles write(const RegimeMapResult& result, const std::filesystem::path& dir, sim::Figures& figures);
+RegimeMapFiles write(const RegimeMapResult& result, const std::filesystem::path& dir, jobs::Figures& figures);
 // The JSON summary of `lrchain regime map` (without out, figures, stale files, provenance); format hdf5
 // adds "hdf5_files".
 nlohmann::json to_json(const RegimeMapResult& result, const RegimeMapFiles& files);

@@ -1,6 +1,6 @@
 #pragma once
 // The figure of a two-axis grid sweep: log10 of one scalar over the plane of the two axes (gnuplot,
-// through lrchain::sim::Figures: argv only, temporary name + rename), next to the results file.
+// through lrchain::jobs::Figures: argv only, temporary name + rename), next to the results file.
 // For a bright job over bright.theta, the ends of the focusing intervals of the base config's chain
 // are drawn as vertical lines; when the second axis is bright.detuning, the exponent p of
 // scalar ~ |detuning|^p fitted per theta (least squares in log-log) goes to a CSV and a figure.

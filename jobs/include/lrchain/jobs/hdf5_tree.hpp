@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
 
 enum class Hdf5Element { float64, float32, int64, int32, int8, complex128 };
 
@@ -40,4 +40,4 @@ class Hdf5TreeFile {
   std::unique_ptr<State> state_;
 };
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

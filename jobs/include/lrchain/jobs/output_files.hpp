@@ -11,7 +11,7 @@
 
 #include "lrchain/sim/run_record.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
 
 // Creates dir (and parents); throws std::runtime_error naming it if that fails.
 void ensure_directory(const std::filesystem::path& dir);
@@ -23,18 +23,18 @@ std::filesystem::path temporary_name(const std::filesystem::path& file);
 void write_file_atomic(const std::filesystem::path& dir, const std::string& name,
                        const std::string& content);
 // CSV with a header row (full double precision).
-void write_csv(const std::filesystem::path& dir, const std::string& name, const TimeSeries& ts);
+void write_csv(const std::filesystem::path& dir, const std::string& name, const sim::TimeSeries& ts);
 void write_snapshot_csv(const std::filesystem::path& dir, const std::string& name,
-                        const Snapshot& s);
+                        const sim::Snapshot& s);
 // Space-time field as gnuplot "binary matrix" (float32: [sites, n...], then [t, values...] rows).
 void write_spacetime_binary(const std::filesystem::path& dir, const std::string& name,
-                            const SpaceTime& f);
+                            const sim::SpaceTime& f);
 // Writes all series/fields/snapshots with standard names: series.csv, <quantity>_spacetime.bin,
 // snapshot_<tag>.csv.
-void write_record(const std::filesystem::path& dir, const RunRecord& r);
+void write_record(const std::filesystem::path& dir, const sim::RunRecord& r);
 
 // One figure: gnuplot script name, its text, the PNG it draws (the file of another format when
-// set_figure_format, lrchain/sim/figure_format.hpp, chose one). The script starts with
+// set_figure_format, lrchain/jobs/figure_format.hpp, chose one). The script starts with
 // `if (!exists("outfile")) outfile = '<png>'` and `set output outfile`, so that gnuplot can be
 // told a temporary output name and a user can re-run the script as it is.
 struct FigureScript {
@@ -86,7 +86,7 @@ class Figures {
 // summary.json (`summary_json`, a JSON object, with "figures" and "figures_skipped" added).
 // Without draw_figures (--no-figures) neither scripts nor PNGs are written. Returns the PNGs
 // drawn, in the order given.
-std::vector<std::string> write_run_outputs(const std::filesystem::path& dir, const RunRecord& record,
+std::vector<std::string> write_run_outputs(const std::filesystem::path& dir, const sim::RunRecord& record,
                                            const std::string& summary_json,
                                            const std::vector<FigureScript>& figures, bool draw_figures = true);
 
@@ -114,4 +114,4 @@ std::vector<std::string> files_not_rewritten(const std::filesystem::path& dir, c
 void record_stale_files(const std::filesystem::path& dir, const OutputListing& before, nlohmann::json& summary,
                         const std::vector<std::string>& keep = {});
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

@@ -1,5 +1,5 @@
 // HDF5 files of dark breathers and their branches (dark/dark_hdf5.hpp), shared by the CLI and Python.
-#include "lrchain/sim/dark/dark_hdf5.hpp"
+#include "lrchain/jobs/dark_hdf5.hpp"
 
 #include <cstdint>
 
@@ -7,10 +7,10 @@
 
 #include "lrchain/model_json.hpp"
 #include "lrchain/provenance_json.hpp"
-#include "lrchain/sim/hdf5_tree.hpp"
-#include "lrchain/sim/result_hdf5.hpp"
+#include "lrchain/jobs/hdf5_tree.hpp"
+#include "lrchain/jobs/result_hdf5.hpp"
 
-namespace lrchain::sim::dark {
+namespace lrchain::jobs::dark {
 
 namespace {
 
@@ -29,7 +29,7 @@ const char* const measure_names[] = {"norm_squared", "K_x", "K_y", "C_x", "C_y",
 // K_y and C_y: measures of the second strain-form variable (none in a one-field or displacement-form lattice).
 bool second_strain_measure(std::size_t k) { return k == 2 || k == 4; }
 
-double measure(const DarkMeasures& m, std::size_t k) {
+double measure(const sim::dark::DarkMeasures& m, std::size_t k) {
   const double values[] = {m.norm_squared, m.K_x, m.K_y, m.C_x, m.C_y, m.E_b, m.max_strain};
   return values[k];
 }
@@ -45,14 +45,14 @@ double floquet_scalar(const FloquetRecord& f, std::size_t k) {
 
 }  // namespace
 
-FloquetRecord floquet_record(const FloquetResult& f) {
+FloquetRecord floquet_record(const sim::dark::FloquetResult& f) {
   return {f.multipliers, f.kind(), f.max_modulus, f.max_real, f.max_period_doubling, f.max_oscillatory,
           f.near_one, f.pairing_defect, f.conjugation_defect, f.log_det};
 }
 
 DarkSolutionRecord dark_solution_record(const Params& p, double omega_b, double omega_edge, const Eigen::VectorXd& z0,
-                                        const Eigen::VectorXd& seed, const NewtonResult& newton,
-                                        const DarkMeasures& measures, const FloquetResult* floquet) {
+                                        const Eigen::VectorXd& seed, const sim::dark::NewtonResult& newton,
+                                        const sim::dark::DarkMeasures& measures, const sim::dark::FloquetResult* floquet) {
   DarkSolutionRecord r;
   r.params = p;
   r.omega_b = omega_b;
@@ -68,11 +68,11 @@ DarkSolutionRecord dark_solution_record(const Params& p, double omega_b, double 
   return r;
 }
 
-DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch, Index sites, bool floquet) {
+DarkBranchRecord dark_branch_record(const Params& p, const sim::dark::BranchResult& branch, Index sites, bool floquet) {
   DarkBranchRecord r;
   r.params = p;
   r.sites = sites;
-  for (const BranchPoint& b : branch.points) {
+  for (const sim::dark::BranchPoint& b : branch.points) {
     r.omega_b.push_back(b.omega_b);
     r.tangent_omega.push_back(b.tangent_omega);
     r.residual.push_back(b.residual);
@@ -89,7 +89,7 @@ DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch,
   return r;
 }
 
-void write_solution_parts(Hdf5TreeFile& file, const std::vector<double>& newton_residuals, const DarkMeasures& measures,
+void write_solution_parts(Hdf5TreeFile& file, const std::vector<double>& newton_residuals, const sim::dark::DarkMeasures& measures,
                           const std::optional<FloquetRecord>& floquet, bool second_strain) {
   write_vector(file, "/newton_residuals", newton_residuals);
   file.create_group("/measures");
@@ -177,4 +177,4 @@ void write_dark_branch_hdf5(const std::filesystem::path& path, const DarkBranchR
   file.commit();
 }
 
-}  // namespace lrchain::sim::dark
+}  // namespace lrchain::jobs::dark

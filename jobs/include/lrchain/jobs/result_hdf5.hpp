@@ -30,7 +30,7 @@
 #include "lrchain/sim/modulated_run.hpp"
 #include "lrchain/sim/run_record.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
 
 class Hdf5TreeFile;
 
@@ -55,25 +55,25 @@ SimulationKind simulation_kind(const std::string& name);
 
 // Writes the record and JSON summary of a run of `kind` to `path` (layout above); `extra` are the
 // optional per-sample fields. InputError naming `path` if its directory is missing or it is a directory.
-void write_simulation_hdf5(const std::filesystem::path& path, SimulationKind kind, const RunRecord& record,
+void write_simulation_hdf5(const std::filesystem::path& path, SimulationKind kind, const sim::RunRecord& record,
                            const nlohmann::json& summary, const std::vector<SampledField>& extra = {});
 
 // The layout above in an open file, for a result class of the job layer (a model file's bright run,
 // a ring run): root attributes, the record's series, energy density and snapshots, /summary.
-void write_simulation_tree(Hdf5TreeFile& file, const RecordLayout& layout, const RunRecord& record,
+void write_simulation_tree(Hdf5TreeFile& file, const RecordLayout& layout, const sim::RunRecord& record,
                            const nlohmann::json& summary);
 
 // The writers of the CLI's results (`--format hdf5`): OUT/result.h5 and OUT/summary.json; no figures.
-std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const BrightRunResult& r,
+std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const sim::BrightRunResult& r,
                                             const nlohmann::json& summary);
-std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const DriveRunResult& r,
+std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const sim::DriveRunResult& r,
                                             const nlohmann::json& summary);
-std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const ModulatedRunResult& r,
+std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const sim::ModulatedRunResult& r,
                                             const nlohmann::json& summary);
 
 // The columns of `series` as float64 datasets at the root, named as the series names them unless
 // `renamed` (series column -> dataset name) says otherwise.
-void write_series_datasets(Hdf5TreeFile& file, const TimeSeries& series,
+void write_series_datasets(Hdf5TreeFile& file, const sim::TimeSeries& series,
                            const std::vector<std::pair<std::string, std::string>>& renamed = {});
 
 // Writes `j` below the group `group` ("" for the root) with the summary's rules (layout above).
@@ -83,4 +83,4 @@ void write_json_tree(Hdf5TreeFile& file, const std::string& group, const nlohman
 // holding "provenance" and "model" (lrchain/model_json.hpp; the attribute is its JSON text).
 void write_provenance_attributes(Hdf5TreeFile& file, const nlohmann::json& summary);
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

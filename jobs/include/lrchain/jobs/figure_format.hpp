@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
 
 enum class FigureFormat { png, svg, pdf };
 // "png", "svg" or "pdf"; anything else throws lrchain::InvalidParameter naming figure-format.
@@ -42,4 +42,4 @@ inline constexpr const char* viridis_palette =
     "set palette defined (0 '#440154', 1 '#482878', 2 '#3e4989', 3 '#31688e', 4 '#26828e', 5 '#1f9e89', "
     "6 '#35b779', 7 '#6ece58', 8 '#b5de2b', 9 '#fde725')";
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

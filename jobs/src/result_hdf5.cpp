@@ -1,15 +1,15 @@
 // HDF5 files of simulation results, shared by the CLI (--format hdf5) and Python's to_hdf5()
 // (result_hdf5.hpp).
-#include "lrchain/sim/result_hdf5.hpp"
+#include "lrchain/jobs/result_hdf5.hpp"
 
 #include <cstdint>
 
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/hdf5_tree.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/hdf5_tree.hpp"
+#include "lrchain/jobs/output_files.hpp"
 #include "lrchain/version.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
 
 namespace {
 
@@ -92,17 +92,17 @@ void write_field(Hdf5TreeFile& file, const std::string& path, const std::string&
   file.write_dataset(path + "/values", element, values.data(), {t.size(), n.size()});
 }
 
-void write_record(Hdf5TreeFile& file, const RunRecord& record, const RecordLayout& layout) {
+void write_record(Hdf5TreeFile& file, const sim::RunRecord& record, const RecordLayout& layout) {
   write_series_datasets(file, record.series, layout.renamed);
   if (!record.fields.empty()) {
-    const SpaceTime& f = record.fields[0];
+    const sim::SpaceTime& f = record.fields[0];
     std::vector<double> n(f.sites);
     for (Index i = 0; i < f.sites; ++i) n[static_cast<std::size_t>(i)] = double(f.first_label + i);
     write_field(file, "/energy_density", f.quantity, n, f.times, f.values, Hdf5Element::float32);
   }
   file.create_group("/snapshots");
   for (std::size_t k = 0; k < record.snapshots.size(); ++k) {
-    const Snapshot& s = record.snapshots[k];
+    const sim::Snapshot& s = record.snapshots[k];
     const std::string group = "/snapshots/" + std::to_string(k);
     file.create_group(group);
     file.write_attribute(group, "t", s.t);
@@ -118,7 +118,7 @@ void write_record(Hdf5TreeFile& file, const RunRecord& record, const RecordLayou
 }
 
 // Writes OUT/result.h5 and OUT/summary.json of a CLI run.
-std::vector<std::string> write_outputs(const std::filesystem::path& dir, SimulationKind kind, const RunRecord& record,
+std::vector<std::string> write_outputs(const std::filesystem::path& dir, SimulationKind kind, const sim::RunRecord& record,
                                        const json& summary) {
   write_simulation_hdf5(dir / "result.h5", kind, record, summary);
   write_file_atomic(dir, "summary.json", summary.dump(2) + "\n");
@@ -134,7 +134,7 @@ SimulationKind simulation_kind(const std::string& name) {
   throw InputError("result kind '" + name + "': bright, drive or modulated");
 }
 
-void write_series_datasets(Hdf5TreeFile& file, const TimeSeries& series,
+void write_series_datasets(Hdf5TreeFile& file, const sim::TimeSeries& series,
                            const std::vector<std::pair<std::string, std::string>>& renamed) {
   const std::size_t rows = series.rows(), cols = series.names.size();
   std::vector<double> column(rows);
@@ -159,7 +159,7 @@ void write_provenance_attributes(Hdf5TreeFile& file, const json& summary) {
   file.write_attribute("/", "model", summary.value("model", json(nullptr)).dump());
 }
 
-void write_simulation_tree(Hdf5TreeFile& file, const RecordLayout& layout, const RunRecord& record,
+void write_simulation_tree(Hdf5TreeFile& file, const RecordLayout& layout, const sim::RunRecord& record,
                            const json& summary) {
   file.write_attribute("/", "lrchain_result", layout.result_class);
   write_provenance_attributes(file, summary);
@@ -168,7 +168,7 @@ void write_simulation_tree(Hdf5TreeFile& file, const RecordLayout& layout, const
   write_json_tree(file, "/summary", summary);
 }
 
-void write_simulation_hdf5(const std::filesystem::path& path, SimulationKind kind, const RunRecord& record,
+void write_simulation_hdf5(const std::filesystem::path& path, SimulationKind kind, const sim::RunRecord& record,
                            const json& summary, const std::vector<SampledField>& extra) {
   Hdf5TreeFile file(path);
   write_simulation_tree(file, layout_of(kind), record, summary);
@@ -176,19 +176,19 @@ void write_simulation_hdf5(const std::filesystem::path& path, SimulationKind kin
   file.commit();
 }
 
-std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const BrightRunResult& r,
+std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const sim::BrightRunResult& r,
                                             const json& summary) {
   return write_outputs(dir, SimulationKind::bright, r.record, summary);
 }
 
-std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const DriveRunResult& r,
+std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const sim::DriveRunResult& r,
                                             const json& summary) {
   return write_outputs(dir, SimulationKind::drive, r.record, summary);
 }
 
-std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const ModulatedRunResult& r,
+std::vector<std::string> write_hdf5_outputs(const std::filesystem::path& dir, const sim::ModulatedRunResult& r,
                                             const json& summary) {
   return write_outputs(dir, SimulationKind::modulated, r.record, summary);
 }
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

@@ -28,11 +28,11 @@
 #include "lrchain/sim/dark/measures.hpp"
 #include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
 class Hdf5TreeFile;
 }
 
-namespace lrchain::sim::dark {
+namespace lrchain::jobs::dark {
 
 // Floquet multipliers and their classification as written (kind() as text).
 struct FloquetRecord {
@@ -42,20 +42,20 @@ struct FloquetRecord {
   Index near_one = 0;
   double pairing_defect = 0, conjugation_defect = 0, log_det = 0;
 };
-FloquetRecord floquet_record(const FloquetResult& f);
+FloquetRecord floquet_record(const sim::dark::FloquetResult& f);
 
 struct DarkSolutionRecord {
   Params params;
   double omega_b = 0, omega_edge = 0;
   std::vector<double> x, y, x_seed, y_seed;  // Z(0) and the eq:xy_app seed on sites n = i - (N-1)/2
   std::vector<double> newton_residuals;
-  DarkMeasures measures;
+  sim::dark::DarkMeasures measures;
   std::optional<FloquetRecord> floquet;
 };
 // The record of a converged solution: z0 = (x(0), y(0)), the seed, Newton's residual history.
 DarkSolutionRecord dark_solution_record(const Params& p, double omega_b, double omega_edge, const Eigen::VectorXd& z0,
-                                        const Eigen::VectorXd& seed, const NewtonResult& newton,
-                                        const DarkMeasures& measures, const FloquetResult* floquet);
+                                        const Eigen::VectorXd& seed, const sim::dark::NewtonResult& newton,
+                                        const sim::dark::DarkMeasures& measures, const sim::dark::FloquetResult* floquet);
 
 struct DarkBranchRecord {
   Params params;
@@ -63,12 +63,12 @@ struct DarkBranchRecord {
   std::vector<double> omega_b, tangent_omega, residual;
   std::vector<Index> iterations;  // written as int32
   std::vector<double> x, y;  // points x sites, row-major
-  std::vector<DarkMeasures> measures;
+  std::vector<sim::dark::DarkMeasures> measures;
   std::vector<FloquetRecord> floquet;  // one per point, or empty (not computed)
   std::vector<double> turning_points;
   std::string stop_reason;
 };
-DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch, Index sites, bool floquet);
+DarkBranchRecord dark_branch_record(const Params& p, const sim::dark::BranchResult& branch, Index sites, bool floquet);
 
 // The parts of the layout above that the model-file files share (jobs/dark/model_dark_hdf5.hpp),
 // written into an open file: newton_residuals, group measures, group floquet (if any) of a
@@ -76,7 +76,7 @@ DarkBranchRecord dark_branch_record(const Params& p, const BranchResult& branch,
 // after the profiles, the rest (turning_points, stop_reason, measures, floquet); b.x, b.y and
 // b.params are not used. Without `second_strain` (a one-field or displacement-form lattice) the
 // measures K_y, C_y are left out.
-void write_solution_parts(Hdf5TreeFile& file, const std::vector<double>& newton_residuals, const DarkMeasures& measures,
+void write_solution_parts(Hdf5TreeFile& file, const std::vector<double>& newton_residuals, const sim::dark::DarkMeasures& measures,
                           const std::optional<FloquetRecord>& floquet, bool second_strain);
 void write_branch_series(Hdf5TreeFile& file, const DarkBranchRecord& b);
 void write_branch_parts(Hdf5TreeFile& file, const DarkBranchRecord& b, bool second_strain);
@@ -85,4 +85,4 @@ void write_branch_parts(Hdf5TreeFile& file, const DarkBranchRecord& b, bool seco
 void write_dark_solution_hdf5(const std::filesystem::path& path, const DarkSolutionRecord& s);
 void write_dark_branch_hdf5(const std::filesystem::path& path, const DarkBranchRecord& b);
 
-}  // namespace lrchain::sim::dark
+}  // namespace lrchain::jobs::dark

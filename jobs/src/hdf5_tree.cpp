@@ -1,5 +1,5 @@
 // HDF5 files of groups, datasets and attributes through the HDF5 C API (hdf5_tree.hpp).
-#include "lrchain/sim/hdf5_tree.hpp"
+#include "lrchain/jobs/hdf5_tree.hpp"
 
 #include <hdf5.h>
 
@@ -8,9 +8,9 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/output_target.hpp"
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
 
 namespace {
 
@@ -138,4 +138,4 @@ void Hdf5TreeFile::commit() {
   state_->committed = true;
 }
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs

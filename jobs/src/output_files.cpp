@@ -1,5 +1,5 @@
 // Atomic output files (temp name + rename), CSV, gnuplot binary matrices, figures drawn by gnuplot.
-#include "lrchain/sim/output_files.hpp"
+#include "lrchain/jobs/output_files.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -19,10 +19,10 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/output_target.hpp"
-#include "lrchain/sim/figure_format.hpp"
+#include "lrchain/jobs/figure_format.hpp"
 #include "lrchain/process.hpp"
 
-namespace lrchain::sim {
+namespace lrchain::jobs {
 
 namespace fs = std::filesystem;
 
@@ -89,15 +89,15 @@ std::string csv_text(const std::vector<std::string>& names, const std::vector<do
 }
 }  // namespace
 
-void write_csv(const fs::path& dir, const std::string& name, const TimeSeries& ts) {
+void write_csv(const fs::path& dir, const std::string& name, const sim::TimeSeries& ts) {
   write_file_atomic(dir, name, csv_text(ts.names, ts.data));
 }
 
-void write_snapshot_csv(const fs::path& dir, const std::string& name, const Snapshot& s) {
+void write_snapshot_csv(const fs::path& dir, const std::string& name, const sim::Snapshot& s) {
   write_file_atomic(dir, name, csv_text(s.names, s.data));
 }
 
-void write_spacetime_binary(const fs::path& dir, const std::string& name, const SpaceTime& f) {
+void write_spacetime_binary(const fs::path& dir, const std::string& name, const sim::SpaceTime& f) {
   check_output_target(dir / name);
   const fs::path tmp = temp_name(dir, name);
   {
@@ -118,7 +118,7 @@ void write_spacetime_binary(const fs::path& dir, const std::string& name, const 
   commit(tmp, dir, name);
 }
 
-void write_record(const fs::path& dir, const RunRecord& r) {
+void write_record(const fs::path& dir, const sim::RunRecord& r) {
   ensure_directory(dir);
   if (!r.series.names.empty()) write_csv(dir, "series.csv", r.series);
   for (const auto& f : r.fields) write_spacetime_binary(dir, f.quantity + "_spacetime.bin", f);
@@ -335,7 +335,7 @@ void Figures::finish(nlohmann::json& j) {
   warned_ = true;
 }
 
-std::vector<std::string> write_run_outputs(const fs::path& dir, const RunRecord& record,
+std::vector<std::string> write_run_outputs(const fs::path& dir, const sim::RunRecord& record,
                                            const std::string& summary_json,
                                            const std::vector<FigureScript>& figures, bool draw_figures) {
   ensure_directory(dir);
@@ -411,4 +411,4 @@ void record_stale_files(const fs::path& dir, const OutputListing& before, nlohma
   write_file_atomic(dir, "summary.json", written.dump(2) + "\n");
 }
 
-}  // namespace lrchain::sim
+}  // namespace lrchain::jobs
