@@ -4,6 +4,8 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <mutex>
@@ -45,23 +47,37 @@ std::string file_sha256_definition(const std::string& file_sha256) {
   return "\nextern \"C\" const char " + std::string(kFileShaSymbol) + "[] = " + derivation::c_string_literal(file_sha256) + ";\n";
 }
 
-// Self-contained source of the evaluators' translation unit of the shared object: the evaluators and C entry points. Nothing of the
-// model file reaches it as text but identifiers and parsed expressions; its description (JSON) and
-// hash only as C string literals (derivation::c_string_literal).
-std::string shared_object_source(const derivation::ModelDerivation& m, const derivation::Symbols& s) {
-  return std::string("// lrchain model evaluators, compiled at run time by lrchain. Do not edit.\n#include <cmath>\n") +
-         model_compiler_detail::evaluator_support_text + "\nnamespace lrchain_model {\n\n" +
-         derivation::model_evaluator_functions(m, s) +
-         "\n}  // namespace lrchain_model\n\n"
-         "extern \"C\" const char lrchain_model_metadata[] = " + derivation::c_string_literal(model_metadata_json(m)) + ";\n" +
-         file_sha256_definition(m.file.sha256) +
-         "extern \"C\" const int " + kAbiVersionSymbol + " = " + std::to_string(LRCHAIN_COMPILED_MODEL_ABI_VERSION) + ";\n" +
-         "\nextern \"C\" {\n"
-         "void lrchain_model_intermediates(const double* p, double* q) { lrchain_model::intermediates(p, q); }\n"
-         "void lrchain_model_dispersion(double D1, double sigma, const double* q, double* w) { lrchain_model::dispersion(D1, sigma, q, w); }\n"
-         "void lrchain_model_nls(double D1, double sigma, double omega, const double* q, double* out) { lrchain_model::nls(D1, sigma, omega, q, out); }\n"
-         "void lrchain_model_harmonics(double D1, double sigma, double omega, const double* q, double* out) { lrchain_model::harmonics(D1, sigma, omega, q, out); }\n"
-         "}\n";
+// The evaluators as self-contained translation units of the shared object: the first holds the
+// parameters' intermediates and the dispersion with the model's description and identity, the
+// others nls and harmonics (the large functions), each with the small functions both call (inline).
+// Nothing of the model file reaches them as text but identifiers and parsed expressions; its
+// description (JSON) and hash only as C string literals (derivation::c_string_literal).
+std::vector<std::string> evaluator_sources(const derivation::ModelDerivation& m, const derivation::Symbols& s) {
+  const derivation::EvaluatorParts parts = derivation::model_evaluator_parts(m, s);
+  const auto unit = [&](const std::string& functions, const std::string& tail) {
+    return std::string("// lrchain model evaluators, compiled at run time by lrchain. Do not edit.\n#include <cmath>\n") +
+           model_compiler_detail::evaluator_support_text + "\nnamespace lrchain_model {\n\n" + parts.common + functions +
+           "\n}  // namespace lrchain_model\n\n" + tail;
+  };
+  return {
+      unit("", "extern \"C\" const char lrchain_model_metadata[] = " + derivation::c_string_literal(model_metadata_json(m)) +
+                   ";\n" + file_sha256_definition(m.file.sha256) + "extern \"C\" const int " + kAbiVersionSymbol + " = " +
+                   std::to_string(LRCHAIN_COMPILED_MODEL_ABI_VERSION) +
+                   ";\n\nextern \"C\" {\n"
+                   "void lrchain_model_intermediates(const double* p, double* q) { lrchain_model::intermediates(p, q); }\n"
+                   "void lrchain_model_dispersion(double D1, double sigma, const double* q, double* w) { lrchain_model::dispersion(D1, sigma, q, w); }\n"
+                   "}\n"),
+      unit(parts.nls, "extern \"C\" void lrchain_model_nls(double D1, double sigma, double omega, const double* q, double* out) "
+                      "{ lrchain_model::nls(D1, sigma, omega, q, out); }\n"),
+      unit(parts.harmonics, "extern \"C\" void lrchain_model_harmonics(double D1, double sigma, double omega, const double* q, "
+                            "double* out) { lrchain_model::harmonics(D1, sigma, omega, q, out); }\n")};
+}
+
+// "12.3 s" (progress lines).
+std::string seconds_text(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f s", seconds);
+  return text;
 }
 
 // The first line of `compiler --version` (part of the cache key), once per compiler and process.
@@ -91,7 +107,7 @@ CacheEntry cache_entry(const std::string& bytes) {
 // `make()` (emitting code with GiNaC) with a failure of the symbolic engine reported as the file's
 // input error, naming its first force.
 template <class Make>
-std::string emitted(const derivation::ModelFile& file, const std::string& what, Make make) {
+auto emitted(const derivation::ModelFile& file, const std::string& what, Make make) {
   try {
     return make();
   } catch (const InputError&) {
@@ -272,17 +288,24 @@ static CompiledModel compile_model_now(const ModelFileContent& content, Compiled
     }
     return fallback;
   }
-  say("emitting its evaluators and lattice kernels");
-  // Two translation units compiled at once and linked into one object: the evaluators (-O2), and the
-  // lattice kernels (-O3 as the shipped kernels of a Release build; their attributes pick the vector width).
+  say(seconds_text(m->derive_seconds) + " deriving, " + seconds_text(m->check_seconds) +
+      " checking at 50 digits; emitting its evaluators and lattice kernels");
+  const auto emit_start = std::chrono::steady_clock::now();
+  // Translation units compiled at once and linked into one object: the evaluators (-O2: three units,
+  // nls and harmonics apart), and the lattice kernels (-O3 as the shipped kernels of a Release build; their attributes pick the vector width).
   std::vector<CompileUnit> units;
-  units.push_back({emitted(m->file, "evaluators", [&] { return shared_object_source(*m, symbols); }), {"-O2"}});
+  for (std::string& source : emitted(m->file, "evaluators", [&] { return evaluator_sources(*m, symbols); }))
+    units.push_back({std::move(source), {"-O2"}});
   try {
     units.push_back({emitted(m->file, "lattice code", [&] { return derivation::lattice_source(lattice_file); }), {"-O3", "-DNDEBUG"}});
   } catch (const InputError&) {
     // Force laws a lattice cannot run (compile_model_lattice says why): the evaluators alone.
   }
-  say("compiling it with " + compiler);
+  std::size_t bytes_emitted = 0;
+  for (const CompileUnit& u : units) bytes_emitted += u.source.size();
+  say(seconds_text(std::chrono::duration<double>(std::chrono::steady_clock::now() - emit_start).count()) + " emitting " +
+      std::to_string(bytes_emitted / 1024) + " KiB of C++; compiling " + std::to_string(units.size()) +
+      " translation units at once with " + compiler);
   compile_entry(units, entry, "model " + m->file.name + " of " + shown, stop);
   void* handle = open_verified_object(entry, &library);
   if (info) info->from_cache = false, info->library = library;

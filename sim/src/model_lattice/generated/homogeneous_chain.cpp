@@ -511,7 +511,7 @@ long workspace_size(long n) { return Workspace::size(n); }
 static const char* const kParameterNames[] = {"alpha", "delta0", nullptr};
 
 extern "C" const struct lrchain_lattice_kernels* lrchain_lattice_homogeneous_chain(void) {
-  static const lrchain_lattice_kernels table = {LRCHAIN_LATTICE_ABI_VERSION, "homogeneous_chain", 1, 2, kParameterNames, masses, workspace_size,
+  static const lrchain_lattice_kernels table = {LRCHAIN_COMPILED_MODEL_ABI_VERSION, "homogeneous_chain", 1, 2, kParameterNames, masses, workspace_size,
       displacement_accelerations, displacement_jacobian_action,
       strain_accelerations, strain_jacobian_action,
       energy_density, &displacement_contacts, &strain_contacts};

@@ -282,7 +282,7 @@ long workspace_size(long n) { return Workspace::size(n); }
 static const char* const kParameterNames[] = {"C", "w0", "a", "b", nullptr};
 
 extern "C" const struct lrchain_lattice_kernels* lrchain_lattice_klein_gordon(void) {
-  static const lrchain_lattice_kernels table = {LRCHAIN_LATTICE_ABI_VERSION, "klein_gordon", 1, 4, kParameterNames, masses, workspace_size,
+  static const lrchain_lattice_kernels table = {LRCHAIN_COMPILED_MODEL_ABI_VERSION, "klein_gordon", 1, 4, kParameterNames, masses, workspace_size,
       displacement_accelerations, displacement_jacobian_action,
       nullptr, nullptr,
       energy_density, nullptr, nullptr};

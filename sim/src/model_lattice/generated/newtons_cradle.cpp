@@ -390,7 +390,7 @@ long workspace_size(long n) { return Workspace::size(n); }
 static const char* const kParameterNames[] = {"alpha", "delta0", "w0", nullptr};
 
 extern "C" const struct lrchain_lattice_kernels* lrchain_lattice_newtons_cradle(void) {
-  static const lrchain_lattice_kernels table = {LRCHAIN_LATTICE_ABI_VERSION, "newtons_cradle", 1, 3, kParameterNames, masses, workspace_size,
+  static const lrchain_lattice_kernels table = {LRCHAIN_COMPILED_MODEL_ABI_VERSION, "newtons_cradle", 1, 3, kParameterNames, masses, workspace_size,
       displacement_accelerations, displacement_jacobian_action,
       nullptr, nullptr,
       energy_density, &displacement_contacts, nullptr};

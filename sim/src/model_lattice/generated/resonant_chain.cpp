@@ -587,7 +587,7 @@ long workspace_size(long n) { return Workspace::size(n); }
 static const char* const kParameterNames[] = {"alpha", "delta0", "kappa", "rho", nullptr};
 
 extern "C" const struct lrchain_lattice_kernels* lrchain_lattice_resonant_chain(void) {
-  static const lrchain_lattice_kernels table = {LRCHAIN_LATTICE_ABI_VERSION, "resonant_chain", 2, 4, kParameterNames, masses, workspace_size,
+  static const lrchain_lattice_kernels table = {LRCHAIN_COMPILED_MODEL_ABI_VERSION, "resonant_chain", 2, 4, kParameterNames, masses, workspace_size,
       displacement_accelerations, displacement_jacobian_action,
       strain_accelerations, strain_jacobian_action,
       energy_density, &displacement_contacts, &strain_contacts};

@@ -468,7 +468,7 @@ long workspace_size(long n) { return Workspace::size(n); }
 static const char* const kParameterNames[] = {"k1", "b1", "g1", "k2", "b2", "g2", "rho", nullptr};
 
 extern "C" const struct lrchain_lattice_kernels* lrchain_lattice_resonant_chain_polynomial(void) {
-  static const lrchain_lattice_kernels table = {LRCHAIN_LATTICE_ABI_VERSION, "resonant_chain_polynomial", 2, 7, kParameterNames, masses, workspace_size,
+  static const lrchain_lattice_kernels table = {LRCHAIN_COMPILED_MODEL_ABI_VERSION, "resonant_chain_polynomial", 2, 7, kParameterNames, masses, workspace_size,
       displacement_accelerations, displacement_jacobian_action,
       strain_accelerations, strain_jacobian_action,
       energy_density, nullptr, nullptr};
