@@ -72,10 +72,10 @@ TEST_CASE("compiled model: one file compiles once into one cache entry holding i
   // The kernels: the shipped fput's accelerations on one state (the same generator and force law).
   const lrchain_lattice_kernels* reference = sim::shipped_lattice_kernels("fput");
   REQUIRE(reference);
-  const long sites = 16;
+  constexpr long sites = 16;
   // The kernels take the parameters in the file's order: the first entries of the evaluators' inputs.
   const std::vector<double> parameters(mine.inputs().begin(), mine.inputs().begin() + compiled.kernels->parameter_count);
-  std::vector<double> q(std::size_t(sites)), a_mine(q.size()), a_shipped(q.size());
+  std::vector<double> q(16), a_mine(16), a_shipped(16);
   for (long n = 0; n < sites; ++n) q[std::size_t(n)] = 0.1 * std::sin(0.7 * double(n) + 0.3);
   std::vector<double> work_mine(std::size_t(compiled.kernels->workspace_size(sites))),
       work_shipped(std::size_t(reference->workspace_size(sites)));
