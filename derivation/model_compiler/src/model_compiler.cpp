@@ -306,7 +306,7 @@ static CompiledModel compile_model_now(const ModelFileContent& content, Compiled
   say(seconds_text(std::chrono::duration<double>(std::chrono::steady_clock::now() - emit_start).count()) + " emitting " +
       std::to_string(bytes_emitted / 1024) + " KiB of C++; compiling " + std::to_string(units.size()) +
       " translation units at once with " + compiler);
-  compile_entry(units, entry, "model " + m->file.name + " of " + shown, stop);
+  compile_entry(units, entry, "the model of " + shown, stop);
   void* handle = open_verified_object(entry, &library);
   if (info) info->from_cache = false, info->library = library;
   if (!handle) throw std::runtime_error("cannot load " + library.string() + " just compiled: " + dlerror_text());
