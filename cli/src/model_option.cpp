@@ -1,7 +1,12 @@
 #include "model_option.hpp"
 
+#include <unistd.h>
+
+#include <chrono>
 #include <csignal>
 #include <iostream>
+
+#include <fmt/format.h>
 
 #include "lrchain/errors.hpp"
 #include "lrchain/numeric_parse.hpp"
@@ -47,18 +52,25 @@ auto until_stopped(Compile compile) {
 // (until_stopped), the GiNaC fallback is a warning on stderr.
 class CliModelCompiler final : public jobs::ModelCompiler {
  public:
-  std::shared_ptr<const ModelDefinition> evaluators(const ModelFileContent& file) const override {
+  jobs::CompiledCode compile(const ModelFileContent& file) const override {
     CompiledModelInfo info;
-    auto definition = until_stopped([&] { return compile_model_file(file, &info, StopSignals::flag()); });
-    if (!info.fallback_reason.empty()) std::cerr << "lrchain: warning: " << model_fallback_warning(definition->name, info) << "\n";
-    return definition;
+    // Progress on stderr while a new file compiles, for a person at a terminal (not in pipes or tests).
+    const bool terminal = ::isatty(STDERR_FILENO) != 0;
+    const auto start = std::chrono::steady_clock::now();
+    const CompileProgress progress = [&](const std::string& step) {
+      if (terminal) std::cerr << "lrchain: model file " << file.path << ": " << step << " ..." << std::endl;
+    };
+    CompiledModel compiled = until_stopped([&] { return compile_model(file, &info, StopSignals::flag(), progress); });
+    if (terminal && !info.from_cache && info.fallback_reason.empty())
+      std::cerr << "lrchain: model file " << file.path << ": compiled in "
+                << fmt::format("{:.1f}", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
+                << " s" << std::endl;
+    if (!info.fallback_reason.empty())
+      std::cerr << "lrchain: warning: " << model_fallback_warning(compiled.definition->name, info) << "\n";
+    return {compiled.definition, compiled.kernels, info.from_cache, info.library.string()};
   }
-  std::shared_ptr<const lrchain_lattice_kernels> lattice(const ModelFileContent& file, jobs::CompiledCode& code) const override {
-    CompiledModelInfo info;
-    auto kernels = until_stopped([&] { return compile_model_lattice(file, &info, StopSignals::flag()); });
-    code.from_cache = info.from_cache;
-    code.library = info.library.string();
-    return kernels;
+  void refuse_lattice(const ModelFileContent& file) const override {
+    until_stopped([&] { return compile_model_lattice(file, nullptr, StopSignals::flag()); });
   }
   void check_lattice(const ModelFileContent& file) const override { check_lattice_compiler(file); }
 };

@@ -1,5 +1,5 @@
 // The one model loader (lrchain/jobs/model_source.hpp): name or file -> shipped definition or
-// compiled artifact, the file read and hashed once, its lattice kernels from the same bytes.
+// compiled artifact (evaluators and lattice kernels in one object), the file read and hashed once.
 #include "lrchain/jobs/model_source.hpp"
 
 #include <chrono>
@@ -71,7 +71,10 @@ ModelSource::ModelSource(const std::string& source, const std::string& label, st
   }
   if (!compiler_) throw InputError(no_compiler(label_, file_.path, ""));
   if (lattice_run) compiler_->check_lattice(file_);
-  definition_ = compiler_->evaluators(file_);
+  const auto start = std::chrono::steady_clock::now();
+  compiled_ = compiler_->compile(file_);
+  compile_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  definition_ = compiled_.definition;
 }
 
 ModelSource ModelSource::shipped(const std::string& name, const std::string& label) {
@@ -91,17 +94,20 @@ const LatticeCode& ModelSource::lattice() const {
     code->kernels = std::shared_ptr<const lrchain_lattice_kernels>(std::shared_ptr<const lrchain_lattice_kernels>(), compiled_in);
   } else {
     if (!compiler_) throw InputError(no_compiler(label_, file_.path, " for its lattice code"));
-    CompiledCode compiled;
-    code->kernels = compiler_->lattice(file_, compiled);
+    if (!compiled_.kernels) {
+      compiler_->refuse_lattice(file_);
+      throw std::runtime_error(label_ + " " + file_.path + ": compiled without lattice kernels");
+    }
+    code->kernels = compiled_.kernels;
     code->compiled_in = false;
-    code->from_cache = compiled.from_cache;
-    code->library = compiled.library;
+    code->from_cache = compiled_.from_cache;
+    code->library = compiled_.library;
   }
   if (std::size_t(code->kernels->parameter_count) != definition_->parameters.size())
     throw std::runtime_error("the lattice code of model " + definition_->name + " takes " +
                              std::to_string(code->kernels->parameter_count) + " parameters, its evaluators " +
                              std::to_string(definition_->parameters.size()));
-  code->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  code->seconds = compile_seconds_ + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   lattice_ = std::move(code);
   return *lattice_;
 }

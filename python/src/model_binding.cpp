@@ -32,16 +32,17 @@ namespace {
 // KeyboardInterrupt follows.
 class PythonModelCompiler final : public jobs::ModelCompiler {
  public:
-  std::shared_ptr<const ModelDefinition> evaluators(const ModelFileContent& file) const override {
-    const py::object capsule = call("compile", file);
-    return *static_cast<ModelDefinitionHandle*>(PyCapsule_GetPointer(capsule.ptr(), kModelCapsuleName));
+  jobs::CompiledCode compile(const ModelFileContent& file) const override {
+    const py::tuple compiled = call("compile", file);
+    jobs::CompiledCode code;
+    code.definition = *static_cast<ModelDefinitionHandle*>(PyCapsule_GetPointer(compiled[0].ptr(), kModelCapsuleName));
+    if (!compiled[1].is_none())
+      code.kernels = *static_cast<LatticeKernelsHandle*>(PyCapsule_GetPointer(compiled[1].ptr(), kLatticeCapsuleName));
+    code.from_cache = compiled[2].cast<bool>();
+    code.library = compiled[3].cast<std::string>();
+    return code;
   }
-  std::shared_ptr<const lrchain_lattice_kernels> lattice(const ModelFileContent& file, jobs::CompiledCode& code) const override {
-    const py::tuple compiled = call("compile_lattice", file);
-    code.from_cache = compiled[1].cast<bool>();
-    code.library = compiled[2].cast<std::string>();
-    return *static_cast<LatticeKernelsHandle*>(PyCapsule_GetPointer(compiled[0].ptr(), kLatticeCapsuleName));
-  }
+  void refuse_lattice(const ModelFileContent& file) const override { call("refuse_lattice", file); }
   void check_lattice(const ModelFileContent& file) const override { call("check_lattice", file); }
 
  private:

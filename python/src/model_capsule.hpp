@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "lrchain/model.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 
 namespace lrchain::python {
 

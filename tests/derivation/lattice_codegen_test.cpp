@@ -29,7 +29,7 @@ TEST_CASE("lattice codegen: committed kernels of every shipped model equal the g
     const std::string generated = lrchain::derivation::lattice_source(model);
     const std::string committed = read(source / "sim/src/model_lattice/generated" / (entry.path().stem().string() + ".cpp"));
     CHECK(generated == committed);
-    CHECK(committed.find(read(source / "sim/include/lrchain/sim/model_lattice_abi.h")) != std::string::npos);
+    CHECK(committed.find(read(source / "lib/include/lrchain/compiled_model_abi.h")) != std::string::npos);
     ++models;
   }
   CHECK(models == 7);

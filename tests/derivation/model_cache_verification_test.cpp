@@ -129,12 +129,12 @@ TEST_CASE("model cache: every corruption of an entry is a miss, compiled again w
   CHECK(!info.from_cache);
 }
 
-TEST_CASE("model cache: a lattice object corrupted is compiled again, not loaded" * doctest::timeout(600)) {
+TEST_CASE("model cache: a compiled object corrupted is compiled again, kernels included, not loaded" * doctest::timeout(600)) {
   if (!model_compiler_available()) return;
   Scratch scratch;
   write_renamed("fput", "mine", scratch.dir / "mine.toml");
   CompiledModelInfo info;
-  compile_model_lattice(scratch.dir / "mine.toml", &info);
+  compile_model_file(scratch.dir / "mine.toml", &info);
   const fs::path object = info.library;
   fs::resize_file(object, fs::file_size(object) / 3);
   const auto kernels = compile_model_lattice(scratch.dir / "mine.toml", &info);

@@ -102,7 +102,7 @@ TEST_CASE("model compile: a stop flag set while the compiler runs kills its proc
   });
   const auto t0 = std::chrono::steady_clock::now();
   CHECK_THROWS_WITH_AS(compile_model_file(scratch.dir / "morse.toml", nullptr, &stop),
-                       doctest::Contains("stopped while compiling the evaluators of"), Interrupted);
+                       doctest::Contains("stopped while compiling the model of"), Interrupted);
   stopper.join();
   REQUIRE(grandchild > 0);
   CHECK(seconds_since(t0) < 60);
@@ -135,7 +135,7 @@ TEST_CASE("model compile: a failing compiler is one line with its exit status an
     // Before: "compiling the evaluators of ... failed: " and nothing more, exit 1.
     const ModelCompiler compiler("/bin/false");
     CHECK_THROWS_WITH_AS(compile_model_file(scratch.dir / "morse.toml"),
-                         doctest::Contains((std::string("LRCHAIN_MODEL_CXX: the C++ compiler /bin/false failed compiling the evaluators "
+                         doctest::Contains((std::string("LRCHAIN_MODEL_CXX: the C++ compiler /bin/false failed compiling the model "
                                            "of ") + (scratch.dir / "morse.toml").string() +
                                            " (exit status 1; it wrote nothing on stderr)")
                                                .c_str()),
@@ -232,7 +232,7 @@ TEST_CASE("lrchain derive and coeffs --model stop on SIGINT/SIGTERM with 130/143
     CHECK(r.exited);
     CHECK(r.exit_code == 143);
     CHECK(r.output.empty());
-    CHECK(r.error_output.find("interrupted by SIGTERM: stopped while compiling the evaluators of") != std::string::npos);
+    CHECK(r.error_output.find("interrupted by SIGTERM: stopped while compiling the model of") != std::string::npos);
     CHECK(r.error_output.find('\n') == r.error_output.size() - 1);
     CHECK(process_gone(grandchild));  // before: cc1plus (here: sleep) kept running
     CHECK(cache_files(scratch.cache()).empty());

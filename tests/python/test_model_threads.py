@@ -86,7 +86,7 @@ def test_eight_threads_derive_at_once_through_the_ginac_fallback(tmp_path, monke
 def test_eight_threads_compile_at_once(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
     run_repetitions(tmp_path, 2)
-    # Every compile left one object and one manifest per model, and no temporary.
+    # Every compile left one object and one manifest per model (evaluators and kernels in one), and no temporary.
     cache = tmp_path / "cache" / "lrchain"
     assert not [p for p in cache.iterdir() if p.name.startswith(".model-")]
     assert len(list(cache.glob("model-*.so"))) == 2 * 5

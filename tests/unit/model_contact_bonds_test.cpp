@@ -1,4 +1,4 @@
-// The one-sided contacts that the generated lattice code exports (model_lattice_abi.h, read by
+// The one-sided contacts that the generated lattice code exports (lrchain/compiled_model_abi.h, read by
 // model_contact_bonds in contact_bonds.hpp) equal the overlaps an independent computation gives: a
 // second parse of the model file's force text with GiNaC (the dark solver's former reader, run at
 // these parameter values; its output is quoted below), in strain and displacement form. Smooth models

@@ -1,6 +1,6 @@
 // The one model loader (jobs::ModelSource) with a recording compiler injected: shipped models by
 // name or by their file's bytes never reach the compiler; a user's file is read and hashed once and
-// handed to it as read; the lattice kernels come from the same bytes, once per source.
+// handed to it as read, compiled once: its evaluators and lattice kernels from one artifact.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -21,24 +21,26 @@ using lrchain::ModelFileContent;
 namespace jobs = lrchain::jobs;
 
 // Records every call; compiles nothing: a user's file gets the shipped FPUT chain's evaluators and
-// kernels under the file's own hash (the test's files are copies of models/fput.toml).
+// kernels (one "artifact") under the file's own hash (the test's files are copies of models/fput.toml).
 struct RecordingCompiler : jobs::ModelCompiler {
   mutable std::vector<std::string> calls;
   mutable std::vector<ModelFileContent> files;
 
-  std::shared_ptr<const lrchain::ModelDefinition> evaluators(const ModelFileContent& file) const override {
-    calls.push_back("evaluators");
+  jobs::CompiledCode compile(const ModelFileContent& file) const override {
+    calls.push_back("compile");
     files.push_back(file);
     auto d = std::make_shared<lrchain::ModelDefinition>(*lrchain::find_shipped_model("fput"));
     d->file_sha256 = file.sha256;
-    return d;
-  }
-  std::shared_ptr<const lrchain_lattice_kernels> lattice(const ModelFileContent& file, jobs::CompiledCode& code) const override {
-    calls.push_back("lattice");
-    files.push_back(file);
+    jobs::CompiledCode code;
+    code.definition = d;
+    code.kernels = {std::shared_ptr<const lrchain_lattice_kernels>(), lrchain::sim::shipped_lattice_kernels("fput")};
     code.from_cache = true;
-    code.library = "/cache/lattice.so";
-    return {std::shared_ptr<const lrchain_lattice_kernels>(), lrchain::sim::shipped_lattice_kernels("fput")};
+    code.library = "/cache/model.so";
+    return code;
+  }
+  void refuse_lattice(const ModelFileContent& file) const override {
+    calls.push_back("refuse_lattice");
+    files.push_back(file);
   }
   void check_lattice(const ModelFileContent& file) const override {
     calls.push_back("check_lattice");
@@ -73,27 +75,27 @@ TEST_CASE("model source: a shipped model by name or by its file's bytes never re
                        doctest::Contains("load_model: no shipped model 'kleingordon' (shipped: "), lrchain::InputError);
 }
 
-TEST_CASE("model source: a user's file is read and hashed once, its lattice code compiled from the same bytes once" * doctest::test_suite("fast")) {
+TEST_CASE("model source: a user's file is read and hashed once and compiled once, evaluators and kernels together" * doctest::test_suite("fast")) {
   const auto dir = lrchain::test::scratch_directory("model-source");
   const std::string bytes = shipped_fput_text() + "# a user's copy\n";
   const std::string path = (dir / "mine.toml").string();
   std::ofstream(path) << bytes;
   const auto compiler = std::make_shared<RecordingCompiler>();
   const jobs::ModelSource source(path, "--model", compiler, true);
-  // The lattice check comes first (a lattice run refuses before compiling evaluators).
-  REQUIRE(compiler->calls == std::vector<std::string>{"check_lattice", "evaluators"});
+  // The lattice check comes first (a lattice run refuses before compiling).
+  REQUIRE(compiler->calls == std::vector<std::string>{"check_lattice", "compile"});
   CHECK(compiler->files[1].path == path);
   CHECK(compiler->files[1].bytes == bytes);
   CHECK(compiler->files[1].sha256 == lrchain::sha256_hex(bytes));
-  // The file changes on disk: the kernels still come from the bytes the evaluators came from.
+  // The file changes on disk: the kernels are those of the one compile of the bytes read.
   std::ofstream(path) << "name = \"other\"\n";
   const jobs::LatticeCode& code = source.lattice();
   CHECK(&source.lattice() == &code);  // loaded once
-  CHECK(compiler->calls == std::vector<std::string>{"check_lattice", "evaluators", "lattice"});
-  CHECK(compiler->files[2].bytes == bytes);
+  CHECK(compiler->calls == std::vector<std::string>{"check_lattice", "compile"});  // no second compile
+  CHECK(code.kernels.get() == lrchain::sim::shipped_lattice_kernels("fput"));
   CHECK_FALSE(code.compiled_in);
   CHECK(jobs::lattice_code_json(code, false) ==
-        nlohmann::json::parse(R"({"compiled_in": false, "from_cache": true, "library": "/cache/lattice.so"})"));
+        nlohmann::json::parse(R"({"compiled_in": false, "from_cache": true, "library": "/cache/model.so"})"));
   const lrchain::Model model = source.model({{"a", 0.5}});
   CHECK(model.parameter("a") == 0.5);
   std::filesystem::remove_all(dir);

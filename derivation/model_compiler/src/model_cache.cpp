@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -254,38 +255,64 @@ int remove_stale_temporaries(const fs::path& directory) {
   return removed;
 }
 
-void compile_into_entry(const std::string& source_text, const std::string& compiler, const std::vector<std::string>& options,
-                        const CacheEntry& entry, const std::string& what, const std::atomic<bool>* stop) {
+// Runs the compiler with `argv` (after the compiler's path) in a process group of its own.
+static std::unique_ptr<ChildProcess> start_compiler(const std::string& compiler, std::vector<std::string> argv, const std::atomic<bool>* stop) {
+  ProcessOptions process;
+  process.capture_stderr = true;
+  process.own_process_group = true;  // a stop kills the driver and its cc1plus, as
+  process.stop = stop;
+  argv.insert(argv.begin(), compiler);
+  return std::make_unique<ChildProcess>(argv, process);
+}
+
+void compile_into_entry(const std::vector<CompileUnit>& units, const std::string& compiler, const CacheEntry& entry,
+                        const std::string& what, const std::atomic<bool>* stop) {
   const Descriptor directory = open_cache_directory(true);
   check_manifest_path(directory.get(), entry);
   remove_stale_temporaries(entry.directory);
   std::random_device random;
   const std::string stem = ".model-" + std::to_string(::getpid()) + "-" + std::to_string(random());
-  const fs::path source = entry.directory / (stem + ".cpp"), object = entry.directory / (stem + ".so");
-  write_new_file(directory.get(), stem + ".cpp", source_text, source);
-  ProcessOptions process;
-  process.capture_stderr = true;
-  process.own_process_group = true;  // a stop kills the driver and its cc1plus, as
-  process.stop = stop;
-  std::vector<std::string> argv{compiler, "-std=c++17"};
-  argv.insert(argv.end(), options.begin(), options.end());
-  argv.insert(argv.end(), {"-fPIC", "-shared", "-o", object.string(), source.string()});
-  const ProcessResult r = run_program(argv, process);
+  const fs::path object = entry.directory / (stem + ".so");
+  std::vector<fs::path> temporaries;  // the units' sources and objects
   std::error_code ec;
-  fs::remove(source, ec);
+  const auto remove_temporaries = [&] {
+    for (const fs::path& t : temporaries) fs::remove(t, ec);
+  };
+  const auto failed = [&](const ProcessResult& r, const std::string& step) {
+    remove_temporaries();
+    fs::remove(object, ec);
+    if (r.stopped) throw Interrupted(SIGINT, "stopped while compiling " + what + "; nothing was cached");
+    throw CompilerFailed("the C++ compiler " + compiler + " failed " + step + " " + what + " (" + exit_status_text(r) +
+                         "; " + stderr_tail(r.error_output) + ")");
+  };
+  // Every unit compiled at once (one process each), then linked into one shared object.
+  std::vector<std::string> link{"-shared", "-o", object.string()};
+  std::vector<std::unique_ptr<ChildProcess>> compiles;
+  for (std::size_t i = 0; i < units.size(); ++i) {
+    const std::string unit = stem + "." + std::to_string(i);
+    const fs::path source = entry.directory / (unit + ".cpp"), unit_object = entry.directory / (unit + ".o");
+    temporaries.push_back(source);
+    temporaries.push_back(unit_object);
+    write_new_file(directory.get(), unit + ".cpp", units[i].source, source);
+    std::vector<std::string> argv{"-std=c++17"};
+    argv.insert(argv.end(), units[i].options.begin(), units[i].options.end());
+    argv.insert(argv.end(), {"-fPIC", "-c", "-o", unit_object.string(), source.string()});
+    compiles.push_back(start_compiler(compiler, argv, stop));
+    link.push_back(unit_object.string());
+  }
+  std::optional<ProcessResult> first_failure;
+  for (auto& c : compiles) {  // every child waited for (a stop reaches each), the first failure reported
+    const ProcessResult r = c->wait();
+    if (!r.ok() && (!first_failure || (r.stopped && !first_failure->stopped))) first_failure = r;
+  }
+  if (first_failure) failed(*first_failure, "compiling");
+  const ProcessResult linked = start_compiler(compiler, link, stop)->wait();
+  if (!linked.ok()) failed(linked, "linking");
+  remove_temporaries();
   const auto fail = [&](const std::string& why) {
     fs::remove(object, ec);
     throw std::runtime_error(why);
   };
-  if (r.stopped) {
-    fs::remove(object, ec);
-    throw Interrupted(SIGINT, "stopped while compiling " + what + "; nothing was cached");
-  }
-  if (!r.ok()) {
-    fs::remove(object, ec);
-    throw CompilerFailed("the C++ compiler " + compiler + " failed compiling " + what + " (" + exit_status_text(r) +
-                         "; " + stderr_tail(r.error_output) + ")");
-  }
   if (::fchmodat(directory.get(), (stem + ".so").c_str(), 0755, 0) != 0) fail("cannot set the mode of " + object.string());
   std::size_t size = 0;
   std::optional<std::string> digest;

@@ -36,16 +36,21 @@ struct CompilerFailed : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Compiles `source_text` with `compiler` and `options` into a fresh object of the entry (a unique
-// temporary name, then renamed into place with its manifest), after removing the temporaries that
-// dead processes left behind. The compiler runs in a process group of its own; once `stop` is set
-// the whole group is killed, the temporaries removed and lrchain::Interrupted (SIGINT) thrown.
-// Throws InputError for an unsafe cache directory or something other than a file at the entry's
-// manifest (both before compiling), CompilerFailed when the compiler fails, std::runtime_error when
-// the cache cannot be written.
-void compile_into_entry(const std::string& source_text, const std::string& compiler,
-                        const std::vector<std::string>& options, const CacheEntry& entry, const std::string& what,
-                        const std::atomic<bool>* stop = nullptr);
+// One translation unit of a compiled model: its source text and the compiler options it needs.
+struct CompileUnit {
+  std::string source;
+  std::vector<std::string> options;  // e.g. {"-O2"}
+};
+
+// Compiles every unit with `compiler` (one process each, all at once, `-c`) and links them into a
+// fresh object of the entry (unique temporary names, then renamed into place with its manifest),
+// after removing the temporaries that dead processes left behind. Each compiler runs in a process
+// group of its own; once `stop` is set every group is killed, the temporaries removed and
+// lrchain::Interrupted (SIGINT) thrown. Throws InputError for an unsafe cache directory or something
+// other than a file at the entry's manifest (both before compiling), CompilerFailed when the
+// compiler fails, std::runtime_error when the cache cannot be written.
+void compile_into_entry(const std::vector<CompileUnit>& units, const std::string& compiler, const CacheEntry& entry,
+                        const std::string& what, const std::atomic<bool>* stop = nullptr);
 
 // Removes `.model-PID-*` temporaries of `directory` whose process PID no longer runs; returns how many.
 int remove_stale_temporaries(const std::filesystem::path& directory);

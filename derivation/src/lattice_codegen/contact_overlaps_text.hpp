@@ -1,6 +1,6 @@
 #pragma once
 // The one-sided contacts of a lattice form as generated C++ (struct lrchain_lattice_contacts of
-// sim/include/lrchain/sim/model_lattice_abi.h): each contact bond's overlap
+// lib/include/lrchain/compiled_model_abi.h): each contact bond's overlap
 // s_n = offset + sum_k coefficient_k q[variable_k][n + shift_k] in the form's variables, the same
 // `contact(argument)` whose sign the generated accelerations clamp.
 #include <ginac/ginac.h>

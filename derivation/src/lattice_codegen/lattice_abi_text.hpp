@@ -1,6 +1,6 @@
 #pragma once
 // Fixed text of every generated lattice source: the kernel table (the text of
-// sim/include/lrchain/sim/model_lattice_abi.h, embedded at configure time), the power helpers and
+// lib/include/lrchain/compiled_model_abi.h, embedded at configure time), the power helpers and
 // the padded workspace.
 #include <string>
 

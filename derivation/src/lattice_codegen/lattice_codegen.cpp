@@ -689,7 +689,7 @@ class Generator {
     for (const auto& p : m_.parameters) os << "\"" << p.name << "\", ";
     os << "nullptr};\n\n"
        << "extern \"C\" const struct lrchain_lattice_kernels* lrchain_lattice_" << m_.name << "(void) {\n"
-       << "  static const lrchain_lattice_kernels table = {LRCHAIN_LATTICE_ABI_VERSION, \"" << m_.name << "\", " << fields_ << ", "
+       << "  static const lrchain_lattice_kernels table = {LRCHAIN_COMPILED_MODEL_ABI_VERSION, \"" << m_.name << "\", " << fields_ << ", "
        << m_.parameters.size() << ", kParameterNames, masses, workspace_size,\n"
        << "      displacement_accelerations, displacement_jacobian_action,\n"
        << "      " << (invariant ? "strain_accelerations, strain_jacobian_action" : "nullptr, nullptr") << ",\n"

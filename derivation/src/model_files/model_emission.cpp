@@ -432,18 +432,26 @@ std::string model_evaluator_functions(const ModelDerivation& m, const Symbols& s
            emit_function(dispersion_extended_function(m, s, "long double")) + "\n" + emit_function(extended) + "\n" +
            emit_function(double_nls_function(m, s)) + "\n" + emit_function(harmonics_function(m, s, "long double", false));
   }
+  const EvaluatorParts parts = model_evaluator_parts(m, s, arithmetic);
+  return parts.common + parts.nls + "\n" + parts.harmonics;
+}
+
+EvaluatorParts model_evaluator_parts(const ModelDerivation& m, const Symbols& s, const std::string& arithmetic) {
   const double cancellation = evaluator_cancellation(m, s);
   const std::string real_type = arithmetic.empty() ? evaluator_precision(cancellation) : arithmetic;
-  std::string text = emit_function(intermediates_function(m)) + "\n" + emit_function(dispersion_function(m, s)) + "\n";
+  EvaluatorParts parts;
+  parts.common = emit_function(intermediates_function(m)) + "\n" + emit_function(dispersion_function(m, s)) + "\n";
   if (real_type != "double")
-    text += emit_function(intermediates_extended_function(m)) + "\n" +
-            emit_function(dispersion_extended_function(m, s, real_type)) + "\n";
+    parts.common += emit_function(intermediates_extended_function(m)) + "\n" +
+                    emit_function(dispersion_extended_function(m, s, real_type)) + "\n";
   EmittedFunction nls = nls_function(m, s, real_type);
   char measured[160];
   std::snprintf(measured, sizeof measured, " In %s: the terms of its factors cancel by up to %.2g (measured at derivation).",
                 real_type.c_str(), cancellation);
   nls.comment += measured;
-  return text + emit_function(nls) + "\n" + emit_function(harmonics_function(m, s, real_type, true));
+  parts.nls = emit_function(nls);
+  parts.harmonics = emit_function(harmonics_function(m, s, real_type, true));
+  return parts;
 }
 
 std::string model_definition_function(const ModelDerivation& m) {

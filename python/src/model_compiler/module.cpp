@@ -42,56 +42,58 @@ const lrchain::ModelFileContent& model_file(const py::object& file) {
   throw py::error_already_set();
 }
 
-// The compiled definition of the model file `file` (as the loader read it) as a capsule (model_capsule.hpp). A bad model
-// file raises lrchain.InputError (a ValueError); a missing or failing compiler RuntimeError. Without
-// a compiler (the GiNaC fallback) it warns (RuntimeWarning) as the CLI does on stderr.
-// The GIL is released only around the C++ compile path, which touches no Python object and holds
-// the process-wide lock of the symbolic engine itself (model_compiler.hpp).
-// `stop` (a capsule of the caller's SIGINT flag) is polled while deriving and compiling: KeyboardInterrupt.
-py::capsule compile(const py::object& file, const py::object& stop) {
+template <class Handle>
+py::capsule handle_capsule(Handle handle, const char* name) {
+  return py::capsule(new Handle(std::move(handle)), name, [](PyObject* capsule) {
+    delete static_cast<Handle*>(PyCapsule_GetPointer(capsule, PyCapsule_GetName(capsule)));
+  });
+}
+
+// The model file `file` (as the loader read it) compiled once into the per-user cache (or found
+// there) and loaded: (definition capsule, lattice kernels capsule or None, from_cache, library)
+// (model_capsule.hpp). A bad model file raises lrchain.InputError (a ValueError); a missing or
+// failing compiler RuntimeError. Without a compiler (the GiNaC fallback, no kernels) it warns
+// (RuntimeWarning) as the CLI does on stderr. The GIL is released only around the C++ compile path,
+// which touches no Python object and holds the process-wide lock of the symbolic engine itself
+// (model_compiler.hpp). `stop` (a capsule of the caller's SIGINT flag) is polled while deriving and
+// compiling: KeyboardInterrupt.
+py::tuple compile(const py::object& file, const py::object& stop) {
   const lrchain::ModelFileContent& content = model_file(file);
-  lrchain::python::ModelDefinitionHandle definition;
+  lrchain::CompiledModel compiled;
   lrchain::CompiledModelInfo info;
   const std::atomic<bool>* flag = stop_flag(stop);
   try {
     py::gil_scoped_release release;  // deriving and compiling takes seconds
-    definition = lrchain::compile_model_file(content, &info, flag);
+    compiled = lrchain::compile_model(content, &info, flag);
   } catch (const lrchain::Interrupted& e) {
     raise_interrupted(e);
   } catch (const lrchain::InputError& e) {
     raise_input_error(e);
   }
   if (!info.fallback_reason.empty() &&
-      PyErr_WarnEx(PyExc_RuntimeWarning, lrchain::model_fallback_warning(definition->name, info).c_str(), 2) != 0)
+      PyErr_WarnEx(PyExc_RuntimeWarning, lrchain::model_fallback_warning(compiled.definition->name, info).c_str(), 2) != 0)
     throw py::error_already_set();
-  return py::capsule(new lrchain::python::ModelDefinitionHandle(std::move(definition)),
-                     lrchain::python::kModelCapsuleName, [](PyObject* capsule) {
-                       delete static_cast<lrchain::python::ModelDefinitionHandle*>(
-                           PyCapsule_GetPointer(capsule, lrchain::python::kModelCapsuleName));
-                     });
+  const py::object kernels = compiled.kernels
+                                 ? py::object(handle_capsule(lrchain::python::LatticeKernelsHandle(compiled.kernels),
+                                                             lrchain::python::kLatticeCapsuleName))
+                                 : py::object(py::none());
+  return py::make_tuple(handle_capsule(lrchain::python::ModelDefinitionHandle(compiled.definition), lrchain::python::kModelCapsuleName),
+                        kernels, info.from_cache, info.library.string());
 }
 
-// The lattice code of the model file `file` (as the loader read it) compiled into the per-user cache and loaded:
-// (capsule, from_cache, library). Raises lrchain.InputError for a bad file or a missing compiler.
-py::tuple compile_lattice(const py::object& file, const py::object& stop) {
+// Raises the lrchain.InputError that says why the model file has no lattice kernels (no compiler,
+// or force laws a lattice cannot run).
+void refuse_lattice(const py::object& file, const py::object& stop) {
   const lrchain::ModelFileContent& content = model_file(file);
-  lrchain::python::LatticeKernelsHandle kernels;
-  lrchain::CompiledModelInfo info;
   const std::atomic<bool>* flag = stop_flag(stop);
   try {
-    py::gil_scoped_release release;  // deriving and compiling takes seconds
-    kernels = lrchain::compile_model_lattice(content, &info, flag);
+    py::gil_scoped_release release;
+    lrchain::compile_model_lattice(content, nullptr, flag);
   } catch (const lrchain::Interrupted& e) {
     raise_interrupted(e);
   } catch (const lrchain::InputError& e) {
     raise_input_error(e);
   }
-  py::capsule capsule(new lrchain::python::LatticeKernelsHandle(std::move(kernels)), lrchain::python::kLatticeCapsuleName,
-                      [](PyObject* c) {
-                        delete static_cast<lrchain::python::LatticeKernelsHandle*>(
-                            PyCapsule_GetPointer(c, lrchain::python::kLatticeCapsuleName));
-                      });
-  return py::make_tuple(capsule, info.from_cache, info.library.string());
 }
 
 // Raises lrchain.InputError when the lattice code of `file` is neither cached nor compilable.
@@ -108,12 +110,11 @@ void check_lattice(const py::object& file, const py::object&) {
 PYBIND11_MODULE(_model_compiler, m) {
   m.doc() = "Run-time compiler of lattice model files for lrchain.load_model (GiNaC, the C++ compiler).";
   m.def("compile", &compile, py::arg("file"), py::arg("stop") = py::none(),
-        "The model file (a capsule of the file lrchain's loader read) derived, compiled into the per-user cache and "
-        "loaded: a capsule for lrchain. "
-        "stop: a capsule of lrchain's SIGINT flag, polled while deriving and compiling.");
-  m.def("compile_lattice", &compile_lattice, py::arg("file"), py::arg("stop") = py::none(),
-        "The lattice code of the model file (a capsule of the file lrchain's loader read) compiled into the "
-        "per-user cache and loaded: (capsule, from_cache, library). stop: as for compile.");
+        "The model file (a capsule of the file lrchain's loader read) derived, compiled into the per-user cache "
+        "(one object: evaluators and lattice kernels) and loaded: (model capsule, kernels capsule or None, "
+        "from_cache, library). stop: a capsule of lrchain's SIGINT flag, polled while deriving and compiling.");
+  m.def("refuse_lattice", &refuse_lattice, py::arg("file"), py::arg("stop") = py::none(),
+        "Raises lrchain.InputError saying why the compiled model file has no lattice kernels.");
   m.def("check_lattice", &check_lattice, py::arg("file"), py::arg("stop") = py::none(),
         "Raises lrchain.InputError when the lattice code of the model file can be neither found in the cache nor "
         "compiled.");

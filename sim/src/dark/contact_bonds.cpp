@@ -32,7 +32,7 @@ void contact_overlaps(const ContactBonds& bonds, Index sites, const double* q, c
   }
 }
 
-// The contact table of the generated kernels (model_lattice_abi.h) evaluated at the parameters.
+// The contact table of the generated kernels (lrchain/compiled_model_abi.h) evaluated at the parameters.
 ContactBonds model_contact_bonds(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
                                  bool strain_form) {
   if (parameters.size() != std::size_t(kernels.parameter_count))

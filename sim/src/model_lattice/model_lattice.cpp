@@ -13,7 +13,7 @@ namespace lrchain::sim {
 ModelLattice::ModelLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
                            bool periodic, LatticeForm form)
     : kernels_(&kernels), parameters_(std::move(parameters)), sites_(sites), periodic_(periodic), form_(form) {
-  if (kernels.abi_version != LRCHAIN_LATTICE_ABI_VERSION)
+  if (kernels.abi_version != LRCHAIN_COMPILED_MODEL_ABI_VERSION)
     throw InvalidParameter("model", std::string(kernels.model_name) + ": lattice kernels of another version");
   if (sites < 2) throw InvalidParameter("sites", "a model lattice needs at least 2 sites");
   if (parameters_.size() != std::size_t(kernels.parameter_count))

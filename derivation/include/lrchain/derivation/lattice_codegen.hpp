@@ -2,7 +2,7 @@
 // Lattice code from a model file: one self-contained C++ translation unit with the exact
 // accelerations of every field (one-sided contact applied), their Jacobian action and the energy
 // density, behind one extern "C" entry point `lrchain_lattice_<name>` returning a table of
-// function pointers (the layout of docs/simulator.md, sim/include/lrchain/sim/model_lattice_abi.h).
+// function pointers (the layout of docs/simulator.md, lib/include/lrchain/compiled_model_abi.h).
 #include <string>
 
 #include "lrchain/derivation/model_file.hpp"

@@ -19,6 +19,14 @@ namespace lrchain::derivation {
 // where h, h_tilde or a non-resonance value cancels by more than 1e4 go to a long double nls_extended.
 std::string model_evaluator_functions(const ModelDerivation& m, const Symbols& s, const std::string& arithmetic = "");
 
+// model_evaluator_functions (not "double") in three parts, so that nls and harmonics, the large
+// ones, can be compiled as translation units of their own: `common` (intermediates, dispersion and
+// their extended forms, which both call), `nls`, `harmonics`. The text is common + nls + "\n" + harmonics.
+struct EvaluatorParts {
+  std::string common, nls, harmonics;
+};
+EvaluatorParts model_evaluator_parts(const ModelDerivation& m, const Symbols& s, const std::string& arithmetic = "");
+
 // The same four as expressions (what model_evaluator_functions prints, in double), in that order: inputs and
 // outputs are named p[i], q[i], D1, sigma, omega, w[k], out[k].
 std::vector<EmittedFunction> model_evaluator_definitions(const ModelDerivation& m, const Symbols& s);

@@ -9,11 +9,12 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 
 #include "lrchain/model.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 
 namespace lrchain {
 
@@ -23,50 +24,61 @@ struct CompiledModelInfo {
   std::string fallback_reason;    // non-empty: no compiler, evaluated through GiNaC in double precision
 };
 
-// The model of `path` with compiled evaluators; when the compiler is not installed, with the derived
-// expressions evaluated by GiNaC in double precision instead (info->fallback_reason says so).
-// Throws InputError for a bad model file (a failing derivation check included; the file read by
-// read_model_file_bytes) or an unsafe cache directory, and std::runtime_error when the compiler fails
-// (InputError naming LRCHAIN_MODEL_CXX when that variable chose it). `stop` (e.g. a SIGINT flag) is
-// polled between the derivation's steps and while the compiler runs (its whole process group is
-// killed): then lrchain::Interrupted (SIGINT) is thrown and nothing is left in the cache.
+// A model file compiled at run time (lrchain/compiled_model_abi.h): one shared object, one cache
+// entry, holding its NLS evaluators and its lattice kernels.
+struct CompiledModel {
+  std::shared_ptr<const ModelDefinition> definition;
+  // Null when the model has none: the GiNaC fallback (no compiler), or force laws a lattice cannot
+  // run (compile_model_lattice says why). Keeps the library loaded.
+  std::shared_ptr<const lrchain_lattice_kernels> kernels;
+};
+
+// Called with each step of a compile that is not found in the cache (deriving, emitting, compiling).
+using CompileProgress = std::function<void(const std::string& step)>;
+
+// The model of the file the model loader read and hashed (read_model_file; not read again): found
+// in the per-user cache, or derived, emitted as two translation units (evaluators, lattice kernels)
+// compiled at once and linked into one object in the cache, and loaded. When the compiler is not
+// installed, the derived expressions are evaluated by GiNaC in double precision instead and there
+// are no lattice kernels (info->fallback_reason says so).
+// Throws InputError for a bad model file (a failing derivation check included) or an unsafe cache
+// directory, and std::runtime_error when the compiler fails (InputError naming LRCHAIN_MODEL_CXX
+// when that variable chose it). `stop` (e.g. a SIGINT flag) is polled between the derivation's
+// steps and while the compiler runs (its whole process group is killed): then lrchain::Interrupted
+// (SIGINT) is thrown and nothing is left in the cache.
+CompiledModel compile_model(const ModelFileContent& content, CompiledModelInfo* info = nullptr,
+                            const std::atomic<bool>* stop = nullptr, const CompileProgress& progress = {});
+
+// compile_model(...).definition of the file at `path`, or of a file the loader read.
 std::shared_ptr<const ModelDefinition> compile_model_file(const std::filesystem::path& path,
                                                           CompiledModelInfo* info = nullptr,
                                                           const std::atomic<bool>* stop = nullptr);
-// The same of a file the model loader read and hashed already (read_model_file): not read again.
 std::shared_ptr<const ModelDefinition> compile_model_file(const ModelFileContent& content,
                                                           CompiledModelInfo* info = nullptr,
                                                           const std::atomic<bool>* stop = nullptr);
 
-// The lattice kernels (sim/include/lrchain/sim/model_lattice_abi.h) of the model file `path`, emitted by
-// the lattice code generator and compiled like the evaluators: same cache, key rules (file bytes,
-// compiler, lrchain version) and compiler, loaded with dlopen; the pointer keeps the library loaded.
-// Checks the table's abi_version and model name. Throws InputError for a bad model file or when the
-// compiler is not installed (no slow fallback for lattice runs), std::runtime_error when it fails.
+// compile_model(...).kernels, never null: InputError when the compiler is not installed (no slow
+// fallback for lattice runs) or the force laws cannot be run as a lattice.
 std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const std::filesystem::path& path,
                                                                      CompiledModelInfo* info = nullptr,
                                                                      const std::atomic<bool>* stop = nullptr);
-// The same of a file the model loader read and hashed already (read_model_file): not read again.
 std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const ModelFileContent& content,
                                                                      CompiledModelInfo* info = nullptr,
                                                                      const std::atomic<bool>* stop = nullptr);
 
-// Throws the InputError of compile_model_lattice when the lattice code of `path` is not cached and
-// the compiler is not installed: lattice runs call it before anything else.
+// Throws the InputError of compile_model_lattice when the model of `path` is not cached and the
+// compiler is not installed: lattice runs call it before anything else.
 void check_lattice_compiler(const std::filesystem::path& path);
 void check_lattice_compiler(const ModelFileContent& content);
 
-// Version of the emitted evaluator code (its functions and their outputs): part of the cache key,
-// so a cached shared object of an older emitter is never loaded. "evaluators 4": harmonics() and the
-// shared extended-precision prologue (model_evaluator_support.hpp).
-inline constexpr const char* kEvaluatorCode = "evaluators 4";
-
-// Kind of the cached lattice code: "lattice V" with V the kernel table's LRCHAIN_LATTICE_ABI_VERSION,
-// so that a library of an older table is never loaded (the file is compiled again).
-std::string lattice_code_kind();
+// Kind of the cached code, part of the cache key: "compiled model V" with V the
+// LRCHAIN_COMPILED_MODEL_ABI_VERSION of lrchain/compiled_model_abi.h (the emitted evaluators'
+// functions and outputs and the kernel table), so an object of an older emitter or ABI (the old
+// kinds "evaluators 4" and "lattice 3" included) is never loaded.
+std::string compiled_model_code_kind();
 
 // The cache key of a model file's bytes compiled by `compiler` (its path and version line) for
-// lrchain `version` into `kind` of code (kEvaluatorCode, or lattice_code_kind()): the SHA-256 (64
+// lrchain `version` into `kind` of code (compiled_model_code_kind()): the SHA-256 (64
 // hex digits) of the four as length-prefixed fields.
 std::string model_cache_key(const std::string& bytes, const std::string& compiler, const std::string& version,
                             const std::string& kind);

@@ -27,7 +27,7 @@
 #include "lrchain/sim/bright/linear_bands.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
 #include "lrchain/sim/dark/shooting_problem.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 
 namespace lrchain::jobs::bright_breather {
 

@@ -23,7 +23,7 @@
 #include "lrchain/sim/dark/measures.hpp"
 #include "lrchain/sim/dark/perturbation.hpp"
 #include "lrchain/sim/dark/resonant_chain_shooting.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 
 namespace lrchain::jobs::dark {
 

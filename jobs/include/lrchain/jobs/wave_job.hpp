@@ -16,7 +16,7 @@
 #include "lrchain/coefficients.hpp"
 #include "lrchain/jobs/option_schema.hpp"
 #include "lrchain/model.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 #include "lrchain/sim/wave/travelling_wave.hpp"
 #include "lrchain/sim/wave/wave_fate.hpp"

@@ -25,7 +25,7 @@
 
 #include "lrchain/model.hpp"
 #include "lrchain/sim/integrator_options.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 #include "lrchain/sim/run_record.hpp"
 

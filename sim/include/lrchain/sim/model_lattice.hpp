@@ -1,5 +1,5 @@
 #pragma once
-// A lattice of any model file, run through its generated kernels (model_lattice_abi.h): periodic
+// A lattice of any model file, run through its generated kernels (lrchain/compiled_model_abi.h): periodic
 // or fixed ends, displacement form or (translation-invariant models) strain form, with the
 // first-order RHS for Boost.Odeint, the accelerations for the symplectic steppers, the Jacobian
 // action for variational equations and the energy density. Nothing allocates after construction.
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "lrchain/index.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 #include "lrchain/sim/state.hpp"
 
 namespace lrchain::sim {
@@ -47,7 +47,7 @@ class ModelLattice {
   void jacobian_action(const double* q, const double* dq, double* da) const;
   // Energy density e[n] (sites() entries) at positions q and velocities v; InvalidParameter when
   // the model's forces have no potential. Strain form with open ends: the conserved energy of the
-  // free chain of beads -1..n-1 (model_lattice_abi.h) in its centre-of-mass frame (bead -1's kinetic
+  // free chain of beads -1..n-1 (lrchain/compiled_model_abi.h) in its centre-of-mass frame (bead -1's kinetic
   // term in e[0]); periodic strain rings are converted to displacements (u_0 summed from u_0[-1] = 0).
   void energy_density(const double* q, const double* velocity, double* e) const;
   double energy(const State& s) const;

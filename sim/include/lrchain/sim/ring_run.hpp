@@ -14,7 +14,7 @@
 
 #include "lrchain/index.hpp"
 #include "lrchain/model.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 #include "lrchain/sim/run_record.hpp"
 

@@ -2,11 +2,20 @@
 #include <cmath>
 #include <cstring>
 
-/* The table of lattice kernels that generated model code exports (lrchain-lattice-codegen):
- * `const struct lrchain_lattice_kernels* lrchain_lattice_<model>(void)`. Plain C so that a model
- * compiled at run time can be loaded with dlopen. Generated sources repeat this definition.
+/* The ABI of a compiled model (docs/models.md): what the model compiler emits and the runtime loads,
+ * one header both include (the generator embeds its text, derivation/CMakeLists.txt). Plain C so
+ * that a model compiled at run time can be loaded with dlopen.
  *
- * State layout: field-major arrays of `sites` entries per variable. Displacement form: variable f
+ * A model file compiled at run time is ONE shared object (one cache entry) exporting
+ *   const char lrchain_model_metadata[]        the model's description (JSON: parameters, branches)
+ *   const char lrchain_model_file_sha256[]     the SHA-256 of the model file's bytes
+ *   const int lrchain_compiled_model_abi_version  LRCHAIN_COMPILED_MODEL_ABI_VERSION
+ *   lrchain_model_intermediates, _dispersion, _nls, _harmonics  the NLS evaluators (the
+ *       lrchain_model_*_function types below; lrchain/model.hpp's ModelEvaluators)
+ *   const struct lrchain_lattice_kernels* lrchain_lattice_<model>(void)  the lattice kernels.
+ * Shipped models compile the same kernel table into lrchain_sim and their evaluators into lrchain.
+ *
+ * Lattice kernels. State layout: field-major arrays of `sites` entries per variable. Displacement form: variable f
  * is field f's displacement u_f[n]. Strain form (translation-invariant models): variable 0 is
  * r[n] = u_0[n] - u_0[n-1], variable f >= 1 is w_f[n] = u_f[n] - u_0[n].
  * Ends: periodic != 0 wraps the sites. Otherwise, displacement form: every variable is 0 outside
@@ -17,10 +26,17 @@
  * form's free chain in displacements measured from bead u_0[-1] (whose kinetic energy is the
  * caller's), with the same bond instances dropped.
  * `work` holds workspace_size(sites) doubles; nothing allocates. */
-#ifndef LRCHAIN_MODEL_LATTICE_ABI_H
-#define LRCHAIN_MODEL_LATTICE_ABI_H
+#ifndef LRCHAIN_COMPILED_MODEL_ABI_H
+#define LRCHAIN_COMPILED_MODEL_ABI_H
 
-#define LRCHAIN_LATTICE_ABI_VERSION 3
+/* 4: evaluators and lattice kernels in one object (before: two objects, lattice ABI 3). */
+#define LRCHAIN_COMPILED_MODEL_ABI_VERSION 4
+
+/* The NLS evaluators (q: the intermediates of the parameters p; D1 = 4 sin^2(theta/2), sigma = sin theta). */
+typedef void (*lrchain_model_intermediates_function)(const double* p, double* q);
+typedef void (*lrchain_model_dispersion_function)(double D1, double sigma, const double* q, double* w);
+typedef void (*lrchain_model_nls_function)(double D1, double sigma, double omega, const double* q, double* out);
+typedef void (*lrchain_model_harmonics_function)(double D1, double sigma, double omega, const double* q, double* out);
 
 #define LRCHAIN_LATTICE_ENDS_FIXED 0
 #define LRCHAIN_LATTICE_ENDS_PERIODIC 1
@@ -374,7 +390,7 @@ long workspace_size(long n) { return Workspace::size(n); }
 static const char* const kParameterNames[] = {"alpha", "delta0", "w0", nullptr};
 
 extern "C" const struct lrchain_lattice_kernels* lrchain_lattice_newtons_cradle(void) {
-  static const lrchain_lattice_kernels table = {LRCHAIN_LATTICE_ABI_VERSION, "newtons_cradle", 1, 3, kParameterNames, masses, workspace_size,
+  static const lrchain_lattice_kernels table = {LRCHAIN_COMPILED_MODEL_ABI_VERSION, "newtons_cradle", 1, 3, kParameterNames, masses, workspace_size,
       displacement_accelerations, displacement_jacobian_action,
       nullptr, nullptr,
       energy_density, &displacement_contacts, nullptr};

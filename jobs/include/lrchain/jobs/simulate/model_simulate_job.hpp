@@ -13,7 +13,7 @@
 #include "lrchain/jobs/simulate/simulate_job.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/model_bright_run.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 #include "lrchain/sim/ring_run.hpp"
 
 namespace lrchain::jobs {

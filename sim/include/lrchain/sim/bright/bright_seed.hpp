@@ -18,7 +18,7 @@
 #include "lrchain/index.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/model_bright_run.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 
 namespace lrchain::sim::bright {
 

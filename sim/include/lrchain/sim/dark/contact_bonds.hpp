@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "lrchain/index.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 
 namespace lrchain::sim::dark {
 

@@ -23,7 +23,7 @@
 #include "lrchain/index.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
 #include "lrchain/model.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 
 namespace lrchain::sim::dark {
 

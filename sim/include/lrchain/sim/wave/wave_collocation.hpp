@@ -11,7 +11,7 @@
 
 #include "lrchain/index.hpp"
 #include "lrchain/sim/model_lattice.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 
 namespace lrchain::sim::wave {
 

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "lrchain/index.hpp"
-#include "lrchain/sim/model_lattice_abi.h"
+#include "lrchain/compiled_model_abi.h"
 #include "lrchain/sim/wave/travelling_wave.hpp"
 
 namespace lrchain::sim::wave {
