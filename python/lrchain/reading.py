@@ -202,8 +202,11 @@ def _model_branch(f, cls):
     points = _branch_points(f)
     changes = f["contact_changes_per_period"][()].tolist() if "contact_changes_per_period" in f else \
         [None] * len(points["omega_b"])
+    extra = {}
+    if "parameter_values" in f:  # the continued parameter (files of earlier versions: omega_b, not stored)
+        extra = dict(parameter=_text(f.attrs["parameter"]), parameter_values=f["parameter_values"][()].tolist())
     return cls(z=f["z"][()], n=f["n"][()], variables=tuple(_string_list(f.attrs["variables"])),
-               contact_changes_per_period=changes, **points, **_edge(f))
+               contact_changes_per_period=changes, **points, **_edge(f), **extra)
 
 
 def _evolution_series(f):

@@ -15,7 +15,7 @@
 
 using namespace lrchain::test;
 namespace fs = std::filesystem;
-namespace sim = lrchain::sim;
+namespace jobs = lrchain::jobs;
 
 namespace {
 

@@ -127,7 +127,7 @@ TEST_CASE("the lattice-run estimate bounds what a bright run stores and writes")
 
   const fs::path dir = fs::temp_directory_path() / ("lrchain-estimate-" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  write_record(dir, r.record);
+  jobs::write_record(dir, r.record);
   double written = 0;
   for (const auto& f : fs::directory_iterator(dir)) written += double(fs::file_size(f.path()));
   fs::remove_all(dir);

@@ -24,6 +24,22 @@ using namespace lrchain::sim::dark;
 
 namespace {
 
+// The top of the highest linear band (theta = 0 or pi) of the job's lattice.
+double highest_band_frequency(const DarkConfig& c) {
+  double top = 0;
+  for (const double theta : {0.0, std::numbers::pi}) {
+    if (!c.model) {
+      top = std::max(top, dispersion_omega(c.params, Branch::optical, theta));
+      continue;
+    }
+    for (Index b = 0; b < Index(c.model->definition().branch_names.size()); ++b) try {
+        top = std::max(top, coefficients_from_evaluators(*c.model, b, theta).omega);
+      } catch (const InvalidParameter&) {  // no real frequency there (an acoustic branch at theta = 0)
+      }
+  }
+  return top;
+}
+
 // The resonant chain: parameters, edge and omega_b (eq:xy_app needs (omega - omega_b) > 0), window.
 void validate_chain(const DarkConfig& c) {
   validate(c.params);
@@ -132,6 +148,9 @@ void validate(const DarkConfig& c) {
     checked_finite(*c.to, "to");
     if (!(*c.to > 0 && *c.to != c.omega_b))
       throw InvalidParameter("to", "must be a frequency > 0 other than omega-b (where the continuation in omega_b ends)");
+    const double top = highest_band_frequency(c);
+    if (!(*c.to <= 2 * top))
+      throw InvalidParameter("to", fmt::format("must be at most twice the top of the highest band, {:.10g}", 2 * top));
   }
   if (c.sites) config::checked_option(double(*c.sites), config::dark_sites, "sites");
   if (!(c.tolerance > 0 && c.tolerance < 1)) throw InvalidParameter("tolerance", "must be in (0, 1)");

@@ -76,6 +76,8 @@ ModelDarkBranchRecord model_dark_branch_record(const DarkResult& r, const json& 
     if (p.contact_changes_per_period) b.contact_changes_per_period.push_back(*p.contact_changes_per_period);
   }
   if (b.contact_changes_per_period.size() != r.branch.points.size()) b.contact_changes_per_period.clear();
+  b.parameter = r.config.parameter;
+  for (const auto& p : r.branch.points) b.parameter_values.push_back(p.parameter);
   return b;
 }
 
@@ -102,6 +104,8 @@ void write_model_dark_branch_hdf5(const std::filesystem::path& path, const Model
     const std::vector<std::int64_t> counts(b.contact_changes_per_period.begin(), b.contact_changes_per_period.end());
     file.write_dataset("/contact_changes_per_period", Hdf5Element::int64, counts.data(), {points});
   }
+  file.write_attribute("/", "parameter", b.parameter);
+  file.write_dataset("/parameter_values", Hdf5Element::float64, b.parameter_values.data(), {b.parameter_values.size()});
   jobs::dark::write_branch_parts(file, b.points, second_strain(b.edge));
   file.commit();
 }

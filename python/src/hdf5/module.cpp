@@ -226,6 +226,11 @@ void write_model_dark_branch(const std::string& path, const py::dict& d) {
   for (const auto& count : d["contact_changes_per_period"].cast<py::list>())
     if (!count.is_none()) r.contact_changes_per_period.push_back(count.cast<Index>());
   if (r.contact_changes_per_period.size() != r.points.omega_b.size()) r.contact_changes_per_period.clear();
+  if (d.contains("parameter") && !d["parameter"].is_none()) r.parameter = d["parameter"].cast<std::string>();
+  if (d.contains("parameter_values") && !d["parameter_values"].is_none())
+    r.parameter_values = vector_of<double>(d["parameter_values"]);
+  else
+    r.parameter_values = r.points.omega_b;
   jobs::dark::write_model_dark_branch_hdf5(path, r);
 }
 

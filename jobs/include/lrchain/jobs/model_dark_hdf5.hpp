@@ -53,6 +53,8 @@ struct ModelDarkBranchRecord {
   jobs::dark::DarkBranchRecord points;  // per point: omega_b, ..., measures, floquet (its x, y, params unused)
   std::vector<double> z;               // points x fields x sites
   std::vector<Index> contact_changes_per_period;  // per point; empty for a smooth model
+  std::string parameter = "omega_b";   // the continued parameter (root attribute "parameter")
+  std::vector<double> parameter_values;  // its value per point (dataset "parameter_values")
 };
 
 // The records of a model-file job's result `r` (its edge; solve/floquet; branch); `model` is the
