@@ -35,7 +35,9 @@ def google(build: Path, program: str, args: list) -> dict:
     exe = build / "bench" / program
     if not exe.is_file():
         return {}
-    done = subprocess.run([str(exe), "--benchmark_format=json", *args], cwd=build.parent, capture_output=True,
+    # From bench/: a benchmark compiled through ccache with base_dir set names its own source file
+    # relative to there (__FILE__ = ../../bench/...), and finds examples/ from it.
+    done = subprocess.run([str(exe), "--benchmark_format=json", *args], cwd=exe.parent, capture_output=True,
                           text=True, check=True)
     out = {}
     for b in json.loads(done.stdout)["benchmarks"]:
