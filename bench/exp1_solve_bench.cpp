@@ -3,7 +3,7 @@
 // solve_ivp DOP853 rtol 1e-10 with a NumPy RHS: 2.6-3.9 s). Two numbers per stepper:
 //   Exp1Integrate  lattice integration only, observed at the same times with an empty observer
 //                  (what the SciPy timing measures);
-//   Exp1Run        run_bright as the CLI runs it: E_x, E_y, energy, e_n, X(t) at every sample.
+//   Exp1Run        run_resonant_chain_bright as the CLI runs it: E_x, E_y, energy, e_n, X(t) at every sample.
 // Counters: RHS (force) evaluations and ns per site per evaluation (integration cost / (evals*sites)).
 #include <benchmark/benchmark.h>
 
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "lrchain/ansatz/bright_breather.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
 #include "lrchain/sim/integrator.hpp"
@@ -85,7 +85,7 @@ static void BM_Exp1Run(benchmark::State& st) {
   c.integrator = with_stepper(c.integrator, int(st.range(0)));
   BrightRunSummary s;
   for (auto _ : st) {
-    s = run_bright(c).summary;
+    s = run_resonant_chain_bright(c).summary;
     benchmark::DoNotOptimize(s.max_Ex);
   }
   st.SetLabel(stepper_label(int(st.range(0))));

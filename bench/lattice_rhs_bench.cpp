@@ -125,7 +125,7 @@ static void BM_PackedSqrtPerBondFloor(benchmark::State& st) {
 BENCHMARK(BM_PackedSqrtPerBondFloor)->Arg(1001)->Arg(4001);
 
 // Times the generated lattice's accelerations at state `s`, reported per site of `n`.
-static void time_generated_rhs(benchmark::State& st, const ModelLattice& lattice, const State& s, std::size_t n) {
+static void time_generated_rhs(benchmark::State& st, const CompiledLattice& lattice, const State& s, std::size_t n) {
   State ds(s.size());
   for (auto _ : st) {
     lattice(s, ds, 0.0);
@@ -155,7 +155,7 @@ static void BM_ModelRHS(benchmark::State& st) {
   }
   std::vector<double> parameters;
   for (int i = 0; i < k.parameter_count; ++i) parameters.push_back(kDefaultParameters.at(k.parameter_names[i]));
-  ModelLattice lattice(k, parameters, n, true, form);
+  CompiledLattice lattice(k, parameters, n, true, form);
   State s = random_state(n);
   s.resize(2 * lattice.positions());
   st.SetLabel(name + (form == LatticeForm::strain ? " (strain)" : " (displacement)"));
@@ -175,7 +175,7 @@ static void BM_ModelFreeEndsStrainRHS(benchmark::State& st) {
   }
   std::vector<double> parameters;
   for (int i = 0; i < k.parameter_count; ++i) parameters.push_back(kDefaultParameters.at(k.parameter_names[i]));
-  ModelLattice lattice(k, parameters, n, false, LatticeForm::strain);
+  CompiledLattice lattice(k, parameters, n, false, LatticeForm::strain);
   State s = random_state(n);
   s.resize(2 * lattice.positions());
   st.SetLabel(name + " (strain, free ends)");
@@ -188,7 +188,7 @@ BENCHMARK(BM_ModelFreeEndsStrainRHS)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6}, {1001,
 static void BM_GeneratedResonantStrainRHS(benchmark::State& st) {
   const std::size_t n = std::size_t(st.range(0));
   const Params p;
-  ModelLattice lattice(*shipped_lattice_kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, false,
+  CompiledLattice lattice(*shipped_lattice_kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, false,
                        LatticeForm::strain);
   time_generated_rhs(st, lattice, random_state(n), n);
 }
@@ -199,7 +199,7 @@ BENCHMARK(BM_GeneratedResonantStrainRHS)->Arg(1001)->Arg(4001);
 static void BM_GeneratedResonantDisplacementRHS(benchmark::State& st) {
   const std::size_t n = std::size_t(st.range(0));
   const Params p;
-  ModelLattice lattice(*shipped_lattice_kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, false,
+  CompiledLattice lattice(*shipped_lattice_kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, false,
                        LatticeForm::displacement);
   time_generated_rhs(st, lattice, random_state(n), n);
 }

@@ -1,5 +1,5 @@
 // `lrchain simulate bright --model FILE ...` and `simulate --config` with `model = "FILE"` (bright or ring): the NLS
-// bright breather of any model file on its generated lattice (sim/model_bright_run.hpp).
+// bright breather of any model file on its generated lattice (sim/bright_run.hpp).
 #include <chrono>
 #include <cstdio>
 #include <filesystem>

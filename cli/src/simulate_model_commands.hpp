@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 
 #include "lrchain/model.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/sim/ring_run.hpp"
 #include "lrchain/errors.hpp"
 #include "model_option.hpp"

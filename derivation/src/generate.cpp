@@ -23,7 +23,7 @@ namespace {
 // One evaluator: inputs D1, sigma, omega, model parameters; outputs in derivation order, each
 // written with the earlier named results (group velocity c, gamma, beta, ...) the way the
 // derivation produces them.
-EmittedFunction evaluator(const DerivedCoefficients& c, const Symbols& s, const LatticeModel& m) {
+EmittedFunction evaluator(const DerivedCoefficients& c, const Symbols& s, const LatticeDescription& m) {
   EmittedFunction f;
   f.name = m.name + "_nls";
   f.comment = "NLS coefficients of the " + m.description + ".";

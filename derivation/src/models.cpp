@@ -4,9 +4,9 @@ namespace lrchain::derivation {
 
 using namespace GiNaC;
 
-symbol LatticeModel::shift(std::size_t f, int m) const { return shifted.at(f).at(m + 3); }
+symbol LatticeDescription::shift(std::size_t f, int m) const { return shifted.at(f).at(m + 3); }
 
-void init_shift_symbols(LatticeModel& model) {
+void init_shift_symbols(LatticeDescription& model) {
   model.shifted.clear();
   for (const auto& name : model.fields) {
     std::vector<symbol> row;
@@ -21,8 +21,8 @@ ex hertz_force_taylor(const Symbols& s, const ex& r) { return s.K2 * r + s.K3 * 
 }  // namespace
 
 // (eq:Hertz): u'' = V'(u_{n+1}-u_n) - V'(u_n-u_{n-1}) - kappa(u_n - v_n),  rho v'' = kappa(u_n - v_n).
-LatticeModel resonant_chain_model(const Symbols& s) {
-  LatticeModel m;
+LatticeDescription resonant_chain_model(const Symbols& s) {
+  LatticeDescription m;
   m.name = "resonant_chain";
   m.description = "locally resonant granular chain (eq:Hertz), fields u (beads) and v (resonators)";
   m.fields = {"u", "v"};
@@ -40,8 +40,8 @@ LatticeModel resonant_chain_model(const Symbols& s) {
 }
 
 // Homogeneous chain (Sec. 2, rho -> 0): u'' = V'(u_{n+1}-u_n) - V'(u_n-u_{n-1}).
-LatticeModel homogeneous_chain_model(const Symbols& s) {
-  LatticeModel m;
+LatticeDescription homogeneous_chain_model(const Symbols& s) {
+  LatticeDescription m;
   m.name = "homogeneous_chain";
   m.description = "homogeneous precompressed granular chain (rho -> 0 limit, Chong13), field u";
   m.fields = {"u"};

@@ -30,7 +30,7 @@ ex monomial_coeff(const ex& e, const std::vector<std::pair<ex, int>>& monomial, 
 
 class Solver {
  public:
-  Solver(const LatticeModel& model, const Symbols& s, const ex& left_scale)
+  Solver(const LatticeDescription& model, const Symbols& s, const ex& left_scale)
       : model_(model), s_(s), jets_(model.fields), n_(model.fields.size()), left_scale_(left_scale) {
     residual_ = build_residual(model, s, jets_);
   }
@@ -113,7 +113,7 @@ class Solver {
       for (auto& e : v) e = e * left_scale_;
     return v;
   }
-  const LatticeModel& model_;
+  const LatticeDescription& model_;
   const Symbols& s_;
   Jets jets_;
   std::size_t n_;
@@ -287,7 +287,7 @@ ex explicit_form(const DerivedCoefficients& d, const Symbols& s, const ex& e) {
   return e.subs(lst{s.gamma == d.gamma}).subs(lst{s.c == d.group_velocity});
 }
 
-DerivedCoefficients derive(const LatticeModel& model, const Symbols& s, const ex& left_kernel_scale) {
+DerivedCoefficients derive(const LatticeDescription& model, const Symbols& s, const ex& left_kernel_scale) {
   return Solver(model, s, left_kernel_scale).run();
 }
 

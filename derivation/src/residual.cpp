@@ -105,7 +105,7 @@ ex reduce_trig(const ex& e, const Symbols& s) {
   return expand(expand(e).subs(pow(s.sigma, 2) == s.D1 - pow(s.D1, 2) / 4, subs_options::algebraic));
 }
 
-Residual build_residual(const LatticeModel& model, const Symbols& s, Jets& jets) {
+Residual build_residual(const LatticeDescription& model, const Symbols& s, Jets& jets) {
   std::map<ex, Series, ex_is_less> fields;
   for (std::size_t f = 0; f < model.fields.size(); ++f)
     for (int m = -3; m <= 3; ++m) fields[model.shift(f, m)] = shifted_field(s, jets, int(f), m);

@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "lrchain/ansatz/dark_breather.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/sim/dark/measures.hpp"
 #include "lrchain/sim/dark/resonant_chain_shooting.hpp"
 
@@ -26,7 +26,7 @@ int main() {
   bright.theta = std::numbers::pi / 2;
   bright.periods = 20;
   bright.snapshot_periods = {};
-  const auto run = lrchain::sim::run_bright(bright);
+  const auto run = lrchain::sim::run_resonant_chain_bright(bright);
   std::printf("bright: max E_x = %.4f over %.0f T_b, energy drift = %.1e\n", run.summary.max_Ex,
               bright.periods, run.summary.max_energy_drift);
 }

@@ -2,7 +2,7 @@
 #include "lrchain/jobs/model_experiment_config.hpp"
 
 #include "located_validation.hpp"
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/strain_sites.hpp"
 #include "toml_reading.hpp"
 

@@ -1,5 +1,5 @@
 // lrchain.simulate: the simulator's bright, drive and modulated runs (Sec. 4.1-4.3, Sec. 5.1) with
-// their records as numpy arrays. The runs are the sim library's run_bright/run_drive/run_modulated,
+// their records as numpy arrays. The runs are the sim library's run_resonant_chain_bright/run_drive/run_modulated,
 // integrated without the GIL; SIGINT stops them at the next step boundary (InterruptGuard).
 #include <nlohmann/json.hpp>
 #include <pybind11/stl.h>
@@ -65,7 +65,7 @@ py::dict bright(const py::dict& options, bool record_strains, const py::object& 
   assign_options(options, t, "bright", renamed_options("bright"));
   if (options.contains("dt")) c.integrator.automatic_dt = false;  // a given step is used, as --dt
   c.N = strain_half_width(sites, bright_sites);
-  return run_python(c, [](const BrightRunConfig& cfg, const RunControl& rc) { return run_bright(cfg, rc); },
+  return run_python(c, [](const BrightRunConfig& cfg, const RunControl& rc) { return run_resonant_chain_bright(cfg, rc); },
                     record_strains, observer, progress);
 }
 

@@ -1,366 +1,285 @@
-// Bright-breather experiment (Sec. 4.1-4.3): lattice from eq:focus_app/eq:focus_ini vs the ansatz.
+// Bright breathers of any model file on its generated lattice (bright_run.hpp).
 #include "lrchain/sim/bright_run.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
-#include <initializer_list>
+#include <csignal>
+#include <complex>
+#include <numbers>
+
 #include <fmt/format.h>
 
-#include "lrchain/ansatz/bright_breather.hpp"
-#include "lrchain/checked_number.hpp"
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/automatic_step.hpp"
-#include "lrchain/sim/displacement_lattice.hpp"
-#include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/energy.hpp"
+#include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/least_squares.hpp"
-#include "observation.hpp"
+#include "lrchain/sim/model_lattice.hpp"
 #include "lrchain/sim/strain_sites.hpp"
-#include "checkpointing.hpp"
-#include "sampling_checks.hpp"
+#include "model_lattice/driven_ends_lattice.hpp"
 
 namespace lrchain::sim {
 
-namespace {
-
-
-// Sample intervals floor(periods / sample_every) of the run (validated: no overflow).
-Index sample_intervals(const BrightRunConfig& c) { return sim::sample_intervals(c.periods, c.sample_every, "periods"); }
-
-}  // namespace
-
-std::vector<double> snapshot_periods_in_run(const BrightRunConfig& c) {
-  return times_inside_run(c.snapshot_periods, default_bright_snapshot_periods(), c.periods);
+// M1, M2, a of the bright breather (eq:focus_app) from the model's coefficients at theta.
+ModelBrightAnsatz::ModelBrightAnsatz(const Model& model, const lrchain_lattice_kernels& kernels, Index branch,
+                                     double theta, std::optional<double> detuning, double n0, bool second_order)
+    : nls_(coefficients_from_evaluators(model, branch, theta)), n0_(n0) {
+  const std::string where = fmt::format("{} at theta = {} on branch {}", model.name(), theta,
+                                        model.definition().branch_names.at(static_cast<std::size_t>(branch)));
+  if (nls_.regime == Regime::singular)
+    throw InvalidParameter("theta", "the NLS coefficients of " + where + " are singular (a resonance); no bright breather");
+  if (nls_.regime != Regime::focusing)
+    throw InvalidParameter("theta", fmt::format("the NLS of {} is not focusing (omega'' h_tilde = {:.6g} >= 0); bright "
+                                                "breathers need omega'' h_tilde < 0 (lrchain regime map --model shows "
+                                                "where)", where, nls_.curvature * nls_.h_tilde));
+  if (!std::isfinite(n0)) throw InvalidParameter("n0", "must be a finite number");
+  const double d = detuning.value_or(std::copysign(1e-4, nls_.h_tilde));
+  if (!(std::isfinite(d) && d * nls_.h_tilde > 0))
+    throw InvalidParameter("detuning", fmt::format("omega_b - omega must be nonzero with the sign of h_tilde = {:.6g}",
+                                                   nls_.h_tilde));
+  mode_ = bloch_mode(model, kernels, branch, theta);
+  omega_b_ = nls_.omega + d;
+  const double mu = nls_.omega - omega_b_;
+  M2_ = std::sqrt(2.0 * (omega_b_ - nls_.omega) / nls_.h_tilde);
+  a_ = std::sqrt(2.0 * mu / nls_.curvature);
+  M1_ = model.definition().mean_flow ? nls_.lambda * std::sqrt(2.0 * nls_.curvature * mu) / std::abs(nls_.h_tilde) : 0.0;
+  uses_second_order_ = second_order;
+  if (second_order) {
+    second_order_ = second_order_terms(model, branch, theta);
+  } else {
+    second_order_.second_harmonic.assign(mode_.kernel.size(), 0.0);
+    second_order_.mean.assign(mode_.kernel.size(), 0.0);
+    second_order_.kernel_gradient.assign(mode_.kernel.size(), 0.0);
+  }
 }
 
-namespace {
+double ModelBrightAnsatz::period() const { return 2.0 * std::numbers::pi / omega_b_; }
 
-// The sizes the run's memory and output grow with.
-LatticeRunSizes run_sizes(const BrightRunConfig& c) {
-  return sampled_run_sizes(2 * double(c.N) + 2, c.periods, c.sample_every, c.spacetime_every,
-                           double(snapshot_periods_in_run(c).size()), c.integrator.stepper, "periods");
+void ModelBrightAnsatz::field(Index f, double n, double t, double& u, double& u_dot) const {
+  const double c = nls_.group_velocity;
+  const double z = a_ * (n - n0_ - c * t);
+  const double e1 = std::exp(-std::abs(z));
+  const double e = e1 * e1;
+  const double th = std::copysign((1.0 - e) / (1.0 + e), z);
+  const double sech = 2.0 * e1 / (1.0 + e);
+  const std::complex<double> phase = std::polar(1.0, n * nls_.theta - omega_b_ * t);
+  const std::complex<double> carrier = mode_.kernel[f] * phase;
+  const std::complex<double> harmonic = second_order_.second_harmonic[f] * phase * phase;
+  const std::complex<double> gradient = second_order_.kernel_gradient[f] * phase;
+  const double A = M2_ * sech;  // the envelope |A|; dA/dn = -a tanh(z) A
+  u = M1_ * th + 2.0 * A * carrier.real() + 2.0 * A * A * harmonic.real() + A * A * second_order_.mean[f] -
+      2.0 * a_ * th * A * gradient.real();
+  // d/dt [sech(z)^k e^{i k phase}] = k sech^k (c a tanh - i omega_b) e^{i k phase};
+  // d/dt [tanh(z) sech(z) e^{i phase}] = sech (c a (tanh^2 - sech^2) - i omega_b tanh) e^{i phase}
+  const std::complex<double> rate(c * a_ * th, -omega_b_), gradient_rate(c * a_ * (th * th - sech * sech), -omega_b_ * th);
+  u_dot = -c * a_ * M1_ * sech * sech + 2.0 * A * (rate * carrier).real() + 4.0 * A * A * (rate * harmonic).real() +
+          2.0 * c * a_ * th * A * A * second_order_.mean[f] - 2.0 * a_ * A * (gradient_rate * gradient).real();
 }
 
-}  // namespace
-
-ResourceEstimate estimate_resources(const BrightRunConfig& c) { return estimate_lattice_run(run_sizes(c)); }
-
-void validate(const BrightRunConfig& c) {
-  validate(c.params);
-  check_half_width(c.N, bright_sites);
-  if (!(c.periods > 0 && std::isfinite(c.periods)))
-    throw InvalidParameter("periods", "must be a finite number > 0 (units of T_b)");
-  validate_sampling({c.periods, "periods", true, c.sample_every, c.spacetime_every, c.checkpoint_every,
-                     snapshot_periods_in_run(c),
-                     (c.checkpoint_at_end && !c.checkpoint_file.empty()) || !c.restart_file.empty(),
-                     "snapshot_periods", {}, [&c](double periods) {
-                       BrightRunConfig longer = c;
-                       longer.periods = periods;
-                       return run_sizes(longer);
-                     }, c.max_memory});
-  if (!(c.theta > 0 && c.theta <= M_PI)) throw InvalidParameter("theta", "the carrier wavenumber must be in (0, pi]");
+void validate(const ModelBrightConfig& c) {
+  if (!(c.theta > 0 && c.theta <= std::numbers::pi)) throw InvalidParameter("theta", "the carrier wavenumber must be in (0, pi]");
+  check_half_width(c.N, model_bright_sites);
+  if (!(c.periods > 0 && c.periods <= 1e6)) throw InvalidParameter("periods", "must be in (0, 1e6] (units of T_b)");
+  if (!(c.sample_every > 0 && c.sample_every <= c.periods && c.periods / c.sample_every <= 1e6))
+    throw InvalidParameter("sample_every", "must be in (0, periods] with at most 1e6 samples");
   if (!(std::isfinite(c.n0) && std::abs(c.n0) <= double(c.N)))
-    throw InvalidParameter("n0", fmt::format("the initial centre must be a site of the lattice, in [-N, N] = [{}, {}] "
-                                             "(sites = 2N + 1 = {})", -c.N, c.N, strain_site_count(c.N)));
-  if (c.detuning) checked_finite(*c.detuning, "detuning");
-  checked_finite(c.error_window_end, "error_window_end");
-  if (c.centre_window < 1) throw InvalidParameter("centre_window", "must be >= 1");
-  validate(c.integrator);
-  // The ansatz checks theta, detuning and n0 and gives T_b: dt may not exceed the run periods * T_b.
-  const BrightBreatherAnsatz ansatz(c.params, c.branch, c.theta, c.detuning, c.n0);
-  const double run_length = c.periods * ansatz.period();
-  validate_step_within_run(c.integrator, run_length);
-  if (!(c.error_window_end <= run_length))
-    throw InvalidParameter("error_window_end", fmt::format("the end of the error window (error_window_end) must be at "
-                                                       "most {:.6g}, the run's time span (<= 0: none)", run_length));
-  if (!(c.trailing.fit_start >= 0 && c.trailing.fit_start <= run_length))
-    throw InvalidParameter("trailing_fit_start", fmt::format("must be in [0, {:.6g}], the run's time span (0: off)",
-                                                             run_length));
-  const LatticeRunSizes sizes = run_sizes(c);  // also checks the sample counts
-  const bool lattice = lattice_dominates(sizes);
-  check_memory(estimate_lattice_run(sizes), c.max_memory, lattice ? "sites" : "periods",
-               lattice ? "lower sites" : "lower periods or raise sample-every and spacetime-every");
+    throw InvalidParameter("n0", fmt::format("the initial centre must be in [-N, N] = [{}, {}] (sites = 2N + 1 = {})", -c.N,
+                                             c.N, strain_site_count(c.N)));
+  if (!(c.steps_per_period == 0 || (c.steps_per_period >= 8 && c.steps_per_period <= 1e4)))
+    throw InvalidParameter("steps_per_period", "must be in [8, 1e4] (0: 24)");
+  if (!(c.dt >= 0 && std::isfinite(c.dt))) throw InvalidParameter("dt", "must be a finite step > 0");
+  if (!(c.tolerance >= 1e-14 && c.tolerance <= 1e-4)) throw InvalidParameter("tolerance", "must be in [1e-14, 1e-4]");
 }
-
 
 namespace {
 
-// The integrator the run uses: with an automatic step (no dt given), srkn11b's step comes from a
-// probe of the energy error over the first 2 T_b; a chain with prescribed (ansatz) ends is not
-// autonomous, so there the default falls back to the adaptive rkf78.
-IntegratorOptions resolved_integrator(const BrightRunConfig& c, const DisplacementLattice& chain,
-                                      const State& initial, double Tb, std::optional<StepChoice>& choice) {
-  IntegratorOptions o = c.integrator;
-  if (!o.automatic_dt || !is_symplectic(o.stepper)) return o;
-  o.automatic_dt = false;
-  if (!chain.autonomous()) {
-    o.stepper = StepperKind::rkf78;
-    return o;
-  }
-  choice = choose_symplectic_step(chain, initial, c.sample_every * Tb, o.stepper, {c.step_energy_error_target, 2 * Tb});
-  o.dt = choice->dt;
-  return o;
+// The fastest linear frequency of the lattice (all branches, theta in (0, pi]): sets the step.
+double largest_linear_frequency(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters) {
+  double largest = 0;
+  for (int k = 1; k <= 16; ++k)
+    for (double omega : branch_frequencies(kernels, parameters, std::numbers::pi * k / 16)) largest = std::max(largest, omega);
+  return largest;
 }
 
 }  // namespace
 
-namespace {
-
-// The workspace's lattice for this run: kept when the parameters, the bead count and the ends are
-// those of the previous run (prescribed ends follow workspace.ansatz), else built anew.
-const DisplacementLattice& workspace_lattice(const BrightRunConfig& c, BrightWorkspace& w, std::size_t beads, Index N) {
-  const Params& p = c.params;
-  const Params& q = w.chain_params;
-  if (w.chain && w.chain_beads == Index(beads) && w.chain_ansatz_ends == c.ansatz_ends && p.alpha == q.alpha &&
-      p.delta0 == q.delta0 && p.kappa == q.kappa && p.rho == q.rho)
-    return *w.chain;
-  const Index first = -N - 1;
-  DisplacementBoundary boundary;
-  if (c.ansatz_ends) {
-    boundary.left.kind = boundary.right.kind = EndKind::prescribed;
-    boundary.left.motion = [&w, first](double t) {
-      double u, v;
-      w.ansatz->displacements(double(first - 1), t, u, v);
-      return u;
-    };
-    boundary.right.motion = [&w, N](double t) {
-      double u, v;
-      w.ansatz->displacements(double(N + 1), t, u, v);
-      return u;
-    };
-  }
-  w.chain.reset();
-  w.chain.emplace(c.params, beads, boundary);
-  w.chain_params = c.params;
-  w.chain_beads = Index(beads);
-  w.chain_ansatz_ends = c.ansatz_ends;
-  return *w.chain;
-}
-
-// Empties the record, keeping the capacity of its series and space-time rows.
-void clear_record(RunRecord& rec) {
-  rec.series.data.clear();
-  rec.fields.resize(1);
-  rec.fields[0].times.clear();
-  rec.fields[0].values.clear();
-  rec.snapshots.clear();
-}
-
-}  // namespace
-
-BrightRunResult run_bright(const BrightRunConfig& c, const RunControl& control) {
-  BrightWorkspace workspace;
-  BrightRunResult result;
-  result.summary = run_bright(c, workspace, control);
-  result.record = std::move(workspace.record);
-  return result;
-}
-
-BrightRunSummary run_bright(const BrightRunConfig& c, BrightWorkspace& w, const RunControl& control) {
+ModelBrightResult run_bright(const Model& model, const lrchain_lattice_kernels& kernels,
+                                   const ModelBrightConfig& c) {
   validate(c);
-  require_checkpoint_store(control, c.checkpoint_file, c.restart_file);
-  const BrightBreatherAnsatz ansatz(c.params, c.branch, c.theta, c.detuning, c.n0);
-  const Index N = c.N;
-  const std::size_t beads = std::size_t(2 * N + 2);  // labels -N-1 .. N
-  const Index first = -N - 1;
-  const std::size_t strains = beads - 1;             // labels -N .. N
+  const ModelBrightAnsatz ansatz(model, kernels, c.branch, c.theta, c.detuning, c.n0, c.second_order);
+  const std::vector<double> parameters = lattice_parameters(model);
+  ModelBrightResult r;
+  r.mean_flow = model.definition().mean_flow;
+  const std::size_t sites = std::size_t(2 * c.N + 1);  // n = -N..N
+  const long first = -c.N;
+  const CompiledLattice chain(kernels, parameters, sites, false, r.mean_flow ? LatticeForm::strain : LatticeForm::displacement);
+  const std::size_t fields = chain.fields(), size = chain.positions();
 
-  w.ansatz = &ansatz;
-  const DisplacementLattice& chain = workspace_lattice(c, w, beads, N);
-  const auto& L = chain.layout();
-
-  State& s = w.state;
-  s.assign(L.size(), 0.0);
-  for (std::size_t i = 0; i < beads; ++i) {
-    const double n = double(first + long(i));
-    ansatz.displacements(n, 0.0, L.primary(s)[i], L.secondary(s)[i]);
-    ansatz.velocities(n, 0.0, L.primary_rate(s)[i], L.secondary_rate(s)[i]);
-  }
-
-  BrightRunSummary S;
-  S.omega = ansatz.omega();
-  S.omega_b = ansatz.omega_b();
-  S.period = ansatz.period();
-  S.group_velocity = ansatz.group_velocity();
-  S.curvature = ansatz.nls().curvature;
-  S.h_tilde = ansatz.nls().h_tilde;
-  S.M1 = ansatz.M1();
-  S.M2 = ansatz.M2();
-  S.inverse_width = ansatz.inverse_width();
-
-  // Observation times: regular samples, plus the snapshot times.
-  const double Tb = ansatz.period(), t_end = c.periods * Tb, h = c.sample_every * Tb;
-  const Index samples = sample_intervals(c);
-  std::vector<double>& times = w.times;
-  times.clear();
-  times.reserve(static_cast<std::size_t>(samples) + 2);
-  for (Index k = 0; k <= samples; ++k) times.push_back(double(k) * h);
-  if (t_end - times.back() > 1e-9 * t_end) times.push_back(t_end);
-  std::vector<double>& snap_times = w.snapshot_times;
-  snap_times.clear();
-  for (double p : snapshot_periods_in_run(c))  // later ones belong to a continuation
-    if (p <= c.periods * (1 + 1e-12)) snap_times.push_back(std::min(p * Tb, t_end));
-  times = merge_observation_times(std::move(times), snap_times, t_end);
-  const double st_every = c.spacetime_every * Tb;
-
-  auto& rec = w.record;
-  clear_record(rec);
-  rec.series.names = {"t", "E_x", "E_y", "energy", "X"};
-  rec.fields[0].quantity = "energy_density";
-  rec.fields[0].first_label = first;
-  rec.fields[0].sites = beads;
-
-  S.integrator = resolved_integrator(c, chain, s, Tb, S.step_choice);
-
-  // What defines the trajectory and its record; a restart must match every item.
-  TrajectoryIdentity identity = base_identity("bright", c.params, S.integrator);
-  identity.add("branch", c.branch == Branch::optical ? "optical" : "acoustic");
-  identity.add("theta", c.theta);
-  identity.add("detuning", c.detuning ? fmt::format("{}", *c.detuning) : std::string("default"));
-  identity.add("n0", c.n0);
-  identity.add("N", N, {"sites", [](long half_width) { return long(strain_site_count(half_width)); }});
-  identity.add("ansatz_ends", c.ansatz_ends ? "true" : "false");
-  identity.add("sample_every", c.sample_every);
-  identity.add("spacetime_every", c.spacetime_every);
-  identity.add("centre_window", long(c.centre_window));
-  identity.add("error_window_end", c.error_window_end);
-  identity.add_state_hash("initial_state", s);
-
-  std::vector<double>&x = w.x, &y = w.y, &xa = w.x_ansatz, &ya = w.y_ansatz, &e = w.energy_density, &scratch = w.scratch;
-  for (std::vector<double>* v : {&x, &y, &xa, &ya}) v->assign(strains, 0.0);
-  e.assign(beads, 0.0);
-  scratch.assign(beads + 1, 0.0);
-  double next_st = 0;
-  bool first_sample = true, skip_first = false;
-  double resume_step = 0;
-  CheckpointSink sink;
-  sink.store = &control.checkpoints;
-  sink.identity = &identity;
-  sink.t_end = t_end;
-  sink.at_end = c.checkpoint_at_end;
-  if (control.checkpoints.load) {
-    const Resumption r = resume_from_checkpoint(
-        control.checkpoints, identity, "bright", beads, t_end, s, rec,
-        {{"x0_inf", &S.x0_inf}, {"y0_inf", &S.y0_inf}, {"energy0", &S.energy0}, {"max_Ex", &S.max_Ex},
-         {"max_Ey", &S.max_Ey}, {"max_Ex_window", &S.max_Ex_window}, {"max_Ey_window", &S.max_Ey_window},
-         {"final_Ex", &S.final_Ex}, {"final_Ey", &S.final_Ey}, {"max_energy_drift", &S.max_energy_drift},
-         {"next_spacetime_row", &next_st}},
-        sink, times);
-    first_sample = false;
-    skip_first = true;  // the checkpoint's record already holds the observation at its time
-    resume_step = r.next_step;
-    S.t_start = r.t;
-  }
-  sink.rhythm = CheckpointRhythm(c.checkpoint_every * Tb, S.t_start);
-  SpaceTime& row_field = rec.fields[0];  // (after a restart, the checkpoint's)
-
-  auto observe = [&](const State& st, double t) {
-    if (skip_first) {
-      skip_first = false;
-      return true;
-    }
-    const double* u = L.primary(st);
-    const double* v = L.secondary(st);
-    for (std::size_t i = 0; i < strains; ++i) {
-      x[i] = u[i + 1] - u[i];
-      y[i] = v[i + 1] - v[i];
-    }
-    ansatz.strains(-N, t, xa, ya);
-    double ex = 0, ey = 0;
-    if (first_sample) {
-      for (std::size_t i = 0; i < strains; ++i) {
-        S.x0_inf = std::max(S.x0_inf, std::abs(x[i]));
-        S.y0_inf = std::max(S.y0_inf, std::abs(y[i]));
+  // Initial state from the ansatz: displacements at n = -N-1..N, then strain variables if needed.
+  State s(2 * size, 0.0);
+  std::vector<double> u(size + fields), v(size + fields);  // per field: sites + 1 (n = -N-1..N)
+  const auto ansatz_displacements = [&](double t, double* U, double* V) {
+    for (std::size_t f = 0; f < fields; ++f)
+      for (std::size_t i = 0; i <= sites; ++i) ansatz.field(f, double(first - 1 + long(i)), t, U[f * (sites + 1) + i], V[f * (sites + 1) + i]);
+  };
+  ansatz_displacements(0.0, u.data(), v.data());
+  for (std::size_t i = 0; i < sites; ++i)
+    for (std::size_t f = 0; f < fields; ++f) {
+      const std::size_t at = f * (sites + 1) + i + 1, base = i + 1;  // site first + i
+      if (!r.mean_flow) {
+        s[f * sites + i] = u[at];
+        s[size + f * sites + i] = v[at];
+      } else if (f == 0) {
+        s[i] = u[base] - u[base - 1];
+        s[size + i] = v[base] - v[base - 1];
+      } else {
+        s[f * sites + i] = u[at] - u[base];
+        s[size + f * sites + i] = v[at] - v[base];
       }
     }
-    for (std::size_t i = 0; i < strains; ++i) {
-      ex = std::max(ex, std::abs(x[i] - xa[i]));
-      ey = std::max(ey, std::abs(y[i] - ya[i]));
+
+  const NlsCoefficients& nls = ansatz.nls();
+  r.omega = nls.omega;
+  r.omega_b = ansatz.omega_b();
+  r.period = ansatz.period();
+  r.group_velocity = nls.group_velocity;
+  r.curvature = nls.curvature;
+  r.h_tilde = nls.h_tilde;
+  r.lambda = r.mean_flow ? nls.lambda : 0.0;
+  r.M1 = ansatz.M1();
+  r.M2 = ansatz.M2();
+  r.inverse_width = ansatz.inverse_width();
+  r.kernel = ansatz.mode().kernel;
+  r.second_order = ansatz.second_order();
+  r.uses_second_order = ansatz.uses_second_order();
+  const double steps = c.steps_per_period > 0 ? c.steps_per_period : 24;
+  r.dt = c.dt > 0 ? c.dt : 2 * std::numbers::pi / largest_linear_frequency(kernels, parameters) / steps;
+  IntegratorOptions options;
+  options.stepper = StepperKind::srkn11b;
+  options.dt = std::min(r.dt, c.sample_every * r.period);
+  r.ansatz_ends = c.ansatz_ends;
+  if (c.ansatz_ends) {  // driven ends: not autonomous, so the adaptive rkf78 (as the resonant chain's run)
+    options.stepper = StepperKind::rkf78;
+    options.abs_tol = options.rel_tol = r.tolerance = c.tolerance;
+  }
+
+  const double t_end = c.periods * r.period, h = c.sample_every * r.period;
+  std::vector<double> times;
+  const long samples = long(std::floor(c.periods / c.sample_every + 1e-9));
+  for (long k = 0; k <= samples; ++k) times.push_back(double(k) * h);
+  if (t_end - times.back() > 1e-9 * t_end) times.push_back(t_end);
+
+  auto& series = r.record.series;
+  series.names = {"t"};
+  for (std::size_t f = 0; f < fields; ++f) series.names.push_back(fmt::format("E_{}", f));
+  series.names.insert(series.names.end(), {"energy", "X"});
+  r.max_error.assign(fields, 0.0);
+  r.final_error.assign(fields, 0.0);
+  std::vector<double> scale(fields, 0.0), error(fields), lattice(size), ua(size + fields), va(size + fields), e(sites);
+  std::vector<double> centre_t, centre_x;
+  bool first_sample = true;
+  // |energy| within end_zone_sites of either end over |energy| in all (energy densities of a
+  // potential without a lower bound may be negative, so magnitudes).
+  r.end_zone = std::min(end_zone_sites(e.size()), e.size() / 2);
+  const auto end_energy_fraction = [zone = r.end_zone](const std::vector<double>& density) {
+    double ends = 0, all = 0;
+    for (std::size_t i = 0; i < density.size(); ++i) {
+      all += std::abs(density[i]);
+      if (i < zone || i >= density.size() - zone) ends += std::abs(density[i]);
     }
-    ex /= S.x0_inf;
-    ey /= S.y0_inf;
-    const double energy = chain.total_energy(st, t);
-    energy_density(chain, st, t, e, scratch);
-    const double X = energy_centre(e, c.centre_window) + double(first);
-    if (first_sample) S.energy0 = energy;
+    return all > 0 ? ends / all : 0.0;
+  };
+  // x_f[i]: strain u_f[i] - u_f[i-1] (mean flow) or displacement u_f[i], sites i >= 1.
+  const auto compared = [&](const double* U, std::size_t f, std::size_t i, std::size_t stride, std::size_t offset) {
+    const double now = U[f * stride + i + offset];
+    return r.mean_flow ? now - U[f * stride + i + offset - 1] : now;
+  };
+  const auto observe = [&](const State& x, double t) {
+    if (c.progress) c.progress(std::min(1.0, t / t_end));
+    chain.displacements_of(x.data(), lattice.data());
+    ansatz_displacements(t, ua.data(), va.data());
+    std::fill(error.begin(), error.end(), 0.0);
+    for (std::size_t f = 0; f < fields; ++f)
+      for (std::size_t i = 1; i < sites; ++i) {
+        const double xl = compared(lattice.data(), f, i, sites, 0), xa = compared(ua.data(), f, i, sites + 1, 1);
+        if (first_sample) scale[f] = std::max(scale[f], std::abs(xl));
+        error[f] = std::max(error[f], std::abs(xl - xa));
+      }
+    series.data.push_back(t);
+    for (std::size_t f = 0; f < fields; ++f) {
+      error[f] /= scale[f] > 0 ? scale[f] : 1.0;
+      r.max_error[f] = std::max(r.max_error[f], error[f]);
+      r.final_error[f] = error[f];
+      series.data.push_back(error[f]);
+    }
+    double energy = 0, X = 0;
+    if (chain.has_energy()) {
+      chain.energy_density(x.data(), x.data() + size, e.data());
+      for (double v : e) energy += v;
+      X = energy_centre(e, 100) + double(first);
+      if (first_sample) r.energy0 = energy;
+      const double near_ends = end_energy_fraction(e);
+      r.max_end_energy_fraction = std::max(r.max_end_energy_fraction.value_or(0.0), near_ends);
+      // (Emitting ends let the breather leave: there it passes the end zone without harm.)
+      if (near_ends > end_energy_limit && !r.end_reached_at && !c.ansatz_ends) r.end_reached_at = t;
+      r.max_energy_drift = std::max(r.max_energy_drift, std::abs(energy - r.energy0) / std::abs(r.energy0));
+      centre_t.push_back(t);
+      centre_x.push_back(X);
+    }
+    series.data.insert(series.data.end(), {energy, X});
     first_sample = false;
-    S.max_Ex = std::max(S.max_Ex, ex);
-    S.max_Ey = std::max(S.max_Ey, ey);
-    if (c.error_window_end > 0 && t <= c.error_window_end) {
-      S.max_Ex_window = std::max(S.max_Ex_window, ex);
-      S.max_Ey_window = std::max(S.max_Ey_window, ey);
-    }
-    S.final_Ex = ex;
-    S.final_Ey = ey;
-    if (chain.autonomous())
-      S.max_energy_drift = std::max(S.max_energy_drift, std::abs(energy - S.energy0) / S.energy0);
-    rec.series.data.insert(rec.series.data.end(), {t, ex, ey, energy, X});
-    if (t >= next_st - 1e-9 * t_end) {
-      row_field.times.push_back(t);
-      for (double val : e) row_field.values.push_back(float(val));
-      next_st += st_every;
-    }
-    for (double ts : snap_times) {
-      if (std::abs(ts - t) > 1e-9 * t_end) continue;
+    if (t >= t_end * (1 - 1e-12)) {
       Snapshot snap;
       snap.t = t;
-      snap.tag = fmt::format("t{:.0f}", t);
-      snap.names = {"n", "x", "y", "x_ansatz", "y_ansatz", "e"};
-      for (std::size_t i = 0; i < strains; ++i)
-        snap.data.insert(snap.data.end(),
-                         {double(-N + long(i)), x[i], y[i], xa[i], ya[i], e[i + 1]});
-      rec.snapshots.push_back(std::move(snap));
-      break;
+      snap.tag = "final";
+      snap.names = {"n"};
+      for (std::size_t f = 0; f < fields; ++f) {
+        snap.names.push_back(fmt::format("x_{}", f));
+        snap.names.push_back(fmt::format("x_{}_ansatz", f));
+      }
+      for (std::size_t i = 1; i < sites; ++i) {
+        snap.data.push_back(double(first + long(i)));
+        for (std::size_t f = 0; f < fields; ++f) {
+          snap.data.push_back(compared(lattice.data(), f, i, sites, 0));
+          snap.data.push_back(compared(ua.data(), f, i, sites + 1, 1));
+        }
+      }
+      r.record.snapshots.push_back(std::move(snap));
     }
-    if (control.on_sample)
-      control.on_sample({t, -N, {x.data(), strains}, {y.data(), strains}, first, {e.data(), beads}});
-    if (control.progress) control.progress(t / t_end);
     return true;
   };
-  // At step boundaries: periodic and final checkpoints; on an interrupt, a checkpoint and stop.
-  auto at_boundary = [&](const State& st, double t, double next_step, const IntegrationStats& work) {
-    const bool stop = control.stop_requested() && t < times.back();  // at the end: just finish
-    if (stop || sink.due(t))
-      sink.write(st, t, next_step, work, rec,
-                 {{"x0_inf", S.x0_inf}, {"y0_inf", S.y0_inf}, {"energy0", S.energy0},
-                  {"max_Ex", S.max_Ex}, {"max_Ey", S.max_Ey}, {"max_Ex_window", S.max_Ex_window},
-                  {"max_Ey_window", S.max_Ey_window}, {"final_Ex", S.final_Ex},
-                  {"final_Ey", S.final_Ey}, {"max_energy_drift", S.max_energy_drift},
-                  {"next_spacetime_row", next_st}});
-    return !stop;
+  const StepBoundaryHook poll_stop = [&c](const State&, double, double, const IntegrationStats&) {
+    return !(c.stop && c.stop->load(std::memory_order_relaxed));
   };
-
   const auto start = std::chrono::steady_clock::now();
-  S.stats = integrate_observed(chain, s, times, observe, S.integrator, at_boundary, resume_step, control.stop);
-  S.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() +
-                    (S.step_choice ? S.step_choice->probe_seconds : 0.0);  // the probe is integration too
-  S.stats.steps += static_cast<Index>(sink.base_steps);
-  S.stats.rhs_evaluations += static_cast<Index>(sink.base_rhs_evaluations);
-  S.checkpoints_written = sink.written;
-  S.last_checkpoint_time = sink.last_time;
-  S.t_end = S.stats.t_reached;
-  S.interrupted = S.stats.stopped;
-  S.blew_up = S.stats.blew_up;
-  S.blow_up = locate_blow_up(S.stats, beads, first);
-  // The energy centre X(t) (eq:ectr) is the series' last column.
-  std::vector<double>&centre_t = w.centre_t, &centre_x = w.centre_x;
-  centre_t.clear();
-  centre_x.clear();
-  for (Index r = 0; r < rec.series.rows(); ++r) {
-    centre_t.push_back(rec.series.at(r, 0));
-    centre_x.push_back(rec.series.at(r, 4));
+  if (c.ansatz_ends) {
+    // The ghost sites beyond both ends in the lattice's variables, from the ansatz at time t.
+    const auto end_motion = [&ansatz, &r, fields, first, sites](double t, double* left, double* right) {
+      const auto variable = [&](std::size_t f, long n) {
+        double u, u_dot, u0, u0_dot;
+        ansatz.field(f, double(n), t, u, u_dot);
+        if (!r.mean_flow) return u;
+        ansatz.field(0, double(f == 0 ? n - 1 : n), t, u0, u0_dot);
+        return u - u0;
+      };
+      const long g = long(DrivenEndsLattice::kGhostSites);
+      for (std::size_t f = 0; f < fields; ++f)
+        for (long k = 0; k < g; ++k) {
+          left[f * std::size_t(g) + std::size_t(k)] = variable(f, first - g + k);
+          right[f * std::size_t(g) + std::size_t(k)] = variable(f, first + long(sites) + k);
+        }
+    };
+    const DrivenEndsLattice driven(kernels, parameters, sites, chain.form(), end_motion);
+    r.stats = integrate_observed(driven, s, times, observe, options, poll_stop, 0, c.stop);
+  } else {
+    r.stats = integrate_observed(chain, s, times, observe, options, poll_stop, 0, c.stop);
   }
-  S.centre_speed = least_squares_slope(centre_t, centre_x);
-  if (!centre_x.empty()) {
-    S.centre_start = centre_x.front();
-    S.centre_end = centre_x.back();
-  }
-  // x, y hold the strains of the last observation.
-  S.trailing = track_trailing_structure(rec.fields[0], centre_t, centre_x, x, y, -N, c.trailing);
-  w.ansatz = nullptr;
-  return S;
+  if (r.stats.stopped) throw Interrupted(SIGINT, fmt::format("interrupted at t = {}", r.stats.t_reached));
+  r.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (r.stats.blew_up)
+    throw NumericalFailure(fmt::format("{}: the bright-breather run blew up at t = {}", model.name(), r.stats.t_reached));
+  if (chain.has_energy()) r.centre_speed = least_squares_slope(centre_t, centre_x);
+  return r;
 }
 
 }  // namespace lrchain::sim

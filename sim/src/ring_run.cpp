@@ -32,7 +32,7 @@ long mode_number_on(double theta, long sites) {
 // Initial state U Re(K g(n) e^{i n theta}) with velocities of the envelope moving at c:
 // d/dt [g(n - c t) K e^{i(n theta - omega t)}] = (-i omega g - c g') K e^{i ...} at t = 0.
 template <class Envelope>
-State wave_state(const ModelLattice& ring, const BlochMode& mode, double theta, double c, Envelope envelope) {
+State wave_state(const CompiledLattice& ring, const BlochMode& mode, double theta, double c, Envelope envelope) {
   const std::size_t fields = ring.fields(), sites = ring.sites();
   State s(2 * fields * sites, 0.0);
   for (std::size_t n = 0; n < sites; ++n) {
@@ -95,7 +95,7 @@ PlaneWaveMeasurement measure_plane_wave(const lrchain_lattice_kernels& kernels, 
                                         double periods, double steps_per_period, const std::atomic<bool>* stop) {
   const double theta = kTwoPi * double(mode_number) / double(sites);
   const bool alternating = 2 * mode_number == sites;  // theta = pi: sum_n u_n (-1)^n is real
-  const ModelLattice ring(kernels, parameters, std::size_t(sites), true, LatticeForm::displacement);
+  const CompiledLattice ring(kernels, parameters, std::size_t(sites), true, LatticeForm::displacement);
   State s = wave_state(ring, mode, theta, 0.0, [amplitude](double, double& g, double& dg) { g = amplitude; dg = 0; });
   const double period = kTwoPi / mode.omega;
   const std::size_t velocities = ring.fields() * std::size_t(sites);  // first field's velocities start here
@@ -151,7 +151,7 @@ double measure_packet_speed(const lrchain_lattice_kernels& kernels, const std::v
                             double amplitude, double width, double duration, double steps_per_period,
                             TimeSeries& track, const std::atomic<bool>* stop) {
   const double theta = kTwoPi * double(mode_number) / double(sites);
-  const ModelLattice ring(kernels, parameters, std::size_t(sites), true, LatticeForm::displacement);
+  const CompiledLattice ring(kernels, parameters, std::size_t(sites), true, LatticeForm::displacement);
   const double n0 = double(sites) / 2;
   State s = wave_state(ring, mode, theta, group_velocity, [&](double n, double& g, double& dg) {
     const double z = (n - n0) / width;

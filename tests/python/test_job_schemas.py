@@ -148,7 +148,7 @@ def test_cli_and_python_show_the_same_default_and_range(job):
 
 def test_model_bright_defaults_are_the_bright_defaults():
     """`simulate bright --model` takes the options of `simulate bright` (the CLI copies them into the model
-    run's config): ModelBrightConfig's defaults must be BrightRunConfig's (sim/model_bright_run.hpp)."""
+    run's config): ModelBrightConfig's defaults must be BrightRunConfig's (sim/bright_run.hpp)."""
     bright = {o["key"]: o for o in _lrchain.job_options("bright")}
     for o in _lrchain.job_options("bright --model"):
         if o["default"] is not None:

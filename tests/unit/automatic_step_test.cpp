@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "lrchain/sim/automatic_step.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim;
@@ -26,7 +26,7 @@ BrightRunConfig short_exp1() {
 }  // namespace
 
 TEST_CASE("automatic step: the default bright run picks srkn11b with a step that meets its energy target") {
-  const auto s = run_bright(short_exp1()).summary;
+  const auto s = run_resonant_chain_bright(short_exp1()).summary;
   REQUIRE(s.step_choice.has_value());
   CHECK(s.integrator.stepper == StepperKind::srkn11b);
   CHECK_FALSE(s.integrator.automatic_dt);
@@ -40,9 +40,9 @@ TEST_CASE("automatic step: the default bright run picks srkn11b with a step that
 
 TEST_CASE("automatic step: a target 2^6 times tighter doubles the srkn11b step count (order 6)") {
   BrightRunConfig c = short_exp1();
-  const auto loose = run_bright(c).summary;
+  const auto loose = run_resonant_chain_bright(c).summary;
   c.step_energy_error_target /= 64;
-  const auto tight = run_bright(c).summary;
+  const auto tight = run_resonant_chain_bright(c).summary;
   REQUIRE(loose.step_choice.has_value());
   REQUIRE(tight.step_choice.has_value());
   // The energy error of an order-6 method falls by 2^6 when the step halves: the tight target

@@ -1,12 +1,12 @@
-// A sweep thread's BrightWorkspace (bright_run.hpp) is reused from point to point: runs of different
+// A sweep thread's BrightWorkspace (resonant_chain_bright_run.hpp) is reused from point to point: runs of different
 // sizes, parameters and ends, one after another in the same workspace, give the same numbers bit for
-// bit as each run on its own (run_bright without a workspace: the expected values).
+// bit as each run on its own (run_resonant_chain_bright without a workspace: the expected values).
 #include <doctest/doctest.h>
 
 #include <cstring>
 #include <vector>
 
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim;
@@ -45,8 +45,8 @@ TEST_CASE("bright workspace: runs of different N, rho and ends in one workspace 
   for (const BrightRunConfig& c : runs) {
     CAPTURE(c.N);
     CAPTURE(c.ansatz_ends);
-    const BrightRunResult alone = run_bright(c);
-    const BrightRunSummary s = run_bright(c, workspace);
+    const BrightRunResult alone = run_resonant_chain_bright(c);
+    const BrightRunSummary s = run_resonant_chain_bright(c, workspace);
     CHECK(same_bits(s.max_Ex, alone.summary.max_Ex));
     CHECK(same_bits(s.max_Ey, alone.summary.max_Ey));
     CHECK(same_bits(s.centre_speed, alone.summary.centre_speed));

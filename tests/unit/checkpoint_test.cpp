@@ -17,7 +17,7 @@
 #include <string>
 
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/sha256.hpp"
 #include "lrchain/jobs/checkpoint/checkpoint_file.hpp"
 #include "lrchain/jobs/checkpoint/checkpoint_files.hpp"
@@ -34,7 +34,7 @@ namespace {
 
 // The runs with their checkpoints as files, as the simulate job runs them.
 BrightRunResult run_bright_files(const BrightRunConfig& c, const RunControl& control = {}) {
-  return run_bright(c, with_checkpoint_files(control, c));
+  return run_resonant_chain_bright(c, with_checkpoint_files(control, c));
 }
 DriveRunResult run_drive_files(const DriveRunConfig& c, const RunControl& control = {}) {
   return run_drive(c, with_checkpoint_files(control, c));
@@ -322,11 +322,11 @@ TEST_CASE("a run naming a checkpoint or restart file without a store in RunContr
   const fs::path dir = scratch_dir("no-store");
   BrightRunConfig c = small_bright(StepperKind::rkf78);
   c.checkpoint_file = (dir / "c.bin").string();
-  CHECK_THROWS_WITH_AS(run_bright(c), doctest::Contains("needs a checkpoint store"), InvalidParameter);
+  CHECK_THROWS_WITH_AS(run_resonant_chain_bright(c), doctest::Contains("needs a checkpoint store"), InvalidParameter);
   CHECK(!fs::exists(c.checkpoint_file));
   c.checkpoint_file.clear();
   c.restart_file = (dir / "c.bin").string();
-  CHECK_THROWS_WITH_AS(run_bright(c), doctest::Contains("needs a checkpoint store"), InvalidParameter);
+  CHECK_THROWS_WITH_AS(run_resonant_chain_bright(c), doctest::Contains("needs a checkpoint store"), InvalidParameter);
   fs::remove_all(dir);
 }
 
@@ -338,7 +338,7 @@ TEST_CASE("a checkpoint store in memory: the run saves through it and a restart 
     c.snapshot_periods.clear();
     return c;
   };
-  const auto uninterrupted = run_bright(without_snapshots());
+  const auto uninterrupted = run_resonant_chain_bright(without_snapshots());
   std::optional<SavedRun> saved;
   std::string saved_identity;
   RunControl control;
@@ -349,7 +349,7 @@ TEST_CASE("a checkpoint store in memory: the run saves through it and a restart 
   BrightRunConfig first = without_snapshots();
   first.periods = 2;
   first.checkpoint_at_end = true;
-  const auto head = run_bright(first, control);
+  const auto head = run_resonant_chain_bright(first, control);
   REQUIRE(saved);
   CHECK(head.summary.checkpoints_written == 1);
   CHECK(saved->progress.t == head.summary.t_end);
@@ -361,7 +361,7 @@ TEST_CASE("a checkpoint store in memory: the run saves through it and a restart 
     CHECK(r.state_size == saved->state.size());
     return *saved;
   };
-  const auto restarted = run_bright(without_snapshots(), resume);
+  const auto restarted = run_resonant_chain_bright(without_snapshots(), resume);
   CHECK(asked_kind == "bright");
   CHECK(restarted.summary.t_start == saved->progress.t);
   check_same_record(restarted.record, uninterrupted.record);

@@ -24,7 +24,7 @@
 #include "lrchain/model.hpp"
 #include "lrchain/process.hpp"
 #include "lrchain/jobs/figure_format.hpp"
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/model_lattice.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 #include "lrchain/jobs/output_files.hpp"
@@ -96,7 +96,7 @@ TEST_CASE("figure scripts: errors.png of a model bright run marks the ansatz at 
   c.theta = std::numbers::pi / 4;
   c.N = 40;
   c.periods = 1;
-  const sim::ModelBrightResult r = sim::run_model_bright(model, sim::lattice_kernels_of(model), c);
+  const sim::ModelBrightResult r = sim::run_bright(model, sim::lattice_kernels_of(model), c);
   write_model_bright_outputs(dir, r, nlohmann::json::object(), true);  // the scripts come with the figures
   const std::string script = file_text(dir / "errors.gp");
   const std::size_t ansatz = script.find("using 1:3 skip 1 with points");
@@ -161,7 +161,7 @@ TEST_CASE("figure scripts: snapshots.png of a long bright run shows the early er
   c.N = 100;
   c.periods = 150;
   c.snapshot_periods = {0, 150};
-  const sim::BrightRunResult r = sim::run_bright(c);
+  const sim::BrightRunResult r = sim::run_resonant_chain_bright(c);
   write_bright_outputs(dir, r, nlohmann::json::object(), true);
   const std::string script = file_text(dir / "snapshots.gp");
   REQUIRE(script.find("t ≤ 200") != std::string::npos);  // the early errors are drawn

@@ -105,7 +105,7 @@ TEST_CASE("model contacts: the generated accelerations drop a bond's force exact
   const double pattern[4] = {0.0, 0.6, -0.05, 0.1};  // first variable (u or r): both signs of s_n
   for (const bool strain : {false, true}) {
     CAPTURE(strain);
-    const ModelLattice lattice(k, p, std::size_t(N), true, strain ? LatticeForm::strain : LatticeForm::displacement);
+    const CompiledLattice lattice(k, p, std::size_t(N), true, strain ? LatticeForm::strain : LatticeForm::displacement);
     const auto bonds = model_contact_bonds(k, p, strain);
     REQUIRE(bonds.size() == 1);
     std::vector<double> q(2 * std::size_t(N), 0.0), zero(q.size(), 0.0), s(q.size() / 2, 0.0), rate(q.size() / 2, 0.0);

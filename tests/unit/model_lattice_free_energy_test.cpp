@@ -43,7 +43,7 @@ struct Drift {
 
 // The displacement-form energy with fixed walls at both ends of the summed strains: the quantity the
 // open strain form reported before its free-end energy, to show the runs below can tell them apart.
-double fixed_wall_energy(const ModelLattice& lattice, const std::vector<double>& parameters, const State& x) {
+double fixed_wall_energy(const CompiledLattice& lattice, const std::vector<double>& parameters, const State& x) {
   const std::size_t m = lattice.positions();
   std::vector<double> u(m), v(m), e(lattice.sites()), work(std::size_t(lattice.kernels().workspace_size(long(lattice.sites()))));
   lattice.displacements_of(x.data(), u.data());
@@ -56,7 +56,7 @@ double fixed_wall_energy(const ModelLattice& lattice, const std::vector<double>&
 }
 
 // Runs srkn11b at step dt to t_end, observing the energy every time unit.
-Drift energy_drift(const ModelLattice& lattice, const std::vector<double>& parameters, State s, double dt, double t_end) {
+Drift energy_drift(const CompiledLattice& lattice, const std::vector<double>& parameters, State s, double dt, double t_end) {
   const double e0 = lattice.energy(s), walls0 = fixed_wall_energy(lattice, parameters, s);
   std::vector<double> e(lattice.sites()), times;
   for (double t = 0; t <= t_end; t += 1.0) times.push_back(t);
@@ -79,7 +79,7 @@ Drift energy_drift(const ModelLattice& lattice, const std::vector<double>& param
 TEST_CASE("model lattice: open strain-form fput energy is the free-free chain's centre-of-mass energy" * doctest::test_suite("fast")) {
   const std::size_t n = 41;
   const double a = 0.25, b = 0.5;
-  ModelLattice lattice(kernels("fput"), {a, b}, n, false, LatticeForm::strain);
+  CompiledLattice lattice(kernels("fput"), {a, b}, n, false, LatticeForm::strain);
   std::mt19937 gen(7);
   std::uniform_real_distribution<double> d(-0.3, 0.3);
   State s(2 * n);
@@ -117,7 +117,7 @@ TEST_CASE("model lattice: open strain-form energy is conserved when waves reach 
   const std::size_t n = 41;
   SUBCASE("fput") {
     const std::vector<double> parameters{0.25, 0.5};
-    ModelLattice lattice(kernels("fput"), parameters, n, false, LatticeForm::strain);
+    CompiledLattice lattice(kernels("fput"), parameters, n, false, LatticeForm::strain);
     const Drift d = energy_drift(lattice, parameters, centred_pulse(1, n, 0.1), 0.01, 60.0);
     MESSAGE("fput: relative drift ", d.relative, ", fixed-wall energy drift ", d.walls);
     CHECK(d.relative < 1e-8);
@@ -127,7 +127,7 @@ TEST_CASE("model lattice: open strain-form energy is conserved when waves reach 
   SUBCASE("resonant chain (two fields, precompressed Hertz bonds kept in contact)") {
     const Params p;
     const std::vector<double> parameters{p.alpha, p.delta0, p.kappa, p.rho};
-    ModelLattice lattice(kernels("resonant_chain"), parameters, n, false, LatticeForm::strain);
+    CompiledLattice lattice(kernels("resonant_chain"), parameters, n, false, LatticeForm::strain);
     const State s = centred_pulse(2, n, 0.05 * p.delta0);
     const Drift d = energy_drift(lattice, parameters, s, 0.01, 60.0);
     MESSAGE("resonant chain: relative drift ", d.relative, ", fixed-wall energy drift ", d.walls);
@@ -137,7 +137,7 @@ TEST_CASE("model lattice: open strain-form energy is conserved when waves reach 
   }
   SUBCASE("diatomic chain (bonds v[n]-u[n] and u[n+1]-v[n]: the end bonds touch the chain on one side)") {
     const std::vector<double> parameters{1.5, 4.0 / 9.0, 2.0};
-    ModelLattice lattice(kernels("diatomic_chain"), parameters, n, false, LatticeForm::strain);
+    CompiledLattice lattice(kernels("diatomic_chain"), parameters, n, false, LatticeForm::strain);
     const State s = centred_pulse(2, n, 0.05 * parameters[1]);
     const Drift d = energy_drift(lattice, parameters, s, 0.01, 60.0);
     MESSAGE("diatomic chain: relative drift ", d.relative, ", fixed-wall energy drift ", d.walls);
@@ -154,7 +154,7 @@ TEST_CASE("model lattice: open strain-form diatomic energy is the free chain's c
   // kinetic energy in the centre-of-mass frame.
   const std::size_t n = 25;
   const double alpha = 1.5, delta0 = 4.0 / 9.0, m = 2;
-  ModelLattice lattice(kernels("diatomic_chain"), {alpha, delta0, m}, n, false, LatticeForm::strain);
+  CompiledLattice lattice(kernels("diatomic_chain"), {alpha, delta0, m}, n, false, LatticeForm::strain);
   std::mt19937 gen(9);
   std::uniform_real_distribution<double> d(-0.1, 0.1);  // every contact kept (|argument| < delta0)
   State s(4 * n);

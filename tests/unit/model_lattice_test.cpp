@@ -51,7 +51,7 @@ TEST_CASE("model lattice: resonant chain strain form equals the specialised stra
     Params p;
     p.alpha = alpha;
     StrainLattice reference(p, n, StrainEnds::zero_strain);
-    ModelLattice generated(kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, false, LatticeForm::strain);
+    CompiledLattice generated(kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, false, LatticeForm::strain);
     // Strains up to 0.8 > delta0 = 4/9: about a third of the bonds have lost contact.
     std::vector<double> q = uniform(2 * n, -0.3, 0.8, 11), a_ref(2 * n), a(2 * n);
     reference.acceleration(q.data(), a_ref.data());
@@ -88,7 +88,7 @@ TEST_CASE("model lattice: resonant chain displacement form equals the specialise
     boundary.periodic = periodic;
     boundary.left.kind = boundary.right.kind = EndKind::clamped;
     DisplacementLattice reference(p, n, boundary);
-    ModelLattice generated(kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, periodic, LatticeForm::displacement);
+    CompiledLattice generated(kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, periodic, LatticeForm::displacement);
     // Displacements up to 0.4: neighbouring differences up to 0.8 > delta0, so contacts are lost.
     std::vector<double> q = uniform(2 * n, -0.4, 0.4, 5), a_ref(2 * n), a(2 * n);
     reference.acceleration(q.data(), a_ref.data(), 0.0);
@@ -106,14 +106,14 @@ TEST_CASE("model lattice: fput and klein_gordon accelerations equal their equati
   for (bool periodic : {true, false}) {
     std::vector<double> u = uniform(n, -0.5, 0.5, 3), a(n);
     const auto at = [&](long i) { return i < 0 || i >= long(n) ? (periodic ? u[std::size_t((i + long(n)) % long(n))] : 0.0) : u[std::size_t(i)]; };
-    ModelLattice fput(kernels("fput"), {a2, b3}, n, periodic, LatticeForm::displacement);
+    CompiledLattice fput(kernels("fput"), {a2, b3}, n, periodic, LatticeForm::displacement);
     fput.acceleration(u.data(), a.data());
     double worst = 0;
     for (long i = 0; i < long(n); ++i)
       worst = std::max(worst, std::abs(a[std::size_t(i)] - (F(at(i + 1) - at(i)) - F(at(i) - at(i - 1)))));
     CHECK(worst < 1e-14);
     // klein_gordon: u'' = C (u[n+1] - 2u + u[n-1]) - (w0^2 u + a u^2 + b u^3).
-    ModelLattice kg(kernels("klein_gordon"), {C, w0, a2, b3}, n, periodic, LatticeForm::displacement);
+    CompiledLattice kg(kernels("klein_gordon"), {C, w0, a2, b3}, n, periodic, LatticeForm::displacement);
     kg.acceleration(u.data(), a.data());
     worst = 0;
     for (long i = 0; i < long(n); ++i) {
@@ -123,7 +123,7 @@ TEST_CASE("model lattice: fput and klein_gordon accelerations equal their equati
     }
     CHECK(worst < 1e-14);
   }
-  CHECK_THROWS_AS(ModelLattice(kernels("klein_gordon"), {C, w0, a2, b3}, n, true, LatticeForm::strain), InvalidParameter);
+  CHECK_THROWS_AS(CompiledLattice(kernels("klein_gordon"), {C, w0, a2, b3}, n, true, LatticeForm::strain), InvalidParameter);
 }
 
 TEST_CASE("model lattice: fput strain form is the difference of the displacement form" * doctest::test_suite("fast")) {
@@ -131,8 +131,8 @@ TEST_CASE("model lattice: fput strain form is the difference of the displacement
   const std::size_t n = 32;
   std::vector<double> u = uniform(n, -0.5, 0.5, 8), r(n), au(n), ar(n);
   for (std::size_t i = 0; i < n; ++i) r[i] = u[i] - u[(i + n - 1) % n];
-  ModelLattice displacement(kernels("fput"), {0.25, 0.5}, n, true, LatticeForm::displacement);
-  ModelLattice strain(kernels("fput"), {0.25, 0.5}, n, true, LatticeForm::strain);
+  CompiledLattice displacement(kernels("fput"), {0.25, 0.5}, n, true, LatticeForm::displacement);
+  CompiledLattice strain(kernels("fput"), {0.25, 0.5}, n, true, LatticeForm::strain);
   displacement.acceleration(u.data(), au.data());
   strain.acceleration(r.data(), ar.data());
   double worst = 0;
@@ -158,7 +158,7 @@ TEST_CASE("model lattice: the Jacobian action equals central differences of the 
       for (bool periodic : {true, false}) {
         CAPTURE(name);
         CAPTURE(periodic);
-        ModelLattice lattice(k, parameters, n, periodic, form);
+        CompiledLattice lattice(k, parameters, n, periodic, form);
         const std::size_t m = lattice.positions();
         std::vector<double> q = uniform(m, -0.05, 0.05, 21), dq = uniform(m, -1, 1, 22), da(m), plus(m), minus(m), qp(m), qm(m);
         const double h = 1e-5;
@@ -180,7 +180,7 @@ TEST_CASE("model lattice: the Jacobian action equals central differences of the 
 TEST_CASE("model lattice: resonant chain energy equals the specialised bond energy and is conserved by a symplectic run" * doctest::test_suite("fast")) {
   const std::size_t n = 40;
   Params p;
-  ModelLattice lattice(kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, true, LatticeForm::displacement);
+  CompiledLattice lattice(kernels("resonant_chain"), {p.alpha, p.delta0, p.kappa, p.rho}, n, true, LatticeForm::displacement);
   State s(4 * n, 0.0);
   // A standing wave with contact loss (bond strains up to about 0.6 > delta0).
   for (std::size_t i = 0; i < n; ++i) {
@@ -219,7 +219,7 @@ TEST_CASE("model lattice: open diatomic strain form is the free chain of its bea
   const std::size_t n = 30;
   const double alpha = 1.5, delta0 = 4.0 / 9.0, m = 2;
   const auto F = [&](double r) { return std::pow(delta0, alpha) - std::pow(std::max(delta0 - r, 0.0), alpha); };
-  ModelLattice lattice(kernels("diatomic_chain"), {alpha, delta0, m}, n, false, LatticeForm::strain);
+  CompiledLattice lattice(kernels("diatomic_chain"), {alpha, delta0, m}, n, false, LatticeForm::strain);
   // Strains and relative displacements up to 0.6 > delta0: some contacts are lost.
   const std::vector<double> q = uniform(2 * n, -0.3, 0.6, 17);
   std::vector<double> u(n), v(n), a(2 * n);

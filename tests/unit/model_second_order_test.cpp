@@ -10,7 +10,7 @@
 
 #include "lrchain/ansatz/bright_breather.hpp"
 #include "lrchain/model.hpp"
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/bright_run.hpp"
 
 using namespace lrchain;
 using Complex = std::complex<double>;

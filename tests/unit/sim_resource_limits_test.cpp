@@ -12,7 +12,7 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/output_files.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/sim/displacement_lattice.hpp"
 #include "lrchain/sim/drive_run.hpp"
 #include "lrchain/sim/integrator.hpp"
@@ -117,7 +117,7 @@ TEST_CASE("the lattice-run estimate bounds what a bright run stores and writes")
   BrightRunConfig c = small_bright();
   c.integrator = IntegratorOptions{};  // rkf78: the stepper with the most stage vectors
   const ResourceEstimate e = estimate_resources(c);
-  const BrightRunResult r = run_bright(c);
+  const BrightRunResult r = run_resonant_chain_bright(c);
   double stored = double(r.record.series.data.size()) * 8;
   for (const auto& f : r.record.fields) stored += double(f.values.size()) * 4 + double(f.times.size()) * 8;
   for (const auto& s : r.record.snapshots) stored += double(s.data.size()) * 8;

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "lrchain/errors.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/sim/drive_run.hpp"
 #include "lrchain/sim/modulated_run.hpp"
 #include "short_runs.hpp"

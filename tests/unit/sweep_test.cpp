@@ -23,7 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/process.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
 #include "lrchain/jobs/sweep/results_file.hpp"
 #include "lrchain/jobs/sweep/sweep_config.hpp"
@@ -83,7 +83,7 @@ TEST_CASE("sweep: 1 thread and 2 threads give the same results bit for bit — a
   lrchain::jobs::ExperimentConfig ec = lrchain::jobs::load_experiment_config(d / "base.toml");
   ec.bright.theta = 1.8;
   ec.bright.detuning = -1e-3;
-  const auto single = lrchain::sim::run_bright(ec.bright).summary;
+  const auto single = lrchain::sim::run_resonant_chain_bright(ec.bright).summary;
   const std::size_t last = 11;
   CHECK(one.scalars[0 * one.points + last] == single.max_Ex);  // scalar 0 is max_Ex
   CHECK(one.scalars[7 * one.points + last] == single.centre_speed);

@@ -38,7 +38,7 @@ TEST_CASE("wave stability: a ring run of the exact wave plus noise grows at the 
   REQUIRE(computed > 1e-3);
 
   const auto c = wave_harmonics(w, 0);
-  const ModelLattice ring(kernels, lattice_parameters(model), sites, true, LatticeForm::displacement);
+  const CompiledLattice ring(kernels, lattice_parameters(model), sites, true, LatticeForm::displacement);
   State s(2 * std::size_t(sites));
   std::mt19937 gen(7);
   std::normal_distribution<double> noise(0, 1e-9);

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
 
 using namespace lrchain;
@@ -24,13 +24,13 @@ BrightRunConfig with_default_integrator(const char* file) {
 }
 
 void check_against_rkf78(BrightRunConfig c, Index expected_steps_per_sample) {
-  const auto automatic = run_bright(c).summary;
+  const auto automatic = run_resonant_chain_bright(c).summary;
   REQUIRE(automatic.step_choice.has_value());
   CHECK(automatic.integrator.stepper == StepperKind::srkn11b);
   CHECK(automatic.step_choice->steps_per_sample == expected_steps_per_sample);
   CHECK(automatic.max_energy_drift <= 1e-9);
   c.integrator = IntegratorOptions{StepperKind::rkf78, 1e-13, 1e-13, 0.05};
-  const auto reference = run_bright(c).summary;
+  const auto reference = run_resonant_chain_bright(c).summary;
   CHECK(std::abs(automatic.max_Ex - reference.max_Ex) < 1e-4);
   CHECK(std::abs(automatic.final_Ex - reference.final_Ex) < 1e-4);
   CHECK(std::abs(automatic.centre_speed - reference.centre_speed) < 1e-4);

@@ -1,4 +1,4 @@
-// Bright breathers of model files (sim/model_bright_run.hpp) against the NLS ansatz built from
+// Bright breathers of model files (sim/bright_run.hpp) against the NLS ansatz built from
 // the derived coefficients and second-order terms: over 200 T_b the lattice stays within 5 % of the
 // ansatz (max E_x), and since the ansatz's relative error is O(epsilon^2) with epsilon^2 ~ |omega_b -
 // omega| (O(epsilon) for the first-order ansatz alone), quartering the detuning must divide max E_x by
@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/bright_run.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim;
@@ -32,7 +32,7 @@ void check_model_bright(const BrightCase& k) {
   double max_error[2];
   for (int quartered = 0; quartered < 2; ++quartered) {
     c.detuning = k.detuning / (quartered ? 4 : 1);
-    const ModelBrightResult r = run_model_bright(model, lattice_kernels_of(model), c);
+    const ModelBrightResult r = run_bright(model, lattice_kernels_of(model), c);
     max_error[quartered] = r.max_error[0];
     std::printf("bright %s %s theta %.4f detuning %.3g: max E_x %.3g %% (fields:", k.model.c_str(), k.branch.c_str(),
                 k.theta, *c.detuning, 100 * r.max_error[0]);

@@ -12,7 +12,7 @@
 #include <unistd.h>
 
 #include "../support/run_lrchain.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
 
 using namespace lrchain;
@@ -27,7 +27,7 @@ ExperimentConfig example(const std::string& name) {
 
 TEST_CASE("exp1: optical theta=pi/2 breather follows the NLS ansatz for 200 T_b (Figs. 6, 7)" * doctest::test_suite("validation")) {
   const auto cfg = example("exp1_optical_pi2.toml");
-  const auto r = run_bright(cfg.bright);
+  const auto r = run_resonant_chain_bright(cfg.bright);
   const auto& s = r.summary;
   CHECK(s.period == doctest::Approx(2.8885).epsilon(2e-5));     // paper: T_b = 2.8885
   CHECK(s.omega_b == doctest::Approx(2.1752).epsilon(5e-5));    // paper: omega_b = 2.1752
@@ -41,7 +41,7 @@ TEST_CASE("exp1: optical theta=pi/2 breather follows the NLS ansatz for 200 T_b 
 
 TEST_CASE("exp1 convergence: halving the step/tolerances changes E_x by < 1e-4, tight rkf78 agrees" * doctest::test_suite("validation")) {
   auto cfg = example("exp1_optical_pi2.toml").bright;
-  const auto a = run_bright(cfg).summary;
+  const auto a = run_resonant_chain_bright(cfg).summary;
   // Halve the accuracy parameter of the configured stepper: the step of the fixed-step symplectic
   // steppers, the tolerances of the adaptive ones.
   if (is_symplectic(cfg.integrator.stepper)) {
@@ -50,13 +50,13 @@ TEST_CASE("exp1 convergence: halving the step/tolerances changes E_x by < 1e-4, 
     cfg.integrator.abs_tol /= 2;
     cfg.integrator.rel_tol /= 2;
   }
-  const auto b = run_bright(cfg).summary;
+  const auto b = run_resonant_chain_bright(cfg).summary;
   CHECK(std::abs(a.max_Ex - b.max_Ex) < 1e-4);
   CHECK(std::abs(a.final_Ex - b.final_Ex) < 1e-4);
   CHECK(std::abs(a.final_Ey - b.final_Ey) < 1e-4);
   // Independent reference: Odeint's RKF 7(8) at tolerance 1e-13 (drift 5e-11).
   cfg.integrator = IntegratorOptions{StepperKind::rkf78, 1e-13, 1e-13, 0.05};
-  const auto r = run_bright(cfg).summary;
+  const auto r = run_resonant_chain_bright(cfg).summary;
   CHECK(std::abs(a.max_Ex - r.max_Ex) < 1e-4);
   CHECK(std::abs(a.final_Ex - r.final_Ex) < 1e-4);
   CHECK(std::abs(a.final_Ey - r.final_Ey) < 1e-4);
@@ -65,7 +65,7 @@ TEST_CASE("exp1 convergence: halving the step/tolerances changes E_x by < 1e-4, 
 
 TEST_CASE("exp2: theta=pi/8 breather, large amplitude, accurate early then delocalises (Figs. 8, 9)" * doctest::test_suite("validation")) {
   const auto cfg = example("exp2_optical_pi8.toml");
-  const auto r = run_bright(cfg.bright);
+  const auto r = run_resonant_chain_bright(cfg.bright);
   const auto& s = r.summary;
   CHECK(s.period == doctest::Approx(3.1265).epsilon(2e-5));  // paper: T_b = 3.1265
   // paper: ||x(0)||_inf ~ 0.208; we measure 0.2127 (2 % above; see docs/simulator.md)
@@ -79,7 +79,7 @@ TEST_CASE("exp2: theta=pi/8 breather, large amplitude, accurate early then deloc
 
 TEST_CASE("exp3: theta=3pi/5 near theta_c keeps moving at c_+ but the error grows from the start (Fig. 10)" * doctest::test_suite("validation")) {
   const auto cfg = example("exp3_optical_3pi5.toml");
-  const auto r = run_bright(cfg.bright);
+  const auto r = run_resonant_chain_bright(cfg.bright);
   const auto& s = r.summary;
   CHECK(s.period == doctest::Approx(2.791).epsilon(2e-4));      // paper: T_b = 2.791
   CHECK(s.omega_b == doctest::Approx(2.2512).epsilon(5e-5));    // paper: omega_b = 2.2512

@@ -19,7 +19,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/checkpoint/checkpoint_file.hpp"
 #include "lrchain/jobs/checkpoint/checkpoint_files.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/sim/drive_run.hpp"
 #include "lrchain/jobs/experiment_config.hpp"
 #include "lrchain/sim/modulated_run.hpp"
@@ -145,7 +145,7 @@ TEST_CASE("CLI: simulate modulated writes checkpoint, --restart continues, drive
 
 TEST_CASE("exp5: rho=10, theta=1.23 optical breather moves at c_+ ~ 0.6 (Fig. 13)" * doctest::test_suite("validation")) {
   const auto cfg = lrchain::jobs::load_experiment_config(example("exp5_optical_rho10_123.toml"));
-  const auto r = run_bright(cfg.bright);
+  const auto r = run_resonant_chain_bright(cfg.bright);
   const auto& s = r.summary;
   MESSAGE("T_b=" << s.period << " omega_b=" << s.omega_b << " c+=" << s.group_velocity
           << " centre_speed=" << s.centre_speed << " max_Ex=" << s.max_Ex << " drift=" << s.max_energy_drift);
@@ -162,7 +162,7 @@ TEST_CASE("exp5: rho=10, theta=1.23 optical breather moves at c_+ ~ 0.6 (Fig. 13
 
 TEST_CASE("exp4: acoustic theta=1.948 breather (Fig. 11): paper's T_b and omega_b, NLS fails later" * doctest::test_suite("validation")) {
   const auto cfg = lrchain::jobs::load_experiment_config(example("exp4_acoustic_1948.toml"));
-  const auto r = run_bright(cfg.bright);
+  const auto r = run_resonant_chain_bright(cfg.bright);
   const auto& s = r.summary;
   MESSAGE("T_b=" << s.period << " omega_b=" << s.omega_b << " c-=" << s.group_velocity
           << " centre_speed=" << s.centre_speed << " max_Ex=" << s.max_Ex << " drift=" << s.max_energy_drift);

@@ -87,7 +87,7 @@ std::vector<CheckResult> run_model_checks(const ModelDerivation& m, const Symbol
   // kernel's second entry, complex and theta-dependent), so c and omega'' are unchanged and
   // h, h_tilde, beta lambda pick up |r|^2 (i A_tau - h |A|^2 A = 0 with B = r A).
   if (m.file.model.fields.size() >= 2) {
-    LatticeModel swapped = m.file.model;
+    LatticeDescription swapped = m.file.model;
     std::swap(swapped.fields[0], swapped.fields[1]);
     std::swap(swapped.inertia[0], swapped.inertia[1]);
     std::swap(swapped.rhs[0], swapped.rhs[1]);

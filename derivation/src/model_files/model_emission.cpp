@@ -32,7 +32,7 @@ ex real_form(const ex& e, const Symbols& s) {
   return reduced(numerator.real_part()) / reduced(denominator.real_part());
 }
 
-// q[i] for every parameter, then every named intermediate (the order of LatticeModel::parameters).
+// q[i] for every parameter, then every named intermediate (the order of LatticeDescription::parameters).
 std::vector<std::pair<ex, std::string>> q_inputs(const ModelDerivation& m) {
   std::vector<std::pair<ex, std::string>> inputs;
   for (std::size_t i = 0; i < m.file.model.parameters.size(); ++i)

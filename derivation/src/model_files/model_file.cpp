@@ -240,7 +240,7 @@ class Loader {
       out_.model.fields.push_back(name);
       tables.push_back(&t);
     }
-    LatticeModel& m = out_.model;
+    LatticeDescription& m = out_.model;
     m.name = out_.name;
     m.description = out_.description;
     init_shift_symbols(m);

@@ -67,7 +67,7 @@ std::vector<CheckResult> reference_checks(const ModelDerivation& m, const Symbol
   if (name == "resonant_chain") {
     const exmap rename = rename_map(m.file, {{"K2", s.K2}, {"K3", s.K3}, {"K4", s.K4}, {"kappa", s.kappa}, {"rho", s.rho}}, complete);
     if (!complete) return {{"resonant_chain names K2, K3, K4, kappa, rho", false, "symbolic", "a name is missing"}};
-    const LatticeModel reference = resonant_chain_model(s), homogeneous = homogeneous_chain_model(s);
+    const LatticeDescription reference = resonant_chain_model(s), homogeneous = homogeneous_chain_model(s);
     const DerivedCoefficients ref = derive(reference, s), hom = derive(homogeneous, s);
     const DerivedCoefficients file = renamed(m.coefficients, rename);
     out.push_back(same_coefficients("resonant_chain = the reference derivation of (eq:Hertz) (generated header)", file, ref));
@@ -78,7 +78,7 @@ std::vector<CheckResult> reference_checks(const ModelDerivation& m, const Symbol
   } else if (name == "homogeneous_chain") {
     const exmap rename = rename_map(m.file, {{"K2", s.K2}, {"K3", s.K3}, {"K4", s.K4}}, complete);
     if (!complete) return {{"homogeneous_chain names K2, K3, K4", false, "symbolic", "a name is missing"}};
-    const LatticeModel reference = homogeneous_chain_model(s);
+    const LatticeDescription reference = homogeneous_chain_model(s);
     const DerivedCoefficients ref = derive(reference, s);
     out.push_back(same_coefficients("homogeneous_chain = the reference derivation (generated header)",
                                     renamed(m.coefficients, rename), ref));
@@ -91,7 +91,7 @@ std::vector<CheckResult> reference_checks(const ModelDerivation& m, const Symbol
   } else if (name == "fput") {
     const ex a = file_symbol(m.file, "a"), b = file_symbol(m.file, "b");
     if (a.is_zero() || b.is_zero()) return {{"fput names a, b", false, "symbolic", "a name is missing"}};
-    const LatticeModel reference = homogeneous_chain_model(s);
+    const LatticeDescription reference = homogeneous_chain_model(s);
     const DerivedCoefficients ref = derive(reference, s);
     out.push_back(same_coefficients("fput = homogeneous_chain with K2 = 1, K3 = a, K4 = b", m.coefficients, ref,
                                     exmap{{s.K2, 1}, {s.K3, a}, {s.K4, b}}));

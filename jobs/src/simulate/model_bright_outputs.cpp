@@ -1,4 +1,4 @@
-// JSON summary, data files and gnuplot figures of a model bright-breather run (model_bright_run.hpp).
+// JSON summary, data files and gnuplot figures of a model bright-breather run (bright_run.hpp).
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>

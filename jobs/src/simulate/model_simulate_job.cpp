@@ -54,7 +54,7 @@ SimulateReport<sim::ModelBrightResult> simulate_model_bright(const Model& model,
   const sim::ModelBrightAnsatz check(model, kernels, c.branch, c.theta, c.detuning, c.n0);  // focusing, detuning
   c.stop = stop;
   return simulate_model_job(
-      model, c, label, output, [&] { return sim::run_model_bright(model, kernels, c); },
+      model, c, label, output, [&] { return sim::run_bright(model, kernels, c); },
       [](const std::string& d, const auto& r, const auto& j, bool f) { return write_model_bright_outputs(d, r, j, f); });
 }
 

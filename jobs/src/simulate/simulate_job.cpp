@@ -131,7 +131,7 @@ void validate(const sim::ModulatedRunConfig& c, const std::string& dir) { valida
 
 SimulateReport<sim::BrightRunResult> simulate(const sim::BrightRunConfig& c, const RunOutput& output,
                                               const sim::RunControl& control) {
-  return simulate_job(c, output, control, [](const auto& k, const auto& rc) { return sim::run_bright(k, rc); },
+  return simulate_job(c, output, control, [](const auto& k, const auto& rc) { return sim::run_resonant_chain_bright(k, rc); },
                       [](const std::string& d, const auto& r, const auto& j, bool f) { return write_bright_outputs(d, r, j, f); });
 }
 

@@ -8,9 +8,9 @@
 
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/params.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/sim/drive_run.hpp"
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/modulated_run.hpp"
 #include "lrchain/sim/ring_run.hpp"
 #include "lrchain/sim/strain_sites.hpp"

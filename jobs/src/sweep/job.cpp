@@ -26,7 +26,7 @@ namespace {
 
 constexpr double none = std::numeric_limits<double>::quiet_NaN();
 
-// The scalars of a bright run (bright_run.hpp), in file order.
+// The scalars of a bright run (resonant_chain_bright_run.hpp), in file order.
 const Extractors<BrightRunSummary>& bright_scalars() {
   static const Extractors<BrightRunSummary> e{
       {"max_Ex", [](const auto& s) { return s.max_Ex; }},
@@ -222,7 +222,7 @@ JobResult Job::run(const Overrides& overrides, const RunControl& control, JobWor
     else if (model_)
       r = run_model_job(kind_, *model_, doc, control);
     else if (kind_ == "bright")
-      reduce(run_bright(load_experiment_config(doc).bright, workspace.bright, control), bright_scalars(), r);
+      reduce(run_resonant_chain_bright(load_experiment_config(doc).bright, workspace.bright, control), bright_scalars(), r);
     else if (kind_ == "drive")
       reduce(run_drive(load_drive_config(doc).run, control).summary, drive_scalars(), r);
     else

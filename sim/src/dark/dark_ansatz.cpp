@@ -42,7 +42,7 @@ namespace {
 // frequency, and an acoustic branch has omega = 0 at theta = 0.)
 std::vector<double> uniform_kernel(const Model& model, const lrchain_lattice_kernels& kernels, double omega) {
   constexpr std::size_t sites = 16;
-  const ModelLattice ring(kernels, lattice_parameters(model), sites, true, LatticeForm::displacement);
+  const CompiledLattice ring(kernels, lattice_parameters(model), sites, true, LatticeForm::displacement);
   const std::size_t fields = ring.fields();
   const std::vector<double> rest(ring.positions(), 0.0);
   std::vector<double> pattern(ring.positions()), response(ring.positions());

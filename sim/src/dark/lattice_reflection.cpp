@@ -54,7 +54,7 @@ constexpr double seed_tolerance = 1e-6;
 Eigen::MatrixXd reflection_even_basis(const LatticeReflection& r) { return reflection_basis(r, 1.0); }
 Eigen::MatrixXd reflection_odd_basis(const LatticeReflection& r) { return reflection_basis(r, -1.0); }
 
-std::optional<LatticeReflection> find_dark_reflection(const ModelLattice& lattice, double centre,
+std::optional<LatticeReflection> find_dark_reflection(const CompiledLattice& lattice, double centre,
                                                       const Eigen::VectorXd& seed,
                                                       const Eigen::VectorXd& seed_half_period) {
   const Index N = lattice.sites(), F = lattice.fields(), P = lattice.positions();

@@ -34,7 +34,7 @@ class DrivenEndsLattice {
   void acceleration(const double* q, double* a, double t) const;
 
  private:
-  ModelLattice extended_;
+  CompiledLattice extended_;
   std::size_t sites_;
   EndMotion motion_;
   mutable std::vector<double> q_, a_, left_, right_;

@@ -10,7 +10,7 @@
 
 namespace lrchain::sim {
 
-ModelLattice::ModelLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
+CompiledLattice::CompiledLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
                            bool periodic, LatticeForm form)
     : kernels_(&kernels), parameters_(std::move(parameters)), sites_(sites), periodic_(periodic), form_(form) {
   if (kernels.abi_version != LRCHAIN_COMPILED_MODEL_ABI_VERSION)
@@ -32,22 +32,22 @@ ModelLattice::ModelLattice(const lrchain_lattice_kernels& kernels, std::vector<d
   e_.assign(sites, 0.0);
 }
 
-void ModelLattice::acceleration(const double* q, double* a, double /*t*/) const {
+void CompiledLattice::acceleration(const double* q, double* a, double /*t*/) const {
   accelerations_(parameters_.data(), long(sites_), periodic_, q, a, work_.data());
 }
 
-void ModelLattice::jacobian_action(const double* q, const double* dq, double* da) const {
+void CompiledLattice::jacobian_action(const double* q, const double* dq, double* da) const {
   jacobian_(parameters_.data(), long(sites_), periodic_, q, dq, da, work_.data());
 }
 
-void ModelLattice::operator()(const State& s, State& ds, double /*t*/) const {
+void CompiledLattice::operator()(const State& s, State& ds, double /*t*/) const {
   const std::size_t n = positions();
   std::memcpy(ds.data(), s.data() + n, n * sizeof(double));
   acceleration(s.data(), ds.data() + n);
 }
 
 // u_0[n] = sum_{j <= n} r[j], u_f = u_0 + w_f (strain form); a copy in displacement form.
-void ModelLattice::displacements_of(const double* q, double* u) const {
+void CompiledLattice::displacements_of(const double* q, double* u) const {
   const std::size_t n = sites_;
   if (form_ == LatticeForm::displacement) {
     std::memcpy(u, q, positions() * sizeof(double));
@@ -58,7 +58,7 @@ void ModelLattice::displacements_of(const double* q, double* u) const {
     for (std::size_t i = 0; i < n; ++i) u[f * n + i] = u[i] + q[f * n + i];
 }
 
-void ModelLattice::energy_density(const double* q, const double* velocity, double* e) const {
+void CompiledLattice::energy_density(const double* q, const double* velocity, double* e) const {
   if (!has_energy())
     throw InvalidParameter("model", std::string(kernels_->model_name) + ": its forces do not derive from a potential, so it has no energy");
   displacements_of(q, u_.data());
@@ -83,7 +83,7 @@ void ModelLattice::energy_density(const double* q, const double* velocity, doubl
   e[0] += 0.5 * masses_[0] * centre_velocity * centre_velocity;  // bead -1
 }
 
-double ModelLattice::energy(const State& s) const {
+double CompiledLattice::energy(const State& s) const {
   energy_density(s.data(), s.data() + positions(), e_.data());
   return std::accumulate(e_.begin(), e_.end(), 0.0);
 }

@@ -27,7 +27,7 @@ struct BlochProblem {
 
 BlochProblem bloch_problem(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters, double theta) {
   constexpr std::size_t sites = 16, n0 = 8;
-  const ModelLattice chain(kernels, parameters, sites, false, LatticeForm::displacement);
+  const CompiledLattice chain(kernels, parameters, sites, false, LatticeForm::displacement);
   const std::size_t fields = chain.fields(), size = chain.positions();
   const std::vector<double> rest(size, 0.0);
   std::vector<double> pattern(size), response_cos(size), response_sin(size);

@@ -83,7 +83,7 @@ WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vect
   const double modes = wave.theta * double(n) / (2 * std::numbers::pi);
   if (std::abs(modes - std::round(modes)) > 1e-9 * double(n))
     throw InvalidParameter("ring_sites", fmt::format("theta = {} is not 2 pi j / {} for an integer j", wave.theta, n));
-  const ModelLattice ring(kernels, parameters, n, true, LatticeForm::displacement);
+  const CompiledLattice ring(kernels, parameters, n, true, LatticeForm::displacement);
   State s(std::size_t(2 * fields * n));
   std::vector<std::vector<std::complex<double>>> harmonics;
   for (Index f = 0; f < fields; ++f) harmonics.push_back(wave_harmonics(wave, f));

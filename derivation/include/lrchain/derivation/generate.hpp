@@ -11,7 +11,7 @@ namespace lrchain::derivation {
 
 struct Derivation {
   Symbols symbols;
-  LatticeModel resonant, homogeneous;
+  LatticeDescription resonant, homogeneous;
   DerivedCoefficients resonant_coefficients, homogeneous_coefficients;
 };
 

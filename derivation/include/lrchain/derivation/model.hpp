@@ -21,7 +21,7 @@ struct Symbols {
   GiNaC::realsymbol eps{"eps"}, E{"E"};           // expansion parameter and carrier E = e^{i(n theta - omega t)}
 };
 
-struct LatticeModel {
+struct LatticeDescription {
   std::string name;                 // identifier used for generated function names
   std::string description;          // one line for the report
   std::vector<std::string> fields;  // e.g. {"u", "v"}; field 0 carries the NLS amplitude A_{k,j}
@@ -39,13 +39,13 @@ struct LatticeModel {
 };
 
 // Creates the shift symbols for `fields` (call before writing rhs).
-void init_shift_symbols(LatticeModel& model);
+void init_shift_symbols(LatticeDescription& model);
 
 // (eq:Hertz) with V'(r) = K2 r + K3 r^2 + K4 r^3 (expv): primary beads u with Hertz contacts and
 // a linear resonator v of mass ratio rho attached by a spring kappa.
-LatticeModel resonant_chain_model(const Symbols& s);
+LatticeDescription resonant_chain_model(const Symbols& s);
 
 // Homogeneous precompressed chain (no resonator, one field), the rho -> 0 limit (Chong13).
-LatticeModel homogeneous_chain_model(const Symbols& s);
+LatticeDescription homogeneous_chain_model(const Symbols& s);
 
 }  // namespace lrchain::derivation

@@ -1,7 +1,7 @@
 #pragma once
 // A lattice model read from a TOML file (docs/models.md): parameters with defaults and ranges,
 // named force laws F(r) replaced by their cubic Taylor polynomials about equilibrium, fields with
-// masses and force expressions in shifted fields u[n+m] (|m| <= 3), turned into a LatticeModel.
+// masses and force expressions in shifted fields u[n+m] (|m| <= 3), turned into a LatticeDescription.
 #include <ginac/ginac.h>
 
 #include <cstdint>
@@ -65,7 +65,7 @@ struct ModelFile {
   std::vector<std::string> mass_text, force_text;  // as written, one per field
   std::vector<DivisorTerm> divisors;               // masses and linear stiffnesses, in file order
   std::string first_force_where;                   // "file:line: force of field u" of the first field
-  LatticeModel model;                              // what the engine derives
+  LatticeDescription model;                              // what the engine derives
 };
 
 // Reads and checks a model file; throws lrchain::InputError naming file:line and the problem.

@@ -16,7 +16,7 @@ namespace lrchain::derivation {
 // Every coefficient is a rational expression in D1 = 4 sin^2(theta/2), sigma = sin(theta), omega,
 // the model parameters, and the named intermediates c (group velocity) and gamma where stated.
 struct DerivedCoefficients {
-  const LatticeModel* model = nullptr;
+  const LatticeDescription* model = nullptr;
   GiNaC::ex dispersion;                // det L_1(theta, omega) = 0: the linear dispersion relation
   std::vector<GiNaC::ex> kernel;       // right null vector of L_1, first entry 1 (eq:b10b11)
   std::vector<GiNaC::ex> left_kernel;  // left null vector of L_1, first entry 1 (W* up to scale)
@@ -51,7 +51,7 @@ struct DerivedCoefficients {
 };
 
 // left_kernel_scale multiplies every left null vector (a check: the coefficients must not change).
-DerivedCoefficients derive(const LatticeModel& model, const Symbols& s, const GiNaC::ex& left_kernel_scale = 1);
+DerivedCoefficients derive(const LatticeDescription& model, const Symbols& s, const GiNaC::ex& left_kernel_scale = 1);
 
 // Substitutes the group velocity and gamma into an expression containing the symbols c, gamma.
 GiNaC::ex explicit_form(const DerivedCoefficients& d, const Symbols& s, const GiNaC::ex& e);

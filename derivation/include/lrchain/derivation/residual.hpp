@@ -19,6 +19,6 @@ using Residual = std::vector<std::vector<std::vector<GiNaC::ex>>>;
 // Reduces sin^2(theta) = D1 - D1^2/4 (sigma = sin theta, D1 = 2(1 - cos theta)) and expands.
 GiNaC::ex reduce_trig(const GiNaC::ex& e, const Symbols& s);
 
-Residual build_residual(const LatticeModel& model, const Symbols& s, Jets& jets);
+Residual build_residual(const LatticeDescription& model, const Symbols& s, Jets& jets);
 
 }  // namespace lrchain::derivation

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "lrchain/config/strict_toml.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 
 namespace lrchain::jobs {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "lrchain/config/strict_toml.hpp"
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/ring_run.hpp"
 
 namespace lrchain::jobs {

@@ -25,7 +25,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/sim/drive_run.hpp"
 #include "lrchain/sim/modulated_run.hpp"
 #include "lrchain/sim/run_record.hpp"

@@ -22,12 +22,12 @@ const lrchain_lattice_kernels* shipped_lattice_kernels(std::string_view model_na
 std::vector<std::string> shipped_lattice_models();
 
 // Not thread-safe: the const methods write scratch buffers of the object (no allocation per call);
-// give each thread its own ModelLattice (copies are cheap next to a run).
-class ModelLattice {
+// give each thread its own CompiledLattice (copies are cheap next to a run).
+class CompiledLattice {
  public:
   // `parameters` in the model file's order (kernels.parameter_names). Throws InvalidParameter for
   // fewer than 2 sites, a wrong parameter count, or the strain form of an on-site model.
-  ModelLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
+  CompiledLattice(const lrchain_lattice_kernels& kernels, std::vector<double> parameters, Index sites,
                bool periodic, LatticeForm form);
 
   Index sites() const { return static_cast<Index>(sites_); }

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 
 namespace lrchain::jobs {
 

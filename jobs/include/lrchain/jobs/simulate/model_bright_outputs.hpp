@@ -1,5 +1,5 @@
 #pragma once
-// JSON summary and files of a model bright-breather run (sim/model_bright_run.hpp) in --out:
+// JSON summary and files of a model bright-breather run (sim/bright_run.hpp) in --out:
 // series.csv, the final snapshot, summary.json and errors.gp/.png.
 #include <filesystem>
 #include <string>
@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/model.hpp"
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/bright_run.hpp"
 
 namespace lrchain::jobs {
 

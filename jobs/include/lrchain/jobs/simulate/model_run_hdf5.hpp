@@ -18,7 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/bright_run.hpp"
 #include "lrchain/sim/ring_run.hpp"
 #include "lrchain/sim/run_record.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // The simulate jobs on any model file (`lrchain simulate bright --model FILE`, `simulate ring`,
 // `simulate --config` with `model = "FILE"`, lrchain.simulate.bright(model=...) and .ring): the
-// NLS bright breather on the model's generated lattice (sim/model_bright_run.hpp) and plane waves
+// NLS bright breather on the model's generated lattice (sim/bright_run.hpp) and plane waves
 // and a packet on a periodic ring (sim/ring_run.hpp). prepare (branch, options, theta on the
 // branch; before the lattice code is loaded) -> simulate (checks against the lattice code, run,
 // summary, files).
@@ -12,7 +12,7 @@
 
 #include "lrchain/jobs/simulate/simulate_job.hpp"
 #include "lrchain/model.hpp"
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/bright_run.hpp"
 #include "lrchain/compiled_model_abi.h"
 #include "lrchain/sim/ring_run.hpp"
 

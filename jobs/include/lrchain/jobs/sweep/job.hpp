@@ -16,7 +16,7 @@
 
 #include "lrchain/config/strict_toml.hpp"
 #include "lrchain/jobs/model_source.hpp"
-#include "lrchain/sim/bright_run.hpp"
+#include "lrchain/sim/resonant_chain_bright_run.hpp"
 #include "lrchain/sim/run_control.hpp"
 
 namespace lrchain::jobs::sweep {

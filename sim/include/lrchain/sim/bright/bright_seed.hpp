@@ -1,7 +1,7 @@
 #pragma once
 // The band edge an exact bright breather of a model file bifurcates from, and its seed: the NLS
 // bright-breather ansatz with the derivation's second-order terms (ModelBrightAnsatz,
-// model_bright_run.hpp; eq:focus_app generalised) at that edge, stationary (c = 0 at theta = 0, pi),
+// bright_run.hpp; eq:focus_app generalised) at that edge, stationary (c = 0 at theta = 0, pi),
 // at t = 0 (a turning point: all velocities zero, as the time-reversible shooting needs),
 //   u_f[n](0) = M1 tanh(z) + 2 M2 sech(z) K_f cos(n theta) + 2 M2^2 sech^2(z) Re(W2_f e^{2 i n theta}) + ...,
 // z = a (n - n0), M2 = sqrt(2 (omega_b - omega) / h_tilde), a = sqrt(2 (omega - omega_b) / omega''),
@@ -17,7 +17,7 @@
 #include "lrchain/coefficients.hpp"
 #include "lrchain/index.hpp"
 #include "lrchain/model.hpp"
-#include "lrchain/sim/model_bright_run.hpp"
+#include "lrchain/sim/bright_run.hpp"
 #include "lrchain/compiled_model_abi.h"
 
 namespace lrchain::sim::bright {

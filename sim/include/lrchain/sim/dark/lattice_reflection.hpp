@@ -35,7 +35,7 @@ Eigen::MatrixXd reflection_odd_basis(const LatticeReflection& reflection);
 // strain lives on a bond) and sign +-1, that also commutes with the lattice's accelerations at two
 // random states around the seed (relative 1e-10). nullopt when no such reflection exists (a lattice
 // without reflection symmetry).
-std::optional<LatticeReflection> find_dark_reflection(const ModelLattice& lattice, double centre,
+std::optional<LatticeReflection> find_dark_reflection(const CompiledLattice& lattice, double centre,
                                                       const Eigen::VectorXd& seed,
                                                       const Eigen::VectorXd& seed_half_period);
 

@@ -39,7 +39,7 @@ class DarkOrbit {
   DarkOrbit& operator=(const DarkOrbit&) = delete;
   Index sites() const { return sites_; }
   Index positions() const { return positions_; }  // fields x sites
-  const ModelLattice& lattice() const { return lattice_; }
+  const CompiledLattice& lattice() const { return lattice_; }
   const ContactIntegrationOptions& options() const { return options_; }
   const ContactBonds& contact_bonds() const { return bonds_; }
   // Contact changes located by the integrations since the orbit was made (0 for smooth models).
@@ -72,7 +72,7 @@ class DarkOrbit {
  private:
   struct Steppers;
   class Contacts;  // the lattice as a ContactSystem
-  ModelLattice lattice_;
+  CompiledLattice lattice_;
   Index sites_;
   Index positions_;
   ContactIntegrationOptions options_;

@@ -61,7 +61,7 @@ class WaveLattice {
   std::vector<double> parameters_;
   double theta_;
   Index fields_, radius_, sites_;
-  ModelLattice chain_;
+  CompiledLattice chain_;
   std::vector<int> shifts_;
   bool translation_invariant_ = false;
   Index points_ = 0;
