@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <random>
@@ -278,6 +279,16 @@ void compile_into_entry(const std::vector<CompileUnit>& units, const std::string
   const auto remove_temporaries = [&] {
     for (const fs::path& t : temporaries) fs::remove(t, ec);
   };
+  // Whatever way this returns or throws (a unit that cannot be written, a failed compile, a stop),
+  // the units' files and the unplaced object go (once placed, the object is no longer at `object`).
+  struct RemoveOnExit {
+    const std::function<void()> remove;
+    ~RemoveOnExit() { remove(); }
+  } remove_on_exit{[&] {
+    std::error_code ignored;
+    for (const fs::path& t : temporaries) fs::remove(t, ignored);
+    fs::remove(object, ignored);
+  }};
   const auto failed = [&](const ProcessResult& r, const std::string& step) {
     remove_temporaries();
     fs::remove(object, ec);

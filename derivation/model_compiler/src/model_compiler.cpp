@@ -21,6 +21,7 @@
 #include "lrchain/derivation/symbolic_lock.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/process.hpp"
+#include "lrchain/provenance.hpp"
 #include "lrchain/sha256.hpp"
 #include "model_cache.hpp"
 #include "model_metadata.hpp"
@@ -98,10 +99,13 @@ std::string compiler_version(const std::string& compiler) {
 }
 
 // The one cache entry of a model file's bytes (its evaluators and lattice kernels in one object).
+// The key holds the build's git commit beside the version: a change of the code generator that
+// leaves the ABI alone must not serve objects the older generator emitted.
 CacheEntry cache_entry(const std::string& bytes) {
   const std::string compiler = model_compiler_path();
+  static const std::string build = std::string(LRCHAIN_VERSION) + " " + build_info().commit;
   return {model_cache_directory(),
-          "model-" + model_cache_key(bytes, compiler + "\n" + compiler_version(compiler), LRCHAIN_VERSION, compiled_model_code_kind())};
+          "model-" + model_cache_key(bytes, compiler + "\n" + compiler_version(compiler), build, compiled_model_code_kind())};
 }
 
 // `make()` (emitting code with GiNaC) with a failure of the symbolic engine reported as the file's
@@ -335,9 +339,13 @@ std::shared_ptr<const lrchain_lattice_kernels> compile_model_lattice(const Model
   check_lattice_compiler(content);
   auto kernels = compile_model(content, info, stop).kernels;
   if (kernels) return kernels;
-  // Compiled without kernels: the lattice code generator's refusal (an InputError naming the force law).
-  const derivation::ModelFile file = derivation::parse_model_text(content.bytes, content.path);
-  emitted(file, "lattice code", [&] { return derivation::lattice_source(file); });
+  // Compiled without kernels: the lattice code generator's refusal (an InputError naming the force law),
+  // derived again under the symbolic engine's lock (GiNaC is not thread-safe; Python releases the GIL here).
+  {
+    const std::lock_guard<std::recursive_mutex> lock(derivation::symbolic_engine_mutex());
+    const derivation::ModelFile file = derivation::parse_model_text(content.bytes, content.path);
+    emitted(file, "lattice code", [&] { return derivation::lattice_source(file); });
+  }
   throw std::runtime_error(content.path + ": the compiled model has no lattice kernels; delete its entry in " +
                            model_cache_directory().string() + " to compile it again");
 }
