@@ -29,6 +29,7 @@ namespace lrchain::sim::wave {
 
 inline constexpr double kBrokenDeviation = 0.1;          // the wave broke up: a tenth of A
 inline constexpr double kLocalizedParticipation = 0.25;  // half the thermal value 1/2
+inline constexpr double kMaxEnergyDrift = 1e-6;          // relative energy drift above which the run is refused
 inline constexpr double kDisorderedEntropy = 0.5;        // spectrum spread over a power N^0.5 of modes
 
 enum class WaveFate { stable, intact, modulated, localized, disordered };
