@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "lrchain/errors.hpp"
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/model_lattice.hpp"
@@ -94,4 +95,31 @@ TEST_CASE("dark continue --model: fput (b = -1/2), a strain lattice, moves off i
     CHECK(points[i].omega_b < points[i - 1].omega_b);
     CHECK(points[i].measures.E_b < 1e-9);
   }
+}
+
+TEST_CASE("dark continue --to narrows the window: beyond the band edge or outside omega_min is refused naming to" *
+          doctest::test_suite("fast")) {
+  // klein_gordon at C = 1/2: the breather at 1.72 lies below the top of the phonon band, sqrt(1 + 4 C) =
+  // sqrt(3) = 1.7321 (the textbook Klein-Gordon band), and continues down from it. Before, --to 1.75
+  // replaced the bound at the edge and the branch ran through the linear limit, reporting a fold there.
+  const Model model = shipped_model("klein_gordon", {{"b", -0.5}, {"C", 0.5}});
+  DarkConfig c;
+  c.step = DarkStep::branch;
+  c.model = &model;
+  c.kernels = sim::shipped_lattice_kernels("klein_gordon");
+  c.omega_b = 1.72;
+  c.sites = 31;
+  c.points = 3;
+  c.branch_floquet = false;
+  c.to = 1.75;
+  validate(c);
+  CHECK_THROWS_WITH_AS(run(c), doctest::Contains("band edge 1.732050808"), InvalidParameter);
+  c.to = 1.69;  // below a user's omega_min
+  c.omega_min = 1.70;
+  validate(c);
+  CHECK_THROWS_WITH_AS(run(c), doctest::Contains("must lie in [1.7,"), InvalidParameter);
+  c.to = 1.71;  // inside: the last point lands on it
+  const DarkResult r = run(c);
+  REQUIRE_FALSE(failure(r).has_value());
+  CHECK(r.branch.points.back().omega_b == doctest::Approx(1.71).epsilon(1e-12));
 }

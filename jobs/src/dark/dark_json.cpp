@@ -69,10 +69,11 @@ void branch_json(const DarkResult& r, json& j) {
   j["stop_reason"] = br.stop_reason;
   j["stop"] = to_string(br.stop);
   j["parameter"] = r.config.parameter;
+  j["to"] = r.config.to ? json(*r.config.to) : json(nullptr);
   j["turning_points"] = br.turning_points;
   json folds = json::array();  // interpolated between the points on either side (continuation.hpp)
-  for (const auto& f : br.folds)
-    folds.push_back({{"omega_b", f.omega_b}, {"norm_squared", f.norm_squared}, {"after_point", f.after},
+  for (const auto& f : br.folds)  // at the continued parameter's value (omega_b, or a model parameter)
+    folds.push_back({{r.config.parameter, f.omega_b}, {"norm_squared", f.norm_squared}, {"after_point", f.after},
                      {"fraction", f.fraction}});
   j["folds"] = folds;
   j["interrupted"] = br.interrupted;

@@ -235,6 +235,10 @@ void continue_from(const DarkShootingProblem& shooting, const Eigen::VectorXd& q
   o.omega_min = above ? std::max(c.omega_min, edge) : c.omega_min;
   o.omega_max = c.omega_max > 0 ? c.omega_max : above ? 1e300 : edge;
   if (c.to) {  // the direction and the end of the range, its last point solved there
+    if (!(*c.to >= o.omega_min && *c.to <= o.omega_max))  // it narrows the window, never widens it
+      throw InvalidParameter("to", fmt::format("must lie in [{:.10g}, {:.10g}], between omega_min, omega_max and the "
+                                               "band edge {:.10g} that the branch cannot cross, got {:.10g}",
+                                               o.omega_min, o.omega_max, edge, *c.to));
     o.direction = *c.to > c.omega_b ? 1.0 : -1.0;
     (*c.to > c.omega_b ? o.omega_max : o.omega_min) = *c.to;
     o.land_on_bounds = true;
