@@ -7,6 +7,7 @@
 #include "lrchain/errors.hpp"
 
 #include "lrchain/jobs/wave_job.hpp"
+#include "wave_standing.hpp"
 
 namespace lrchain::jobs::wave {
 
@@ -28,9 +29,14 @@ WaveResult run(const WaveConfig& c) {
   r.config = c;
   const Index branch = c.model->branch_or_only(c.branch);
   r.branch = c.model->definition().branch_names[std::size_t(branch)];
-  r.theta = c.step == WaveStep::fate ? ring_theta(c.theta, c.ring_sites) : c.theta;
+  r.theta = c.step == WaveStep::fate || c.step == WaveStep::standing ? ring_theta(c.theta, c.ring_sites) : c.theta;
   r.nls = coefficients_from_evaluators(*c.model, branch, r.theta);
   r.mode = sim::bloch_mode(*c.model, *c.kernels, branch, r.theta);
+  if (c.step == WaveStep::standing) {
+    run_standing(c, r);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+  }
   sim::wave::WaveLattice lattice(*c.kernels, sim::lattice_parameters(*c.model), r.theta);
   sim::wave::TravellingWaveOptions options;
   options.initial_harmonics = c.initial_harmonics;
