@@ -190,6 +190,21 @@ StandingWave solve_standing_wave(ModelLattice& ring, const BlochMode& mode, doub
     w.newton_steps += steps;
     w.residual = residual;
     w.tail = cosine_tail(c, amplitude);
+    w.omega = omega;
+    w.harmonics = H;
+    w.coefficients = c;
+    if (ring.kernels().displacement_contacts) {  // a one-sided contact that opens: the clamped force has no smooth orbit
+      double least = std::numeric_limits<double>::infinity();
+      for (Index i = 0; i <= 4 * H; ++i) {
+        standing_positions(w, N, std::numbers::pi * double(i) / (4 * double(H) * omega), q);
+        least = std::min(least, least_overlap(ring, q));
+      }
+      w.least_contact_overlap = least;
+      if (least < 0)
+        throw NumericalFailure(fmt::format("no standing wave at theta = {}, A = {}: a one-sided contact opens along "
+                                           "the wave (least overlap {:.3g}): the wave loses contact",
+                                           theta, amplitude, least));
+    }
     if (w.tail <= o.tail_tolerance) break;
     if (2 * H > o.max_harmonics)
       throw NumericalFailure(fmt::format("no standing wave at theta = {}, A = {}: its harmonics do not decay within "
@@ -199,21 +214,6 @@ StandingWave solve_standing_wave(ModelLattice& ring, const BlochMode& mode, doub
     wider.leftCols(H + 1) = c;
     c = std::move(wider);
     H *= 2;
-  }
-  w.omega = omega;
-  w.harmonics = H;
-  w.coefficients = std::move(c);
-  if (ring.kernels().displacement_contacts) {
-    double least = std::numeric_limits<double>::infinity();
-    for (Index i = 0; i <= 4 * H; ++i) {
-      standing_positions(w, N, std::numbers::pi * double(i) / (4 * double(H) * omega), q);
-      least = std::min(least, least_overlap(ring, q));
-    }
-    w.least_contact_overlap = least;
-    if (least < 0)
-      throw NumericalFailure(fmt::format("no standing wave at theta = {}, A = {}: a one-sided contact opens along "
-                                         "the wave (least overlap {:.3g}): the wave loses contact",
-                                         theta, amplitude, least));
   }
   return w;
 }
