@@ -99,7 +99,7 @@ TEST_CASE("wave standing: the small-amplitude frequency of fput and Klein-Gordon
     for (const auto& w : r.standing) {
       const double expected = lindstedt_standing_shift(lattice, r.theta, w.amplitude);
       const double error = std::abs((w.omega - w.omega_linear) / expected - 1);
-      MESSAGE(name << " A " << w.amplitude << ": shift " << w.omega - w.omega_linear << ", Lindstedt " << expected
+      MESSAGE(std::string(name) << " A " << w.amplitude << ": shift " << w.omega - w.omega_linear << ", Lindstedt " << expected
                    << ", rel " << error << ", travelling h A^2/4 " << r.nls.h * w.amplitude * w.amplitude / 4);
       CHECK(error < 5e-4);
       if (previous_error > 0) CHECK(error > 3 * previous_error);  // the next term is O(A^4): doubling A quadruples it
