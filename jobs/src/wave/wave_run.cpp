@@ -38,17 +38,8 @@ WaveResult run(const WaveConfig& c) {
     return r;
   }
   sim::wave::WaveLattice lattice(*c.kernels, sim::lattice_parameters(*c.model), r.theta);
-  sim::wave::TravellingWaveOptions options;
-  options.initial_harmonics = c.initial_harmonics;
-  options.max_harmonics = c.max_harmonics;
-  options.tail_tolerance = c.tail_tolerance;
-  options.newton_tolerance = c.tolerance;
-  options.max_newton_steps = c.max_iterations;
-  std::vector<double> amplitudes = c.amplitudes;
-  if (c.step != WaveStep::branch) {
-    amplitudes.clear();
-    for (Index i = 1; i <= c.ramp; ++i) amplitudes.push_back(c.amplitude * double(i) / double(c.ramp));
-  }
+  const auto options = solver_options<sim::wave::TravellingWaveOptions>(c);
+  const std::vector<double> amplitudes = c.step == WaveStep::branch ? c.amplitudes : ramp_amplitudes(c);
   sim::wave::WaveBranch found = sim::wave::continue_travelling_wave(lattice, r.mode, amplitudes, options);
   r.waves = std::move(found.waves);
   r.failure = found.stopped;

@@ -31,6 +31,12 @@ sim::ModelLattice ring_of(const WaveConfig& c, Index sites) {
 
 }  // namespace
 
+std::vector<double> ramp_amplitudes(const WaveConfig& c) {
+  std::vector<double> amplitudes;
+  for (Index i = 1; i <= c.ramp; ++i) amplitudes.push_back(c.amplitude * double(i) / double(c.ramp));
+  return amplitudes;
+}
+
 void check_standing(const WaveConfig& c) {
   if (!std::isfinite(double(c.ring_sites)) || c.ring_sites < 8 || c.ring_sites > 100000)
     throw InvalidParameter("ring_sites", fmt::format("{} is outside [8, 100000]", c.ring_sites));
@@ -52,15 +58,8 @@ void check_standing(const WaveConfig& c) {
 void run_standing(const WaveConfig& c, WaveResult& r) {
   sim::ModelLattice period = ring_of(c, period_sites(c));
   r.reflection = sim::wave::reflection_symmetry(ring_of(c, std::max<Index>(period_sites(c), 5)));
-  sim::wave::StandingWaveOptions o;
-  o.initial_harmonics = c.initial_harmonics;
-  o.max_harmonics = c.max_harmonics;
-  o.tail_tolerance = c.tail_tolerance;
-  o.newton_tolerance = c.tolerance;
-  o.max_newton_steps = c.max_iterations;
-  std::vector<double> amplitudes;
-  for (Index i = 1; i <= c.ramp; ++i) amplitudes.push_back(c.amplitude * double(i) / double(c.ramp));
-  sim::wave::StandingWaveBranch b = sim::wave::continue_standing_wave(period, r.mode, r.theta, amplitudes, o);
+  sim::wave::StandingWaveBranch b = sim::wave::continue_standing_wave(
+      period, r.mode, r.theta, ramp_amplitudes(c), solver_options<sim::wave::StandingWaveOptions>(c));
   r.standing = std::move(b.waves);
   r.failure = b.stopped;
   r.failed_at = b.stopped_at;

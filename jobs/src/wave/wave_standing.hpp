@@ -2,6 +2,7 @@
 // The standing wave step of the wave job (`lrchain wave standing`, docs/waves.md "Standing waves"): its
 // checks, its run, its JSON and its files, called by validate/run/to_json/write (wave_job.hpp).
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -9,6 +10,21 @@
 #include "lrchain/jobs/wave_job.hpp"
 
 namespace lrchain::jobs::wave {
+
+// The solver options (travelling or standing) from the job's: harmonics, tail, Newton tolerance and steps.
+template <class Options>
+Options solver_options(const WaveConfig& c) {
+  Options o;
+  o.initial_harmonics = c.initial_harmonics;
+  o.max_harmonics = c.max_harmonics;
+  o.tail_tolerance = c.tail_tolerance;
+  o.newton_tolerance = c.tolerance;
+  o.max_newton_steps = c.max_iterations;
+  return o;
+}
+
+// The ramp A/ramp, 2A/ramp, ..., A of solve, stability, fate and standing.
+std::vector<double> ramp_amplitudes(const WaveConfig& c);
 
 // InvalidParameter("theta") unless the ring's theta is inside (0, pi) and the first field moves in its mode;
 // InvalidParameter("model") when the model has no reflection symmetry (no standing wave).
