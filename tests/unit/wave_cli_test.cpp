@@ -62,6 +62,9 @@ TEST_CASE("wave cli: standing maps its options, writes its files, refuses theta 
                     "invalid theta", source_dir);
   check_refused_run({"wave", "standing", "--model", "fput", "--theta", "1", "--amplitude", "0.02", "--ring-sites", "4"},
                     "invalid ring-sites", source_dir);
+  check_refused_run({"wave", "standing", "--model", "fput", "--theta", "1", "--amplitude", "0.02", "--ring-sites", "20",
+                     "--format", "hdf5"},
+                    "invalid format", source_dir);
   const fs::path out = fs::temp_directory_path() / ("lrchain-wave-standing-cli-" + std::to_string(::getpid()));
   const auto r = run_lrchain({"wave", "standing", "--model", "fput", "--theta", "2*pi/5", "--amplitude", "0.02",
                               "--ring-sites", "20", "--ramp", "2", "--json", "--out", out.string()}, source_dir);
