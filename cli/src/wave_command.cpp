@@ -126,6 +126,15 @@ void register_wave(CLI::App& app) {
   add_integer(*fate, "--steps-per-period", args->config.steps_per_period, 0, 1000000, wave_help("steps_per_period"));
   add_examples(*fate, {"lrchain wave fate --model fput --theta 2.5 --amplitude 0.2 --periods 500 --out out/fate"});
   fate->callback([args, fate] { run_job(*args, WaveStep::fate, *fate); });
+  auto* standing = wave->add_subcommand(
+      "standing", "The standing wave (the sum of the two counter-propagating waves) of a reflection-symmetric model: "
+                  "a time-periodic orbit on one spatial period of the ring, continued in A, and its Floquet "
+                  "multipliers on a ring of --ring-sites sites (docs/waves.md)");
+  add_common(*standing, *args);
+  add_amplitude(*standing, *args);
+  add_integer(*standing, "--ring-sites", args->config.ring_sites, 0, 1000000, wave_help("ring_sites"));
+  add_examples(*standing, {"lrchain wave standing --model fput --theta 2*pi/5 --amplitude 0.1 --ring-sites 20"});
+  standing->callback([args, standing] { run_job(*args, WaveStep::standing, *standing); });
 }
 
 }  // namespace lrchain::cli

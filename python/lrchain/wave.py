@@ -5,7 +5,7 @@ tolerance on the tail; continued in the amplitude A (the first field's cos xi ha
 wave; and the Floquet-Bloch growth rates max Re lambda of perturbations e^{lambda t + i K n} W(theta n -
 omega t) over K in (0, pi], each beside the NLS prediction (frequency shift h A^2/4, modulational
 instability with the largest rate |h_tilde| A^2/4 where focusing). The functions are ``lrchain wave
-solve|continue|stability``: the same job (lrchain/jobs/wave_job.hpp), its defaults from the job's one
+solve|continue|stability|fate|standing``: the same job (lrchain/jobs/wave_job.hpp), its defaults from the job's one
 schema.
 
 ``model`` is an :class:`lrchain.Model` (``lrchain.load_model("fput")`` or your own model file), default
@@ -92,6 +92,31 @@ def _write(path, summary):
     from .hdf5 import checked_destination
 
     _hdf5.write_wave(checked_destination(path), json.dumps(summary))
+
+
+@dataclass(frozen=True, repr=False)
+class StandingWave:
+    """One exact standing wave u_f[n](t) = sum_k c_{f,n,k} cos(k omega t) on one spatial period of the ring
+    (``lrchain wave standing``): ``amplitude`` A (the first field's cos(theta n) cos(omega t) part),
+    ``omega`` (and ``omega_linear``), ``harmonics`` H, ``coefficients`` (numpy, fields x sites x (H+1)), the
+    ``branch`` of the ramp (a list of dicts: amplitude, omega, omega_shift, ...), the Floquet multipliers
+    on the ring of ``ring_sites`` sites (``multipliers``, complex numpy, by decreasing modulus; ``stable``)
+    and the job's whole JSON ``summary``."""
+
+    theta: float
+    amplitude: float
+    omega: float
+    omega_linear: float
+    harmonics: int
+    coefficients: np.ndarray
+    branch: list
+    multipliers: np.ndarray
+    stable: bool
+    summary: dict
+
+    def __repr__(self):
+        return (f"StandingWave(theta={self.theta}, A={self.amplitude}, omega={self.omega:.12g}, "
+                f"{self.harmonics} harmonics, {'stable' if self.stable else 'unstable'})")
 
 
 def _model(model):
@@ -241,3 +266,31 @@ def fate(model=None, branch=None, theta=None, amplitude=None, ramp=_D["ramp"], h
     return _wave(_run(model, "fate", branch, theta, amplitude, ramp, (), harmonics, max_harmonics, tail_tolerance,
                       tolerance, max_iterations, k_points, unstable_tolerance, ring_sites, noise, seed, periods,
                       steps_per_period))
+
+
+@documented(_SECTION)
+@real_numbers
+def standing(model=None, branch=None, theta=None, amplitude=None, ramp=_D["ramp"], harmonics=_D["harmonics"],
+             max_harmonics=_D["max_harmonics"], tail_tolerance=_D["tail_tolerance"], tolerance=_D["tolerance"],
+             max_iterations=_D["max_iterations"], ring_sites=_D["ring_sites"]):
+    """The standing wave (``lrchain wave standing``; docs/waves.md, "Standing waves"): the sum of the two
+    counter-propagating waves of a reflection-symmetric model as an exact time-periodic orbit at the ring's
+    wavenumber 2 pi j / ``ring_sites`` nearest theta (in (0, pi)), continued in A, with its Floquet
+    multipliers on that ring; returns :class:`StandingWave`.
+
+    Example::
+
+        >>> import lrchain
+        >>> s = lrchain.wave.standing(lrchain.load_model("fput"), theta=1.2566, amplitude=0.02, ring_sites=20)
+        >>> round((s.omega - s.omega_linear) / 0.02**2, 3), s.stable, s.coefficients.shape
+        (0.228, True, (1, 5, 9))
+    """
+    d = _run(model, "standing", branch, theta, amplitude, ramp, (), harmonics, max_harmonics, tail_tolerance,
+             tolerance, max_iterations, ring_sites=ring_sites)
+    s = d["standing"]
+    f = s["floquet"]
+    w = s["waves"][-1]
+    return StandingWave(theta=s["ring_theta"], amplitude=w["amplitude"], omega=w["omega"],
+                        omega_linear=d["linear"]["omega"], harmonics=w["harmonics"],
+                        coefficients=d.pop("coefficients_array"), branch=s["waves"],
+                        multipliers=np.array(f["re"]) + 1j * np.array(f["im"]), stable=f["stable"], summary=d)

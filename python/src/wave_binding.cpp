@@ -29,6 +29,7 @@ py::dict wave_job(const LoadedModel& loaded, const std::string& step, const std:
   c.step = step == "continue"    ? WaveStep::branch
            : step == "stability" ? WaveStep::stability
            : step == "fate"      ? WaveStep::fate
+           : step == "standing"  ? WaveStep::standing
                                  : WaveStep::solve;
   c.model = &loaded.model;
   c.kernels = &lattice_kernels(loaded);
@@ -63,6 +64,16 @@ py::dict wave_job(const LoadedModel& loaded, const std::string& step, const std:
   nlohmann::json j = to_json(r);
   j["model"] = model_summary_json(loaded);
   py::dict d = py::module_::import("json").attr("loads")(j.dump());
+  if (c.step == WaveStep::standing) {  // c_{f,n,k} of the last standing wave: fields x sites x (H+1)
+    const auto& s = r.standing.back();
+    const Index fields = s.coefficients.rows() / s.sites;
+    py::array_t<double> coefficients({py::ssize_t(fields), py::ssize_t(s.sites), py::ssize_t(s.harmonics + 1)});
+    double* out = coefficients.mutable_data();
+    for (Index row = 0; row < s.coefficients.rows(); ++row)
+      for (Index k = 0; k <= s.harmonics; ++k) *out++ = s.coefficients(row, k);
+    d["coefficients_array"] = coefficients;
+    return d;
+  }
   const auto& w = r.waves.back();
   const Index fields = Index(r.mode.kernel.size()), points = 2 * w.harmonics + 1;
   py::array_t<double> profile({py::ssize_t(fields), py::ssize_t(points)});

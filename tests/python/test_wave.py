@@ -88,3 +88,19 @@ def test_fate_gives_the_ring_run_as_numpy_and_loads_back(tmp_path):
     with pytest.raises(lrchain.InvalidParameterError) as e:
         lrchain.wave.fate(lrchain.load_model("fput"), theta=2.5, amplitude=0.3, ring_sites=4)
     assert e.value.parameter == "ring_sites"
+
+
+def test_standing_wave_as_numpy_with_its_multipliers_and_the_refusal_at_pi():
+    # fput at theta = 2 pi/5 on 20 sites: the shift 9.11051e-5 at A = 0.02 (Lindstedt-Poincare 9.11157e-5,
+    # tests/unit/wave_standing_test.cpp)
+    s = lrchain.wave.standing(lrchain.load_model("fput"), theta=2 * np.pi / 5, amplitude=0.02, ring_sites=20)
+    assert abs((s.omega - s.omega_linear) / 9.11157e-5 - 1) < 5e-4
+    assert s.coefficients.shape == (1, 5, s.harmonics + 1)
+    # the first field's cos(theta n) cos(omega t) part is A
+    n = np.arange(5)
+    assert abs(2 / 5 * np.sum(s.coefficients[0, :, 1] * np.cos(s.theta * n)) - 0.02) < 1e-12
+    assert s.multipliers.dtype == complex and s.multipliers.shape == (40,) and s.stable
+    assert [w["amplitude"] for w in s.branch] == pytest.approx([0.005, 0.01, 0.015, 0.02])
+    with pytest.raises(lrchain.InvalidParameterError) as e:
+        lrchain.wave.standing(lrchain.load_model("fput"), theta=3.1, amplitude=0.02, ring_sites=20)
+    assert e.value.parameter == "theta"

@@ -1,10 +1,11 @@
-// `lrchain wave solve|continue|stability`: the argv mapping and exit codes (the numbers are the job's,
+// `lrchain wave solve|continue|stability|standing`: the argv mapping and exit codes (the numbers are the job's,
 // wave_job_test.cpp and wave_nls_test.cpp): bad input exits 2 with one line naming the option and writes
 // nothing; a solve exits 0 with its JSON; no wave exits 3 with the reason.
 #include <doctest/doctest.h>
 
 #include <filesystem>
 #include <string>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -53,4 +54,28 @@ TEST_CASE("wave cli: solve exits 0 with its JSON, no wave exits 3" * doctest::te
   CHECK(lost.exit_code == 3);
   CHECK(lost.err.find("contact") != std::string::npos);
   CHECK(nlohmann::json::parse(lost.out)["failed_at"] == doctest::Approx(0.4));
+}
+
+TEST_CASE("wave cli: standing maps its options, writes its files, refuses theta at pi" * doctest::test_suite("fast")) {
+  using lrchain::test::check_refused_run;
+  check_refused_run({"wave", "standing", "--model", "fput", "--theta", "3.1", "--amplitude", "0.02", "--ring-sites", "20"},
+                    "invalid theta", source_dir);
+  check_refused_run({"wave", "standing", "--model", "fput", "--theta", "1", "--amplitude", "0.02", "--ring-sites", "4"},
+                    "invalid ring-sites", source_dir);
+  check_refused_run({"wave", "standing", "--model", "fput", "--theta", "1", "--amplitude", "0.02", "--ring-sites", "20",
+                     "--format", "hdf5"},
+                    "invalid format", source_dir);
+  const fs::path out = fs::temp_directory_path() / ("lrchain-wave-standing-cli-" + std::to_string(::getpid()));
+  const auto r = run_lrchain({"wave", "standing", "--model", "fput", "--theta", "2*pi/5", "--amplitude", "0.02",
+                              "--ring-sites", "20", "--ramp", "2", "--json", "--out", out.string()}, source_dir);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["step"] == "standing");
+  CHECK(j["options"]["ring_sites"] == 20);
+  CHECK(j["standing"]["waves"].size() == 2);
+  CHECK(j["standing"]["period_sites"] == 5);
+  for (const char* file : {"standing.csv", "standing_profile.csv", "floquet.csv", "floquet.gp", "summary.json"})
+    CHECK_MESSAGE(fs::exists(out / file), file);
+  fs::remove_all(out);
 }

@@ -6,6 +6,7 @@
 #include "lrchain/model_json.hpp"
 #include "lrchain/provenance_json.hpp"
 #include "lrchain/sim/wave/wave_nls.hpp"
+#include "wave_standing.hpp"
 
 namespace lrchain::jobs::wave {
 
@@ -21,6 +22,7 @@ const char* step_name(WaveStep s) {
     case WaveStep::branch: return "continue";
     case WaveStep::stability: return "stability";
     case WaveStep::fate: return "fate";
+    case WaveStep::standing: return "standing";
   }
   return "";
 }
@@ -54,6 +56,7 @@ json to_json(const WaveResult& r) {
                   {"max_iterations", c.max_iterations}};
   if (c.step == WaveStep::branch) j["options"]["amplitudes"] = c.amplitudes;
   else j["options"].update({{"amplitude", c.amplitude}, {"ramp", c.ramp}});
+  if (c.step == WaveStep::standing) j["options"]["ring_sites"] = c.ring_sites;
   if (c.step == WaveStep::stability)
     j["options"].update({{"k_points", c.k_points}, {"unstable_tolerance", c.unstable_tolerance}});
   j["linear"] = {{"omega", r.mode.omega}};
@@ -64,7 +67,7 @@ json to_json(const WaveResult& r) {
   json waves = json::array();
   for (const auto& w : r.waves) waves.push_back(wave_json(w, r.nls));
   j["waves"] = waves;
-  if (c.step != WaveStep::branch && !r.failure) {
+  if (c.step != WaveStep::branch && c.step != WaveStep::standing && !r.failure) {
     const auto& w = r.waves.back();
     j["omega"] = w.omega;
     j["harmonics"] = w.harmonics;
@@ -124,6 +127,7 @@ json to_json(const WaveResult& r) {
                  {"entropy", f.entropy},
                  {"energy_density", f.energy_density}};
   }
+  if (c.step == WaveStep::standing) j["standing"] = standing_json(r);
   j["failure"] = r.failure ? json(*r.failure) : json(nullptr);
   j["failed_at"] = r.failed_at ? json(*r.failed_at) : json(nullptr);
   j["seconds"] = r.seconds;

@@ -7,6 +7,7 @@
 #include "lrchain/errors.hpp"
 
 #include "lrchain/jobs/wave_job.hpp"
+#include "wave_standing.hpp"
 
 namespace lrchain::jobs::wave {
 
@@ -28,21 +29,17 @@ WaveResult run(const WaveConfig& c) {
   r.config = c;
   const Index branch = c.model->branch_or_only(c.branch);
   r.branch = c.model->definition().branch_names[std::size_t(branch)];
-  r.theta = c.step == WaveStep::fate ? ring_theta(c.theta, c.ring_sites) : c.theta;
+  r.theta = c.step == WaveStep::fate || c.step == WaveStep::standing ? ring_theta(c.theta, c.ring_sites) : c.theta;
   r.nls = coefficients_from_evaluators(*c.model, branch, r.theta);
   r.mode = sim::bloch_mode(*c.model, *c.kernels, branch, r.theta);
-  sim::wave::WaveLattice lattice(*c.kernels, sim::lattice_parameters(*c.model), r.theta);
-  sim::wave::TravellingWaveOptions options;
-  options.initial_harmonics = c.initial_harmonics;
-  options.max_harmonics = c.max_harmonics;
-  options.tail_tolerance = c.tail_tolerance;
-  options.newton_tolerance = c.tolerance;
-  options.max_newton_steps = c.max_iterations;
-  std::vector<double> amplitudes = c.amplitudes;
-  if (c.step != WaveStep::branch) {
-    amplitudes.clear();
-    for (Index i = 1; i <= c.ramp; ++i) amplitudes.push_back(c.amplitude * double(i) / double(c.ramp));
+  if (c.step == WaveStep::standing) {
+    run_standing(c, r);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
   }
+  sim::wave::WaveLattice lattice(*c.kernels, sim::lattice_parameters(*c.model), r.theta);
+  const auto options = solver_options<sim::wave::TravellingWaveOptions>(c);
+  const std::vector<double> amplitudes = c.step == WaveStep::branch ? c.amplitudes : ramp_amplitudes(c);
   sim::wave::WaveBranch found = sim::wave::continue_travelling_wave(lattice, r.mode, amplitudes, options);
   r.waves = std::move(found.waves);
   r.failure = found.stopped;

@@ -8,8 +8,9 @@ namespace {
 std::vector<JobOption> make_options() {
   const WaveConfig d;
   const nlohmann::json none;
-  const std::vector<std::string> one{"solve", "stability", "fate"}, all{"solve", "continue", "stability", "fate"},
-      stable{"stability", "fate"}, fate{"fate"};
+  const std::vector<std::string> one{"solve", "stability", "fate", "standing"},
+      all{"solve", "continue", "stability", "fate", "standing"}, stable{"stability", "fate"}, fate{"fate"},
+      ring{"fate", "standing"};
   return {
       {"branch", "--branch", "branch", all, none, false,
        "the model's branch names (`lrchain derive` lists them: acoustic/optical or branch0, ...)",
@@ -36,8 +37,9 @@ std::vector<JobOption> make_options() {
        "perturbation wavenumbers K_i = pi (i/k_points)^2, i = 1..k_points (dense near K = 0)"},
       {"unstable_tolerance", "--unstable-tolerance", "unstable_tolerance", stable, d.unstable_tolerance, false,
        "(0, 1)", "Re lambda above this x omega counts as growth"},
-      {"ring_sites", "--ring-sites", "ring_sites", fate, d.ring_sites, false, "[8, 100000]",
-       "sites N of the ring the perturbed wave runs on; theta moves to the nearest 2 pi j / N"},
+      {"ring_sites", "--ring-sites", "ring_sites", ring, d.ring_sites, false, "[8, 100000]",
+       "sites N of the ring the perturbed wave runs on (fate) or the standing wave's Floquet multipliers are "
+       "computed on (standing); theta moves to the nearest 2 pi j / N"},
       {"noise", "--noise", "noise", fate, d.noise, false, "(0, 1)",
        "standard deviation of the noise added to every displacement, relative to A"},
       {"seed", "--seed", "seed", fate, d.seed, false, "[1, 2147483647]", "seed of the noise"},

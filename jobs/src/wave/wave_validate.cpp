@@ -7,6 +7,7 @@
 
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/wave_job.hpp"
+#include "wave_standing.hpp"
 
 namespace lrchain::jobs::wave {
 
@@ -60,6 +61,7 @@ void validate(const WaveConfig& c) {
     if (c.kernels->energy_density == nullptr)
       throw InvalidParameter("model", "the fate of a wave needs the lattice energy; this model's forces have none");
   }
+  if (c.step == WaveStep::standing) check_standing(c);
   if (c.format != "csv" && c.format != "hdf5") throw InvalidParameter("format", "must be csv or hdf5");
   std::error_code ec;
   if (!c.out.empty() && std::filesystem::exists(c.out, ec) && !std::filesystem::is_directory(c.out, ec))

@@ -10,6 +10,7 @@
 #include "lrchain/jobs/gnuplot_text.hpp"
 #include "lrchain/jobs/output_files.hpp"
 #include "lrchain/sim/wave/wave_nls.hpp"
+#include "wave_standing.hpp"
 
 namespace lrchain::jobs::wave {
 
@@ -113,6 +114,7 @@ json write(const WaveResult& r, const std::filesystem::path& out) {
   }
   if (r.stability) write_growth(r, dir, figures);
   if (r.fate) write_fate(r, dir, figures);
+  if (!r.standing.empty()) write_standing(r, dir, figures);
   figures.finish(j);
   if (r.config.format == "hdf5") write_wave_hdf5(out / "result.h5", summary);
   jobs::write_file_atomic(dir, "summary.json", j.dump(2) + "\n");

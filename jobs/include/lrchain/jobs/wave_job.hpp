@@ -18,6 +18,7 @@
 #include "lrchain/model.hpp"
 #include "lrchain/compiled_model_abi.h"
 #include "lrchain/sim/model_lattice_bloch.hpp"
+#include "lrchain/sim/wave/standing_wave.hpp"
 #include "lrchain/sim/wave/travelling_wave.hpp"
 #include "lrchain/sim/wave/wave_fate.hpp"
 #include "lrchain/sim/wave/wave_stability.hpp"
@@ -29,6 +30,7 @@ enum class WaveStep {
   branch,     // the branch omega(A) through `amplitudes` (`lrchain wave continue`)
   stability,  // solve, then the growth rate max Re lambda over K in (0, pi]
   fate,       // stability at the ring's theta, then the perturbed wave on a ring: what it becomes
+  standing,   // the standing wave (sum of the counter-propagating waves) at the ring's theta and its Floquet multipliers
 };
 
 // Every option of the job with its default and range (wave_options()); validate() names a refused one
@@ -50,7 +52,7 @@ struct WaveConfig {
   Index max_iterations = 30;          // Newton iterations per amplitude, in [1, 1000]
   Index k_points = 200;               // stability: K_i = pi (i/k_points)^2, i = 1..k_points, in [1, 100000]
   double unstable_tolerance = 1e-9;   // stability: Re lambda > this x omega is growth, in (0, 1)
-  Index ring_sites = 256;             // fate: sites N of the ring, theta moved to the nearest 2 pi j / N, in [8, 100000]
+  Index ring_sites = 256;             // fate, standing: sites N of the ring, theta moved to the nearest 2 pi j / N, in [8, 100000]
   double noise = 1e-4;                // fate: noise on every displacement, relative to A, in (0, 1)
   Index seed = 1;                     // fate: of the noise, in [1, 2^31)
   double periods = 0;                 // fate: carrier periods integrated, in [1, 1e6]; 0: auto_periods
@@ -77,6 +79,11 @@ struct WaveResult {
   std::optional<sim::wave::WaveStability> stability;
   double theta = 0;                        // the wave's theta: config.theta, or for fate the ring's nearest
   std::optional<sim::wave::WaveFateResult> fate;
+  // standing: the ramp of standing waves (the last at `amplitude`) on one spatial period of the ring, the
+  // reflection the model has, and the last wave's Floquet multipliers on the ring of ring_sites sites.
+  std::vector<sim::wave::StandingWave> standing;
+  std::optional<sim::wave::ReflectionSymmetry> reflection;
+  std::optional<sim::wave::StandingFloquet> standing_floquet;
   double seconds = 0;
 };
 

@@ -36,6 +36,7 @@ class CompiledLattice {
   bool periodic() const { return periodic_; }
   LatticeForm form() const { return form_; }
   const std::vector<double>& masses() const { return masses_; }
+  const std::vector<double>& parameters() const { return parameters_; }  // the model file's order
   const lrchain_lattice_kernels& kernels() const { return *kernels_; }
 
   // First-order system for Odeint: state [q q'] -> [q' q''].
