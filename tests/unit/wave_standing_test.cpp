@@ -119,7 +119,7 @@ TEST_CASE("wave standing: a ring run of the solved wave closes after one period"
   REQUIRE(!r.failure);
   const auto& w = r.standing.back();
   CHECK(r.reflection->sign == -1);  // u_f[n] -> -u_f[-n]: the strains mirror
-  sim::ModelLattice ring(sim::lattice_kernels_of(model), sim::lattice_parameters(model), w.sites, true,
+  sim::CompiledLattice ring(sim::lattice_kernels_of(model), sim::lattice_parameters(model), w.sites, true,
                          sim::LatticeForm::displacement);
   Eigen::VectorXd q;
   sim::wave::standing_positions(w, w.sites, 0.0, q);

@@ -25,8 +25,8 @@ Index ring_index(const WaveConfig& c) {
 // One spatial period of the standing wave: q = ring_sites / gcd(j, ring_sites) sites.
 Index period_sites(const WaveConfig& c) { return c.ring_sites / std::gcd(ring_index(c), c.ring_sites); }
 
-sim::ModelLattice ring_of(const WaveConfig& c, Index sites) {
-  return sim::ModelLattice(*c.kernels, sim::lattice_parameters(*c.model), sites, true, sim::LatticeForm::displacement);
+sim::CompiledLattice ring_of(const WaveConfig& c, Index sites) {
+  return sim::CompiledLattice(*c.kernels, sim::lattice_parameters(*c.model), sites, true, sim::LatticeForm::displacement);
 }
 
 }  // namespace
@@ -58,7 +58,7 @@ void check_standing(const WaveConfig& c) {
 }
 
 void run_standing(const WaveConfig& c, WaveResult& r) {
-  sim::ModelLattice period = ring_of(c, period_sites(c));
+  sim::CompiledLattice period = ring_of(c, period_sites(c));
   r.reflection = sim::wave::reflection_symmetry(ring_of(c, std::max<Index>(period_sites(c), 5)));
   sim::wave::StandingWaveBranch b = sim::wave::continue_standing_wave(
       period, r.mode, r.theta, ramp_amplitudes(c), solver_options<sim::wave::StandingWaveOptions>(c));
@@ -66,7 +66,7 @@ void run_standing(const WaveConfig& c, WaveResult& r) {
   r.failure = b.stopped;
   r.failed_at = b.stopped_at;
   if (r.failure) return;
-  sim::ModelLattice ring = ring_of(c, c.ring_sites);
+  sim::CompiledLattice ring = ring_of(c, c.ring_sites);
   r.standing_floquet = sim::wave::standing_floquet(ring, r.standing.back());
 }
 

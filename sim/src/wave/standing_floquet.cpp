@@ -10,7 +10,7 @@
 
 namespace lrchain::sim::wave {
 
-StandingFloquet standing_floquet(ModelLattice& ring, const StandingWave& wave, double tolerance) {
+StandingFloquet standing_floquet(CompiledLattice& ring, const StandingWave& wave, double tolerance) {
   const Index P = ring.positions(), columns = 2 * P;
   // Y = [X; V], X' = V, V' = J(u(t)) X, column-major 2P x 2P, from the identity.
   std::vector<double> y(std::size_t(columns * columns), 0.0);

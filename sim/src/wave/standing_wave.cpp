@@ -26,7 +26,7 @@ void reflect(const ReflectionSymmetry& r, Index fields, Index sites, const doubl
 
 // The least overlap s_n = offset + sum coefficient q[variable][n + shift] of the ring's one-sided
 // contacts at positions q (infinity without contacts).
-double least_overlap(const ModelLattice& ring, const Eigen::VectorXd& q) {
+double least_overlap(const CompiledLattice& ring, const Eigen::VectorXd& q) {
   const std::vector<double>& parameters = ring.parameters();
   const lrchain_lattice_contacts* contacts = ring.kernels().displacement_contacts;
   double least = std::numeric_limits<double>::infinity();
@@ -59,7 +59,7 @@ double cosine_tail(const Eigen::MatrixXd& c, double amplitude) {
 }
 
 // Gauss-Newton at fixed H from `c`, `omega`; returns the steps taken, or -1 when it did not converge.
-Index newton(ModelLattice& ring, double theta, double amplitude, bool mean_fixed, double scale,
+Index newton(CompiledLattice& ring, double theta, double amplitude, bool mean_fixed, double scale,
              const StandingWaveOptions& o, Eigen::MatrixXd& c, double& omega, double& residual) {
   const Index P = ring.positions(), N = ring.sites(), H = c.cols() - 1, unknowns = P * (H + 1) + 1;
   const Index rows = P * (H + 1) + 2 + (mean_fixed ? 1 : 0);
@@ -115,7 +115,7 @@ Index newton(ModelLattice& ring, double theta, double amplitude, bool mean_fixed
 
 }  // namespace
 
-std::optional<ReflectionSymmetry> reflection_symmetry(const ModelLattice& ring) {
+std::optional<ReflectionSymmetry> reflection_symmetry(const CompiledLattice& ring) {
   const Index F = ring.fields(), N = ring.sites(), P = ring.positions();
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> small(-1e-2, 1e-2);
@@ -154,7 +154,7 @@ void standing_positions(const StandingWave& wave, Index sites, double t, Eigen::
     }
 }
 
-StandingWave solve_standing_wave(ModelLattice& ring, const BlochMode& mode, double theta, double amplitude,
+StandingWave solve_standing_wave(CompiledLattice& ring, const BlochMode& mode, double theta, double amplitude,
                                  const StandingWaveOptions& o, const StandingWave* seed) {
   const Index F = ring.fields(), N = ring.sites(), P = ring.positions();
   StandingWave w;
@@ -218,7 +218,7 @@ StandingWave solve_standing_wave(ModelLattice& ring, const BlochMode& mode, doub
   return w;
 }
 
-StandingWaveBranch continue_standing_wave(ModelLattice& ring, const BlochMode& mode, double theta,
+StandingWaveBranch continue_standing_wave(CompiledLattice& ring, const BlochMode& mode, double theta,
                                           const std::vector<double>& amplitudes, const StandingWaveOptions& o) {
   StandingWaveBranch b;
   for (double amplitude : amplitudes) {

@@ -28,7 +28,7 @@ struct ReflectionSymmetry {
 
 // The reflection the ring's accelerations commute with (sign +-1, offsets in {-1, 0, 1}), tried at a
 // random small state; nullopt when there is none (no standing wave: the model is not symmetric).
-std::optional<ReflectionSymmetry> reflection_symmetry(const ModelLattice& ring);
+std::optional<ReflectionSymmetry> reflection_symmetry(const CompiledLattice& ring);
 
 struct StandingWaveOptions {
   Index initial_harmonics = 8;      // H: cosines cos(k omega t), k = 0..H
@@ -52,7 +52,7 @@ struct StandingWave {
 // The standing wave of `amplitude` on `ring` (periodic, displacement form, theta = 2 pi j / sites) on the
 // branch of `mode`, seeded by `seed` or the linear standing wave. Throws NumericalFailure (Newton does
 // not converge, the harmonics do not decay, a contact opens).
-StandingWave solve_standing_wave(ModelLattice& ring, const BlochMode& mode, double theta, double amplitude,
+StandingWave solve_standing_wave(CompiledLattice& ring, const BlochMode& mode, double theta, double amplitude,
                                  const StandingWaveOptions& options = {}, const StandingWave* seed = nullptr);
 
 struct StandingWaveBranch {
@@ -61,7 +61,7 @@ struct StandingWaveBranch {
   std::optional<double> stopped_at;
 };
 // The branch through increasing `amplitudes`, each wave seeding the next; stops at the first refusal.
-StandingWaveBranch continue_standing_wave(ModelLattice& ring, const BlochMode& mode, double theta,
+StandingWaveBranch continue_standing_wave(CompiledLattice& ring, const BlochMode& mode, double theta,
                                           const std::vector<double>& amplitudes, const StandingWaveOptions& options = {});
 
 // The wave's positions u_f[n](t) at time t on a ring of `sites` (a multiple of wave.sites; fields x sites,
@@ -75,6 +75,6 @@ struct StandingFloquet {
   double largest_modulus = 0;
   bool stable = true;                             // largest_modulus <= 1 + tolerance
 };
-StandingFloquet standing_floquet(ModelLattice& ring, const StandingWave& wave, double tolerance = 1e-6);
+StandingFloquet standing_floquet(CompiledLattice& ring, const StandingWave& wave, double tolerance = 1e-6);
 
 }  // namespace lrchain::sim::wave
