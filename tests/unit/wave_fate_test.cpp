@@ -45,6 +45,11 @@ TEST_CASE("wave fate: a stable wave stays, an unstable one breaks up when the co
   CHECK(calm.fate->max_relative_energy_drift < 1e-10);  // srkn11b, symplectic
   CHECK(calm.fate->entropy.front() == doctest::Approx(std::log(2.0) / std::log(64.0)).epsilon(0.02));
   CHECK(calm.theta == doctest::Approx(2 * std::numbers::pi * 5 / 64));  // the ring's nearest 2 pi j / N
+  // The JSON's theta is the wave's (the ring's), the request beside it; fate records the stability options.
+  const auto j = to_json(calm);
+  CHECK(j["theta"].get<double>() == calm.theta);
+  CHECK(j["requested_theta"].get<double>() == 0.5);
+  CHECK(j["options"]["k_points"].get<Index>() == 40);
 
   // theta = 2.5, A = 0.3: modulationally unstable (measured 96.8 vs a predicted 80.5 on 128 sites)
   const WaveResult broken = run(fate_of(fput, 2.5, 0.3));

@@ -50,14 +50,15 @@ json to_json(const WaveResult& r) {
   j["model"] = model_json(*c.model);
   j["step"] = step_name(c.step);
   j["branch"] = r.branch;
-  j["theta"] = c.theta;
+  j["theta"] = r.theta;  // the wave's: for fate and standing the ring's nearest 2 pi j / N
+  j["requested_theta"] = c.theta;
   j["options"] = {{"initial_harmonics", c.initial_harmonics}, {"max_harmonics", c.max_harmonics},
                   {"tail_tolerance", c.tail_tolerance},       {"tolerance", c.tolerance},
                   {"max_iterations", c.max_iterations}};
   if (c.step == WaveStep::branch) j["options"]["amplitudes"] = c.amplitudes;
   else j["options"].update({{"amplitude", c.amplitude}, {"ramp", c.ramp}});
   if (c.step == WaveStep::standing) j["options"]["ring_sites"] = c.ring_sites;
-  if (c.step == WaveStep::stability)
+  if (c.step == WaveStep::stability || c.step == WaveStep::fate)  // fate runs the stability step first
     j["options"].update({{"k_points", c.k_points}, {"unstable_tolerance", c.unstable_tolerance}});
   j["linear"] = {{"omega", r.mode.omega}};
   j["nls"] = {{"omega", r.nls.omega},         {"group_velocity", r.nls.group_velocity},
