@@ -62,6 +62,18 @@ TEST_CASE("wave fate: a stable wave stays, an unstable one breaks up when the co
   CHECK(broken.fate->fate != sim::wave::WaveFate::intact);
   CHECK(broken.fate->t.size() == 401);
 
+  // Too few steps per period: the energy drifts (2.4e-4 measured at 8 steps vs 1.4e-10 at 40, for
+  // A = 1.5 on 32 sites); the fate is refused as the ring run's failure, not classified.
+  WaveConfig coarse = fate_of(fput, 2.5, 1.5);
+  coarse.ring_sites = 32;
+  coarse.periods = 50;
+  coarse.steps_per_period = 8;
+  const WaveResult drifted = run(coarse);
+  CHECK(drifted.ring_run_failed);
+  REQUIRE(drifted.failure);
+  CHECK(drifted.failure->find("energy drift") != std::string::npos);
+  CHECK_FALSE(drifted.fate);
+
   // refusals name their key
   WaveConfig bad = fate_of(fput, 2.5, 0.3);
   bad.ring_sites = 4;

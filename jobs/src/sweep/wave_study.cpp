@@ -149,6 +149,12 @@ JobResult run_wave(std::string_view kind, const Document& doc, const CheckedTabl
   c.stop = stop;
   const jobs::wave::WaveResult w = jobs::wave::run(c);
   JobResult r;
+  if (w.ring_run_failed) {  // the wave exists: its ring run blew up (status blew_up) or drifted
+    const bool blew_up = w.failure->find("blew up") != std::string::npos;
+    r.status = blew_up ? PointStatus::blew_up : PointStatus::numerical_failure;
+    r.reason = "the fate's ring run: " + *w.failure;
+    return r;
+  }
   if (w.failure || !w.stability) {
     r.status = PointStatus::numerical_failure;
     r.reason = fmt::format("no wave at amplitude {}: {}", w.failed_at.value_or(c.amplitude), w.failure.value_or("no stability"));

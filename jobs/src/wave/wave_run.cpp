@@ -63,6 +63,7 @@ WaveResult run(const WaveConfig& c) {
     } catch (const NumericalFailure& e) {
       r.failure = e.what();
       r.failed_at = c.amplitude;
+      r.ring_run_failed = true;
     }
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
