@@ -33,14 +33,21 @@ WaveConfig fate_of(const Model& model, double theta, double amplitude) {
 
 }  // namespace
 
-TEST_CASE("wave fate: a stable wave stays, an unstable one breaks up when the computed growth says" *
+TEST_CASE("wave fate: a calm wave stays, an unstable one breaks up when the ring's growth says" *
           doctest::test_suite("fast")) {
   const Model fput = shipped_model("fput");
-  // theta = 0.5: the NLS is defocusing and the spectrum has no growth at A = 0.03
+  // theta = 0.5 (2 pi 5/64 on the ring): the NLS is defocusing, and the 40-point K grid finds no
+  // growth at A = 0.03. The ring's own K = 2 pi m / 64 find the narrow band that the grid misses: a
+  // 2000-point scan (lrchain wave stability --k-points 2000) puts it on [1.0788, 1.0843] with its peak
+  // 5.05e-5 at K = 1.0819, and the ring holds K = 2 pi 11/64 = 1.0799 inside it. Over 400 periods that
+  // grows e^0.2, so the wave stays intact, not "stable".
   const WaveResult calm = run(fate_of(fput, 0.5, 0.03));
   REQUIRE(calm.fate);
   CHECK(calm.stability->stable);
-  CHECK(calm.fate->fate == sim::wave::WaveFate::stable);
+  CHECK(calm.ring_growth.at_k == doctest::Approx(2 * std::numbers::pi * 11 / 64).epsilon(1e-12));
+  CHECK(calm.ring_growth.rate > 3e-5);
+  CHECK(calm.ring_growth.rate < 5.06e-5);
+  CHECK(calm.fate->fate == sim::wave::WaveFate::intact);
   CHECK(calm.fate->broke_at < 0);
   CHECK(calm.fate->max_relative_energy_drift < 1e-10);  // srkn11b, symplectic
   CHECK(calm.fate->entropy.front() == doctest::Approx(std::log(2.0) / std::log(64.0)).epsilon(0.02));
@@ -55,7 +62,12 @@ TEST_CASE("wave fate: a stable wave stays, an unstable one breaks up when the co
   const WaveResult broken = run(fate_of(fput, 2.5, 0.3));
   REQUIRE(broken.fate);
   REQUIRE(!broken.stability->stable);
-  const double predicted = std::log(sim::wave::kBrokenDeviation / 1e-4) / broken.stability->largest_rate;
+  // The prediction takes the largest rate among the K = 2 pi m / 64 the ring holds, at most the
+  // continuous spectrum's largest.
+  REQUIRE(broken.ring_growth.rate > 0);
+  CHECK(broken.ring_growth.rate <= broken.stability->largest_rate * (1 + 1e-12));
+  CHECK(std::remainder(broken.ring_growth.at_k * 64 / (2 * std::numbers::pi), 1.0) == doctest::Approx(0).scale(1));
+  const double predicted = std::log(sim::wave::kBrokenDeviation / 1e-4) / broken.ring_growth.rate;
   CHECK(broken.fate->broke_at > 0.8 * predicted);
   CHECK(broken.fate->broke_at < 1.5 * predicted);
   CHECK(broken.fate->fate != sim::wave::WaveFate::stable);

@@ -103,7 +103,7 @@ json to_json(const WaveResult& r) {
   }
   if (r.fate) {
     const auto& f = *r.fate;
-    const double rate = r.stability ? r.stability->largest_rate : 0;
+    const double rate = r.ring_growth.rate;  // among the K the ring holds
     j["fate"] = {{"fate", std::string(sim::wave::to_string(f.fate))},
                  {"ring_sites", c.ring_sites},
                  {"ring_theta", r.theta},
@@ -114,6 +114,8 @@ json to_json(const WaveResult& r) {
                  {"broke_at", f.broke_at < 0 ? json(nullptr) : json(f.broke_at)},
                  // the noise grows e^{rate t} from c.noise to the breakup deviation (the Floquet-Bloch prediction)
                  {"predicted_breakup", rate > 0 ? json(std::log(sim::wave::kBrokenDeviation / c.noise) / rate) : json(nullptr)},
+                 {"ring_largest_rate", rate},
+                 {"ring_at_k", rate > 0 ? json(r.ring_growth.at_k) : json(nullptr)},
                  {"participation_end", f.participation_end},
                  {"entropy_end", f.entropy_end},
                  {"structures", f.structures},

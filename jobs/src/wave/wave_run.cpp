@@ -55,7 +55,9 @@ WaveResult run(const WaveConfig& c) {
     fo.ring_sites = c.ring_sites;
     fo.noise = c.noise;
     fo.seed = std::uint64_t(c.seed);
-    fo.growth_rate = r.stability->stable ? 0.0 : r.stability->largest_rate;
+    // Only the K = 2 pi m / N the ring holds can grow there: the prediction and the run length use those.
+    r.ring_growth = sim::wave::ring_growth(lattice, r.waves.back(), c.ring_sites, c.unstable_tolerance);
+    fo.growth_rate = r.ring_growth.rate;
     fo.periods = c.periods > 0 ? c.periods : auto_periods(r.waves.back().omega, fo.growth_rate, c.noise);
     fo.steps_per_period = c.steps_per_period;
     try {

@@ -45,6 +45,17 @@ Eigen::VectorXcd BlochSpectrum::eigenvalues(double K) {
 
 double BlochSpectrum::growth_rate(double K) { return eigenvalues(K).real().maxCoeff(); }
 
+RingGrowth ring_growth(WaveLattice& lattice, const TravellingWave& wave, Index sites, double unstable_tolerance) {
+  BlochSpectrum spectrum(lattice, wave);
+  RingGrowth r;
+  for (Index m = 1; 2 * m <= sites; ++m) {
+    const double K = 2 * std::numbers::pi * double(m) / double(sites);
+    const double rate = spectrum.growth_rate(K);
+    if (rate > unstable_tolerance * wave.omega && rate > r.rate) r = {rate, K};
+  }
+  return r;
+}
+
 WaveStability wave_stability(WaveLattice& lattice, const TravellingWave& wave, const WaveStabilityOptions& o) {
   BlochSpectrum spectrum(lattice, wave);
   WaveStability r;

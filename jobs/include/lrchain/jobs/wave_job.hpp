@@ -77,6 +77,7 @@ struct WaveResult {
   std::optional<std::string> failure;      // no wave at an amplitude: the reason (the CLI's exit 3)
   std::optional<double> failed_at;         // that amplitude
   bool ring_run_failed = false;            // fate: the wave was found, its ring run failed (failure says why)
+  sim::wave::RingGrowth ring_growth;       // fate: the largest rate among the ring's K = 2 pi m / N (the prediction's)
   std::optional<sim::wave::WaveStability> stability;
   double theta = 0;                        // the wave's theta: config.theta, or for fate the ring's nearest
   std::optional<sim::wave::WaveFateResult> fate;

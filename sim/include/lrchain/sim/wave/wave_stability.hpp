@@ -48,4 +48,11 @@ class BlochSpectrum {
 // Growth rate over K in (0, pi], the unstable bands and the largest rate with its K.
 WaveStability wave_stability(WaveLattice& lattice, const TravellingWave& wave, const WaveStabilityOptions& options = {});
 
+// The largest growth rate among the perturbations a ring of `sites` sites holds, K = 2 pi m / sites
+// (m = 1..sites/2), and its K; rate 0 (K 0) when none exceeds unstable_tolerance x omega.
+struct RingGrowth {
+  double rate = 0, at_k = 0;
+};
+RingGrowth ring_growth(WaveLattice& lattice, const TravellingWave& wave, Index sites, double unstable_tolerance);
+
 }  // namespace lrchain::sim::wave
