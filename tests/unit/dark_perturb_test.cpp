@@ -15,14 +15,14 @@ using namespace lrchain;
 using namespace lrchain::jobs::dark;
 
 namespace {
-DarkConfig evolve_config(const Model& model, const std::string& perturb) {
+DarkConfig evolve_config(const Model& model, const std::string& perturb, double omega_b = 1.586) {
   DarkConfig c;
   c.step = DarkStep::evolve;
   c.model = &model;
   c.kernels = sim::shipped_lattice_kernels("klein_gordon");
-  // klein_gordon, b = -1/2, C = 1/2: real instability at omega_b = 1.586 (dark continue's Floquet
+  // klein_gordon (C = 1/2 in the unstable cases): real instability at omega_b = 1.586 (dark continue's Floquet
   // multipliers: max |lambda| = 1.0724 at 1.5861 on 61 sites).
-  c.omega_b = 1.586;
+  c.omega_b = omega_b;
   c.sites = 31;
   c.t_end = 60;  // 15 periods of T_b = 3.96
   c.perturb = perturb;
@@ -74,15 +74,8 @@ TEST_CASE("dark evolve --perturb unstable on a stable breather: refused naming p
   // klein_gordon, b = -1/2 (C = 1/10, its default) at omega_b = 1.17: Floquet stable (docs/dark-models.md,
   // max|lambda| = 1.0002 from the symmetry multipliers at +1), so no multiplier gives a direction that grows.
   const Model model = shipped_model("klein_gordon", {{"b", -0.5}});
-  DarkConfig c;
-  c.step = DarkStep::evolve;
-  c.model = &model;
-  c.kernels = sim::shipped_lattice_kernels("klein_gordon");
-  c.omega_b = 1.17;
-  c.sites = 31;
+  DarkConfig c = evolve_config(model, "unstable", 1.17);
   c.t_end = 10;
-  c.perturb = "unstable";
-  c.perturb_size = 1e-6;
   validate(c);  // a valid Config: the refusal needs the solved breather's multipliers
   try {
     (void)run(c);
