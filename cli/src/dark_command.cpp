@@ -102,7 +102,13 @@ void run_job(const DarkArgs& a, DarkConfig config) {
   }
   std::optional<StopSignals> signals;  // a branch or an evolution stops at a point/period; a solve at once
   if (config.step == DarkStep::branch || config.step == DarkStep::evolve) signals.emplace();
-  const DarkResult r = run(config, progress_hooks(a));
+  const DarkResult r = [&] {
+    try {
+      return run(config, progress_hooks(a));
+    } catch (const InvalidParameter& e) {  // a refusal that needs the solution (perturb unstable on a stable breather)
+      throw option_spelling(e);
+    }
+  }();
   if (config.step == DarkStep::evolve && r.newton.converged && r.evolution.periods.empty())
     throw Interrupted(StopSignals::received(), "interrupted before the first period");
   const nlohmann::json j = config.out.empty() ? to_json(r) : write(r, config.out);

@@ -54,6 +54,9 @@ TEST_CASE("dark --model: bad input exits 2 with one line, nothing written" * doc
                  "--t-end", "1"}, "t-end");
   check_refused({"dark", "continue", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b", "1.17",
                  "--omega-min", "1.2"}, "omega-min");
+  // A stable breather (docs/dark-models.md: Floquet stable at omega_b = 1.17) has no unstable direction.
+  check_refused({"dark", "evolve", "--model", "models/klein_gordon.toml", "--set", "b=-1/2", "--omega-b", "1.17",
+                 "--sites", "31", "--t-end", "10", "--perturb", "unstable"}, "perturb: unstable needs an unstable breather");
   check_refused({"dark", "solve", "--set", "rho=1", "--omega-b", "2.44"}, "--model");
   check_refused({"dark", "solve", "--omega-b", "2.44", "--branch", "middle"}, "branch");
 }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "lrchain/errors.hpp"
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/model_lattice.hpp"
@@ -14,14 +15,14 @@ using namespace lrchain;
 using namespace lrchain::jobs::dark;
 
 namespace {
-DarkConfig evolve_config(const Model& model, const std::string& perturb) {
+DarkConfig evolve_config(const Model& model, const std::string& perturb, double omega_b = 1.586) {
   DarkConfig c;
   c.step = DarkStep::evolve;
   c.model = &model;
   c.kernels = sim::shipped_lattice_kernels("klein_gordon");
-  // klein_gordon, b = -1/2, C = 1/2: real instability at omega_b = 1.586 (dark continue's Floquet
+  // klein_gordon (C = 1/2 in the unstable cases): real instability at omega_b = 1.586 (dark continue's Floquet
   // multipliers: max |lambda| = 1.0724 at 1.5861 on 61 sites).
-  c.omega_b = 1.586;
+  c.omega_b = omega_b;
   c.sites = 31;
   c.t_end = 60;  // 15 periods of T_b = 3.96
   c.perturb = perturb;
@@ -67,4 +68,22 @@ TEST_CASE("dark evolve --perturb random: the seed fixes the perturbation, size i
   CHECK(a.perturbation.vector.tail(31).isZero());  // velocities unperturbed
   CHECK(a.evolution.snapshots.front() == a.z0 + a.perturbation.vector.head(31));
   CHECK(to_json(a)["perturbation"]["seed"] == 7);
+}
+
+TEST_CASE("dark evolve --perturb unstable on a stable breather: refused naming perturb" * doctest::test_suite("fast")) {
+  // klein_gordon, b = -1/2 (C = 1/10, its default) at omega_b = 1.17: Floquet stable (docs/dark-models.md,
+  // max|lambda| = 1.0002 from the symmetry multipliers at +1), so no multiplier gives a direction that grows.
+  const Model model = shipped_model("klein_gordon", {{"b", -0.5}});
+  DarkConfig c = evolve_config(model, "unstable", 1.17);
+  c.t_end = 10;
+  validate(c);  // a valid Config: the refusal needs the solved breather's multipliers
+  try {
+    (void)run(c);
+    FAIL("perturb unstable ran on a stable breather");
+  } catch (const InvalidParameter& e) {
+    CHECK(e.parameter() == "perturb");
+    CHECK(std::string(e.what()).find("use perturb random") != std::string::npos);
+  }
+  c.perturb = "random";  // the same breather with a random perturbation runs
+  CHECK_FALSE(failure(run(c)).has_value());
 }

@@ -1,5 +1,6 @@
 // run(DarkConfig): Newton from the seed on the resonant chain's shooting (eq:xy_app) or a model's,
 // then the step asked for: measures and Floquet multipliers, the branch, or the evolution.
+#include <cmath>
 #include <numbers>
 #include <optional>
 
@@ -11,7 +12,10 @@
 #include "lrchain/dispersion.hpp"
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/sim/dark/dark_ansatz.hpp"
+#include "lrchain/errors.hpp"
 #include "lrchain/sim/dark/dark_shape.hpp"
+#include "lrchain/sim/dark/floquet.hpp"
+#include "lrchain/sim/dark/perturbation.hpp"
 #include "lrchain/sim/dark/lattice_reflection.hpp"
 #include "lrchain/sim/dark/parameter_shooting.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
@@ -23,6 +27,18 @@ namespace lrchain::jobs::dark {
 using namespace lrchain::sim::dark;
 
 namespace {
+
+// perturb unstable needs an instability: on a stable breather (Floquet classification, symmetry
+// multipliers at +1 excluded) the leading eigenvector is a neutral mode and nothing would grow, so it
+// is refused naming perturb.
+DarkPerturbation unstable_perturbation_of(const Eigen::MatrixXd& monodromy, double size) {
+  const FloquetResult floquet = floquet_from_monodromy(monodromy);
+  if (floquet.kind() == "stable")
+    throw InvalidParameter("perturb", fmt::format("unstable needs an unstable breather, this one is stable (no Floquet "
+                                                  "multiplier off the unit circle, max|lambda| = {:.8g}): use perturb random",
+                                                  floquet.max_modulus));
+  return unstable_perturbation(monodromy, size);
+}
 
 // The continuation's options from the config. A model's arclength weighs the unknowns so that ds is a
 // step of about ds in the parameter, its chord corrector refreshes below 10x contraction
@@ -77,7 +93,7 @@ void run_chain(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
         Eigen::MatrixXd jacobian, monodromy;
         const ResonantChainShooting full(c.params, *c.sites, center, ShootingMode::full, shooting.integration());
         full.evaluate(full.unknowns_from_z(r.z0), c.omega_b, residual, &jacobian, &monodromy);
-        r.perturbation = unstable_perturbation(monodromy, c.perturb_size);
+        r.perturbation = unstable_perturbation_of(monodromy, c.perturb_size);
       } else if (c.perturb == "random") {
         r.perturbation = random_perturbation(r.z0.size(), c.perturb_size, c.seed);
       }
@@ -200,7 +216,7 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
   r.contact_changes_per_period = shooting.contact_changes_per_period(r.z0, c.omega_b);
   if (c.step == DarkStep::evolve) {
     if (c.perturb == "unstable")
-      r.perturbation = unstable_perturbation(shooting.monodromy(r.z0, c.omega_b), c.perturb_size);
+      r.perturbation = unstable_perturbation_of(shooting.monodromy(r.z0, c.omega_b), c.perturb_size);
     else if (c.perturb == "random")
       r.perturbation = random_perturbation(r.z0.size(), c.perturb_size, c.seed);
     r.evolution = evolve_dark_orbit(shooting.advance(), r.z0, *c.sites, c.omega_b, c.t_end, c.samples, hooks.stop,
