@@ -1,4 +1,4 @@
-// `lrchain bright solve|floquet`: exact bright breathers of any model file (the paper's chain by
+// `lrchain bright solve|floquet|continue|evolve`: exact bright breathers of any model file (the paper's chain by
 // default), the job of lrchain/jobs/bright_breather_job.hpp on the command line: options ->
 // BrightBreatherConfig, the result -> JSON on stdout and the exit code; Newton progress on stderr,
 // files in --out.
@@ -108,8 +108,27 @@ void register_bright(CLI::App& app) {
   add_number(*cont, "--unit-tolerance", args->config.unit_tolerance, bright_help("unit_tolerance"));
   add_integer(*cont, "--points", args->config.points, config::dark_points.least, config::dark_points.most, bright_help("points"));
   add_number(*cont, "--ds", args->config.ds, bright_help("ds"));
-  add_examples(*cont, {"lrchain bright continue --model klein_gordon --omega-b 1.19 --sites 61 --points 10 --out out/bright-branch"});
+  cont->add_option("--parameter", args->config.parameter, bright_help("parameter"))->type_name("NAME");
+  cont->add_option_function<std::string>(
+          "--to", [args](const std::string& text) { args->config.to = parse_number(text, "to"); }, bright_help("to"))
+      ->type_name("NUM");
+  add_examples(*cont, {"lrchain bright continue --model klein_gordon --omega-b 1.19 --sites 61 --points 10 --out out/bright-branch",
+                       "lrchain bright continue --model klein_gordon --set a=0 --omega-b 1.1 --sites 21 --parameter C --to 0.001"});
   cont->callback([args, cont] { run_job(*args, BrightStep::branch, *cont); });
+  auto* evo = bright->add_subcommand(
+      "evolve", "Solve, then integrate the breather over --periods periods: profile and energy drift, or the growth "
+                "rate of a perturbation against the largest Floquet multiplier's");
+  add_common(*evo, *args);
+  add_number(*evo, "--unit-tolerance", args->config.unit_tolerance, bright_help("unit_tolerance"));
+  add_integer(*evo, "--periods", args->config.periods, 1, 1'000'000, bright_help("periods"));
+  evo->add_option("--perturb", args->config.perturb, bright_help("perturb"))
+      ->check(CLI::IsMember({"none", "unstable", "random"}).description(""))
+      ->type_name("none|unstable|random");
+  add_number(*evo, "--perturb-size", args->config.perturb_size, bright_help("perturb_size"));
+  evo->add_option("--seed", args->config.seed, bright_help("seed"))->type_name("N");
+  add_examples(*evo, {"lrchain bright evolve --model fput --set a=0 --center site --omega-b 2.2 --sites 41 --periods 40 "
+                      "--perturb unstable --out out/bright-evolve"});
+  evo->callback([args, evo] { run_job(*args, BrightStep::evolve, *evo); });
 }
 
 }  // namespace lrchain::cli

@@ -1,12 +1,16 @@
 #pragma once
 // What the dark and bright breather jobs share about a model's lattice and their output directory.
+#include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "lrchain/checked_number.hpp"
 #include "lrchain/errors.hpp"
+#include "lrchain/model.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
 
 namespace lrchain::jobs {
@@ -30,6 +34,26 @@ inline void check_output_directory(const sim::ResourceEstimate& e, const std::st
   if (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
     throw InputError("--out '" + out + "' exists and is not a directory");
   sim::check_output_space(e, out, "out", "choose another --out");
+}
+
+// A continuation in the model parameter `parameter` (not omega_b) towards `to`: InvalidParameter naming
+// parameter (not one of the model's) or to (missing, not finite, outside the parameter's range or at
+// its present value). Shared by `dark continue` and `bright continue`.
+inline void check_continued_parameter(const Model& model, const std::string& parameter, const std::optional<double>& to) {
+  const auto& parameters = model.definition().parameters;
+  const auto found = std::find_if(parameters.begin(), parameters.end(),
+                                  [&](const ModelParameter& p) { return p.name == parameter; });
+  if (found == parameters.end()) {
+    std::string names = "omega_b";
+    for (const auto& p : parameters) names += ", " + p.name;
+    throw InvalidParameter("parameter", fmt::format("must be omega_b or a parameter of {} ({}), got '{}'",
+                                                    model.name(), names, parameter));
+  }
+  if (!to) throw InvalidParameter("to", "is required with parameter " + parameter + " (where the continuation ends)");
+  checked_finite(*to, "to");
+  if (!found->contains(*to) || *to == model.parameter(parameter))
+    throw InvalidParameter("to", fmt::format("must lie in the range {} of {} and differ from its value {:g}",
+                                             found->range_text, parameter, model.parameter(parameter)));
 }
 
 }  // namespace lrchain::jobs

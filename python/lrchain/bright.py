@@ -132,7 +132,8 @@ def _model(model):
 
 # The job's result as a dict (its JSON summary, Z(0) and the seed as arrays; branch_z for a branch).
 def _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance, step,
-         points=_D["points"], ds=_D["ds"], branch_floquet=_D["floquet"]):
+         points=_D["points"], ds=_D["ds"], branch_floquet=_D["floquet"], periods=_D["periods"],
+         perturb=_D["perturb"], perturb_size=_D["perturb_size"], seed=_D["seed"], parameter=_D["parameter"], to=None):
     model = _model(model)
     if omega_b is None:
         from .errors import InvalidParameterError
@@ -141,7 +142,7 @@ def _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_
                                     "edge of the model)", "omega_b")
     return python_names(lambda: _lrchain.bright_breather_solve(
         model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance, step, points,
-        ds, branch_floquet))
+        ds, branch_floquet, periods, perturb, perturb_size, seed, parameter, to))
 
 
 @documented(_SECTION)
@@ -191,7 +192,8 @@ class BrightBranch:
     ``turning_points``, the non-resonant ``window`` (low, high; high None when unbounded), ``stop_reason``,
     ``bifurcations`` (dicts: kind fold | branch_point | period_doubling | krein_collision, index, omega_b,
     norm_squared, omega_low, omega_high) and ``krein`` (per point a list of dicts angle, modulus,
-    signature for the multipliers on the upper unit circle; None in strain form or without Floquet).
+    signature for the multipliers on the upper unit circle; None in strain form or without Floquet), the
+    continued ``parameter`` (omega_b or a model parameter at fixed omega_b) and its ``values`` per point.
     ``to_hdf5(path)`` writes the file ``lrchain bright continue --format hdf5`` writes (:mod:`lrchain.hdf5`);
     :func:`lrchain.load` reads it back; ``to_xarray()`` gives a Dataset on ``point``."""
 
@@ -208,6 +210,8 @@ class BrightBranch:
     stop_reason: str
     bifurcations: list
     krein: list
+    parameter: str = "omega_b"
+    values: np.ndarray = None
 
     def to_hdf5(self, path):
         """Writes the branch with the C++ job layer's writer (layout: :mod:`lrchain.hdf5`)."""
@@ -222,9 +226,12 @@ class BrightBranch:
 @real_numbers
 def continue_branch(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"],
                     tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], tail_tolerance=_D["tail_tolerance"],
-                    unit_tolerance=_D["unit_tolerance"], points=_D["points"], ds=_D["ds"], floquet=_D["floquet"]):
+                    unit_tolerance=_D["unit_tolerance"], points=_D["points"], ds=_D["ds"], floquet=_D["floquet"],
+                    parameter=_D["parameter"], to=None):
     """Solve, then pseudo-arclength continuation in omega_b away from the band edge within the window where
-    no harmonic meets a band, each point checked to be a localized breather; returns :class:`BrightBranch`.
+    no harmonic meets a band (or to ``to``), or with ``parameter`` a model parameter at fixed omega_b from
+    its value to ``to`` (e.g. the coupling ``C`` of klein_gordon towards the anti-continuum limit), each
+    point checked to be a localized breather; returns :class:`BrightBranch`.
 
     Example::
 
@@ -234,7 +241,7 @@ def continue_branch(model=None, omega_b=None, branch=None, center=_D["center"], 
         (4, True)
     """
     d = _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance,
-             "continue", points, ds, floquet)
+             "continue", points, ds, floquet, parameter=parameter, to=to)
     return _branch(d)
 
 
@@ -249,4 +256,59 @@ def _branch(d):
         norm_squared=np.array([p["norm_squared"] for p in rows]), width=np.array([p["width"] for p in rows]),
         stable=[p["stable"] for p in rows], max_nontrivial_modulus=[p["max_nontrivial_modulus"] for p in rows],
         z=z, turning_points=b["turning_points"], window=tuple(b["window"]),
-        stop_reason=b["stop_reason"], bifurcations=b["bifurcations"], krein=[p["krein"] for p in rows])
+        stop_reason=b["stop_reason"], bifurcations=b["bifurcations"], krein=[p["krein"] for p in rows],
+        parameter=b["parameter"], values=np.array([p[b["parameter"]] for p in rows]))
+
+
+@dataclass(frozen=True, repr=False)
+class BrightEvolution:
+    """An exact bright breather integrated on its lattice (``lrchain bright evolve``): the ``breather`` (a
+    :class:`BrightBreather` with its ``floquet``), per period m = 0..periods the time ``t`` = m T_b, the
+    ``deviation`` max|[Z, Zdot](t) - [Z(0), 0]| and the lattice ``energy``; ``profile_drift`` (max
+    deviation / peak over m >= 1), ``energy_drift`` (max |E - E(0)| / |E(0)|), the measured
+    ``growth_rate`` of ln(deviation) (None when it saturates within 3 periods) beside the
+    ``predicted_growth_rate`` ln(max |lambda|) / T_b, and the ``perturbation`` (dict, or None)."""
+
+    breather: BrightBreather
+    t: np.ndarray
+    deviation: np.ndarray
+    energy: np.ndarray
+    profile_drift: float
+    energy_drift: float
+    growth_rate: float
+    predicted_growth_rate: float
+    perturbation: dict
+
+    def __repr__(self):
+        return (f"BrightEvolution({len(self.t) - 1} periods, profile drift {self.profile_drift:.3g}, growth rate "
+                f"{self.growth_rate} (predicted {self.predicted_growth_rate:.6g}))")
+
+
+@documented(_SECTION)
+@real_numbers
+def evolve(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], tolerance=_D["tolerance"],
+           max_iterations=_D["max_iterations"], tail_tolerance=_D["tail_tolerance"],
+           unit_tolerance=_D["unit_tolerance"], periods=_D["periods"], perturb=_D["perturb"],
+           perturb_size=_D["perturb_size"], seed=_D["seed"]):
+    """Solve, Floquet, then integrate the breather (plus a perturbation: ``perturb`` none | unstable |
+    random) over ``periods`` periods; returns :class:`BrightEvolution`. ``perturb="unstable"`` on a stable
+    breather raises :class:`lrchain.InvalidParameterError` naming ``perturb``.
+
+    The FPU chain's Sievers-Takeno mode departs at the rate its unstable multiplier predicts.
+
+    Example::
+
+        >>> import lrchain
+        >>> e = lrchain.bright.evolve(lrchain.load_model("fput", a=0), omega_b=2.2, center="site", sites=41,
+        ...                           periods=30, perturb="unstable")
+        >>> bool(abs(e.growth_rate / e.predicted_growth_rate - 1) < 0.05)
+        True
+    """
+    d = _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance,
+             "evolve", periods=periods, perturb=perturb, perturb_size=perturb_size, seed=seed)
+    t, deviation, energy = d.pop("evolution_t"), d.pop("evolution_deviation"), d.pop("evolution_energy")
+    e = d["evolution"]
+    return BrightEvolution(breather=_breather(d), t=t, deviation=deviation, energy=energy,
+                           profile_drift=e["profile_drift"], energy_drift=e["energy_drift"],
+                           growth_rate=e["growth_rate"], predicted_growth_rate=e["predicted_growth_rate"],
+                           perturbation=e["perturbation"])

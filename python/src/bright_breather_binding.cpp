@@ -1,10 +1,12 @@
-// lrchain.bright.solve|floquet|continue_branch(model, ...): exact bright breathers of any model by the bright-breather
+// lrchain.bright.solve|floquet|continue_branch|evolve(model, ...): exact bright breathers of any model by the bright-breather
 // job (lrchain/jobs/bright_breather_job.hpp), run without the GIL (Ctrl-C: KeyboardInterrupt after the
 // current Newton step). The result as the job's JSON summary (a dict) with Z(0) and the seed as numpy
 // arrays (fields, sites).
 #include <algorithm>
 #include <csignal>
+#include <cstdint>
 #include <optional>
+#include <vector>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -33,9 +35,19 @@ py::array_t<double> by_field(const Eigen::VectorXd& z, Index fields, Index sites
 py::dict bright_solve_job(const LoadedModel& loaded, double omega_b, const std::optional<std::string>& branch,
                    const std::string& center, double sites, double tolerance, double max_iterations,
                    double tail_tolerance, double unit_tolerance, const std::string& step, double points, double ds,
-                   bool branch_floquet) {
+                   bool branch_floquet, double periods, const std::string& perturb, double perturb_size,
+                   std::uint64_t seed, const std::string& parameter, std::optional<double> to) {
   BrightBreatherConfig c;
-  c.step = step == "continue" ? BrightStep::branch : step == "floquet" ? BrightStep::floquet : BrightStep::solve;
+  c.step = step == "continue"  ? BrightStep::branch
+           : step == "floquet" ? BrightStep::floquet
+           : step == "evolve"  ? BrightStep::evolve
+                               : BrightStep::solve;
+  c.periods = integer_keyword(periods, "periods", 1, 1'000'000);
+  c.perturb = perturb;
+  c.perturb_size = perturb_size;
+  c.seed = seed;
+  c.parameter = parameter;
+  c.to = to;
   c.points = integer_keyword(points, "points", config::dark_points.least, config::dark_points.most);
   c.ds = ds;
   c.branch_floquet = branch_floquet;
@@ -69,6 +81,14 @@ py::dict bright_solve_job(const LoadedModel& loaded, double omega_b, const std::
     for (const auto& p : r.branch.points) at = std::copy(p.z0.data(), p.z0.data() + p.z0.size(), at);
     d["branch_z"] = z;
   }
+  if (r.evolution) {  // per period m = 0..periods: t, deviation, energy
+    std::vector<double> t, deviation, energy;
+    for (const auto& sample : r.evolution->samples)
+      t.push_back(sample.t), deviation.push_back(sample.deviation), energy.push_back(sample.energy);
+    d["evolution_t"] = py::array_t<double>(py::ssize_t(t.size()), t.data());
+    d["evolution_deviation"] = py::array_t<double>(py::ssize_t(deviation.size()), deviation.data());
+    d["evolution_energy"] = py::array_t<double>(py::ssize_t(energy.size()), energy.data());
+  }
   return d;
 }
 
@@ -77,7 +97,7 @@ py::dict bright_solve_job(const LoadedModel& loaded, double omega_b, const std::
 void register_bright_breather(py::module_& m) {
   m.def("bright_breather_solve", &bright_solve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("tail_tolerance"),
-        py::arg("unit_tolerance"), py::arg("step"), py::arg("points"), py::arg("ds"), py::arg("branch_floquet"));
+        py::arg("unit_tolerance"), py::arg("step"), py::arg("points"), py::arg("ds"), py::arg("branch_floquet"), py::arg("periods"), py::arg("perturb"), py::arg("perturb_size"), py::arg("seed"), py::arg("parameter"), py::arg("to"));
 }
 
 }  // namespace lrchain::python

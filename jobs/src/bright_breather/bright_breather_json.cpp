@@ -56,6 +56,7 @@ json branch_json(const BrightBreatherResult& r) {
     json point = {{"omega_b", p.omega_b}, {"peak", profile.peak}, {"norm_squared", profile.norm_squared},
                   {"width", profile.width}, {"residual", p.residual}, {"corrector_iterations", p.iterations},
                   {"stable", nullptr}, {"max_nontrivial_modulus", nullptr}};
+    if (r.config.parameter != "omega_b") point[r.config.parameter] = p.parameter;  // the continued parameter's value
     if (k < r.branch_floquets.size()) {
       point["stable"] = r.branch_floquets[k].stable;
       point["max_nontrivial_modulus"] = r.branch_floquets[k].max_nontrivial_modulus;
@@ -73,7 +74,9 @@ json branch_json(const BrightBreatherResult& r) {
   for (const auto& b : r.bifurcations)
     bifurcations.push_back({{"kind", b.kind}, {"index", b.index}, {"omega_b", b.omega_b},
                             {"norm_squared", b.norm_squared}, {"omega_low", b.omega_low}, {"omega_high", b.omega_high}});
-  return {{"points", r.branch.points.size()},
+  return {{"parameter", r.config.parameter},
+          {"to", r.config.to ? json(*r.config.to) : json(nullptr)},
+          {"points", r.branch.points.size()},
           {"stop_reason", r.branch.stop_reason},
           {"window", {r.window_low, std::isfinite(r.window_high) ? json(r.window_high) : json(nullptr)}},
           {"turning_points", r.branch.turning_points},
@@ -82,7 +85,37 @@ json branch_json(const BrightBreatherResult& r) {
 }
 
 const char* step_name(BrightStep step) {
-  return step == BrightStep::floquet ? "floquet" : step == BrightStep::branch ? "continue" : "solve";
+  return step == BrightStep::floquet ? "floquet"
+         : step == BrightStep::branch ? "continue"
+         : step == BrightStep::evolve ? "evolve"
+                                      : "solve";
+}
+
+// The evolution: periods, the profile and energy drift, the measured growth rate of the deviation
+// (its fit window) beside the one the largest multiplier predicts, and the perturbation of the start.
+json evolution_json(const BrightBreatherResult& r) {
+  const BrightBreatherConfig& c = r.config;
+  const sim::bright::BrightEvolution& e = *r.evolution;
+  json perturbation = nullptr;
+  if (c.perturb != "none") {
+    perturbation = {{"kind", c.perturb}, {"size", c.perturb_size}};
+    if (c.perturb == "random") perturbation["seed"] = c.seed;
+    if (c.perturb == "unstable") {
+      perturbation["multiplier"] = {r.perturbation.multiplier.real(), r.perturbation.multiplier.imag()};
+      perturbation["multiplier_modulus"] = std::abs(r.perturbation.multiplier);
+    }
+  }
+  return {{"periods", c.periods},
+          {"period", e.period},
+          {"t_end", e.samples.back().t},
+          {"profile_drift", e.profile_drift},
+          {"final_deviation", e.samples.back().deviation},
+          {"energy", e.has_energy ? json(e.samples.front().energy) : json(nullptr)},
+          {"energy_drift", e.has_energy ? json(e.energy_drift) : json(nullptr)},
+          {"growth_rate", e.growth_rate ? json(*e.growth_rate) : json(nullptr)},
+          {"growth_fit_periods", e.growth_rate ? json(e.fit_last) : json(nullptr)},
+          {"predicted_growth_rate", r.predicted_growth_rate},
+          {"perturbation", perturbation}};
 }
 
 }  // namespace
@@ -117,6 +150,7 @@ json to_json(const BrightBreatherResult& r) {
   }
   if (r.floquet) j["floquet"] = floquet_json(*r.floquet);
   if (r.krylov) j["krylov"] = to_json(*r.krylov);
+  if (r.evolution) j["evolution"] = evolution_json(r);
   if (c.step == BrightStep::branch && r.newton.converged && r.rejected.empty()) j["branch"] = branch_json(r);
   if (const auto f = failure(r))
     j["failure"] = {{"kind", r.newton.converged ? "not_a_bright_breather" : "newton"}, {"message", *f}};

@@ -2,15 +2,19 @@
 // Newton on the time-reversible shooting shared with the dark breathers, the localization check,
 // and (floquet) the multipliers of the full-period monodromy (bright_breather_job.hpp).
 #include <chrono>
+#include <functional>
 #include <cmath>
+#include <numbers>
 #include <tuple>
 
 #include <fmt/format.h>
 
 #include "../breather_outputs.hpp"
+#include "lrchain/errors.hpp"
 #include "lrchain/jobs/bright_breather_job.hpp"
 #include "lrchain/sim/bright/bright_seed.hpp"
 #include "lrchain/sim/dark/contact_bonds.hpp"
+#include "lrchain/sim/dark/parameter_shooting.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
 
@@ -47,9 +51,9 @@ std::vector<BranchSample> branch_samples(const BrightBreatherResult& r, double u
     const sim::dark::BranchPoint& p = r.branch.points[k];
     if (k > 0) {
       const sim::dark::BranchPoint& q = r.branch.points[k - 1];
-      s += std::sqrt((p.z0 - q.z0).squaredNorm() + (p.omega_b - q.omega_b) * (p.omega_b - q.omega_b));
+      s += std::sqrt((p.z0 - q.z0).squaredNorm() + (p.parameter - q.parameter) * (p.parameter - q.parameter));
     }
-    BranchSample sample{s, p.omega_b, p.tangent_omega, r.branch_profiles[k].norm_squared, std::nullopt, std::nullopt,
+    BranchSample sample{s, p.parameter, p.tangent_omega, r.branch_profiles[k].norm_squared, std::nullopt, std::nullopt,
                         std::nullopt};
     if (k < r.branch_floquets.size()) {
       sample.real_unstable = real_multipliers_beyond(r.branch_floquets[k], +1, unit_tolerance);
@@ -61,46 +65,136 @@ std::vector<BranchSample> branch_samples(const BrightBreatherResult& r, double u
   return samples;
 }
 
-// Continues the solved breather away from its edge (omega_b rising above an edge with h_tilde > 0,
-// falling below one with h_tilde < 0) within the non-resonant window; each point's profile checked
-// and (branch_floquet) its multipliers; the branch ends before its first point that is no breather.
-void continue_away_from_edge(const sim::dark::DarkShooting& shooting, const BrightBreatherConfig& c,
-                             const BrightBreatherHooks& hooks, BrightBreatherResult& r) {
-  std::tie(r.window_low, r.window_high) = non_resonant_window(r.bands, c.omega_b);
-  const bool rising = r.edge.nls.h_tilde > 0;
+// The continuation of a bright breather (omega_b or a model parameter) from config c.
+sim::dark::ContinuationOptions continuation_options(const BrightBreatherConfig& c) {
   sim::dark::ContinuationOptions o;
   o.ds = c.ds;
   o.max_points = c.points;
   o.tolerance = c.tolerance;
-  o.floquet = false;  // the bright Floquet analysis below, with the trivial multipliers removed
-  o.direction = rising ? 1.0 : -1.0;
-  o.omega_min = rising ? std::max(r.window_low, r.edge.nls.omega) : r.window_low;
-  o.omega_max = rising ? r.window_high : std::min(r.window_high, r.edge.nls.omega);
+  o.floquet = false;  // the bright Floquet analysis of keep_bright_points, with the trivial multipliers removed
+  return o;
+}
+
+// Keeps the branch points up to the first that is no localized breather (branch.stop_reason says
+// which), each with its profile and (branch_floquet) its multipliers and Krein signatures on the
+// lattice `shooting_at(point)` gives at that point's parameters; then the bifurcations.
+void keep_bright_points(const BrightBreatherConfig& c,
+                        const std::function<std::vector<double>(const sim::dark::BranchPoint&)>& parameters_at,
+                        const sim::dark::ContactBonds& contacts, BrightBreatherResult& r) {
   const BrightProfileOptions profile_options{c.tail_tolerance};
-  r.branch = sim::dark::continue_branch(shooting, r.z0, c.omega_b, o, hooks.on_point);
-  const Eigen::VectorXd masses = position_masses(*c.kernels, sim::lattice_parameters(*c.model), c.sites);
   for (std::size_t k = 0; k < r.branch.points.size(); ++k) {
     const sim::dark::BranchPoint& p = r.branch.points[k];
     BrightProfile profile = inspect_bright_profile(p.z0, c.sites, profile_options);
     if (!profile.localized) {
-      r.branch.stop_reason = fmt::format("the branch point at omega_b = {:.6f} is no bright breather: {}", p.omega_b,
-                                         profile.reason);
+      r.branch.stop_reason = fmt::format("the branch point at {} = {:.6f} is no bright breather: {}", c.parameter,
+                                         p.parameter, profile.reason);
       r.branch.points.resize(k);
       r.branch.turning_points.clear();  // those of the points kept: d omega_b / ds changing sign
       for (std::size_t j = 1; j < k; ++j)
         if ((r.branch.points[j].tangent_omega > 0) != (r.branch.points[j - 1].tangent_omega > 0))
-          r.branch.turning_points.push_back(r.branch.points[j].omega_b);
+          r.branch.turning_points.push_back(r.branch.points[j].parameter);
       break;
     }
     r.branch_profiles.push_back(std::move(profile));
     if (!c.branch_floquet) continue;
+    const std::vector<double> parameters = parameters_at(p);
+    const sim::dark::DarkShooting shooting(*c.kernels, parameters, c.sites, r.edge.mean_flow,
+                                           sim::dark::ShootingMode::reversible, {}, contacts);
     const Eigen::MatrixXd monodromy = shooting.monodromy(p.z0, p.omega_b);
     r.branch_floquets.push_back(bright_floquet(monodromy, r.edge.mean_flow, {c.unit_tolerance}));
     if (!r.edge.mean_flow)
-      r.branch_krein.push_back(
-          krein_signatures(monodromy, masses, c.unit_tolerance, r.branch_floquets.back().trivial_distance));
+      r.branch_krein.push_back(krein_signatures(monodromy, position_masses(*c.kernels, parameters, c.sites),
+                                                c.unit_tolerance, r.branch_floquets.back().trivial_distance));
   }
   r.bifurcations = branch_bifurcations(branch_samples(r, c.unit_tolerance));
+}
+
+// Continues the solved breather in omega_b within the non-resonant window: away from its edge
+// (omega_b rising above an edge with h_tilde > 0, falling below one with h_tilde < 0), or towards c.to
+// (its last point solved there).
+void continue_in_omega_b(const sim::dark::DarkShooting& shooting, const BrightBreatherConfig& c,
+                         const BrightBreatherHooks& hooks, BrightBreatherResult& r) {
+  std::tie(r.window_low, r.window_high) = non_resonant_window(r.bands, c.omega_b);
+  const bool rising = r.edge.nls.h_tilde > 0;
+  sim::dark::ContinuationOptions o = continuation_options(c);
+  o.direction = rising ? 1.0 : -1.0;
+  o.omega_min = rising ? std::max(r.window_low, r.edge.nls.omega) : r.window_low;
+  o.omega_max = rising ? r.window_high : std::min(r.window_high, r.edge.nls.omega);
+  if (c.to) {
+    o.direction = *c.to > c.omega_b ? 1.0 : -1.0;
+    (*c.to > c.omega_b ? o.omega_max : o.omega_min) = *c.to;
+    o.land_on_bounds = true;
+  }
+  r.branch = sim::dark::continue_branch(shooting, r.z0, c.omega_b, o, hooks.on_point);
+}
+
+// Continues the solved breather in the model parameter c.parameter at fixed omega_b from its value
+// to c.to (the last point solved there), on all of Z(0) (sim/dark/parameter_shooting.hpp).
+void continue_in_parameter(const BrightBreatherConfig& c, const BrightBreatherHooks& hooks, BrightBreatherResult& r) {
+  const Model& model = *c.model;
+  const auto& definitions = model.definition().parameters;
+  sim::dark::ParameterShootingSetup setup;
+  setup.kernels = c.kernels;
+  setup.parameters = sim::lattice_parameters(model);
+  for (std::size_t i = 0; i < definitions.size(); ++i)
+    if (definitions[i].name == c.parameter) setup.index = Index(i), setup.range = definitions[i];
+  setup.sites = c.sites;
+  setup.mean_flow = r.edge.mean_flow;
+  setup.omega_b = c.omega_b;
+  const sim::dark::ParameterShooting shooting(std::move(setup));
+  const double start = model.parameter(c.parameter), end = *c.to;
+  sim::dark::ContinuationOptions o = continuation_options(c);
+  // as dark continue --parameter: ds about a step in the parameter, a chord corrector refreshed below
+  // 10x contraction (continuation.hpp)
+  o.state_weight = 0;
+  o.easy_corrector = 6;
+  o.hard_corrector = 10;
+  o.chord_contraction = 0.1;
+  o.direction = end > start ? 1.0 : -1.0;
+  o.omega_min = std::min(start, end);
+  o.omega_max = std::max(start, end);
+  o.land_on_bounds = true;
+  r.window_low = o.omega_min, r.window_high = o.omega_max;
+  r.branch = sim::dark::continue_branch(shooting, r.z0, start, o, hooks.on_point);
+}
+
+// The continuation the config asks for, then the points kept and their stability.
+void continue_breather(const sim::dark::DarkShooting& shooting, const sim::dark::ContactBonds& contacts,
+                       const BrightBreatherConfig& c, const BrightBreatherHooks& hooks, BrightBreatherResult& r) {
+  const std::vector<double> parameters = sim::lattice_parameters(*c.model);
+  if (c.parameter == "omega_b") {
+    continue_in_omega_b(shooting, c, hooks, r);
+    keep_bright_points(c, [&](const sim::dark::BranchPoint&) { return parameters; }, contacts, r);
+    return;
+  }
+  continue_in_parameter(c, hooks, r);
+  Index index = 0;
+  const auto& definitions = c.model->definition().parameters;
+  while (definitions[std::size_t(index)].name != c.parameter) ++index;
+  keep_bright_points(
+      c,
+      [&](const sim::dark::BranchPoint& p) {
+        std::vector<double> at = parameters;
+        at[std::size_t(index)] = p.parameter;
+        return at;
+      },
+      contacts, r);
+}
+
+// Floquet multipliers of the solved breather, the perturbation (`unstable`: along the eigenvector of
+// the largest multiplier, refused when none is unstable) and the evolution over c.periods periods.
+void evolve_breather(const sim::dark::DarkShooting& shooting, const BrightBreatherConfig& c, BrightBreatherResult& r) {
+  const Eigen::MatrixXd monodromy = shooting.monodromy(r.z0, c.omega_b);
+  r.floquet = bright_floquet(monodromy, r.edge.mean_flow, {c.unit_tolerance});
+  r.predicted_growth_rate = std::log(r.floquet->max_nontrivial_modulus) * c.omega_b / (2 * std::numbers::pi);
+  if (c.perturb == "unstable" && r.floquet->stable)
+    throw InvalidParameter("perturb", fmt::format("unstable needs an unstable Floquet multiplier, and the breather at "
+                                                  "omega_b = {} is stable (max |lambda| = {:.9f} besides the trivial "
+                                                  "+1 ones): use random or none",
+                                                  c.omega_b, r.floquet->max_nontrivial_modulus));
+  if (c.perturb == "unstable") r.perturbation = sim::dark::unstable_perturbation(monodromy, c.perturb_size);
+  else if (c.perturb == "random") r.perturbation = sim::dark::random_perturbation(r.z0.size(), c.perturb_size, c.seed);
+  r.evolution = evolve_bright_breather(shooting, r.z0, c.omega_b, c.periods, r.perturbation.vector);
 }
 
 }  // namespace
@@ -130,7 +224,8 @@ BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHook
   const BrightProfileOptions profile_options{c.tail_tolerance};
   r.seed_profile = inspect_bright_profile(r.seed, c.sites, profile_options);
   BreatherSolverOptions solver = c.krylov;
-  if (c.step == BrightStep::branch) solver.solver = "dense";  // the continuation's Jacobian is dense
+  // the continuation's Jacobian and the evolution's monodromy are dense
+  if (c.step == BrightStep::branch || c.step == BrightStep::evolve) solver.solver = "dense";
   r.newton = solve_breather(shooting, r.seed, c.omega_b, newton_options(c, hooks), solver, r.krylov);
   if (r.newton.converged) {
     r.z0 = r.newton.q;
@@ -141,7 +236,8 @@ BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHook
       krylov_floquet(shooting, r.z0, c.omega_b, c.krylov, *r.krylov);
     else if (r.rejected.empty() && c.step == BrightStep::floquet)
       r.floquet = bright_floquet(shooting.monodromy(r.z0, c.omega_b), mean_flow, {c.unit_tolerance});
-    if (r.rejected.empty() && c.step == BrightStep::branch) continue_away_from_edge(shooting, c, hooks, r);
+    if (r.rejected.empty() && c.step == BrightStep::branch) continue_breather(shooting, contacts, c, hooks, r);
+    if (r.rejected.empty() && c.step == BrightStep::evolve) evolve_breather(shooting, c, r);
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -11,7 +11,7 @@ namespace lrchain::jobs::bright_breather {
 
 namespace {
 
-const std::vector<std::string> all_steps{"solve", "floquet", "continue"};
+const std::vector<std::string> all_steps{"solve", "floquet", "continue", "evolve"};
 
 // A range of integers from an option cap: "[least, most]".
 std::string integer_range(const config::OptionCap& cap) { return fmt::format("[{}, {}]", cap.least, cap.most); }
@@ -34,12 +34,25 @@ std::vector<JobOption> make_options() {
       {"max_iterations", "", "max_iterations", all_steps, d.max_iterations, false, ">= 1", "Newton iterations"},
       {"tail_tolerance", "--tail-tolerance", "tail_tolerance", all_steps, d.tail_tolerance, false, "(0, 1)",
        "localized: max |Z(0)| on the ring's far quarter at most this times the peak"},
-      {"unit_tolerance", "--unit-tolerance", "unit_tolerance", {"floquet", "continue"}, d.unit_tolerance, false, "(0, 1)",
+      {"unit_tolerance", "--unit-tolerance", "unit_tolerance", {"floquet", "continue", "evolve"}, d.unit_tolerance, false, "(0, 1)",
        "stable: every multiplier but the trivial +1 ones has |lambda| <= 1 + this"},
       {"points", "--points", "points", {"continue"}, d.points, false, integer_range(config::dark_points),
        "maximum number of branch points, the first included"},
       {"ds", "--ds", "ds", {"continue"}, d.ds, false, "(0, 1], adapted within [1e-5, 1]",
        "initial pseudo-arclength step in (Z(0), omega_b), dimensionless"},
+      {"periods", "--periods", "periods", {"evolve"}, d.periods, false, "[1, 1000000]",
+       "breather periods T_b integrated (the deviation and energy sampled at every multiple of T_b)"},
+      {"perturb", "--perturb", "perturb", {"evolve"}, d.perturb, false, "none|unstable|random",
+       "perturbation of the start: none, along the largest unstable Floquet multiplier's eigenvector, or random positions"},
+      {"perturb_size", "--perturb-size", "perturb_size", {"evolve"}, d.perturb_size, false, "(0, 1)",
+       "max-norm of the perturbation of [Z(0), Zdot(0)]"},
+      {"seed", "--seed", "seed", {"evolve"}, d.seed, false, ">= 0", "perturb random: the generator's seed"},
+      {"parameter", "--parameter", "parameter", {"continue"}, d.parameter, false,
+       "omega_b, or one of the model's parameters",
+       "the continued parameter (a model parameter at fixed omega_b, e.g. C down to the anti-continuum limit 0)"},
+      {"to", "--to", "to", {"continue"}, none, false,
+       "a model parameter: in its range (required); omega_b: in its non-resonant window",
+       "where the continuation ends, its last point solved there (omega_b: none = to the end of the window)"},
       {"solver", "--solver", "", {"solve", "floquet"}, d.krylov.solver, false, "auto|dense|krylov",
        "dense Jacobian and monodromy, or matrix-free Newton-Krylov and Arnoldi (auto: krylov above krylov_sites)"},
       {"krylov_sites", "--krylov-sites", "", {"solve", "floquet"}, d.krylov.krylov_sites, false, ">= 9",

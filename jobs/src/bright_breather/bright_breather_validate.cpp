@@ -9,6 +9,7 @@
 
 #include "../breather_outputs.hpp"
 #include "lrchain/ansatz/dark_breather.hpp"
+#include "lrchain/checked_number.hpp"
 #include "lrchain/config/option_caps.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/bright_breather_job.hpp"
@@ -20,6 +21,8 @@ namespace lrchain::jobs::bright_breather {
 namespace {
 // The largest omega_b accepted, in units of the top of the highest linear band.
 constexpr double omega_b_cap = 10;
+// The most periods evolve integrates.
+constexpr Index max_periods = 1'000'000;
 }  // namespace
 
 void validate(const BrightBreatherConfig& c) {
@@ -38,6 +41,23 @@ void validate(const BrightBreatherConfig& c) {
   if (c.step == BrightStep::branch) {
     config::checked_option(double(c.points), config::dark_points, "points");
     if (!(std::isfinite(c.ds) && c.ds > 0 && c.ds <= 1)) throw InvalidParameter("ds", "must be in (0, 1] (it adapts within [1e-5, 1])");
+  }
+  if (c.step == BrightStep::branch && c.parameter != "omega_b") check_continued_parameter(*c.model, c.parameter, c.to);
+  if (c.step == BrightStep::branch && c.parameter == "omega_b" && c.to) {
+    checked_finite(*c.to, "to");
+    const auto [low, high] = sim::bright::non_resonant_window(sim::bright::linear_bands(*c.model), c.omega_b);
+    if (!(*c.to > low && *c.to < high && *c.to != c.omega_b))
+      throw InvalidParameter("to", fmt::format("must differ from omega_b = {} and lie in its non-resonant window "
+                                               "({:.10g}, {:.10g}) (no harmonic of omega_b in a band there)",
+                                               c.omega_b, low, high));
+  }
+  if (c.step == BrightStep::evolve) {
+    if (c.periods < 1 || c.periods > max_periods)
+      throw InvalidParameter("periods", fmt::format("must be an integer in [1, {}]", max_periods));
+    if (c.perturb != "none" && c.perturb != "unstable" && c.perturb != "random")
+      throw InvalidParameter("perturb", "must be none, unstable or random, got '" + c.perturb + "'");
+    if (!(std::isfinite(c.perturb_size) && c.perturb_size > 0 && c.perturb_size < 1))
+      throw InvalidParameter("perturb_size", "must be in (0, 1) (the max-norm of the perturbation of Z(0) and Zdot(0))");
   }
   validate(c.krylov);
   if (c.step == BrightStep::branch && c.krylov.solver == "krylov")

@@ -92,22 +92,8 @@ void validate_model(const DarkConfig& c) {
   const DarkAnsatz ansatz = with_config_keys(
       [&] { return make_dark_ansatz(model, *c.kernels, defocusing_edge(model, given), c.omega_b); });
   check_dark_sites(ansatz, c.sites.value_or(default_dark_sites(ansatz.theta)));
-  if (c.step == DarkStep::branch && c.parameter != "omega_b") {  // a model parameter at fixed omega_b
-    const auto& parameters = model.definition().parameters;
-    const auto found = std::find_if(parameters.begin(), parameters.end(),
-                                    [&](const ModelParameter& p) { return p.name == c.parameter; });
-    if (found == parameters.end()) {
-      std::string names = "omega_b";
-      for (const auto& p : parameters) names += ", " + p.name;
-      throw InvalidParameter("parameter", fmt::format("must be omega_b or a parameter of {} ({}), got '{}'",
-                                                      model.name(), names, c.parameter));
-    }
-    if (!c.to) throw InvalidParameter("to", "is required with parameter " + c.parameter + " (where the continuation ends)");
-    checked_finite(*c.to, "to");
-    if (!found->contains(*c.to) || *c.to == model.parameter(c.parameter))
-      throw InvalidParameter("to", fmt::format("must lie in the range {} of {} and differ from its value {:g}",
-                                               found->range_text, c.parameter, model.parameter(c.parameter)));
-  }
+  if (c.step == DarkStep::branch && c.parameter != "omega_b")  // a model parameter at fixed omega_b
+    check_continued_parameter(model, c.parameter, c.to);
   if (c.step == DarkStep::branch) {
     checked_finite(c.ds, "ds");
     if (!(c.ds > 0 && c.ds <= 1)) throw InvalidParameter("ds", "must be in (0, 1] (it adapts within [1e-5, 1])");

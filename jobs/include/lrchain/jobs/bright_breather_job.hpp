@@ -8,6 +8,7 @@
 // (sim/bright/linear_bands.hpp); a converged zero is kept only if it is a localized bright breather
 // (sim/bright/bright_profile.hpp); Floquet multipliers with the trivial +1 ones removed
 // (sim/bright/bright_floquet.hpp). docs/bright-breathers.md.
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -21,11 +22,13 @@
 #include "lrchain/jobs/breather_solver.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/bright/branch_bifurcations.hpp"
+#include "lrchain/sim/bright/bright_evolution.hpp"
 #include "lrchain/sim/bright/bright_floquet.hpp"
 #include "lrchain/sim/bright/bright_profile.hpp"
 #include "lrchain/sim/bright/krein_signature.hpp"
 #include "lrchain/sim/bright/linear_bands.hpp"
 #include "lrchain/sim/dark/continuation.hpp"
+#include "lrchain/sim/dark/perturbation.hpp"
 #include "lrchain/sim/dark/shooting_problem.hpp"
 #include "lrchain/compiled_model_abi.h"
 
@@ -36,6 +39,7 @@ enum class BrightStep {
   solve,    // Newton on the half-period map from the NLS seed, then the localization check
   floquet,  // solve, then the Floquet multipliers of the full-period monodromy matrix
   branch,   // solve, then pseudo-arclength continuation in omega_b away from the band edge
+  evolve,   // solve, Floquet, then direct integration over `periods` periods (bright_evolution.hpp)
 };
 
 // Every option of the job, with its default and range (bright_breather_schema.hpp); validate() names a
@@ -58,6 +62,17 @@ struct BrightBreatherConfig {
   Index points = 20;               // maximum number of branch points, the first included, in [1, 1e6]
   double ds = 0.05;                // initial pseudo-arclength step in (Z(0), omega_b), in (0, 1]
   bool branch_floquet = true;      // Floquet multipliers at every branch point
+  // The continued parameter: omega_b, or one of the model's parameters at fixed omega_b (e.g. the
+  // coupling C of klein_gordon towards the anti-continuum limit C = 0)
+  std::string parameter = "omega_b";
+  // Where the continuation ends, its last point solved there: required for a model parameter (in its
+  // range); for omega_b optional (none: away from the edge to the end of the non-resonant window)
+  std::optional<double> to;
+  // evolve: the breather (perturbed) integrated over this many periods T_b, in [1, 1e6]
+  Index periods = 50;
+  std::string perturb = "none";  // none | unstable (the largest Floquet multiplier's eigenvector) | random
+  double perturb_size = 1e-6;    // max-norm of the perturbation of [Z(0), Zdot(0)], in (0, 1)
+  std::uint64_t seed = 1;        // random: the generator's seed
   // solve, floquet: the dense path or the matrix-free one (breather_solver.hpp); continue is dense
   BreatherSolverOptions krylov;
   double max_memory = 0;           // bytes the job may use; 0: the machine's available memory
@@ -112,13 +127,20 @@ struct BrightBreatherResult {
   // branch_floquet, displacement form: per point the Krein signatures of the multipliers on the upper
   // unit circle (krein_signature.hpp); empty in strain form (no canonical form there)
   std::vector<std::vector<sim::bright::KreinMultiplier>> branch_krein;
-  double window_low = 0, window_high = 0;  // the non-resonant window of omega_b (high: inf when unbounded)
+  // the non-resonant window of omega_b (high: inf when unbounded); a model parameter: its start and c.to
+  double window_low = 0, window_high = 0;
+  // evolve: the perturbation added to the start (empty vector: none), the evolution, and the growth
+  // rate ln(max |lambda|) / T_b the largest non-trivial Floquet multiplier predicts (floquet is set)
+  sim::dark::DarkPerturbation perturbation;
+  std::optional<sim::bright::BrightEvolution> evolution;
+  double predicted_growth_rate = 0;
   std::optional<KrylovRecord> krylov;  // the matrix-free path's record (floquet: the leading multipliers), absent on the dense one
   double seconds = 0;               // wall time of run()
 };
 
 // Runs the job from a validated config. A Newton that does not converge, or a zero that is no
-// localized breather, ends the job and is reported (failure()), not thrown.
+// localized breather, ends the job and is reported (failure()), not thrown. evolve with perturb
+// unstable on a breather with no unstable multiplier throws InvalidParameter("perturb").
 BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHooks& hooks = {});
 
 // Why the job failed (Newton, or the converged zero is no bright breather), or nullopt.
