@@ -123,7 +123,7 @@ void register_bright(CLI::App& app) {
   add_integer(*evo, "--periods", args->config.periods, 1, 1'000'000, bright_help("periods"));
   evo->add_option("--perturb", args->config.perturb, bright_help("perturb"))
       ->check(CLI::IsMember({"none", "unstable", "random"}).description(""))
-      ->type_name("none|unstable|random");
+      ->type_name("KIND");
   add_number(*evo, "--perturb-size", args->config.perturb_size, bright_help("perturb_size"));
   evo->add_option("--seed", args->config.seed, bright_help("seed"))->type_name("N");
   add_examples(*evo, {"lrchain bright evolve --model fput --set a=0 --center site --omega-b 2.2 --sites 41 --periods 40 "

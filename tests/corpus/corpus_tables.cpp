@@ -45,6 +45,8 @@ const std::map<std::string, std::vector<std::string>>& base_commands() {
       {"bright floquet", {"--model", "klein_gordon", "--omega-b", "1.3", "--sites", "21", "--quiet", "--out", "@OUT@"}},
       {"bright continue",
        {"--model", "klein_gordon", "--omega-b", "1.3", "--sites", "21", "--points", "2", "--quiet", "--out", "@OUT@"}},
+      {"bright evolve",
+       {"--model", "klein_gordon", "--omega-b", "1.3", "--sites", "21", "--periods", "2", "--quiet", "--out", "@OUT@"}},
       {"wave solve", {"--model", "fput", "--branch", "acoustic", "--theta", "2.5", "--amplitude", "0.02", "--out", "@OUT@"}},
       {"wave continue",
        {"--model", "fput", "--branch", "acoustic", "--theta", "2.5", "--amplitudes", "0.01", "0.02", "--out", "@OUT@"}},
@@ -54,6 +56,8 @@ const std::map<std::string, std::vector<std::string>>& base_commands() {
       {"wave fate",
        {"--model", "fput", "--theta", "2.5", "--amplitude", "0.02", "--k-points", "10", "--ring-sites", "16", "--periods",
         "10", "--out", "@OUT@"}},
+      {"wave standing",
+       {"--model", "fput", "--theta", "2*pi/5", "--amplitude", "0.05", "--ring-sites", "10", "--out", "@OUT@"}},
       {"reproduce", {"--only", "coefficients", "--jobs", "1", "--out", "@OUT@"}},
       {"sweep",
        {"--config", LRCHAIN_SOURCE_DIR "/tests/corpus/sweep_small.toml", "--output", "@TMP@/sweep.h5", "--threads", "1",
@@ -141,7 +145,7 @@ const std::vector<OutputOption>& output_options() {
       {"dark evolve", "out", false},        {"reproduce", "out", false},
       {"bright solve", "out", false},       {"bright floquet", "out", false},  {"bright continue", "out", false},
       {"wave solve", "out", false},         {"wave continue", "out", false},   {"wave stability", "out", false},
-      {"wave fate", "out", false},
+      {"wave fate", "out", false},         {"wave standing", "out", false},   {"bright evolve", "out", false},
       {"sweep", "output", true},
   };
   return outputs;

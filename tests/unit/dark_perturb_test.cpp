@@ -68,6 +68,14 @@ TEST_CASE("dark evolve --perturb random: the seed fixes the perturbation, size i
   CHECK(a.perturbation.vector.tail(31).isZero());  // velocities unperturbed
   CHECK(a.evolution.snapshots.front() == a.z0 + a.perturbation.vector.head(31));
   CHECK(to_json(a)["perturbation"]["seed"] == 7);
+  // The seed's range is Python's, [0, 2^31): a CLI's --seed -1 arrives as 2^64 - 1 and is refused.
+  c.seed = std::uint64_t(-1);
+  try {
+    validate(c);
+    FAIL("seed 2^64 - 1 was accepted");
+  } catch (const InvalidParameter& e) {
+    CHECK(e.parameter() == "seed");
+  }
 }
 
 TEST_CASE("dark evolve --perturb unstable on a stable breather: refused naming perturb" * doctest::test_suite("fast")) {

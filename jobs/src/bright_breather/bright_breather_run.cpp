@@ -121,6 +121,10 @@ void continue_in_omega_b(const sim::dark::DarkShooting& shooting, const BrightBr
   o.omega_min = rising ? std::max(r.window_low, r.edge.nls.omega) : r.window_low;
   o.omega_max = rising ? r.window_high : std::min(r.window_high, r.edge.nls.omega);
   if (c.to) {
+    if (!(*c.to >= o.omega_min && *c.to <= o.omega_max))  // it narrows the window, never crosses the edge
+      throw InvalidParameter("to", fmt::format("must lie in [{:.10g}, {:.10g}], the non-resonant window on this side "
+                                               "of the band edge {:.10g}, got {:.10g}",
+                                               o.omega_min, o.omega_max, r.edge.nls.omega, *c.to));
     o.direction = *c.to > c.omega_b ? 1.0 : -1.0;
     (*c.to > c.omega_b ? o.omega_max : o.omega_min) = *c.to;
     o.land_on_bounds = true;

@@ -46,7 +46,7 @@ std::vector<JobOption> make_options() {
        "perturbation of the start: none, along the largest unstable Floquet multiplier's eigenvector, or random positions"},
       {"perturb_size", "--perturb-size", "perturb_size", {"evolve"}, d.perturb_size, false, "(0, 1)",
        "max-norm of the perturbation of [Z(0), Zdot(0)]"},
-      {"seed", "--seed", "seed", {"evolve"}, d.seed, false, ">= 0", "perturb random: the generator's seed"},
+      {"seed", "--seed", "seed", {"evolve"}, d.seed, false, "[0, 2147483647]", "perturb random: the generator's seed"},
       {"parameter", "--parameter", "parameter", {"continue"}, d.parameter, false,
        "omega_b, or one of the model's parameters",
        "the continued parameter (a model parameter at fixed omega_b, e.g. C down to the anti-continuum limit 0)"},

@@ -45,7 +45,11 @@ void validate(const BrightBreatherConfig& c) {
   if (c.step == BrightStep::branch && c.parameter != "omega_b") check_continued_parameter(*c.model, c.parameter, c.to);
   if (c.step == BrightStep::branch && c.parameter == "omega_b" && c.to) {
     checked_finite(*c.to, "to");
-    const auto [low, high] = sim::bright::non_resonant_window(sim::bright::linear_bands(*c.model), c.omega_b);
+    const auto bands = sim::bright::linear_bands(*c.model);
+    auto [low, high] = sim::bright::non_resonant_window(bands, c.omega_b);
+    double top = 0;  // above every band the window is unbounded: at most twice the highest frequency
+    for (const auto& b : bands) top = std::max(top, b.highest);
+    high = std::min(high, 2 * top);
     if (!(*c.to > low && *c.to < high && *c.to != c.omega_b))
       throw InvalidParameter("to", fmt::format("must differ from omega_b = {} and lie in its non-resonant window "
                                                "({:.10g}, {:.10g}) (no harmonic of omega_b in a band there)",
@@ -58,6 +62,8 @@ void validate(const BrightBreatherConfig& c) {
       throw InvalidParameter("perturb", "must be none, unstable or random, got '" + c.perturb + "'");
     if (!(std::isfinite(c.perturb_size) && c.perturb_size > 0 && c.perturb_size < 1))
       throw InvalidParameter("perturb_size", "must be in (0, 1) (the max-norm of the perturbation of Z(0) and Zdot(0))");
+    if (c.seed > 2147483647)  // (a negative seed given to the CLI wraps around to here)
+      throw InvalidParameter("seed", "must be an integer in [0, 2147483647]");
   }
   validate(c.krylov);
   if (c.step == BrightStep::branch && c.krylov.solver == "krylov")

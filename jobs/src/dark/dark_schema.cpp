@@ -80,7 +80,7 @@ std::vector<DarkOption> make_options() {
        "(unstable) or random positions (random), to watch an instability grow"},
       {"perturb_size", "--perturb-size", "perturb_size", {"evolve"}, d.perturb_size, false, "(0, 1)",
        "max-norm of the perturbation of Z(0) and Zdot(0)"},
-      {"seed", "--seed", "seed", {"evolve"}, d.seed, false, ">= 0", "perturb random: the seed of the generator (mt19937_64)"},
+      {"seed", "--seed", "seed", {"evolve"}, d.seed, false, "[0, 2147483647]", "perturb random: the seed of the generator (mt19937_64)"},
       {"format", "--format", "", all_steps, d.format, false, "csv|hdf5",
        "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: profiles, the branch or the evolution, "
        "Floquet multipliers as complex numbers)"},

@@ -161,6 +161,8 @@ void validate(const DarkConfig& c) {
       throw InvalidParameter("perturb", "must be none, unstable or random, got '" + c.perturb + "'");
     if (!(std::isfinite(c.perturb_size) && c.perturb_size > 0 && c.perturb_size < 1))
       throw InvalidParameter("perturb_size", "must be in (0, 1) (the max-norm of the perturbation of Z(0) and Zdot(0))");
+    if (c.seed > 2147483647)  // (a negative seed given to the CLI wraps around to here)
+      throw InvalidParameter("seed", "must be an integer in [0, 2147483647]");
   }
   const sim::ResourceEstimate e = c.model ? model_estimate(c, periods) : chain_estimate(c, periods);
   if (e.dominant == "period" && !c.model)  // (a model's refusal names sites, as `dark --model` did)

@@ -25,7 +25,7 @@ double log_slope(const std::vector<BrightEvolutionSample>& samples, Index last) 
 BrightEvolution evolve_bright_breather(const dark::DarkShooting& shooting, const Eigen::VectorXd& z0, double omega_b,
                                        Index periods, const Eigen::VectorXd& perturbation, double saturation) {
   const Index P = z0.size();
-  const ModelLattice& lattice = shooting.orbit().lattice();
+  const CompiledLattice& lattice = shooting.orbit().lattice();
   BrightEvolution e;
   e.period = 2 * std::numbers::pi / omega_b;
   e.has_energy = lattice.has_energy();
