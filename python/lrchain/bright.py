@@ -257,7 +257,7 @@ def _branch(d):
         stable=[p["stable"] for p in rows], max_nontrivial_modulus=[p["max_nontrivial_modulus"] for p in rows],
         z=z, turning_points=b["turning_points"], window=tuple(b["window"]),
         stop_reason=b["stop_reason"], bifurcations=b["bifurcations"], krein=[p["krein"] for p in rows],
-        parameter=b["parameter"], values=np.array([p[b["parameter"]] for p in rows]))
+        parameter=b.get("parameter", "omega_b"), values=np.array([p[b.get("parameter", "omega_b")] for p in rows]))
 
 
 @dataclass(frozen=True, repr=False)

@@ -68,3 +68,27 @@ def test_continue_branch_rises_from_the_edge():
     # (tests/unit/bright_breather_job_test.cpp explains the arc)
     assert b.bifurcations == [] and len(b.krein) == 4
     assert len(b.krein[0]) >= 55 and all(m["signature"] == -1 for m in b.krein[0])
+
+
+def test_evolve_keywords_arrays_and_the_perturb_refusal():
+    # The numbers are the job's (tests/unit/bright_evolve_job_test.cpp); here the keywords and arrays.
+    fpu = lrchain.load_model("fput", a=0)
+    e = bright.evolve(fpu, omega_b=2.2, center="site", sites=41, periods=10, perturb="unstable", perturb_size=1e-7)
+    assert e.t.shape == (11,) and e.deviation.shape == (11,) and e.energy.shape == (11,)
+    assert e.deviation[0] == pytest.approx(1e-7, rel=1e-9)
+    assert e.perturbation["kind"] == "unstable" and e.perturbation["size"] == 1e-7
+    assert e.growth_rate == pytest.approx(e.predicted_growth_rate, rel=1e-4)
+    assert not e.breather.floquet.stable
+    with pytest.raises(lrchain.InvalidParameterError) as refused:
+        bright.evolve(lrchain.load_model("klein_gordon"), omega_b=1.19, sites=61, periods=2, perturb="unstable")
+    assert "perturb" in str(refused.value)
+
+
+def test_continue_branch_in_a_model_parameter():
+    kg = lrchain.load_model("klein_gordon", C=0.01, a=0)
+    b = bright.continue_branch(kg, omega_b=1.1, sites=21, parameter="C", to=0.005, points=10, floquet=False)
+    assert b.parameter == "C" and b.values[0] == pytest.approx(0.01) and b.values[-1] == pytest.approx(0.005)
+    assert np.all(b.omega_b == 1.1)
+    with pytest.raises(lrchain.InvalidParameterError) as refused:
+        bright.continue_branch(kg, omega_b=1.1, sites=21, parameter="C")
+    assert "to" in str(refused.value)

@@ -26,12 +26,12 @@ COMMANDS = {
     "ring": [["simulate", "ring"]],
     "coeffs": [["coeffs"]],
     "dark": [["dark", "solve"], ["dark", "floquet"], ["dark", "continue"], ["dark", "evolve"]],
-    "bright breather": [["bright", "solve"], ["bright", "floquet"], ["bright", "continue"]],
+    "bright breather": [["bright", "solve"], ["bright", "floquet"], ["bright", "continue"], ["bright", "evolve"]],
     "regime intervals": [["regime", "intervals"]],
     "regime map": [["regime", "map"]],
     "regime curves": None,  # Python only (lrchain.regime.boundary_curves)
     "regime thresholds": [["regime", "thresholds"]],
-    "wave": [["wave", "solve"], ["wave", "continue"], ["wave", "stability"], ["wave", "fate"]],
+    "wave": [["wave", "solve"], ["wave", "continue"], ["wave", "stability"], ["wave", "fate"], ["wave", "standing"]],
 }
 # job -> the Python functions that run it
 FUNCTIONS = {
@@ -42,12 +42,12 @@ FUNCTIONS = {
     "ring": [simulate.ring],
     "coeffs": [lrchain.coefficients],
     "dark": [dark.solve, dark.floquet, dark.continue_branch, dark.evolve],
-    "bright breather": [bright.solve, bright.floquet, bright.continue_branch],
+    "bright breather": [bright.solve, bright.floquet, bright.continue_branch, bright.evolve],
     "regime intervals": [regime.intervals],
     "regime map": [regime.theta_rho_map, regime.theta_parameter_map, regime.delta0_omega_map],
     "regime curves": [regime.boundary_curves],
     "regime thresholds": [regime.thresholds],
-    "wave": [wave.solve, wave.continue_branch, wave.stability, wave.fate],
+    "wave": [wave.solve, wave.continue_branch, wave.stability, wave.fate, wave.standing],
 }
 # Options a command has that are no job option: how it reports (--out, --json, figures, files), the model
 # (--model, --set and the resonant chain's parameters, lrchain/params.hpp) and the memory limit.

@@ -71,7 +71,10 @@ TEST_CASE("bright evolve: a stable Klein-Gordon breather keeps its profile and e
   BrightBreatherConfig random = kg.config(1.19, 61, "site", 20, "random");
   const BrightBreatherResult p = evolved(random);
   MESSAGE("random: profile drift ", p.evolution->profile_drift, ", final deviation ", p.evolution->samples.back().deviation);
-  CHECK(p.evolution->samples.front().deviation == doctest::Approx(1e-6).epsilon(1e-9));
+  // The random perturbation is uniform in [-1e-6, 1e-6] on each of the 61 positions (perturbation.cpp):
+  // its max-norm, the deviation at t = 0, is at most 1e-6 and expected 1e-6 (1 - 1/62); measured 9.98e-7.
+  CHECK(p.evolution->samples.front().deviation <= 1e-6);
+  CHECK(p.evolution->samples.front().deviation > 0.9e-6);
   CHECK(p.evolution->profile_drift * r.profile.peak < 1e-5);
 }
 
