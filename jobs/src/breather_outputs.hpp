@@ -1,6 +1,8 @@
 #pragma once
 // What the dark and bright breather jobs share about a model's lattice and their output directory.
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -54,6 +56,16 @@ inline void check_continued_parameter(const Model& model, const std::string& par
   if (!found->contains(*to) || *to == model.parameter(parameter))
     throw InvalidParameter("to", fmt::format("must lie in the range {} of {} and differ from its value {:g}",
                                              found->range_text, parameter, model.parameter(parameter)));
+}
+
+// The perturbation of an evolve job (dark or bright): its kind, max-norm and seed, each refused naming
+// its key. The seed's range is Python's, [0, 2^31): a CLI's --seed -1 arrives as 2^64 - 1.
+inline void check_perturbation(const std::string& perturb, double perturb_size, std::uint64_t seed) {
+  if (perturb != "none" && perturb != "unstable" && perturb != "random")
+    throw InvalidParameter("perturb", "must be none, unstable or random, got '" + perturb + "'");
+  if (!(std::isfinite(perturb_size) && perturb_size > 0 && perturb_size < 1))
+    throw InvalidParameter("perturb_size", "must be in (0, 1) (the max-norm of the perturbation of Z(0) and Zdot(0))");
+  if (seed > 2147483647) throw InvalidParameter("seed", "must be an integer in [0, 2147483647]");
 }
 
 }  // namespace lrchain::jobs

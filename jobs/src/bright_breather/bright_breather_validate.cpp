@@ -58,12 +58,7 @@ void validate(const BrightBreatherConfig& c) {
   if (c.step == BrightStep::evolve) {
     if (c.periods < 1 || c.periods > max_periods)
       throw InvalidParameter("periods", fmt::format("must be an integer in [1, {}]", max_periods));
-    if (c.perturb != "none" && c.perturb != "unstable" && c.perturb != "random")
-      throw InvalidParameter("perturb", "must be none, unstable or random, got '" + c.perturb + "'");
-    if (!(std::isfinite(c.perturb_size) && c.perturb_size > 0 && c.perturb_size < 1))
-      throw InvalidParameter("perturb_size", "must be in (0, 1) (the max-norm of the perturbation of Z(0) and Zdot(0))");
-    if (c.seed > 2147483647)  // (a negative seed given to the CLI wraps around to here)
-      throw InvalidParameter("seed", "must be an integer in [0, 2147483647]");
+    check_perturbation(c.perturb, c.perturb_size, c.seed);
   }
   validate(c.krylov);
   if (c.step == BrightStep::branch && c.krylov.solver == "krylov")

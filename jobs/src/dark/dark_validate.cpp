@@ -157,12 +157,7 @@ void validate(const DarkConfig& c) {
                                                   "(dimensionless time of Sec. 2)", period));
     periods = double(config::checked_option_count(c.t_end, period, config::dark_periods, "t_end"));
     config::checked_option(double(c.samples), config::dark_samples, "samples");
-    if (c.perturb != "none" && c.perturb != "unstable" && c.perturb != "random")
-      throw InvalidParameter("perturb", "must be none, unstable or random, got '" + c.perturb + "'");
-    if (!(std::isfinite(c.perturb_size) && c.perturb_size > 0 && c.perturb_size < 1))
-      throw InvalidParameter("perturb_size", "must be in (0, 1) (the max-norm of the perturbation of Z(0) and Zdot(0))");
-    if (c.seed > 2147483647)  // (a negative seed given to the CLI wraps around to here)
-      throw InvalidParameter("seed", "must be an integer in [0, 2147483647]");
+    check_perturbation(c.perturb, c.perturb_size, c.seed);
   }
   const sim::ResourceEstimate e = c.model ? model_estimate(c, periods) : chain_estimate(c, periods);
   if (e.dominant == "period" && !c.model)  // (a model's refusal names sites, as `dark --model` did)
