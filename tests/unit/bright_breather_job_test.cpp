@@ -13,6 +13,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/tools/roots.hpp>
 
+#include "../support/oscillator_amplitude.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/bright_breather_job.hpp"
 #include "lrchain/model.hpp"
@@ -58,22 +59,6 @@ std::string refusal(const BrightBreatherConfig& c) {
     return e.parameter() + ": " + e.what();
   }
   return "";
-}
-
-// The amplitude A of the oscillator x'' + w0^2 x + b x^3 = 0 (x(0) = A, x'(0) = 0) whose period is
-// 2 pi / omega: T(A) = 4 int_0^{pi/2} dphi / sqrt(w0^2 + b A^2 (1 + sin^2 phi) / 2) (energy
-// conservation with x = A sin phi; Landau & Lifshitz, Mechanics, Sec. 11), by Gauss-Kronrod and TOMS 748.
-double oscillator_amplitude(double w0, double b, double omega) {
-  const auto period = [&](double A) {
-    const auto integrand = [&](double phi) {
-      return 1.0 / std::sqrt(w0 * w0 + 0.5 * b * A * A * (1.0 + std::sin(phi) * std::sin(phi)));
-    };
-    return 4.0 * boost::math::quadrature::gauss_kronrod<double, 31>::integrate(integrand, 0.0, std::numbers::pi / 2, 10, 1e-15);
-  };
-  boost::uintmax_t iterations = 100;
-  const auto root = boost::math::tools::toms748_solve([&](double A) { return period(A) - 2 * std::numbers::pi / omega; },
-                                                      1e-3, 3.0, boost::math::tools::eps_tolerance<double>(50), iterations);
-  return 0.5 * (root.first + root.second);
 }
 
 }  // namespace
@@ -135,7 +120,7 @@ TEST_CASE("bright job: Klein-Gordon anti-continuum limit, one oscillator at omeg
   // excited oscillator x'' + w0^2 x + b x^3 = 0 at frequency omega_b, the others at rest; the centre's
   // amplitude differs from that oscillator's by O(C). Its amplitude comes from the period integral
   // (oscillator_amplitude), independent of the lattice code.
-  const double omega_b = 1.1, A = oscillator_amplitude(1.0, 0.5, omega_b);
+  const double omega_b = 1.1, A = lrchain::test::oscillator_amplitude(1.0, 0.5, omega_b);
   CHECK(A == doctest::Approx(0.751).epsilon(2e-3));
   std::vector<double> difference;
   for (const double C : {0.004, 0.002, 0.001}) {

@@ -11,6 +11,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/tools/roots.hpp>
 
+#include "../support/oscillator_amplitude.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/bright_breather_job.hpp"
 #include "lrchain/model.hpp"
@@ -20,22 +21,6 @@ using namespace lrchain;
 using namespace lrchain::jobs::bright_breather;
 
 namespace {
-
-// The amplitude of x'' + w0^2 x + b x^3 = 0 with period 2 pi / omega, from the period integral
-// T(A) = 4 int_0^{pi/2} dphi / sqrt(w0^2 + b A^2 (1 + sin^2 phi) / 2) (Landau & Lifshitz, Mechanics,
-// Sec. 11) by Gauss-Kronrod and TOMS 748: the on-site potential alone, no lattice code.
-double single_oscillator_amplitude(double w0, double b, double omega) {
-  const auto period = [&](double A) {
-    const auto integrand = [&](double phi) {
-      return 1.0 / std::sqrt(w0 * w0 + 0.5 * b * A * A * (1.0 + std::sin(phi) * std::sin(phi)));
-    };
-    return 4.0 * boost::math::quadrature::gauss_kronrod<double, 31>::integrate(integrand, 0.0, std::numbers::pi / 2, 10, 1e-15);
-  };
-  boost::uintmax_t iterations = 100;
-  const auto root = boost::math::tools::toms748_solve([&](double A) { return period(A) - 2 * std::numbers::pi / omega; },
-                                                      1e-3, 3.0, boost::math::tools::eps_tolerance<double>(50), iterations);
-  return 0.5 * (root.first + root.second);
-}
 
 BrightBreatherConfig kg_config(const Model& model, BrightStep step) {
   BrightBreatherConfig c;
@@ -69,7 +54,7 @@ TEST_CASE("bright continue in C: the Klein-Gordon breather tends to one oscillat
   // centre's linear stiffness (its neighbours are O(C)), and with the Duffing estimate omega^2 = k +
   // 3 A^2 / 8 that lowers A by C / (omega^2 - 1) = 4.8 C relative; measured 5.18 C at C = 0.01 (the
   // O(C^2) terms and the estimate's error); allowed |peak - A| / A < 6 C.
-  const double A = single_oscillator_amplitude(1.0, 0.5, 1.1);
+  const double A = lrchain::test::oscillator_amplitude(1.0, 0.5, 1.1);
   for (std::size_t k = 0; k < r.branch.points.size(); ++k)
     CHECK(std::abs(r.branch_profiles[k].peak - A) / A < 6 * r.branch.points[k].parameter);
   // The continued breather at C = 0.001 is the one Newton finds there from the NLS seed (the same
