@@ -19,7 +19,7 @@ using namespace lrchain;
 namespace {
 
 // XDG_CACHE_HOME pointing at the build tree's model cache (LRCHAIN_TEST_MODEL_CACHE, kept between
-// runs): the first run compiles mim3.toml (minutes of CPU), later runs load it in seconds. The cache
+// runs): the first run compiles mim3.toml (about 9 s of CPU), later runs load it at once. The cache
 // key covers the file's bytes, the compiler and the evaluator code, so a changed file or emitter is
 // compiled again; the limit under test is computed by the library, not by the cached code. The
 // previous XDG_CACHE_HOME is restored after.
@@ -42,11 +42,11 @@ struct BuildTreeCache {
 TEST_CASE("mass-in-mass-in-mass at omega^2 = k3/m3: c, omega'' and h by their limit, not 0/0") {
 #ifdef LRCHAIN_SANITIZE_BUILD
   // The Release stage runs this; the checks it exercises are library code that the sanitizer stage
-  // runs in coefficient_check_test, and the model compile (minutes of CPU, the compiler itself not
-  // sanitized) would only be repeated.
+  // runs in coefficient_check_test, and the model compile (the GiNaC derivation and the compiler, neither
+  // of them sanitized) would only be repeated.
   return;
 #endif
-  const BuildTreeCache cache;  // the compile takes minutes: kept in the build tree between runs
+  const BuildTreeCache cache;  // the compiled object is kept in the build tree between runs
   const auto definition =
       compile_model_file(std::filesystem::path(LRCHAIN_SOURCE_DIR) / "tests" / "derivation" / "mim3.toml");
   const Model model(definition, {{"g3", -1.0}});
