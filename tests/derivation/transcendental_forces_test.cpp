@@ -1,6 +1,7 @@
 // Lattice runs of force laws with elementary functions (docs/models.md, "Lattice runs"): the energy
-// the lattice code generator integrates for sin, cosh, tanh, exp and log laws is the textbook
-// potential of those forces, and the emitted accelerations are minus its gradient.
+// the lattice code generator integrates for every law of its table (sin, cos, tan, sinh, cosh, tanh,
+// exp, log of a + b s, and (a + b s)^p) is the textbook potential of those forces, and the emitted
+// accelerations are minus its gradient.
 //
 // The model, a Frenkel-Kontorova chain with a sinh bond and a tanh on-site term besides:
 //   u_n'' = sinh(u_{n+1} - u_n) - sinh(u_n - u_{n-1}) - sin(u_n) - tanh(u_n)/2
@@ -91,6 +92,81 @@ TEST_CASE("lattice code: sin, sinh and tanh force laws get their textbook potent
     down[i] -= h;
     const double gradient = (energy(up) - energy(down)) / (2 * h);
     CHECK(std::abs(a[i] + gradient) < 1e-8);
+  }
+}
+
+namespace {
+
+// The rest of the table: an exp and cosh bond, and tan, log, cos and a power -1 on site,
+//   u_n'' = F(u_{n+1} - u_n) - F(u_n - u_{n-1}) - W(u_n),
+//   F(r) = exp(r) - cosh(r),  W(x) = tan(x)/4 + log(1 + x/2) + 1/(2 + x) - 1/2 + cos(x) - 1,
+// with (textbook integrals from 0) the potentials
+//   Phi_F(r) = exp(r) - sinh(r) - 1,
+//   Phi_W(x) = -log|cos x|/4 + (2 + x) log(1 + x/2) - x + log(1 + x/2) - x/2 + sin(x) - x,
+// defined for x > -2 and, for tan, on either side of its poles (one site is put beyond pi/2 below).
+constexpr const char* kTableChain = R"toml(name = "antiderivative_table"
+[functions.F]
+argument = "r"
+expression = "exp(r) - cosh(r)"
+[functions.W]
+argument = "x"
+expression = "tan(x)/4 + log(1 + x/2) + 1/(2 + x) - 1/2 + cos(x) - 1"
+[[field]]
+name = "u"
+mass = "1"
+force = "F(u[n+1] - u[n]) - F(u[n] - u[n-1]) - W(u[n])"
+)toml";
+
+double table_energy(const std::vector<double>& u, const std::vector<double>& v) {
+  const std::size_t n = u.size();
+  double e = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = u[(i + 1) % n] - u[i], x = u[i];
+    e += v[i] * v[i] / 2 + (std::exp(r) - std::sinh(r) - 1) - std::log(std::abs(std::cos(x))) / 4 +
+         (2 + x) * std::log1p(x / 2) - x + std::log1p(x / 2) - x / 2 + std::sin(x) - x;
+  }
+  return e;
+}
+
+}  // namespace
+
+TEST_CASE("lattice code: exp, cosh, tan (beyond pi/2 too), log, cos and 1/(a + b s) laws get their textbook potential" *
+          doctest::test_suite("fast") * doctest::timeout(600)) {
+  lrchain::test::ScratchCache scratch("lrchain-antiderivative-table");
+  const fs::path file = scratch.dir / "antiderivative_table.toml";
+  std::ofstream(file) << kTableChain;
+  const auto kernels = lrchain::compile_model_lattice(file);
+  const bool has_energy = kernels->energy_density != nullptr;
+  REQUIRE(has_energy);
+
+  const long n = 10;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> amplitude(-0.8, 0.8);
+  std::vector<double> u(n), v(n), e(n), a(n), work(std::size_t(kernels->workspace_size(n)));
+  for (long i = 0; i < n; ++i) {
+    u[i] = amplitude(random);
+    v[i] = amplitude(random);
+  }
+  u[3] = 2.0;  // tan's next branch: cos(2) < 0, where -log(cos x) would be NaN
+  const auto energy = [&](const std::vector<double>& x) {
+    kernels->energy_density(nullptr, n, LRCHAIN_LATTICE_ENDS_PERIODIC, x.data(), v.data(), e.data(), work.data());
+    double sum = 0;
+    for (double y : e) sum += y;
+    return sum;
+  };
+  const double expected = table_energy(u, v);
+  REQUIRE(std::isfinite(energy(u)));
+  CHECK(std::abs(energy(u) - expected) < 1e-12 * std::abs(expected));
+
+  // a_n = -dE/du_n by central differences of the emitted energy (O(h^2) = 1e-10 times third derivatives).
+  kernels->displacement_accelerations(nullptr, n, 1, u.data(), a.data(), work.data());
+  const double h = 1e-5;
+  for (long i = 0; i < n; ++i) {
+    INFO("site " << i << " u = " << u[i]);
+    std::vector<double> up = u, down = u;
+    up[i] += h;
+    down[i] -= h;
+    CHECK(std::abs(a[i] + (energy(up) - energy(down)) / (2 * h)) < 1e-7);
   }
 }
 

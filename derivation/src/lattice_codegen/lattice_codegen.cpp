@@ -574,11 +574,12 @@ class Generator {
 
   // The antiderivative F of f(x) for the elementary functions f with one in closed form (exp, sin,
   // cos, tan, sinh, cosh, tanh, log): int f(a + b s) ds = F(a + b s) / b. 0 for any other name.
+  // tan's is -log|cos x|, real on every branch between its poles (-log(cos x) is NaN where cos x < 0).
   static ex elementary_antiderivative(const std::string& name, const ex& x) {
     if (name == "exp") return exp(x);
     if (name == "sin") return -cos(x);
     if (name == "cos") return sin(x);
-    if (name == "tan") return -log(cos(x));
+    if (name == "tan") return -log(abs(cos(x)));
     if (name == "sinh") return cosh(x);
     if (name == "cosh") return sinh(x);
     if (name == "tanh") return log(cosh(x));
@@ -613,7 +614,7 @@ class Generator {
       const ex base = g.op(0), p = g.op(1);
       const ex slope = base.diff(s);
       if (!slope.has(s) && !slope.is_zero()) {
-        if ((p + 1).is_zero()) return log(base) / slope;
+        if ((p + 1).is_zero()) return log(abs(base)) / slope;  // int ds / (a + b s), either side of its pole
         return pow(base, p + 1) / ((p + 1) * slope);
       }
     }
