@@ -5,10 +5,11 @@
 #      (ctest -L corpus: every option, config key and input file with bad values, split into parts
 #      that run in parallel);
 #   2. build-sanitize/: a second build with AddressSanitizer, UndefinedBehaviorSanitizer and
-#      float-cast-overflow (-DLRCHAIN_SANITIZE=ON, -O1 -g, no benchmarks) running the fast tests,
+#      float-cast-overflow (-DLRCHAIN_SANITIZE=ON, -O1 -g1, no benchmarks) running the fast tests,
 #      the corpus among them, again (LRCHAIN_SANITIZER=0 skips this stage);
 #   3. build/: the validation runs (ctest -L validation, long; two at a time) when they fit in the
-#      time budget (LRCHAIN_TEST_BUDGET seconds, default 2550: CI's 45 minutes less a margin; 0: always).
+#      time budget (LRCHAIN_TEST_BUDGET seconds, default 2200: CI's 45 minutes less a margin for the
+#      machine's start and a slower machine; 0: always).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
@@ -44,10 +45,12 @@ if [[ "${LRCHAIN_SANITIZER:-1}" == 1 ]]; then
     ctest --test-dir build-sanitize -L fast --output-on-failure -j "$jobs"
 fi
 
-# The validation runs come last and run when they fit in CI's 45 minutes with 2.5 minutes to spare:
-# they take up to 8 minutes on 2 cores, so they are skipped (said on stderr, not a failure) when less
-# than that remains. LRCHAIN_TEST_BUDGET (seconds, default 2550) sets the budget; 0 runs them always.
-budget=${LRCHAIN_TEST_BUDGET:-2550}
+# The validation runs come last and run when they fit in CI's 45 minutes: they take up to 8 minutes
+# on 2 cores, so they are skipped (said on stderr, not a failure) when less than that remains of the
+# budget. The budget leaves 500 s of the 2700 for what CI does around this script and a slower machine
+# (CI reported 2999 s for a run under a budget of 2550 s). LRCHAIN_TEST_BUDGET (seconds, default 2200) sets it; 0 runs
+# them always.
+budget=${LRCHAIN_TEST_BUDGET:-2200}
 if ((budget == 0 || SECONDS + 480 <= budget)); then
   stage "validation runs" ctest --test-dir build -L validation --output-on-failure -j "$jobs"
 else
