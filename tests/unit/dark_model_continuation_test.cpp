@@ -97,6 +97,28 @@ TEST_CASE("dark continue --model: fput (b = -1/2), a strain lattice, moves off i
   }
 }
 
+TEST_CASE("dark continue --model: a theta = 0 pair with mean flow is continued in its reflection family" *
+          doctest::test_suite("fast")) {
+  // resonant_chain_polynomial's optical branch is defocusing at theta = 0 (docs/dark-models.md): a pair
+  // of dips on 60 sites. Its seed is symmetric only up to the tails the ring's closure changes, so the
+  // reflection is read off the solved breather (symmetric to 2.4e-6 of its peak, measured); without a
+  // family the steps slid along the translation direction and stopped after 2 points (step_too_small
+  // at omega_b = 2.010035). Measured with the family: 2.01, 2.0305, 2.0530, 2.0880, 2.1418, ...
+  const Model model = shipped_model("resonant_chain_polynomial");
+  const DarkResult r = continue_model(model, "resonant_chain_polynomial", 2.01, 60, 6, 0.1);
+  REQUIRE_FALSE(failure(r).has_value());
+  CHECK(r.symmetry == "i -> (32 - i) mod 60 with sign +; i -> (31 - i) mod 60 with sign -, at all times");
+  const auto& points = r.branch.points;
+  REQUIRE(points.size() == 6);
+  // Away from the edge omega = 2 (measured 2.01 -> 2.1799 in five steps; without the family the branch
+  // stalled 3.5e-5 from its start).
+  CHECK(points.back().omega_b - points.front().omega_b > 0.1);
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    CHECK(points[i].omega_b > points[i - 1].omega_b);
+    CHECK(points[i].measures.E_b < 1e-9);
+  }
+}
+
 TEST_CASE("dark continue --to narrows the window: beyond the band edge or outside omega_min is refused naming to" *
           doctest::test_suite("fast")) {
   // klein_gordon at C = 1/2: the breather at 1.72 lies below the top of the phonon band, sqrt(1 + 4 C) =

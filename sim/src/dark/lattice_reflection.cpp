@@ -45,10 +45,6 @@ struct FieldMap {
 };
 
 Index wrap(Index i, Index n) { return ((i % n) + n) % n; }
-
-// How closely the seed must be symmetric (relative to its largest entry): the formulas are odd and
-// even to round-off; a ring's seed differs from the infinite lattice's only in tails of tanh.
-constexpr double seed_tolerance = 1e-6;
 }  // namespace
 
 Eigen::MatrixXd reflection_even_basis(const LatticeReflection& r) { return reflection_basis(r, 1.0); }
@@ -56,7 +52,7 @@ Eigen::MatrixXd reflection_odd_basis(const LatticeReflection& r) { return reflec
 
 std::optional<LatticeReflection> find_dark_reflection(const CompiledLattice& lattice, double centre,
                                                       const Eigen::VectorXd& seed,
-                                                      const Eigen::VectorXd& seed_half_period) {
+                                                      const Eigen::VectorXd& seed_half_period, double tolerance) {
   const Index N = lattice.sites(), F = lattice.fields(), P = lattice.positions();
   const Index K = Index(std::lround(2.0 * centre));
   const double scale = seed.cwiseAbs().maxCoeff();
@@ -75,7 +71,7 @@ std::optional<LatticeReflection> find_dark_reflection(const CompiledLattice& lat
             if (i == 0 || j == 0) continue;
             worst = std::max(worst, std::abs(s * seed(f * N + i) - target(f * N + j)));
           }
-          if (worst <= seed_tolerance * scale) per_field[std::size_t(f)].push_back({o, s});
+          if (worst <= tolerance * scale) per_field[std::size_t(f)].push_back({o, s});
         }
     // Every combination of the fields' maps (usually one), kept if it commutes with the accelerations.
     std::vector<std::size_t> choice(std::size_t(F), 0);

@@ -33,10 +33,13 @@ Eigen::MatrixXd reflection_odd_basis(const LatticeReflection& reflection);
 // under which the seed is symmetric: R seed = seed (at all times) or R seed = seed_half_period (the
 // seed half a period later), each field's index map i -> (2 centre + o - i) mod N with o in {0, 1} (a
 // strain lives on a bond) and sign +-1, that also commutes with the lattice's accelerations at two
-// random states around the seed (relative 1e-10). nullopt when no such reflection exists (a lattice
-// without reflection symmetry).
+// random states around the seed (relative 1e-10). The seed must be symmetric to `tolerance` relative
+// to its largest entry (the seed formulas are to round-off; a solved breather only to its weakly
+// pinned translation direction). nullopt when no such reflection exists (a lattice without
+// reflection symmetry).
 std::optional<LatticeReflection> find_dark_reflection(const CompiledLattice& lattice, double centre,
                                                       const Eigen::VectorXd& seed,
-                                                      const Eigen::VectorXd& seed_half_period);
+                                                      const Eigen::VectorXd& seed_half_period,
+                                                      double tolerance = 1e-6);
 
 }  // namespace lrchain::sim::dark
