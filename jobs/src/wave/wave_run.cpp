@@ -60,6 +60,7 @@ WaveResult run(const WaveConfig& c) {
     fo.growth_rate = r.ring_growth.rate;
     fo.periods = c.periods > 0 ? c.periods : auto_periods(r.waves.back().omega, fo.growth_rate, c.noise);
     fo.steps_per_period = c.steps_per_period;
+    r.band = sim::branch_band(*c.kernels, sim::lattice_parameters(*c.model), branch);
     try {
       r.fate = sim::wave::wave_fate(*c.kernels, sim::lattice_parameters(*c.model), r.waves.back(), fo, c.stop);
     } catch (const NumericalFailure& e) {

@@ -5,6 +5,7 @@
 // Gauss-Newton (sim/wave/travelling_wave.hpp), its Floquet-Bloch growth rates over K
 // (sim/wave/wave_stability.hpp), both beside the NLS predictions (sim/wave/wave_nls.hpp).
 // docs/waves.md.
+#include <array>
 #include <atomic>
 #include <filesystem>
 #include <optional>
@@ -81,6 +82,7 @@ struct WaveResult {
   std::optional<sim::wave::WaveStability> stability;
   double theta = 0;                        // the wave's theta: config.theta, or for fate the ring's nearest
   std::optional<sim::wave::WaveFateResult> fate;
+  std::array<double, 2> band{0, 0};        // fate: the branch's linear band [min, max] omega (sim::branch_band)
   // standing: the ramp of standing waves (the last at `amplitude`) on one spatial period of the ring, the
   // reflection the model has, and the last wave's Floquet multipliers on the ring of ring_sites sites.
   std::vector<sim::wave::StandingWave> standing;
