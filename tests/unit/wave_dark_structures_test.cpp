@@ -3,9 +3,11 @@
 // half depth 2 acosh(sqrt 2) l = 1.7627 l whatever its depth d; such a dip is one structure, a plane
 // wave, a deep sinusoidal modulation (half its period below its mid level) and a thermalised ring
 // (exponential site energies: the background's spread) none. A klein_gordon dark breather solved on
-// its lattice (`lrchain dark solve --model klein_gordon`) is one structure as wide as its NLS seed.
+// its lattice (`lrchain dark solve --model klein_gordon`) is one structure as wide as its NLS seed, and
+// stays one when run on its ring, oscillating at its frequency inside the band.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -15,7 +17,9 @@
 #include "lrchain/model.hpp"
 #include "lrchain/sim/model_lattice.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
+#include "lrchain/sim/integrator.hpp"
 #include "lrchain/sim/wave/dark_structures.hpp"
+#include "lrchain/sim/wave/wave_fate.hpp"
 
 using namespace lrchain;
 using namespace lrchain::sim::wave;
@@ -129,4 +133,36 @@ TEST_CASE("dark structures: a klein_gordon dark breather is one, as wide as its 
   CHECK(found.depth > 0.9);
   CHECK(std::abs(std::remainder(found.centre - expected.centre, double(n))) <= 1);
   CHECK(scan.background_spread() < kDarkBackgroundSpread);
+
+  // The breather run on its ring (srkn11b, 40 steps a period, 24 periods): one structure at every period,
+  // and the velocity at its half-depth edge oscillates at omega_b, inside the branch's band [w0, sqrt(w0^2 +
+  // 4 C)] = [1, sqrt(1.4)] (omega^2 = w0^2 + 4 C sin^2(theta / 2)): a dark breather, not a gap one.
+  const sim::CompiledLattice ring(sim::lattice_kernels_of(model), sim::lattice_parameters(model), n, true,
+                                  sim::LatticeForm::displacement);
+  sim::State state(std::size_t(2 * n), 0.0);
+  std::copy(solved.begin(), solved.end(), state.begin());
+  const double period = 2 * std::numbers::pi / c.omega_b;
+  const Index periods = 24, per = kSamplesPerPeriod, edge = Index(std::lround(found.right)) % n;
+  std::vector<double> times, edge_velocity, e(static_cast<std::size_t>(n));
+  for (Index k = 0; k <= periods * per; ++k) times.push_back(double(k) * period / double(per));
+  Index counted = 0, observations = 0;
+  sim::IntegratorOptions opt;
+  opt.stepper = sim::StepperKind::srkn11b;
+  opt.dt = period / 40;
+  sim::integrate_observed(ring, state, times, [&](const sim::State& x, double) {
+    if (observations++ % per == 0) {
+      ring.energy_density(x.data(), x.data() + n, e.data());
+      counted += scan.scan(e.data()) == 1;
+    }
+    edge_velocity.push_back(x[std::size_t(n + edge)]);
+    return true;
+  }, opt);
+  CHECK(counted == periods + 1);
+  const double omega = zero_crossing_frequency(edge_velocity.data(), Index(edge_velocity.size()), 1, period / double(per));
+  CHECK(omega == doctest::Approx(c.omega_b).epsilon(1e-3));
+  const auto band = sim::branch_band(sim::lattice_kernels_of(model), sim::lattice_parameters(model), 0);
+  CHECK(band[0] == doctest::Approx(1.0).epsilon(1e-12));
+  CHECK(band[1] == doctest::Approx(std::sqrt(1.4)).epsilon(1e-12));
+  CHECK(omega > band[0]);
+  CHECK(omega < band[1]);
 }

@@ -5,6 +5,7 @@
 // onto the growing mode; the spectral entropy of one plane wave is log 2 / log N (its modes +-j).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -52,6 +53,13 @@ TEST_CASE("wave fate: a calm wave stays, an unstable one breaks up when the ring
   CHECK(calm.fate->max_relative_energy_drift < 1e-10);  // srkn11b, symplectic
   CHECK(calm.fate->entropy.front() == doctest::Approx(std::log(2.0) / std::log(64.0)).epsilon(0.02));
   CHECK(calm.theta == doctest::Approx(2 * std::numbers::pi * 5 / 64));  // the ring's nearest 2 pi j / N
+  // An intact plane wave holds no dark structure at any sample; its envelope window is the odd number
+  // nearest its wavelength 64/5 = 12.8 sites. fput's band is omega = 2 sin(theta / 2) on [0, 2].
+  CHECK(calm.fate->envelope_window == 13);
+  CHECK(*std::max_element(calm.fate->dark.begin(), calm.fate->dark.end()) == 0);
+  CHECK(calm.fate->kind == sim::wave::LocalizedKind::none);
+  CHECK(calm.band[0] == doctest::Approx(0).scale(1));
+  CHECK(calm.band[1] == doctest::Approx(2).epsilon(1e-12));
   // The JSON's theta is the wave's (the ring's), the request beside it; fate records the stability options.
   const auto j = to_json(calm);
   CHECK(j["theta"].get<double>() == calm.theta);

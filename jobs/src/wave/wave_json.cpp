@@ -130,6 +130,7 @@ json to_json(const WaveResult& r) {
                  {"dark_background_spread", number_or_null(f.dark_background_spread)},
                  {"envelope_window", f.envelope_window},
                  {"dark_frequency", number_or_null(f.dark_frequency)},
+                 {"dark_site", f.dark_site < 0 ? json(nullptr) : json(f.dark_site)},
                  {"bright_frequency", number_or_null(f.bright_frequency)},
                  {"bright_site", f.bright_site < 0 ? json(nullptr) : json(f.bright_site)},
                  {"band", {{"low", r.band[0]}, {"high", r.band[1]}}},

@@ -10,7 +10,7 @@ namespace lrchain::sim::wave {
 
 Index envelope_window(double theta) {
   const double wavelength = 2 * std::numbers::pi / std::abs(theta);
-  const Index w = 2 * Index(std::floor(wavelength / 2)) + 1;  // the odd number nearest 2 pi / theta
+  const Index w = 2 * Index(std::floor(wavelength / 2)) + 1;
   return std::max<Index>(3, w);
 }
 

@@ -94,9 +94,10 @@ Index count_peaks(const std::vector<double>& e) {
   return count;
 }
 
-// omega = pi (crossings - 1) / (t_last - t_first) from the zero crossings of x_k - mean (x_k = x[k stride]
-// at t = k dt, linearly interpolated); NaN with fewer than 3 crossings.
-double crossing_frequency(const double* x, Index count, Index stride, double dt) {
+}  // namespace
+
+// omega = pi (crossings - 1) / (t_last - t_first) over the zero crossings of x - mean (wave_fate.hpp).
+double zero_crossing_frequency(const double* x, Index count, Index stride, double dt) {
   double mean = 0;
   for (Index k = 0; k < count; ++k) mean += x[k * stride] / double(count);
   double first = 0, last = 0;
@@ -111,7 +112,6 @@ double crossing_frequency(const double* x, Index count, Index stride, double dt)
   return crossings >= 3 ? std::numbers::pi * double(crossings - 1) / (last - first) : NAN;
 }
 
-}  // namespace
 
 WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
                          const TravellingWave& wave, const WaveFateOptions& o, const std::atomic<bool>* stop) {
@@ -148,6 +148,7 @@ WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vect
   opt.dt = period / double(o.steps_per_period);
 
   WaveFateResult r;
+  for (auto* series : {&r.t, &r.deviation, &r.participation, &r.entropy, &r.dark}) series->reserve(std::size_t(periods + 1));
   std::vector<double> e(static_cast<std::size_t>(n));
   SpatialSpectrum spectrum(n);
   r.envelope_window = envelope_window(wave.theta);
@@ -204,12 +205,15 @@ WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vect
   r.bright_structures = count_peaks(e);
   const bool tail_complete = tail_row == tail_samples;
   const double dt = period / double(kSamplesPerPeriod);
-  if (tail_complete && !r.dark_end.empty())
-    r.dark_frequency = crossing_frequency(velocity.data() + std::ptrdiff_t(r.dark_end.front().centre), tail_samples, n, dt);
+  if (tail_complete && !r.dark_end.empty()) {  // at its half-depth edge: a black soliton's centre is at rest
+    r.dark_site = Index(std::lround(r.dark_end.front().right)) % n;
+    if (r.dark_site < 0) r.dark_site += n;
+    r.dark_frequency = zero_crossing_frequency(velocity.data() + r.dark_site, tail_samples, n, dt);
+  }
   if (r.bright_structures > 0) {
     r.bright_site = Index(std::max_element(e.begin(), e.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }) -
                           e.begin());
-    if (tail_complete) r.bright_frequency = crossing_frequency(velocity.data() + r.bright_site, tail_samples, n, dt);
+    if (tail_complete) r.bright_frequency = zero_crossing_frequency(velocity.data() + r.bright_site, tail_samples, n, dt);
   }
   const bool bright = r.participation_end < kLocalizedParticipation, dark_found = r.dark_structures > 0;
   if (r.broke_at < 0) r.fate = o.growth_rate > 0 ? WaveFate::intact : WaveFate::stable;

@@ -38,7 +38,8 @@ struct DarkStructure {
   double left = 0, right = 0;  // the half-depth crossings (centre - left + right = width; may lie off [0, N))
 };
 
-// The envelope window for carrier wavenumber theta: the odd number nearest 2 pi / theta (at least 3).
+// The envelope window for carrier wavenumber theta: 2 floor(pi / theta) + 1 sites, the odd number within one
+// of the wavelength 2 pi / theta (at least 3).
 Index envelope_window(double theta);
 
 // Finds the dark structures of an energy density on a ring; buffers made once (nothing allocates per scan).

@@ -20,9 +20,9 @@
 // P = E[e]^2 / E[e^2] = 1/2, and a wave under a sinusoidal envelope P = 2/3; energy held in fewer
 // sites than half the thermal value, P < 1/4, is localized.
 // Frequencies: over the last kFrequencyPeriods carrier periods the first field's velocity is sampled
-// kSamplesPerPeriod times a period at every site; the frequency at the centre of the deepest dark
-// structure and at the highest energy peak is pi (crossings - 1) / (time between the first and last
-// zero crossing of the velocity minus its mean), to be set against the branch's linear band.
+// kSamplesPerPeriod times a period at every site; the frequency at the deepest dark structure (at its
+// half-depth edge: the centre of a black one does not move) and at the highest energy peak is
+// zero_crossing_frequency of that site's velocity, to be set against the branch's linear band.
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -69,7 +69,8 @@ struct WaveFateResult {
   Index envelope_window = 3;           // sites of the dark envelope's running mean
   std::vector<DarkStructure> dark_end; // the dark structures at the end, deepest first
   double dark_background_spread = 0;   // (q3 - q1) / b of the envelope's background at the end
-  double dark_frequency = NAN;         // at the deepest dark structure's centre at the end (NaN: none, or < 3 crossings)
+  double dark_frequency = NAN;         // at the deepest dark structure's half-depth edge at the end (NaN: none, or < 3 crossings)
+  Index dark_site = -1;                // that edge's site (-1: none)
   double bright_frequency = NAN;       // at the highest energy peak at the end, when bright_structures > 0
   Index bright_site = -1;              // that peak's site (-1: none)
   LocalizedKind kind = LocalizedKind::none;
@@ -77,6 +78,10 @@ struct WaveFateResult {
   WaveFate fate = WaveFate::stable;
   bool interrupted = false;
 };
+
+// omega = pi (crossings - 1) / (t_last - t_first) from the zero crossings of x_k - mean (x_k = x[k stride]
+// at t = k dt, linearly interpolated); NaN with fewer than 3 crossings.
+double zero_crossing_frequency(const double* x, Index count, Index stride, double dt);
 
 // The run above for `wave` (solved at `theta` = 2 pi j / options.ring_sites on `kernels` with
 // `parameters`). InvalidParameter("ring_sites") when theta is not on the ring; NumericalFailure when
