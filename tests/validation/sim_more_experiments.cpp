@@ -89,7 +89,7 @@ TEST_CASE("exp7: modulated acoustic wave (eq:cimi): long transient, instability 
   CHECK(s.dark_speed == doctest::Approx(s.group_velocity).epsilon(0.1));
   // The fate atlas's dark-structure scan (sim/wave/dark_structures.hpp, window 3 at theta0) on the
   // energy density rows: none before the instability; in the paper's window [28000, 33000] a dip below
-  // half the background in an intact background in most rows (measured 307 of 501; 0.70 of those in
+  // half the background in an intact background in most rows (measured 307 of 501; 0.70 of the rows in
   // [28000, 30000)), 33 sites wide at half depth on average, depth 0.70, moving at ~0.3 sites per time.
   const sim::SpaceTime& e = r.record.fields[0];
   std::vector<double> row(static_cast<std::size_t>(e.sites));
