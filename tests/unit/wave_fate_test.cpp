@@ -94,6 +94,22 @@ TEST_CASE("wave fate: a calm wave stays, an unstable one breaks up when the ring
   CHECK(drifted.failure->find("energy drift") != std::string::npos);
   CHECK_FALSE(drifted.fate);
 
+  // --noise 0 --modulation b: the ring starts from the exact wave times 1 + b cos(2 pi n / N) (the paper's
+  // eq:cimi seed), so its first deviation is b |U_0(0)| / A at n = 0, b to the wave's harmonics (A = 0.03:
+  // within 1 %); without either it is the wave itself, to round-off. No noise: no predicted breakup.
+  WaveConfig seeded = fate_of(fput, 0.5, 0.03);
+  seeded.periods = 1;
+  seeded.noise = 0;
+  const WaveResult exact = run(seeded);
+  REQUIRE(exact.fate);
+  CHECK(exact.fate->deviation.front() < 1e-12);
+  CHECK(to_json(exact)["fate"]["predicted_breakup"].is_null());
+  seeded.modulation = 0.01;
+  const WaveResult modulated = run(seeded);
+  REQUIRE(modulated.fate);
+  CHECK(modulated.fate->deviation.front() == doctest::Approx(0.01).epsilon(0.01));
+  CHECK(to_json(modulated)["fate"]["modulation"].get<double>() == 0.01);
+
   // refusals name their key
   WaveConfig bad = fate_of(fput, 2.5, 0.3);
   bad.ring_sites = 4;
@@ -102,6 +118,14 @@ TEST_CASE("wave fate: a calm wave stays, an unstable one breaks up when the ring
     FAIL("ring_sites = 4 was accepted");
   } catch (const InvalidParameter& e) {
     CHECK(e.parameter() == "ring_sites");
+  }
+  bad = fate_of(fput, 2.5, 0.3);
+  bad.modulation = 1;  // 1 + cos(2 pi n / N) vanishes at n = N/2: refused, [0, 1)
+  try {
+    validate(bad);
+    FAIL("modulation = 1 was accepted");
+  } catch (const InvalidParameter& e) {
+    CHECK(e.parameter() == "modulation");
   }
   bad = fate_of(fput, 0.01, 0.3);  // moves to theta = 0 on 64 sites
   CHECK_THROWS_AS(validate(bad), InvalidParameter);

@@ -76,6 +76,7 @@ WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTa
     if (w.read("seed", integer)) c.seed = Index(integer);
     if (w.read("steps_per_period", integer)) c.steps_per_period = Index(integer);
     w.read("noise", c.noise);
+    w.read("modulation", c.modulation);
     w.read("periods", c.periods);
   }
   w.read("tail_tolerance", c.tail_tolerance);

@@ -111,12 +111,14 @@ json to_json(const WaveResult& r) {
                  {"ring_sites", c.ring_sites},
                  {"ring_theta", r.theta},
                  {"noise", c.noise},
+                 {"modulation", c.modulation},
                  {"seed", c.seed},
                  {"periods", f.t.empty() ? 0.0 : std::round(f.t.back() * r.waves.back().omega / (2 * std::numbers::pi))},
                  {"steps_per_period", c.steps_per_period},
                  {"broke_at", f.broke_at < 0 ? json(nullptr) : json(f.broke_at)},
                  // the noise grows e^{rate t} from c.noise to the breakup deviation (the Floquet-Bloch prediction)
-                 {"predicted_breakup", rate > 0 ? json(std::log(sim::wave::kBrokenDeviation / c.noise) / rate) : json(nullptr)},
+                 {"predicted_breakup", rate > 0 && c.noise > 0 ? json(std::log(sim::wave::kBrokenDeviation / c.noise) / rate)
+                                                               : json(nullptr)},
                  {"ring_largest_rate", rate},
                  {"ring_at_k", rate > 0 ? json(r.ring_growth.at_k) : json(nullptr)},
                  {"participation_end", f.participation_end},

@@ -124,13 +124,14 @@ WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vect
   std::vector<std::vector<std::complex<double>>> harmonics;
   for (Index f = 0; f < fields; ++f) harmonics.push_back(wave_harmonics(wave, f));
   std::mt19937_64 random(o.seed);
-  std::normal_distribution<double> noise(0.0, o.noise * wave.amplitude);
+  std::normal_distribution<double> noise(0.0, o.noise > 0 ? o.noise * wave.amplitude : 1.0);  // (used when noise > 0)
   for (Index f = 0; f < fields; ++f)
     for (Index i = 0; i < n; ++i) {
       double u, du;
       profile_at(harmonics[std::size_t(f)], wave.theta * double(i), u, du);
-      s[std::size_t(f * n + i)] = u + noise(random);
-      s[std::size_t(fields * n + f * n + i)] = -wave.omega * du;  // d/dt U(theta n - omega t)
+      const double envelope = 1 + o.modulation * std::cos(2 * std::numbers::pi * double(i) / double(n));
+      s[std::size_t(f * n + i)] = envelope * u + (o.noise > 0 ? noise(random) : 0.0);
+      s[std::size_t(fields * n + f * n + i)] = -envelope * wave.omega * du;  // d/dt U(theta n - omega t)
     }
   const double period = 2 * std::numbers::pi / wave.omega;
   // One sample a period; over the last kFrequencyPeriods, kSamplesPerPeriod velocity samples a period.

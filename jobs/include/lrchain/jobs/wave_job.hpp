@@ -54,7 +54,8 @@ struct WaveConfig {
   Index k_points = 200;               // stability: K_i = pi (i/k_points)^2, i = 1..k_points, in [1, 100000]
   double unstable_tolerance = 1e-9;   // stability: Re lambda > this x omega is growth, in (0, 1)
   Index ring_sites = 256;             // fate, standing: sites N of the ring, theta moved to the nearest 2 pi j / N, in [8, 100000]
-  double noise = 1e-4;                // fate: noise on every displacement, relative to A, in (0, 1)
+  double noise = 1e-4;                // fate: noise on every displacement, relative to A, in [0, 1)
+  double modulation = 0;              // fate: the wave on the ring times 1 + modulation cos(2 pi n / N) (eq:cimi's b), in [0, 1)
   Index seed = 1;                     // fate: of the noise, in [1, 2^31)
   double periods = 0;                 // fate: carrier periods integrated, in [1, 1e6]; 0: auto_periods
   Index steps_per_period = 40;        // fate: srkn11b steps per carrier period, in [8, 10000]
@@ -91,7 +92,11 @@ struct WaveResult {
   double seconds = 0;
 };
 
-// The fate's run length when not given: three times the predicted breakup ln(0.1 / noise) / rate, in
+// The size round-off seeds a noise-free ring run with (the run length's noise when noise = 0).
+inline constexpr double kRoundOff = 1e-16;
+
+// The fate's run length when not given: three times the predicted breakup ln(0.1 / noise) / rate (noise 0:
+// kRoundOff), in
 // carrier periods 2 pi / omega, within [2000, 1e5]; 2000 for a stable wave (rate 0).
 double auto_periods(double omega, double growth_rate, double noise);
 

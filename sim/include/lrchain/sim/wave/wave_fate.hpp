@@ -51,6 +51,7 @@ std::string_view to_string(LocalizedKind k);
 struct WaveFateOptions {
   Index ring_sites = 256;          // N, with theta = 2 pi j / N for an integer j
   double noise = 1e-4;             // standard deviation of the noise, relative to A
+  double modulation = 0;           // b: the wave times 1 + b cos(2 pi n / N) (the paper's eq:cimi)
   std::uint64_t seed = 1;          // of the noise (std::mt19937_64)
   double periods = 2000;           // carrier periods 2 pi / omega integrated
   Index steps_per_period = 40;     // srkn11b steps per carrier period
