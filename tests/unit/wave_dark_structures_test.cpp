@@ -63,7 +63,7 @@ double smoothed_width(double l, double d, Index window) {
 
 }  // namespace
 
-TEST_CASE("dark structures: a tanh dip is one, of the NLS width; a plane wave, a modulation, a thermal ring none" *
+TEST_CASE("dark structures: a tanh dip is one of the NLS width, a plane wave, a modulation or a thermal ring none" *
           doctest::test_suite("fast")) {
   const Index n = 400, window = envelope_window(1.97);
   CHECK(window == 3);  // 2 pi / 1.97 = 3.19 sites

@@ -81,9 +81,10 @@ Index DarkStructureScan::scan(const double* e) {
   };
   // The background: sites outside every dip widened by its width on both sides.
   std::fill(dip_.begin(), dip_.end(), char(0));
-  for (const DarkStructure& s : candidates_)
-    for (Index i = Index(std::floor(s.left - s.width)); i <= Index(std::ceil(s.right + s.width)) && i - Index(std::floor(s.left - s.width)) < n; ++i)
-      dip_[at(i)] = 1;
+  for (const DarkStructure& s : candidates_) {
+    const Index from = Index(std::floor(s.left - s.width)), to = std::min(Index(std::ceil(s.right + s.width)), from + n - 1);
+    for (Index i = from; i <= to; ++i) dip_[at(i)] = 1;
+  }
   Index outside = 0;
   for (Index i = 0; i < n; ++i)
     if (!dip_[std::size_t(i)]) sorted_[std::size_t(outside++)] = envelope_[std::size_t(i)];
