@@ -121,6 +121,7 @@ void register_wave(CLI::App& app) {
   add_number(*fate, "--unstable-tolerance", args->config.unstable_tolerance, wave_help("unstable_tolerance"));
   add_integer(*fate, "--ring-sites", args->config.ring_sites, 0, 1000000, wave_help("ring_sites"));
   add_number(*fate, "--noise", args->config.noise, wave_help("noise"));
+  add_number(*fate, "--modulation", args->config.modulation, wave_help("modulation"));
   add_integer(*fate, "--seed", args->config.seed, 0, 2147483647, wave_help("seed"));
   add_number(*fate, "--periods", args->config.periods, wave_help("periods"));
   add_integer(*fate, "--steps-per-period", args->config.steps_per_period, 0, 1000000, wave_help("steps_per_period"));

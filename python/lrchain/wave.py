@@ -131,7 +131,7 @@ def _run(model, step, branch, theta, amplitude=_D["amplitude"], ramp=_D["ramp"],
          harmonics=_D["harmonics"], max_harmonics=_D["max_harmonics"], tail_tolerance=_D["tail_tolerance"],
          tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], k_points=_D["k_points"],
          unstable_tolerance=_D["unstable_tolerance"], ring_sites=_D["ring_sites"], noise=_D["noise"], seed=_D["seed"],
-         periods=_D["periods"], steps_per_period=_D["steps_per_period"]):
+         periods=_D["periods"], steps_per_period=_D["steps_per_period"], modulation=_D["modulation"]):
     from .errors import InvalidParameterError
 
     model = _model(model)
@@ -142,7 +142,7 @@ def _run(model, step, branch, theta, amplitude=_D["amplitude"], ramp=_D["ramp"],
     return python_names(lambda: _lrchain.wave_job(
         model, step, "" if branch is None else branch, theta, 0.0 if amplitude is None else amplitude, ramp, list(np.atleast_1d(amplitudes)),
         harmonics, max_harmonics, tail_tolerance, tolerance, max_iterations, k_points, unstable_tolerance, ring_sites,
-        noise, seed, periods, steps_per_period))
+        noise, seed, periods, steps_per_period, modulation))
 
 
 def _wave(d):
@@ -155,7 +155,7 @@ def _wave(d):
     f = d.get("fate")
     if f is not None:
         f = dict(f)
-        for key in ("t", "deviation", "participation", "entropy", "energy_density"):
+        for key in ("t", "deviation", "participation", "entropy", "dark", "energy_density"):
             f[key] = np.array(f[key])
     return TravellingWave(theta=d["theta"], amplitude=w["amplitude"], omega=w["omega"], omega_linear=d["linear"]["omega"],
                           harmonics=w["harmonics"], tail=w["tail"], residual=w["residual"],
@@ -248,12 +248,14 @@ def fate(model=None, branch=None, theta=None, amplitude=None, ramp=_D["ramp"], h
          max_harmonics=_D["max_harmonics"], tail_tolerance=_D["tail_tolerance"], tolerance=_D["tolerance"],
          max_iterations=_D["max_iterations"], k_points=_D["k_points"], unstable_tolerance=_D["unstable_tolerance"],
          ring_sites=_D["ring_sites"], noise=_D["noise"], seed=_D["seed"], periods=_D["periods"],
-         steps_per_period=_D["steps_per_period"]):
+         steps_per_period=_D["steps_per_period"], modulation=_D["modulation"]):
     """What the wave becomes (``lrchain wave fate``): :func:`stability` at the ring's nearest wavenumber
-    2 pi j / ``ring_sites``, then the wave plus noise on that ring; returns :class:`TravellingWave` with
+    2 pi j / ``ring_sites``, then the wave plus noise (and its ``modulation``) on that ring; returns :class:`TravellingWave` with
     ``fate`` set: the ``fate`` (stable, intact, modulated, localized or disordered), ``broke_at`` and the
-    ``predicted_breakup``, numpy series ``t``, ``deviation``, ``participation``, ``entropy`` (one per carrier
-    period) and the final ``energy_density`` (docs/waves.md, "The fate of a wave"). Ctrl-C stops the ring
+    ``predicted_breakup``, numpy series ``t``, ``deviation``, ``participation``, ``entropy``, ``dark`` (dark
+    structures counted; one per carrier period) and the final ``energy_density``; ``localized_kind``,
+    ``bright_structures``, ``dark_structures``, ``dark_end`` (centre, width, depth), ``dark_frequency``,
+    ``bright_frequency`` and the branch's linear ``band`` (docs/waves.md, "The fate of a wave"). Ctrl-C stops the ring
     run at its next period with ``KeyboardInterrupt``.
 
     Example::
@@ -265,7 +267,7 @@ def fate(model=None, branch=None, theta=None, amplitude=None, ramp=_D["ramp"], h
     """
     return _wave(_run(model, "fate", branch, theta, amplitude, ramp, (), harmonics, max_harmonics, tail_tolerance,
                       tolerance, max_iterations, k_points, unstable_tolerance, ring_sites, noise, seed, periods,
-                      steps_per_period))
+                      steps_per_period, modulation))
 
 
 @documented(_SECTION)

@@ -24,7 +24,7 @@ py::dict wave_job(const LoadedModel& loaded, const std::string& step, const std:
                   double amplitude, double ramp, const std::vector<double>& amplitudes, double harmonics,
                   double max_harmonics, double tail_tolerance, double tolerance, double max_iterations,
                   double k_points, double unstable_tolerance, double ring_sites, double noise, double seed,
-                  double periods, double steps_per_period) {
+                  double periods, double steps_per_period, double modulation) {
   WaveConfig c;
   c.step = step == "continue"    ? WaveStep::branch
            : step == "stability" ? WaveStep::stability
@@ -47,6 +47,7 @@ py::dict wave_job(const LoadedModel& loaded, const std::string& step, const std:
   c.unstable_tolerance = unstable_tolerance;
   c.ring_sites = integer_keyword(ring_sites, "ring_sites", 1, config::int32_most);
   c.noise = noise;
+  c.modulation = modulation;
   c.seed = integer_keyword(seed, "seed", 1, config::int32_most);
   c.periods = periods;
   c.steps_per_period = integer_keyword(steps_per_period, "steps_per_period", 1, config::int32_most);
@@ -89,7 +90,7 @@ void register_wave(py::module_& m) {
         py::arg("amplitude"), py::arg("ramp"), py::arg("amplitudes"), py::arg("harmonics"), py::arg("max_harmonics"),
         py::arg("tail_tolerance"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("k_points"),
         py::arg("unstable_tolerance"), py::arg("ring_sites"), py::arg("noise"), py::arg("seed"), py::arg("periods"),
-        py::arg("steps_per_period"));
+        py::arg("steps_per_period"), py::arg("modulation"));
 }
 
 }  // namespace lrchain::python

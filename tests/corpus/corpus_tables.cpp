@@ -100,6 +100,8 @@ const std::set<BadValue>& possibly_valid(const std::string& name) {
       {"front-fit-start", {minus_one, zero}},  // a fit window opening before the run starts at t = 0
       {"speed-fit-start", {minus_one, zero}},
       {"modulation-depth", {zero}},          // b = 0: no modulation
+      {"modulation", {zero}},                // wave fate: b = 0, no modulation (the default)
+      {"noise", {zero}},                     // wave fate: no noise (round-off, or --modulation, seeds the growth)
       {"omega-min", {minus_one, zero}},      // lower stop of the continuation (default 0)
       {"omega-max", {minus_one, zero}},      // <= 0 today means "the band edge"
       {"ds", {minus_one}},                   // the sign of the first step may pick the direction

@@ -77,7 +77,9 @@ def test_branch_result_reads_as_before_and_labels_on_amplitude():
 def test_fate_gives_the_ring_run_as_numpy_and_loads_back(tmp_path):
     w = lrchain.wave.fate(lrchain.load_model("fput"), theta=2.5, amplitude=0.3, ring_sites=64, periods=200)
     f = w.fate
-    assert f["t"].shape == f["deviation"].shape == f["participation"].shape == (201,)
+    assert f["t"].shape == f["deviation"].shape == f["participation"].shape == f["dark"].shape == (201,)
+    # fput's band omega = 2 sin(theta / 2): [0, 2]
+    assert f["band"]["low"] == 0 and abs(f["band"]["high"] - 2) < 1e-12
     assert f["energy_density"].shape == (64,)
     # the exact wave at t = 0 is the wave to the noise (1e-4 A) plus its sampling on the ring
     assert f["deviation"][0] < 1e-3
@@ -88,6 +90,11 @@ def test_fate_gives_the_ring_run_as_numpy_and_loads_back(tmp_path):
     with pytest.raises(lrchain.InvalidParameterError) as e:
         lrchain.wave.fate(lrchain.load_model("fput"), theta=2.5, amplitude=0.3, ring_sites=4)
     assert e.value.parameter == "ring_sites"
+    # the paper's seed instead of noise: the wave times 1 + b cos(2 pi n / N) starts b away from it
+    # (tests/unit/wave_fate_test.cpp: b to 1 % at A = 0.03)
+    m = lrchain.wave.fate(lrchain.load_model("fput"), theta=0.5, amplitude=0.03, ring_sites=64, periods=1,
+                          noise=0, modulation=0.01).fate
+    assert abs(m["deviation"][0] - 0.01) < 1e-4 and m["modulation"] == 0.01 and m["predicted_breakup"] is None
 
 
 def test_standing_wave_as_numpy_with_its_multipliers_and_the_refusal_at_pi():

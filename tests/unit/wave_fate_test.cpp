@@ -5,6 +5,7 @@
 // onto the growing mode; the spectral entropy of one plane wave is log 2 / log N (its modes +-j).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -52,6 +53,13 @@ TEST_CASE("wave fate: a calm wave stays, an unstable one breaks up when the ring
   CHECK(calm.fate->max_relative_energy_drift < 1e-10);  // srkn11b, symplectic
   CHECK(calm.fate->entropy.front() == doctest::Approx(std::log(2.0) / std::log(64.0)).epsilon(0.02));
   CHECK(calm.theta == doctest::Approx(2 * std::numbers::pi * 5 / 64));  // the ring's nearest 2 pi j / N
+  // An intact plane wave holds no dark structure at any sample; its envelope window is the odd number
+  // nearest its wavelength 64/5 = 12.8 sites. fput's band is omega = 2 sin(theta / 2) on [0, 2].
+  CHECK(calm.fate->envelope_window == 13);
+  CHECK(*std::max_element(calm.fate->dark.begin(), calm.fate->dark.end()) == 0);
+  CHECK(calm.fate->kind == sim::wave::LocalizedKind::none);
+  CHECK(calm.band[0] == doctest::Approx(0).scale(1));
+  CHECK(calm.band[1] == doctest::Approx(2).epsilon(1e-12));
   // The JSON's theta is the wave's (the ring's), the request beside it; fate records the stability options.
   const auto j = to_json(calm);
   CHECK(j["theta"].get<double>() == calm.theta);
@@ -86,6 +94,22 @@ TEST_CASE("wave fate: a calm wave stays, an unstable one breaks up when the ring
   CHECK(drifted.failure->find("energy drift") != std::string::npos);
   CHECK_FALSE(drifted.fate);
 
+  // --noise 0 --modulation b: the ring starts from the exact wave times 1 + b cos(2 pi n / N) (the paper's
+  // eq:cimi seed), so its first deviation is b |U_0(0)| / A at n = 0, b to the wave's harmonics (A = 0.03:
+  // within 1 %); without either it is the wave itself, to round-off. No noise: no predicted breakup.
+  WaveConfig seeded = fate_of(fput, 0.5, 0.03);
+  seeded.periods = 1;
+  seeded.noise = 0;
+  const WaveResult exact = run(seeded);
+  REQUIRE(exact.fate);
+  CHECK(exact.fate->deviation.front() < 1e-12);
+  CHECK(to_json(exact)["fate"]["predicted_breakup"].is_null());
+  seeded.modulation = 0.01;
+  const WaveResult modulated = run(seeded);
+  REQUIRE(modulated.fate);
+  CHECK(modulated.fate->deviation.front() == doctest::Approx(0.01).epsilon(0.01));
+  CHECK(to_json(modulated)["fate"]["modulation"].get<double>() == 0.01);
+
   // refusals name their key
   WaveConfig bad = fate_of(fput, 2.5, 0.3);
   bad.ring_sites = 4;
@@ -94,6 +118,14 @@ TEST_CASE("wave fate: a calm wave stays, an unstable one breaks up when the ring
     FAIL("ring_sites = 4 was accepted");
   } catch (const InvalidParameter& e) {
     CHECK(e.parameter() == "ring_sites");
+  }
+  bad = fate_of(fput, 2.5, 0.3);
+  bad.modulation = 1;  // 1 + cos(2 pi n / N) vanishes at n = N/2: refused, [0, 1)
+  try {
+    validate(bad);
+    FAIL("modulation = 1 was accepted");
+  } catch (const InvalidParameter& e) {
+    CHECK(e.parameter() == "modulation");
   }
   bad = fate_of(fput, 0.01, 0.3);  // moves to theta = 0 on 64 sites
   CHECK_THROWS_AS(validate(bad), InvalidParameter);

@@ -76,6 +76,7 @@ WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTa
     if (w.read("seed", integer)) c.seed = Index(integer);
     if (w.read("steps_per_period", integer)) c.steps_per_period = Index(integer);
     w.read("noise", c.noise);
+    w.read("modulation", c.modulation);
     w.read("periods", c.periods);
   }
   w.read("tail_tolerance", c.tail_tolerance);
@@ -122,8 +123,9 @@ std::vector<std::string> wave_scalar_names(std::string_view kind) {
                                           "at_k",        "nls_largest_rate", "nls_k",       "unstable_bands",
                                           "h_tilde",     "focusing"};
   if (kind == "wave fate")
-    n.insert(n.end(), {"fate", "broke_at", "predicted_breakup", "participation_end", "entropy_end", "structures",
-                       "ring_theta"});
+    n.insert(n.end(), {"fate", "broke_at", "predicted_breakup", "participation_end", "entropy_end",
+                       "localized_kind", "bright_structures", "dark_structures", "dark_seen_fraction", "dark_width",
+                       "dark_depth", "dark_frequency", "bright_frequency", "band_low", "band_high", "ring_theta"});
   return n;
 }
 
@@ -185,8 +187,18 @@ JobResult run_wave(std::string_view kind, const Document& doc, const CheckedTabl
       r.reason = "interrupted";
       return r;
     }
+    // localized_kind: 1 bright, 2 dark, 3 both (no value unless localized); the deepest dark structure at the end
+    const auto& dark = w.fate->dark_end;
+    const bool localized = w.fate->fate == sim::wave::WaveFate::localized;
     r.scalars.insert(r.scalars.end(), {double(int(w.fate->fate)), number(f.at("broke_at")), number(f.at("predicted_breakup")),
-                                       w.fate->participation_end, w.fate->entropy_end, double(w.fate->structures), w.theta});
+                                       w.fate->participation_end, w.fate->entropy_end,
+                                       localized ? double(int(w.fate->kind)) : no_value,
+                                       double(w.fate->bright_structures), double(w.fate->dark_structures),
+                                       number(f.at("dark_seen_fraction")),
+                                       dark.empty() ? no_value : dark.front().width,
+                                       dark.empty() ? no_value : dark.front().depth,
+                                       number(f.at("dark_frequency")), number(f.at("bright_frequency")),
+                                       w.band[0], w.band[1], w.theta});
   }
   for (const auto& b : w.stability->bands) r.rows.insert(r.rows.end(), {b.k_from, b.k_to, b.largest_rate, b.at_k});
   r.status = PointStatus::ok;

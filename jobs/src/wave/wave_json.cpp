@@ -104,30 +104,51 @@ json to_json(const WaveResult& r) {
   if (r.fate) {
     const auto& f = *r.fate;
     const double rate = r.ring_growth.rate;  // among the K the ring holds
+    json dark_end = json::array();
+    for (const auto& d : f.dark_end)
+      dark_end.push_back({{"centre", d.centre}, {"width", d.width}, {"depth", d.depth}});
     j["fate"] = {{"fate", std::string(sim::wave::to_string(f.fate))},
                  {"ring_sites", c.ring_sites},
                  {"ring_theta", r.theta},
                  {"noise", c.noise},
+                 {"modulation", c.modulation},
                  {"seed", c.seed},
                  {"periods", f.t.empty() ? 0.0 : std::round(f.t.back() * r.waves.back().omega / (2 * std::numbers::pi))},
                  {"steps_per_period", c.steps_per_period},
                  {"broke_at", f.broke_at < 0 ? json(nullptr) : json(f.broke_at)},
                  // the noise grows e^{rate t} from c.noise to the breakup deviation (the Floquet-Bloch prediction)
-                 {"predicted_breakup", rate > 0 ? json(std::log(sim::wave::kBrokenDeviation / c.noise) / rate) : json(nullptr)},
+                 {"predicted_breakup", rate > 0 && c.noise > 0 ? json(std::log(sim::wave::kBrokenDeviation / c.noise) / rate)
+                                                               : json(nullptr)},
                  {"ring_largest_rate", rate},
                  {"ring_at_k", rate > 0 ? json(r.ring_growth.at_k) : json(nullptr)},
                  {"participation_end", f.participation_end},
                  {"entropy_end", f.entropy_end},
-                 {"structures", f.structures},
+                 {"localized_kind", f.fate == sim::wave::WaveFate::localized ? json(std::string(sim::wave::to_string(f.kind)))
+                                                                             : json(nullptr)},
+                 {"bright_structures", f.bright_structures},
+                 {"dark_structures", f.dark_structures},
+                 {"dark_seen_fraction", f.broke_at < 0 ? json(nullptr) : json(f.dark_seen_fraction)},
+                 {"dark_end", dark_end},
+                 {"dark_background_spread", number_or_null(f.dark_background_spread)},
+                 {"envelope_window", f.envelope_window},
+                 {"dark_frequency", number_or_null(f.dark_frequency)},
+                 {"dark_site", f.dark_site < 0 ? json(nullptr) : json(f.dark_site)},
+                 {"bright_frequency", number_or_null(f.bright_frequency)},
+                 {"bright_site", f.bright_site < 0 ? json(nullptr) : json(f.bright_site)},
+                 {"band", {{"low", r.band[0]}, {"high", r.band[1]}}},
                  {"max_relative_energy_drift", f.max_relative_energy_drift},
                  {"interrupted", f.interrupted},
                  {"thresholds", {{"broken_deviation", sim::wave::kBrokenDeviation},
                                  {"localized_participation", sim::wave::kLocalizedParticipation},
-                                 {"disordered_entropy", sim::wave::kDisorderedEntropy}}},
+                                 {"disordered_entropy", sim::wave::kDisorderedEntropy},
+                                 {"dark_depth", sim::wave::kDarkDepth},
+                                 {"dark_width_share", sim::wave::kDarkWidthShare},
+                                 {"dark_background_spread", sim::wave::kDarkBackgroundSpread}}},
                  {"t", f.t},
                  {"deviation", f.deviation},
                  {"participation", f.participation},
                  {"entropy", f.entropy},
+                 {"dark", f.dark},
                  {"energy_density", f.energy_density}};
   }
   if (c.step == WaveStep::standing) j["standing"] = standing_json(r);

@@ -14,7 +14,7 @@ namespace lrchain::jobs::wave {
 double auto_periods(double omega, double growth_rate, double noise) {
   const double period = 2 * std::numbers::pi / omega;
   if (!(growth_rate > 0)) return 2000;
-  const double breakup = std::log(sim::wave::kBrokenDeviation / noise) / growth_rate;
+  const double breakup = std::log(sim::wave::kBrokenDeviation / std::max(noise, kRoundOff)) / growth_rate;
   return std::clamp(std::ceil(3 * breakup / period), 2000.0, 1e5);
 }
 
@@ -54,12 +54,14 @@ WaveResult run(const WaveConfig& c) {
     sim::wave::WaveFateOptions fo;
     fo.ring_sites = c.ring_sites;
     fo.noise = c.noise;
+    fo.modulation = c.modulation;
     fo.seed = std::uint64_t(c.seed);
     // Only the K = 2 pi m / N the ring holds can grow there: the prediction and the run length use those.
     r.ring_growth = sim::wave::ring_growth(lattice, r.waves.back(), c.ring_sites, c.unstable_tolerance);
     fo.growth_rate = r.ring_growth.rate;
     fo.periods = c.periods > 0 ? c.periods : auto_periods(r.waves.back().omega, fo.growth_rate, c.noise);
     fo.steps_per_period = c.steps_per_period;
+    r.band = sim::branch_band(*c.kernels, sim::lattice_parameters(*c.model), branch);
     try {
       r.fate = sim::wave::wave_fate(*c.kernels, sim::lattice_parameters(*c.model), r.waves.back(), fo, c.stop);
     } catch (const NumericalFailure& e) {

@@ -40,11 +40,15 @@ std::vector<JobOption> make_options() {
       {"ring_sites", "--ring-sites", "ring_sites", ring, d.ring_sites, false, "[8, 100000]",
        "sites N of the ring the perturbed wave runs on (fate) or the standing wave's Floquet multipliers are "
        "computed on (standing); theta moves to the nearest 2 pi j / N"},
-      {"noise", "--noise", "noise", fate, d.noise, false, "(0, 1)",
+      {"noise", "--noise", "noise", fate, d.noise, false, "[0, 1)",
        "standard deviation of the noise added to every displacement, relative to A"},
+      {"modulation", "--modulation", "modulation", fate, d.modulation, false, "[0, 1)",
+       "the wave's displacements and velocities on the ring times 1 + this x cos(2 pi n / N) (the paper's modulation b of "
+       "experiment 7)"},
       {"seed", "--seed", "seed", fate, d.seed, false, "[1, 2147483647]", "seed of the noise"},
       {"periods", "--periods", "periods", fate, d.periods, false, "0 (auto) or [1, 1e6]",
-       "carrier periods 2 pi/omega integrated; 0: three times the predicted breakup ln(0.1/noise)/rate, in [2000, 1e5]"},
+       "carrier periods 2 pi/omega integrated; 0: three times the predicted breakup ln(0.1/noise)/rate (noise 0: "
+       "1e-16), in [2000, 1e5]"},
       {"steps_per_period", "--steps-per-period", "steps_per_period", fate, d.steps_per_period, false, "[8, 10000]",
        "srkn11b steps per carrier period"},
       {"format", "--format", "", all, d.format, false, "csv|hdf5",

@@ -49,7 +49,8 @@ void validate(const WaveConfig& c) {
   check_range("unstable_tolerance", c.unstable_tolerance, 0, 1, true, true);
   if (c.step == WaveStep::fate) {
     check_range("ring_sites", double(c.ring_sites), 8, 100000, false, false);
-    check_range("noise", c.noise, 0, 1, true, true);
+    check_range("noise", c.noise, 0, 1, false, true);
+    check_range("modulation", c.modulation, 0, 1, false, true);
     check_range("seed", double(c.seed), 1, 2147483647.0, false, false);
     if (c.periods != 0) check_range("periods", c.periods, 1, 1e6, false, false);
     check_range("steps_per_period", double(c.steps_per_period), 8, 10000, false, false);

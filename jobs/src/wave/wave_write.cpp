@@ -66,14 +66,15 @@ void write_growth(const WaveResult& r, const std::string& dir, jobs::Figures& fi
                 "growth.png"});
 }
 
-// fate.csv (per carrier period: t, deviation, participation, entropy), fate_energy.csv (e_n at the end)
+// fate.csv (per carrier period: t, deviation, participation, entropy, dark structures), fate_energy.csv (e_n at the end)
 // and fate.gp drawing the three against t with the thresholds of the classification.
 void write_fate(const WaveResult& r, const std::string& dir, jobs::Figures& figures) {
   const auto& f = *r.fate;
   std::ostringstream os;
-  os << "t,deviation,participation,entropy\n";
+  os << "t,deviation,participation,entropy,dark_structures\n";
   for (std::size_t i = 0; i < f.t.size(); ++i)
-    os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}\n", f.t[i], f.deviation[i], f.participation[i], f.entropy[i]);
+    os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{}\n", f.t[i], f.deviation[i], f.participation[i], f.entropy[i],
+                      f.dark[i]);
   jobs::write_file_atomic(dir, "fate.csv", os.str());
   std::ostringstream e;
   e << "n,energy_density\n";
@@ -90,7 +91,8 @@ void write_fate(const WaveResult& r, const std::string& dir, jobs::Figures& figu
                             "unset logscale y\nset ylabel 'participation P, entropy S'\nset yrange [0:1.05]\n"
                             "plot 'fate.csv' skip 1 u 1:3 w l lw 2 t 'energy participation P', "
                             "'' skip 1 u 1:4 w l lw 2 t 'spectral entropy S', {} w l dt 2 t 'localized below ({})', "
-                            "{} w l dt 3 t 'disordered above ({})'\nunset multiplot\n",
+                            "{} w l dt 3 t 'disordered above ({})', "
+                            "'' skip 1 u 1:($5 / 10) w steps lc rgb '#606060' t 'dark structures / 10'\nunset multiplot\n",
                             literal(r.config.model->name()), literal(r.branch), r.theta, r.config.amplitude,
                             r.config.ring_sites, sim::wave::to_string(f.fate), sim::wave::kBrokenDeviation,
                             sim::wave::kBrokenDeviation, sim::wave::kLocalizedParticipation,

@@ -4,6 +4,8 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <numeric>
 
 #include <fmt/format.h>
@@ -70,6 +72,18 @@ std::vector<double> branch_frequencies(const lrchain_lattice_kernels& kernels, c
   std::vector<double> omegas;
   for (std::size_t i : p.order) omegas.push_back(branch_frequency(kernels, p, i, theta));
   return omegas;
+}
+
+std::array<double, 2> branch_band(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                                  Index branch, Index samples) {
+  std::array<double, 2> band{std::numeric_limits<double>::infinity(), 0.0};
+  for (Index k = 0; k <= samples; ++k) {
+    const BlochProblem p = bloch_problem(kernels, parameters, std::numbers::pi * double(k) / double(samples));
+    const double omega2 = -p.solver.eigenvalues()(Eigen::Index(p.order.at(std::size_t(branch)))).real();
+    const double omega = std::sqrt(std::max(0.0, omega2));
+    band = {std::min(band[0], omega), std::max(band[1], omega)};
+  }
+  return band;
 }
 
 std::vector<BlochMode> bloch_modes(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,

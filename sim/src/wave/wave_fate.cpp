@@ -27,6 +27,16 @@ std::string_view to_string(WaveFate f) {
   return "";
 }
 
+std::string_view to_string(LocalizedKind k) {
+  switch (k) {
+    case LocalizedKind::none: return "none";
+    case LocalizedKind::bright: return "bright";
+    case LocalizedKind::dark: return "dark";
+    case LocalizedKind::both: return "both";
+  }
+  return "";
+}
+
 namespace {
 
 // The spatial power spectrum of a ring's displacements by FFT (Eigen's FFT, plan and buffers made
@@ -86,6 +96,23 @@ Index count_peaks(const std::vector<double>& e) {
 
 }  // namespace
 
+// omega = pi (crossings - 1) / (t_last - t_first) over the zero crossings of x - mean (wave_fate.hpp).
+double zero_crossing_frequency(const double* x, Index count, Index stride, double dt) {
+  double mean = 0;
+  for (Index k = 0; k < count; ++k) mean += x[k * stride] / double(count);
+  double first = 0, last = 0;
+  Index crossings = 0;
+  for (Index k = 0; k + 1 < count; ++k) {
+    const double a = x[k * stride] - mean, b = x[(k + 1) * stride] - mean;
+    if (!((a < 0 && b >= 0) || (a >= 0 && b < 0))) continue;
+    const double t = (double(k) + a / (a - b)) * dt;
+    if (crossings++ == 0) first = t;
+    last = t;
+  }
+  return crossings >= 3 ? std::numbers::pi * double(crossings - 1) / (last - first) : NAN;
+}
+
+
 WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
                          const TravellingWave& wave, const WaveFateOptions& o, const std::atomic<bool>* stop) {
   const Index n = o.ring_sites, fields = kernels.fields;
@@ -97,26 +124,44 @@ WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vect
   std::vector<std::vector<std::complex<double>>> harmonics;
   for (Index f = 0; f < fields; ++f) harmonics.push_back(wave_harmonics(wave, f));
   std::mt19937_64 random(o.seed);
-  std::normal_distribution<double> noise(0.0, o.noise * wave.amplitude);
+  std::normal_distribution<double> noise(0.0, o.noise > 0 ? o.noise * wave.amplitude : 1.0);  // (used when noise > 0)
   for (Index f = 0; f < fields; ++f)
     for (Index i = 0; i < n; ++i) {
       double u, du;
       profile_at(harmonics[std::size_t(f)], wave.theta * double(i), u, du);
-      s[std::size_t(f * n + i)] = u + noise(random);
-      s[std::size_t(fields * n + f * n + i)] = -wave.omega * du;  // d/dt U(theta n - omega t)
+      const double envelope = 1 + o.modulation * std::cos(2 * std::numbers::pi * double(i) / double(n));
+      s[std::size_t(f * n + i)] = envelope * u + (o.noise > 0 ? noise(random) : 0.0);
+      s[std::size_t(fields * n + f * n + i)] = -envelope * wave.omega * du;  // d/dt U(theta n - omega t)
     }
   const double period = 2 * std::numbers::pi / wave.omega;
+  // One sample a period; over the last kFrequencyPeriods, kSamplesPerPeriod velocity samples a period.
+  const Index periods = Index(std::ceil(o.periods)), tail_periods = std::min(kFrequencyPeriods, periods);
+  const Index tail_start = periods - tail_periods, tail_samples = tail_periods * kSamplesPerPeriod + 1;
   std::vector<double> times;
-  for (Index p = 0; p <= Index(std::ceil(o.periods)); ++p) times.push_back(double(p) * period);
+  std::vector<char> whole_period;
+  for (Index p = 0; p <= periods; ++p)
+    for (Index k = 0; k < (p >= tail_start && p < periods ? kSamplesPerPeriod : 1); ++k) {
+      times.push_back((double(p) + double(k) / double(kSamplesPerPeriod)) * period);
+      whole_period.push_back(k == 0);
+    }
   IntegratorOptions opt;
   opt.stepper = StepperKind::srkn11b;
   opt.dt = period / double(o.steps_per_period);
 
   WaveFateResult r;
+  for (auto* series : {&r.t, &r.deviation, &r.participation, &r.entropy, &r.dark}) series->reserve(std::size_t(periods + 1));
   std::vector<double> e(static_cast<std::size_t>(n));
   SpatialSpectrum spectrum(n);
+  r.envelope_window = envelope_window(wave.theta);
+  DarkStructureScan dark(n, r.envelope_window);
+  std::vector<double> velocity(std::size_t(tail_samples * n));  // [sample][site] of the first field
+  Index observation = 0, tail_row = 0;
   const double e0 = ring.energy(s);
   const auto observe = [&](const State& x, double t) {
+    const bool whole = whole_period[std::size_t(observation++)];
+    if (t >= (double(tail_start) - 0.25 / double(kSamplesPerPeriod)) * period && tail_row < tail_samples)
+      std::copy(x.begin() + fields * n, x.begin() + fields * n + n, velocity.begin() + tail_row++ * n);
+    if (!whole) return true;
     double deviation = 0;
     for (Index i = 0; i < n; ++i) {
       double u, du;
@@ -128,6 +173,7 @@ WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vect
     r.deviation.push_back(deviation);
     r.participation.push_back(participation(e));
     r.entropy.push_back(spectrum.entropy(x.data()));
+    r.dark.push_back(double(dark.scan(e.data())));
     if (r.broke_at < 0 && deviation > kBrokenDeviation) r.broke_at = t;
     r.max_relative_energy_drift = std::max(r.max_relative_energy_drift, std::abs(ring.energy(x) - e0) / std::abs(e0));
     return true;
@@ -147,10 +193,35 @@ WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vect
     r.participation_end += r.participation[i] / double(tail);
     r.entropy_end += r.entropy[i] / double(tail);
   }
-  r.structures = count_peaks(e);
+  std::vector<double> tail_counts(r.dark.end() - std::ptrdiff_t(tail), r.dark.end());
+  std::nth_element(tail_counts.begin(), tail_counts.begin() + std::ptrdiff_t(tail / 2), tail_counts.end());
+  r.dark_structures = Index(tail_counts[tail / 2]);
+  Index after = 0, seen = 0;
+  for (std::size_t i = 0; i < samples; ++i)
+    if (r.broke_at >= 0 && r.t[i] >= r.broke_at) ++after, seen += r.dark[i] > 0;
+  r.dark_seen_fraction = after > 0 ? double(seen) / double(after) : 0.0;
+  dark.scan(e.data());  // the end state's structures (the last sample's scan)
+  r.dark_end = dark.structures();
+  r.dark_background_spread = dark.background_spread();
+  r.bright_structures = count_peaks(e);
+  const bool tail_complete = tail_row == tail_samples;
+  const double dt = period / double(kSamplesPerPeriod);
+  if (tail_complete && !r.dark_end.empty()) {  // at its half-depth edge: a black soliton's centre is at rest
+    r.dark_site = Index(std::lround(r.dark_end.front().right)) % n;
+    if (r.dark_site < 0) r.dark_site += n;
+    r.dark_frequency = zero_crossing_frequency(velocity.data() + r.dark_site, tail_samples, n, dt);
+  }
+  if (r.bright_structures > 0) {
+    r.bright_site = Index(std::max_element(e.begin(), e.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }) -
+                          e.begin());
+    if (tail_complete) r.bright_frequency = zero_crossing_frequency(velocity.data() + r.bright_site, tail_samples, n, dt);
+  }
+  const bool bright = r.participation_end < kLocalizedParticipation, dark_found = r.dark_structures > 0;
   if (r.broke_at < 0) r.fate = o.growth_rate > 0 ? WaveFate::intact : WaveFate::stable;
-  else if (r.participation_end < kLocalizedParticipation) r.fate = WaveFate::localized;
-  else if (r.entropy_end > kDisorderedEntropy) r.fate = WaveFate::disordered;
+  else if (bright || dark_found) {
+    r.fate = WaveFate::localized;
+    r.kind = bright && dark_found ? LocalizedKind::both : bright ? LocalizedKind::bright : LocalizedKind::dark;
+  } else if (r.entropy_end > kDisorderedEntropy) r.fate = WaveFate::disordered;
   else r.fate = WaveFate::modulated;
   return r;
 }

@@ -9,7 +9,7 @@
 //   datasets         amplitude, omega, omega_shift, nls_omega_shift, harmonics (one entry per wave: the
 //                    ramp, or the branch); a single wave also xi (2H+1 phases) and profile (fields x phases);
 //                    after stability K, growth_rate and nls_growth_rate; after fate fate_t, fate_deviation,
-//                    fate_participation, fate_entropy, fate_energy_density and the root attribute fate
+//                    fate_participation, fate_entropy, fate_dark, fate_energy_density and the root attribute fate
 //   /summary         the summary as a tree (objects groups, numbers and strings attributes, null left out)
 #include <filesystem>
 

@@ -5,6 +5,7 @@
 // Gauss-Newton (sim/wave/travelling_wave.hpp), its Floquet-Bloch growth rates over K
 // (sim/wave/wave_stability.hpp), both beside the NLS predictions (sim/wave/wave_nls.hpp).
 // docs/waves.md.
+#include <array>
 #include <atomic>
 #include <filesystem>
 #include <optional>
@@ -53,7 +54,8 @@ struct WaveConfig {
   Index k_points = 200;               // stability: K_i = pi (i/k_points)^2, i = 1..k_points, in [1, 100000]
   double unstable_tolerance = 1e-9;   // stability: Re lambda > this x omega is growth, in (0, 1)
   Index ring_sites = 256;             // fate, standing: sites N of the ring, theta moved to the nearest 2 pi j / N, in [8, 100000]
-  double noise = 1e-4;                // fate: noise on every displacement, relative to A, in (0, 1)
+  double noise = 1e-4;                // fate: noise on every displacement, relative to A, in [0, 1)
+  double modulation = 0;              // fate: the wave on the ring times 1 + modulation cos(2 pi n / N) (eq:cimi's b), in [0, 1)
   Index seed = 1;                     // fate: of the noise, in [1, 2^31)
   double periods = 0;                 // fate: carrier periods integrated, in [1, 1e6]; 0: auto_periods
   Index steps_per_period = 40;        // fate: srkn11b steps per carrier period, in [8, 10000]
@@ -81,6 +83,7 @@ struct WaveResult {
   std::optional<sim::wave::WaveStability> stability;
   double theta = 0;                        // the wave's theta: config.theta, or for fate the ring's nearest
   std::optional<sim::wave::WaveFateResult> fate;
+  std::array<double, 2> band{0, 0};        // fate: the branch's linear band [min, max] omega (sim::branch_band)
   // standing: the ramp of standing waves (the last at `amplitude`) on one spatial period of the ring, the
   // reflection the model has, and the last wave's Floquet multipliers on the ring of ring_sites sites.
   std::vector<sim::wave::StandingWave> standing;
@@ -89,7 +92,11 @@ struct WaveResult {
   double seconds = 0;
 };
 
-// The fate's run length when not given: three times the predicted breakup ln(0.1 / noise) / rate, in
+// The size round-off seeds a noise-free ring run with (the run length's noise when noise = 0).
+inline constexpr double kRoundOff = 1e-16;
+
+// The fate's run length when not given: three times the predicted breakup ln(0.1 / noise) / rate (noise 0:
+// kRoundOff), in
 // carrier periods 2 pi / omega, within [2000, 1e5]; 2000 for a stable wave (rate 0).
 double auto_periods(double omega, double growth_rate, double noise);
 

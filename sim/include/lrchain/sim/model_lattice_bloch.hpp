@@ -2,6 +2,7 @@
 // The linear Bloch modes of a model lattice at a carrier wavenumber, read from its generated
 // Jacobian at rest: the ansatz u_f[n] = Re(K_f e^{i(n theta - omega t)}) of every plane wave, ring
 // and breather run, with no symbolic derivation in between.
+#include <array>
 #include <complex>
 #include <cstddef>
 #include <vector>
@@ -26,6 +27,11 @@ std::vector<BlochMode> bloch_modes(const lrchain_lattice_kernels& kernels, const
 // The branch frequencies alone (increasing), with no condition on the kernel.
 std::vector<double> branch_frequencies(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
                                        double theta);
+
+// The linear band [min, max] of branch `branch`'s frequency over theta in [0, pi], sampled at theta = pi k /
+// samples (k = 0..samples); a frequency squared below 0 (an acoustic branch at theta = 0) counts as 0.
+std::array<double, 2> branch_band(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters,
+                                  Index branch, Index samples = 256);
 
 // Branch `branch` of bloch_modes, checked against the model's own dispersion relation: throws
 // NumericalFailure when the lattice kernels and the coefficient evaluators disagree on omega by

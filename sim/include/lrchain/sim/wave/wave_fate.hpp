@@ -9,20 +9,29 @@
 //   entropy        S = -sum_j p_j log p_j / log N of the spatial spectrum p_j = |u^_0(j)|^2 / sum
 //                  of the first field: log 2 / log N for one plane wave, near 1 when every mode is
 //                  excited alike.
+//   dark           the number of dark structures of e_n (dark_structures.hpp): localized dips of its
+//                  envelope in an intact background.
 // The fate (over the last tenth of the run): stable when the deviation never exceeded
 // kBrokenDeviation and the wave has no growing perturbation (intact when it has one but did not break
-// up within the run: run longer); otherwise localized when P < kLocalizedParticipation, disordered
-// when S > kDisorderedEntropy, and else modulated (energy spread over the ring in a few modes).
+// up within the run: run longer); otherwise localized when P < kLocalizedParticipation (bright) or the
+// median dark count is at least 1 (dark; both when both), disordered when S > kDisorderedEntropy, and
+// else modulated (energy spread over the ring in a few modes).
 // Thresholds: site energies of a thermalised ring are exponentially distributed (Gibbs), which gives
 // P = E[e]^2 / E[e^2] = 1/2, and a wave under a sinusoidal envelope P = 2/3; energy held in fewer
 // sites than half the thermal value, P < 1/4, is localized.
+// Frequencies: over the last kFrequencyPeriods carrier periods the first field's velocity is sampled
+// kSamplesPerPeriod times a period at every site; the frequency at the deepest dark structure (at its
+// half-depth edge: the centre of a black one does not move) and at the highest energy peak is
+// zero_crossing_frequency of that site's velocity, to be set against the branch's linear band.
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <string_view>
 #include <vector>
 
 #include "lrchain/index.hpp"
 #include "lrchain/compiled_model_abi.h"
+#include "lrchain/sim/wave/dark_structures.hpp"
 #include "lrchain/sim/wave/travelling_wave.hpp"
 
 namespace lrchain::sim::wave {
@@ -31,13 +40,18 @@ inline constexpr double kBrokenDeviation = 0.1;          // the wave broke up: a
 inline constexpr double kLocalizedParticipation = 0.25;  // half the thermal value 1/2
 inline constexpr double kMaxEnergyDrift = 1e-6;          // relative energy drift above which the run is refused
 inline constexpr double kDisorderedEntropy = 0.5;        // spectrum spread over a power N^0.5 of modes
+inline constexpr Index kFrequencyPeriods = 8;            // carrier periods at the end the frequencies come from
+inline constexpr Index kSamplesPerPeriod = 8;            // velocity samples per carrier period there
 
 enum class WaveFate { stable, intact, modulated, localized, disordered };
 std::string_view to_string(WaveFate f);
+enum class LocalizedKind { none, bright, dark, both };  // what a localized fate holds
+std::string_view to_string(LocalizedKind k);
 
 struct WaveFateOptions {
   Index ring_sites = 256;          // N, with theta = 2 pi j / N for an integer j
   double noise = 1e-4;             // standard deviation of the noise, relative to A
+  double modulation = 0;           // b: the wave times 1 + b cos(2 pi n / N) (the paper's eq:cimi)
   std::uint64_t seed = 1;          // of the noise (std::mt19937_64)
   double periods = 2000;           // carrier periods 2 pi / omega integrated
   Index steps_per_period = 40;     // srkn11b steps per carrier period
@@ -49,11 +63,26 @@ struct WaveFateResult {
   std::vector<double> energy_density;  // e_n at the end (N entries)
   double broke_at = -1;                // first t with deviation > kBrokenDeviation (-1: never)
   double participation_end = 0, entropy_end = 0;  // means over the last tenth of the samples
-  Index structures = 0;                // localized: peaks of e_n at the end above 4 x its mean, 3 sites apart
+  std::vector<double> dark;            // dark structures counted at each sample
+  Index bright_structures = 0;         // peaks of e_n at the end above 4 x its mean, 3 sites apart
+  Index dark_structures = 0;           // the median dark count over the last tenth of the samples
+  double dark_seen_fraction = 0;       // share of the samples after the breakup with a dark structure
+  Index envelope_window = 3;           // sites of the dark envelope's running mean
+  std::vector<DarkStructure> dark_end; // the dark structures at the end, deepest first
+  double dark_background_spread = 0;   // (q3 - q1) / b of the envelope's background at the end
+  double dark_frequency = NAN;         // at the deepest dark structure's half-depth edge at the end (NaN: none, or < 3 crossings)
+  Index dark_site = -1;                // that edge's site (-1: none)
+  double bright_frequency = NAN;       // at the highest energy peak at the end, when bright_structures > 0
+  Index bright_site = -1;              // that peak's site (-1: none)
+  LocalizedKind kind = LocalizedKind::none;
   double max_relative_energy_drift = 0;
   WaveFate fate = WaveFate::stable;
   bool interrupted = false;
 };
+
+// omega = pi (crossings - 1) / (t_last - t_first) from the zero crossings of x_k - mean (x_k = x[k stride]
+// at t = k dt, linearly interpolated); NaN with fewer than 3 crossings.
+double zero_crossing_frequency(const double* x, Index count, Index stride, double dt);
 
 // The run above for `wave` (solved at `theta` = 2 pi j / options.ring_sites on `kernels` with
 // `parameters`). InvalidParameter("ring_sites") when theta is not on the ring; NumericalFailure when
