@@ -30,31 +30,6 @@ bool sweep_key(const JobOption& o, std::string_view kind) {
   return !o.python.empty() && std::find(o.steps.begin(), o.steps.end(), step_of(kind)) != o.steps.end();
 }
 
-// The base's model at this point: a model file's with its [parameters], or the shipped resonant
-// chain with [model]'s rho, kappa, delta0 and alpha.
-struct PointModel {
-  std::shared_ptr<const ModelSource> chain;  // the resonant chain's source (no model file)
-  std::optional<Model> model;
-  const lrchain_lattice_kernels* kernels = nullptr;
-};
-
-PointModel point_model(const CheckedTable& root, const ModelSource* source) {
-  PointModel p;
-  if (source) {
-    p.model.emplace(source->model(model_parameter_values(root)));
-    p.kernels = source->lattice().kernels.get();
-    return p;
-  }
-  p.chain = std::make_shared<const ModelSource>(ModelSource::shipped("resonant_chain", "[model]"));
-  std::vector<std::pair<std::string, double>> values;
-  if (auto m = root.table("model"))
-    for (const char* name : {"alpha", "delta0", "kappa", "rho"})
-      if (double v = 0; m->read(name, v)) values.emplace_back(name, v);
-  p.model.emplace(p.chain->model(values));
-  p.kernels = p.chain->lattice().kernels.get();
-  return p;
-}
-
 // [wave] into the job's config (stability step) at the point's model, with the job's checks.
 WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTable& root, const PointModel& p) {
   WaveConfig c;

@@ -38,6 +38,23 @@ FocusingEdge focusing_edge(const Model& model, std::optional<Index> branch, doub
   return *best;
 }
 
+FocusingEdge first_focusing_edge(const Model& model, std::optional<Index> branch) {
+  const auto& names = model.definition().branch_names;
+  std::string checked;
+  for (Index b = 0; b < Index(names.size()); ++b) {
+    if (branch && *branch != b) continue;
+    for (const double theta : {std::numbers::pi, 0.0}) {
+      Regime regime = Regime::singular;
+      const std::string text = dark::band_edge_regime(model, b, theta, regime);
+      if (regime == Regime::focusing) return FocusingEdge{b, theta, coefficients_from_evaluators(model, b, theta)};
+      checked += fmt::format("{}{} at theta = {}: {}", checked.empty() ? "" : "; ", names[std::size_t(b)],
+                             theta == 0 ? "0" : "pi", text);
+    }
+  }
+  throw InvalidParameter("branch", fmt::format("{} has no focusing band edge for bright breathers (edges checked: {})",
+                                               model.name(), checked));
+}
+
 ModelBrightAnsatz bright_ansatz(const Model& model, const lrchain_lattice_kernels& kernels, const FocusingEdge& edge,
                                 double omega_b, DarkCenter center) {
   return ModelBrightAnsatz(model, kernels, edge.branch, edge.theta, omega_b - edge.nls.omega, dark_center_n0(center),
