@@ -316,7 +316,7 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
      << "if (!exists(\"outfile\")) outfile = " << gnuplot_file_name(stem + ".png") << "\n"
      << "set terminal pngcairo size 1000,700 noenhanced\nset output outfile\n"
      << "set xlabel '" << x_name << " (points left of each value: before the first turning point; right: after)'\n"
-     << "set ylabel '" << y_column << "'\nset key outside right top\nset grid\n"
+     << "set ylabel '" << (bright ? "omega_b, or the model parameter continued" : "omega_b") << "'\nset key outside right top\nset grid\n"
      << (x_log ? "set logscale x\n" : "")
      << fmt::format("set xrange [{}:{}]\n", shifted(*lo, -3), shifted(*hi, 3))
      << axis_value_tics(x.values)
