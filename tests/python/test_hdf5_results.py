@@ -124,10 +124,10 @@ def test_bright_evolve_cli_file_equals_python(tmp_path, cli):
     assert len(loaded.t) == 13
     np.testing.assert_array_equal(loaded.breather.z, python.breather.z)
     assert loaded.growth_rate == python.growth_rate and loaded.perturbation == python.perturbation
-    # the deviation grows as exp(rate t); the summary's growth_rate is its fit, the Floquet prediction
-    # ln(1.0282387) / T_b = 0.00975 (docs/bright-breathers.md) to 1e-6
+    # the file's deviation grows as exp(rate t) at the Floquet prediction ln(1.0282387) / T_b = 0.00975
+    # (docs/bright-breathers.md): from its first and last samples within 1e-6 (measured 9.6e-7), 1e-5 allowed
     rate = np.log(loaded.deviation[-1] / loaded.deviation[0]) / loaded.t[-1]
-    assert rate == pytest.approx(loaded.predicted_growth_rate, rel=1e-3)
+    assert rate == pytest.approx(loaded.predicted_growth_rate, rel=1e-5)
     with h5py.File(tmp_path / "cli" / "result.h5", "r") as a, h5py.File(tmp_path / "python.h5", "r") as b:
         for name in ("n", "z", "seed", "t", "deviation", "energy", "floquet_multipliers"):
             np.testing.assert_array_equal(a[name][()], b[name][()])
