@@ -7,15 +7,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "lrchain/jobs/bright_breather_job.hpp"
 #include "lrchain/jobs/sweep/results_file.hpp"
 #include "lrchain/jobs/sweep/sweep_config.hpp"
+#include "lrchain/jobs/sweep/sweep_figure.hpp"
 #include "lrchain/jobs/sweep/sweep_run.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
+#include "../support/run_lrchain.hpp"
 #include "sweep_test_files.hpp"
 
 namespace fs = std::filesystem;
@@ -166,3 +172,67 @@ TEST_CASE("sweep bright floquet: the paper's chain as a base, refused: it has no
   }
   fs::remove_all(d);
 }
+
+TEST_CASE("sweep bright continue: the FPU chain's Sievers-Takeno branch is the same at every b, rescaled; its figure" *
+          doctest::test_suite("fast")) {
+  // With a = 0 the force r + b r^3 is invariant under r -> r / sqrt(b'/b): the breather at a fixed omega_b
+  // (edge_offset from the b-independent edge 2) rescales by sqrt(b / b') and its multipliers do not change.
+  const fs::path d = lrchain::test::sweep_scratch("sweep-bright", "fput-branch");
+  lrchain::test::write_text(d / "base.toml", "experiment = \"bright continue\"\nmodel = \"fput\"\n[parameters]\na = 0\n"
+                                             "[bright]\nedge_offset = 0.2\ncenter = \"site\"\nsites = 41\npoints = 2\n");
+  lrchain::test::write_text(d / "s.toml", "job = \"bright continue\"\nbase = \"base.toml\"\noutput = \"" + (d / "s.h5").string() +
+                                              "\"\nfigure = \"stability\"\n[[axis]]\nparameter = \"parameters.b\"\n"
+                                              "values = [0.5, 2]\n");
+  const SweepResults r = run_sweep_file(d / "s.toml");
+  REQUIRE(r.status[0] == std::int8_t(PointStatus::ok));
+  REQUIRE(r.status[1] == std::int8_t(PointStatus::ok));
+  const std::size_t columns = r.row_names.size();
+  REQUIRE(r.row_names[2] == "peak");
+  REQUIRE(r.row_names[9] == "max_modulus");
+  // the first branch point: peak ratio sqrt(2 / 0.5) = 2, the same multiplier 1.02824 (docs/bright-breathers.md)
+  CHECK(r.rows[0][2] / r.rows[1][2] == doctest::Approx(2).epsilon(1e-8));
+  CHECK(r.rows[0][9] == doctest::Approx(r.rows[1][9]).epsilon(1e-8));
+  CHECK(r.rows[0][9] == doctest::Approx(1.02824).epsilon(1e-5));
+  CHECK(scalar_of(r, "real_unstable_points", 0) == double(r.rows[0].size() / columns));
+  CHECK(scalar_of(r, "first_unstable", 0) == doctest::Approx(2.2).epsilon(1e-14));
+  // figure = "stability": one line per branch point in its data file (the PNG needs gnuplot)
+  const SweepConfig c = load_sweep_config(d / "s.toml");
+  write_requested_figure(c, make_job(c));
+  std::ifstream dat(d / "s_stability.dat");
+  REQUIRE(dat.good());
+  std::size_t lines = 0;
+  for (std::string line; std::getline(dat, line);) lines += !line.empty() && line[0] != '#';
+  CHECK(lines == (r.rows[0].size() + r.rows[1].size()) / columns);
+  fs::remove_all(d);
+}
+
+#ifdef LRCHAIN_TEST_MPI
+TEST_CASE("sweep bright continue: mpirun -n 2 gives the 1-rank results and rows bit for bit") {
+  REQUIRE_MESSAGE(lrchain::program_in_path("mpirun"), "this build has MPI: mpirun (openmpi-bin) must be installed");
+  const fs::path d = lrchain::test::sweep_scratch("sweep-bright", "mpi");
+  lrchain::test::write_text(d / "base.toml", "experiment = \"bright continue\"\nmodel = \"fput\"\n[parameters]\na = 0\n"
+                                             "[bright]\nedge_offset = 0.2\ncenter = \"site\"\nsites = 41\npoints = 2\n");
+  for (const char* name : {"threads", "ranks"})
+    lrchain::test::write_text(d / (std::string(name) + ".toml"),
+                              "job = \"bright continue\"\nbase = \"base.toml\"\noutput = \"" + (d / (std::string(name) + ".h5")).string() +
+                                  "\"\n[[axis]]\nparameter = \"bright.edge_offset\"\nvalues = [0.2, 0.25, 0.3]\n");
+  const SweepResults threads = run_sweep_file(d / "threads.toml");
+  // CI runs as root: Open MPI refuses that unless told.
+  const auto r = lrchain::test::run_command({"mpirun", "-n", "2", "--oversubscribe", "--allow-run-as-root", LRCHAIN_CLI,
+                                             "sweep", "--config", (d / "ranks.toml").string(), "--json", "--quiet",
+                                             "--threads", "1"});
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  CHECK(nlohmann::json::parse(r.out)["ranks"] == 2);
+  const SweepConfig c = load_sweep_config(d / "ranks.toml");
+  const SweepResults ranks = read_results(c.output, c, make_job(c));
+  CHECK(threads.status == ranks.status);
+  REQUIRE(threads.scalars.size() == ranks.scalars.size());
+  CHECK(std::memcmp(threads.scalars.data(), ranks.scalars.data(), threads.scalars.size() * sizeof(double)) == 0);
+  REQUIRE(threads.rows.size() == ranks.rows.size());
+  for (std::size_t p = 0; p < threads.rows.size(); ++p) {
+    REQUIRE(threads.rows[p].size() == ranks.rows[p].size());
+    CHECK(std::memcmp(threads.rows[p].data(), ranks.rows[p].data(), threads.rows[p].size() * sizeof(double)) == 0);
+  }
+  fs::remove_all(d);
+}
+#endif
