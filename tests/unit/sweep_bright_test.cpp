@@ -57,7 +57,7 @@ void write_sweep(const fs::path& d, const std::string& job, const std::string& b
 
 }  // namespace
 
-TEST_CASE("sweep bright floquet: a point is the bright job's breather, bit for bit; a band frequency is invalid" *
+TEST_CASE("sweep bright floquet: a point is the bright job's breather, bit for bit, a band frequency is invalid" *
           doctest::test_suite("fast")) {
   const fs::path d = lrchain::test::sweep_scratch("sweep-bright", "kg");
   write_sweep(d, "bright floquet", "experiment = \"bright floquet\"\nmodel = \"klein_gordon\"\n[bright]\nomega_b = 1.2\nsites = 31\n",
@@ -173,7 +173,7 @@ TEST_CASE("sweep bright floquet: the paper's chain as a base, refused: it has no
   fs::remove_all(d);
 }
 
-TEST_CASE("sweep bright continue: the FPU chain's Sievers-Takeno branch is the same at every b, rescaled; its figure" *
+TEST_CASE("sweep bright continue: the FPU chain's Sievers-Takeno branch is the same at every b rescaled, and its figure" *
           doctest::test_suite("fast")) {
   // With a = 0 the force r + b r^3 is invariant under r -> r / sqrt(b'/b): the breather at a fixed omega_b
   // (edge_offset from the b-independent edge 2) rescales by sqrt(b / b') and its multipliers do not change.
