@@ -27,25 +27,11 @@
 namespace fs = std::filesystem;
 using namespace lrchain;
 using namespace lrchain::jobs::sweep;
+using lrchain::test::run_sweep_file;
+using lrchain::test::sweep_scalar;
 namespace bb = lrchain::jobs::bright_breather;
 
 namespace {
-
-double scalar_of(const SweepResults& r, const std::string& name, std::size_t point) {
-  const auto it = std::find(r.scalar_names.begin(), r.scalar_names.end(), name);
-  REQUIRE(it != r.scalar_names.end());
-  return r.scalars[std::size_t(it - r.scalar_names.begin()) * r.points + point];
-}
-
-SweepResults run_sweep_file(const fs::path& sweep_file) {
-  const SweepConfig c = load_sweep_config(sweep_file);
-  const Job job = make_job(c);
-  SweepRunOptions o;
-  o.threads = 2;
-  o.progress = false;
-  run_sweep(c, job, o);
-  return read_results(c.output, c, job);
-}
 
 // A sweep file of `job` over `axis` with `values`, its base `base` in `d`.
 void write_sweep(const fs::path& d, const std::string& job, const std::string& base, const std::string& axis,
@@ -75,19 +61,19 @@ TEST_CASE("sweep bright floquet: a point is the bright job's breather, bit for b
     c.sites = 31;
     const bb::BrightBreatherResult b = bb::run(c);
     REQUIRE(b.floquet);
-    CHECK(scalar_of(r, "omega_b", p) == c.omega_b);
-    CHECK(scalar_of(r, "converged", p) == 1);
-    CHECK(scalar_of(r, "newton_iterations", p) == double(b.newton.history.size() - 1));
-    CHECK(scalar_of(r, "residual", p) == b.newton.history.back().residual);
-    CHECK(scalar_of(r, "peak", p) == b.profile.peak);
-    CHECK(scalar_of(r, "width", p) == b.profile.width);
-    CHECK(scalar_of(r, "max_nontrivial_modulus", p) == b.floquet->max_nontrivial_modulus);
-    CHECK(scalar_of(r, "det_defect", p) == b.floquet->det_defect);
+    CHECK(sweep_scalar(r, "omega_b", p) == c.omega_b);
+    CHECK(sweep_scalar(r, "converged", p) == 1);
+    CHECK(sweep_scalar(r, "newton_iterations", p) == double(b.newton.history.size() - 1));
+    CHECK(sweep_scalar(r, "residual", p) == b.newton.history.back().residual);
+    CHECK(sweep_scalar(r, "peak", p) == b.profile.peak);
+    CHECK(sweep_scalar(r, "width", p) == b.profile.width);
+    CHECK(sweep_scalar(r, "max_nontrivial_modulus", p) == b.floquet->max_nontrivial_modulus);
+    CHECK(sweep_scalar(r, "det_defect", p) == b.floquet->det_defect);
     // the site-centred Klein-Gordon breather above the band is stable (docs/bright-breathers.md at 1.19)
-    CHECK(scalar_of(r, "stable", p) == 1);
-    CHECK(scalar_of(r, "stability", p) == 0);
+    CHECK(sweep_scalar(r, "stable", p) == 1);
+    CHECK(sweep_scalar(r, "stability", p) == 0);
     // the top band edge of klein_gordon: sqrt(w0^2 + 4 C) = sqrt(1.4) at theta = pi
-    CHECK(scalar_of(r, "omega_edge", p) == doctest::Approx(std::sqrt(1.4)).epsilon(1e-14));
+    CHECK(sweep_scalar(r, "omega_edge", p) == doctest::Approx(std::sqrt(1.4)).epsilon(1e-14));
   }
   // omega_b = 1.1 lies inside the band [1, sqrt(1.4)]: invalid, naming the key as [bright] spells it
   CHECK(r.status[2] == std::int8_t(PointStatus::invalid));
@@ -104,12 +90,12 @@ TEST_CASE("sweep bright floquet: edge_offset places the FPU chain's Sievers-Take
               "bright.edge_offset", "[0.2, -0.1]");
   const SweepResults r = run_sweep_file(d / "s.toml");
   REQUIRE(r.status[0] == std::int8_t(PointStatus::ok));
-  CHECK(scalar_of(r, "omega_b", 0) == doctest::Approx(2.2).epsilon(1e-14));
+  CHECK(sweep_scalar(r, "omega_b", 0) == doctest::Approx(2.2).epsilon(1e-14));
   // the Sievers-Takeno mode at omega_b = 2.2: one real multiplier 1.02824 (docs/bright-breathers.md; the
   // bright job's test); Sandusky, Page & Schmidt (1992) find it unstable
-  CHECK(scalar_of(r, "stable", 0) == 0);
-  CHECK(scalar_of(r, "stability", 0) == 1);
-  CHECK(scalar_of(r, "max_nontrivial_modulus", 0) == doctest::Approx(1.02824).epsilon(1e-5));
+  CHECK(sweep_scalar(r, "stable", 0) == 0);
+  CHECK(sweep_scalar(r, "stability", 0) == 1);
+  CHECK(sweep_scalar(r, "max_nontrivial_modulus", 0) == doctest::Approx(1.02824).epsilon(1e-5));
   CHECK(r.status[1] == std::int8_t(PointStatus::invalid));
   CAPTURE(r.reasons[1]);
   CHECK(r.reasons[1].find("edge_offset") != std::string::npos);
@@ -136,10 +122,10 @@ TEST_CASE("sweep bright continue: a point is the bright job's branch, rows and f
     const bb::BrightBreatherResult b = bb::run(c);
     const std::size_t n = b.branch.points.size();
     REQUIRE(n == 4);
-    CHECK(scalar_of(r, "branch_points", p) == double(n));
-    CHECK(scalar_of(r, "parameter_high", p) == b.branch.points.back().omega_b);  // omega_b rises away from the edge
-    CHECK(scalar_of(r, "folds", p) == 0);  // monotone near the edge (docs/bright-breathers.md: no bifurcations)
-    CHECK(scalar_of(r, "stable_points", p) == 4);
+    CHECK(sweep_scalar(r, "branch_points", p) == double(n));
+    CHECK(sweep_scalar(r, "parameter_high", p) == b.branch.points.back().omega_b);  // omega_b rises away from the edge
+    CHECK(sweep_scalar(r, "folds", p) == 0);  // monotone near the edge (docs/bright-breathers.md: no bifurcations)
+    CHECK(sweep_scalar(r, "stable_points", p) == 4);
     const std::size_t columns = r.row_names.size();
     REQUIRE(r.rows[p].size() == columns * n);
     for (std::size_t k = 0; k < n; ++k) {
@@ -148,8 +134,8 @@ TEST_CASE("sweep bright continue: a point is the bright job's branch, rows and f
       CHECK(r.rows[p][k * columns + 9] == b.branch_floquets[k].max_nontrivial_modulus);
     }
   }
-  CHECK(scalar_of(r, "omega_edge", 0) == doctest::Approx(std::sqrt(1.4)).epsilon(1e-14));
-  CHECK(scalar_of(r, "omega_edge", 1) == doctest::Approx(std::sqrt(1.32)).epsilon(1e-14));  // sqrt(1 + 4 C)
+  CHECK(sweep_scalar(r, "omega_edge", 0) == doctest::Approx(std::sqrt(1.4)).epsilon(1e-14));
+  CHECK(sweep_scalar(r, "omega_edge", 1) == doctest::Approx(std::sqrt(1.32)).epsilon(1e-14));  // sqrt(1 + 4 C)
   fs::remove_all(d);
 }
 
@@ -193,8 +179,8 @@ TEST_CASE("sweep bright continue: the FPU chain's Sievers-Takeno branch is the s
   CHECK(r.rows[0][2] / r.rows[1][2] == doctest::Approx(2).epsilon(1e-8));
   CHECK(r.rows[0][9] == doctest::Approx(r.rows[1][9]).epsilon(1e-8));
   CHECK(r.rows[0][9] == doctest::Approx(1.02824).epsilon(1e-5));
-  CHECK(scalar_of(r, "real_unstable_points", 0) == double(r.rows[0].size() / columns));
-  CHECK(scalar_of(r, "first_unstable", 0) == doctest::Approx(2.2).epsilon(1e-14));
+  CHECK(sweep_scalar(r, "real_unstable_points", 0) == double(r.rows[0].size() / columns));
+  CHECK(sweep_scalar(r, "first_unstable", 0) == doctest::Approx(2.2).epsilon(1e-14));
   // figure = "stability": one line per branch point in its data file (the PNG needs gnuplot)
   const SweepConfig c = load_sweep_config(d / "s.toml");
   write_requested_figure(c, make_job(c));
@@ -217,22 +203,8 @@ TEST_CASE("sweep bright continue: mpirun -n 2 gives the 1-rank results and rows 
                               "job = \"bright continue\"\nbase = \"base.toml\"\noutput = \"" + (d / (std::string(name) + ".h5")).string() +
                                   "\"\n[[axis]]\nparameter = \"bright.edge_offset\"\nvalues = [0.2, 0.25, 0.3]\n");
   const SweepResults threads = run_sweep_file(d / "threads.toml");
-  // CI runs as root: Open MPI refuses that unless told.
-  const auto r = lrchain::test::run_command({"mpirun", "-n", "2", "--oversubscribe", "--allow-run-as-root", LRCHAIN_CLI,
-                                             "sweep", "--config", (d / "ranks.toml").string(), "--json", "--quiet",
-                                             "--threads", "1"});
-  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
-  CHECK(nlohmann::json::parse(r.out)["ranks"] == 2);
-  const SweepConfig c = load_sweep_config(d / "ranks.toml");
-  const SweepResults ranks = read_results(c.output, c, make_job(c));
-  CHECK(threads.status == ranks.status);
-  REQUIRE(threads.scalars.size() == ranks.scalars.size());
-  CHECK(std::memcmp(threads.scalars.data(), ranks.scalars.data(), threads.scalars.size() * sizeof(double)) == 0);
-  REQUIRE(threads.rows.size() == ranks.rows.size());
-  for (std::size_t p = 0; p < threads.rows.size(); ++p) {
-    REQUIRE(threads.rows[p].size() == ranks.rows[p].size());
-    CHECK(std::memcmp(threads.rows[p].data(), ranks.rows[p].data(), threads.rows[p].size() * sizeof(double)) == 0);
-  }
+  const SweepResults ranks = lrchain::test::run_sweep_on_two_ranks(d / "ranks.toml");
+  CHECK(lrchain::test::same_bits(threads, ranks));
   fs::remove_all(d);
 }
 #endif

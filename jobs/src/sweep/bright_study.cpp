@@ -14,6 +14,7 @@
 #include "lrchain/jobs/bright_breather_schema.hpp"
 #include "lrchain/sim/bright/bright_seed.hpp"
 #include "model_jobs.hpp"
+#include "study_options.hpp"
 
 namespace lrchain::jobs::sweep {
 
@@ -28,23 +29,14 @@ constexpr double no_value = std::numeric_limits<double>::quiet_NaN();
 // The bright job's subcommand of a sweep kind: "floquet" or "continue".
 std::string step_of(std::string_view kind) { return kind == "bright continue" ? "continue" : "floquet"; }
 
-// The bright job's options a sweep point takes: those of its step that Python offers (not the output's
-// nor the solver's).
-bool sweep_key(const JobOption& o, std::string_view kind) {
-  return !o.python.empty() && std::find(o.steps.begin(), o.steps.end(), step_of(kind)) != o.steps.end();
-}
-
 // The name a refused [bright] key goes by in a point's reason.
 std::string bright_key(const Document& doc, std::string_view key) { return fmt::format("[bright] {} in {}", key, doc.source()); }
 
-// `e` re-raised naming "[bright] KEY in FILE" (the Config key spelled as [bright] names it), its text kept.
+// `e` re-raised naming "[bright] KEY in FILE" (the Config key spelled as [bright] names it, omega_b as
+// edge_offset when that placed it), its text kept.
 [[noreturn]] void rethrow_as_key(const Document& doc, const InvalidParameter& e, bool edge_offset) {
-  std::string key = e.parameter();
-  for (const JobOption& o : jobs::bright_breather::bright_breather_options())
-    if (o.key == key && !o.python.empty()) key = o.python;
-  if (key == "omega_b" && edge_offset) key = "edge_offset";
-  const std::string what = e.what(), prefix = "invalid " + e.parameter() + ": ";
-  throw InvalidParameter(bright_key(doc, key), what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+  throw table_key_error(doc, "bright", e, jobs::bright_breather::bright_breather_options(),
+                        e.parameter() == "omega_b" && edge_offset ? "edge_offset" : "");
 }
 
 // [bright] into the job's config (floquet or branch step) at the point's model, with the job's checks;
@@ -81,8 +73,7 @@ BrightBreatherConfig read_bright(std::string_view kind, const Document& doc, con
         k = sim::bright::first_focusing_edge(*p.model, given).nls;
       } catch (const InvalidParameter& e) {  // no focusing edge: the start edge_offset asks for does not exist
         if (given) throw;
-        const std::string what = e.what(), prefix = "invalid " + e.parameter() + ": ";
-        throw InvalidParameter("omega_b", what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+        throw table_key_error(doc, "bright", e, {}, "edge_offset");
       }
       c.omega_b = k.omega + (k.h_tilde > 0 ? *edge_offset : -*edge_offset);
     } else {
@@ -195,17 +186,9 @@ void reduce_branch(const BrightBreatherResult& br, JobResult& r) {
 std::shared_ptr<const TableSchema> bright_table(std::string_view kind) {
   std::vector<KeySchema> keys;
   for (const JobOption& o : jobs::bright_breather::bright_breather_options()) {
-    if (!sweep_key(o, kind)) continue;
-    const std::string default_text = o.default_value.is_null() ? (o.default_note.empty() ? "none" : o.default_note)
-                                                               : o.default_value.is_string() ? o.default_value.get<std::string>()
-                                                                                             : o.default_value.dump();
-    const std::string meaning = o.doc + (o.range.empty() ? "" : " (" + o.range + ")");
-    if (o.default_value.is_boolean()) keys.push_back(boolean(o.python, default_text, meaning));
-    else if (o.key == "branch" || o.key == "parameter") keys.push_back(string(o.python, default_text, meaning));
-    else if (o.key == "center") keys.push_back(choice(o.python, {"site", "bond"}, default_text, meaning));
-    else if (o.default_value.is_number_integer()) keys.push_back(integer(o.python, 0, 1'000'000'000, default_text, meaning));
-    else keys.push_back(number(o.python, NumberRange::any(), default_text, meaning));
-    if (o.key == "omega_b") keys.back().meaning += "; or edge_offset";
+    if (!sweep_option(o, step_of(kind))) continue;
+    keys.push_back(sweep_option_key(o));
+    if (o.key == "omega_b") keys.back() = number(o.python, NumberRange::any(), "none", o.doc + "; or edge_offset");
   }
   keys.push_back(number("edge_offset", NumberRange::positive(), "none",
                         "start at omega_b = omega(edge) + sign(h_tilde) edge_offset, the first focusing edge of branch "

@@ -12,6 +12,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/wave_job.hpp"
 #include "model_jobs.hpp"
+#include "study_options.hpp"
 
 namespace lrchain::jobs::sweep {
 
@@ -24,11 +25,6 @@ constexpr double no_value = std::numeric_limits<double>::quiet_NaN();
 
 // The wave job's step of a sweep kind: "stability" or "fate".
 std::string step_of(std::string_view kind) { return kind == "wave fate" ? "fate" : "stability"; }
-
-// The wave job's options a sweep point takes: those of its step but the output's.
-bool sweep_key(const JobOption& o, std::string_view kind) {
-  return !o.python.empty() && std::find(o.steps.begin(), o.steps.end(), step_of(kind)) != o.steps.end();
-}
 
 // [wave] into the job's config (stability step) at the point's model, with the job's checks.
 WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTable& root, const PointModel& p) {
@@ -59,12 +55,7 @@ WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTa
   try {
     jobs::wave::validate(c);
   } catch (const InvalidParameter& e) {  // the Config key, spelled as [wave] names it
-    std::string key = e.parameter();
-    for (const JobOption& o : jobs::wave::wave_options())
-      if (o.key == key) key = o.python;
-    const std::string what = e.what(), prefix = "invalid " + e.parameter() + ": ";
-    throw InvalidParameter(fmt::format("[wave] {} in {}", key, doc.source()),
-                           what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+    throw table_key_error(doc, "wave", e, jobs::wave::wave_options());
   }
   return c;
 }
@@ -73,17 +64,8 @@ WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTa
 
 std::shared_ptr<const TableSchema> wave_table(std::string_view kind) {
   std::vector<KeySchema> keys;
-  for (const JobOption& o : jobs::wave::wave_options()) {
-    if (!sweep_key(o, kind)) continue;
-    const std::string default_text = o.default_value.is_null() ? (o.default_note.empty() ? "none" : o.default_note)
-                                                               : o.default_value.dump();
-    const std::string meaning = o.doc + (o.range.empty() ? "" : " (" + o.range + ")");
-    if (o.key == "branch") keys.push_back(string(o.python, default_text, meaning));
-    else if (o.default_value.is_number_integer())
-      keys.push_back(integer(o.python, 0, 1'000'000'000, default_text, meaning));
-    else keys.push_back(number(o.python, NumberRange::any(), default_text, meaning));
-    if (o.required) keys.back() = keys.back().require();
-  }
+  for (const JobOption& o : jobs::wave::wave_options())
+    if (sweep_option(o, step_of(kind))) keys.push_back(sweep_option_key(o));
   return std::make_shared<const TableSchema>(
       TableSchema{kind == "wave fate" ? "an exact travelling wave, its growth rates and what it becomes on a ring, as "
                                         "`lrchain wave fate`"
