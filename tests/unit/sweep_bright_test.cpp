@@ -153,7 +153,8 @@ TEST_CASE("sweep bright floquet: the paper's chain as a base, refused: it has no
     } catch (const InputError& e) {
       message = e.what();
     }
-    CHECK(message.find(std::string("[bright] ") + (start[0] == 'o' ? "omega_b" : "edge_offset")) != std::string::npos);
+    CHECK(message.find(std::string("[bright] ") + (start[0] == 'o' ? "omega_b" : "edge_offset") + " in ") != std::string::npos);
+    CHECK(message.find("[bright] [bright]") == std::string::npos);
     CHECK(message.find("optical at theta = pi: defocusing") != std::string::npos);
   }
   fs::remove_all(d);

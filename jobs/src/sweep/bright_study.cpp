@@ -65,20 +65,18 @@ BrightBreatherConfig read_bright(std::string_view kind, const Document& doc, con
     if (double to = 0; b.read("to", to)) c.to = to;
     b.read("floquet", c.branch_floquet);
   }
-  try {
-    if (edge_offset) {
+  if (edge_offset) {
+    try {  // an unknown branch, or no focusing edge: the start edge_offset asks for does not exist
       const std::optional<Index> given = c.branch.empty() ? std::nullopt : std::optional(p.model->branch(c.branch));
-      NlsCoefficients k;
-      try {
-        k = sim::bright::first_focusing_edge(*p.model, given).nls;
-      } catch (const InvalidParameter& e) {  // no focusing edge: the start edge_offset asks for does not exist
-        if (given) throw;
-        throw table_key_error(doc, "bright", e, {}, "edge_offset");
-      }
+      const NlsCoefficients k = sim::bright::first_focusing_edge(*p.model, given).nls;
       c.omega_b = k.omega + (k.h_tilde > 0 ? *edge_offset : -*edge_offset);
-    } else {
-      c.omega_b = *omega_b;
+    } catch (const InvalidParameter& e) {
+      throw table_key_error(doc, "bright", e, {}, c.branch.empty() ? "edge_offset" : "branch");
     }
+  } else {
+    c.omega_b = *omega_b;
+  }
+  try {
     jobs::bright_breather::validate(c);
   } catch (const InvalidParameter& e) {
     rethrow_as_key(doc, e, edge_offset.has_value());
