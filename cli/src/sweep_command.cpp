@@ -132,7 +132,7 @@ void register_sweep(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "sweep",
       "Run one job (bright, drive, modulated, dark continue, regime intervals, wave stability, wave fate; bright, ring, "
-      "dark continue, regime intervals and the wave jobs of model files) over a grid or list of parameter points described in a TOML "
+      "dark continue, regime intervals, the wave jobs and bright floquet|continue of model files) over a grid or list of parameter points described in a TOML "
       "file, in-process on threads (and over MPI ranks under mpirun or srun); results in one HDF5 file "
       "(and a CSV view for small sweeps). A stopped sweep continues from its results file.");
   cmd->add_option("--config", a->config, "the sweep file (docs/sweeps.md)")->required()->type_name("FILE");

@@ -95,14 +95,21 @@ class BrightBreather:
                 f"{len(self.newton_residuals) - 1} steps{f})")
 
 
-def _write(path, breather, branch_z):
-    """A bright breather (branch_z None) or a branch (its start and every point's Z(0)) to ``path``."""
+def _write(path, breather, branch_z, evolution=None):
+    """A bright breather (branch_z None), a branch (its start and every point's Z(0)) or an evolution (its
+    breather and the series per period) to ``path``."""
     from . import _hdf5
     from .hdf5 import checked_destination
 
+    series = {}
+    if evolution is not None:
+        has_energy = breather.summary["evolution"]["energy"] is not None
+        series = dict(evolution_t=np.asarray(evolution.t, float),
+                      evolution_deviation=np.asarray(evolution.deviation, float),
+                      evolution_energy=np.asarray(evolution.energy, float) if has_energy else None)
     _hdf5.write_bright_breather(checked_destination(path), json.dumps(breather.summary), list(breather.variables),
                                 np.asarray(breather.z, float), np.asarray(breather.seed, float),
-                                None if branch_z is None else np.asarray(branch_z, float))
+                                None if branch_z is None else np.asarray(branch_z, float), **series)
 
 
 def _breather(d):
@@ -267,7 +274,9 @@ class BrightEvolution:
     ``deviation`` max|[Z, Zdot](t) - [Z(0), 0]| and the lattice ``energy``; ``profile_drift`` (max
     deviation / peak over m >= 1), ``energy_drift`` (max |E - E(0)| / |E(0)|), the measured
     ``growth_rate`` of ln(deviation) (None when it saturates within 3 periods) beside the
-    ``predicted_growth_rate`` ln(max |lambda|) / T_b, and the ``perturbation`` (dict, or None)."""
+    ``predicted_growth_rate`` ln(max |lambda|) / T_b, and the ``perturbation`` (dict, or None).
+    ``to_hdf5(path)`` writes the file ``lrchain bright evolve --format hdf5`` writes (:mod:`lrchain.hdf5`);
+    :func:`lrchain.load` reads it back."""
 
     breather: BrightBreather
     t: np.ndarray
@@ -278,6 +287,10 @@ class BrightEvolution:
     growth_rate: float
     predicted_growth_rate: float
     perturbation: dict
+
+    def to_hdf5(self, path):
+        """Writes the breather and its series with the C++ job layer's writer (layout: :mod:`lrchain.hdf5`)."""
+        _write(path, self.breather, None, self)
 
     def __repr__(self):
         return (f"BrightEvolution({len(self.t) - 1} periods, profile drift {self.profile_drift:.3g}, growth rate "
@@ -306,7 +319,11 @@ def evolve(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D[
     """
     d = _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance,
              "evolve", periods=periods, perturb=perturb, perturb_size=perturb_size, seed=seed)
-    t, deviation, energy = d.pop("evolution_t"), d.pop("evolution_deviation"), d.pop("evolution_energy")
+    return _evolution(d, d.pop("evolution_t"), d.pop("evolution_deviation"), d.pop("evolution_energy"))
+
+
+def _evolution(d, t, deviation, energy):
+    """The job's dict and its series per period as :class:`BrightEvolution` (``evolve`` and lrchain.load)."""
     e = d["evolution"]
     return BrightEvolution(breather=_breather(d), t=t, deviation=deviation, energy=energy,
                            profile_drift=e["profile_drift"], energy_drift=e["energy_drift"],

@@ -30,9 +30,10 @@ file's run adds lattice_code).
   hdf5``: ``result.h5`` or ``result_<branch>.h5``): ``x``, ``y``, ``values`` (int8, y x x), attributes
   ``plane``, ``x_name``, ``y_name``, the traced curves in ``curves/<k>``; :class:`~lrchain.regime.BoundaryCurve`:
   ``points`` (k x 2), attributes ``cause``, ``axis``, ``y_name`` (lrchain/jobs/regime_hdf5.hpp).
-- :class:`lrchain.bright.BrightBreather`, :class:`~lrchain.bright.BrightBranch` (``lrchain bright
-  solve|floquet|continue --format hdf5``): ``n``, ``z``, ``seed``, ``branch_z`` (a branch),
-  ``floquet_multipliers`` (complex), the summary as a tree and as exact JSON text (root attribute
+- :class:`lrchain.bright.BrightBreather`, :class:`~lrchain.bright.BrightBranch`,
+  :class:`~lrchain.bright.BrightEvolution` (``lrchain bright solve|floquet|continue|evolve --format hdf5``):
+  ``n``, ``z``, ``seed``, ``branch_z`` (a branch), ``floquet_multipliers`` (complex), an evolution's ``t``,
+  ``deviation`` and ``energy`` per period (no ``energy`` without a potential), the summary as a tree and as exact JSON text (root attribute
   ``summary_json``), ``omega_b``, ``center``, ``variables`` (lrchain/jobs/bright_breather_hdf5.hpp).
 - :class:`lrchain.wave.TravellingWave`, :class:`~lrchain.wave.WaveBranch` (``lrchain wave
   solve|stability|continue --format hdf5``): one entry per wave in ``amplitude``, ``omega``, ``omega_shift``,

@@ -6,7 +6,7 @@
   (:class:`lrchain.simulate.BrightResult`, ..., :class:`lrchain.dark.ModelEvolution`,
   :class:`lrchain.Coefficients`, :class:`lrchain.regime.Intervals`, :class:`~lrchain.regime.RegimeMap`,
   :class:`~lrchain.regime.BoundaryCurve`, :class:`lrchain.bright.BrightBreather`,
-  :class:`~lrchain.bright.BrightBranch`, :class:`lrchain.wave.TravellingWave`,
+  :class:`~lrchain.bright.BrightBranch`, :class:`~lrchain.bright.BrightEvolution`, :class:`lrchain.wave.TravellingWave`,
   :class:`~lrchain.wave.WaveBranch`), with the same arrays, bit for bit, and the summary read from its
   tree (a bright breather's and a wave's from its exact JSON text; layout: :mod:`lrchain.hdf5`);
 - a sweep's results file (``lrchain sweep``) -> an :class:`xarray.Dataset` (:func:`lrchain.open_sweep`);
@@ -286,6 +286,16 @@ def _bright_branch(f, cls):
     return _branch(d)
 
 
+def _bright_evolution(f, cls):
+    from .bright import _evolution
+
+    d = _bright_job(f)
+    t = f["t"][()]
+    # a model without a potential has no energy dataset: zeros, as lrchain.bright.evolve gives them
+    energy = f["energy"][()] if "energy" in f else np.zeros_like(t)
+    return _evolution(d, t, f["deviation"][()], energy)
+
+
 def _travelling_wave(f, cls):
     from .wave import _wave
 
@@ -316,6 +326,7 @@ def _readers():
             "RegimeMap": (regime.RegimeMap, _regime_map), "BoundaryCurve": (regime.BoundaryCurve, _boundary_curve),
             "BrightBreather": (bright.BrightBreather, _bright_breather),
             "BrightBranch": (bright.BrightBranch, _bright_branch),
+            "BrightEvolution": (bright.BrightEvolution, _bright_evolution),
             "TravellingWave": (wave.TravellingWave, _travelling_wave), "WaveBranch": (wave.WaveBranch, _wave_branch)}
 
 

@@ -108,6 +108,38 @@ def test_bright_cli_file_equals_python(tmp_path, cli):
     assert attrs["lrchain_result"] == "BrightBreather" and model["name"] == "fput" and model["parameters"]["a"] == 0
 
 
+def test_bright_evolve_cli_file_equals_python(tmp_path, cli):
+    # the FPU chain's Sievers-Takeno mode started along its unstable eigenvector, as in
+    # docs/bright-breathers.md ("Evolution"): its deviation grows at the rate ln|lambda| / T_b
+    fput = lrchain.load_model("fput", a=0)
+    cli("bright", "evolve", "--model", "fput", "--set", "a=0", "--center", "site", "--omega-b", "2.2", "--sites", "41",
+        "--periods", "12", "--perturb", "unstable", "--quiet", "--out", tmp_path / "cli", "--format", "hdf5")
+    assert (tmp_path / "cli" / "evolution.csv").is_file()  # the CSV files stay; result.h5 beside them
+    python = lrchain.bright.evolve(fput, omega_b=2.2, center="site", sites=41, periods=12, perturb="unstable")
+    python.to_hdf5(tmp_path / "python.h5")
+    loaded = lrchain.load(tmp_path / "cli")
+    assert isinstance(loaded, lrchain.bright.BrightEvolution)
+    for name in ("t", "deviation", "energy"):  # the same job: the same bits, m = 0..12
+        np.testing.assert_array_equal(getattr(loaded, name), getattr(python, name))
+    assert len(loaded.t) == 13
+    np.testing.assert_array_equal(loaded.breather.z, python.breather.z)
+    assert loaded.growth_rate == python.growth_rate and loaded.perturbation == python.perturbation
+    # the file's deviation grows as exp(rate t) at the Floquet prediction ln(1.0282387) / T_b = 0.00975
+    # (docs/bright-breathers.md): from its first and last samples within 1e-6 (measured 9.6e-7), 1e-5 allowed
+    rate = np.log(loaded.deviation[-1] / loaded.deviation[0]) / loaded.t[-1]
+    assert rate == pytest.approx(loaded.predicted_growth_rate, rel=1e-5)
+    with h5py.File(tmp_path / "cli" / "result.h5", "r") as a, h5py.File(tmp_path / "python.h5", "r") as b:
+        for name in ("n", "z", "seed", "t", "deviation", "energy", "floquet_multipliers"):
+            np.testing.assert_array_equal(a[name][()], b[name][()])
+    attrs, model = _provenance(tmp_path / "cli" / "result.h5")
+    assert attrs["lrchain_result"] == "BrightEvolution" and model["name"] == "fput"
+    # the same series as the CSV view of the command (17 significant digits)
+    csv = np.loadtxt(tmp_path / "cli" / "evolution.csv", delimiter=",", skiprows=1)
+    np.testing.assert_array_equal(csv[:, 1], loaded.t)
+    np.testing.assert_array_equal(csv[:, 2], loaded.deviation)
+    np.testing.assert_array_equal(csv[:, 4], loaded.energy)
+
+
 def test_wave_cli_file_equals_python(tmp_path, cli):
     fput = lrchain.load_model("fput")
     cli("wave", "stability", "--model", "fput", "--theta", "2.5", "--amplitude", "0.02", "--k-points", "20",

@@ -219,22 +219,8 @@ TEST_CASE("sweep dark continue: mpirun -n 2 gives the 1-rank results and rows bi
                                                  (d / (std::string(name) + ".h5")).string() +
                                                  "\"\n[[axis]]\nparameter = \"dark.omega_b\"\nvalues = [2.44, 2.442, 2.438]\n");
   const SweepResults threads = run_in_process(d / "threads.toml", 2);
-  // CI runs as root: Open MPI refuses that unless told.
-  const auto r = lrchain::test::run_command({"mpirun", "-n", "2", "--oversubscribe", "--allow-run-as-root", LRCHAIN_CLI,
-                                             "sweep", "--config", (d / "ranks.toml").string(), "--json", "--quiet",
-                                             "--threads", "1"});
-  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
-  CHECK(nlohmann::json::parse(r.out)["ranks"] == 2);
-  const SweepConfig c = load_sweep_config(d / "ranks.toml");
-  const SweepResults ranks = read_results(c.output, c, make_job(c));
-  REQUIRE(threads.scalars.size() == ranks.scalars.size());
-  CHECK(std::memcmp(threads.scalars.data(), ranks.scalars.data(), threads.scalars.size() * sizeof(double)) == 0);
-  CHECK(threads.status == ranks.status);
-  REQUIRE(threads.rows.size() == ranks.rows.size());
-  for (std::size_t p = 0; p < threads.rows.size(); ++p) {
-    REQUIRE(threads.rows[p].size() == ranks.rows[p].size());
-    CHECK(std::memcmp(threads.rows[p].data(), ranks.rows[p].data(), threads.rows[p].size() * sizeof(double)) == 0);
-  }
+  const SweepResults ranks = lrchain::test::run_sweep_on_two_ranks(d / "ranks.toml");
+  CHECK(lrchain::test::same_bits(threads, ranks));
   fs::remove_all(d);
 }
 #endif

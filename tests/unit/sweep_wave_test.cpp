@@ -22,25 +22,8 @@ namespace fs = std::filesystem;
 using namespace lrchain;
 using namespace lrchain::jobs::sweep;
 
-namespace {
-
-double scalar_of(const SweepResults& r, const std::string& name, std::size_t point) {
-  const auto it = std::find(r.scalar_names.begin(), r.scalar_names.end(), name);
-  REQUIRE(it != r.scalar_names.end());
-  return r.scalars[std::size_t(it - r.scalar_names.begin()) * r.points + point];
-}
-
-SweepResults run_sweep_file(const fs::path& sweep_file) {
-  const SweepConfig c = load_sweep_config(sweep_file);
-  const Job job = make_job(c);
-  SweepRunOptions o;
-  o.threads = 2;
-  o.progress = false;
-  run_sweep(c, job, o);
-  return read_results(c.output, c, job);
-}
-
-}  // namespace
+using lrchain::test::run_sweep_file;
+using lrchain::test::sweep_scalar;
 
 TEST_CASE("sweep wave stability: a point is the wave job's result, and the NLS's growth rate at small amplitude" *
           doctest::test_suite("fast")) {
@@ -64,15 +47,15 @@ TEST_CASE("sweep wave stability: a point is the wave job's result, and the NLS's
     c.k_points = 40;
     const jobs::wave::WaveResult w = jobs::wave::run(c);
     REQUIRE(w.stability);
-    CHECK(scalar_of(r, "omega", p) == w.waves.back().omega);
-    CHECK(scalar_of(r, "largest_rate", p) == w.stability->largest_rate);
-    CHECK(scalar_of(r, "stable", p) == 0);
-    CHECK(scalar_of(r, "unstable_bands", p) == double(w.stability->bands.size()));
+    CHECK(sweep_scalar(r, "omega", p) == w.waves.back().omega);
+    CHECK(sweep_scalar(r, "largest_rate", p) == w.stability->largest_rate);
+    CHECK(sweep_scalar(r, "stable", p) == 0);
+    CHECK(sweep_scalar(r, "unstable_bands", p) == double(w.stability->bands.size()));
     REQUIRE(r.rows[p].size() == 4 * w.stability->bands.size());
     CHECK(r.rows[p][2] == w.stability->bands.front().largest_rate);
     // fput is focusing at these theta; |rate / (|h_tilde| A^2/4) - 1| was 1.3e-4 at theta = 2.5
-    CHECK(scalar_of(r, "focusing", p) == 1);
-    CHECK(std::abs(scalar_of(r, "largest_rate", p) / scalar_of(r, "nls_largest_rate", p) - 1) < 1e-3);
+    CHECK(sweep_scalar(r, "focusing", p) == 1);
+    CHECK(std::abs(sweep_scalar(r, "largest_rate", p) / sweep_scalar(r, "nls_largest_rate", p) - 1) < 1e-3);
   }
   // theta = 4 is outside (-pi, pi]: invalid, with the key as [wave] names it
   CHECK(r.status[2] == std::int8_t(PointStatus::invalid));
@@ -93,8 +76,8 @@ TEST_CASE("sweep wave stability: the paper's chain with [model] as the base" * d
     CAPTURE(p);
     REQUIRE(r.status[p] == std::int8_t(PointStatus::ok));
     // the wave's frequency shift is the NLS's h A^2/4 to O(A^4): 1e-3 relative at A = 0.01
-    CHECK(std::abs(scalar_of(r, "omega_shift", p) / scalar_of(r, "nls_omega_shift", p) - 1) < 1e-3);
+    CHECK(std::abs(sweep_scalar(r, "omega_shift", p) / sweep_scalar(r, "nls_omega_shift", p) - 1) < 1e-3);
   }
-  CHECK(scalar_of(r, "omega_linear", 0) != scalar_of(r, "omega_linear", 1));  // rho is the point's
+  CHECK(sweep_scalar(r, "omega_linear", 0) != sweep_scalar(r, "omega_linear", 1));  // rho is the point's
   fs::remove_all(d);
 }

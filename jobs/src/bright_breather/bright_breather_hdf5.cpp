@@ -20,13 +20,23 @@ BrightBreatherRecord bright_breather_record(const BrightBreatherResult& r) {
   b.seed.assign(r.seed.data(), r.seed.data() + r.seed.size());
   b.branch = r.config.step == BrightStep::branch;
   for (const auto& p : r.branch.points) b.branch_z.insert(b.branch_z.end(), p.z0.data(), p.z0.data() + p.z0.size());
+  b.evolution = r.evolution.has_value();
+  if (b.evolution) {
+    const bool energy = r.evolution->has_energy;
+    b.periods.names = energy ? std::vector<std::string>{"t", "deviation", "energy"} : std::vector<std::string>{"t", "deviation"};
+    for (const auto& m : r.evolution->samples) {
+      b.periods.data.insert(b.periods.data.end(), {m.t, m.deviation});
+      if (energy) b.periods.data.push_back(m.energy);
+    }
+  }
   return b;
 }
 
 void write_bright_breather_hdf5(const std::filesystem::path& path, const BrightBreatherRecord& b) {
   jobs::Hdf5TreeFile file(path);
   const json& s = b.summary;
-  file.write_attribute("/", "lrchain_result", std::string(b.branch ? "BrightBranch" : "BrightBreather"));
+  file.write_attribute("/", "lrchain_result",
+                       std::string(b.branch ? "BrightBranch" : b.evolution ? "BrightEvolution" : "BrightBreather"));
   jobs::write_provenance_attributes(file, s);
   file.write_attribute("/", "omega_b", s.at("omega_b").get<double>());
   file.write_attribute("/", "center", s.at("center").get<std::string>());
@@ -46,6 +56,7 @@ void write_bright_breather_hdf5(const std::filesystem::path& path, const BrightB
     for (const json& pair : s["floquet"].at("multipliers")) m.emplace_back(pair.at(0).get<double>(), pair.at(1).get<double>());
     file.write_dataset("/floquet_multipliers", Hdf5Element::complex128, m.data(), {m.size()});
   }
+  if (b.evolution) jobs::write_series_datasets(file, b.periods);
   file.create_group("/summary");
   jobs::write_json_tree(file, "/summary", s);
   file.commit();

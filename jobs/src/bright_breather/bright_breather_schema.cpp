@@ -64,7 +64,7 @@ std::vector<JobOption> make_options() {
       {"branch_floquet", "", "floquet", {"continue"}, d.branch_floquet, false, "true|false",
        "Floquet multipliers at every branch point"},
       {"format", "--format", "", all_steps, d.format, false, "csv|hdf5",
-       "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: Z(0), the seed, the branch, the summary; "
+       "data files in --out: csv (CSV and figures) or hdf5 (also result.h5: Z(0), the seed, the branch, the evolution, the summary; "
        "lrchain.load reads it)"},
       {"out", "--out", "", all_steps, d.out.empty() ? none : nlohmann::json(d.out), false, "",
        "output directory for profile.csv, multipliers.csv, summary.json and gnuplot figures (none: only the JSON on stdout)"},

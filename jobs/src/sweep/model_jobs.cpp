@@ -100,6 +100,23 @@ std::vector<std::pair<std::string, double>> model_parameter_values(const lrchain
   return values;
 }
 
+PointModel point_model(const lrchain::config::CheckedTable& root, const ModelSource* source) {
+  PointModel p;
+  if (source) {
+    p.model.emplace(source->model(model_parameter_values(root)));
+    p.kernels = source->lattice().kernels.get();
+    return p;
+  }
+  p.chain = std::make_shared<const ModelSource>(ModelSource::shipped("resonant_chain", "[model]"));
+  std::vector<std::pair<std::string, double>> values;
+  if (auto m = root.table("model"))
+    for (const char* name : {"alpha", "delta0", "kappa", "rho"})
+      if (double v = 0; m->read(name, v)) values.emplace_back(name, v);
+  p.model.emplace(p.chain->model(values));
+  p.kernels = p.chain->lattice().kernels.get();
+  return p;
+}
+
 std::shared_ptr<const ModelSource> load_base_model(const std::string& kind, const lrchain::config::Document& base,
                                                    std::shared_ptr<const ModelCompiler> compiler) {
   if (!is_study_kind(kind)) load_model_experiment_config(base);  // the schema and the job's own checks first

@@ -4,6 +4,7 @@
 // periodic ring), each point run through the same job function as `lrchain simulate --config`
 // (jobs/simulate/model_simulate_job.hpp) with no output directory. Private to jobs/src/sweep.
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,6 +18,16 @@ namespace lrchain::jobs::sweep {
 
 // The values of a model-file base's [parameters] (NAME, value), in the file's order.
 std::vector<std::pair<std::string, double>> model_parameter_values(const lrchain::config::CheckedTable& root);
+
+// The Model of one point of a study base (wave, bright breathers): a model file's with its
+// [parameters], or the shipped resonant chain with [model]'s rho, kappa, delta0 and alpha.
+struct PointModel {
+  std::shared_ptr<const ModelSource> chain;  // the resonant chain's source (no model file)
+  std::optional<Model> model;
+  const lrchain_lattice_kernels* kernels = nullptr;
+};
+// `root`: the base checked against its schema; `source`: a model-file base's model, else null.
+PointModel point_model(const lrchain::config::CheckedTable& root, const ModelSource* source);
 
 // The base's model loaded once through the one model loader (jobs::ModelSource; `compiler` null:
 // shipped model files only), its lattice kernels too (every job but "regime intervals"), after the

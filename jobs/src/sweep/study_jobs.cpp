@@ -21,6 +21,7 @@
 #include "lrchain/jobs/model_experiment_config.hpp"
 #include "lrchain/jobs/regime_job.hpp"
 #include "lrchain/sim/dark/dark_ansatz.hpp"
+#include "bright_study.hpp"
 #include "model_jobs.hpp"
 #include "wave_study.hpp"
 
@@ -76,7 +77,7 @@ using StudySchemas = std::map<std::string, TableSchema, std::less<>>;
 // The base schema of a study kind; InvalidParameter("experiment") for any other kind.
 const TableSchema& schema_of(const StudySchemas& schemas, std::string_view kind) {
   const auto it = schemas.find(kind);
-  if (it == schemas.end()) throw InvalidParameter("experiment", "must be \"dark continue\" or \"regime intervals\"");
+  if (it == schemas.end()) throw InvalidParameter("experiment", "must be one of the study jobs (study_kinds())");
   return it->second;
 }
 
@@ -342,9 +343,12 @@ JobResult run_regime(const Document& doc, const ModelSource* source) {
 }  // namespace
 
 const std::vector<std::string>& study_kinds() {
-  static const std::vector<std::string> k{"dark continue", "regime intervals", "wave stability", "wave fate"};
+  static const std::vector<std::string> k{"dark continue", "regime intervals", "wave stability", "wave fate",
+                                          "bright floquet", "bright continue"};
   return k;
 }
+
+bool is_bright_kind(std::string_view kind) { return kind == "bright floquet" || kind == "bright continue"; }
 
 bool is_study_kind(std::string_view kind) {
   return std::find(study_kinds().begin(), study_kinds().end(), kind) != study_kinds().end();
@@ -354,7 +358,9 @@ const TableSchema& study_schema(std::string_view kind) {
   static const StudySchemas schemas{{"dark continue", study_top("dark continue", "dark", dark_table(), true)},
                                     {"regime intervals", study_top("regime intervals", "regime", regime_table(), false)},
                                     {"wave stability", study_top("wave stability", "wave", wave_table("wave stability"), true)},
-                                    {"wave fate", study_top("wave fate", "wave", wave_table("wave fate"), true)}};
+                                    {"wave fate", study_top("wave fate", "wave", wave_table("wave fate"), true)},
+                                    {"bright floquet", study_top("bright floquet", "bright", bright_table("bright floquet"), true)},
+                                    {"bright continue", study_top("bright continue", "bright", bright_table("bright continue"), true)}};
   return schema_of(schemas, kind);
 }
 
@@ -363,13 +369,17 @@ const TableSchema& model_study_schema(std::string_view kind) {
       {"dark continue", model_study_top("dark continue", "dark", model_dark_table(), true)},
       {"regime intervals", model_study_top("regime intervals", "regime", regime_table(), false)},
       {"wave stability", model_study_top("wave stability", "wave", wave_table("wave stability"), true)},
-      {"wave fate", model_study_top("wave fate", "wave", wave_table("wave fate"), true)}};
+      {"wave fate", model_study_top("wave fate", "wave", wave_table("wave fate"), true)},
+      {"bright floquet", model_study_top("bright floquet", "bright", bright_table("bright floquet"), true)},
+      {"bright continue", model_study_top("bright continue", "bright", bright_table("bright continue"), true)}};
   return schema_of(schemas, kind);
 }
 
 void check_study_config(std::string_view kind, const Document& doc, const ModelSource* model) {
   if (kind == "wave stability" || kind == "wave fate") {
     check_wave_base(kind, doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model);
+  } else if (is_bright_kind(kind)) {
+    check_bright_base(kind, doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model);
   } else if (model) {
     const Model point = model->model(model_parameter_values(check(doc, model_study_schema(kind))));
     if (kind == "dark continue") read_model_dark(doc, point, *model);
@@ -381,17 +391,20 @@ void check_study_config(std::string_view kind, const Document& doc, const ModelS
 
 std::vector<std::string> study_scalar_names(std::string_view kind, const ModelDefinition* model) {
   if (kind == "wave stability" || kind == "wave fate") return wave_scalar_names(kind);
+  if (is_bright_kind(kind)) return bright_scalar_names(kind);
   return kind == "dark continue" ? dark_scalar_names() : regime_scalar_names(model);
 }
 
 std::vector<std::string> study_row_names(std::string_view kind) {
   if (kind == "dark continue") return dark_row_names();
   if (kind == "wave stability" || kind == "wave fate") return wave_row_names();
+  if (is_bright_kind(kind)) return bright_row_names(kind);
   return {"branch", "lo", "hi", "length", "lo_cause", "hi_cause"};
 }
 
 std::string study_rows_legend(std::string_view kind, const ModelDefinition* model) {
   if (kind == "wave stability" || kind == "wave fate") return wave_rows_legend();
+  if (is_bright_kind(kind)) return bright_rows_legend(kind);
   if (kind == "dark continue")
     return "one row per branch point in continuation order; stability: 0 stable, +1 real, +2 period doubling, "
            "+4 oscillatory instability; part: 0 before the first turning point, +1 after each; max_real, "
@@ -408,6 +421,8 @@ JobResult run_study(std::string_view kind, const Document& doc, const RunControl
   try {
     if (kind == "wave stability" || kind == "wave fate")
       r = run_wave(kind, doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model, control.stop);
+    else if (is_bright_kind(kind))
+      r = run_bright(kind, doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model);
     else
       r = kind == "dark continue" ? run_dark(doc, control, model) : run_regime(doc, model);
   } catch (const Interrupted&) {

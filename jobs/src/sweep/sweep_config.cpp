@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "lrchain/errors.hpp"
+#include "lrchain/jobs/bright_breather_job.hpp"
 #include "lrchain/jobs/more_experiment_config.hpp"
 #include "lrchain/sim/resource_estimate.hpp"
 #include "lrchain/jobs/sweep/sweep_memory.hpp"
@@ -110,16 +111,19 @@ std::vector<double> axis_values(AxisSpec s) {
   return values;
 }
 
-// The most rows one point of the job can give (dark continue: its branch points; from the base
-// config's [dark] points, or the largest value of a dark.points axis).
+// The most rows one point of the job can give (dark continue, bright continue: its branch points; from
+// the base config's [dark] or [bright] points, or the largest value of a dark.points or bright.points axis).
 double rows_per_point_bound(const Job& job, const std::vector<std::pair<std::string, AxisSpec>>& specs) {
   if (job.row_names().empty()) return 0;
-  if (job.kind() != "dark continue") return 64;  // regime intervals: a few focusing intervals per branch
-  double most = 100;  // the schema's default of [dark] points
-  if (const auto* dark = job.base().root()["dark"].as_table())
-    if (const auto points = (*dark)["points"].value<std::int64_t>()) most = double(*points);
+  const bool dark = job.kind() == "dark continue";
+  if (!dark && job.kind() != "bright continue") return 64;  // regime intervals: a few focusing intervals per branch
+  const std::string table = dark ? "dark" : "bright";
+  // the schema's default of [dark] or [bright] points
+  double most = dark ? 100 : double(jobs::bright_breather::BrightBreatherConfig{}.points);
+  if (const auto* t = job.base().root()[table].as_table())
+    if (const auto points = (*t)["points"].value<std::int64_t>()) most = double(*points);
   for (const auto& [parameter, s] : specs)
-    if (parameter == "dark.points") {
+    if (parameter == table + ".points") {
       most = std::max(s.from, s.to);
       for (double v : s.listed) most = std::max(most, v);
     }
@@ -194,7 +198,7 @@ const TableSchema& sweep_schema() {
        integer("csv_max_points", 0, max_points, "10000", "also write a CSV view (output with .csv) up to this many points"),
        number("checkpoint_seconds", NumberRange::positive(), "30", "the results file is rewritten at least this often"),
        string("figure", "none",
-              "draw log10 of this scalar over a two-axis grid, or for \"dark continue\" over one axis "
+              "draw log10 of this scalar over a two-axis grid, or for \"dark continue\" and \"bright continue\" over one axis "
               "\"stability\": the branches in the (axis, omega_b) plane (PNG next to the output)"),
        tables("axis", axis_schema()).require()},
       std::nullopt};
@@ -302,7 +306,7 @@ SweepConfig load_sweep_config(const std::filesystem::path& file, int ranks_on_no
     throw error_at(root, "the top level", "output", problem);
   if (figure_given && c.figure.empty())
     throw error_at(root, "the top level", "figure", "give a scalar's name (leave 'figure' out for no figure)");
-  if (figure_given && c.job == "dark continue" && c.figure == "stability") {
+  if (figure_given && draws_stability_figure(c)) {
     if (c.axes.size() != 1) throw error_at(root, "the top level", "figure", "the stability figure needs exactly one axis");
   } else if (!c.figure.empty()) {
     const auto& names = job.scalar_names();
@@ -315,6 +319,10 @@ SweepConfig load_sweep_config(const std::filesystem::path& file, int ranks_on_no
     if (!c.grid || c.axes.size() != 2) throw error_at(root, "the top level", "figure", "a figure needs a grid of exactly two axes");
   }
   return c;
+}
+
+bool draws_stability_figure(const SweepConfig& c) {
+  return c.figure == "stability" && (c.job == "dark continue" || c.job == "bright continue");
 }
 
 Job make_job(const SweepConfig& c) { return c.base_job ? *c.base_job : Job(Document::from_file(c.base)); }

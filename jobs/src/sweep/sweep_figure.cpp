@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -123,7 +124,7 @@ std::size_t index_of(const std::vector<std::string>& names, const std::string& n
 
 std::vector<std::string> sweep_figure_files(const SweepConfig& c) {
   if (c.figure.empty()) return {};
-  if (c.figure == "stability" && c.job == "dark continue") {
+  if (draws_stability_figure(c)) {
     const std::string stem = c.output.stem().string() + "_stability";
     return {stem + ".dat", stem + "_marks.dat", stem + ".gp", stem + ".png"};
   }
@@ -258,7 +259,11 @@ std::string axis_value_tics(const std::vector<double>& values) {
 }  // namespace
 
 std::vector<std::string> write_stability_figure(const SweepConfig& c, const SweepResults& r) {
-  if (c.axes.size() != 1 || r.row_names.empty()) throw InvalidParameter("figure", "needs a one-axis \"dark continue\" sweep");
+  if (c.axes.size() != 1 || r.row_names.empty())
+    throw InvalidParameter("figure", "needs a one-axis \"dark continue\" or \"bright continue\" sweep");
+  // A bright branch may be continued in a model parameter at fixed omega_b: drawn over that parameter.
+  const bool bright = c.job == "bright continue";
+  const std::string y_column = bright ? "parameter" : "omega_b";
   const Axis& x = c.axes[0];
   const bool x_log = std::all_of(x.values.begin(), x.values.end(), [](double v) { return v > 0; }) &&
                      *std::max_element(x.values.begin(), x.values.end()) >= 10 * *std::min_element(x.values.begin(), x.values.end());
@@ -273,24 +278,28 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
   const double shift = gap > 0 ? 0.15 * gap : (x_log ? 0.02 : 0.02 * std::max(1.0, std::abs(x.values[0])));
   auto shifted = [&](double v, double side) { return x_log ? v * std::exp(side * shift) : v + side * shift; };
 
-  const std::size_t columns = r.row_names.size(), omega = index_of(r.row_names, "omega_b"),
+  const std::size_t columns = r.row_names.size(), omega = index_of(r.row_names, y_column),
                     stability = index_of(r.row_names, "stability"), part = index_of(r.row_names, "part");
   const std::size_t turning = index_of(r.scalar_names, "first_turning_point"), edge = index_of(r.scalar_names, "omega_edge");
   const std::string stem = c.output.stem().string() + "_stability";
   const std::filesystem::path dir = output_directory(c);
   std::ostringstream points, marks;
-  points << "# drawn " << x.parameter << ", omega_b, class (0 stable, 1 real-unstable, 2 oscillatory-unstable), part, "
-         << x.parameter << "\n";
-  marks << "# " << x.parameter << ", first turning point omega_b, band edge omega(pi)\n";
+  points << "# drawn " << x.parameter << ", " << y_column
+         << ", class (0 stable, 1 real-unstable, 2 oscillatory-unstable, 3 no Floquet), part, " << x.parameter << "\n";
+  marks << "# " << x.parameter << ", first turning point " << y_column << ", band edge omega\n";
   for (std::size_t p = 0; p < r.points; ++p) {
     const double v = x.values[p];
     for (std::size_t i = 0; i + columns <= r.rows[p].size(); i += columns) {
-      const int code = int(r.rows[p][i + stability]);
-      const int kind = code & 1 ? 1 : (code ? 2 : 0);
+      const double stability_code = r.rows[p][i + stability];  // NaN: a bright branch without Floquet
+      const int code = std::isnan(stability_code) ? 0 : int(stability_code);
+      const int kind = std::isnan(stability_code) ? 3 : code & 1 ? 1 : (code ? 2 : 0);
       const double which = r.rows[p][i + part];
       points << fmt::format("{} {} {} {} {}\n", shifted(v, which == 0 ? -1 : 1), r.rows[p][i + omega], kind, which, v);
     }
-    const double t = r.scalars[turning * r.points + p], e = r.scalars[edge * r.points + p];
+    // a bright branch in a model parameter (its rows' omega_b fixed, not the parameter): no band edge drawn
+    const bool in_omega = !bright || r.rows[p].empty() || r.rows[p][index_of(r.row_names, "omega_b")] == r.rows[p][omega];
+    const double t = r.scalars[turning * r.points + p],
+                 e = in_omega ? r.scalars[edge * r.points + p] : std::numeric_limits<double>::quiet_NaN();
     marks << fmt::format("{} {} {}\n", v, std::isfinite(t) ? fmt::format("{}", t) : "NaN", std::isfinite(e) ? fmt::format("{}", e) : "NaN");
   }
   write_file_atomic(dir, stem + ".dat", points.str());
@@ -301,21 +310,24 @@ std::vector<std::string> write_stability_figure(const SweepConfig& c, const Swee
   // The band edge is known at the axis values only: a mark at each (a line between them invented
   // the values in between).
   std::ostringstream gp;
-  gp << "# Dark-breather branches in the (" << x_name << ", omega_b) plane from " << gnuplot_string(c.output.filename().string())
+  const std::string family = bright ? "Bright" : "Dark";
+  gp << "# " << family << "-breather branches in the (" << x_name << ", " << y_column << ") plane from " << gnuplot_string(c.output.filename().string())
      << ". Re-run: gnuplot " << gnuplot_file_name(stem + ".gp") << "\n"
      << "if (!exists(\"outfile\")) outfile = " << gnuplot_file_name(stem + ".png") << "\n"
      << "set terminal pngcairo size 1000,700 noenhanced\nset output outfile\n"
      << "set xlabel '" << x_name << " (points left of each value: before the first turning point; right: after)'\n"
-     << "set ylabel 'omega_b'\nset key outside right top\nset grid\n"
+     << "set ylabel '" << (bright ? "omega_b, or the model parameter continued" : "omega_b") << "'\nset key outside right top\nset grid\n"
      << (x_log ? "set logscale x\n" : "")
      << fmt::format("set xrange [{}:{}]\n", shifted(*lo, -3), shifted(*hi, 3))
      << axis_value_tics(x.values)
-     << "set title '" << gnuplot_text(c.name) << ": dark-breather branches and their Floquet stability'\n"
+     << "set title '" << gnuplot_text(c.name) << ": " << (bright ? "bright" : "dark") << "-breather branches and their Floquet stability'\n"
      << "plot " << gnuplot_file_name(stem + ".dat") << " using 1:($3 == 0 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#009900' title 'stable', \\\n"
      << "     '' using 1:($3 == 1 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#dd0000' title 'real-unstable', \\\n"
      << "     '' using 1:($3 == 2 ? $2 : 1/0) with points pointtype 7 pointsize 0.5 lc rgb '#0000dd' title 'oscillatory-unstable', \\\n"
+     << (bright ? "     '' using 1:($3 == 3 ? $2 : 1/0) with points pointtype 6 pointsize 0.5 lc rgb 'gray40' title 'no Floquet', \\\n" : "")
      << "     " << gnuplot_file_name(stem + "_marks.dat") << " using 1:2 with points pointtype 2 pointsize 2 lw 2 lc rgb 'black' title 'turning point', \\\n"
-     << "     '' using 1:3 with points pointtype '—' pointsize 2 lc rgb 'gray40' title 'band edge omega(pi)'\n";
+     << "     '' using 1:3 with points pointtype '—' pointsize 2 lc rgb 'gray40' title '"
+     << (bright ? "band edge omega" : "band edge omega(pi)") << "'\n";
   draw_figures(dir, {{stem + ".gp", gp.str(), stem + ".png"}}, files);
   return files;
 }
@@ -325,7 +337,7 @@ std::vector<std::string> write_requested_figure(const SweepConfig& c, const Job&
   const SweepResults results = read_results(c.output, c, job);
   const std::vector<std::string> files = sweep_figure_files(c);
   mark_side_files_pending(c, files);
-  std::vector<std::string> written = c.figure == "stability" && c.job == "dark continue"
+  std::vector<std::string> written = draws_stability_figure(c)
                                          ? write_stability_figure(c, results)
                                          : write_sweep_figures(c, job, results, c.figure);
   record_side_files(c, files);

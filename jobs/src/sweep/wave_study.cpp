@@ -12,6 +12,7 @@
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/wave_job.hpp"
 #include "model_jobs.hpp"
+#include "study_options.hpp"
 
 namespace lrchain::jobs::sweep {
 
@@ -24,36 +25,6 @@ constexpr double no_value = std::numeric_limits<double>::quiet_NaN();
 
 // The wave job's step of a sweep kind: "stability" or "fate".
 std::string step_of(std::string_view kind) { return kind == "wave fate" ? "fate" : "stability"; }
-
-// The wave job's options a sweep point takes: those of its step but the output's.
-bool sweep_key(const JobOption& o, std::string_view kind) {
-  return !o.python.empty() && std::find(o.steps.begin(), o.steps.end(), step_of(kind)) != o.steps.end();
-}
-
-// The base's model at this point: a model file's with its [parameters], or the shipped resonant
-// chain with [model]'s rho, kappa, delta0 and alpha.
-struct PointModel {
-  std::shared_ptr<const ModelSource> chain;  // the resonant chain's source (no model file)
-  std::optional<Model> model;
-  const lrchain_lattice_kernels* kernels = nullptr;
-};
-
-PointModel point_model(const CheckedTable& root, const ModelSource* source) {
-  PointModel p;
-  if (source) {
-    p.model.emplace(source->model(model_parameter_values(root)));
-    p.kernels = source->lattice().kernels.get();
-    return p;
-  }
-  p.chain = std::make_shared<const ModelSource>(ModelSource::shipped("resonant_chain", "[model]"));
-  std::vector<std::pair<std::string, double>> values;
-  if (auto m = root.table("model"))
-    for (const char* name : {"alpha", "delta0", "kappa", "rho"})
-      if (double v = 0; m->read(name, v)) values.emplace_back(name, v);
-  p.model.emplace(p.chain->model(values));
-  p.kernels = p.chain->lattice().kernels.get();
-  return p;
-}
 
 // [wave] into the job's config (stability step) at the point's model, with the job's checks.
 WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTable& root, const PointModel& p) {
@@ -85,12 +56,7 @@ WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTa
   try {
     jobs::wave::validate(c);
   } catch (const InvalidParameter& e) {  // the Config key, spelled as [wave] names it
-    std::string key = e.parameter();
-    for (const JobOption& o : jobs::wave::wave_options())
-      if (o.key == key) key = o.python;
-    const std::string what = e.what(), prefix = "invalid " + e.parameter() + ": ";
-    throw InvalidParameter(fmt::format("[wave] {} in {}", key, doc.source()),
-                           what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+    throw table_key_error(doc, "wave", e, jobs::wave::wave_options());
   }
   return c;
 }
@@ -99,17 +65,8 @@ WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTa
 
 std::shared_ptr<const TableSchema> wave_table(std::string_view kind) {
   std::vector<KeySchema> keys;
-  for (const JobOption& o : jobs::wave::wave_options()) {
-    if (!sweep_key(o, kind)) continue;
-    const std::string default_text = o.default_value.is_null() ? (o.default_note.empty() ? "none" : o.default_note)
-                                                               : o.default_value.dump();
-    const std::string meaning = o.doc + (o.range.empty() ? "" : " (" + o.range + ")");
-    if (o.key == "branch") keys.push_back(string(o.python, default_text, meaning));
-    else if (o.default_value.is_number_integer())
-      keys.push_back(integer(o.python, 0, 1'000'000'000, default_text, meaning));
-    else keys.push_back(number(o.python, NumberRange::any(), default_text, meaning));
-    if (o.required) keys.back() = keys.back().require();
-  }
+  for (const JobOption& o : jobs::wave::wave_options())
+    if (sweep_option(o, step_of(kind))) keys.push_back(sweep_option_key(o));
   return std::make_shared<const TableSchema>(
       TableSchema{kind == "wave fate" ? "an exact travelling wave, its growth rates and what it becomes on a ring, as "
                                         "`lrchain wave fate`"

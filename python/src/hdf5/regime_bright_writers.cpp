@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include "arrays.hpp"
+#include "lrchain/errors.hpp"
 #include "lrchain/jobs/bright_breather_hdf5.hpp"
 #include "lrchain/jobs/wave_hdf5.hpp"
 #include "lrchain/jobs/coeffs_hdf5.hpp"
@@ -72,10 +73,12 @@ void write_boundary_curve(const std::string& path, const std::string& model, con
   jobs::write_boundary_curve_hdf5(path, {json::parse(model), branch, axis, y_name, {cause, vector_of<double>(points)}});
 }
 
-// BrightBreather.to_hdf5 / BrightBranch.to_hdf5: the summary as JSON text, Z(0), the seed and (a
-// branch) every point's Z(0).
+// BrightBreather.to_hdf5 / BrightBranch.to_hdf5 / BrightEvolution.to_hdf5: the summary as JSON text, Z(0),
+// the seed, (a branch) every point's Z(0) and (an evolution) t, deviation and energy (None: no potential).
 void write_bright_breather(const std::string& path, const std::string& summary, const std::vector<std::string>& variables,
-                           const py::handle& z, const py::handle& seed, const py::object& branch_z) {
+                           const py::handle& z, const py::handle& seed, const py::object& branch_z,
+                           const py::object& evolution_t, const py::object& evolution_deviation,
+                           const py::object& evolution_energy) {
   jobs::bright_breather::BrightBreatherRecord r;
   r.summary = json::parse(summary);
   r.variables = variables;
@@ -84,6 +87,18 @@ void write_bright_breather(const std::string& path, const std::string& summary, 
   r.sites = variables.empty() ? 0 : Index(r.z.size() / variables.size());
   r.branch = !branch_z.is_none();
   if (r.branch) r.branch_z = vector_of<double>(branch_z);
+  r.evolution = !evolution_t.is_none();
+  if (r.evolution) {
+    const std::vector<double> t = vector_of<double>(evolution_t), deviation = vector_of<double>(evolution_deviation);
+    const std::vector<double> energy = evolution_energy.is_none() ? std::vector<double>{} : vector_of<double>(evolution_energy);
+    if (deviation.size() != t.size() || (!energy.empty() && energy.size() != t.size()))
+      throw InvalidParameter("evolution", "t, deviation and energy must have the same length");
+    r.periods.names = energy.empty() ? std::vector<std::string>{"t", "deviation"} : std::vector<std::string>{"t", "deviation", "energy"};
+    for (std::size_t m = 0; m < t.size(); ++m) {
+      r.periods.data.insert(r.periods.data.end(), {t[m], deviation[m]});
+      if (!energy.empty()) r.periods.data.push_back(energy[m]);
+    }
+  }
   jobs::bright_breather::write_bright_breather_hdf5(path, r);
 }
 
@@ -110,8 +125,9 @@ void register_regime_and_bright_writers(py::module_& m) {
   m.def("write_wave", &write_wave, py::arg("path"), py::arg("summary"),
         "Writes a travelling wave or wave branch with the job layer's writer (lrchain wave ... --format hdf5).");
   m.def("write_bright_breather", &write_bright_breather, py::arg("path"), py::arg("summary"), py::arg("variables"),
-        py::arg("z"), py::arg("seed"), py::arg("branch_z"),
-        "Writes a bright breather or branch with the job layer's writer (lrchain bright ... --format hdf5).");
+        py::arg("z"), py::arg("seed"), py::arg("branch_z"), py::arg("evolution_t") = py::none(),
+        py::arg("evolution_deviation") = py::none(), py::arg("evolution_energy") = py::none(),
+        "Writes a bright breather, branch or evolution with the job layer's writer (lrchain bright ... --format hdf5).");
 }
 
 }  // namespace lrchain::python

@@ -2,6 +2,7 @@
 #include "lrchain/sim/bright/bright_seed.hpp"
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -11,31 +12,60 @@
 
 namespace lrchain::sim::bright {
 
-FocusingEdge focusing_edge(const Model& model, std::optional<Index> branch, double omega_b) {
+namespace {
+
+// Visits the band edges of `branch` (none: every branch, in the file's order), theta = pi before 0, each
+// with its NLS regime and the text for messages (`visit` may add to it; it returns true to stop there);
+// returns the list of the edges visited, "NAME at theta = pi: TEXT; ...".
+std::string visit_band_edges(const Model& model, std::optional<Index> branch,
+                             const std::function<bool(Index, double, Regime, std::string&)>& visit) {
   const auto& names = model.definition().branch_names;
-  std::optional<FocusingEdge> best;
   std::string checked;
   for (Index b = 0; b < Index(names.size()); ++b) {
     if (branch && *branch != b) continue;
     for (const double theta : {std::numbers::pi, 0.0}) {
       Regime regime = Regime::singular;
       std::string text = dark::band_edge_regime(model, b, theta, regime);
-      if (regime == Regime::focusing) {
-        const NlsCoefficients c = coefficients_from_evaluators(model, b, theta);
-        const bool outside = (omega_b - c.omega) * c.h_tilde > 0;
-        text += fmt::format(", omega = {:.10g}, breathers {} it", c.omega, c.h_tilde > 0 ? "above" : "below");
-        if (outside && (!best || std::abs(omega_b - c.omega) < std::abs(omega_b - best->nls.omega)))
-          best = FocusingEdge{b, theta, c};
-      }
+      const bool stop = visit(b, theta, regime, text);
       checked += fmt::format("{}{} at theta = {}: {}", checked.empty() ? "" : "; ", names[std::size_t(b)],
                              theta == 0 ? "0" : "pi", text);
+      if (stop) return checked;
     }
   }
+  return checked;
+}
+
+}  // namespace
+
+FocusingEdge focusing_edge(const Model& model, std::optional<Index> branch, double omega_b) {
+  std::optional<FocusingEdge> best;
+  const std::string checked = visit_band_edges(model, branch, [&](Index b, double theta, Regime regime, std::string& text) {
+    if (regime == Regime::focusing) {
+      const NlsCoefficients c = coefficients_from_evaluators(model, b, theta);
+      const bool outside = (omega_b - c.omega) * c.h_tilde > 0;
+      text += fmt::format(", omega = {:.10g}, breathers {} it", c.omega, c.h_tilde > 0 ? "above" : "below");
+      if (outside && (!best || std::abs(omega_b - c.omega) < std::abs(omega_b - best->nls.omega)))
+        best = FocusingEdge{b, theta, c};
+    }
+    return false;
+  });
   if (!best)
     throw InvalidParameter("omega_b", fmt::format("{} has no focusing band edge that a bright breather at omega_b = "
                                                   "{:.10g} bifurcates from (edges checked: {})",
                                                   model.name(), omega_b, checked));
   return *best;
+}
+
+FocusingEdge first_focusing_edge(const Model& model, std::optional<Index> branch) {
+  std::optional<FocusingEdge> first;
+  const std::string checked = visit_band_edges(model, branch, [&](Index b, double theta, Regime regime, std::string&) {
+    if (regime == Regime::focusing) first = FocusingEdge{b, theta, coefficients_from_evaluators(model, b, theta)};
+    return first.has_value();
+  });
+  if (!first)
+    throw InvalidParameter("branch", fmt::format("{} has no focusing band edge for bright breathers (edges checked: {})",
+                                                 model.name(), checked));
+  return *first;
 }
 
 ModelBrightAnsatz bright_ansatz(const Model& model, const lrchain_lattice_kernels& kernels, const FocusingEdge& edge,

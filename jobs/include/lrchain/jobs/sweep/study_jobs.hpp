@@ -14,6 +14,11 @@
 //                       stable, the largest growth rate and its K beside the NLS's, ...; one row per
 //                       unstable band; "wave fate" also what the wave becomes on a ring
 //                       (`lrchain wave fate`): its fate, breakup time, participation, entropy.
+//   "bright floquet":   the exact bright breather and its Floquet multipliers (bright_breather_job.hpp),
+//                       as `lrchain bright floquet`; scalars: converged, residual, peak, width, stable,
+//                       stability class, largest non-trivial |lambda|, ...
+//   "bright continue":  its branch, as `lrchain bright continue`; scalars: points, turning points,
+//                       stable/unstable points, folds and multiplier crossings; one row per point.
 // Each base is of the resonant chain ([model] rho, ...) or of a model file (`model = "models/x.toml"`
 // and its [parameters], loaded once per sweep by Job: jobs::ModelSource), as `lrchain dark continue
 // --model` and `lrchain regime intervals --model` run it.
@@ -28,9 +33,10 @@
 
 namespace lrchain::jobs::sweep {
 
-// "dark continue", "regime intervals", "wave stability" and "wave fate".
+// "dark continue", "regime intervals", "wave stability", "wave fate", "bright floquet" and "bright continue".
 const std::vector<std::string>& study_kinds();
 bool is_study_kind(std::string_view kind);
+bool is_bright_kind(std::string_view kind);  // "bright floquet" or "bright continue"
 // The base config's schema of a study kind (top level: experiment, [model], [dark], [regime] or [wave]).
 const lrchain::config::TableSchema& study_schema(std::string_view kind);
 // The schema of a model-file base of a study kind (experiment, model = "FILE", [parameters], and

@@ -60,4 +60,8 @@ std::string output_problem(const std::filesystem::path& output, bool figure);
 // model file, when there is one).
 Job make_job(const SweepConfig& c);
 
+// A one-axis "dark continue" or "bright continue" sweep's figure = "stability": its branches in the
+// (axis, omega_b or the continued parameter) plane (sweep_figure.hpp).
+bool draws_stability_figure(const SweepConfig& c);
+
 }  // namespace lrchain::jobs::sweep

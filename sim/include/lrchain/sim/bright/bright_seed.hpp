@@ -34,6 +34,11 @@ struct FocusingEdge {
 // InvalidParameter("omega_b", ...) listing every edge checked, its regime and side, when there is none.
 FocusingEdge focusing_edge(const Model& model, std::optional<Index> branch, double omega_b);
 
+// The first focusing band edge of `branch` (none: of every branch in the file's order), theta = pi before
+// theta = 0: where a sweep that starts each breather a fixed distance from its edge places omega_b,
+// omega + sign(h_tilde) x offset. InvalidParameter("branch", ...) listing every edge checked when there is none.
+FocusingEdge first_focusing_edge(const Model& model, std::optional<Index> branch);
+
 // The NLS ansatz at `edge` for omega_b (second-order terms included), its envelope centred at
 // n0 = 0 (site) or 1/2 (bond; the carrier e^{i n theta} stays on the sites).
 ModelBrightAnsatz bright_ansatz(const Model& model, const lrchain_lattice_kernels& kernels, const FocusingEdge& edge,
