@@ -1,6 +1,7 @@
 // run(BrightBreatherConfig): the bands and harmonics checked, the focusing edge and its NLS seed,
 // Newton on the time-reversible shooting shared with the dark breathers, the localization check,
 // and (floquet) the multipliers of the full-period monodromy (bright_breather_job.hpp).
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <cmath>
@@ -54,15 +55,45 @@ std::vector<BranchSample> branch_samples(const BrightBreatherResult& r, double u
       s += std::sqrt((p.z0 - q.z0).squaredNorm() + (p.parameter - q.parameter) * (p.parameter - q.parameter));
     }
     BranchSample sample{s, p.parameter, p.tangent_omega, r.branch_profiles[k].norm_squared, std::nullopt, std::nullopt,
-                        std::nullopt};
+                        std::nullopt, std::nullopt};
     if (k < r.branch_floquets.size()) {
       sample.real_unstable = real_multipliers_beyond(r.branch_floquets[k], +1, unit_tolerance);
       sample.period_doubling = real_multipliers_beyond(r.branch_floquets[k], -1, unit_tolerance);
+      sample.period_tripling = multipliers_beyond_two_thirds(r.branch_floquets[k]);
       sample.oscillatory = r.branch_floquets[k].multipliers.oscillatory;
     }
     samples.push_back(sample);
   }
   return samples;
+}
+
+// Each multiplier crossing of a branch in omega_b located by bisection between its bracketing points
+// (locate_crossing), the breathers in between re-solved on `shooting` by dense Newton from Z(0)
+// interpolated in omega_b and kept only if localized. Crossings in an interval with a fold stay bracketed
+// (omega_b is not monotone there).
+void locate_crossings(const sim::dark::DarkShooting& shooting, const BrightBreatherConfig& c, BrightBreatherResult& r) {
+  if (c.locate_tolerance <= 0 || r.branch_floquets.size() != r.branch.points.size()) return;
+  BreatherSolverOptions dense = c.krylov;
+  dense.solver = "dense";
+  const CrossingSolver solve = [&](double omega_b, const Eigen::VectorXd& guess) -> std::optional<CrossingSolution> {
+    std::optional<KrylovRecord> record;
+    const sim::dark::NewtonResult n = solve_breather(shooting, guess, omega_b, newton_options(c, {}), dense, record);
+    if (!n.converged) return std::nullopt;
+    const BrightProfile profile = inspect_bright_profile(n.q, c.sites, {c.tail_tolerance});
+    if (!profile.localized) return std::nullopt;
+    return CrossingSolution{n.q, bright_floquet(shooting.monodromy(n.q, omega_b), r.edge.mean_flow, {c.unit_tolerance}),
+                            profile.norm_squared};
+  };
+  for (BranchBifurcation& b : r.bifurcations) {
+    if (b.kind == "fold") continue;
+    const bool fold_here = std::any_of(r.bifurcations.begin(), r.bifurcations.end(),
+                                       [&](const BranchBifurcation& f) { return f.kind == "fold" && f.index == b.index; });
+    if (fold_here) continue;
+    const std::size_t k = std::size_t(b.index);
+    const sim::dark::BranchPoint &p = r.branch.points[k], &q = r.branch.points[k + 1];
+    locate_crossing(b, p.parameter, p.z0, r.branch_floquets[k], q.parameter, q.z0, r.branch_floquets[k + 1], solve,
+                    c.unit_tolerance, c.locate_tolerance);
+  }
 }
 
 // The continuation of a bright breather (omega_b or a model parameter) from config c.
@@ -169,6 +200,7 @@ void continue_breather(const sim::dark::DarkShooting& shooting, const sim::dark:
   if (c.parameter == "omega_b") {
     continue_in_omega_b(shooting, c, hooks, r);
     keep_bright_points(c, [&](const sim::dark::BranchPoint&) { return parameters; }, contacts, r);
+    locate_crossings(shooting, c, r);
     return;
   }
   continue_in_parameter(c, hooks, r);
