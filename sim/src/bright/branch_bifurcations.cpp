@@ -92,10 +92,12 @@ std::complex<double> crossing_multiplier(const std::string& kind, const BrightFl
   const std::complex<double> target = kind == "branch_point"      ? std::complex<double>(1, 0)
                                       : kind == "period_doubling" ? std::complex<double>(-1, 0)
                                                                   : std::polar(1.0, 2 * std::numbers::pi / 3);
-  // |lambda - target| for a crossing point, -|lambda| (largest modulus first) for a Krein collision
+  // |lambda - target| for a crossing point, -|lambda| (largest modulus first) for a Krein collision; of a
+  // pair (lambda, 1/conj(lambda)) the one outside the circle, in the upper half plane off the real axis
   const auto score = [&](const std::complex<double>& l) {
-    if (l.imag() < 0 && kind != "branch_point" && kind != "period_doubling") return 1e300;  // the upper half plane
-    return kind == "krein_collision" ? -std::abs(l) : std::abs(l - target);
+    if (l.imag() < 0 && kind != "branch_point" && kind != "period_doubling") return 1e300;
+    const double inside = std::abs(l) < 1 - 1e-9 ? 1e6 : 0;
+    return inside + (kind == "krein_collision" ? -std::abs(l) : std::abs(l - target));
   };
   return *std::min_element(rest.begin(), rest.end(),
                            [&](const auto& x, const auto& y) { return score(x) < score(y); });
