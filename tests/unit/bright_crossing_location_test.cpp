@@ -1,6 +1,7 @@
 // Period tripling along a bright branch and multiplier crossings located by bisection
 // (sim/bright/branch_bifurcations.hpp: multipliers_beyond_two_thirds, locate_crossing), on monodromy
 // matrices whose crossing is known by construction and on a real klein_gordon branch.
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -160,4 +161,66 @@ TEST_CASE("bright job: a klein_gordon breather's multiplier through exp(2 pi i/3
   REQUIRE(bracketed.bifurcations.size() == 1);
   CHECK_FALSE(bracketed.bifurcations[0].located);
   CHECK(bracketed.bifurcations[0].omega_b == doctest::Approx(0.5 * (b.omega_low + b.omega_high)).epsilon(1e-14));
+}
+
+TEST_CASE("bright job: a Krein collision on a klein_gordon branch, located and checked two ways" * doctest::test_suite("fast")) {
+  // klein_gordon at C = 1 (band [1, sqrt(5)]), the site-centred breather continued up from omega_b = 2.7
+  // on 31 sites: stable at 2.8174, unstable (a complex quadruplet, |lambda| = 1.0015) at 2.8533. The
+  // bisection locates the onset at omega_b = 2.8249066 (measured), the quadruplet's multiplier just past
+  // it at angle 2.6013 with |lambda| - 1 = 2.6e-5.
+  using namespace lrchain::jobs::bright_breather;
+  const Model kg = shipped_model("klein_gordon", {{"C", 1.0}});
+  BrightBreatherConfig c;
+  c.step = BrightStep::branch;
+  c.model = &kg;
+  c.kernels = sim::shipped_lattice_kernels("klein_gordon");
+  c.omega_b = 2.7;
+  c.sites = 31;
+  c.points = 4;
+  c.ds = 0.2;
+  validate(c);
+  const BrightBreatherResult r = run(c);
+  INFO(failure(r).value_or(""));
+  REQUIRE(!failure(r));
+  const auto it = std::find_if(r.bifurcations.begin(), r.bifurcations.end(),
+                               [](const BranchBifurcation& b) { return b.kind == "krein_collision"; });
+  REQUIRE(it != r.bifurcations.end());
+  const BranchBifurcation& k = *it;
+  REQUIRE(k.located);
+  REQUIRE(k.multiplier);
+  CHECK(k.location_error <= 0.5e-6);
+  CHECK(k.omega_b == doctest::Approx(2.8249066).epsilon(1e-6));
+  CHECK(std::abs(*k.multiplier) > 1 + 1e-6);  // past the onset, off the circle,
+  CHECK(std::abs(*k.multiplier) < 1 + 1e-4);  // by O(sqrt(location error))
+  const double angle = std::arg(*k.multiplier);
+  // The branch solved to a given omega_b (its last point there), without locating.
+  auto last_point = [&](double to) {
+    BrightBreatherConfig f = c;
+    f.points = 20;
+    f.to = to;
+    f.locate_tolerance = 0;
+    validate(f);
+    BrightBreatherResult s = run(f);
+    REQUIRE(!failure(s));
+    REQUIRE(s.branch.points.back().omega_b == doctest::Approx(to).epsilon(1e-14));
+    return s;
+  };
+  // Check 1 (Hamiltonian-Hopf law): past the collision |lambda| - 1 grows like sqrt(omega_b - omega*);
+  // the straight line through (|lambda| - 1)^2 at omega* + 1e-5 and + 4e-5 extrapolates to zero at
+  // omega* within 1e-7 (measured 5e-8; pairs of 1e-5, 2e-5, 4e-5 spread by 1.5e-7 with the curvature).
+  const double w1 = k.omega_b + 1e-5, w2 = k.omega_b + 4e-5;
+  const double r1 = std::pow(last_point(w1).branch_floquets.back().max_nontrivial_modulus - 1, 2);
+  const double r2 = std::pow(last_point(w2).branch_floquets.back().max_nontrivial_modulus - 1, 2);
+  const double extrapolated = (w1 * r2 - w2 * r1) / (r2 - r1);
+  CHECK(std::abs(extrapolated - k.omega_b) <= k.location_error + 2e-7);
+  // Check 2 (MacKay's criterion): just before the collision (omega* - 1e-4), two multipliers on the
+  // circle within 3e-3 rad of the collision's angle carry opposite Krein signatures (measured: 2.6013
+  // with -1, 2.6028 with +1).
+  const BrightBreatherResult before = last_point(k.omega_b - 1e-4);
+  CHECK(before.branch_floquets.back().stable);
+  int plus = 0, minus = 0;
+  for (const KreinMultiplier& m : before.branch_krein.back())
+    if (std::abs(std::arg(m.lambda) - angle) < 3e-3) (m.signature > 0 ? plus : minus)++;
+  CHECK(plus == 1);
+  CHECK(minus == 1);
 }

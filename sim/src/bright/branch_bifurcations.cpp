@@ -96,6 +96,7 @@ std::complex<double> crossing_multiplier(const std::string& kind, const BrightFl
   // pair (lambda, 1/conj(lambda)) the one outside the circle, in the upper half plane off the real axis
   const auto score = [&](const std::complex<double>& l) {
     if (l.imag() < 0 && kind != "branch_point" && kind != "period_doubling") return 1e300;
+    if (kind == "krein_collision" && std::abs(l.imag()) <= dark::FloquetOptions{}.real_tolerance * std::abs(l)) return 1e299;
     const double inside = std::abs(l) < 1 - 1e-9 ? 1e6 : 0;
     return inside + (kind == "krein_collision" ? -std::abs(l) : std::abs(l - target));
   };

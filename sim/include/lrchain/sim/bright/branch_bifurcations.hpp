@@ -61,7 +61,7 @@ std::vector<BranchBifurcation> branch_bifurcations(const std::vector<BranchSampl
 Index crossing_indicator(const std::string& kind, const BrightFloquet& f, double unit_tolerance);
 
 // The multiplier that makes a crossing of `kind`: the nontrivial one nearest +1, -1 or exp(2 pi i/3)
-// (upper half plane), or (krein_collision) the one of largest modulus in the upper half plane; of a pair
+// (upper half plane), or (krein_collision) the non-real one of largest modulus in the upper half plane; of a pair
 // (lambda, 1/conj(lambda)) off the unit circle, the one outside.
 std::complex<double> crossing_multiplier(const std::string& kind, const BrightFloquet& f);
 
