@@ -233,9 +233,9 @@ def continue_branch(model=None, omega_b=None, branch=None, center=_D["center"], 
     """Solve, then pseudo-arclength continuation in omega_b away from the band edge within the window where
     no harmonic meets a band (or to ``to``), or with ``parameter`` a model parameter at fixed omega_b from
     its value to ``to`` (e.g. the coupling ``C`` of klein_gordon towards the anti-continuum limit), each
-    point checked to be a localized breather; returns :class:`BrightBranch`. In omega_b, each multiplier
-    crossing is located by bisection on re-solved breathers to a bracket ``locate_tolerance`` wide (0: the
-    branch points' bracket only).
+    point checked to be a localized breather; returns :class:`BrightBranch`. Each multiplier crossing
+    is located by bisection on re-solved breathers to a bracket ``locate_tolerance`` wide in the continued
+    parameter (0: the branch points' bracket only).
 
     Example::
 

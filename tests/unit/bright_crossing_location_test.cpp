@@ -35,6 +35,13 @@ Eigen::Matrix2d rotation(double angle) {
   return r;
 }
 
+// Where (|lambda| - 1)^2, linear in the parameter past a Hamiltonian-Hopf (Krein) collision, vanishes:
+// the line through (p1, |lambda1|) and (p2, |lambda2|).
+double hopf_onset(double p1, double modulus1, double p2, double modulus2) {
+  const double r1 = (modulus1 - 1) * (modulus1 - 1), r2 = (modulus2 - 1) * (modulus2 - 1);
+  return (p1 * r2 - p2 * r1) / (r2 - r1);
+}
+
 }  // namespace
 
 TEST_CASE("bright branch: multipliers past exp(+-2 pi i/3) counted, a change flagged as period tripling" * doctest::test_suite("fast")) {
@@ -209,9 +216,8 @@ TEST_CASE("bright job: a Krein collision on a klein_gordon branch, located and c
   // the straight line through (|lambda| - 1)^2 at omega* + 1e-5 and + 4e-5 extrapolates to zero at
   // omega* within 1e-7 (measured 5e-8; pairs of 1e-5, 2e-5, 4e-5 spread by 1.5e-7 with the curvature).
   const double w1 = k.omega_b + 1e-5, w2 = k.omega_b + 4e-5;
-  const double r1 = std::pow(last_point(w1).branch_floquets.back().max_nontrivial_modulus - 1, 2);
-  const double r2 = std::pow(last_point(w2).branch_floquets.back().max_nontrivial_modulus - 1, 2);
-  const double extrapolated = (w1 * r2 - w2 * r1) / (r2 - r1);
+  const double extrapolated = hopf_onset(w1, last_point(w1).branch_floquets.back().max_nontrivial_modulus, w2,
+                                         last_point(w2).branch_floquets.back().max_nontrivial_modulus);
   CHECK(std::abs(extrapolated - k.omega_b) <= k.location_error + 2e-7);
   // Check 2 (MacKay's criterion): just before the collision (omega* - 1e-4), two multipliers on the
   // circle within 3e-3 rad of the collision's angle carry opposite Krein signatures (measured: 2.6013
@@ -223,4 +229,51 @@ TEST_CASE("bright job: a Krein collision on a klein_gordon branch, located and c
     if (std::abs(std::arg(m.lambda) - angle) < 3e-3) (m.signature > 0 ? plus : minus)++;
   CHECK(plus == 1);
   CHECK(minus == 1);
+}
+
+TEST_CASE("bright job: the site-centred klein_gordon breather loses stability in C, located and checked" * doctest::test_suite("fast")) {
+  // klein_gordon at omega_b = 2.7, the site-centred breather continued in the coupling from C = 1 down
+  // to 0.89 on 31 sites: stable at 1 and 0.9541, unstable at 0.9077 (|lambda| = 1.0011). The bisection in
+  // C (each breather re-solved on the lattice at that C) locates the Krein collision at C* = 0.9082722
+  // (measured), |lambda| - 1 = 2.9e-5 just past it.
+  using namespace lrchain::jobs::bright_breather;
+  const Model kg = shipped_model("klein_gordon", {{"C", 1.0}});
+  BrightBreatherConfig c;
+  c.step = BrightStep::branch;
+  c.model = &kg;
+  c.kernels = sim::shipped_lattice_kernels("klein_gordon");
+  c.omega_b = 2.7;
+  c.sites = 31;
+  c.parameter = "C";
+  c.to = 0.89;
+  c.points = 30;
+  c.ds = 0.05;
+  validate(c);
+  const BrightBreatherResult r = run(c);
+  INFO(failure(r).value_or(""));
+  REQUIRE(!failure(r));
+  const auto it = std::find_if(r.bifurcations.begin(), r.bifurcations.end(),
+                               [](const BranchBifurcation& b) { return b.kind == "krein_collision"; });
+  REQUIRE(it != r.bifurcations.end());
+  REQUIRE(it->located);
+  CHECK(it->location_error <= 0.5e-6);
+  CHECK(it->omega_b == doctest::Approx(0.9082722).epsilon(1e-6));  // the record's value of the continued C
+  REQUIRE(it->multiplier);
+  CHECK(std::abs(*it->multiplier) > 1 + 1e-6);
+  CHECK(std::abs(*it->multiplier) < 1 + 1e-4);
+  // Independent check: the square-root law below C* (the unstable side), from the branch's last points
+  // solved at C* - 1e-5 (|lambda| = 1.000157026) and C* - 4e-5 (1.000313131), not located: the line
+  // through (|lambda| - 1)^2 meets zero 7.8e-8 from the located C*.
+  auto modulus_at = [&](double to) {
+    BrightBreatherConfig f = c;
+    f.to = to;
+    f.locate_tolerance = 0;
+    validate(f);
+    const BrightBreatherResult s = run(f);
+    REQUIRE(!failure(s));
+    REQUIRE(s.branch.points.back().parameter == doctest::Approx(to).epsilon(1e-14));
+    return s.branch_floquets.back().max_nontrivial_modulus;
+  };
+  const double c1 = it->omega_b - 1e-5, c2 = it->omega_b - 4e-5;
+  CHECK(std::abs(hopf_onset(c1, modulus_at(c1), c2, modulus_at(c2)) - it->omega_b) <= it->location_error + 2e-7);
 }

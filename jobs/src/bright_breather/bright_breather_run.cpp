@@ -67,23 +67,28 @@ std::vector<BranchSample> branch_samples(const BrightBreatherResult& r, double u
   return samples;
 }
 
-// Each multiplier crossing of a branch in omega_b located by bisection between its bracketing points
-// (locate_crossing), the breathers in between re-solved on `shooting` by dense Newton from Z(0)
-// interpolated in omega_b and kept only if localized. Crossings in an interval with a fold stay bracketed
-// (omega_b is not monotone there).
-void locate_crossings(const sim::dark::DarkShooting& shooting, const BrightBreatherConfig& c, BrightBreatherResult& r) {
-  if (c.locate_tolerance <= 0 || r.branch_floquets.size() != r.branch.points.size()) return;
+// The breather re-solved on `shooting` at omega_b by dense Newton from `guess`, with its Floquet
+// analysis, or nullopt when Newton fails or its zero is no localized breather.
+std::optional<CrossingSolution> resolved_breather(const sim::dark::DarkShooting& shooting, double omega_b,
+                                                  const Eigen::VectorXd& guess, const BrightBreatherConfig& c,
+                                                  bool mean_flow) {
   BreatherSolverOptions dense = c.krylov;
   dense.solver = "dense";
-  const CrossingSolver solve = [&](double omega_b, const Eigen::VectorXd& guess) -> std::optional<CrossingSolution> {
-    std::optional<KrylovRecord> record;
-    const sim::dark::NewtonResult n = solve_breather(shooting, guess, omega_b, newton_options(c, {}), dense, record);
-    if (!n.converged) return std::nullopt;
-    const BrightProfile profile = inspect_bright_profile(n.q, c.sites, {c.tail_tolerance});
-    if (!profile.localized) return std::nullopt;
-    return CrossingSolution{n.q, bright_floquet(shooting.monodromy(n.q, omega_b), r.edge.mean_flow, {c.unit_tolerance}),
-                            profile.norm_squared};
-  };
+  std::optional<KrylovRecord> record;
+  const sim::dark::NewtonResult n = solve_breather(shooting, guess, omega_b, newton_options(c, {}), dense, record);
+  if (!n.converged) return std::nullopt;
+  const BrightProfile profile = inspect_bright_profile(n.q, c.sites, {c.tail_tolerance});
+  if (!profile.localized) return std::nullopt;
+  return CrossingSolution{n.q, bright_floquet(shooting.monodromy(n.q, omega_b), mean_flow, {c.unit_tolerance}),
+                          profile.norm_squared};
+}
+
+// Each multiplier crossing of the branch located by bisection in the continued parameter between its
+// bracketing points (locate_crossing), `solve` re-solving the breather at a value of it from Z(0)
+// interpolated linearly. Crossings in an interval with a fold stay bracketed (the parameter is not
+// monotone there).
+void locate_crossings(const BrightBreatherConfig& c, const CrossingSolver& solve, BrightBreatherResult& r) {
+  if (c.locate_tolerance <= 0 || r.branch_floquets.size() != r.branch.points.size()) return;
   for (BranchBifurcation& b : r.bifurcations) {
     if (b.kind == "fold") continue;
     const bool fold_here = std::any_of(r.bifurcations.begin(), r.bifurcations.end(),
@@ -200,21 +205,27 @@ void continue_breather(const sim::dark::DarkShooting& shooting, const sim::dark:
   if (c.parameter == "omega_b") {
     continue_in_omega_b(shooting, c, hooks, r);
     keep_bright_points(c, [&](const sim::dark::BranchPoint&) { return parameters; }, contacts, r);
-    locate_crossings(shooting, c, r);
+    locate_crossings(c, [&](double omega_b, const Eigen::VectorXd& guess) {
+      return resolved_breather(shooting, omega_b, guess, c, r.edge.mean_flow);
+    }, r);
     return;
   }
   continue_in_parameter(c, hooks, r);
   Index index = 0;
   const auto& definitions = c.model->definition().parameters;
   while (definitions[std::size_t(index)].name != c.parameter) ++index;
-  keep_bright_points(
-      c,
-      [&](const sim::dark::BranchPoint& p) {
-        std::vector<double> at = parameters;
-        at[std::size_t(index)] = p.parameter;
-        return at;
-      },
-      contacts, r);
+  const auto parameters_at = [&](double value) {
+    std::vector<double> at = parameters;
+    at[std::size_t(index)] = value;
+    return at;
+  };
+  keep_bright_points(c, [&](const sim::dark::BranchPoint& p) { return parameters_at(p.parameter); }, contacts, r);
+  // at fixed omega_b, on the lattice at each value of the parameter (as keep_bright_points)
+  locate_crossings(c, [&](double value, const Eigen::VectorXd& guess) {
+    const sim::dark::DarkShooting at(*c.kernels, parameters_at(value), c.sites, r.edge.mean_flow,
+                                     sim::dark::ShootingMode::reversible, {}, contacts);
+    return resolved_breather(at, c.omega_b, guess, c, r.edge.mean_flow);
+  }, r);
 }
 
 // Floquet multipliers of the solved breather, the perturbation (`unstable`: along the eigenvector of

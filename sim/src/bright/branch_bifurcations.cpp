@@ -104,19 +104,19 @@ std::complex<double> crossing_multiplier(const std::string& kind, const BrightFl
                            [&](const auto& x, const auto& y) { return score(x) < score(y); });
 }
 
-// Bisection in omega_b: the end with a's indicator moves to the midpoint while the indicator there is
+// Bisection in the continued parameter: the end with a's indicator moves to the midpoint while the indicator there is
 // a's; the other end keeps the change (b's indicator, or another value: the change lies between a and it).
-void locate_crossing(BranchBifurcation& b, double omega_a, const Eigen::VectorXd& z_a, const BrightFloquet& fa,
-                     double omega_b, const Eigen::VectorXd& z_b, const BrightFloquet& fb, const CrossingSolver& solve,
+void locate_crossing(BranchBifurcation& b, double p_a, const Eigen::VectorXd& z_a, const BrightFloquet& fa,
+                     double p_b, const Eigen::VectorXd& z_b, const BrightFloquet& fb, const CrossingSolver& solve,
                      double unit_tolerance, double tolerance) {
   const Index before = crossing_indicator(b.kind, fa, unit_tolerance);
-  double lo = omega_a, hi = omega_b;
+  double lo = p_a, hi = p_b;
   Eigen::VectorXd z_lo = z_a, z_hi = z_b;
   BrightFloquet f_hi = fb;
   double norm_hi = z_b.squaredNorm();
   while (std::abs(hi - lo) > tolerance) {
     const double mid = 0.5 * (lo + hi);
-    const Eigen::VectorXd guess = z_lo + (z_hi - z_lo) * ((mid - lo) / (hi - lo));  // Z(0) linear in omega_b
+    const Eigen::VectorXd guess = z_lo + (z_hi - z_lo) * ((mid - lo) / (hi - lo));  // Z(0) linear in p
     const std::optional<CrossingSolution> s = solve(mid, guess);
     if (!s) return;  // not located: the bracket of the branch points stands
     if (crossing_indicator(b.kind, s->floquet, unit_tolerance) == before) {

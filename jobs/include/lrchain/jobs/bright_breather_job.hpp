@@ -62,8 +62,8 @@ struct BrightBreatherConfig {
   Index points = 20;               // maximum number of branch points, the first included, in [1, 1e6]
   double ds = 0.05;                // initial pseudo-arclength step in (Z(0), omega_b), in (0, 1]
   bool branch_floquet = true;      // Floquet multipliers at every branch point
-  // continue in omega_b with Floquet: each multiplier crossing bisected (breathers re-solved between its
-  // bracketing points) to a bracket at most this wide in omega_b, in [0, 1); 0: bracketed only
+  // continue with Floquet: each multiplier crossing bisected (breathers re-solved between its bracketing
+  // points) to a bracket at most this wide in the continued parameter, in [0, 1); 0: bracketed only
   double locate_tolerance = 1e-6;
   // The continued parameter: omega_b, or one of the model's parameters at fixed omega_b (e.g. the
   // coupling C of klein_gordon towards the anti-continuum limit C = 0)

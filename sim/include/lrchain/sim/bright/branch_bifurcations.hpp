@@ -8,8 +8,8 @@
 // sets in: a complex quadruplet off the unit circle, which only two multipliers of opposite Krein
 // signature can form, krein_signature.hpp).
 // A multiplier crossing is first bracketed by two points (omega_b the middle of the bracket,
-// omega_low/omega_high the bracket itself); locate_crossing() then narrows it by bisection on re-solved
-// breathers between them.
+// omega_low/omega_high the bracket itself: along a model parameter, that parameter's values);
+// locate_crossing() then narrows it by bisection on re-solved breathers between them.
 #include <complex>
 #include <functional>
 #include <optional>
@@ -65,22 +65,23 @@ Index crossing_indicator(const std::string& kind, const BrightFloquet& f, double
 // (lambda, 1/conj(lambda)) off the unit circle, the one outside.
 std::complex<double> crossing_multiplier(const std::string& kind, const BrightFloquet& f);
 
-// A breather re-solved at omega_b from a guess of its Z(0): its Z(0), Floquet analysis and norm, or
-// nullopt when Newton fails or the zero is no localized breather.
+// A breather re-solved at a value of the continued parameter (omega_b, or a model parameter at fixed
+// omega_b) from a guess of its Z(0): its Z(0), Floquet analysis and norm, or nullopt when Newton fails
+// or the zero is no localized breather.
 struct CrossingSolution {
   Eigen::VectorXd z0;
   BrightFloquet floquet;
   double norm_squared = 0;
 };
-using CrossingSolver = std::function<std::optional<CrossingSolution>(double omega_b, const Eigen::VectorXd& guess)>;
+using CrossingSolver = std::function<std::optional<CrossingSolution>(double value, const Eigen::VectorXd& guess)>;
 
-// Locates crossing `b` (not a fold) between its bracketing points, at (omega_a, z_a) and (omega_b, z_b)
-// in branch order with Floquet analyses fa and fb, by bisection in omega_b on crossing_indicator: each
+// Locates crossing `b` (not a fold) between its bracketing points, at (p_a, z_a) and (p_b, z_b) in branch
+// order (p the continued parameter) with Floquet analyses fa and fb, by bisection in p on crossing_indicator: each
 // midpoint re-solved by `solve` from Z(0) interpolated linearly between the bracket's ends, until the
 // bracket is at most `tolerance` wide. Sets b.omega_b (the final bracket's middle), b.location_error,
 // b.multiplier, b.norm_squared and b.located; leaves b as it is when a re-solve fails.
-void locate_crossing(BranchBifurcation& b, double omega_a, const Eigen::VectorXd& z_a, const BrightFloquet& fa,
-                     double omega_b, const Eigen::VectorXd& z_b, const BrightFloquet& fb, const CrossingSolver& solve,
+void locate_crossing(BranchBifurcation& b, double p_a, const Eigen::VectorXd& z_a, const BrightFloquet& fa,
+                     double p_b, const Eigen::VectorXd& z_b, const BrightFloquet& fb, const CrossingSolver& solve,
                      double unit_tolerance, double tolerance);
 
 }  // namespace lrchain::sim::bright
