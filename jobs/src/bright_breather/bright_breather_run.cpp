@@ -68,7 +68,8 @@ std::vector<BranchSample> branch_samples(const BrightBreatherResult& r, double u
 }
 
 // The breather re-solved on `shooting` at omega_b by dense Newton from `guess`, with its Floquet
-// analysis, or nullopt when Newton fails or its zero is no localized breather.
+// analysis, or nullopt when Newton fails, its zero is no localized breather or lies farther than 10% of
+// the guess's peak from it (another family, not the branch between the bracket's ends).
 std::optional<CrossingSolution> resolved_breather(const sim::dark::DarkShooting& shooting, double omega_b,
                                                   const Eigen::VectorXd& guess, const BrightBreatherConfig& c,
                                                   bool mean_flow) {
@@ -76,7 +77,8 @@ std::optional<CrossingSolution> resolved_breather(const sim::dark::DarkShooting&
   dense.solver = "dense";
   std::optional<KrylovRecord> record;
   const sim::dark::NewtonResult n = solve_breather(shooting, guess, omega_b, newton_options(c, {}), dense, record);
-  if (!n.converged) return std::nullopt;
+  if (!n.converged || (n.q - guess).lpNorm<Eigen::Infinity>() > 0.1 * guess.lpNorm<Eigen::Infinity>())
+    return std::nullopt;
   const BrightProfile profile = inspect_bright_profile(n.q, c.sites, {c.tail_tolerance});
   if (!profile.localized) return std::nullopt;
   return CrossingSolution{n.q, bright_floquet(shooting.monodromy(n.q, omega_b), mean_flow, {c.unit_tolerance}),
