@@ -108,6 +108,7 @@ void register_bright(CLI::App& app) {
   add_number(*cont, "--unit-tolerance", args->config.unit_tolerance, bright_help("unit_tolerance"));
   add_integer(*cont, "--points", args->config.points, config::dark_points.least, config::dark_points.most, bright_help("points"));
   add_number(*cont, "--ds", args->config.ds, bright_help("ds"));
+  add_number(*cont, "--locate-tolerance", args->config.locate_tolerance, bright_help("locate_tolerance"));
   cont->add_option("--parameter", args->config.parameter, bright_help("parameter"))->type_name("NAME");
   cont->add_option_function<std::string>(
           "--to", [args](const std::string& text) { args->config.to = parse_number(text, "to"); }, bright_help("to"))

@@ -140,7 +140,8 @@ def _model(model):
 # The job's result as a dict (its JSON summary, Z(0) and the seed as arrays; branch_z for a branch).
 def _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance, step,
          points=_D["points"], ds=_D["ds"], branch_floquet=_D["floquet"], periods=_D["periods"],
-         perturb=_D["perturb"], perturb_size=_D["perturb_size"], seed=_D["seed"], parameter=_D["parameter"], to=None):
+         perturb=_D["perturb"], perturb_size=_D["perturb_size"], seed=_D["seed"], parameter=_D["parameter"], to=None,
+         locate_tolerance=_D["locate_tolerance"]):
     model = _model(model)
     if omega_b is None:
         from .errors import InvalidParameterError
@@ -149,7 +150,7 @@ def _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_
                                     "edge of the model)", "omega_b")
     return python_names(lambda: _lrchain.bright_breather_solve(
         model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance, step, points,
-        ds, branch_floquet, periods, perturb, perturb_size, seed, parameter, to))
+        ds, branch_floquet, periods, perturb, perturb_size, seed, parameter, to, locate_tolerance))
 
 
 @documented(_SECTION)
@@ -197,8 +198,9 @@ class BrightBranch:
     :class:`BrightBreather`), per point ``omega_b``, ``peak``, ``norm_squared``, ``width``, ``stable`` and
     ``max_nontrivial_modulus`` (None without Floquet), ``z`` (points x fields x sites), the
     ``turning_points``, the non-resonant ``window`` (low, high; high None when unbounded), ``stop_reason``,
-    ``bifurcations`` (dicts: kind fold | branch_point | period_doubling | krein_collision, index, omega_b,
-    norm_squared, omega_low, omega_high) and ``krein`` (per point a list of dicts angle, modulus,
+    ``bifurcations`` (dicts: kind fold | branch_point | period_doubling | period_tripling | krein_collision,
+    index, omega_b, norm_squared, omega_low, omega_high, located, location_error, multiplier [re, im] and
+    multiplier_modulus, None when not located) and ``krein`` (per point a list of dicts angle, modulus,
     signature for the multipliers on the upper unit circle; None in strain form or without Floquet), the
     continued ``parameter`` (omega_b or a model parameter at fixed omega_b) and its ``values`` per point.
     ``to_hdf5(path)`` writes the file ``lrchain bright continue --format hdf5`` writes (:mod:`lrchain.hdf5`);
@@ -234,11 +236,13 @@ class BrightBranch:
 def continue_branch(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"],
                     tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], tail_tolerance=_D["tail_tolerance"],
                     unit_tolerance=_D["unit_tolerance"], points=_D["points"], ds=_D["ds"], floquet=_D["floquet"],
-                    parameter=_D["parameter"], to=None):
+                    parameter=_D["parameter"], to=None, locate_tolerance=_D["locate_tolerance"]):
     """Solve, then pseudo-arclength continuation in omega_b away from the band edge within the window where
     no harmonic meets a band (or to ``to``), or with ``parameter`` a model parameter at fixed omega_b from
     its value to ``to`` (e.g. the coupling ``C`` of klein_gordon towards the anti-continuum limit), each
-    point checked to be a localized breather; returns :class:`BrightBranch`.
+    point checked to be a localized breather; returns :class:`BrightBranch`. Each multiplier crossing
+    is located by bisection on re-solved breathers to a bracket ``locate_tolerance`` wide in the continued
+    parameter (0: the branch points' bracket only).
 
     Example::
 
@@ -248,7 +252,7 @@ def continue_branch(model=None, omega_b=None, branch=None, center=_D["center"], 
         (4, True)
     """
     d = _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance,
-             "continue", points, ds, floquet, parameter=parameter, to=to)
+             "continue", points, ds, floquet, parameter=parameter, to=to, locate_tolerance=locate_tolerance)
     return _branch(d)
 
 

@@ -36,7 +36,8 @@ py::dict bright_solve_job(const LoadedModel& loaded, double omega_b, const std::
                    const std::string& center, double sites, double tolerance, double max_iterations,
                    double tail_tolerance, double unit_tolerance, const std::string& step, double points, double ds,
                    bool branch_floquet, double periods, const std::string& perturb, double perturb_size,
-                   std::uint64_t seed, const std::string& parameter, std::optional<double> to) {
+                   std::uint64_t seed, const std::string& parameter, std::optional<double> to,
+                   double locate_tolerance) {
   BrightBreatherConfig c;
   c.step = step == "continue"  ? BrightStep::branch
            : step == "floquet" ? BrightStep::floquet
@@ -50,6 +51,7 @@ py::dict bright_solve_job(const LoadedModel& loaded, double omega_b, const std::
   c.to = to;
   c.points = integer_keyword(points, "points", config::dark_points.least, config::dark_points.most);
   c.ds = ds;
+  c.locate_tolerance = locate_tolerance;
   c.branch_floquet = branch_floquet;
   c.model = &loaded.model;
   c.kernels = &lattice_kernels(loaded);
@@ -97,7 +99,8 @@ py::dict bright_solve_job(const LoadedModel& loaded, double omega_b, const std::
 void register_bright_breather(py::module_& m) {
   m.def("bright_breather_solve", &bright_solve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("tail_tolerance"),
-        py::arg("unit_tolerance"), py::arg("step"), py::arg("points"), py::arg("ds"), py::arg("branch_floquet"), py::arg("periods"), py::arg("perturb"), py::arg("perturb_size"), py::arg("seed"), py::arg("parameter"), py::arg("to"));
+        py::arg("unit_tolerance"), py::arg("step"), py::arg("points"), py::arg("ds"), py::arg("branch_floquet"), py::arg("periods"), py::arg("perturb"), py::arg("perturb_size"), py::arg("seed"), py::arg("parameter"), py::arg("to"),
+        py::arg("locate_tolerance"));
 }
 
 }  // namespace lrchain::python

@@ -105,6 +105,7 @@ const std::set<BadValue>& possibly_valid(const std::string& name) {
       {"omega-min", {minus_one, zero}},      // lower stop of the continuation (default 0)
       {"omega-max", {minus_one, zero}},      // <= 0 today means "the band edge"
       {"ds", {minus_one}},                   // the sign of the first step may pick the direction
+      {"locate-tolerance", {zero}},          // 0: crossings bracketed, not located
       {"name", {huge_pi, word, empty}},      // a run's name is any text
       {"dir", {huge_pi, word, empty}},       // an output directory is any path; empty: none
       {"values", {minus_one, zero, huge}},   // a sweep axis may hold any number: a point outside the

@@ -70,6 +70,20 @@ def test_continue_branch_rises_from_the_edge():
     assert len(b.krein[0]) >= 55 and all(m["signature"] == -1 for m in b.krein[0])
 
 
+def test_continue_branch_locates_a_period_tripling():
+    # The job's numbers (tests/unit/bright_crossing_location_test.cpp): klein_gordon at C = 0.3 from omega_b
+    # 2.05, a multiplier through exp(2 pi i/3) located at 2.0510924 to 1e-6; here the keyword and the dicts.
+    kg = lrchain.load_model("klein_gordon", C=0.3)
+    b = bright.continue_branch(kg, omega_b=2.05, sites=31, points=2, ds=0.2)
+    (x,) = b.bifurcations
+    assert x["kind"] == "period_tripling" and x["located"] and x["location_error"] <= 5e-7
+    assert x["omega_b"] == pytest.approx(2.0510924, rel=1e-6)
+    assert abs(complex(*x["multiplier"]) - np.exp(2j * np.pi / 3)) < 2e-6
+    (y,) = bright.continue_branch(kg, omega_b=2.05, sites=31, points=2, ds=0.2, locate_tolerance=0).bifurcations
+    assert not y["located"] and y["multiplier"] is None and y["location_error"] is None
+    assert y["omega_b"] == pytest.approx((x["omega_low"] + x["omega_high"]) / 2, rel=1e-14)
+
+
 def test_evolve_keywords_arrays_and_the_perturb_refusal():
     # The numbers are the job's (tests/unit/bright_evolve_job_test.cpp); here the keywords and arrays.
     fpu = lrchain.load_model("fput", a=0)

@@ -15,9 +15,9 @@ TEST_CASE("bright branch: a fold located on the Hermite interpolant of omega_b(s
   // omega_b(s) = 1 - (s - 0.3)^2 sampled at s = 0 and 0.5 (values 0.91, 0.96; slopes 0.6, -0.4): the
   // cubic Hermite interpolant is this parabola itself, so the fold is at s = 0.3, omega_b = 1 exactly,
   // and the norm (2 -> 3, linear in s) is 2.6 there.
-  const std::vector<BranchSample> samples{{0.0, 0.91, 0.6, 2.0, std::nullopt, std::nullopt, std::nullopt},
-                                          {0.5, 0.96, -0.4, 3.0, std::nullopt, std::nullopt, std::nullopt},
-                                          {1.0, 0.51, -1.4, 4.0, std::nullopt, std::nullopt, std::nullopt}};
+  const std::vector<BranchSample> samples{{0.0, 0.91, 0.6, 2.0, std::nullopt, std::nullopt, std::nullopt, std::nullopt},
+                                          {0.5, 0.96, -0.4, 3.0, std::nullopt, std::nullopt, std::nullopt, std::nullopt},
+                                          {1.0, 0.51, -1.4, 4.0, std::nullopt, std::nullopt, std::nullopt, std::nullopt}};
   const std::vector<BranchBifurcation> found = branch_bifurcations(samples);
   REQUIRE(found.size() == 1);
   CHECK(found[0].kind == "fold");
@@ -45,7 +45,7 @@ TEST_CASE("bright branch: multipliers beyond +1 and -1 counted without the trivi
   // The oscillatory instability appearing between the last two points is a Krein collision; its
   // disappearance between the first two is not flagged (a quadruplet returning to the circle).
   const std::vector<BranchSample> samples{
-      {0.0, 1.2, 1.0, 1.0, 0, 0, true}, {0.1, 1.3, 1.0, 2.0, 1, 1, false}, {0.2, 1.4, 1.0, 3.0, 0, 0, true}};
+      {0.0, 1.2, 1.0, 1.0, 0, 0, true, 0}, {0.1, 1.3, 1.0, 2.0, 1, 1, false, 0}, {0.2, 1.4, 1.0, 3.0, 0, 0, true, 0}};
   const std::vector<BranchBifurcation> found = branch_bifurcations(samples);
   REQUIRE(found.size() == 5);
   CHECK(found[4].kind == "krein_collision");

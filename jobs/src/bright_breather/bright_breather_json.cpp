@@ -47,7 +47,8 @@ json edge_json(const BrightEdge& e) {
 // The continuation: why it stopped, the non-resonant window, turning points, per point omega_b,
 // the profile's peak, norm and width, the corrector's iterations and (with Floquet) the stability and
 // the Krein signatures (angle of each multiplier on the upper unit circle, its signature), and
-// the bifurcations (kind, index, omega_b, norm_squared, bracket).
+// the bifurcations (kind, index, omega_b, norm_squared, bracket; a located crossing: its error bound in
+// omega_b and the crossing multiplier, re and im, and its modulus).
 json branch_json(const BrightBreatherResult& r) {
   json points = json::array();
   for (std::size_t k = 0; k < r.branch.points.size(); ++k) {
@@ -73,7 +74,10 @@ json branch_json(const BrightBreatherResult& r) {
   json bifurcations = json::array();
   for (const auto& b : r.bifurcations)
     bifurcations.push_back({{"kind", b.kind}, {"index", b.index}, {"omega_b", b.omega_b},
-                            {"norm_squared", b.norm_squared}, {"omega_low", b.omega_low}, {"omega_high", b.omega_high}});
+                            {"norm_squared", b.norm_squared}, {"omega_low", b.omega_low}, {"omega_high", b.omega_high},
+                            {"located", b.located}, {"location_error", b.located ? json(b.location_error) : json(nullptr)},
+                            {"multiplier", b.multiplier ? json({b.multiplier->real(), b.multiplier->imag()}) : json(nullptr)},
+                            {"multiplier_modulus", b.multiplier ? json(std::abs(*b.multiplier)) : json(nullptr)}});
   return {{"parameter", r.config.parameter},
           {"to", r.config.to ? json(*r.config.to) : json(nullptr)},
           {"points", r.branch.points.size()},

@@ -1,6 +1,7 @@
 // run(BrightBreatherConfig): the bands and harmonics checked, the focusing edge and its NLS seed,
 // Newton on the time-reversible shooting shared with the dark breathers, the localization check,
 // and (floquet) the multipliers of the full-period monodromy (bright_breather_job.hpp).
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <cmath>
@@ -54,15 +55,52 @@ std::vector<BranchSample> branch_samples(const BrightBreatherResult& r, double u
       s += std::sqrt((p.z0 - q.z0).squaredNorm() + (p.parameter - q.parameter) * (p.parameter - q.parameter));
     }
     BranchSample sample{s, p.parameter, p.tangent_omega, r.branch_profiles[k].norm_squared, std::nullopt, std::nullopt,
-                        std::nullopt};
+                        std::nullopt, std::nullopt};
     if (k < r.branch_floquets.size()) {
       sample.real_unstable = real_multipliers_beyond(r.branch_floquets[k], +1, unit_tolerance);
       sample.period_doubling = real_multipliers_beyond(r.branch_floquets[k], -1, unit_tolerance);
+      sample.period_tripling = multipliers_beyond_two_thirds(r.branch_floquets[k]);
       sample.oscillatory = r.branch_floquets[k].multipliers.oscillatory;
     }
     samples.push_back(sample);
   }
   return samples;
+}
+
+// The breather re-solved on `shooting` at omega_b by dense Newton from `guess`, with its Floquet
+// analysis, or nullopt when Newton fails, its zero is no localized breather or lies farther than 10% of
+// the guess's peak from it (another family, not the branch between the bracket's ends).
+std::optional<CrossingSolution> resolved_breather(const sim::dark::DarkShooting& shooting, double omega_b,
+                                                  const Eigen::VectorXd& guess, const BrightBreatherConfig& c,
+                                                  bool mean_flow) {
+  BreatherSolverOptions dense = c.krylov;
+  dense.solver = "dense";
+  std::optional<KrylovRecord> record;
+  const sim::dark::NewtonResult n = solve_breather(shooting, guess, omega_b, newton_options(c, {}), dense, record);
+  if (!n.converged || (n.q - guess).lpNorm<Eigen::Infinity>() > 0.1 * guess.lpNorm<Eigen::Infinity>())
+    return std::nullopt;
+  const BrightProfile profile = inspect_bright_profile(n.q, c.sites, {c.tail_tolerance});
+  if (!profile.localized) return std::nullopt;
+  return CrossingSolution{n.q, bright_floquet(shooting.monodromy(n.q, omega_b), mean_flow, {c.unit_tolerance}),
+                          profile.norm_squared};
+}
+
+// Each multiplier crossing of the branch located by bisection in the continued parameter between its
+// bracketing points (locate_crossing), `solve` re-solving the breather at a value of it from Z(0)
+// interpolated linearly. Crossings in an interval with a fold stay bracketed (the parameter is not
+// monotone there).
+void locate_crossings(const BrightBreatherConfig& c, const CrossingSolver& solve, BrightBreatherResult& r) {
+  if (c.locate_tolerance <= 0 || r.branch_floquets.size() != r.branch.points.size()) return;
+  for (BranchBifurcation& b : r.bifurcations) {
+    if (b.kind == "fold") continue;
+    const bool fold_here = std::any_of(r.bifurcations.begin(), r.bifurcations.end(),
+                                       [&](const BranchBifurcation& f) { return f.kind == "fold" && f.index == b.index; });
+    if (fold_here) continue;
+    const std::size_t k = std::size_t(b.index);
+    const sim::dark::BranchPoint &p = r.branch.points[k], &q = r.branch.points[k + 1];
+    locate_crossing(b, p.parameter, p.z0, r.branch_floquets[k], q.parameter, q.z0, r.branch_floquets[k + 1], solve,
+                    c.unit_tolerance, c.locate_tolerance);
+  }
 }
 
 // The continuation of a bright breather (omega_b or a model parameter) from config c.
@@ -169,20 +207,27 @@ void continue_breather(const sim::dark::DarkShooting& shooting, const sim::dark:
   if (c.parameter == "omega_b") {
     continue_in_omega_b(shooting, c, hooks, r);
     keep_bright_points(c, [&](const sim::dark::BranchPoint&) { return parameters; }, contacts, r);
+    locate_crossings(c, [&](double omega_b, const Eigen::VectorXd& guess) {
+      return resolved_breather(shooting, omega_b, guess, c, r.edge.mean_flow);
+    }, r);
     return;
   }
   continue_in_parameter(c, hooks, r);
   Index index = 0;
   const auto& definitions = c.model->definition().parameters;
   while (definitions[std::size_t(index)].name != c.parameter) ++index;
-  keep_bright_points(
-      c,
-      [&](const sim::dark::BranchPoint& p) {
-        std::vector<double> at = parameters;
-        at[std::size_t(index)] = p.parameter;
-        return at;
-      },
-      contacts, r);
+  const auto parameters_at = [&](double value) {
+    std::vector<double> at = parameters;
+    at[std::size_t(index)] = value;
+    return at;
+  };
+  keep_bright_points(c, [&](const sim::dark::BranchPoint& p) { return parameters_at(p.parameter); }, contacts, r);
+  // at fixed omega_b, on the lattice at each value of the parameter (as keep_bright_points)
+  locate_crossings(c, [&](double value, const Eigen::VectorXd& guess) {
+    const sim::dark::DarkShooting at(*c.kernels, parameters_at(value), c.sites, r.edge.mean_flow,
+                                     sim::dark::ShootingMode::reversible, {}, contacts);
+    return resolved_breather(at, c.omega_b, guess, c, r.edge.mean_flow);
+  }, r);
 }
 
 // Floquet multipliers of the solved breather, the perturbation (`unstable`: along the eigenvector of

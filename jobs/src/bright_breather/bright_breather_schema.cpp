@@ -40,6 +40,9 @@ std::vector<JobOption> make_options() {
        "maximum number of branch points, the first included"},
       {"ds", "--ds", "ds", {"continue"}, d.ds, false, "(0, 1], adapted within [1e-5, 1]",
        "initial pseudo-arclength step in (Z(0), omega_b), dimensionless"},
+      {"locate_tolerance", "--locate-tolerance", "locate_tolerance", {"continue"}, d.locate_tolerance, false, "[0, 1)",
+       "continue: each multiplier crossing bisected on re-solved breathers to a bracket this wide in the continued "
+       "parameter (0: bracketed between branch points only)"},
       {"periods", "--periods", "periods", {"evolve"}, d.periods, false, "[1, 1000000]",
        "breather periods T_b integrated (the deviation and energy sampled at every multiple of T_b)"},
       {"perturb", "--perturb", "perturb", {"evolve"}, d.perturb, false, "none|unstable|random",

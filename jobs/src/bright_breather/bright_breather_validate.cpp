@@ -37,6 +37,8 @@ void validate(const BrightBreatherConfig& c) {
   if (c.max_iterations < 1) throw InvalidParameter("max_iterations", "must be an integer >= 1");
   if (!(c.tail_tolerance > 0 && c.tail_tolerance < 1)) throw InvalidParameter("tail_tolerance", "must be in (0, 1)");
   if (!(c.unit_tolerance > 0 && c.unit_tolerance < 1)) throw InvalidParameter("unit_tolerance", "must be in (0, 1)");
+  if (!(c.locate_tolerance >= 0 && c.locate_tolerance < 1))
+    throw InvalidParameter("locate_tolerance", "must be in [0, 1) (0: crossings bracketed, not located)");
   if (c.format != "csv" && c.format != "hdf5") throw InvalidParameter("format", "must be csv or hdf5");
   if (c.step == BrightStep::branch) {
     config::checked_option(double(c.points), config::dark_points, "points");

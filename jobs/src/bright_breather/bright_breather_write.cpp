@@ -87,11 +87,16 @@ void write_branch(const BrightBreatherResult& r, const std::string& dir, jobs::F
 void write_bifurcations(const BrightBreatherResult& r, const std::string& dir) {
   std::ostringstream os;
   const std::string& p = r.config.parameter;
-  os << (p == "omega_b" ? std::string("kind,index,omega_b,norm_squared,omega_low,omega_high\n")
-                        : fmt::format("kind,index,{0},norm_squared,{0}_low,{0}_high\n", p));
-  for (const auto& b : r.bifurcations)
-    os << fmt::format("{},{},{:.17g},{:.17g},{:.17g},{:.17g}\n", b.kind, b.index, b.omega_b, b.norm_squared,
+  os << (p == "omega_b" ? std::string("kind,index,omega_b,norm_squared,omega_low,omega_high")
+                        : fmt::format("kind,index,{0},norm_squared,{0}_low,{0}_high", p))
+     << ",location_error,multiplier_re,multiplier_im\n";  // empty: not located
+  for (const auto& b : r.bifurcations) {
+    os << fmt::format("{},{},{:.17g},{:.17g},{:.17g},{:.17g},", b.kind, b.index, b.omega_b, b.norm_squared,
                       b.omega_low, b.omega_high);
+    os << (b.located ? fmt::format("{:.17g}", b.location_error) : std::string()) << ','
+       << (b.multiplier ? fmt::format("{:.17g},{:.17g}", b.multiplier->real(), b.multiplier->imag()) : std::string(","))
+       << '\n';
+  }
   jobs::write_file_atomic(dir, "bifurcations.csv", os.str());
 }
 

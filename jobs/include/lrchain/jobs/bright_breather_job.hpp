@@ -62,6 +62,9 @@ struct BrightBreatherConfig {
   Index points = 20;               // maximum number of branch points, the first included, in [1, 1e6]
   double ds = 0.05;                // initial pseudo-arclength step in (Z(0), omega_b), in (0, 1]
   bool branch_floquet = true;      // Floquet multipliers at every branch point
+  // continue with Floquet: each multiplier crossing bisected (breathers re-solved between its bracketing
+  // points) to a bracket at most this wide in the continued parameter, in [0, 1); 0: bracketed only
+  double locate_tolerance = 1e-6;
   // The continued parameter: omega_b, or one of the model's parameters at fixed omega_b (e.g. the
   // coupling C of klein_gordon towards the anti-continuum limit C = 0)
   std::string parameter = "omega_b";
@@ -121,7 +124,8 @@ struct BrightBreatherResult {
   sim::dark::BranchResult branch;
   std::vector<sim::bright::BrightProfile> branch_profiles;
   std::vector<sim::bright::BrightFloquet> branch_floquets;
-  // folds (located) and multiplier crossings at +1 / -1 (bracketed) along the kept points
+  // folds (located on the interpolant) and multiplier crossings at +1, -1, exp(+-2 pi i/3) and Krein
+  // collisions (bracketed, then located by bisection: locate_tolerance) along the kept points
   // (sim/bright/branch_bifurcations.hpp)
   std::vector<sim::bright::BranchBifurcation> bifurcations;
   // branch_floquet, displacement form: per point the Krein signatures of the multipliers on the upper
