@@ -53,6 +53,48 @@ double textbook_energy(const std::vector<double>& u, const std::vector<double>& 
   return e;
 }
 
+// The lattice of a model file with one field of unit mass, periodic ends, at state (u, v): its emitted
+// energy equals `expected` to round-off (relative `energy_tolerance`) and its accelerations are minus
+// the central-difference gradient of that energy (O(h^2) = 1e-10 times third derivatives, `gradient_tolerance`).
+void check_potential_and_forces(const fs::path& file, const double* parameters, const std::vector<double>& u,
+                                const std::vector<double>& v, double expected, double energy_tolerance,
+                                double gradient_tolerance) {
+  const auto kernels = lrchain::compile_model_lattice(file);
+  const bool has_energy = kernels->energy_density != nullptr;
+  REQUIRE(has_energy);
+  const long n = long(u.size());
+  std::vector<double> e(n), a(n), work(std::size_t(kernels->workspace_size(n)));
+  const auto energy = [&](const std::vector<double>& x) {
+    kernels->energy_density(parameters, n, LRCHAIN_LATTICE_ENDS_PERIODIC, x.data(), v.data(), e.data(), work.data());
+    double sum = 0;
+    for (double y : e) sum += y;
+    return sum;
+  };
+  REQUIRE(std::isfinite(energy(u)));
+  CHECK(std::abs(energy(u) - expected) < energy_tolerance * std::abs(expected));
+  kernels->displacement_accelerations(parameters, n, 1, u.data(), a.data(), work.data());
+  const double h = 1e-5;
+  for (long i = 0; i < n; ++i) {
+    INFO("site " << i << " u = " << u[i]);
+    std::vector<double> up = u, down = u;
+    up[i] += h;
+    down[i] -= h;
+    CHECK(std::abs(a[i] + (energy(up) - energy(down)) / (2 * h)) < gradient_tolerance);
+  }
+}
+
+// n random displacements and velocities in [-0.8, 0.8].
+void random_state(unsigned seed, long n, std::vector<double>& u, std::vector<double>& v) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> amplitude(-0.8, 0.8);
+  u.resize(std::size_t(n));
+  v.resize(std::size_t(n));
+  for (long i = 0; i < n; ++i) {
+    u[i] = amplitude(random);
+    v[i] = amplitude(random);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("lattice code: sin, sinh and tanh force laws get their textbook potential, and the forces are its gradient" *
@@ -60,39 +102,11 @@ TEST_CASE("lattice code: sin, sinh and tanh force laws get their textbook potent
   lrchain::test::ScratchCache scratch("lrchain-transcendental");
   const fs::path file = scratch.dir / "frenkel_kontorova.toml";
   std::ofstream(file) << kFrenkelKontorova;
-  const auto kernels = lrchain::compile_model_lattice(file);
-  const bool has_energy = kernels->energy_density != nullptr;
-  REQUIRE(has_energy);
-
-  const long n = 12;
-  const double g = 0.5;
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> amplitude(-0.8, 0.8);
-  std::vector<double> u(n), v(n), e(n), a(n), work(std::size_t(kernels->workspace_size(n)));
-  for (long i = 0; i < n; ++i) {
-    u[i] = amplitude(random);
-    v[i] = amplitude(random);
-  }
-  const double parameters[] = {g};
-  const auto energy = [&](const std::vector<double>& x) {
-    kernels->energy_density(parameters, n, LRCHAIN_LATTICE_ENDS_PERIODIC, x.data(), v.data(), e.data(), work.data());
-    double sum = 0;
-    for (double y : e) sum += y;
-    return sum;
-  };
-  // The integrated potential equals the textbook one to round-off.
-  CHECK(std::abs(energy(u) - textbook_energy(u, v, g)) < 1e-13 * textbook_energy(u, v, g));
-
-  // a_n = -dE/du_n (unit masses), by central differences of the emitted energy: O(h^2) = 1e-10.
-  kernels->displacement_accelerations(parameters, n, 1, u.data(), a.data(), work.data());
-  const double h = 1e-5;
-  for (long i = 0; i < n; ++i) {
-    std::vector<double> up = u, down = u;
-    up[i] += h;
-    down[i] -= h;
-    const double gradient = (energy(up) - energy(down)) / (2 * h);
-    CHECK(std::abs(a[i] + gradient) < 1e-8);
-  }
+  // The integrated potential equals the textbook one to round-off; the forces are its gradient.
+  std::vector<double> u, v;
+  random_state(7, 12, u, v);
+  const double g = 0.5, parameters[] = {g};
+  check_potential_and_forces(file, parameters, u, v, textbook_energy(u, v, g), 1e-13, 1e-8);
 }
 
 namespace {
@@ -135,39 +149,10 @@ TEST_CASE("lattice code: exp, cosh, tan (beyond pi/2 too), log, cos and 1/(a + b
   lrchain::test::ScratchCache scratch("lrchain-antiderivative-table");
   const fs::path file = scratch.dir / "antiderivative_table.toml";
   std::ofstream(file) << kTableChain;
-  const auto kernels = lrchain::compile_model_lattice(file);
-  const bool has_energy = kernels->energy_density != nullptr;
-  REQUIRE(has_energy);
-
-  const long n = 10;
-  std::mt19937 random(11);
-  std::uniform_real_distribution<double> amplitude(-0.8, 0.8);
-  std::vector<double> u(n), v(n), e(n), a(n), work(std::size_t(kernels->workspace_size(n)));
-  for (long i = 0; i < n; ++i) {
-    u[i] = amplitude(random);
-    v[i] = amplitude(random);
-  }
+  std::vector<double> u, v;
+  random_state(11, 10, u, v);
   u[3] = 2.0;  // tan's next branch: cos(2) < 0, where -log(cos x) would be NaN
-  const auto energy = [&](const std::vector<double>& x) {
-    kernels->energy_density(nullptr, n, LRCHAIN_LATTICE_ENDS_PERIODIC, x.data(), v.data(), e.data(), work.data());
-    double sum = 0;
-    for (double y : e) sum += y;
-    return sum;
-  };
-  const double expected = table_energy(u, v);
-  REQUIRE(std::isfinite(energy(u)));
-  CHECK(std::abs(energy(u) - expected) < 1e-12 * std::abs(expected));
-
-  // a_n = -dE/du_n by central differences of the emitted energy (O(h^2) = 1e-10 times third derivatives).
-  kernels->displacement_accelerations(nullptr, n, 1, u.data(), a.data(), work.data());
-  const double h = 1e-5;
-  for (long i = 0; i < n; ++i) {
-    INFO("site " << i << " u = " << u[i]);
-    std::vector<double> up = u, down = u;
-    up[i] += h;
-    down[i] -= h;
-    CHECK(std::abs(a[i] + (energy(up) - energy(down)) / (2 * h)) < 1e-7);
-  }
+  check_potential_and_forces(file, nullptr, u, v, table_energy(u, v), 1e-12, 1e-7);
 }
 
 TEST_CASE("lattice code: a force law outside the integrated table, r exp(-r^2), is refused naming what lattice runs integrate" *

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <string>
 #include <doctest/doctest.h>
 
 #include <Eigen/Dense>
@@ -42,6 +43,28 @@ double hopf_onset(double p1, double modulus1, double p2, double modulus2) {
   return (p1 * r2 - p2 * r1) / (r2 - r1);
 }
 
+// The branch step of the bright job on klein_gordon (31 sites, site-centred) from omega_b, with the
+// given coupling C; `adjust` sets the rest (points, ds, a continued parameter).
+template <class Adjust>
+jobs::bright_breather::BrightBreatherConfig klein_gordon_branch(const Model& kg, double omega_b, Adjust adjust) {
+  jobs::bright_breather::BrightBreatherConfig c;
+  c.step = jobs::bright_breather::BrightStep::branch;
+  c.model = &kg;
+  c.kernels = sim::shipped_lattice_kernels("klein_gordon");
+  c.omega_b = omega_b;
+  c.sites = 31;
+  adjust(c);
+  jobs::bright_breather::validate(c);
+  return c;
+}
+
+// The first bifurcation of that kind in r (REQUIREd to exist).
+const BranchBifurcation& first_of_kind(const jobs::bright_breather::BrightBreatherResult& r, const std::string& kind) {
+  const auto it = std::find_if(r.bifurcations.begin(), r.bifurcations.end(),
+                               [&](const BranchBifurcation& b) { return b.kind == kind; });
+  REQUIRE(it != r.bifurcations.end());
+  return *it;
+}
 }  // namespace
 
 TEST_CASE("bright branch: multipliers past exp(+-2 pi i/3) counted, a change flagged as period tripling" * doctest::test_suite("fast")) {
@@ -126,15 +149,7 @@ TEST_CASE("bright job: a klein_gordon breather's multiplier through exp(2 pi i/3
   // re-solved breathers to 1e-6 located it at omega_b = 2.0510924 (measured; error bound 3.2e-7).
   using namespace lrchain::jobs::bright_breather;
   const Model kg = shipped_model("klein_gordon", {{"C", 0.3}});
-  BrightBreatherConfig c;
-  c.step = BrightStep::branch;
-  c.model = &kg;
-  c.kernels = sim::shipped_lattice_kernels("klein_gordon");
-  c.omega_b = 2.05;
-  c.sites = 31;
-  c.points = 2;
-  c.ds = 0.2;
-  validate(c);
+  BrightBreatherConfig c = klein_gordon_branch(kg, 2.05, [](BrightBreatherConfig& x) { x.points = 2, x.ds = 0.2; });
   const BrightBreatherResult r = run(c);
   INFO(failure(r).value_or(""));
   REQUIRE(!failure(r));
@@ -177,22 +192,11 @@ TEST_CASE("bright job: a Krein collision on a klein_gordon branch, located and c
   // it at angle 2.6013 with |lambda| - 1 = 2.6e-5.
   using namespace lrchain::jobs::bright_breather;
   const Model kg = shipped_model("klein_gordon", {{"C", 1.0}});
-  BrightBreatherConfig c;
-  c.step = BrightStep::branch;
-  c.model = &kg;
-  c.kernels = sim::shipped_lattice_kernels("klein_gordon");
-  c.omega_b = 2.7;
-  c.sites = 31;
-  c.points = 4;
-  c.ds = 0.2;
-  validate(c);
+  const BrightBreatherConfig c = klein_gordon_branch(kg, 2.7, [](BrightBreatherConfig& x) { x.points = 4, x.ds = 0.2; });
   const BrightBreatherResult r = run(c);
   INFO(failure(r).value_or(""));
   REQUIRE(!failure(r));
-  const auto it = std::find_if(r.bifurcations.begin(), r.bifurcations.end(),
-                               [](const BranchBifurcation& b) { return b.kind == "krein_collision"; });
-  REQUIRE(it != r.bifurcations.end());
-  const BranchBifurcation& k = *it;
+  const BranchBifurcation& k = first_of_kind(r, "krein_collision");
   REQUIRE(k.located);
   REQUIRE(k.multiplier);
   CHECK(k.location_error <= 0.5e-6);
@@ -238,23 +242,13 @@ TEST_CASE("bright job: the site-centred klein_gordon breather loses stability in
   // (measured), |lambda| - 1 = 2.9e-5 just past it.
   using namespace lrchain::jobs::bright_breather;
   const Model kg = shipped_model("klein_gordon", {{"C", 1.0}});
-  BrightBreatherConfig c;
-  c.step = BrightStep::branch;
-  c.model = &kg;
-  c.kernels = sim::shipped_lattice_kernels("klein_gordon");
-  c.omega_b = 2.7;
-  c.sites = 31;
-  c.parameter = "C";
-  c.to = 0.89;
-  c.points = 30;
-  c.ds = 0.05;
-  validate(c);
+  const BrightBreatherConfig c = klein_gordon_branch(kg, 2.7, [](BrightBreatherConfig& x) {
+    x.parameter = "C", x.to = 0.89, x.points = 30, x.ds = 0.05;
+  });
   const BrightBreatherResult r = run(c);
   INFO(failure(r).value_or(""));
   REQUIRE(!failure(r));
-  const auto it = std::find_if(r.bifurcations.begin(), r.bifurcations.end(),
-                               [](const BranchBifurcation& b) { return b.kind == "krein_collision"; });
-  REQUIRE(it != r.bifurcations.end());
+  const BranchBifurcation* it = &first_of_kind(r, "krein_collision");
   REQUIRE(it->located);
   CHECK(it->location_error <= 0.5e-6);
   CHECK(it->omega_b == doctest::Approx(0.9082722).epsilon(1e-6));  // the record's value of the continued C
