@@ -1,5 +1,8 @@
 // write(WaveResult, out): profile.csv, branch.csv, growth.csv with growth.gp, summary.json, result.h5 (wave_job.hpp).
+#include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -66,16 +69,24 @@ void write_growth(const WaveResult& r, const std::string& dir, jobs::Figures& fi
                 "growth.png"});
 }
 
-// fate.csv (per carrier period: t, deviation, participation, entropy, dark structures), fate_energy.csv (e_n at the end)
-// and fate.gp drawing the three against t with the thresholds of the classification.
+// fate.csv (per carrier period: t, deviation, participation, entropy, dark and bright structures), fate_stages.csv
+// (the dark and bright stages: from, until, count, width, depth; empty fields when none), fate_energy.csv (e_n at
+// the end) and fate.gp drawing the three against t with the thresholds of the classification.
 void write_fate(const WaveResult& r, const std::string& dir, jobs::Figures& figures) {
   const auto& f = *r.fate;
   std::ostringstream os;
-  os << "t,deviation,participation,entropy,dark_structures\n";
+  os << "t,deviation,participation,entropy,dark_structures,bright_structures\n";
   for (std::size_t i = 0; i < f.t.size(); ++i)
-    os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{}\n", f.t[i], f.deviation[i], f.participation[i], f.entropy[i],
-                      f.dark[i]);
+    os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{},{}\n", f.t[i], f.deviation[i], f.participation[i], f.entropy[i],
+                      f.dark[i], f.bright[i]);
   jobs::write_file_atomic(dir, "fate.csv", os.str());
+  const auto field = [](double x) { return std::isfinite(x) ? fmt::format("{:.17g}", x) : std::string(); };
+  std::ostringstream st;
+  st << "structures,from,until,count,width,depth\n";
+  for (const auto& [name, stage] : {std::pair{"dark", f.dark_stage}, std::pair{"bright", f.bright_stage}})
+    st << fmt::format("{},{},{},{},{},{}\n", name, field(stage.from), field(stage.until),
+                      stage.found() ? std::to_string(stage.count) : std::string(), field(stage.width), field(stage.depth));
+  jobs::write_file_atomic(dir, "fate_stages.csv", st.str());
   std::ostringstream e;
   e << "n,energy_density\n";
   for (std::size_t n = 0; n < f.energy_density.size(); ++n) e << fmt::format("{},{:.17g}\n", n, f.energy_density[n]);
