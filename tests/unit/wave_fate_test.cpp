@@ -95,7 +95,8 @@ TEST_CASE("wave fate: a calm wave stays, an unstable one breaks up when the ring
   CHECK_FALSE(drifted.fate);
 
   // --noise 0 --modulation b: the ring starts from the exact wave times 1 + b cos(2 pi n / N) (the paper's
-  // eq:cimi seed), so its first deviation is b |U_0(0)| / A at n = 0, b to the wave's harmonics (A = 0.03:
+  // eq:cimi seed), so its first deviation (fput: of the strains) is b times the wave's strain at bond 0
+  // over 2 A sin(theta / 2), b to the wave's harmonics and the envelope's change over one bond (A = 0.03:
   // within 1 %); without either it is the wave itself, to round-off. No noise: no predicted breakup.
   WaveConfig seeded = fate_of(fput, 0.5, 0.03);
   seeded.periods = 1;

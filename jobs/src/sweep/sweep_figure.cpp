@@ -215,7 +215,7 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
                     *std::max_element(xhi.begin(), xhi.end()), *std::min_element(ylo.begin(), ylo.end()),
                     *std::max_element(yhi.begin(), yhi.end()))
      << "set title '" << gnuplot_text(c.name) << (categorical ? ": fate; + NLS focusing, x exact growth, o dark stage" : ": log10(" + value + ")")
-     << (ends.empty() ? "" : "; dashed: focusing interval ends") << "; blank: no value'\n";
+     << (ends.empty() ? "" : "; dashed: focusing interval ends") << "; blank: no value'" << (categorical ? " font ',10'" : "") << "\n";
   for (double b : ends)
     gp << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dashtype 2 linewidth 2 front\n", b);
   gp << "plot " << gnuplot_file_name(stem + ".dat")
