@@ -1,9 +1,9 @@
 // write(WaveResult, out): profile.csv, branch.csv, growth.csv with growth.gp, summary.json, result.h5 (wave_job.hpp).
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <utility>
-#include <sstream>
 
 #include <fmt/format.h>
 
