@@ -96,7 +96,7 @@ void write_fate(const WaveResult& r, const std::string& dir, jobs::Figures& figu
                 fmt::format("if (!exists(\"outfile\")) outfile = 'fate.png'\n"
                             "set terminal pngcairo size 1000,900\nset output outfile\nset datafile separator ','\n"
                             "set multiplot layout 2,1 title '{} {} wave, θ = {:.6g}, A = {:.6g} on {} sites: {}'\n"
-                            "set xlabel 'time'\nset ylabel 'max_n |u_n - U| / A'\nset logscale y\nset key top left\n"
+                            "set xlabel 'time'\nset ylabel '{}'\nset logscale y\nset key top left\n"
                             "plot 'fate.csv' skip 1 u 1:2 w l lw 2 t 'deviation from the exact wave', {} w l dt 2 t "
                             "'broken ({})'\n"
                             "unset logscale y\nset ylabel 'participation P, entropy S'\nset yrange [0:1.05]\n"
@@ -105,7 +105,10 @@ void write_fate(const WaveResult& r, const std::string& dir, jobs::Figures& figu
                             "{} w l dt 3 t 'disordered above ({})', "
                             "'' skip 1 u 1:($5 / 10) w steps lc rgb '#606060' t 'dark structures / 10'\nunset multiplot\n",
                             literal(r.config.model->name()), literal(r.branch), r.theta, r.config.amplitude,
-                            r.config.ring_sites, sim::wave::to_string(f.fate), sim::wave::kBrokenDeviation,
+                            r.config.ring_sites, sim::wave::to_string(f.fate),
+                            // the deviation's measure (wave_fate.hpp): strains of a translation-invariant model
+                            f.strain_deviation ? "max_n |Δu_n - ΔU_n| / (2 A sin(θ/2))" : "max_n |u_n - U_n| / A",
+                            sim::wave::kBrokenDeviation,
                             sim::wave::kBrokenDeviation, sim::wave::kLocalizedParticipation,
                             sim::wave::kLocalizedParticipation, sim::wave::kDisorderedEntropy,
                             sim::wave::kDisorderedEntropy),
