@@ -155,7 +155,7 @@ def _wave(d):
     f = d.get("fate")
     if f is not None:
         f = dict(f)
-        for key in ("t", "deviation", "participation", "entropy", "dark", "energy_density"):
+        for key in ("t", "deviation", "participation", "entropy", "dark", "bright", "energy_density"):
             f[key] = np.array(f[key])
     return TravellingWave(theta=d["theta"], amplitude=w["amplitude"], omega=w["omega"], omega_linear=d["linear"]["omega"],
                           harmonics=w["harmonics"], tail=w["tail"], residual=w["residual"],
@@ -252,10 +252,13 @@ def fate(model=None, branch=None, theta=None, amplitude=None, ramp=_D["ramp"], h
     """What the wave becomes (``lrchain wave fate``): :func:`stability` at the ring's nearest wavenumber
     2 pi j / ``ring_sites``, then the wave plus noise (and its ``modulation``) on that ring; returns :class:`TravellingWave` with
     ``fate`` set: the ``fate`` (stable, intact, modulated, localized or disordered), ``broke_at`` and the
-    ``predicted_breakup``, numpy series ``t``, ``deviation``, ``participation``, ``entropy``, ``dark`` (dark
-    structures counted; one per carrier period) and the final ``energy_density``; ``localized_kind``,
-    ``bright_structures``, ``dark_structures``, ``dark_end`` (centre, width, depth), ``dark_frequency``,
-    ``bright_frequency`` and the branch's linear ``band`` (docs/waves.md, "The fate of a wave"). Ctrl-C stops the ring
+    ``predicted_breakup``, numpy series ``t``, ``deviation`` (of the strains for a translation-invariant model:
+    ``deviation_of``), ``participation``, ``entropy``, ``dark`` and ``bright`` (structures counted; one per carrier
+    period) and the final ``energy_density``; ``localized_kind``, ``bright_structures``, ``dark_structures``,
+    ``dark_end`` (centre, width, depth), the stages ``dark_from``, ``dark_until``, ``dark_stage_count``,
+    ``dark_stage_width``, ``dark_stage_depth``, ``bright_from``, ``bright_until``, ``bright_stage_count`` (None
+    when none), ``dark_frequency``, ``bright_frequency`` and the branch's linear ``band`` (docs/waves.md, "The fate
+    of a wave"). Ctrl-C stops the ring
     run at its next period with ``KeyboardInterrupt``.
 
     Example::

@@ -150,25 +150,27 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
   const std::string stem = c.output.stem().string() + "_" + scalar;
   const std::filesystem::path dir = output_directory(c);
   // A "wave fate" sweep's fate is a category (0 stable .. 4 disordered), drawn in its own colour, with
-  // the points the NLS calls focusing (+) and those whose exact wave has growth (x) marked.
+  // the points the NLS calls focusing (+), those whose exact wave has growth (x) and those that passed
+  // through a dark stage (o, dark_from has a value) marked.
   const bool categorical = c.job == "wave fate" && scalar == "fate";
   const auto column = [&](const std::string& name) {
     const auto at = std::find(r.scalar_names.begin(), r.scalar_names.end(), name);
     return at == r.scalar_names.end() ? std::size_t(0) : std::size_t(at - r.scalar_names.begin());
   };
-  const std::size_t focusing = column("focusing"), stable = column("stable");
+  const std::size_t focusing = column("focusing"), stable = column("stable"), dark_from = column("dark_from");
 
   std::ostringstream data;
   data << "# " << x.parameter << ' ' << (y_negative ? "-" : "") << y.parameter
-       << (categorical ? " fate focusing stable" : " log10(" + scalar + ")") << "\n";
+       << (categorical ? " fate focusing stable dark_stage" : " log10(" + scalar + ")") << "\n";
   for (std::size_t i = 0; i < x.values.size(); ++i) {
     for (std::size_t j = 0; j < y.values.size(); ++j) {
       const std::size_t point = i * y.values.size() + j;
       const double v = r.scalars[s * r.points + point];
       if (categorical)
-        data << fmt::format("{} {} {} {} {}\n", x.values[i], y_negative ? -y.values[j] : y.values[j],
+        data << fmt::format("{} {} {} {} {} {}\n", x.values[i], y_negative ? -y.values[j] : y.values[j],
                             std::isfinite(v) ? fmt::format("{}", v) : "NaN", r.scalars[focusing * r.points + point],
-                            r.scalars[stable * r.points + point]);
+                            r.scalars[stable * r.points + point],
+                            std::isfinite(r.scalars[dark_from * r.points + point]) ? 1 : 0);
       else
         data << fmt::format("{} {} {}\n", x.values[i], y_negative ? -y.values[j] : y.values[j],
                             v > 0 && std::isfinite(v) ? fmt::format("{}", std::log10(v)) : std::string("NaN"));
@@ -212,15 +214,16 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
      << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", *std::min_element(xlo.begin(), xlo.end()),
                     *std::max_element(xhi.begin(), xhi.end()), *std::min_element(ylo.begin(), ylo.end()),
                     *std::max_element(yhi.begin(), yhi.end()))
-     << "set title '" << gnuplot_text(c.name) << (categorical ? ": fate; + NLS focusing, x exact growth" : ": log10(" + value + ")")
-     << (ends.empty() ? "" : "; dashed: focusing interval ends") << "; blank: no value'\n";
+     << "set title '" << gnuplot_text(c.name) << (categorical ? ": fate; + NLS focusing, x exact growth, o dark stage" : ": log10(" + value + ")")
+     << (ends.empty() ? "" : "; dashed: focusing interval ends") << "; blank: no value'" << (categorical ? " font ',10'" : "") << "\n";
   for (double b : ends)
     gp << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dashtype 2 linewidth 2 front\n", b);
   gp << "plot " << gnuplot_file_name(stem + ".dat")
      << " using 1:2:(xlo[column(-1)+1]):(xhi[column(-1)+1]):(ylo[int(column(0))%ny+1]):(yhi[int(column(0))%ny+1]):3 "
         "with boxxyerror fillstyle solid 1.0 noborder fillcolor palette notitle"
      << (categorical ? ", '' using 1:($4 > 0 ? $2 : NaN) with points pointtype 1 pointsize 1.5 lc rgb 'black' notitle, "
-                       "'' using 1:($5 < 1 ? $2 : NaN) with points pointtype 2 pointsize 1.5 lc rgb 'black' notitle"
+                       "'' using 1:($5 < 1 ? $2 : NaN) with points pointtype 2 pointsize 1.5 lc rgb 'black' notitle, "
+                       "'' using 1:($6 > 0 ? $2 : NaN) with points pointtype 6 pointsize 3 lw 2 lc rgb 'black' notitle"
                      : "")
      << "\n";
   std::vector<FigureScript> figures{{stem + ".gp", gp.str(), stem + ".png"}};

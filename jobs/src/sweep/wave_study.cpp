@@ -82,7 +82,9 @@ std::vector<std::string> wave_scalar_names(std::string_view kind) {
   if (kind == "wave fate")
     n.insert(n.end(), {"fate", "broke_at", "predicted_breakup", "participation_end", "entropy_end",
                        "localized_kind", "bright_structures", "dark_structures", "dark_seen_fraction", "dark_width",
-                       "dark_depth", "dark_frequency", "bright_frequency", "band_low", "band_high", "ring_theta"});
+                       "dark_depth", "dark_frequency", "bright_frequency", "band_low", "band_high", "ring_theta",
+                       "dark_from", "dark_until", "dark_stage_count", "dark_stage_width", "dark_stage_depth",
+                       "bright_from", "bright_until", "bright_stage_count"});
   return n;
 }
 
@@ -155,7 +157,12 @@ JobResult run_wave(std::string_view kind, const Document& doc, const CheckedTabl
                                        dark.empty() ? no_value : dark.front().width,
                                        dark.empty() ? no_value : dark.front().depth,
                                        number(f.at("dark_frequency")), number(f.at("bright_frequency")),
-                                       w.band[0], w.band[1], w.theta});
+                                       w.band[0], w.band[1], w.theta,
+                                       // the stages (no value when none)
+                                       number(f.at("dark_from")), number(f.at("dark_until")),
+                                       number(f.at("dark_stage_count")), number(f.at("dark_stage_width")),
+                                       number(f.at("dark_stage_depth")), number(f.at("bright_from")),
+                                       number(f.at("bright_until")), number(f.at("bright_stage_count"))});
   }
   for (const auto& b : w.stability->bands) r.rows.insert(r.rows.end(), {b.k_from, b.k_to, b.largest_rate, b.at_k});
   r.status = PointStatus::ok;

@@ -59,7 +59,7 @@ void write_wave_hdf5(const std::filesystem::path& path, const json& s) {
   if (s.contains("fate") && s["fate"].is_object()) {  // the ring run: one sample per carrier period
     const json& f = s["fate"];
     file.write_attribute("/", "fate", f.at("fate").get<std::string>());
-    for (const char* key : {"t", "deviation", "participation", "entropy", "dark", "energy_density"})
+    for (const char* key : {"t", "deviation", "participation", "entropy", "dark", "bright", "energy_density"})
       write_vector(file, std::string("/fate_") + key, f.at(key).get<std::vector<double>>());
   }
   file.create_group("/summary");

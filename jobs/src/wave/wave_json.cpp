@@ -129,6 +129,17 @@ json to_json(const WaveResult& r) {
                  {"dark_structures", f.dark_structures},
                  {"dark_seen_fraction", f.broke_at < 0 ? json(nullptr) : json(f.dark_seen_fraction)},
                  {"dark_end", dark_end},
+                 // the stages: first and last time of structures held in most of a kStagePeriods-sample window
+                 {"deviation_of", f.strain_deviation ? "strain" : "displacement"},
+                 {"stage_window", sim::wave::kStagePeriods},
+                 {"dark_from", number_or_null(f.dark_stage.from)},
+                 {"dark_until", number_or_null(f.dark_stage.until)},
+                 {"dark_stage_count", f.dark_stage.found() ? json(f.dark_stage.count) : json(nullptr)},
+                 {"dark_stage_width", number_or_null(f.dark_stage.width)},
+                 {"dark_stage_depth", number_or_null(f.dark_stage.depth)},
+                 {"bright_from", number_or_null(f.bright_stage.from)},
+                 {"bright_until", number_or_null(f.bright_stage.until)},
+                 {"bright_stage_count", f.bright_stage.found() ? json(f.bright_stage.count) : json(nullptr)},
                  {"dark_background_spread", number_or_null(f.dark_background_spread)},
                  {"envelope_window", f.envelope_window},
                  {"dark_frequency", number_or_null(f.dark_frequency)},
@@ -149,6 +160,7 @@ json to_json(const WaveResult& r) {
                  {"participation", f.participation},
                  {"entropy", f.entropy},
                  {"dark", f.dark},
+                 {"bright", f.bright},
                  {"energy_density", f.energy_density}};
   }
   if (c.step == WaveStep::standing) j["standing"] = standing_json(r);

@@ -1,6 +1,9 @@
 // write(WaveResult, out): profile.csv, branch.csv, growth.csv with growth.gp, summary.json, result.h5 (wave_job.hpp).
+#include <cmath>
 #include <numbers>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -66,16 +69,24 @@ void write_growth(const WaveResult& r, const std::string& dir, jobs::Figures& fi
                 "growth.png"});
 }
 
-// fate.csv (per carrier period: t, deviation, participation, entropy, dark structures), fate_energy.csv (e_n at the end)
-// and fate.gp drawing the three against t with the thresholds of the classification.
+// fate.csv (per carrier period: t, deviation, participation, entropy, dark and bright structures), fate_stages.csv
+// (the dark and bright stages: from, until, count, width, depth; empty fields when none), fate_energy.csv (e_n at
+// the end) and fate.gp drawing the three against t with the thresholds of the classification.
 void write_fate(const WaveResult& r, const std::string& dir, jobs::Figures& figures) {
   const auto& f = *r.fate;
   std::ostringstream os;
-  os << "t,deviation,participation,entropy,dark_structures\n";
+  os << "t,deviation,participation,entropy,dark_structures,bright_structures\n";
   for (std::size_t i = 0; i < f.t.size(); ++i)
-    os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{}\n", f.t[i], f.deviation[i], f.participation[i], f.entropy[i],
-                      f.dark[i]);
+    os << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{},{}\n", f.t[i], f.deviation[i], f.participation[i], f.entropy[i],
+                      f.dark[i], f.bright[i]);
   jobs::write_file_atomic(dir, "fate.csv", os.str());
+  const auto field = [](double x) { return std::isfinite(x) ? fmt::format("{:.17g}", x) : std::string(); };
+  std::ostringstream st;
+  st << "structures,from,until,count,width,depth\n";
+  for (const auto& [name, stage] : {std::pair{"dark", f.dark_stage}, std::pair{"bright", f.bright_stage}})
+    st << fmt::format("{},{},{},{},{},{}\n", name, field(stage.from), field(stage.until),
+                      stage.found() ? std::to_string(stage.count) : std::string(), field(stage.width), field(stage.depth));
+  jobs::write_file_atomic(dir, "fate_stages.csv", st.str());
   std::ostringstream e;
   e << "n,energy_density\n";
   for (std::size_t n = 0; n < f.energy_density.size(); ++n) e << fmt::format("{},{:.17g}\n", n, f.energy_density[n]);
@@ -85,7 +96,7 @@ void write_fate(const WaveResult& r, const std::string& dir, jobs::Figures& figu
                 fmt::format("if (!exists(\"outfile\")) outfile = 'fate.png'\n"
                             "set terminal pngcairo size 1000,900\nset output outfile\nset datafile separator ','\n"
                             "set multiplot layout 2,1 title '{} {} wave, θ = {:.6g}, A = {:.6g} on {} sites: {}'\n"
-                            "set xlabel 'time'\nset ylabel 'max_n |u_n - U| / A'\nset logscale y\nset key top left\n"
+                            "set xlabel 'time'\nset ylabel '{}'\nset logscale y\nset key top left\n"
                             "plot 'fate.csv' skip 1 u 1:2 w l lw 2 t 'deviation from the exact wave', {} w l dt 2 t "
                             "'broken ({})'\n"
                             "unset logscale y\nset ylabel 'participation P, entropy S'\nset yrange [0:1.05]\n"
@@ -94,7 +105,10 @@ void write_fate(const WaveResult& r, const std::string& dir, jobs::Figures& figu
                             "{} w l dt 3 t 'disordered above ({})', "
                             "'' skip 1 u 1:($5 / 10) w steps lc rgb '#606060' t 'dark structures / 10'\nunset multiplot\n",
                             literal(r.config.model->name()), literal(r.branch), r.theta, r.config.amplitude,
-                            r.config.ring_sites, sim::wave::to_string(f.fate), sim::wave::kBrokenDeviation,
+                            r.config.ring_sites, sim::wave::to_string(f.fate),
+                            // the deviation's measure (wave_fate.hpp): strains of a translation-invariant model
+                            f.strain_deviation ? "max_n |Δu_n - ΔU_n| / (2 A sin(θ/2))" : "max_n |u_n - U_n| / A",
+                            sim::wave::kBrokenDeviation,
                             sim::wave::kBrokenDeviation, sim::wave::kLocalizedParticipation,
                             sim::wave::kLocalizedParticipation, sim::wave::kDisorderedEntropy,
                             sim::wave::kDisorderedEntropy),

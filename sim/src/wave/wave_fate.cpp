@@ -149,8 +149,13 @@ WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vect
   opt.dt = period / double(o.steps_per_period);
 
   WaveFateResult r;
-  for (auto* series : {&r.t, &r.deviation, &r.participation, &r.entropy, &r.dark}) series->reserve(std::size_t(periods + 1));
-  std::vector<double> e(static_cast<std::size_t>(n));
+  for (auto* series : {&r.t, &r.deviation, &r.participation, &r.entropy, &r.dark, &r.dark_width, &r.dark_depth, &r.bright})
+    series->reserve(std::size_t(periods + 1));
+  std::vector<double> e(static_cast<std::size_t>(n)), exact(static_cast<std::size_t>(n));
+  // A translation-invariant model's energy depends on differences only: its departure is that of the
+  // strains, relative to the fundamental's strain amplitude 2 A |sin(theta / 2)| (theta != 0 on the ring).
+  r.strain_deviation = wave.translation_invariant && std::abs(std::sin(wave.theta / 2)) > 1e-12;
+  const double scale = wave.amplitude * (r.strain_deviation ? 2 * std::abs(std::sin(wave.theta / 2)) : 1.0);
   SpatialSpectrum spectrum(n);
   r.envelope_window = envelope_window(wave.theta);
   DarkStructureScan dark(n, r.envelope_window);
@@ -166,14 +171,25 @@ WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vect
     for (Index i = 0; i < n; ++i) {
       double u, du;
       profile_at(harmonics[0], wave.theta * double(i) - wave.omega * t, u, du);
-      deviation = std::max(deviation, std::abs(x[std::size_t(i)] - u) / wave.amplitude);
+      exact[std::size_t(i)] = u;
+    }
+    for (Index i = 0; i < n; ++i) {  // the displacement's departure, or (translation-invariant) the strain's
+      const std::size_t j = std::size_t((i + 1) % n);
+      const double d = r.strain_deviation ? (x[j] - x[std::size_t(i)]) - (exact[j] - exact[std::size_t(i)])
+                                          : x[std::size_t(i)] - exact[std::size_t(i)];
+      deviation = std::max(deviation, std::abs(d) / scale);
     }
     ring.energy_density(x.data(), x.data() + ring.positions(), e.data());
     r.t.push_back(t);
     r.deviation.push_back(deviation);
-    r.participation.push_back(participation(e));
+    const double p = participation(e);
+    r.participation.push_back(p);
     r.entropy.push_back(spectrum.entropy(x.data()));
-    r.dark.push_back(double(dark.scan(e.data())));
+    const Index count = dark.scan(e.data());
+    r.dark.push_back(double(count));
+    r.dark_width.push_back(count > 0 ? dark.structures().front().width : NAN);
+    r.dark_depth.push_back(count > 0 ? dark.structures().front().depth : NAN);
+    r.bright.push_back(p < kLocalizedParticipation ? double(std::max<Index>(1, count_peaks(e))) : 0.0);
     if (r.broke_at < 0 && deviation > kBrokenDeviation) r.broke_at = t;
     r.max_relative_energy_drift = std::max(r.max_relative_energy_drift, std::abs(ring.energy(x) - e0) / std::abs(e0));
     return true;
@@ -200,6 +216,20 @@ WaveFateResult wave_fate(const lrchain_lattice_kernels& kernels, const std::vect
   for (std::size_t i = 0; i < samples; ++i)
     if (r.broke_at >= 0 && r.t[i] >= r.broke_at) ++after, seen += r.dark[i] > 0;
   r.dark_seen_fraction = after > 0 ? double(seen) / double(after) : 0.0;
+  r.bright_stage = structure_stage(r.t, r.bright, kStagePeriods);
+  r.dark_stage = structure_stage(r.t, r.dark, kStagePeriods);
+  if (r.dark_stage.found()) {  // the deepest structure's width and depth over the stage's samples holding one
+    std::vector<double> widths, depths;
+    for (std::size_t i = 0; i < samples; ++i)
+      if (r.t[i] >= r.dark_stage.from && r.t[i] <= r.dark_stage.until && r.dark[i] > 0)
+        widths.push_back(r.dark_width[i]), depths.push_back(r.dark_depth[i]);
+    const auto median = [](std::vector<double>& v) {
+      std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+      return v[v.size() / 2];
+    };
+    r.dark_stage.width = median(widths);
+    r.dark_stage.depth = median(depths);
+  }
   dark.scan(e.data());  // the end state's structures (the last sample's scan)
   r.dark_end = dark.structures();
   r.dark_background_spread = dark.background_spread();

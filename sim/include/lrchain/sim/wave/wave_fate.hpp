@@ -3,7 +3,10 @@
 // omega t) on a ring of N sites (theta = 2 pi j / N), plus noise of a given size on every field's
 // displacements, integrated well past the growth of its instability (srkn11b, symplectic), and
 // classified by three measured quantities sampled once per carrier period:
-//   deviation      max_n |u_0[n](t) - U_0(theta n - omega t)| / A: the departure from the exact wave;
+//   deviation      the departure from the exact wave: max_n |u_0[n](t) - U_0(theta n - omega t)| / A, and for a
+//                  translation-invariant model that of the strains, max_n |du_0[n] - dU_0[n]| / (2 A |sin(theta/2)|)
+//                  with du[n] = u[n+1] - u[n] (a uniform or long-wave displacement, the mean flow a modulated
+//                  wave drives, costs no energy there and leaves the wave itself unchanged);
 //   participation  P = (sum_n e_n)^2 / (N sum_n e_n^2) of the energy density |e_n|: 1 for a uniform
 //                  wave, about w/N for energy held in w sites;
 //   entropy        S = -sum_j p_j log p_j / log N of the spatial spectrum p_j = |u^_0(j)|^2 / sum
@@ -16,6 +19,9 @@
 // up within the run: run longer); otherwise localized when P < kLocalizedParticipation (bright) or the
 // median dark count is at least 1 (dark; both when both), disordered when S > kDisorderedEntropy, and
 // else modulated (energy spread over the ring in a few modes).
+// Stages (structure_stage): the dark structures' and the bright localization's (P < kLocalizedParticipation,
+// counted by peaks) first and last time in a sliding window of kStagePeriods samples that holds them in
+// most of its samples: a transient dark stage that the last tenth no longer shows.
 // Thresholds: site energies of a thermalised ring are exponentially distributed (Gibbs), which gives
 // P = E[e]^2 / E[e^2] = 1/2, and a wave under a sinusoidal envelope P = 2/3; energy held in fewer
 // sites than half the thermal value, P < 1/4, is localized.
@@ -42,11 +48,27 @@ inline constexpr double kMaxEnergyDrift = 1e-6;          // relative energy drif
 inline constexpr double kDisorderedEntropy = 0.5;        // spectrum spread over a power N^0.5 of modes
 inline constexpr Index kFrequencyPeriods = 8;            // carrier periods at the end the frequencies come from
 inline constexpr Index kSamplesPerPeriod = 8;            // velocity samples per carrier period there
+inline constexpr Index kStagePeriods = 100;              // samples (carrier periods) of a stage's sliding window
 
 enum class WaveFate { stable, intact, modulated, localized, disordered };
 std::string_view to_string(WaveFate f);
 enum class LocalizedKind { none, bright, dark, both };  // what a localized fate holds
 std::string_view to_string(LocalizedKind k);
+
+// A stage of localized structures in a series of counts (one sample a carrier period): a window of
+// `window` consecutive samples holds them when more than half of its samples count at least one; the
+// stage runs from the first sample with a structure in the first such window to the last in the last one
+// (gaps between held windows included). NaN times and count 0 when no window holds them.
+struct StructureStage {
+  double from = NAN, until = NAN;  // times of its first and last sample with a structure
+  Index count = 0;                 // the largest median count of a held window
+  double width = NAN, depth = NAN; // dark: medians of the deepest structure's width and depth over the stage's samples holding one
+  bool found() const { return std::isfinite(from); }
+};
+
+// The stage of `count` at times `t` with windows of min(window, samples) samples (above); width and depth
+// are left NaN.
+StructureStage structure_stage(const std::vector<double>& t, const std::vector<double>& count, Index window);
 
 struct WaveFateOptions {
   Index ring_sites = 256;          // N, with theta = 2 pi j / N for an integer j
@@ -64,6 +86,10 @@ struct WaveFateResult {
   double broke_at = -1;                // first t with deviation > kBrokenDeviation (-1: never)
   double participation_end = 0, entropy_end = 0;  // means over the last tenth of the samples
   std::vector<double> dark;            // dark structures counted at each sample
+  std::vector<double> dark_width, dark_depth;  // the deepest one's width and depth at each sample (NaN: none)
+  std::vector<double> bright;          // bright structures at each sample: peaks of e_n (at least 1) when P < kLocalizedParticipation, else 0
+  StructureStage dark_stage, bright_stage;  // the stages of the two series (structure_stage, kStagePeriods)
+  bool strain_deviation = false;       // the deviation compares strains (a translation-invariant model)
   Index bright_structures = 0;         // peaks of e_n at the end above 4 x its mean, 3 sites apart
   Index dark_structures = 0;           // the median dark count over the last tenth of the samples
   double dark_seen_fraction = 0;       // share of the samples after the breakup with a dark structure
