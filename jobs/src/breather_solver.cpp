@@ -21,6 +21,56 @@ bool use_krylov(const BreatherSolverOptions& o, Index sites) {
   return o.solver == "krylov" || (o.solver == "auto" && sites > o.krylov_sites);
 }
 
+namespace {
+
+nlohmann::json complex_json(std::complex<double> l) {
+  return {{"re", l.real()}, {"im", l.imag()}, {"modulus", std::abs(l)}};
+}
+
+// The windowed multipliers: certified ones with their value, the others null with the reason.
+nlohmann::json to_json(const sim::bright::WindowedFloquet& w, double seconds) {
+  nlohmann::json j;
+  j["method"] = "core window, dense monodromy; residual on the full lattice";
+  j["center"] = w.center;
+  j["window_sites"] = w.sites;
+  j["check_window_sites"] = w.check_sites;
+  j["sites"] = w.full_sites;
+  nlohmann::json values = nlohmann::json::array();
+  for (const auto& m : w.localized) {
+    nlohmann::json v = m.certified ? complex_json(m.lambda)
+                                   : nlohmann::json{{"re", nullptr}, {"im", nullptr}, {"modulus", nullptr}};
+    v["window_value"] = complex_json(m.lambda);
+    v["window_difference"] = m.window_difference;
+    v["residual"] = m.residual ? nlohmann::json(*m.residual) : nlohmann::json(nullptr);
+    v["certified"] = m.certified;
+    v["reason"] = m.certified ? nlohmann::json(nullptr) : nlohmann::json(m.reason);
+    values.push_back(v);
+  }
+  j["multipliers"] = values;
+  j["localized_found"] = w.localized_found;
+  nlohmann::json trivial = nlohmann::json::array();
+  for (const auto& l : w.trivial) trivial.push_back(complex_json(l));
+  j["trivial"] = trivial;
+  j["max_extended_modulus"] = w.max_extended_modulus;
+  j["extended"] = "the phonon band of the linear lattice at rest: on the unit circle";
+  if (w.verdict) {
+    j["stable"] = w.verdict->kind() == "stable";
+    j["kind"] = w.verdict->kind();
+    j["reason"] = nullptr;
+  } else {
+    j["stable"] = nullptr;
+    j["kind"] = nullptr;
+    j["reason"] = w.verdict_reason;
+  }
+  j["products"] = w.products;
+  j["window_seconds"] = w.window_seconds;
+  j["certify_seconds"] = w.certify_seconds;
+  j["seconds"] = seconds;
+  return j;
+}
+
+}  // namespace
+
 nlohmann::json to_json(const KrylovRecord& r) {
   nlohmann::json j;
   j["gmres_iterations"] = r.newton.gmres_iterations;
@@ -31,7 +81,7 @@ nlohmann::json to_json(const KrylovRecord& r) {
   if (r.floquet) {
     nlohmann::json f;
     nlohmann::json values = nlohmann::json::array();
-    for (const auto& l : r.floquet->multipliers) values.push_back({{"re", l.real()}, {"im", l.imag()}, {"modulus", std::abs(l)}});
+    for (const auto& l : r.floquet->multipliers) values.push_back(complex_json(l));
     f["multipliers"] = values;
     f["requested"] = r.floquet->requested;
     f["converged"] = r.floquet->converged;
@@ -40,6 +90,7 @@ nlohmann::json to_json(const KrylovRecord& r) {
     f["seconds"] = r.floquet_seconds;
     j["leading_floquet"] = f;
   }
+  if (r.windowed) j["windowed_floquet"] = to_json(*r.windowed, r.floquet_seconds);
   return j;
 }
 
@@ -63,6 +114,17 @@ void krylov_floquet(const sim::dark::DarkShooting& shooting, const Eigen::Vector
   sim::dark::KrylovFloquetOptions f;
   f.count = o.floquet_count;
   record.floquet = sim::dark::leading_multipliers(shooting, z0, omega_b, f);
+  record.floquet_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void windowed_floquet(const sim::dark::DarkShooting& shooting, const sim::bright::WindowLattice& lattice,
+                      const Eigen::VectorXd& z0, double omega_b, const BreatherSolverOptions& o, double unit_tolerance,
+                      KrylovRecord& record) {
+  const auto start = std::chrono::steady_clock::now();
+  sim::bright::WindowedFloquetOptions w;
+  w.count = o.floquet_count;
+  w.unit_tolerance = unit_tolerance;
+  record.windowed = sim::bright::windowed_floquet(shooting, lattice, z0, omega_b, w);
   record.floquet_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

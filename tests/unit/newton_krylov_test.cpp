@@ -1,6 +1,7 @@
 // The matrix-free path of the exact-breather jobs (lrchain/jobs/breather_solver.hpp: Newton-Krylov,
-// sim/dark/newton_krylov.hpp; Arnoldi Floquet, sim/dark/krylov_floquet.hpp) against the dense path on
-// lattices where both run: the same breather to 1e-10 and the leading multipliers among the dense
+// sim/dark/newton_krylov.hpp; Arnoldi Floquet, sim/dark/krylov_floquet.hpp, for dark breathers; the
+// windowed, certified Floquet of sim/bright/windowed_floquet.hpp for bright ones) against the dense
+// path on lattices where both run: the same breather to 1e-10 and the multipliers among the dense
 // monodromy's eigenvalues to 1e-8, for bright and dark breathers, on-site and strain-form models.
 #include <doctest/doctest.h>
 
@@ -37,6 +38,14 @@ double distance_to_dense(const std::vector<std::complex<double>>& leading, const
     worst = std::max(worst, nearest);
   }
   return worst;
+}
+
+// The certified multipliers of a windowed Floquet result.
+std::vector<std::complex<double>> certified_multipliers(const sim::bright::WindowedFloquet& w) {
+  std::vector<std::complex<double>> values;
+  for (const auto& m : w.localized)
+    if (m.certified) values.push_back(m.lambda);
+  return values;
 }
 
 // The bright job on `name` run dense and matrix-free; `step` solve or floquet.
@@ -78,11 +87,15 @@ TEST_CASE("newton-krylov: a klein_gordon bright breather as the dense Newton's, 
   CHECK(relative_difference(p.dense.z0, p.krylov.z0) <= 1e-10);
   // GMRES on the band-probed preconditioner: a few iterations per Newton step.
   for (Index it : p.krylov.krylov->newton.gmres_iterations) CHECK(it <= 10);
-  REQUIRE(p.krylov.krylov->floquet);
-  const auto& leading = p.krylov.krylov->floquet->multipliers;
-  CHECK(leading.size() >= 6);  // the converged ones of 12 asked
+  REQUIRE(p.krylov.krylov->windowed);
+  const auto& w = *p.krylov.krylov->windowed;
+  REQUIRE(w.localized.size() == 12);  // the 12 asked, all certified (residual <= 1e-8)
+  for (const auto& m : w.localized) CHECK(m.certified);
+  REQUIRE(w.verdict);
+  CHECK(w.verdict->kind() == "stable");
   REQUIRE(p.dense.floquet);
-  CHECK(distance_to_dense(leading, p.dense.floquet->multipliers.multipliers) <= 1e-8);
+  CHECK(p.dense.floquet->stable);
+  CHECK(distance_to_dense(certified_multipliers(w), p.dense.floquet->multipliers.multipliers) <= 1e-8);
 }
 
 TEST_CASE("newton-krylov: an unstable FPU breather's largest multiplier as the dense one" * doctest::test_suite("fast")) {
@@ -90,12 +103,17 @@ TEST_CASE("newton-krylov: an unstable FPU breather's largest multiplier as the d
   // unstable (bright_breather_job_test.cpp); a strain-form model (the C_x row replaces row 0).
   const BrightPair p = bright_pair("fput", {{"a", 0.0}}, 2.2, 101, "site", jobs::bright_breather::BrightStep::floquet);
   CHECK(relative_difference(p.dense.z0, p.krylov.z0) <= 1e-10);
-  REQUIRE(p.krylov.krylov->floquet);
-  const auto& leading = p.krylov.krylov->floquet->multipliers;
+  REQUIRE(p.krylov.krylov->windowed);
+  const auto leading = certified_multipliers(*p.krylov.krylov->windowed);
   REQUIRE(!leading.empty());
+  REQUIRE(p.krylov.krylov->windowed->verdict);
+  CHECK(p.krylov.krylov->windowed->verdict->kind() == "real");
   const auto& all = p.dense.floquet->multipliers.multipliers;  // |lambda| descending
   CHECK(all.front().real() > 1.0 + 1e-3);
   CHECK(std::abs(leading.front() - all.front()) <= 1e-8 * std::abs(all.front()));
+  // Sandusky, Page & Schmidt, PRB 46, 6161 (1992): 1.02824 (docs/bright-breathers.md)
+  CHECK(leading.front().real() == doctest::Approx(1.02824).epsilon(1e-5));
+  CHECK(p.krylov.krylov->windowed->sites < 101);  // a window, not the whole ring
   CHECK(distance_to_dense(leading, all) <= 1e-8);
 }
 

@@ -282,7 +282,8 @@ BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHook
     r.seed_difference = relative_profile_difference(r.z0, r.seed);
     r.rejected = r.profile.reason;
     if (r.rejected.empty() && c.step == BrightStep::floquet && r.krylov)
-      krylov_floquet(shooting, r.z0, c.omega_b, c.krylov, *r.krylov);
+      windowed_floquet(shooting, {c.kernels, parameters, mean_flow, contacts}, r.z0, c.omega_b, c.krylov,
+                       c.unit_tolerance, *r.krylov);
     else if (r.rejected.empty() && c.step == BrightStep::floquet)
       r.floquet = bright_floquet(shooting.monodromy(r.z0, c.omega_b), mean_flow, {c.unit_tolerance});
     if (r.rejected.empty() && c.step == BrightStep::branch) continue_breather(shooting, contacts, c, hooks, r);

@@ -63,7 +63,7 @@ std::vector<JobOption> make_options() {
       {"krylov_band", "--krylov-band", "", {"solve", "floquet"}, d.krylov.krylov_band, false, ">= 1",
        "Newton-Krylov: half-width in sites of the band-probed Jacobian that preconditions GMRES"},
       {"floquet_count", "--floquet-count", "", {"floquet"}, d.krylov.floquet_count, false, ">= 1",
-       "matrix-free Floquet: the number of largest-modulus multipliers computed"},
+       "matrix-free Floquet: the number of largest-modulus localized multipliers certified on the full lattice"},
       {"branch_floquet", "", "floquet", {"continue"}, d.branch_floquet, false, "true|false",
        "Floquet multipliers at every branch point"},
       {"format", "--format", "", all_steps, d.format, false, "csv|hdf5",

@@ -2,7 +2,8 @@
 // How the exact-breather jobs (bright, and dark with a model file) solve and analyse a breather: the
 // dense path (the full Jacobian / monodromy per Newton step, O(N^2.3)) or the matrix-free one
 // (Newton-Krylov and Arnoldi on tangent products, sim/dark/newton_krylov.hpp and
-// sim/dark/krylov_floquet.hpp), chosen by the number of sites unless forced.
+// sim/dark/krylov_floquet.hpp; a bright breather's multipliers from its core window, certified by
+// full-lattice residuals, sim/bright/windowed_floquet.hpp), chosen by the number of sites unless forced.
 #include <optional>
 #include <string>
 
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrchain/index.hpp"
+#include "lrchain/sim/bright/windowed_floquet.hpp"
 #include "lrchain/sim/dark/krylov_floquet.hpp"
 #include "lrchain/sim/dark/newton_krylov.hpp"
 
@@ -19,7 +21,7 @@ struct BreatherSolverOptions {
   std::string solver = "auto";  // auto | dense | krylov; auto: krylov above krylov_sites sites
   Index krylov_sites = 400;     // auto: the matrix-free path above this many sites, >= 9
   Index krylov_band = 12;       // Newton-Krylov preconditioner half-width in sites, >= 1
-  Index floquet_count = 20;     // matrix-free Floquet: the leading multipliers computed, >= 1
+  Index floquet_count = 20;     // matrix-free Floquet: the leading (dark) or localized (bright) multipliers, >= 1
 };
 
 // InvalidParameter naming the key (solver, krylov_sites, krylov_band, floquet_count).
@@ -31,7 +33,8 @@ bool use_krylov(const BreatherSolverOptions& o, Index sites);
 // What the matrix-free path did (absent from a dense run's result and JSON).
 struct KrylovRecord {
   sim::dark::NewtonKrylovStats newton;
-  std::optional<sim::dark::KrylovFloquetResult> floquet;
+  std::optional<sim::dark::KrylovFloquetResult> floquet;     // Arnoldi (dark)
+  std::optional<sim::bright::WindowedFloquet> windowed;      // core window, certified (bright)
   double solve_seconds = 0, floquet_seconds = 0;
 };
 
@@ -46,5 +49,11 @@ sim::dark::NewtonResult solve_breather(const sim::dark::DarkShooting& shooting, 
 // The leading floquet_count multipliers by Arnoldi into record->floquet (record present).
 void krylov_floquet(const sim::dark::DarkShooting& shooting, const Eigen::VectorXd& z0, double omega_b,
                     const BreatherSolverOptions& o, KrylovRecord& record);
+
+// The floquet_count largest-modulus localized multipliers of a bright breather from its core window,
+// certified on the full lattice, into record.windowed (record present).
+void windowed_floquet(const sim::dark::DarkShooting& shooting, const sim::bright::WindowLattice& lattice,
+                      const Eigen::VectorXd& z0, double omega_b, const BreatherSolverOptions& o, double unit_tolerance,
+                      KrylovRecord& record);
 
 }  // namespace lrchain::jobs
