@@ -24,8 +24,19 @@ stage() {  # stage NAME COMMAND...: runs, times (wall and CPU user+sys) and reco
   TIMEFORMAT="== test.sh: $name: %0R s wall, %0U s user, %0S s sys"
   time "$@" || failed+=("$name")
 }
+failed_tests=()
+tests_stage() {  # tests_stage NAME BUILD_DIR CTEST_ARGS...: a ctest stage; keeps the failed tests' names
+  local name=$1 dir=$2 log
+  shift 2
+  log="$dir/Testing/Temporary/LastTestsFailed.log"
+  rm -f "$log"
+  stage "$name" ctest --test-dir "$dir" "$@"
+  if [[ -s "$log" ]]; then
+    while IFS= read -r line; do failed_tests+=("$name: ${line#*:}"); done <"$log"
+  fi
+}
 
-stage "fast tests" ctest --test-dir build -L fast --output-on-failure -j "$jobs"
+tests_stage "fast tests" build -L fast --output-on-failure -j "$jobs"
 # The validation runs are independent programs (most on one thread): two at a time on 2 cores.
 
 if [[ "${LRCHAIN_SANITIZER:-1}" == 1 ]]; then
@@ -41,8 +52,7 @@ if [[ "${LRCHAIN_SANITIZER:-1}" == 1 ]]; then
   stage "sanitizer build" cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DLRCHAIN_SANITIZE=ON \
     -DCMAKE_DISABLE_FIND_PACKAGE_MPI=ON -DLRCHAIN_UNITY_BUILD="${LRCHAIN_UNITY_BUILD:-ON}"
   stage "sanitizer build" cmake --build build-sanitize -j "$jobs"
-  stage "sanitizer: fast tests" \
-    ctest --test-dir build-sanitize -L fast --output-on-failure -j "$jobs"
+  tests_stage "sanitizer: fast tests" build-sanitize -L fast --output-on-failure -j "$jobs"
 fi
 
 # The validation runs come last and run when they fit in CI's 45 minutes: they take up to 8 minutes
@@ -52,12 +62,14 @@ fi
 # them always.
 budget=${LRCHAIN_TEST_BUDGET:-2200}
 if ((budget == 0 || SECONDS + 480 <= budget)); then
-  stage "validation runs" ctest --test-dir build -L validation --output-on-failure -j "$jobs"
+  tests_stage "validation runs" build -L validation --output-on-failure -j "$jobs"
 else
   echo "== test.sh: validation runs skipped: ${SECONDS} s used, less than 480 s left of ${budget} s" >&2
 fi
 
 if ((${#failed[@]})); then
+  # CI shows the tail of the output: the failed tests' names come last, a line each.
+  for t in "${failed_tests[@]}"; do echo "test.sh: FAILED test in $t" >&2; done
   (IFS=','; echo "test.sh: FAILED stages: ${failed[*]}" >&2)  # one line: CI shows the tail
   exit 1
 fi

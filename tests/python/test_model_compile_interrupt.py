@@ -26,6 +26,37 @@ mass = "1"
 force = "F(u[n+1] - u[n]) - F(u[n] - u[n-1])"
 """
 
+# Mass in mass in mass; the outer law's parameter factor makes the derivation take seconds.
+SLOW_THREE_FIELDS = """\
+name = "mass_in_mass3_slow"
+[parameters]
+a1 = { default = "1/4", range = "(-inf, inf)" }
+b1 = { default = "1/2", range = "(-inf, inf)" }
+k2 = { default = 1, range = "(0, inf)" }
+m2 = { default = "1/2", range = "(0, inf)" }
+k3 = { default = "1/2", range = "(0, inf)" }
+g3 = { default = 1, range = "(-inf, inf)" }
+m3 = { default = "1/4", range = "(0, inf)" }
+[functions.F]
+argument = "r"
+expression = "(r + a1*r^2 + b1*r^3)*(1 + a1 + b1)"
+[functions.G]
+argument = "s"
+expression = "k3*s + g3*s^3"
+[[field]]
+name = "u"
+mass = "1"
+force = "F(u[n+1] - u[n]) - F(u[n] - u[n-1]) - k2*(u[n] - v[n])"
+[[field]]
+name = "v"
+mass = "m2"
+force = "k2*(u[n] - v[n]) - G(v[n] - w[n])"
+[[field]]
+name = "w"
+mass = "m3"
+force = "G(v[n] - w[n])"
+"""
+
 FAKE_COMPILER = """\
 #!/bin/sh
 if [ "$1" = --version ]; then echo 'fake-cxx 1'; exit 0; fi
@@ -91,12 +122,12 @@ def test_sigint_while_compiling_raises_keyboard_interrupt_and_kills_the_compiler
 
 
 def test_sigint_while_deriving_raises_keyboard_interrupt(tmp_path):
-    # A law of 56 expanded terms (within the bound of 64): 0.4 s of derivation and 0.5 s of checks on
-    # an idle 2-core machine (`lrchain derive` prints them), so SIGINT at 0.25 s lands inside them.
+    # `lrchain derive` takes 7 s for this three-field model on an idle 2-core machine (measured), so
+    # SIGINT at 0.7 s lands inside the derivation. (A one-field law derives in under 0.6 s.)
     model = tmp_path / "slow.toml"
-    model.write_text(MORSE.format(extra="(1 + a + b)^6"))
+    model.write_text(SLOW_THREE_FIELDS)
     child = start_load_model(tmp_path, model, tmp_path / "no-compiler-needed")
-    time.sleep(0.25)
+    time.sleep(0.7)
     start = time.monotonic()
     child.send_signal(signal.SIGINT)
     out, err = child.communicate(timeout=60)
