@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <tuple>
 
 #include "lrchain/derivation/model_derivation.hpp"
 #include "lrchain/errors.hpp"
@@ -218,6 +219,67 @@ force = "mu*(u - w)"
     const double residual = -w2 + 1.0 * (1 - 1.0 / (1 - w2 / 3.0)) + 2.0 * (1 - 1.0 / (1 - w2 / 10.0));
     CHECK(std::abs(residual) < 1e-9);
   }
+}
+
+// A law whose Taylor coefficients are sums of parameters, (1 + a1 + b1)(r + a1 r^2 + b1 r^3), gets
+// automatic names F_d1, F_d2, F_d3 (docs/models.md): the three-field derivation took 105-190 s
+// before, about 1 s now. Expected values: the same chain with the factor as a parameter s set to
+// 1 + a1 + b1 = 7/4, a law whose coefficients s, s a1, s b1 are not sums (derived without names).
+TEST_CASE("a law with sums of parameters as coefficients: named automatically, same coefficients") {
+  const std::string chain = R"toml(name = "mass_in_mass3"
+[parameters]
+a1 = { default = "1/4", range = "(-inf, inf)" }
+b1 = { default = "1/2", range = "(-inf, inf)" }
+s = { default = "7/4", range = "(0, inf)" }
+k2 = { default = 1, range = "(0, inf)" }
+m2 = { default = "1/2", range = "(0, inf)" }
+k3 = { default = "1/2", range = "(0, inf)" }
+g3 = { default = 1, range = "(-inf, inf)" }
+m3 = { default = "1/4", range = "(0, inf)" }
+[functions.F]
+argument = "r"
+expression = "LAW"
+[functions.G]
+argument = "x"
+expression = "k3*x + g3*x^3"
+[[field]]
+name = "u"
+force = "F(u[n+1] - u[n]) - F(u[n] - u[n-1]) - k2*(u[n] - v[n])"
+[[field]]
+name = "v"
+mass = "m2"
+force = "k2*(u[n] - v[n]) - G(v[n] - w[n])"
+[[field]]
+name = "w"
+mass = "m3"
+force = "G(v[n] - w[n])"
+)toml";
+  const Symbols s;
+  ModelFile summed = parse_model_text(replaced(chain, "LAW", "(1 + a1 + b1)*(r + a1*r^2 + b1*r^3)"), "summed.toml");
+  ModelFile scaled = parse_model_text(replaced(chain, "LAW", "s*r + s*a1*r^2 + s*b1*r^3"), "scaled.toml");
+  std::vector<std::string> names;
+  for (const auto& i : summed.intermediates) names.push_back(i.name);
+  CHECK(names == std::vector<std::string>{"F_d1", "F_d2", "F_d3"});
+  CHECK(scaled.intermediates.empty());
+  const GiNaC::exmap summed_values = parameter_values(summed, {}), scaled_values = parameter_values(scaled, {});
+  const auto a = derive_model(std::move(summed), summed_values, s);
+  const auto b = derive_model(std::move(scaled), scaled_values, s);
+  for (const auto& c : a->checks) {
+    INFO(c.name << " (" << c.detail << ")");
+    CHECK(c.passed);
+  }
+  REQUIRE(a->branches.size() == 3);
+  for (std::size_t branch = 0; branch < 3; ++branch)
+    for (const double theta : {0.4, 1.3, 2.9}) {
+      const BranchPoint pa(a->coefficients, s, a->values, theta, branch), pb(b->coefficients, s, b->values, theta, branch);
+      for (const auto& [name, ea, eb] : {std::tuple{"omega''", a->coefficients.curvature, b->coefficients.curvature},
+                                         std::tuple{"h", a->coefficients.h, b->coefficients.h},
+                                         std::tuple{"h_tilde", a->coefficients.h_tilde, b->coefficients.h_tilde}}) {
+        INFO(a->branches[branch].name << " theta = " << theta << ": " << name);
+        const double va = pa.value(ea).to_double(), vb = pb.value(eb).to_double();
+        CHECK(va == doctest::Approx(vb).epsilon(1e-12));
+      }
+    }
 }
 
 TEST_CASE("the kernel rescaling check can fail: a wrong coefficient is caught") {

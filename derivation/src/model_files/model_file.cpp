@@ -191,7 +191,10 @@ class Loader {
                          f.argument + " = " + to_text(r0) + " (" + e.what() + ")");
       }
       out_.divisors.push_back({where, f.name + "'(" + to_text(r0) + ") of function " + f.name, c[1]});
-      if (!f.taylor_names.empty()) name_intermediates(f, r0, c, where);
+      if (!f.taylor_names.empty())
+        name_intermediates(f, f.taylor_names, r0, c, where);
+      else if (has_sum_coefficient(c) && !called_elsewhere(f, r0))
+        name_intermediates(f, automatic_taylor_names(f), r0, c, where);
       const ex x = call.argument - r0;
       replacement[call.placeholder] = c[0] + c[1] * x + c[2] * pow(x, 2) + c[3] * pow(x, 3);
     }
@@ -204,10 +207,34 @@ class Loader {
     throw std::logic_error("function " + name);
   }
 
+  // A Taylor coefficient that is a sum in the parameters, as (1 + a + b) in (1 + a + b) r: the
+  // derivation's rational arithmetic then takes GCDs of such sums at every step (a three-field chain
+  // took minutes instead of a second), so the coefficients are named automatically (F_d1, ...).
+  static bool has_sum_coefficient(const std::vector<ex>& c) {
+    for (int k = 1; k <= 3; ++k)
+      if (is_a<add>(expand(c[k]))) return true;
+    return false;
+  }
+  // Names of F'(r0), F''(r0)/2 and F'''(r0)/6 for a law without `taylor` names: F_d1, F_d2, F_d3
+  // (no name of a file has an underscore, so they are new).
+  static std::vector<std::string> automatic_taylor_names(const ModelFunction& f) {
+    return {f.name + "_d1", f.name + "_d2", f.name + "_d3"};
+  }
+  // Whether the automatic names of f already stand for its coefficients about another equilibrium.
+  bool called_elsewhere(const ModelFunction& f, const ex& r0) const {
+    const std::vector<std::string> names = automatic_taylor_names(f);
+    const std::vector<ex> c = taylor_coefficients(f, r0);
+    for (const auto& i : out_.intermediates)
+      for (int k = 1; k <= 3; ++k)
+        if (i.name == names[k - 1] && !normal(i.value - c[k]).is_zero()) return true;
+    return false;
+  }
+
   // Taylor coefficients of a law with named coefficients (K2, K3, K4) become those symbols.
-  void name_intermediates(const ModelFunction& f, const ex& r0, std::vector<ex>& c, const std::string& where) {
+  void name_intermediates(const ModelFunction& f, const std::vector<std::string>& names, const ex& r0,
+                          std::vector<ex>& c, const std::string& where) {
     for (int k = 1; k <= 3; ++k) {
-      const std::string& name = f.taylor_names[k - 1];
+      const std::string& name = names[k - 1];
       auto it = std::find_if(out_.intermediates.begin(), out_.intermediates.end(), [&](const auto& i) { return i.name == name; });
       if (it == out_.intermediates.end()) {
         out_.intermediates.push_back({name, realsymbol(name), c[k]});
