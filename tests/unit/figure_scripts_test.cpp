@@ -290,3 +290,46 @@ TEST_CASE("figure scripts: the dark stability atlas marks the band edge at each 
   CHECK(!fs::exists("PWNED"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("figure scripts: the fate atlas marks dark stages (o) and bright stages (triangles) at their own points") {
+  // Made-up scalars on a 2 x 2 grid: a dark stage at point 1 only, a bright stage at point 2 only.
+  const fs::path dir = scratch_directory("figure-fate-stages");
+  lrchain::test::write_text(dir / "base.toml", "experiment = \"wave fate\"\nmodel = \"fput\"\n[wave]\ntheta = 2.5\n"
+                                               "amplitude = 0.1\nring_sites = 128\n");
+  lrchain::test::write_text(dir / "s.toml", "job = \"wave fate\"\nname = \"fate\"\nbase = \"base.toml\"\noutput = \"" +
+                                                (dir / "s.h5").string() + "\"\nfigure = \"fate\"\n[[axis]]\n"
+                                                "parameter = \"wave.theta\"\nvalues = [1.0, 2.0]\n[[axis]]\n"
+                                                "parameter = \"wave.amplitude\"\nvalues = [0.05, 0.1]\n");
+  const jobs::sweep::SweepConfig c = jobs::sweep::load_sweep_config(dir / "s.toml");
+  const jobs::sweep::Job job = jobs::sweep::make_job(c);
+  jobs::sweep::SweepResults r(job, 4);
+  const auto column = [&](const std::string& name) {
+    const auto at = std::find(r.scalar_names.begin(), r.scalar_names.end(), name);
+    REQUIRE(at != r.scalar_names.end());
+    return std::size_t(at - r.scalar_names.begin());
+  };
+  for (std::size_t p = 0; p < 4; ++p) {
+    r.scalars[column("fate") * 4 + p] = double(p);
+    r.scalars[column("focusing") * 4 + p] = 1;
+    r.scalars[column("stable") * 4 + p] = 0;
+    r.scalars[column("dark_from") * 4 + p] = p == 1 ? 100.0 : std::nan("");
+    r.scalars[column("bright_from") * 4 + p] = p == 2 ? 200.0 : std::nan("");
+  }
+  jobs::sweep::write_sweep_figures(c, job, r, "fate");
+  std::istringstream data(file_text(dir / "s_fate.dat"));
+  int rows = 0;
+  for (std::string line; std::getline(data, line);) {
+    double x, y, fate, focusing, stable, dark, bright;
+    if (std::sscanf(line.c_str(), "%lf %lf %lf %lf %lf %lf %lf", &x, &y, &fate, &focusing, &stable, &dark, &bright) != 7) continue;
+    INFO(line);
+    CHECK(dark == (fate == 1 ? 1 : 0));
+    CHECK(bright == (fate == 2 ? 1 : 0));
+    ++rows;
+  }
+  CHECK(rows == 4);
+  const std::string script = file_text(dir / "s_fate.gp");
+  CHECK(script.find("'' using 1:($6 > 0 ? $2 : NaN) with points pointtype 6") != std::string::npos);
+  CHECK(script.find("'' using 1:($7 > 0 ? $2 : NaN) with points pointtype 8") != std::string::npos);
+  CHECK(script.find("triangle bright stage") != std::string::npos);
+  fs::remove_all(dir);
+}

@@ -151,26 +151,28 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
   const std::filesystem::path dir = output_directory(c);
   // A "wave fate" sweep's fate is a category (0 stable .. 4 disordered), drawn in its own colour, with
   // the points the NLS calls focusing (+), those whose exact wave has growth (x) and those that passed
-  // through a dark stage (o, dark_from has a value) marked.
+  // through a dark stage (o, dark_from has a value) or a bright stage (triangle, bright_from) marked.
   const bool categorical = c.job == "wave fate" && scalar == "fate";
   const auto column = [&](const std::string& name) {
     const auto at = std::find(r.scalar_names.begin(), r.scalar_names.end(), name);
     return at == r.scalar_names.end() ? std::size_t(0) : std::size_t(at - r.scalar_names.begin());
   };
-  const std::size_t focusing = column("focusing"), stable = column("stable"), dark_from = column("dark_from");
+  const std::size_t focusing = column("focusing"), stable = column("stable"), dark_from = column("dark_from"),
+                    bright_from = column("bright_from");
 
   std::ostringstream data;
   data << "# " << x.parameter << ' ' << (y_negative ? "-" : "") << y.parameter
-       << (categorical ? " fate focusing stable dark_stage" : " log10(" + scalar + ")") << "\n";
+       << (categorical ? " fate focusing stable dark_stage bright_stage" : " log10(" + scalar + ")") << "\n";
   for (std::size_t i = 0; i < x.values.size(); ++i) {
     for (std::size_t j = 0; j < y.values.size(); ++j) {
       const std::size_t point = i * y.values.size() + j;
       const double v = r.scalars[s * r.points + point];
       if (categorical)
-        data << fmt::format("{} {} {} {} {} {}\n", x.values[i], y_negative ? -y.values[j] : y.values[j],
+        data << fmt::format("{} {} {} {} {} {} {}\n", x.values[i], y_negative ? -y.values[j] : y.values[j],
                             std::isfinite(v) ? fmt::format("{}", v) : "NaN", r.scalars[focusing * r.points + point],
                             r.scalars[stable * r.points + point],
-                            std::isfinite(r.scalars[dark_from * r.points + point]) ? 1 : 0);
+                            std::isfinite(r.scalars[dark_from * r.points + point]) ? 1 : 0,
+                            std::isfinite(r.scalars[bright_from * r.points + point]) ? 1 : 0);
       else
         data << fmt::format("{} {} {}\n", x.values[i], y_negative ? -y.values[j] : y.values[j],
                             v > 0 && std::isfinite(v) ? fmt::format("{}", std::log10(v)) : std::string("NaN"));
@@ -214,7 +216,7 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
      << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", *std::min_element(xlo.begin(), xlo.end()),
                     *std::max_element(xhi.begin(), xhi.end()), *std::min_element(ylo.begin(), ylo.end()),
                     *std::max_element(yhi.begin(), yhi.end()))
-     << "set title '" << gnuplot_text(c.name) << (categorical ? ": fate; + NLS focusing, x exact growth, o dark stage" : ": log10(" + value + ")")
+     << "set title '" << gnuplot_text(c.name) << (categorical ? ": fate; + NLS focusing, x exact growth, o dark stage, triangle bright stage" : ": log10(" + value + ")")
      << (ends.empty() ? "" : "; dashed: focusing interval ends") << "; blank: no value'" << (categorical ? " font ',10'" : "") << "\n";
   for (double b : ends)
     gp << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dashtype 2 linewidth 2 front\n", b);
@@ -223,7 +225,8 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
         "with boxxyerror fillstyle solid 1.0 noborder fillcolor palette notitle"
      << (categorical ? ", '' using 1:($4 > 0 ? $2 : NaN) with points pointtype 1 pointsize 1.5 lc rgb 'black' notitle, "
                        "'' using 1:($5 < 1 ? $2 : NaN) with points pointtype 2 pointsize 1.5 lc rgb 'black' notitle, "
-                       "'' using 1:($6 > 0 ? $2 : NaN) with points pointtype 6 pointsize 3 lw 2 lc rgb 'black' notitle"
+                       "'' using 1:($6 > 0 ? $2 : NaN) with points pointtype 6 pointsize 3 lw 2 lc rgb 'black' notitle, "
+                       "'' using 1:($7 > 0 ? $2 : NaN) with points pointtype 8 pointsize 2.2 lw 2 lc rgb 'black' notitle"
                      : "")
      << "\n";
   std::vector<FigureScript> figures{{stem + ".gp", gp.str(), stem + ".png"}};
