@@ -34,7 +34,9 @@ Eigen::VectorXd ParameterShooting::z_from_unknowns(const Eigen::VectorXd& q) con
   return at(value_).z_from_unknowns(q);
 }
 
-// F(q; p) at the fixed omega_b; the last Jacobian column dF/dp = (F(p + h) - F(p - h)) / 2h.
+// F(q; p) at the fixed omega_b; the last Jacobian column dF/dp = (F(p + h) - F(p - h)) / 2h, or at a
+// bound of p's range the one-sided (-3 F(p) + 4 F(p + h) - F(p + 2h)) / 2h (h < 0 at an upper bound),
+// both second order, so that no residual is evaluated outside the range (e.g. C < 0).
 void ParameterShooting::evaluate(const Eigen::VectorXd& q, double value, Eigen::VectorXd& residual,
                                  Eigen::MatrixXd* jacobian, Eigen::MatrixXd* propagator) const {
   const double omega_b = setup_.omega_b;
@@ -43,11 +45,20 @@ void ParameterShooting::evaluate(const Eigen::VectorXd& q, double value, Eigen::
     return;
   }
   const double h = 1e-6 * std::max(1.0, std::abs(value));
-  Eigen::VectorXd plus, minus;
-  at(value + h).evaluate(q, omega_b, plus, nullptr);
-  at(value - h).evaluate(q, omega_b, minus, nullptr);
+  const bool below = setup_.range.contains(value - h), above = setup_.range.contains(value + h);
+  Eigen::VectorXd first, second;
+  if (below == above) {  // inside the range (or a range narrower than 2h: central anyway)
+    at(value + h).evaluate(q, omega_b, first, nullptr);
+    at(value - h).evaluate(q, omega_b, second, nullptr);
+    at(value).evaluate(q, omega_b, residual, jacobian, propagator);
+    jacobian->col(jacobian->cols() - 1) = (first - second) / (2 * h);
+    return;
+  }
+  const double step = above ? h : -h;
+  at(value + step).evaluate(q, omega_b, first, nullptr);
+  at(value + 2 * step).evaluate(q, omega_b, second, nullptr);
   at(value).evaluate(q, omega_b, residual, jacobian, propagator);
-  jacobian->col(jacobian->cols() - 1) = (plus - minus) / (2 * h);
+  jacobian->col(jacobian->cols() - 1) = (4 * first - second - 3 * residual) / (2 * step);
 }
 
 void ParameterShooting::jacobian_and_floquet(const Eigen::VectorXd& q, double value, Eigen::VectorXd& residual,

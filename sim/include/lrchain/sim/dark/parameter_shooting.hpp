@@ -4,7 +4,8 @@
 // evaluate, measure, ... is that parameter's value. The lattice (DarkShooting, and its reflection
 // family when given) is rebuilt whenever the value changes; dF/dparameter by a central difference of
 // two orbit integrations (step 1e-6 max(1, |p|): relative error ~1e-10 of a smooth flow, far below what
-// the chord corrector and the tangent need).
+// the chord corrector and the tangent need), one-sided of second order where p - h or p + h leaves
+// the parameter's range (at C = 0 no orbit is integrated at C < 0).
 #include <memory>
 #include <optional>
 #include <string>
