@@ -310,8 +310,8 @@ TEST_CASE("figure scripts: the fate atlas marks dark stages (o) and bright stage
   };
   for (std::size_t p = 0; p < 4; ++p) {
     r.scalars[column("fate") * 4 + p] = double(p);
-    r.scalars[column("focusing") * 4 + p] = 1;
-    r.scalars[column("stable") * 4 + p] = 0;
+    r.scalars[column("focusing") * 4 + p] = p < 2 ? 0 : 1;  // theta = 1 defocusing, 2 focusing
+    r.scalars[column("stable") * 4 + p] = p == 0 ? 1 : 0;   // growth everywhere but (1, 0.05)
     r.scalars[column("dark_from") * 4 + p] = p == 1 ? 100.0 : std::nan("");
     r.scalars[column("bright_from") * 4 + p] = p == 2 ? 200.0 : std::nan("");
   }
@@ -331,5 +331,18 @@ TEST_CASE("figure scripts: the fate atlas marks dark stages (o) and bright stage
   CHECK(script.find("'' using 1:($6 > 0 ? $2 : NaN) with points pointtype 6") != std::string::npos);
   CHECK(script.find("'' using 1:($7 > 0 ? $2 : NaN) with points pointtype 8") != std::string::npos);
   CHECK(script.find("triangle bright stage") != std::string::npos);
+  // Borders on the cells' shared edges (theta cells split at 1.5, amplitude cells at 0.075 on this linear
+  // axis, from 0.025 to 0.125): the NLS's between the two theta columns (two dashed segments), the exact
+  // growth's around the one stable cell (theta 1, A 0.05: one vertical and one horizontal segment).
+  const auto count = [&](const std::string& text) {
+    int n = 0;
+    for (std::size_t at = script.find(text); at != std::string::npos; at = script.find(text, at + 1)) ++n;
+    return n;
+  };
+  CHECK(count("set arrow from 1.5, 0.025000000000000001 to 1.5, 0.075000000000000011 nohead") == 2);
+  CHECK(count("set arrow from 1.5, 0.075000000000000011 to 1.5, 0.125 nohead dashtype 2") == 1);
+  CHECK(count("set arrow from 0.5, 0.075000000000000011 to 1.5, 0.075000000000000011 nohead linewidth 3") == 1);
+  CHECK(count("nohead dashtype 2 linewidth 3 lc rgb 'black' front") == 2);
+  CHECK(count("nohead linewidth 3 lc rgb '#2166ac' front") == 2);
   fs::remove_all(dir);
 }

@@ -3,6 +3,8 @@
 #include "lrchain/jobs/sweep/sweep_figure.hpp"
 
 #include <algorithm>
+#include <array>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -105,6 +107,32 @@ std::vector<std::pair<double, double>> cell_edges(const std::vector<double>& dra
   if (log_axis)
     for (auto& [lo, hi] : cells) lo = std::pow(10.0, lo), hi = std::pow(10.0, hi);
   return cells;
+}
+
+// The border between the cells where a flag holds and those where it does not, as segments {x0, y0,
+// x1, y1} on the cells' shared edges; `flag(i, j)` is NaN where the point has no value (no border there).
+using Segment = std::array<double, 4>;
+std::vector<Segment> flag_border(const std::vector<std::pair<double, double>>& x_cells,
+                                 const std::vector<std::pair<double, double>>& y_cells,
+                                 const std::function<double(std::size_t, std::size_t)>& flag) {
+  const auto order = [](const std::vector<std::pair<double, double>>& cells) {
+    std::vector<std::size_t> k(cells.size());
+    for (std::size_t i = 0; i < k.size(); ++i) k[i] = i;
+    std::sort(k.begin(), k.end(), [&](std::size_t a, std::size_t b) { return cells[a].first < cells[b].first; });
+    return k;
+  };
+  const auto differ = [](double a, double b) { return std::isfinite(a) && std::isfinite(b) && (a > 0.5) != (b > 0.5); };
+  const std::vector<std::size_t> xs = order(x_cells), ys = order(y_cells);
+  std::vector<Segment> border;
+  for (std::size_t j = 0; j < y_cells.size(); ++j)
+    for (std::size_t k = 0; k + 1 < xs.size(); ++k)
+      if (differ(flag(xs[k], j), flag(xs[k + 1], j)))
+        border.push_back({x_cells[xs[k]].second, y_cells[j].first, x_cells[xs[k]].second, y_cells[j].second});
+  for (std::size_t i = 0; i < x_cells.size(); ++i)
+    for (std::size_t k = 0; k + 1 < ys.size(); ++k)
+      if (differ(flag(i, ys[k]), flag(i, ys[k + 1])))
+        border.push_back({x_cells[i].first, y_cells[ys[k]].second, x_cells[i].second, y_cells[ys[k]].second});
+  return border;
 }
 
 // A gnuplot array of `values` in order: "array name[n] = [v1, v2, ...]".
@@ -216,10 +244,25 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
      << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", *std::min_element(xlo.begin(), xlo.end()),
                     *std::max_element(xhi.begin(), xhi.end()), *std::min_element(ylo.begin(), ylo.end()),
                     *std::max_element(yhi.begin(), yhi.end()))
-     << "set title '" << gnuplot_text(c.name) << (categorical ? ": fate; + NLS focusing, x exact growth, o dark stage, triangle bright stage" : ": log10(" + value + ")")
-     << (ends.empty() ? "" : "; dashed: focusing interval ends") << "; blank: no value'" << (categorical ? " font ',10'" : "") << "\n";
+     << "set title '" << gnuplot_text(c.name) << (categorical ? ": fate; + NLS focusing (dashed), x exact growth (blue), o dark, triangle bright stage" : ": log10(" + value + ")")
+     << (ends.empty() ? "" : "; dashed: focusing interval ends") << "; blank: no value'" << (categorical ? " font ',9'" : "") << "\n";
   for (double b : ends)
     gp << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dashtype 2 linewidth 2 front\n", b);
+  if (categorical) {  // the exact wave's growth border (solid), then the NLS's focusing border (dashed, on top)
+    const auto at = [&](std::size_t flag_column, bool negate) {
+      return [&, flag_column, negate](std::size_t i, std::size_t j) {
+        const double v = r.scalars[flag_column * r.points + i * y.values.size() + j];
+        return (std::isfinite(v) && negate) ? 1 - v : v;
+      };
+    };
+    gp << "# borders: NLS focusing (dashed black), exact growth (solid blue), on the cells' shared edges\n";
+    for (const Segment& g : flag_border(x_cells, y_cells, at(stable, true)))
+      gp << fmt::format("set arrow from {:.17g}, {:.17g} to {:.17g}, {:.17g} nohead linewidth 3 lc rgb '#2166ac' front\n",
+                        g[0], g[1], g[2], g[3]);
+    for (const Segment& g : flag_border(x_cells, y_cells, at(focusing, false)))
+      gp << fmt::format("set arrow from {:.17g}, {:.17g} to {:.17g}, {:.17g} nohead dashtype 2 linewidth 3 lc rgb 'black' front\n",
+                        g[0], g[1], g[2], g[3]);
+  }
   gp << "plot " << gnuplot_file_name(stem + ".dat")
      << " using 1:2:(xlo[column(-1)+1]):(xhi[column(-1)+1]):(ylo[int(column(0))%ny+1]):(yhi[int(column(0))%ny+1]):3 "
         "with boxxyerror fillstyle solid 1.0 noborder fillcolor palette notitle"
