@@ -44,6 +44,10 @@ void add_common(CLI::App& sub, BrightArgs& a) {
   sub.add_option("--center", c.center, bright_help("center"))
       ->check(CLI::IsMember({"site", "bond"}).description(""))
       ->type_name("site|bond");
+  sub.add_option("--start", c.start, bright_help("start"))
+      ->check(CLI::IsMember({"nls", "anti-continuum"}).description(""))
+      ->type_name("nls|anti-continuum");
+  sub.add_option("--coupling", c.coupling, bright_help("coupling"))->type_name("NAME");
   add_integer(sub, "--sites", c.sites, config::dark_sites.least, config::dark_sites.most, bright_help("sites"));
   add_number(sub, "--tail-tolerance", c.tail_tolerance, bright_help("tail_tolerance"));
   add_solver_options(sub, c.krylov,
@@ -94,7 +98,8 @@ void register_bright(CLI::App& app) {
   auto args = std::make_shared<BrightArgs>();
   auto* solve_cmd = bright->add_subcommand("solve", "Newton solve from the NLS bright-breather seed, checked to be localized");
   add_common(*solve_cmd, *args);
-  add_examples(*solve_cmd, {"lrchain bright solve --model klein_gordon --omega-b 1.19 --sites 81"});
+  add_examples(*solve_cmd, {"lrchain bright solve --model klein_gordon --omega-b 1.19 --sites 81",
+                            "lrchain bright solve --model klein_gordon --set C=0.05 --omega-b 1.5 --start anti-continuum --sites 21"});
   solve_cmd->callback([args, solve_cmd] { run_job(*args, BrightStep::solve, *solve_cmd); });
   auto* floq = bright->add_subcommand(
       "floquet", "Solve, then the Floquet multipliers of the monodromy matrix, the trivial +1 ones removed");

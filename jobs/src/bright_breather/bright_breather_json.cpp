@@ -122,6 +122,19 @@ json evolution_json(const BrightBreatherResult& r) {
           {"perturbation", perturbation}};
 }
 
+// Newton's start: nls, or anti-continuum with the uncoupled orbit's amplitude and the continuation in
+// the coupling (its points, and the value reached).
+json start_json(const BrightBreatherResult& r) {
+  const BrightBreatherConfig& c = r.config;
+  if (c.start != "anti-continuum") return {{"kind", "nls"}};
+  const auto& points = r.anti_continuum_branch.points;
+  return {{"kind", "anti-continuum"},
+          {"coupling", c.coupling},
+          {"amplitude", r.anti_continuum_amplitude},
+          {"continuation_points", points.size()},
+          {"reached", points.empty() ? json(0.0) : json(points.back().parameter)}};
+}
+
 }  // namespace
 
 json to_json(const BrightBreatherResult& r) {
@@ -144,6 +157,7 @@ json to_json(const BrightBreatherResult& r) {
             {"newton_converged", r.newton.converged},
             {"newton_iterations", r.newton.history.empty() ? 0 : r.newton.history.size() - 1},
             {"newton_residuals", residuals},
+            {"start", start_json(r)},
             {"seed_profile", profile_json(r.seed_profile)},
             {"seconds", r.seconds},
             {"failure", nullptr},
@@ -157,7 +171,8 @@ json to_json(const BrightBreatherResult& r) {
   if (r.evolution) j["evolution"] = evolution_json(r);
   if (c.step == BrightStep::branch && r.newton.converged && r.rejected.empty()) j["branch"] = branch_json(r);
   if (const auto f = failure(r))
-    j["failure"] = {{"kind", r.newton.converged ? "not_a_bright_breather" : "newton"}, {"message", *f}};
+    j["failure"] = {{"kind", !r.start_failure.empty() ? "start" : r.newton.converged ? "not_a_bright_breather" : "newton"},
+                    {"message", *f}};
   return j;
 }
 

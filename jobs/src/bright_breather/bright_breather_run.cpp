@@ -13,7 +13,9 @@
 #include "../breather_outputs.hpp"
 #include "lrchain/errors.hpp"
 #include "lrchain/jobs/bright_breather_job.hpp"
+#include "lrchain/sim/bright/anti_continuum.hpp"
 #include "lrchain/sim/bright/bright_seed.hpp"
+#include "lrchain/sim/bright/fundamental_period.hpp"
 #include "lrchain/sim/dark/contact_bonds.hpp"
 #include "lrchain/sim/dark/parameter_shooting.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
@@ -170,21 +172,23 @@ void continue_in_omega_b(const sim::dark::DarkShooting& shooting, const BrightBr
   r.branch = sim::dark::continue_branch(shooting, r.z0, c.omega_b, o, hooks.on_point);
 }
 
-// Continues the solved breather in the model parameter c.parameter at fixed omega_b from its value
-// to c.to (the last point solved there), on all of Z(0) (sim/dark/parameter_shooting.hpp).
-void continue_in_parameter(const BrightBreatherConfig& c, const BrightBreatherHooks& hooks, BrightBreatherResult& r) {
+// Continues the breather z0 at `start` of the model parameter `parameter` at fixed omega_b to `end` (the
+// last point solved there), on all of Z(0) (sim/dark/parameter_shooting.hpp).
+sim::dark::BranchResult continue_in_model_parameter(const BrightBreatherConfig& c, const std::string& parameter,
+                                                    double start, double end, const Eigen::VectorXd& z0,
+                                                    const BrightBreatherHooks& hooks) {
   const Model& model = *c.model;
   const auto& definitions = model.definition().parameters;
   sim::dark::ParameterShootingSetup setup;
   setup.kernels = c.kernels;
   setup.parameters = sim::lattice_parameters(model);
   for (std::size_t i = 0; i < definitions.size(); ++i)
-    if (definitions[i].name == c.parameter) setup.index = Index(i), setup.range = definitions[i];
+    if (definitions[i].name == parameter) setup.index = Index(i), setup.range = definitions[i];
+  setup.parameters[std::size_t(setup.index)] = start;
   setup.sites = c.sites;
-  setup.mean_flow = r.edge.mean_flow;
+  setup.mean_flow = model.definition().mean_flow;
   setup.omega_b = c.omega_b;
   const sim::dark::ParameterShooting shooting(std::move(setup));
-  const double start = model.parameter(c.parameter), end = *c.to;
   sim::dark::ContinuationOptions o = continuation_options(c);
   // as dark continue --parameter: ds about a step in the parameter, a chord corrector refreshed below
   // 10x contraction (continuation.hpp)
@@ -196,8 +200,46 @@ void continue_in_parameter(const BrightBreatherConfig& c, const BrightBreatherHo
   o.omega_min = std::min(start, end);
   o.omega_max = std::max(start, end);
   o.land_on_bounds = true;
-  r.window_low = o.omega_min, r.window_high = o.omega_max;
-  r.branch = sim::dark::continue_branch(shooting, r.z0, start, o, hooks.on_point);
+  return sim::dark::continue_branch(shooting, z0, start, o, hooks.on_point);
+}
+
+// Continues the solved breather in the model parameter c.parameter from its value to c.to.
+void continue_in_parameter(const BrightBreatherConfig& c, const BrightBreatherHooks& hooks, BrightBreatherResult& r) {
+  const double start = c.model->parameter(c.parameter), end = *c.to;
+  r.window_low = std::min(start, end), r.window_high = std::max(start, end);
+  r.branch = continue_in_model_parameter(c, c.parameter, start, end, r.z0, hooks);
+}
+
+// The anti-continuum start (anti_continuum.hpp): the orbit of the uncoupled lattice (c.coupling = 0)
+// at omega_b, continued in the coupling to its value; the last point, or the orbit itself when the
+// coupling is 0. Sets r.start_failure (and returns the orbit) when the continuation stops short.
+Eigen::VectorXd anti_continuum_start(const BrightBreatherConfig& c, const BrightBreatherHooks& hooks,
+                                     BrightBreatherResult& r) {
+  const Model& model = *c.model;
+  std::vector<double> uncoupled = sim::lattice_parameters(model);
+  const auto& definitions = model.definition().parameters;
+  for (std::size_t i = 0; i < definitions.size(); ++i)
+    if (definitions[i].name == c.coupling) uncoupled[i] = 0;
+  const sim::dark::DarkShooting shooting(*c.kernels, uncoupled, c.sites, false, sim::dark::ShootingMode::reversible, {},
+                                         sim::dark::model_contact_bonds(*c.kernels, uncoupled, false));
+  const sim::bright::AntiContinuumOrbit orbit =
+      sim::bright::anti_continuum_orbit(shooting, c.omega_b, c.sites, c.center == "bond", r.edge.theta != 0);
+  r.anti_continuum_amplitude = orbit.amplitude;
+  const double coupling = model.parameter(c.coupling);
+  if (coupling == 0) return orbit.z0;
+  BrightBreatherConfig steps = c;
+  steps.points = 1000;  // the continuation ends at the coupling's value, not at a count of points
+  r.anti_continuum_branch = continue_in_model_parameter(steps, c.coupling, 0.0, coupling, orbit.z0, hooks);
+  const auto& points = r.anti_continuum_branch.points;
+  if (points.empty() || points.back().parameter != coupling) {
+    r.start_failure = fmt::format("the anti-continuum orbit (amplitude {:.10g} at {} = 0) continued in {} stopped at {} "
+                                  "= {:.10g} before its value {:.10g}: {}",
+                                  orbit.amplitude, c.coupling, c.coupling, c.coupling,
+                                  points.empty() ? 0.0 : points.back().parameter, coupling,
+                                  r.anti_continuum_branch.stop_reason);
+    return orbit.z0;
+  }
+  return points.back().z0;
 }
 
 // The continuation the config asks for, then the points kept and their stability.
@@ -269,9 +311,14 @@ BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHook
   for (const auto& bond : contacts) r.edge.one_sided_contacts.push_back(bond.name);
   const sim::dark::DarkShooting shooting(*c.kernels, parameters, c.sites, mean_flow, sim::dark::ShootingMode::reversible,
                                          {}, contacts);
-  r.seed = bright_seed(ansatz, mean_flow, c.kernels->fields, c.sites);
+  r.seed = c.start == "anti-continuum" ? anti_continuum_start(c, hooks, r)
+                                       : bright_seed(ansatz, mean_flow, c.kernels->fields, c.sites);
   const BrightProfileOptions profile_options{c.tail_tolerance};
   r.seed_profile = inspect_bright_profile(r.seed, c.sites, profile_options);
+  if (!r.start_failure.empty()) {
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+  }
   BreatherSolverOptions solver = c.krylov;
   // the continuation's Jacobian and the evolution's monodromy are dense
   if (c.step == BrightStep::branch || c.step == BrightStep::evolve) solver.solver = "dense";
@@ -281,6 +328,7 @@ BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHook
     r.profile = inspect_bright_profile(r.z0, c.sites, profile_options);
     r.seed_difference = relative_profile_difference(r.z0, r.seed);
     r.rejected = r.profile.reason;
+    if (r.rejected.empty()) r.rejected = fundamental_period_reason(shooting.orbit(), r.z0, c.omega_b);
     if (r.rejected.empty() && c.step == BrightStep::floquet && r.krylov)
       windowed_floquet(shooting, {c.kernels, parameters, mean_flow, contacts}, r.z0, c.omega_b, c.krylov,
                        c.unit_tolerance, *r.krylov);
@@ -294,6 +342,7 @@ BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHook
 }
 
 std::optional<std::string> failure(const BrightBreatherResult& r) {
+  if (!r.start_failure.empty()) return r.start_failure;
   if (!r.newton.converged) return sim::dark::newton_failure_message(r.newton, r.config.omega_b);
   if (!r.rejected.empty())
     return fmt::format("Newton converged at omega_b = {} to no bright breather: {}", r.config.omega_b, r.rejected);

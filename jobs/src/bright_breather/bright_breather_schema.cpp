@@ -28,6 +28,11 @@ std::vector<JobOption> make_options() {
        "branch whose band edge the breather leaves (none: the focusing edge nearest omega_b)"},
       {"center", "--center", "center", all_steps, d.center, false, "site|bond",
        "family: site-centred (n0 = 0) or bond-centred (n0 = 1/2)"},
+      {"start", "--start", "start", all_steps, d.start, false, "nls|anti-continuum",
+       "Newton's start: the NLS bright breather at the focusing edge, or (on-site models) one oscillator (two for "
+       "bond) at coupling 0 continued in --coupling to its value"},
+      {"coupling", "--coupling", "coupling", all_steps, d.coupling, false, "a model parameter with 0 in its range",
+       "start anti-continuum: the parameter that couples the cells (set to 0, then continued to its value)"},
       {"sites", "--sites", "sites", all_steps, d.sites, false, fmt::format("odd, >= {}", config::dark_sites.least),
        "lattice sites per field (periodic ends, the centre in the middle)"},
       {"tolerance", "", "tolerance", all_steps, d.tolerance, false, "(0, 1)", "Newton: converged when max|F| <= tolerance"},

@@ -25,6 +25,29 @@ constexpr double omega_b_cap = 10;
 constexpr Index max_periods = 1'000'000;
 }  // namespace
 
+namespace {
+// start = anti-continuum: an on-site model (a translation-invariant one has no uncoupled limit) and a
+// coupling parameter whose range holds 0.
+void check_anti_continuum(const Model& model, const std::string& coupling) {
+  if (model.definition().mean_flow)
+    throw InvalidParameter("start", fmt::format("anti-continuum needs an on-site model; {} is translation-invariant "
+                                                "(no cell oscillates on its own when its bonds are removed): use nls",
+                                                model.name()));
+  std::string names;
+  for (const auto& p : model.definition().parameters) {
+    if (p.name == coupling) {
+      if (!p.contains(0))
+        throw InvalidParameter("coupling", fmt::format("{} must have 0 in its range {} (the uncoupled lattice)", coupling,
+                                                       p.range_text));
+      return;
+    }
+    names += (names.empty() ? "" : ", ") + p.name;
+  }
+  throw InvalidParameter("coupling", fmt::format("must be one of the parameters of {} ({}), got '{}'", model.name(),
+                                                 names, coupling));
+}
+}  // namespace
+
 void validate(const BrightBreatherConfig& c) {
   if (c.model == nullptr || c.kernels == nullptr)
     throw InvalidParameter("model", "needs a loaded model and its lattice kernels (model, kernels)");
@@ -33,6 +56,8 @@ void validate(const BrightBreatherConfig& c) {
   config::checked_option(double(c.sites), config::dark_sites, "sites");
   sim::bright::check_bright_sites(c.sites);
   parse_dark_center(c.center);
+  if (c.start != "nls" && c.start != "anti-continuum") throw InvalidParameter("start", "must be nls or anti-continuum");
+  if (c.start == "anti-continuum") check_anti_continuum(*c.model, c.coupling);
   if (!(c.tolerance > 0 && c.tolerance < 1)) throw InvalidParameter("tolerance", "must be in (0, 1)");
   if (c.max_iterations < 1) throw InvalidParameter("max_iterations", "must be an integer >= 1");
   if (!(c.tail_tolerance > 0 && c.tail_tolerance < 1)) throw InvalidParameter("tail_tolerance", "must be in (0, 1)");

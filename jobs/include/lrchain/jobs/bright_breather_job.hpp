@@ -53,6 +53,10 @@ struct BrightBreatherConfig {
   double omega_b = 0;              // breather frequency, <= 10 x the top band, outside every band, non-resonant (required)
   std::string branch;              // the branch whose edge the breather leaves; "": the focusing edge nearest omega_b
   std::string center = "site";     // site (n0 = 0) | bond (n0 = 1/2)
+  // Newton's start: nls (the NLS bright breather at the focusing edge) | anti-continuum (one oscillator,
+  // two for bond, at coupling 0, continued in `coupling` to its value; on-site models; anti_continuum.hpp)
+  std::string start = "nls";
+  std::string coupling = "C";      // anti-continuum: the model parameter that couples the cells (0 in its range)
   Index sites = 101;               // odd, >= 9: lattice sites per field (periodic ends, centre in the middle)
   double tolerance = 1e-11;        // Newton: converged when max|F| <= tolerance, in (0, 1)
   Index max_iterations = 20;       // Newton iterations, >= 1
@@ -114,7 +118,12 @@ struct BrightBreatherResult {
   std::vector<sim::bright::LinearBand> bands;
   Index harmonics_checked = 0;      // k omega_b checked against the bands, k = 1 .. this
   sim::dark::NewtonResult newton;   // not converged: the job stopped there
-  Eigen::VectorXd seed, z0;         // the NLS seed and Z(0), field-major
+  Eigen::VectorXd seed, z0;         // Newton's start (the NLS seed, or the continued anti-continuum orbit) and Z(0), field-major
+  // start = anti-continuum: the excited oscillators' amplitude at coupling 0 and the continuation in the
+  // coupling from 0 to its value (its last point is the seed); start_failure says why it did not get there
+  double anti_continuum_amplitude = 0;
+  sim::dark::BranchResult anti_continuum_branch;
+  std::string start_failure;
   sim::bright::BrightProfile seed_profile, profile;
   double seed_difference = 0;       // max |Z(0) - seed| / max |Z(0)|
   std::string rejected;             // why a converged Newton zero is no localized bright breather ("": it is)
