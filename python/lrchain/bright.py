@@ -141,7 +141,7 @@ def _model(model):
 def _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance, step,
          points=_D["points"], ds=_D["ds"], branch_floquet=_D["floquet"], periods=_D["periods"],
          perturb=_D["perturb"], perturb_size=_D["perturb_size"], seed=_D["seed"], parameter=_D["parameter"], to=None,
-         locate_tolerance=_D["locate_tolerance"]):
+         locate_tolerance=_D["locate_tolerance"], start=_D["start"], coupling=_D["coupling"]):
     model = _model(model)
     if omega_b is None:
         from .errors import InvalidParameterError
@@ -150,13 +150,14 @@ def _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_
                                     "edge of the model)", "omega_b")
     return python_names(lambda: _lrchain.bright_breather_solve(
         model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance, step, points,
-        ds, branch_floquet, periods, perturb, perturb_size, seed, parameter, to, locate_tolerance))
+        ds, branch_floquet, periods, perturb, perturb_size, seed, parameter, to, locate_tolerance, start, coupling))
 
 
 @documented(_SECTION)
 @real_numbers
 def solve(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], tolerance=_D["tolerance"],
-          max_iterations=_D["max_iterations"], tail_tolerance=_D["tail_tolerance"]):
+          max_iterations=_D["max_iterations"], tail_tolerance=_D["tail_tolerance"], start=_D["start"],
+          coupling=_D["coupling"]):
     """Newton from the NLS bright-breather seed, checked to be a localized breather; returns
     :class:`BrightBreather`. ``omega_b`` is required.
 
@@ -168,14 +169,14 @@ def solve(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D["
         ('site', True, True)
     """
     return _breather(_run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance,
-                          _D["unit_tolerance"], "solve"))
+                          _D["unit_tolerance"], "solve", start=start, coupling=coupling))
 
 
 @documented(_SECTION)
 @real_numbers
 def floquet(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], tolerance=_D["tolerance"],
             max_iterations=_D["max_iterations"], tail_tolerance=_D["tail_tolerance"],
-            unit_tolerance=_D["unit_tolerance"]):
+            unit_tolerance=_D["unit_tolerance"], start=_D["start"], coupling=_D["coupling"]):
     """Solve, then the Floquet multipliers of the full-period monodromy matrix, the trivial +1 ones
     removed; returns :class:`BrightBreather` with ``floquet`` set.
 
@@ -189,7 +190,7 @@ def floquet(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D
         (True, True)
     """
     return _breather(_run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance,
-                          unit_tolerance, "floquet"))
+                          unit_tolerance, "floquet", start=start, coupling=coupling))
 
 
 @dataclass(frozen=True, repr=False)
@@ -236,7 +237,8 @@ class BrightBranch:
 def continue_branch(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"],
                     tolerance=_D["tolerance"], max_iterations=_D["max_iterations"], tail_tolerance=_D["tail_tolerance"],
                     unit_tolerance=_D["unit_tolerance"], points=_D["points"], ds=_D["ds"], floquet=_D["floquet"],
-                    parameter=_D["parameter"], to=None, locate_tolerance=_D["locate_tolerance"]):
+                    parameter=_D["parameter"], to=None, locate_tolerance=_D["locate_tolerance"], start=_D["start"],
+                    coupling=_D["coupling"]):
     """Solve, then pseudo-arclength continuation in omega_b away from the band edge within the window where
     no harmonic meets a band (or to ``to``), or with ``parameter`` a model parameter at fixed omega_b from
     its value to ``to`` (e.g. the coupling ``C`` of klein_gordon towards the anti-continuum limit), each
@@ -252,7 +254,8 @@ def continue_branch(model=None, omega_b=None, branch=None, center=_D["center"], 
         (4, True)
     """
     d = _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance,
-             "continue", points, ds, floquet, parameter=parameter, to=to, locate_tolerance=locate_tolerance)
+             "continue", points, ds, floquet, parameter=parameter, to=to, locate_tolerance=locate_tolerance,
+             start=start, coupling=coupling)
     return _branch(d)
 
 
@@ -306,7 +309,7 @@ class BrightEvolution:
 def evolve(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D["sites"], tolerance=_D["tolerance"],
            max_iterations=_D["max_iterations"], tail_tolerance=_D["tail_tolerance"],
            unit_tolerance=_D["unit_tolerance"], periods=_D["periods"], perturb=_D["perturb"],
-           perturb_size=_D["perturb_size"], seed=_D["seed"]):
+           perturb_size=_D["perturb_size"], seed=_D["seed"], start=_D["start"], coupling=_D["coupling"]):
     """Solve, Floquet, then integrate the breather (plus a perturbation: ``perturb`` none | unstable |
     random) over ``periods`` periods; returns :class:`BrightEvolution`. ``perturb="unstable"`` on a stable
     breather raises :class:`lrchain.InvalidParameterError` naming ``perturb``.
@@ -322,7 +325,8 @@ def evolve(model=None, omega_b=None, branch=None, center=_D["center"], sites=_D[
         True
     """
     d = _run(model, omega_b, branch, center, sites, tolerance, max_iterations, tail_tolerance, unit_tolerance,
-             "evolve", periods=periods, perturb=perturb, perturb_size=perturb_size, seed=seed)
+             "evolve", periods=periods, perturb=perturb, perturb_size=perturb_size, seed=seed, start=start,
+             coupling=coupling)
     return _evolution(d, d.pop("evolution_t"), d.pop("evolution_deviation"), d.pop("evolution_energy"))
 
 

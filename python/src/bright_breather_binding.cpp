@@ -37,7 +37,7 @@ py::dict bright_solve_job(const LoadedModel& loaded, double omega_b, const std::
                    double tail_tolerance, double unit_tolerance, const std::string& step, double points, double ds,
                    bool branch_floquet, double periods, const std::string& perturb, double perturb_size,
                    std::uint64_t seed, const std::string& parameter, std::optional<double> to,
-                   double locate_tolerance) {
+                   double locate_tolerance, const std::string& start, const std::string& coupling) {
   BrightBreatherConfig c;
   c.step = step == "continue"  ? BrightStep::branch
            : step == "floquet" ? BrightStep::floquet
@@ -58,6 +58,8 @@ py::dict bright_solve_job(const LoadedModel& loaded, double omega_b, const std::
   c.omega_b = omega_b;
   c.branch = branch.value_or("");
   c.center = center;
+  c.start = start;
+  c.coupling = coupling;
   c.sites = integer_keyword(sites, "sites", config::dark_sites.least, config::dark_sites.most);
   c.tolerance = tolerance;
   c.max_iterations = integer_keyword(max_iterations, "max_iterations", 1, config::int32_most);
@@ -100,7 +102,7 @@ void register_bright_breather(py::module_& m) {
   m.def("bright_breather_solve", &bright_solve_job, py::arg("model"), py::arg("omega_b"), py::arg("branch"), py::arg("center"),
         py::arg("sites"), py::arg("tolerance"), py::arg("max_iterations"), py::arg("tail_tolerance"),
         py::arg("unit_tolerance"), py::arg("step"), py::arg("points"), py::arg("ds"), py::arg("branch_floquet"), py::arg("periods"), py::arg("perturb"), py::arg("perturb_size"), py::arg("seed"), py::arg("parameter"), py::arg("to"),
-        py::arg("locate_tolerance"));
+        py::arg("locate_tolerance"), py::arg("start"), py::arg("coupling"));
 }
 
 }  // namespace lrchain::python

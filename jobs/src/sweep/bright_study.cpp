@@ -52,6 +52,8 @@ BrightBreatherConfig read_bright(std::string_view kind, const Document& doc, con
     throw InvalidParameter(bright_key(doc, "omega_b"), "give exactly one of 'omega_b' and 'edge_offset'");
   b.read("branch", c.branch);
   b.read("center", c.center);
+  b.read("start", c.start);
+  b.read("coupling", c.coupling);
   std::int64_t integer = 0;
   if (b.read("sites", integer)) c.sites = Index(integer);
   if (b.read("max_iterations", integer)) c.max_iterations = Index(integer);
