@@ -1,0 +1,118 @@
+// Krein signatures in strain form (sim/bright/krein_signature.hpp: strain_krein_signatures, the lift
+// ring_displacements_of_strain) against an independent computation, the displacement-form monodromy
+// of the same breather lifted to displacements, and at a Krein collision of an fput breather.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <complex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include "lrchain/jobs/bright_breather_job.hpp"
+#include "lrchain/model.hpp"
+#include "lrchain/sim/bright/bright_floquet.hpp"
+#include "lrchain/sim/bright/krein_signature.hpp"
+#include "lrchain/sim/dark/shooting.hpp"
+#include "lrchain/sim/model_lattice.hpp"
+#include "lrchain/sim/model_lattice_bloch.hpp"
+
+using namespace lrchain;
+using namespace lrchain::sim::bright;
+using namespace lrchain::jobs::bright_breather;
+
+namespace {
+
+// The bright job (step, 31 sites) on a shipped model with parameter values set, REQUIRing a breather.
+BrightBreatherResult bright_run(const Model& model, const char* name, BrightStep step, double omega_b,
+                                const char* center, void (*adjust)(BrightBreatherConfig&) = nullptr) {
+  BrightBreatherConfig c;
+  c.step = step;
+  c.model = &model;
+  c.kernels = sim::shipped_lattice_kernels(name);
+  c.omega_b = omega_b;
+  c.sites = 31;
+  c.center = center;
+  if (adjust) adjust(c);
+  validate(c);
+  BrightBreatherResult r = run(c);
+  INFO(failure(r).value_or(""));
+  REQUIRE(!failure(r));
+  return r;
+}
+
+// The mass of every position, field-major (as the job's position_masses).
+Eigen::VectorXd masses_of(const lrchain_lattice_kernels& kernels, const std::vector<double>& parameters, Index sites) {
+  std::vector<double> field_mass(std::size_t(kernels.fields));
+  kernels.masses(parameters.data(), field_mass.data());
+  Eigen::VectorXd m(kernels.fields * sites);
+  for (Index f = 0; f < kernels.fields; ++f) m.segment(f * sites, sites).setConstant(field_mass[std::size_t(f)]);
+  return m;
+}
+
+// A breather of a model with odd forces solved in strain form, its Z(0) lifted to displacements
+// (sum r = 0 by the half-period antisymmetry r(t + T_b/2) = -r(t) of odd forces, so the lift closes on
+// the ring) and its monodromy computed again in displacement form on the same ring: the strain-form
+// signatures must be those of the displacement form, and the lifted eigenvectors its eigenvectors.
+void check_against_displacement_form(const char* name, const std::vector<std::pair<std::string, double>>& values,
+                                     double omega_b, const char* center, std::size_t expected_on_circle) {
+  const Model model = shipped_model(name, values);
+  const BrightBreatherResult r = bright_run(model, name, BrightStep::floquet, omega_b, center);
+  REQUIRE(r.edge.mean_flow);
+  const lrchain_lattice_kernels& kernels = *sim::shipped_lattice_kernels(name);
+  const std::vector<double> parameters = sim::lattice_parameters(model);
+  const Index sites = 31;
+  CHECK(std::abs(r.z0.head(sites).sum()) < 1e-9);  // the ring closes (measured 3e-14)
+  const Eigen::VectorXd masses = masses_of(kernels, parameters, sites);
+  const sim::dark::DarkShooting strain(kernels, parameters, sites, true, sim::dark::ShootingMode::reversible);
+  const sim::dark::DarkShooting displacement(kernels, parameters, sites, false, sim::dark::ShootingMode::reversible);
+  Eigen::VectorXd u0(r.z0.size());
+  sim::CompiledLattice(kernels, parameters, sites, true, sim::LatticeForm::strain).displacements_of(r.z0.data(), u0.data());
+  const Eigen::MatrixXd mr = strain.monodromy(r.z0, omega_b), mu = displacement.monodromy(u0, omega_b);
+  // both forms have four trivial multipliers near +1 (phase and translation, or total strain)
+  const BrightFloquet fr = bright_floquet(mr, true), fu = bright_floquet(mu, true);
+  REQUIRE(fr.trivial_found);
+  REQUIRE(fu.trivial_found);
+  const std::vector<KreinMultiplier> ks = strain_krein_signatures(mr, masses, sites, 1e-6, fr.trivial_distance);
+  const std::vector<KreinMultiplier> kd = krein_signatures(mu, masses, 1e-6, fu.trivial_distance);
+  REQUIRE(ks.size() == kd.size());
+  CHECK(ks.size() == expected_on_circle);
+  int plus = 0;
+  for (std::size_t i = 0; i < ks.size(); ++i) {
+    INFO("multiplier ", i, " at angle ", std::arg(ks[i].lambda));
+    CHECK(std::abs(ks[i].lambda - kd[i].lambda) < 1e-9);  // measured 1e-15
+    CHECK(ks[i].signature != 0);
+    CHECK(ks[i].signature == kd[i].signature);
+    plus += ks[i].signature > 0;
+  }
+  CHECK(plus > 0);  // both signatures occur, so a sign convention flipped in one form would show
+  CHECK(plus < int(ks.size()));
+  // The lift of each strain-form eigenvector is an eigenvector of the displacement-form monodromy.
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(mr, true);
+  for (Eigen::Index k = 0; k < solver.eigenvalues().size(); ++k) {
+    const std::complex<double> l = solver.eigenvalues()[k];
+    if (std::abs(l - 1.0) <= fr.trivial_distance * (1 + 1e-6)) continue;
+    const Eigen::VectorXcd u = ring_displacements_of_strain(solver.eigenvectors().col(k), masses, sites);
+    INFO("multiplier ", l);
+    CHECK((mu * u - l * u).norm() <= 1e-9 * u.norm());  // measured 1e-14
+  }
+}
+
+}  // namespace
+
+TEST_CASE("bright strain form: Krein signatures of the fput Page mode equal the displacement form's" * doctest::test_suite("fast")) {
+  // fput with a = 0 (odd force r + r^3/2), the bond-centred (Page) mode at omega_b = 2.2 on 31 sites:
+  // stable (Sandusky, Page & Schmidt 1992), so all 62 - 4 non-trivial multipliers lie on the circle,
+  // 29 in the upper half; measured: 10 with signature +1, 19 with -1.
+  check_against_displacement_form("fput", {{"a", 0.0}}, 2.2, "bond", 29);
+}
+
+TEST_CASE("bright strain form: Krein signatures of a two-field lattice equal the displacement form's" * doctest::test_suite("fast")) {
+  // resonant_chain_polynomial with odd forces (b1 = b2 = 0): beads and resonators, w1 = v - u
+  // reconstructed by the lift; the site-centred breather above the optical band at omega_b = 2.6, 31
+  // sites, is stable (measured), so all 124 - 4 non-trivial multipliers lie on the circle, 60 in the
+  // upper half.
+  check_against_displacement_form("resonant_chain_polynomial", {{"b1", 0.0}, {"b2", 0.0}}, 2.6, "site", 60);
+}
