@@ -5,14 +5,18 @@
 
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
 
+#include <nlohmann/json.hpp>
+
 #include "lrchain/jobs/bright_breather_job.hpp"
 #include "lrchain/model.hpp"
+#include "lrchain/sim/bright/branch_bifurcations.hpp"
 #include "lrchain/sim/bright/bright_floquet.hpp"
 #include "lrchain/sim/bright/krein_signature.hpp"
 #include "lrchain/sim/dark/shooting.hpp"
@@ -25,9 +29,10 @@ using namespace lrchain::jobs::bright_breather;
 
 namespace {
 
-// The bright job (step, 31 sites) on a shipped model with parameter values set, REQUIRing a breather.
+// The bright job (step, 31 sites) on a shipped model with parameter values set, REQUIRing a breather;
+// `adjust` sets the rest of the config.
 BrightBreatherResult bright_run(const Model& model, const char* name, BrightStep step, double omega_b,
-                                const char* center, void (*adjust)(BrightBreatherConfig&) = nullptr) {
+                                const char* center, const std::function<void(BrightBreatherConfig&)>& adjust = {}) {
   BrightBreatherConfig c;
   c.step = step;
   c.model = &model;
@@ -115,4 +120,48 @@ TEST_CASE("bright strain form: Krein signatures of a two-field lattice equal the
   // sites, is stable (measured), so all 124 - 4 non-trivial multipliers lie on the circle, 60 in the
   // upper half.
   check_against_displacement_form("resonant_chain_polynomial", {{"b1", 0.0}, {"b2", 0.0}}, 2.6, "site", 60);
+}
+
+TEST_CASE("bright strain form: the fput Page mode's Krein collision joins multipliers of opposite signature" * doctest::test_suite("fast")) {
+  // fput at its defaults (a = 1/4, b = 1/2: a mean flow, so strain form only), the bond-centred breather
+  // on 31 sites continued from omega_b = 2.2: stable there, unstable at the next point 2.2574; the
+  // oscillatory instability is located at omega* = 2.2010332 (measured; multiplier 0.82601 + 0.56380 i,
+  // angle 0.59923, modulus 1.00008 just past it).
+  const Model fput = shipped_model("fput");
+  const BrightBreatherResult r = bright_run(fput, "fput", BrightStep::branch, 2.2, "bond", [](BrightBreatherConfig& c) {
+    c.points = 2, c.ds = 0.2;
+  });
+  REQUIRE(r.edge.mean_flow);
+  REQUIRE(r.branch_krein.size() == 2);
+  // stable at 2.2: all 62 - 4 non-trivial multipliers on the circle, 29 in the upper half, in the JSON
+  const nlohmann::json first = to_json(r)["branch"]["branch_points"][0]["krein"];
+  REQUIRE(first.is_array());
+  CHECK(first.size() == 29);
+  for (const auto& m : first) CHECK(std::abs(m["signature"].get<int>()) == 1);
+  const BranchBifurcation* k = nullptr;
+  for (const BranchBifurcation& b : r.bifurcations)
+    if (b.kind == "krein_collision") k = &b;
+  REQUIRE(k);
+  REQUIRE(k->located);
+  REQUIRE(k->multiplier);
+  CHECK(k->omega_b == doctest::Approx(2.2010332).epsilon(1e-6));
+  CHECK(std::abs(*k->multiplier) > 1 + 1e-6);
+  const double angle = std::arg(*k->multiplier);
+  // The Krein signatures within 3e-3 rad of the collision's angle, 1e-4 before and after it, on the
+  // branch's last point solved there: before, MacKay's criterion (krein_signature.hpp) requires the pair
+  // about to collide to carry opposite signatures (measured: 0.59713 with -1, 0.60049 with +1; the next
+  // multipliers lie at 0.5839 and 0.5789, outside the window); after, the pair has left the circle.
+  auto near_collision = [&](double to, bool stable) {
+    const BrightBreatherResult s = bright_run(fput, "fput", BrightStep::branch, 2.2, "bond", [&](BrightBreatherConfig& c) {
+      c.points = 20, c.ds = 0.2, c.locate_tolerance = 0, c.to = to;
+    });
+    REQUIRE(s.branch.points.back().omega_b == doctest::Approx(to).epsilon(1e-14));
+    CHECK(s.branch_floquets.back().stable == stable);
+    std::pair<int, int> signs{0, 0};  // +1, -1
+    for (const KreinMultiplier& m : s.branch_krein.back())
+      if (std::abs(std::arg(m.lambda) - angle) < 3e-3) (m.signature > 0 ? signs.first : signs.second)++;
+    return signs;
+  };
+  CHECK(near_collision(k->omega_b - 1e-4, true) == std::pair<int, int>{1, 1});
+  CHECK(near_collision(k->omega_b + 1e-4, false) == std::pair<int, int>{0, 0});
 }
