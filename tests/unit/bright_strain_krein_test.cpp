@@ -165,3 +165,42 @@ TEST_CASE("bright strain form: the fput Page mode's Krein collision joins multip
   CHECK(near_collision(k->omega_b - 1e-4, true) == std::pair<int, int>{1, 1});
   CHECK(near_collision(k->omega_b + 1e-4, false) == std::pair<int, int>{0, 0});
 }
+
+TEST_CASE("bright strain form: an eigenvector that does not close on the ring gets no signature" * doctest::test_suite("fast")) {
+  // A ring of 2 sites, one field of mass 1, state (r0, r1, r0dot, r1dot), period 1. The difference mode
+  // d = (r0 - r1)/sqrt(2) is an oscillator of frequency 0.7: multiplier exp(0.7 i), eigenvector r0 = -r1
+  // = 1, r0dot = -r1dot = 0.7 i (sum r = 0: it closes), lifted to u = (1/2, -1/2), udot = 0.7 i u, so
+  // Im(conj(u) udot) > 0: signature +1 (a positive-energy oscillator, as the displacement-form test in
+  // bright_branch_bifurcations_test.cpp). The sum mode (r0 + r1)/sqrt(2), frequency 1.9, changes the
+  // total strain (which a lattice conserves): it cannot be lifted, signature 0 (null in the JSON).
+  const double w1 = 0.7, w2 = 1.9;
+  auto oscillator = [](double w) {
+    Eigen::Matrix2d m;
+    m << std::cos(w), std::sin(w) / w, -w * std::sin(w), std::cos(w);
+    return m;
+  };
+  Eigen::Matrix2d q;  // r = q (d, s), orthogonal
+  q << 1, 1, -1, 1;
+  q /= std::sqrt(2.0);
+  Eigen::MatrixXd modes = Eigen::MatrixXd::Zero(4, 4);  // in (d, s, ddot, sdot)
+  const Eigen::Matrix2d d = oscillator(w1), s = oscillator(w2);
+  modes(0, 0) = d(0, 0), modes(0, 2) = d(0, 1), modes(2, 0) = d(1, 0), modes(2, 2) = d(1, 1);
+  modes(1, 1) = s(0, 0), modes(1, 3) = s(0, 1), modes(3, 1) = s(1, 0), modes(3, 3) = s(1, 1);
+  Eigen::MatrixXd change = Eigen::MatrixXd::Zero(4, 4);
+  change.block(0, 0, 2, 2) = q, change.block(2, 2, 2, 2) = q;
+  const Eigen::MatrixXd monodromy = change * modes * change.transpose();
+  const std::vector<KreinMultiplier> k = strain_krein_signatures(monodromy, Eigen::Vector2d(1.0, 1.0), 2, 1e-9);
+  REQUIRE(k.size() == 2);
+  CHECK(std::arg(k[0].lambda) == doctest::Approx(w1).epsilon(1e-12));
+  CHECK(k[0].signature == 1);
+  CHECK(std::arg(k[1].lambda) == doctest::Approx(w2).epsilon(1e-12));
+  CHECK(k[1].signature == 0);
+  // the lift of the closing eigenvector: u = (1/2, -1/2) r0, udot = 0.7 i u
+  Eigen::VectorXcd v(4);
+  v << 1, -1, std::complex<double>(0, w1), std::complex<double>(0, -w1);
+  const Eigen::VectorXcd u = ring_displacements_of_strain(v, Eigen::Vector2d(1.0, 1.0), 2);
+  CHECK(std::abs(u[0] - 0.5) < 1e-15);
+  CHECK(std::abs(u[1] + 0.5) < 1e-15);
+  CHECK(std::abs(u[2] - std::complex<double>(0, 0.5 * w1)) < 1e-15);
+  CHECK(std::abs(u[3] + std::complex<double>(0, 0.5 * w1)) < 1e-15);
+}
