@@ -202,7 +202,8 @@ class BrightBranch:
     ``bifurcations`` (dicts: kind fold | branch_point | period_doubling | period_tripling | krein_collision,
     index, omega_b, norm_squared, omega_low, omega_high, located, location_error, multiplier [re, im] and
     multiplier_modulus, None when not located) and ``krein`` (per point a list of dicts angle, modulus,
-    signature for the multipliers on the upper unit circle; None in strain form or without Floquet), the
+    signature for the multipliers on the upper unit circle, in strain form of the eigenvectors lifted to
+    displacements; None without Floquet), the
     continued ``parameter`` (omega_b or a model parameter at fixed omega_b) and its ``values`` per point.
     ``to_hdf5(path)`` writes the file ``lrchain bright continue --format hdf5`` writes (:mod:`lrchain.hdf5`);
     :func:`lrchain.load` reads it back; ``to_xarray()`` gives a Dataset on ``point``."""

@@ -70,6 +70,17 @@ def test_continue_branch_rises_from_the_edge():
     assert len(b.krein[0]) >= 55 and all(m["signature"] == -1 for m in b.krein[0])
 
 
+def test_continue_branch_gives_krein_signatures_in_strain_form():
+    # fput at its defaults has a mean flow (strain form); its bond-centred breather on 31 sites is stable at
+    # 2.2 (the 58 non-trivial multipliers on the circle, 29 in the upper half, of both signatures) and
+    # loses stability at a Krein collision located at 2.2010332 (tests/unit/bright_strain_krein_test.cpp)
+    b = bright.continue_branch(lrchain.load_model("fput"), omega_b=2.2, center="bond", sites=31, points=2, ds=0.2)
+    assert b.start.summary["lattice_form"] == "strain"
+    assert len(b.krein[0]) == 29 and {m["signature"] for m in b.krein[0]} == {-1, 1}
+    collisions = [x for x in b.bifurcations if x["kind"] == "krein_collision"]
+    assert len(collisions) == 1 and collisions[0]["omega_b"] == pytest.approx(2.2010332, rel=1e-6)
+
+
 def test_continue_branch_locates_a_period_tripling():
     # The job's numbers (tests/unit/bright_crossing_location_test.cpp): klein_gordon at C = 0.3 from omega_b
     # 2.05, a multiplier through exp(2 pi i/3) located at 2.0510924 to 1e-6; here the keyword and the dicts.

@@ -62,11 +62,12 @@ json branch_json(const BrightBreatherResult& r) {
       point["stable"] = r.branch_floquets[k].stable;
       point["max_nontrivial_modulus"] = r.branch_floquets[k].max_nontrivial_modulus;
     }
-    point["krein"] = nullptr;  // strain form or no Floquet: no signatures
+    point["krein"] = nullptr;  // no Floquet: no signatures
     if (k < r.branch_krein.size()) {
       json krein = json::array();
-      for (const auto& m : r.branch_krein[k])
-        krein.push_back({{"angle", std::arg(m.lambda)}, {"modulus", std::abs(m.lambda)}, {"signature", m.signature}});
+      for (const auto& m : r.branch_krein[k])  // signature 0: undetermined (the strain lift does not close)
+        krein.push_back({{"angle", std::arg(m.lambda)}, {"modulus", std::abs(m.lambda)},
+                         {"signature", m.signature != 0 ? json(m.signature) : json(nullptr)}});
       point["krein"] = krein;
     }
     points.push_back(point);

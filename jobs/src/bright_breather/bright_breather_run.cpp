@@ -142,9 +142,11 @@ void keep_bright_points(const BrightBreatherConfig& c,
                                            sim::dark::ShootingMode::reversible, {}, contacts);
     const Eigen::MatrixXd monodromy = shooting.monodromy(p.z0, p.omega_b);
     r.branch_floquets.push_back(bright_floquet(monodromy, r.edge.mean_flow, {c.unit_tolerance}));
-    if (!r.edge.mean_flow)
-      r.branch_krein.push_back(krein_signatures(monodromy, position_masses(*c.kernels, parameters, c.sites),
-                                                c.unit_tolerance, r.branch_floquets.back().trivial_distance));
+    const Eigen::VectorXd masses = position_masses(*c.kernels, parameters, c.sites);
+    const double trivial = r.branch_floquets.back().trivial_distance;
+    r.branch_krein.push_back(r.edge.mean_flow
+                                 ? strain_krein_signatures(monodromy, masses, c.sites, c.unit_tolerance, trivial)
+                                 : krein_signatures(monodromy, masses, c.unit_tolerance, trivial));
   }
   r.bifurcations = branch_bifurcations(branch_samples(r, c.unit_tolerance));
 }

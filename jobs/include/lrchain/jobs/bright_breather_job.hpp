@@ -137,8 +137,8 @@ struct BrightBreatherResult {
   // collisions (bracketed, then located by bisection: locate_tolerance) along the kept points
   // (sim/bright/branch_bifurcations.hpp)
   std::vector<sim::bright::BranchBifurcation> bifurcations;
-  // branch_floquet, displacement form: per point the Krein signatures of the multipliers on the upper
-  // unit circle (krein_signature.hpp); empty in strain form (no canonical form there)
+  // branch_floquet: per point the Krein signatures of the multipliers on the upper unit circle
+  // (krein_signature.hpp; strain form: of the eigenvectors lifted to displacements)
   std::vector<std::vector<sim::bright::KreinMultiplier>> branch_krein;
   // the non-resonant window of omega_b (high: inf when unbounded); a model parameter: its start and c.to
   double window_low = 0, window_high = 0;
