@@ -40,8 +40,6 @@ std::vector<double> ramp_amplitudes(const WaveConfig& c) {
 void check_standing(const WaveConfig& c) {
   if (!std::isfinite(double(c.ring_sites)) || c.ring_sites < 8 || c.ring_sites > 100000)
     throw InvalidParameter("ring_sites", fmt::format("{} is outside [8, 100000]", c.ring_sites));
-  if (c.format != "csv")
-    throw InvalidParameter("format", "must be csv for standing waves (result.h5 holds travelling waves only)");
   const Index j = ring_index(c);
   if (j <= 0 || 2 * j >= c.ring_sites)
     throw InvalidParameter("theta", fmt::format("moves to {} on a ring of {} sites (ring_sites): a standing wave needs "
