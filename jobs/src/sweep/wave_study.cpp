@@ -72,8 +72,7 @@ JobResult standing_point(const WaveConfig& c) {
   JobResult r;
   if (w.failure || !w.standing_floquet) {
     r.status = PointStatus::numerical_failure;
-    r.reason = fmt::format("no standing wave at amplitude {}: {}", w.failed_at.value_or(c.amplitude),
-                           w.failure.value_or("no Floquet multipliers"));
+    r.reason = w.failure.value_or("no Floquet multipliers");  // names the amplitude and theta
     return r;
   }
   const auto& wave = w.standing.back();
