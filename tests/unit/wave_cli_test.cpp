@@ -63,8 +63,8 @@ TEST_CASE("wave cli: standing maps its options, writes its files, refuses theta 
   check_refused_run({"wave", "standing", "--model", "fput", "--theta", "1", "--amplitude", "0.02", "--ring-sites", "4"},
                     "invalid ring-sites", source_dir);
   check_refused_run({"wave", "standing", "--model", "fput", "--theta", "1", "--amplitude", "0.02", "--ring-sites", "20",
-                     "--format", "hdf5"},
-                    "--format needs --out", source_dir);
+                     "--format", "netcdf"},
+                    "--format", source_dir);
   const fs::path out = fs::temp_directory_path() / ("lrchain-wave-standing-cli-" + std::to_string(::getpid()));
   const auto r = run_lrchain({"wave", "standing", "--model", "fput", "--theta", "2*pi/5", "--amplitude", "0.02",
                               "--ring-sites", "20", "--ramp", "2", "--json", "--out", out.string(), "--format", "hdf5"},
