@@ -177,6 +177,16 @@ def test_standing_wave_file_holds_the_json_numbers_and_equals_python(tmp_path, c
             assert f[key][()].tolist() == [w[key] for w in s["waves"]], key
         assert f["coefficients"][()].tolist() == s["coefficients"]  # [field][site][k]
         assert f["coefficients"].shape == (1, s["period_sites"], s["waves"][-1]["harmonics"] + 1)
+        # the profiles at t = 0 and a quarter period: standing_profile.csv's (printed to 17 digits)
+        csv = np.loadtxt(tmp_path / "cli" / "standing_profile.csv", delimiter=",", skiprows=1)
+        assert f["profile"][()].tolist() == [csv[:, 1].tolist()]
+        assert f["profile_quarter_period"][()].tolist() == [csv[:, 2].tolist()]
+        # and the orbit's: u(0) = sum_k c_k, u(T/4) = sum_k c_k cos(k pi/2)
+        c = f["coefficients"][()]
+        k = np.arange(c.shape[2])
+        np.testing.assert_allclose(f["profile"][()], c.sum(axis=2), rtol=0, atol=1e-15)
+        np.testing.assert_allclose(f["profile_quarter_period"][()], (c * np.cos(k * np.pi / 2)).sum(axis=2), rtol=0,
+                                   atol=1e-15)
         mu = f["floquet_multipliers"][()]
         assert mu.dtype == np.complex128 and mu.real.tolist() == s["floquet"]["re"]
         assert mu.imag.tolist() == s["floquet"]["im"]
@@ -189,8 +199,8 @@ def test_standing_wave_file_holds_the_json_numbers_and_equals_python(tmp_path, c
                                    ring_sites=10)
     python.to_hdf5(tmp_path / "python.h5")
     with h5py.File(path, "r") as a, h5py.File(tmp_path / "python.h5", "r") as b:
-        for name in ("amplitude", "omega", "omega_shift", "harmonics", "residual", "coefficients",
-                     "floquet_multipliers"):
+        for name in ("amplitude", "omega", "omega_shift", "harmonics", "residual", "coefficients", "profile",
+                     "profile_quarter_period", "floquet_multipliers"):
             np.testing.assert_array_equal(a[name][()], b[name][()])
     loaded = lrchain.load(tmp_path / "cli")
     assert isinstance(loaded, lrchain.wave.StandingWave)

@@ -7,6 +7,7 @@
 
 #include "lrchain/jobs/hdf5_tree.hpp"
 #include "lrchain/jobs/result_hdf5.hpp"
+#include "wave_standing.hpp"
 
 namespace lrchain::jobs::wave {
 
@@ -26,8 +27,8 @@ void write_vector(jobs::Hdf5TreeFile& file, const std::string& name, const std::
   file.write_dataset(name, Hdf5Element::float64, v.data(), {v.size()});
 }
 
-// A standing wave's datasets (its "standing" object): the ramp, the orbit's coefficients c_{f,n,k} and the
-// Floquet multipliers on the ring.
+// A standing wave's datasets (its "standing" object): the ramp, the orbit's coefficients c_{f,n,k}, its
+// profiles at t = 0 and a quarter period (standing_profile.csv's) and the Floquet multipliers on the ring.
 void write_standing(jobs::Hdf5TreeFile& file, const json& st) {
   file.write_attribute("/", "ring_sites", st.at("ring_sites").get<std::int64_t>());
   file.write_attribute("/", "period_sites", st.at("period_sites").get<std::int64_t>());
@@ -36,12 +37,23 @@ void write_standing(jobs::Hdf5TreeFile& file, const json& st) {
     write_vector(file, std::string("/") + key, per_wave(waves, key));
   const json& c = st.at("coefficients");  // [field][site][k]
   if (!c.empty()) {
+    const std::size_t fields = c.size(), sites = c.at(0).size(), harmonics = c.at(0).at(0).size();
     std::vector<double> values;
-    for (const json& field : c)
-      for (const json& site : field)
-        for (const json& x : site) values.push_back(x.get<double>());
-    file.write_dataset("/coefficients", Hdf5Element::float64, values.data(),
-                       {c.size(), c.at(0).size(), c.at(0).at(0).size()});
+    sim::wave::StandingWave w;  // the last wave, for its profiles at t = 0 and a quarter period
+    w.omega = st.at("omega").get<double>();
+    w.sites = Index(sites);
+    w.harmonics = Index(harmonics) - 1;
+    w.coefficients.resize(Index(fields * sites), Index(harmonics));
+    for (std::size_t f = 0; f < fields; ++f)
+      for (std::size_t n = 0; n < sites; ++n)
+        for (std::size_t k = 0; k < harmonics; ++k) {
+          values.push_back(c[f][n][k].get<double>());
+          w.coefficients(Index(f * sites + n), Index(k)) = values.back();
+        }
+    file.write_dataset("/coefficients", Hdf5Element::float64, values.data(), {fields, sites, harmonics});
+    const auto [at0, at_quarter] = standing_profiles(w);
+    file.write_dataset("/profile", Hdf5Element::float64, at0.data(), {fields, sites});
+    file.write_dataset("/profile_quarter_period", Hdf5Element::float64, at_quarter.data(), {fields, sites});
   }
   if (st.at("floquet").is_object()) {
     const json& f = st["floquet"];

@@ -115,6 +115,13 @@ json standing_json(const WaveResult& r) {
   return j;
 }
 
+std::array<Eigen::VectorXd, 2> standing_profiles(const sim::wave::StandingWave& w) {
+  std::array<Eigen::VectorXd, 2> at;
+  sim::wave::standing_positions(w, w.sites, 0.0, at[0]);
+  sim::wave::standing_positions(w, w.sites, std::numbers::pi / (2 * w.omega), at[1]);
+  return at;
+}
+
 void write_standing(const WaveResult& r, const std::string& dir, Figures& figures) {
   std::ostringstream os;
   os << "amplitude,omega,omega_shift,harmonics,tail,residual\n";
@@ -125,9 +132,7 @@ void write_standing(const WaveResult& r, const std::string& dir, Figures& figure
   if (r.failure) return;
   const auto& w = r.standing.back();
   const Index fields = w.coefficients.rows() / w.sites;
-  Eigen::VectorXd at0, at_quarter;
-  sim::wave::standing_positions(w, w.sites, 0.0, at0);
-  sim::wave::standing_positions(w, w.sites, std::numbers::pi / (2 * w.omega), at_quarter);
+  const auto [at0, at_quarter] = standing_profiles(w);
   std::ostringstream p;
   p << "n";
   for (Index f = 0; f < fields; ++f) p << ",u" << f << "_t0,u" << f << "_quarter_period";

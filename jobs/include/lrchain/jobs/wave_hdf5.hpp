@@ -13,7 +13,8 @@
 //                    fate_participation, fate_entropy, fate_dark, fate_energy_density and the root attribute fate
 //   standing         instead: amplitude, omega, omega_shift, harmonics, residual (one entry per wave of the
 //                    ramp), coefficients c_{f,n,k} of the last wave's orbit u_f[n](t) = sum_k c_{f,n,k}
-//                    cos(k omega t) (fields x period_sites x (H+1)), floquet_multipliers (complex, by
+//                    cos(k omega t) (fields x period_sites x (H+1)), profile and profile_quarter_period (u_f[n]
+//                    at t = 0 and pi / (2 omega), fields x period_sites), floquet_multipliers (complex, by
 //                    decreasing modulus, on the ring) and the root attributes ring_sites, period_sites
 //   /summary         the summary as a tree (objects groups, numbers and strings attributes, null left out)
 #include <filesystem>
