@@ -311,9 +311,13 @@ def _wave_branch(f, cls):
 
 
 def _standing_wave(f, cls):
+    from .errors import NumericalFailure
     from .wave import _standing
 
     d = json.loads(_text(f.attrs["summary_json"]))
+    if d["failure"] is not None:  # the command's exit 3: the file holds the ramp up to the failure, no wave
+        raise NumericalFailure(f"load: {f.filename} holds no standing wave at A = {d['options']['amplitude']} "
+                               f"({d['failure']}); its ramp is in the file's amplitude and omega")
     d["coefficients_array"] = f["coefficients"][()]
     return _standing(d)
 

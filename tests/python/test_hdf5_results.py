@@ -207,6 +207,15 @@ def test_standing_wave_file_holds_the_json_numbers_and_equals_python(tmp_path, c
     np.testing.assert_array_equal(loaded.coefficients, python.coefficients)
     np.testing.assert_array_equal(loaded.multipliers, python.multipliers)
     assert (loaded.omega, loaded.stable, loaded.branch) == (python.omega, python.stable, python.branch)
+    # no wave at the amplitude (exit 3): the file holds the ramp before it; lrchain.load says why there is no wave
+    done = subprocess.run([str(_cli_path()), "wave", "standing", "--model", "fput", "--theta", "9*pi/10", "--amplitude",
+                           "0.8", "--ring-sites", "20", "--out", str(tmp_path / "failed"), "--format", "hdf5"],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 3, done.stderr
+    with h5py.File(tmp_path / "failed" / "result.h5", "r") as f:
+        assert f["amplitude"][()].tolist() == [0.2] and "coefficients" not in f and "floquet_multipliers" not in f
+    with pytest.raises(lrchain.NumericalFailure, match="no standing wave at A = 0.8.*Newton did not converge"):
+        lrchain.load(tmp_path / "failed")
 
 
 def test_new_options_refuse_bad_input_and_write_nothing(tmp_path):
