@@ -1,5 +1,5 @@
-// The "wave standing" sweep job: a point's scalars and rows are `lrchain wave standing`'s (jobs/wave_job.hpp)
-// for the same options, bit for bit; at small amplitude Klein-Gordon's multipliers on the ring are the
+// The "wave standing" sweep job: a point's scalars and rows are `lrchain wave standing`'s (jobs/wave_job.hpp,
+// and the command's JSON) for the same options, bit for bit; at small amplitude Klein-Gordon's multipliers on the ring are the
 // linear lattice's e^{+-2 pi i Omega(2 pi m / N) / omega}, and its cubic coefficient b moves omega^2 as
 // the Lindstedt-Poincare expansion says; a point the job refuses is recorded invalid naming [wave]'s key;
 // mpirun -n 2 gives the threads' results bit for bit.
@@ -13,12 +13,15 @@
 #include <numbers>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "lrchain/jobs/sweep/results_file.hpp"
 #include "lrchain/jobs/sweep/sweep_config.hpp"
 #include "lrchain/jobs/sweep/sweep_run.hpp"
 #include "lrchain/jobs/wave_job.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/model_lattice_bloch.hpp"
+#include "../support/run_lrchain.hpp"
 #include "sweep_test_files.hpp"
 
 namespace fs = std::filesystem;
@@ -76,6 +79,18 @@ TEST_CASE("sweep wave standing: a point is the standing-wave job's result, and K
       CHECK(r.rows[p][3 * i] == f.multipliers[i].real());
       CHECK(r.rows[p][3 * i + 1] == f.multipliers[i].imag());
     }
+  }
+  // The command itself (its JSON prints every double to round-trip): the same numbers.
+  const auto cli = lrchain::test::run_lrchain({"wave", "standing", "--model", "klein_gordon", "--theta", "2*pi/5",
+                                               "--amplitude", "0.3", "--ramp", "2", "--ring-sites", "10", "--json"});
+  REQUIRE_MESSAGE(cli.exit_code == 0, cli.err);
+  const nlohmann::json printed = nlohmann::json::parse(cli.out).at("standing");
+  CHECK(printed.at("omega").get<double>() == sweep_scalar(r, "omega", 1));
+  CHECK(printed.at("floquet").at("largest_modulus").get<double>() == sweep_scalar(r, "largest_modulus", 1));
+  CHECK(printed.at("waves").back().at("residual").get<double>() == sweep_scalar(r, "residual", 1));
+  for (std::size_t i = 0; i < 20; ++i) {
+    CHECK(printed.at("floquet").at("re").at(i).get<double>() == r.rows[1][3 * i]);
+    CHECK(printed.at("floquet").at("im").at(i).get<double>() == r.rows[1][3 * i + 1]);
   }
   // The small wave: the linear lattice's multipliers. Each ring mode k_m = 2 pi m / N (m = 0..N-1) of
   // u'' = C (u[n+1] - 2u[n] + u[n-1]) - w0^2 u oscillates at Omega(k)^2 = w0^2 + 4C sin^2(k/2) (C = 1/10,
