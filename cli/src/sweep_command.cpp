@@ -131,7 +131,7 @@ void register_sweep(CLI::App& app) {
   auto a = std::make_shared<SweepArguments>();
   auto* cmd = app.add_subcommand(
       "sweep",
-      "Run one job (bright, drive, modulated, dark continue, regime intervals, wave stability, wave fate; bright, ring, "
+      "Run one job (bright, drive, modulated, dark continue, regime intervals, wave stability, wave fate, wave standing; bright, ring, "
       "dark continue, regime intervals, the wave jobs and bright floquet|continue of model files) over a grid or list of parameter points described in a TOML "
       "file, in-process on threads (and over MPI ranks under mpirun or srun); results in one HDF5 file "
       "(and a CSV view for small sweeps). A stopped sweep continues from its results file.");

@@ -39,7 +39,11 @@ file's run adds lattice_code).
   solve|stability|continue --format hdf5``): one entry per wave in ``amplitude``, ``omega``, ``omega_shift``,
   ``nls_omega_shift``, ``harmonics``; a wave's ``xi`` and ``profile`` (fields x phases); after stability
   ``K``, ``growth_rate``, ``nls_growth_rate``; the summary as a tree and as exact JSON text
-  (``summary_json``), ``branch``, ``theta`` (lrchain/jobs/wave_hdf5.hpp).
+  (``summary_json``), ``branch``, ``theta`` (lrchain/jobs/wave_hdf5.hpp); :class:`~lrchain.wave.StandingWave`
+  (``lrchain wave standing --format hdf5``): the ramp's ``amplitude``, ``omega``, ``omega_shift``, ``harmonics``,
+  ``residual``, the orbit's ``coefficients`` (fields x sites x (H+1)), its ``profile`` and
+  ``profile_quarter_period`` (fields x sites, at t = 0 and a quarter period), ``floquet_multipliers`` (complex), the
+  root attributes ``ring_sites``, ``period_sites`` and the summary as for a travelling wave.
 
 :func:`lrchain.load` reads any of these files back into its result class (:mod:`lrchain.reading`).
 

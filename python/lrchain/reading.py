@@ -7,7 +7,7 @@
   :class:`lrchain.Coefficients`, :class:`lrchain.regime.Intervals`, :class:`~lrchain.regime.RegimeMap`,
   :class:`~lrchain.regime.BoundaryCurve`, :class:`lrchain.bright.BrightBreather`,
   :class:`~lrchain.bright.BrightBranch`, :class:`~lrchain.bright.BrightEvolution`, :class:`lrchain.wave.TravellingWave`,
-  :class:`~lrchain.wave.WaveBranch`), with the same arrays, bit for bit, and the summary read from its
+  :class:`~lrchain.wave.WaveBranch`, :class:`~lrchain.wave.StandingWave`), with the same arrays, bit for bit, and the summary read from its
   tree (a bright breather's and a wave's from its exact JSON text; layout: :mod:`lrchain.hdf5`);
 - a sweep's results file (``lrchain sweep``) -> an :class:`xarray.Dataset` (:func:`lrchain.open_sweep`);
 - a folder a command wrote (``--out DIR``) -> its ``result.h5`` or, failing that, its one sweep file;
@@ -310,6 +310,18 @@ def _wave_branch(f, cls):
     return _branch(json.loads(_text(f.attrs["summary_json"])))
 
 
+def _standing_wave(f, cls):
+    from .errors import NumericalFailure
+    from .wave import _standing
+
+    d = json.loads(_text(f.attrs["summary_json"]))
+    if d["failure"] is not None:  # the command's exit 3: the file holds the ramp up to the failure, no wave
+        raise NumericalFailure(f"load: {f.filename} holds no standing wave at A = {d['options']['amplitude']} "
+                               f"({d['failure']}); its ramp is in the file's amplitude and omega")
+    d["coefficients_array"] = f["coefficients"][()]
+    return _standing(d)
+
+
 def _readers():
     """Result class name (the files' ``lrchain_result``) -> (class, reader)."""
     from . import bright, dark, regime, simulate, wave
@@ -327,7 +339,8 @@ def _readers():
             "BrightBreather": (bright.BrightBreather, _bright_breather),
             "BrightBranch": (bright.BrightBranch, _bright_branch),
             "BrightEvolution": (bright.BrightEvolution, _bright_evolution),
-            "TravellingWave": (wave.TravellingWave, _travelling_wave), "WaveBranch": (wave.WaveBranch, _wave_branch)}
+            "TravellingWave": (wave.TravellingWave, _travelling_wave), "WaveBranch": (wave.WaveBranch, _wave_branch),
+            "StandingWave": (wave.StandingWave, _standing_wave)}
 
 
 def _load_hdf5(path):

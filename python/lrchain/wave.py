@@ -114,6 +114,11 @@ class StandingWave:
     stable: bool
     summary: dict
 
+    def to_hdf5(self, path):
+        """Writes the standing wave with the C++ job layer's writer: the file ``lrchain wave standing --format
+        hdf5`` writes (layout: lrchain/jobs/wave_hdf5.hpp); :func:`lrchain.load` reads it back."""
+        _write(path, self.summary)
+
     def __repr__(self):
         return (f"StandingWave(theta={self.theta}, A={self.amplitude}, omega={self.omega:.12g}, "
                 f"{self.harmonics} harmonics, {'stable' if self.stable else 'unstable'})")
@@ -290,8 +295,12 @@ def standing(model=None, branch=None, theta=None, amplitude=None, ramp=_D["ramp"
         >>> round((s.omega - s.omega_linear) / 0.02**2, 3), s.stable, s.coefficients.shape
         (0.228, True, (1, 5, 9))
     """
-    d = _run(model, "standing", branch, theta, amplitude, ramp, (), harmonics, max_harmonics, tail_tolerance,
-             tolerance, max_iterations, ring_sites=ring_sites)
+    return _standing(_run(model, "standing", branch, theta, amplitude, ramp, (), harmonics, max_harmonics,
+                          tail_tolerance, tolerance, max_iterations, ring_sites=ring_sites))
+
+
+def _standing(d):
+    """The StandingWave of the job's summary ``d`` (standing) with its ``coefficients_array``."""
     s = d["standing"]
     f = s["floquet"]
     w = s["waves"][-1]

@@ -164,6 +164,60 @@ def test_wave_cli_file_equals_python(tmp_path, cli):
     assert branch["omega"].tolist() == [w["omega"] for w in printed["waves"]]
 
 
+def test_standing_wave_file_holds_the_json_numbers_and_equals_python(tmp_path, cli):
+    # klein_gordon (not the paper's chain): theta = 2 pi/5 on 10 sites, A = 0.3 after the ramp 0.15, 0.3
+    printed = cli("wave", "standing", "--model", "klein_gordon", "--theta", "2*pi/5", "--amplitude", "0.3",
+                  "--ramp", "2", "--ring-sites", "10", "--out", tmp_path / "cli", "--format", "hdf5")
+    assert (tmp_path / "cli" / "standing.csv").is_file()  # the CSV files stay; result.h5 beside them
+    s = printed["standing"]
+    path = tmp_path / "cli" / "result.h5"
+    with h5py.File(path, "r") as f:
+        # every number of the file is the printed JSON's, bit for bit
+        for key in ("amplitude", "omega", "omega_shift", "harmonics", "residual"):
+            assert f[key][()].tolist() == [w[key] for w in s["waves"]], key
+        assert f["coefficients"][()].tolist() == s["coefficients"]  # [field][site][k]
+        assert f["coefficients"].shape == (1, s["period_sites"], s["waves"][-1]["harmonics"] + 1)
+        # the profiles at t = 0 and a quarter period: standing_profile.csv's (printed to 17 digits)
+        csv = np.loadtxt(tmp_path / "cli" / "standing_profile.csv", delimiter=",", skiprows=1)
+        assert f["profile"][()].tolist() == [csv[:, 1].tolist()]
+        assert f["profile_quarter_period"][()].tolist() == [csv[:, 2].tolist()]
+        # and the orbit's: u(0) = sum_k c_k, u(T/4) = sum_k c_k cos(k pi/2)
+        c = f["coefficients"][()]
+        k = np.arange(c.shape[2])
+        np.testing.assert_allclose(f["profile"][()], c.sum(axis=2), rtol=0, atol=1e-15)
+        np.testing.assert_allclose(f["profile_quarter_period"][()], (c * np.cos(k * np.pi / 2)).sum(axis=2), rtol=0,
+                                   atol=1e-15)
+        mu = f["floquet_multipliers"][()]
+        assert mu.dtype == np.complex128 and mu.real.tolist() == s["floquet"]["re"]
+        assert mu.imag.tolist() == s["floquet"]["im"]
+        assert f.attrs["ring_sites"] == 10 and f.attrs["period_sites"] == s["period_sites"] == 5
+        assert f.attrs["theta"] == printed["theta"] == s["ring_theta"]
+    attrs, model = _provenance(path)
+    assert attrs["lrchain_result"] == "StandingWave" and model["name"] == "klein_gordon"
+    # Python's to_hdf5 writes the same datasets (one writer); lrchain.load gives Python's numbers
+    python = lrchain.wave.standing(lrchain.load_model("klein_gordon"), theta=2 * math.pi / 5, amplitude=0.3, ramp=2,
+                                   ring_sites=10)
+    python.to_hdf5(tmp_path / "python.h5")
+    with h5py.File(path, "r") as a, h5py.File(tmp_path / "python.h5", "r") as b:
+        for name in ("amplitude", "omega", "omega_shift", "harmonics", "residual", "coefficients", "profile",
+                     "profile_quarter_period", "floquet_multipliers"):
+            np.testing.assert_array_equal(a[name][()], b[name][()])
+    loaded = lrchain.load(tmp_path / "cli")
+    assert isinstance(loaded, lrchain.wave.StandingWave)
+    np.testing.assert_array_equal(loaded.coefficients, python.coefficients)
+    np.testing.assert_array_equal(loaded.multipliers, python.multipliers)
+    assert (loaded.omega, loaded.stable, loaded.branch) == (python.omega, python.stable, python.branch)
+    # no wave at the amplitude (exit 3): the file holds the ramp before it; lrchain.load says why there is no wave
+    done = subprocess.run([str(_cli_path()), "wave", "standing", "--model", "fput", "--theta", "9*pi/10", "--amplitude",
+                           "0.8", "--ring-sites", "20", "--out", str(tmp_path / "failed"), "--format", "hdf5"],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 3, done.stderr
+    with h5py.File(tmp_path / "failed" / "result.h5", "r") as f:
+        assert f["amplitude"][()].tolist() == [0.2] and "coefficients" not in f and "floquet_multipliers" not in f
+    with pytest.raises(lrchain.NumericalFailure, match="no standing wave at A = 0.8.*Newton did not converge"):
+        lrchain.load(tmp_path / "failed")
+
+
 def test_new_options_refuse_bad_input_and_write_nothing(tmp_path):
     blocker = tmp_path / "file"
     blocker.write_text("x")

@@ -56,6 +56,7 @@ def _runs():
                                                                 sites=81, points=3),
         "wave": lambda: lrchain.wave.stability(fput(), theta=2.5, amplitude=0.02, k_points=10),
         "wave_branch": lambda: lrchain.wave.continue_branch(fput(), theta=2.5, amplitudes=[0.05, 0.1]),
+        "standing": lambda: lrchain.wave.standing(fput(), theta=2 * math.pi / 5, amplitude=0.02, ring_sites=10),
     }
 
 
@@ -66,7 +67,8 @@ def _assert_equal(a, b, where):
         for f in dataclasses.fields(a):
             if f.name == "source":  # Coefficients: the Params/Model evaluated, or the model read from the file
                 _assert_equal(a.model, b.model, f"{where}.model")
-            elif f.name != "summary" or type(a).__name__ in ("BrightBreather", "TravellingWave", "WaveBranch"):
+            elif f.name != "summary" or type(a).__name__ in ("BrightBreather", "TravellingWave", "WaveBranch",
+                                                                      "StandingWave"):
                 # a bright breather's and a wave's summary is exact JSON text in its file; the others' summary
                 # tree drops nulls, reads booleans as 0/1: compared by file
                 _assert_equal(getattr(a, f.name), getattr(b, f.name), f"{where}.{f.name}")
@@ -103,7 +105,7 @@ def test_every_result_class_round_trips(tmp_path):
     assert classes == {"BrightResult", "DriveResult", "ModulatedResult", "ModelBrightResult", "RingResult",
                        "DarkSolution", "Branch", "Evolution", "ModelDarkSolution", "ModelBranch", "ModelEvolution",
                        "Coefficients", "Intervals", "RegimeMap", "BoundaryCurve", "BrightBreather", "BrightBranch",
-                       "TravellingWave", "WaveBranch"}
+                       "TravellingWave", "WaveBranch", "StandingWave"}
 
 
 def test_cli_out_folder_summary_and_sweep(tmp_path, cli, source_dir):

@@ -1,4 +1,4 @@
-// The "dark continue", "regime intervals" and "wave stability" sweep jobs (sweep/study_jobs.hpp): their base
+// The "dark continue", "regime intervals", "wave ..." and "bright ..." sweep jobs (sweep/study_jobs.hpp): their base
 // configs' schemas, and one point run in-process and reduced to scalars and rows.
 #include "lrchain/jobs/sweep/study_jobs.hpp"
 
@@ -344,8 +344,12 @@ JobResult run_regime(const Document& doc, const ModelSource* source) {
 
 const std::vector<std::string>& study_kinds() {
   static const std::vector<std::string> k{"dark continue", "regime intervals", "wave stability", "wave fate",
-                                          "bright floquet", "bright continue"};
+                                          "wave standing", "bright floquet", "bright continue"};
   return k;
+}
+
+bool is_wave_kind(std::string_view kind) {
+  return kind == "wave stability" || kind == "wave fate" || kind == "wave standing";
 }
 
 bool is_bright_kind(std::string_view kind) { return kind == "bright floquet" || kind == "bright continue"; }
@@ -359,6 +363,7 @@ const TableSchema& study_schema(std::string_view kind) {
                                     {"regime intervals", study_top("regime intervals", "regime", regime_table(), false)},
                                     {"wave stability", study_top("wave stability", "wave", wave_table("wave stability"), true)},
                                     {"wave fate", study_top("wave fate", "wave", wave_table("wave fate"), true)},
+                                    {"wave standing", study_top("wave standing", "wave", wave_table("wave standing"), true)},
                                     {"bright floquet", study_top("bright floquet", "bright", bright_table("bright floquet"), true)},
                                     {"bright continue", study_top("bright continue", "bright", bright_table("bright continue"), true)}};
   return schema_of(schemas, kind);
@@ -370,13 +375,14 @@ const TableSchema& model_study_schema(std::string_view kind) {
       {"regime intervals", model_study_top("regime intervals", "regime", regime_table(), false)},
       {"wave stability", model_study_top("wave stability", "wave", wave_table("wave stability"), true)},
       {"wave fate", model_study_top("wave fate", "wave", wave_table("wave fate"), true)},
+      {"wave standing", model_study_top("wave standing", "wave", wave_table("wave standing"), true)},
       {"bright floquet", model_study_top("bright floquet", "bright", bright_table("bright floquet"), true)},
       {"bright continue", model_study_top("bright continue", "bright", bright_table("bright continue"), true)}};
   return schema_of(schemas, kind);
 }
 
 void check_study_config(std::string_view kind, const Document& doc, const ModelSource* model) {
-  if (kind == "wave stability" || kind == "wave fate") {
+  if (is_wave_kind(kind)) {
     check_wave_base(kind, doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model);
   } else if (is_bright_kind(kind)) {
     check_bright_base(kind, doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model);
@@ -390,20 +396,20 @@ void check_study_config(std::string_view kind, const Document& doc, const ModelS
 }
 
 std::vector<std::string> study_scalar_names(std::string_view kind, const ModelDefinition* model) {
-  if (kind == "wave stability" || kind == "wave fate") return wave_scalar_names(kind);
+  if (is_wave_kind(kind)) return wave_scalar_names(kind);
   if (is_bright_kind(kind)) return bright_scalar_names(kind);
   return kind == "dark continue" ? dark_scalar_names() : regime_scalar_names(model);
 }
 
 std::vector<std::string> study_row_names(std::string_view kind) {
   if (kind == "dark continue") return dark_row_names();
-  if (kind == "wave stability" || kind == "wave fate") return wave_row_names();
+  if (is_wave_kind(kind)) return wave_row_names(kind);
   if (is_bright_kind(kind)) return bright_row_names(kind);
   return {"branch", "lo", "hi", "length", "lo_cause", "hi_cause"};
 }
 
 std::string study_rows_legend(std::string_view kind, const ModelDefinition* model) {
-  if (kind == "wave stability" || kind == "wave fate") return wave_rows_legend();
+  if (is_wave_kind(kind)) return wave_rows_legend(kind);
   if (is_bright_kind(kind)) return bright_rows_legend(kind);
   if (kind == "dark continue")
     return "one row per branch point in continuation order; stability: 0 stable, +1 real, +2 period doubling, "
@@ -419,7 +425,7 @@ std::string study_rows_legend(std::string_view kind, const ModelDefinition* mode
 JobResult run_study(std::string_view kind, const Document& doc, const RunControl& control, const ModelSource* model) {
   JobResult r;
   try {
-    if (kind == "wave stability" || kind == "wave fate")
+    if (is_wave_kind(kind))
       r = run_wave(kind, doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model, control.stop);
     else if (is_bright_kind(kind))
       r = run_bright(kind, doc, check(doc, model ? model_study_schema(kind) : study_schema(kind)), model);

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 
 #include <fmt/format.h>
@@ -23,13 +24,17 @@ namespace {
 
 constexpr double no_value = std::numeric_limits<double>::quiet_NaN();
 
-// The wave job's step of a sweep kind: "stability" or "fate".
-std::string step_of(std::string_view kind) { return kind == "wave fate" ? "fate" : "stability"; }
+// The wave job's step of a sweep kind: "stability", "fate" or "standing".
+std::string step_of(std::string_view kind) {
+  return kind == "wave fate" ? "fate" : kind == "wave standing" ? "standing" : "stability";
+}
 
-// [wave] into the job's config (stability step) at the point's model, with the job's checks.
+// [wave] into the job's config (its kind's step) at the point's model, with the job's checks.
 WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTable& root, const PointModel& p) {
   WaveConfig c;
-  c.step = kind == "wave fate" ? jobs::wave::WaveStep::fate : jobs::wave::WaveStep::stability;
+  c.step = kind == "wave fate"       ? jobs::wave::WaveStep::fate
+           : kind == "wave standing" ? jobs::wave::WaveStep::standing
+                                     : jobs::wave::WaveStep::stability;
   c.model = &*p.model;
   c.kernels = p.kernels;
   const CheckedTable w = *root.table("wave");
@@ -41,9 +46,9 @@ WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTa
   if (w.read("harmonics", integer)) c.initial_harmonics = Index(integer);
   if (w.read("max_harmonics", integer)) c.max_harmonics = Index(integer);
   if (w.read("max_iterations", integer)) c.max_iterations = Index(integer);
-  if (w.read("k_points", integer)) c.k_points = Index(integer);
+  if (c.step != jobs::wave::WaveStep::standing && w.read("k_points", integer)) c.k_points = Index(integer);
+  if (c.step != jobs::wave::WaveStep::stability && w.read("ring_sites", integer)) c.ring_sites = Index(integer);
   if (c.step == jobs::wave::WaveStep::fate) {
-    if (w.read("ring_sites", integer)) c.ring_sites = Index(integer);
     if (w.read("seed", integer)) c.seed = Index(integer);
     if (w.read("steps_per_period", integer)) c.steps_per_period = Index(integer);
     w.read("noise", c.noise);
@@ -52,13 +57,35 @@ WaveConfig read_wave(std::string_view kind, const Document& doc, const CheckedTa
   }
   w.read("tail_tolerance", c.tail_tolerance);
   w.read("tolerance", c.tolerance);
-  w.read("unstable_tolerance", c.unstable_tolerance);
+  if (c.step != jobs::wave::WaveStep::standing) w.read("unstable_tolerance", c.unstable_tolerance);
   try {
     jobs::wave::validate(c);
   } catch (const InvalidParameter& e) {  // the Config key, spelled as [wave] names it
     throw table_key_error(doc, "wave", e, jobs::wave::wave_options());
   }
   return c;
+}
+
+// A "wave standing" point: the standing wave's scalars (wave_scalar_names) and one row per Floquet multiplier.
+JobResult standing_point(const WaveConfig& c) {
+  const jobs::wave::WaveResult w = jobs::wave::run(c);
+  JobResult r;
+  if (w.failure || !w.standing_floquet) {
+    r.status = PointStatus::numerical_failure;
+    r.reason = w.failure.value_or("no Floquet multipliers");  // names the amplitude and theta
+    return r;
+  }
+  const auto& wave = w.standing.back();
+  const auto& f = *w.standing_floquet;
+  // growth per unit time of the fastest perturbation, ln|mu| / T: 0 when every |mu| is within the
+  // Floquet tolerance of the unit circle (stable)
+  const double growth_rate = f.stable ? 0.0 : std::log(f.largest_modulus) * wave.omega / (2 * std::numbers::pi);
+  r.scalars = {wave.omega,   wave.omega_linear, wave.omega - wave.omega_linear, double(wave.harmonics),
+               wave.residual, wave.tail,        f.stable ? 1.0 : 0.0,          f.largest_modulus,
+               growth_rate,  w.theta,           double(wave.sites)};
+  for (const auto& mu : f.multipliers) r.rows.insert(r.rows.end(), {mu.real(), mu.imag(), std::abs(mu)});
+  r.status = PointStatus::ok;
+  return r;
 }
 
 }  // namespace
@@ -70,11 +97,16 @@ std::shared_ptr<const TableSchema> wave_table(std::string_view kind) {
   return std::make_shared<const TableSchema>(
       TableSchema{kind == "wave fate" ? "an exact travelling wave, its growth rates and what it becomes on a ring, as "
                                         "`lrchain wave fate`"
-                                      : "an exact travelling wave and its Floquet-Bloch growth rates, as `lrchain wave stability`",
+                  : kind == "wave standing"
+                      ? "an exact standing wave and its Floquet multipliers on a ring, as `lrchain wave standing`"
+                      : "an exact travelling wave and its Floquet-Bloch growth rates, as `lrchain wave stability`",
                   keys, std::nullopt});
 }
 
 std::vector<std::string> wave_scalar_names(std::string_view kind) {
+  if (kind == "wave standing")
+    return {"omega",  "omega_linear",    "omega_shift", "harmonics",  "residual",    "tail",
+            "stable", "largest_modulus", "growth_rate", "ring_theta", "period_sites"};
   std::vector<std::string> n{"omega",       "omega_linear",     "omega_shift", "nls_omega_shift",
                                           "harmonics",   "residual",         "stable",      "largest_rate",
                                           "at_k",        "nls_largest_rate", "nls_k",       "unstable_bands",
@@ -88,12 +120,15 @@ std::vector<std::string> wave_scalar_names(std::string_view kind) {
   return n;
 }
 
-const std::vector<std::string>& wave_row_names() {
-  static const std::vector<std::string> n{"k_from", "k_to", "largest_rate", "at_k"};
-  return n;
+const std::vector<std::string>& wave_row_names(std::string_view kind) {
+  static const std::vector<std::string> bands{"k_from", "k_to", "largest_rate", "at_k"}, multipliers{"re", "im", "modulus"};
+  return kind == "wave standing" ? multipliers : bands;
 }
 
-std::string wave_rows_legend() {
+std::string wave_rows_legend(std::string_view kind) {
+  if (kind == "wave standing")
+    return "one row per Floquet multiplier mu of the standing wave on the ring (fields x 2 x ring_sites of them), by "
+           "decreasing modulus: Re mu, Im mu, |mu|";
   return "one row per band of perturbation wavenumbers K with growth (Re lambda above unstable_tolerance x omega): "
          "its ends, its largest rate and the K of it";
 }
@@ -108,6 +143,7 @@ JobResult run_wave(std::string_view kind, const Document& doc, const CheckedTabl
   const PointModel p = point_model(root, source);
   WaveConfig c = read_wave(kind, doc, root, p);
   c.stop = stop;
+  if (c.step == jobs::wave::WaveStep::standing) return standing_point(c);
   const jobs::wave::WaveResult w = jobs::wave::run(c);
   JobResult r;
   if (w.ring_run_failed) {  // the wave exists: its ring run blew up (status blew_up) or drifted

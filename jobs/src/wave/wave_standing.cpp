@@ -40,8 +40,6 @@ std::vector<double> ramp_amplitudes(const WaveConfig& c) {
 void check_standing(const WaveConfig& c) {
   if (!std::isfinite(double(c.ring_sites)) || c.ring_sites < 8 || c.ring_sites > 100000)
     throw InvalidParameter("ring_sites", fmt::format("{} is outside [8, 100000]", c.ring_sites));
-  if (c.format != "csv")
-    throw InvalidParameter("format", "must be csv for standing waves (result.h5 holds travelling waves only)");
   const Index j = ring_index(c);
   if (j <= 0 || 2 * j >= c.ring_sites)
     throw InvalidParameter("theta", fmt::format("moves to {} on a ring of {} sites (ring_sites): a standing wave needs "
@@ -117,6 +115,13 @@ json standing_json(const WaveResult& r) {
   return j;
 }
 
+std::array<Eigen::VectorXd, 2> standing_profiles(const sim::wave::StandingWave& w) {
+  std::array<Eigen::VectorXd, 2> at;
+  sim::wave::standing_positions(w, w.sites, 0.0, at[0]);
+  sim::wave::standing_positions(w, w.sites, std::numbers::pi / (2 * w.omega), at[1]);
+  return at;
+}
+
 void write_standing(const WaveResult& r, const std::string& dir, Figures& figures) {
   std::ostringstream os;
   os << "amplitude,omega,omega_shift,harmonics,tail,residual\n";
@@ -127,9 +132,7 @@ void write_standing(const WaveResult& r, const std::string& dir, Figures& figure
   if (r.failure) return;
   const auto& w = r.standing.back();
   const Index fields = w.coefficients.rows() / w.sites;
-  Eigen::VectorXd at0, at_quarter;
-  sim::wave::standing_positions(w, w.sites, 0.0, at0);
-  sim::wave::standing_positions(w, w.sites, std::numbers::pi / (2 * w.omega), at_quarter);
+  const auto [at0, at_quarter] = standing_profiles(w);
   std::ostringstream p;
   p << "n";
   for (Index f = 0; f < fields; ++f) p << ",u" << f << "_t0,u" << f << "_quarter_period";

@@ -1,6 +1,7 @@
 #pragma once
 // The standing wave step of the wave job (`lrchain wave standing`, docs/waves.md "Standing waves"): its
 // checks, its run, its JSON and its files, called by validate/run/to_json/write (wave_job.hpp).
+#include <array>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,10 @@ void run_standing(const WaveConfig& c, WaveResult& r);
 
 // {ring_sites, period_sites, ring_theta, reflection, waves, omega, coefficients, floquet}.
 nlohmann::json standing_json(const WaveResult& r);
+
+// The wave's positions u_f[n] (fields x sites, field-major) at t = 0 and at a quarter period t = pi / (2 omega):
+// standing_profile.csv's and result.h5's profiles.
+std::array<Eigen::VectorXd, 2> standing_profiles(const sim::wave::StandingWave& w);
 
 // standing.csv (the ramp), standing_profile.csv (u_f[n] at t = 0 and t = T/4 over one spatial period),
 // floquet.csv and floquet.gp (the multipliers in the complex plane with the unit circle).

@@ -13,7 +13,10 @@
 //                       as `lrchain wave stability`; scalars: omega and its shift beside the NLS's,
 //                       stable, the largest growth rate and its K beside the NLS's, ...; one row per
 //                       unstable band; "wave fate" also what the wave becomes on a ring
-//                       (`lrchain wave fate`): its fate, breakup time, participation, entropy.
+//                       (`lrchain wave fate`): its fate, breakup time, participation, entropy;
+//                       "wave standing" the exact standing wave (`lrchain wave standing`): omega and
+//                       its shift, the largest Floquet multiplier modulus on the ring and its growth
+//                       rate; one row per multiplier.
 //   "bright floquet":   the exact bright breather and its Floquet multipliers (bright_breather_job.hpp),
 //                       as `lrchain bright floquet`; scalars: converged, residual, peak, width, stable,
 //                       stability class, largest non-trivial |lambda|, ...
@@ -33,10 +36,12 @@
 
 namespace lrchain::jobs::sweep {
 
-// "dark continue", "regime intervals", "wave stability", "wave fate", "bright floquet" and "bright continue".
+// "dark continue", "regime intervals", "wave stability", "wave fate", "wave standing", "bright floquet" and
+// "bright continue".
 const std::vector<std::string>& study_kinds();
 bool is_study_kind(std::string_view kind);
 bool is_bright_kind(std::string_view kind);  // "bright floquet" or "bright continue"
+bool is_wave_kind(std::string_view kind);    // "wave stability", "wave fate" or "wave standing"
 // The base config's schema of a study kind (top level: experiment, [model], [dark], [regime] or [wave]).
 const lrchain::config::TableSchema& study_schema(std::string_view kind);
 // The schema of a model-file base of a study kind (experiment, model = "FILE", [parameters], and
