@@ -61,7 +61,7 @@ double mirror_defect(const std::vector<double>& b, Index doubled_centre) {
 
 TEST_CASE("bright job: diatomic gap breathers, heavy-centred unstable, light-centred without real instability" *
           doctest::test_suite("fast")) {
-  // Theocharis et al. (2010), abstract and Sec. III: the gap breather centred on a heavy bead has a
+  // Theocharis et al. (2010), abstract: the gap breather centred on a heavy bead has a
   // symmetric profile and is unstable; the one centred on a light bead has an asymmetric profile and is
   // "potentially stable". At omega_b = 1.1, deep in the gap (1, sqrt 2) of m = 2 (their strongly
   // discrete regime), --center bond (the NLS envelope symmetric about v[0]) converges to the heavy-bead
