@@ -69,6 +69,14 @@ std::vector<BranchSample> branch_samples(const BrightBreatherResult& r, double u
   return samples;
 }
 
+// The localization check of config c: its tail tolerance and where its family's centre lies on x_0.
+BrightProfileOptions bright_profile_options(const BrightBreatherConfig& c) {
+  BrightProfileOptions o;
+  o.tail_tolerance = c.tail_tolerance;
+  o.centre_position = dark_center_n0(parse_dark_center(c.center)) + (c.model->definition().mean_flow ? 0.5 : 0.0);
+  return o;
+}
+
 // The breather re-solved on `shooting` at omega_b by dense Newton from `guess`, with its Floquet
 // analysis, or nullopt when Newton fails, its zero is no localized breather or lies farther than 10% of
 // the guess's peak from it (another family, not the branch between the bracket's ends).
@@ -81,7 +89,7 @@ std::optional<CrossingSolution> resolved_breather(const sim::dark::DarkShooting&
   const sim::dark::NewtonResult n = solve_breather(shooting, guess, omega_b, newton_options(c, {}), dense, record);
   if (!n.converged || (n.q - guess).lpNorm<Eigen::Infinity>() > 0.1 * guess.lpNorm<Eigen::Infinity>())
     return std::nullopt;
-  const BrightProfile profile = inspect_bright_profile(n.q, c.sites, {c.tail_tolerance});
+  const BrightProfile profile = inspect_bright_profile(n.q, c.sites, bright_profile_options(c));
   if (!profile.localized) return std::nullopt;
   return CrossingSolution{n.q, bright_floquet(shooting.monodromy(n.q, omega_b), mean_flow, {c.unit_tolerance}),
                           profile.norm_squared};
@@ -121,7 +129,7 @@ sim::dark::ContinuationOptions continuation_options(const BrightBreatherConfig& 
 void keep_bright_points(const BrightBreatherConfig& c,
                         const std::function<std::vector<double>(const sim::dark::BranchPoint&)>& parameters_at,
                         const sim::dark::ContactBonds& contacts, BrightBreatherResult& r) {
-  const BrightProfileOptions profile_options{c.tail_tolerance};
+  const BrightProfileOptions profile_options = bright_profile_options(c);
   for (std::size_t k = 0; k < r.branch.points.size(); ++k) {
     const sim::dark::BranchPoint& p = r.branch.points[k];
     BrightProfile profile = inspect_bright_profile(p.z0, c.sites, profile_options);
@@ -315,7 +323,7 @@ BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHook
                                          {}, contacts);
   r.seed = c.start == "anti-continuum" ? anti_continuum_start(c, hooks, r)
                                        : bright_seed(ansatz, mean_flow, c.kernels->fields, c.sites);
-  const BrightProfileOptions profile_options{c.tail_tolerance};
+  const BrightProfileOptions profile_options = bright_profile_options(c);
   r.seed_profile = inspect_bright_profile(r.seed, c.sites, profile_options);
   if (!r.start_failure.empty()) {
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -13,6 +13,10 @@ namespace lrchain::sim::bright {
 struct BrightProfileOptions {
   double tail_tolerance = 1e-3;   // max |Z| on the ring's far quarter <= this x the peak: decayed
   double shape_tolerance = 1e-6;  // the envelope may rise outward by at most this x the peak
+  // Where the breather's centre lies on x_0's sites, from the middle site: the envelope's n0 (bond: 1/2),
+  // plus 1/2 in strain form (r[n] = u[n] - u[n-1] sits between u[n-1] and u[n]). A bond-centred
+  // breather of a cell with several fields (centred on the second bead) peaks in r up to two sites on.
+  double centre_position = 0;
 };
 
 struct BrightProfile {
@@ -27,7 +31,8 @@ struct BrightProfile {
 
 // The profile of Z(0) (field-major, `sites` per variable, centre at the middle site (sites - 1)/2).
 // Localized when the tail has decayed (tail <= tail_tolerance), the peak of the first variable sits at
-// the centre (within one site: a bond-centred breather has two equal maxima) and the envelope (the
+// the centre (within one site of the middle site or of centre_position: a bond-centred breather has two
+// equal maxima) and the envelope (the
 // maximum of |x_0| over pairs of neighbouring sites, so that a staggered carrier riding on a mean
 // offset counts as one hump) does not rise moving outward from the centre by more than
 // shape_tolerance x the peak.
