@@ -244,8 +244,11 @@ std::vector<std::string> write_sweep_figures(const SweepConfig& c, const Job& jo
      << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", *std::min_element(xlo.begin(), xlo.end()),
                     *std::max_element(xhi.begin(), xhi.end()), *std::min_element(ylo.begin(), ylo.end()),
                     *std::max_element(yhi.begin(), yhi.end()))
-     << "set title '" << gnuplot_text(c.name) << (categorical ? ": fate; + NLS focusing (dashed), x exact growth (blue), o dark, triangle bright stage" : ": log10(" + value + ")")
-     << (ends.empty() ? "" : "; dashed: focusing interval ends") << "; blank: no value'" << (categorical ? " font ',9'" : "") << "\n";
+     << "set title '" << gnuplot_text(c.name) << (categorical ? ": fate" : ": log10(" + value + ")")
+     << (ends.empty() ? "" : "; dashed: focusing interval ends") << (categorical ? "'" : "; blank: no value'") << "\n"
+     << (categorical ? "set bmargin 5\nset label 1 '+ NLS focusing (border dashed), x exact growth (border blue), o dark "
+                       "stage, triangle bright stage; blank: no value' at screen 0.02, screen 0.025 font ',9'\n"
+                     : "");
   for (double b : ends)
     gp << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dashtype 2 linewidth 2 front\n", b);
   if (categorical) {  // the exact wave's growth border (solid), then the NLS's focusing border (dashed, on top)
