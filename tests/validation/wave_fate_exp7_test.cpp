@@ -7,29 +7,16 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "lrchain/jobs/wave_job.hpp"
 #include "lrchain/model.hpp"
-#include "lrchain/sim/model_lattice_bloch.hpp"
+#include "../support/exp7_seeded_fate.hpp"
 
 using namespace lrchain;
 
 TEST_CASE("wave fate: experiment 7's seeded wave passes through a dark stage, its departure from the wave is not the mean flow") {
   const Model chain = shipped_model("resonant_chain", {{"rho", 0.32}, {"delta0", 0.27}});
-  jobs::wave::WaveConfig c;
-  c.step = jobs::wave::WaveStep::fate;
-  c.model = &chain;
-  c.kernels = &sim::lattice_kernels_of(chain);
-  c.branch = "acoustic";
-  c.theta = 252 * std::numbers::pi / 401;
-  c.amplitude = 0.03;
-  c.k_points = 60;
-  c.ring_sites = 401;
-  c.noise = 0;
-  c.modulation = 0.01;
-  c.periods = 8500;
-  const jobs::wave::WaveResult r = jobs::wave::run(c);
+  const jobs::wave::WaveResult r = test::exp7_seeded_fate(chain);
   REQUIRE(r.fate);
   const auto& f = *r.fate;
   CHECK(f.strain_deviation);
