@@ -123,10 +123,19 @@ BackgroundSpectrum background_spectrum(const bright::WindowLattice& lattice, con
   const Index cells = r.ring_sites / 2;
   r.wavenumbers = o.wavenumbers;
   Eigen::ComplexEigenSolver<Eigen::MatrixXcd> solver;
+  // At Q = 0 the trivial multipliers (phase, and the mean strain in strain form) form Jordan blocks at
+  // +1 that an eigensolver splits by up to eps^(1/4): the nearest +1 are left out there.
+  const Index trivial = lattice.mean_flow ? 4 : 2;
   auto scan = [&](double Q, bool grid, Eigen::VectorXcd* u, Complex* leading) {
     solver.compute(bloch_monodromy(columns, fields, r.ring_sites, Q), grid);
-    for (Index i = 0; i < solver.eigenvalues().size(); ++i) {
-      const Complex l = solver.eigenvalues()[i];
+    const Eigen::VectorXcd& values = solver.eigenvalues();
+    std::vector<Index> order(std::size_t(values.size()));
+    for (Index i = 0; i < values.size(); ++i) order[std::size_t(i)] = i;
+    std::sort(order.begin(), order.end(),
+              [&](Index a, Index b) { return std::abs(values[a] - 1.0) < std::abs(values[b] - 1.0); });
+    for (Index k = Q == 0 ? trivial : 0; k < values.size(); ++k) {
+      const Index i = order[std::size_t(k)];
+      const Complex l = values[i];
       if (!grid && std::abs(l) > r.max_modulus) r.max_modulus = std::abs(l), r.max_wavenumber = Q / 2;
       if (!grid && std::abs(l) > 1 + o.window.unit_tolerance) off_circle.push_back(l);
       if (grid && std::abs(l) > std::abs(*leading)) *leading = l, *u = solver.eigenvectors().col(i);
@@ -219,9 +228,14 @@ WindowedDarkFloquet windowed_dark_floquet(const DarkShooting& shooting, const br
   r.background_seconds = seconds_since(start);
   // (a) the localized modes: the window about the dip.
   const auto window_start = std::chrono::steady_clock::now();
+  // The core: out from the dip until the deviation falls below fraction x amplitude, or below 10 x its
+  // median over the ring where the far field's own error (the solve's, ~ its tolerance times the
+  // Jacobian's condition) is larger than that.
+  Eigen::VectorXd sorted = d;
+  std::sort(sorted.data(), sorted.data() + n);
+  const double threshold = std::max(ow.fraction * amplitude, 10 * sorted[n / 2]);
   Index half = 0;
-  for (Index s = 0; s < n; ++s)
-    if (d[s] > ow.fraction * amplitude) half = std::max(half, ring_distance(s, w.center, n));
+  while (half < n / 2 && std::max(d[(w.center + half) % n], d[(w.center - half + n) % n]) > threshold) ++half;
   w.sites = std::min({n, odd_at_least(ow.cap), std::max<Index>(9, 2 * (half + ow.margin) + 1)});
   // Widened (x2, to the cap) while it has extended modes off the unit circle on a stable background:
   // a weakly localized instability (a dip's translation mode near the continuum) then fits a wider one.

@@ -8,11 +8,12 @@
 //      ring_sites sites (doubled until their weight beyond a quarter of the ring is below
 //      truncation_tolerance) give the Bloch monodromy B(Q) = sum_d G(d) exp(-i Q d) (d: cells) at
 //      every cell wavenumber Q in [0, pi]; its eigenvalues are the plane wave's multipliers on the
-//      infinite lattice. The largest on the ring's own wavenumber grid is certified by its residual
-//      on the background ring.
-//   2. window: the sites whose deviation from the background (either sign: the carrier flips across
-//      the dip) exceeds `fraction` of the background's amplitude, plus `margin` each side (odd, at most
-//      `cap`), as a ring of the same model; the breather solved there by Newton from Z(0) restricted
+//      infinite lattice (at Q = 0 without the trivial ones nearest +1: 2, 4 in strain form). The
+//      largest on the ring's own wavenumber grid is certified by its residual on the background ring.
+//   2. window: the sites out from the dip whose deviation from the background (the nearer of its two
+//      values) exceeds `fraction` of the background's amplitude (or 10 x the median deviation, where
+//      the far field's own error is larger), plus `margin` each side (odd, at most `cap`), as a ring of
+//      the same model; the breather solved there by Newton from Z(0) restricted
 //      to it (the same omega_b; an odd ring as the full one); its dense monodromy, and a second window
 //      1.5x wider. Localized eigenvectors (windowed_floquet.hpp's rule) certified by their residual on
 //      the full lattice (window_modes.hpp).
@@ -35,8 +36,16 @@
 
 namespace lrchain::sim::dark {
 
+// The window's first ring at most 201 sites (cap; the check ring 303): a wider one of a two-field
+// lattice costs minutes (401 / 603 sites of the resonant chain: 630 s).
+inline bright::WindowedFloquetOptions dark_window_options() {
+  bright::WindowedFloquetOptions o;
+  o.cap = 201;
+  return o;
+}
+
 struct WindowedDarkFloquetOptions {
-  bright::WindowedFloquetOptions window;  // count, fraction (of the background amplitude), margin, cap, tolerances
+  bright::WindowedFloquetOptions window = dark_window_options();  // count, fraction, margin, cap, tolerances
   NewtonOptions newton;                   // the window's and the background's Newton
   Index background_sites = 64;            // first ring of the background's monodromy columns (even)
   Index background_cap = 1024;            // ... doubled at most to this
