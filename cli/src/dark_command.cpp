@@ -68,7 +68,7 @@ void add_common(CLI::App& sub, DarkArgs& a) {
   if (sub.get_name() == "floquet")
     sub.add_option("--dark-floquet", c.krylov.dark_floquet, help("dark_floquet"))
         ->check(CLI::IsMember({"auto", "window", "arnoldi"}).description(""))
-        ->type_name("auto|window|arnoldi");
+        ->type_name("METHOD");
   sub.add_option("--mode", c.mode, help("mode"))
       ->check(CLI::IsMember({"reversible", "full"}).description(""))
       ->type_name("reversible|full");
