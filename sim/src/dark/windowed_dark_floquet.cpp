@@ -43,10 +43,10 @@ Eigen::VectorXd tile(const Eigen::MatrixXd& cell, Index sites) {
 }
 
 // Bloch monodromy B(Q) = sum_d G(d) exp(-i Q d) of the 2-site-periodic background from the monodromy
-// columns of one cell's 4 F unknowns on a ring of 2 m sites (d: the cell offset, nearest image).
-Eigen::MatrixXcd bloch_monodromy(const Eigen::MatrixXd& columns, Index fields, Index ring, double Q) {
-  const Index cells = ring / 2, k = 4 * fields, positions = fields * ring;
-  Eigen::MatrixXcd B = Eigen::MatrixXcd::Zero(k, k);
+// columns of one cell's 4 F unknowns on a ring of 2 m sites (d: the cell offset, nearest image), into B.
+void bloch_monodromy(const Eigen::MatrixXd& columns, Index fields, Index ring, double Q, Eigen::MatrixXcd& B) {
+  const Index cells = ring / 2, positions = fields * ring;
+  B.setZero();
   for (Index c = 0; c < cells; ++c) {
     const double d = double(c <= cells / 2 ? c : c - cells);
     const Complex phase = std::polar(1.0, -Q * d);
@@ -55,7 +55,6 @@ Eigen::MatrixXcd bloch_monodromy(const Eigen::MatrixXd& columns, Index fields, I
         for (Index s = 0; s < 2; ++s)
           B.row((block * fields + f) * 2 + s) += phase * columns.row(block * positions + f * ring + 2 * c + s);
   }
-  return B;
 }
 
 // The ring vector of Bloch amplitude u (4 F entries) at cell wavenumber Q.
@@ -126,10 +125,12 @@ BackgroundSpectrum background_spectrum(const bright::WindowLattice& lattice, con
   // At Q = 0 the trivial multipliers (phase, and the mean strain in strain form) form Jordan blocks at
   // +1 that an eigensolver splits by up to eps^(1/4): the nearest +1 are left out there.
   const Index trivial = lattice.mean_flow ? 4 : 2;
+  Eigen::MatrixXcd B(4 * fields, 4 * fields);
+  std::vector<Index> order(std::size_t(4 * fields));
   auto scan = [&](double Q, bool grid, Eigen::VectorXcd* u, Complex* leading) {
-    solver.compute(bloch_monodromy(columns, fields, r.ring_sites, Q), grid);
+    bloch_monodromy(columns, fields, r.ring_sites, Q, B);
+    solver.compute(B, grid);
     const Eigen::VectorXcd& values = solver.eigenvalues();
-    std::vector<Index> order(std::size_t(values.size()));
     for (Index i = 0; i < values.size(); ++i) order[std::size_t(i)] = i;
     std::sort(order.begin(), order.end(),
               [&](Index a, Index b) { return std::abs(values[a] - 1.0) < std::abs(values[b] - 1.0); });
