@@ -254,6 +254,11 @@ WindowedDarkFloquet windowed_dark_floquet(const DarkShooting& shooting, const br
                                      first.newton.converged ? w.check_sites : w.sites,
                                      first.newton.converged ? second.newton.failure : first.newton.failure);
       r.verdict_reason = w.verdict_reason;
+      if (r.background.unstable && r.background.ring_residual <= ow.residual_tolerance) {
+        r.verdict = r.background.unstable;  // the background's certified instability decides alone
+        w.verdict = r.verdict;
+        w.verdict_reason = r.verdict_reason = "";
+      }
       w.window_seconds = seconds_since(window_start);
       return r;
     }
