@@ -2,13 +2,15 @@
 """Exact breathers at scale (issue 29): solve and Floquet times and peak memory of `lrchain bright`
 and `lrchain dark --model` on N = 101, 1001, 10001 sites, matrix-free (--solver krylov: Newton-Krylov,
 then for a bright breather the localized multipliers of its core window certified by full-lattice
-residuals, krylov.windowed_floquet; for a dark one the 20 largest-modulus multipliers by Arnoldi,
-krylov.leading_floquet) beside the dense path where it fits (--max-dense sites). Each run is one
+residuals, krylov.windowed_floquet; for a dark one the same from the dip's window with the
+background's Floquet-Bloch multipliers, --dark-floquet window, or with --dark-arnoldi the 20
+largest-modulus multipliers by Arnoldi, krylov.leading_floquet) beside the dense path where it fits
+(--max-dense sites). Each run is one
 `lrchain ... floquet` process under /usr/bin/time (peak resident memory); the solve and Floquet seconds
 come from its JSON (krylov.solve_seconds, krylov.*_floquet.seconds; dense: the whole run for
 solve+Floquet). Not a test: prints a table.
   bench/breather_scale.py [--lrchain build/cli/lrchain] [--sites 101,1001,10001] [--max-dense 1001]
-                          [--cases bright]   (only the cases whose name contains this)
+                          [--cases bright]   (only the cases whose name contains this) [--dark-arnoldi]
 """
 import argparse
 import json
@@ -26,6 +28,12 @@ CASES = {
     # docs/dark-models.md's resonant chain dark breather below the optical band (strain form, two fields)
     "dark resonant_chain 2.42": ["dark", "floquet", "--model", "resonant_chain", "--branch", "optical",
                                  "--center", "site", "--omega-b", "2.42"],
+    # docs/dark-models.md's klein_gordon (b = -1/2, defocusing at theta = pi): a site-centred dark breather
+    # near the edge (stable) and a bond-centred one far from it (a localized real instability)
+    "dark klein_gordon b=-1/2 1.15 site": ["dark", "floquet", "--model", "klein_gordon", "--set", "b=-1/2",
+                                           "--center", "site", "--omega-b", "1.15"],
+    "dark klein_gordon b=-1/2 1.0 bond": ["dark", "floquet", "--model", "klein_gordon", "--set", "b=-1/2",
+                                          "--center", "bond", "--omega-b", "1.0"],
 }
 
 
@@ -47,6 +55,16 @@ def floquet_seconds(k):
     return k.get("windowed_floquet", k.get("leading_floquet", {})).get("seconds", 0)
 
 
+def background_summary(w):
+    """A dark window's background: the largest Floquet-Bloch modulus and its kind."""
+    b = w.get("background")
+    if b is None:
+        return ""
+    if b["reason"]:
+        return f"; background: {b['reason']}"
+    return f"; background max|l|={b['max_modulus']:.6f} ({b['kind']}, ring residual {b['ring_residual']:.1e})"
+
+
 def floquet_summary(k):
     """The multipliers column: windowed (certified of listed, largest |lambda|, max residual, verdict) or Arnoldi."""
     if "windowed_floquet" in k:
@@ -56,7 +74,7 @@ def floquet_summary(k):
         top = max((m["modulus"] for m in certified), default=float("nan"))
         worst = max((m["residual"] for m in ms if m["residual"] is not None), default=float("nan"))
         return (f"window {w['window_sites']}/{w['check_window_sites']}: {len(certified)}/{len(ms)} certified, "
-                f"max|l|={top:.6f}, residual<={worst:.1e}, {w['kind'] or w['reason']}")
+                f"max|l|={top:.6f}, residual<={worst:.1e}, {w['kind'] or w['reason']}" + background_summary(w))
     f = k.get("leading_floquet", {})
     ms = f.get("multipliers", [])
     top = ms[0]["modulus"] if ms else float("nan")
@@ -69,6 +87,7 @@ def main():
     a.add_argument("--sites", default="101,1001,10001")
     a.add_argument("--max-dense", type=int, default=1001)
     a.add_argument("--cases", default="")
+    a.add_argument("--dark-arnoldi", action="store_true", help="dark rows by Arnoldi (--dark-floquet arnoldi)")
     args = a.parse_args()
     print(f"# {os.uname().nodename}, load: {os.getloadavg()}")
     print("| case | N | path | solve s | Floquet s | total s | peak MiB | Newton | GMRES its | Floquet |")
@@ -79,7 +98,10 @@ def main():
         for n in (int(s) for s in args.sites.split(",")):
             paths = ["krylov"] + (["dense"] if n <= args.max_dense else [])
             for path in paths:
-                wall, peak, j = run(args.lrchain, [*base, "--sites", str(n), "--solver", path])
+                extra = []
+                if base[0] == "dark" and path == "krylov":
+                    extra = ["--dark-floquet", "arnoldi" if args.dark_arnoldi else "window"]
+                wall, peak, j = run(args.lrchain, [*base, "--sites", str(n), "--solver", path, *extra])
                 if "error" in j:
                     print(f"| {name} | {n} | {path} | - | - | {wall:.1f} | {peak:.0f} | {j['error']} | | |")
                     continue

@@ -65,6 +65,10 @@ void add_common(CLI::App& sub, DarkArgs& a) {
       ->type_name("bond|site");
   add_integer(sub, "--sites", c.sites, config::dark_sites.least, config::dark_sites.most, help("sites"));
   add_solver_options(sub, c.krylov, [](const std::string& key) -> const jobs::JobOption& { return dark_option(key); });
+  if (sub.get_name() == "floquet")
+    sub.add_option("--dark-floquet", c.krylov.dark_floquet, help("dark_floquet"))
+        ->check(CLI::IsMember({"auto", "window", "arnoldi"}).description(""))
+        ->type_name("METHOD");
   sub.add_option("--mode", c.mode, help("mode"))
       ->check(CLI::IsMember({"reversible", "full"}).description(""))
       ->type_name("reversible|full");

@@ -2,6 +2,7 @@
 #include "lrchain/jobs/breather_solver.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <string>
 
 #include "lrchain/errors.hpp"
@@ -15,10 +16,16 @@ void validate(const BreatherSolverOptions& o) {
   if (o.krylov_sites < 9) throw InvalidParameter("krylov_sites", "must be an integer >= 9");
   if (o.krylov_band < 1) throw InvalidParameter("krylov_band", "must be an integer >= 1");
   if (o.floquet_count < 1) throw InvalidParameter("floquet_count", "must be an integer >= 1");
+  if (o.dark_floquet != "auto" && o.dark_floquet != "window" && o.dark_floquet != "arnoldi")
+    throw InvalidParameter("dark_floquet", "must be auto, window or arnoldi, got '" + o.dark_floquet + "'");
 }
 
 bool use_krylov(const BreatherSolverOptions& o, Index sites) {
   return o.solver == "krylov" || (o.solver == "auto" && sites > o.krylov_sites);
+}
+
+bool use_dark_window(const BreatherSolverOptions& o, Index sites) {
+  return o.dark_floquet == "window" || (o.dark_floquet == "auto" && sites > o.krylov_sites);
 }
 
 namespace {
@@ -69,6 +76,39 @@ nlohmann::json to_json(const sim::bright::WindowedFloquet& w, double seconds) {
   return j;
 }
 
+// The dark window's record and the background's Floquet-Bloch spectrum.
+nlohmann::json to_json(const sim::dark::WindowedDarkFloquet& w, double seconds) {
+  nlohmann::json j = to_json(w.window, seconds);
+  j["method"] = "dip window solved by Newton, dense monodromy; residual on the full lattice; the background's "
+                "Floquet-Bloch multipliers for the continuous spectrum";
+  j["extended"] = "the window's modes of the background; the continuous spectrum is the background's (below)";
+  j["window_newton_iterations"] = w.window_newton_iterations;
+  j["window_newton_residual"] = std::isfinite(w.window_newton_residual) ? nlohmann::json(w.window_newton_residual)
+                                                                        : nlohmann::json(nullptr);
+  const sim::dark::BackgroundSpectrum& b = w.background;
+  nlohmann::json bj;
+  const bool known = b.reason.empty();
+  bj["ring_sites"] = b.ring_sites;
+  bj["wavenumbers"] = known ? nlohmann::json(b.wavenumbers) : nlohmann::json(nullptr);
+  bj["amplitude"] = b.amplitude;
+  bj["newton_residual"] = b.newton_residual;
+  bj["truncation"] = b.truncation;
+  bj["max_modulus"] = known ? nlohmann::json(b.max_modulus) : nlohmann::json(nullptr);
+  bj["max_wavenumber"] = known ? nlohmann::json(b.max_wavenumber) : nlohmann::json(nullptr);
+  bj["ring_leading"] = known ? complex_json(b.ring_leading) : nlohmann::json(nullptr);
+  bj["ring_residual"] = known ? nlohmann::json(b.ring_residual) : nlohmann::json(nullptr);
+  bj["on_unit_circle"] = known ? nlohmann::json(!b.unstable) : nlohmann::json(nullptr);
+  bj["kind"] = known ? nlohmann::json(b.unstable ? b.unstable->kind() : "stable") : nlohmann::json(nullptr);
+  bj["reason"] = known ? nlohmann::json(nullptr) : nlohmann::json(b.reason);
+  bj["seconds"] = w.background_seconds;
+  j["background"] = bj;
+  j["scope"] = "an instability is certified on this lattice (a localized eigenvector's residual) or on the infinite "
+               "one (the background's continuous spectrum); stable: the localized multipliers certified and the "
+               "continuous spectrum on the unit circle, the infinite lattice's spectrum (a finite ring's extended "
+               "modes may still grow, by O(1/N))";
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json to_json(const KrylovRecord& r) {
@@ -91,6 +131,7 @@ nlohmann::json to_json(const KrylovRecord& r) {
     j["leading_floquet"] = f;
   }
   if (r.windowed) j["windowed_floquet"] = to_json(*r.windowed, r.floquet_seconds);
+  if (r.dark_windowed) j["windowed_floquet"] = to_json(*r.dark_windowed, r.floquet_seconds);
   return j;
 }
 
@@ -125,6 +166,17 @@ void windowed_floquet(const sim::dark::DarkShooting& shooting, const sim::bright
   w.count = o.floquet_count;
   w.unit_tolerance = unit_tolerance;
   record.windowed = sim::bright::windowed_floquet(shooting, lattice, z0, omega_b, w);
+  record.floquet_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void windowed_dark_floquet(const sim::dark::DarkShooting& shooting, const sim::bright::WindowLattice& lattice,
+                           const Eigen::VectorXd& z0, double omega_b, const BreatherSolverOptions& o,
+                           double newton_tolerance, KrylovRecord& record) {
+  const auto start = std::chrono::steady_clock::now();
+  sim::dark::WindowedDarkFloquetOptions w;
+  w.window.count = o.floquet_count;
+  w.newton.tolerance = newton_tolerance;
+  record.dark_windowed = sim::dark::windowed_dark_floquet(shooting, lattice, z0, omega_b, w);
   record.floquet_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -18,7 +18,7 @@ FUNCTIONS = {"solve": dark.solve, "floquet": dark.floquet, "continue": dark.cont
 # DarkConfig keys the schema must hold (the options lrchain dark and lrchain.dark offer).
 EXPECTED_KEYS = {"omega_b", "branch", "center", "sites", "mode", "tolerance", "max_iterations", "full_monodromy",
                  "points", "ds", "omega_min", "omega_max", "branch_floquet", "t_end", "samples", "format", "out",
-                 "solver", "krylov_sites", "krylov_band", "floquet_count", "parameter", "to", "perturb",
+                 "solver", "krylov_sites", "krylov_band", "floquet_count", "dark_floquet", "parameter", "to", "perturb",
                  "perturb_size", "seed"}
 
 

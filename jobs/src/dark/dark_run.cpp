@@ -244,7 +244,10 @@ void run_model(const DarkConfig& c, const DarkRunHooks& hooks, const ContactInte
     return;
   }
   shooting.measure(r.z0, c.omega_b, r.measures);
-  if (c.step == DarkStep::floquet && r.krylov) {
+  if (c.step == DarkStep::floquet && r.krylov && ansatz.theta != 0 && use_dark_window(c.krylov, *c.sites)) {
+    windowed_dark_floquet(shooting, {c.kernels, sim::lattice_parameters(model), ansatz.mean_flow, contacts}, r.z0,
+                          c.omega_b, c.krylov, c.tolerance, *r.krylov);
+  } else if (c.step == DarkStep::floquet && r.krylov) {  // Arnoldi (and a pair at theta = 0)
     krylov_floquet(shooting, r.z0, c.omega_b, c.krylov, *r.krylov);
   } else if (c.step == DarkStep::floquet) {
     r.floquet = floquet_from_monodromy(shooting.monodromy(r.z0, c.omega_b));

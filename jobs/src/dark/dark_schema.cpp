@@ -50,6 +50,9 @@ std::vector<DarkOption> make_options() {
        "Newton-Krylov: half-width in sites of the band-probed Jacobian that preconditions GMRES"},
       {"floquet_count", "--floquet-count", "", {"floquet"}, d.krylov.floquet_count, false, ">= 1",
        "matrix-free Floquet: the number of largest-modulus multipliers computed"},
+      {"dark_floquet", "--dark-floquet", "", {"floquet"}, d.krylov.dark_floquet, false, "auto|window|arnoldi",
+       "matrix-free Floquet at a theta = pi edge: the dip's window, certified on the full lattice, with the "
+       "background's Floquet-Bloch multipliers, or restarted Arnoldi (auto: window above krylov_sites sites)"},
       {"full_monodromy", "--full-monodromy", "full_monodromy", {"floquet"}, d.full_monodromy, false,
        "not with a model file", "integrate the full period (check of the reversible reduction)"},
       {"points", "--points", "points", {"continue"}, d.points, false, integer_range(config::dark_points),

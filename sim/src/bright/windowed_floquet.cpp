@@ -5,12 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numeric>
 
-#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
-#include "lrchain/errors.hpp"
+#include "lrchain/sim/bright/window_modes.hpp"
 #include "lrchain/sim/dark/monodromy_product.hpp"
 
 namespace lrchain::sim::bright {
@@ -23,22 +21,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Distance of sites a and b on a ring of n sites.
-Index ring_distance(Index a, Index b, Index n) {
-  const Index d = std::abs(a - b) % n;
-  return std::min(d, n - d);
-}
-
-// Full-ring site of window site i (window of `width` sites centred on `center`).
-Index full_site(Index center, Index width, Index i, Index n) { return ((center - width / 2 + i) % n + n) % n; }
-
 // The eigenpairs of the dense monodromy of the window ring of `width` sites about `center`, the
 // breather's positions restricted to it (field-major), velocities zero as on the full ring.
-struct WindowSpectrum {
-  Eigen::VectorXcd values;
-  Eigen::MatrixXcd vectors;
-};
-
 WindowSpectrum window_spectrum(const WindowLattice& lattice, const Eigen::VectorXd& z0, Index full_sites, Index center,
                                Index width, double omega_b) {
   const Index fields = z0.size() / full_sites;
@@ -47,40 +31,7 @@ WindowSpectrum window_spectrum(const WindowLattice& lattice, const Eigen::Vector
     for (Index i = 0; i < width; ++i) zw[f * width + i] = z0[f * full_sites + full_site(center, width, i, full_sites)];
   const dark::DarkShooting window(*lattice.kernels, lattice.parameters, width, lattice.mean_flow,
                                   dark::ShootingMode::reversible, {}, lattice.contacts);
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(window.monodromy(zw, omega_b), true);
-  if (solver.info() != Eigen::Success) throw NumericalFailure("windowed Floquet: eigenvalue solver failed");
-  return {solver.eigenvalues(), solver.eigenvectors()};
-}
-
-// ||v on the window's outer `margin` sites (each end)|| / ||v||: small for a mode localized at the core.
-double edge_fraction(const Eigen::VectorXcd& v, Index width, Index margin) {
-  double edge = 0;
-  for (Index k = 0; k < v.size(); ++k) {
-    const Index i = k % width;
-    if (i < margin || i >= width - margin) edge += std::norm(v[k]);
-  }
-  return std::sqrt(edge) / v.norm();
-}
-
-// The window eigenvector v (blocks of `width` sites: positions then velocities, field-major) on the full ring.
-Eigen::VectorXcd embed(const Eigen::VectorXcd& v, Index center, Index width, Index full_sites) {
-  const Index blocks = v.size() / width;
-  Eigen::VectorXcd full = Eigen::VectorXcd::Zero(blocks * full_sites);
-  for (Index b = 0; b < blocks; ++b)
-    for (Index i = 0; i < width; ++i) full[b * full_sites + full_site(center, width, i, full_sites)] = v[b * width + i];
-  return full;
-}
-
-// ||M v - lambda v|| / ||v|| with M v from real products (M real: M v = M Re v + i M Im v).
-double residual(const dark::MonodromyProduct& product, const Eigen::VectorXcd& v, Complex lambda) {
-  const Eigen::VectorXd re = v.real(), im = v.imag();
-  Eigen::VectorXd mre(re.size()), mim = Eigen::VectorXd::Zero(im.size());
-  product.apply(re.data(), mre.data());
-  if (im.norm() > 0) product.apply(im.data(), mim.data());
-  Eigen::VectorXcd mv(v.size());
-  mv.real() = mre;
-  mv.imag() = mim;
-  return (mv - lambda * v).norm() / v.norm();
+  return window_eigenpairs(window.monodromy(zw, omega_b));
 }
 
 }  // namespace
@@ -104,51 +55,18 @@ WindowedFloquet windowed_floquet(const dark::DarkShooting& shooting, const Windo
   const WindowSpectrum first = window_spectrum(lattice, z0, n, r.center, r.sites, omega_b);
   const WindowSpectrum second = window_spectrum(lattice, z0, n, r.center, r.check_sites, omega_b);
   // Trivial +1 multipliers: the trivial_expected nearest +1.
-  const Index values = first.values.size();
-  std::vector<Index> order(static_cast<std::size_t>(values));
-  std::iota(order.begin(), order.end(), Index(0));
-  std::sort(order.begin(), order.end(),
-            [&](Index a, Index b) { return std::abs(first.values[a] - 1.0) < std::abs(first.values[b] - 1.0); });
-  const Index trivial = std::min<Index>(values, lattice.mean_flow ? 4 : 2);
-  std::vector<Index> localized;
-  for (Index k = 0; k < values; ++k) {
-    const Index i = order[std::size_t(k)];
-    if (k < trivial && std::abs(first.values[i] - 1.0) <= o.trivial_tolerance) {
-      r.trivial.push_back(first.values[i]);
-      continue;
-    }
-    if (r.sites < n && edge_fraction(first.vectors.col(i), r.sites, o.margin) > o.edge_weight)
-      r.max_extended_modulus = std::max(r.max_extended_modulus, std::abs(first.values[i]));
-    else
-      localized.push_back(i);
-  }
-  std::stable_sort(localized.begin(), localized.end(),
-                   [&](Index a, Index b) { return std::abs(first.values[a]) > std::abs(first.values[b]); });
+  const Index trivial = std::min<Index>(first.values.size(), lattice.mean_flow ? 4 : 2);
+  WindowModes modes = split_window_modes(first, r.sites, n, trivial, o);
+  r.trivial = modes.trivial;
+  r.max_extended_modulus = modes.max_extended_modulus;
+  std::vector<Index>& localized = modes.localized;
   r.localized_found = Index(localized.size());
   if (Index(localized.size()) > o.count) localized.resize(std::size_t(o.count));
   r.window_seconds = seconds_since(start);
   // Certification on the full lattice.
   const auto certify_start = std::chrono::steady_clock::now();
   const dark::MonodromyProduct product(shooting, z0, omega_b);
-  for (Index i : localized) {
-    WindowedMultiplier m;
-    m.lambda = first.values[i];
-    m.window_difference = (second.values.array() - m.lambda).abs().minCoeff();
-    // A conjugate of an earlier multiplier has the conjugate eigenvector: the same residual.
-    const auto conjugate = std::find_if(r.localized.begin(), r.localized.end(), [&](const WindowedMultiplier& e) {
-      return m.lambda.imag() != 0 && std::abs(e.lambda - std::conj(m.lambda)) <= 1e-12 * std::abs(m.lambda);
-    });
-    m.residual = conjugate != r.localized.end()
-                     ? conjugate->residual
-                     : std::optional(residual(product, embed(first.vectors.col(i), r.center, r.sites, n), m.lambda));
-    if (*m.residual > o.residual_tolerance)
-      m.reason = fmt::format("full-lattice residual {:.2e} > {:.0e}", *m.residual, o.residual_tolerance);
-    else if (m.window_difference > o.window_tolerance)
-      m.reason = fmt::format("windows of {} and {} sites differ by {:.2e} > {:.0e}", r.sites, r.check_sites,
-                             m.window_difference, o.window_tolerance);
-    m.certified = m.reason.empty();
-    r.localized.push_back(m);
-  }
+  r.localized = certify_localized(product, first, second, localized, r.center, r.sites, r.check_sites, n, o);
   r.products = product.products();
   // The verdict from the certified multipliers.
   std::vector<Complex> certified;
