@@ -127,4 +127,16 @@ TEST_CASE("bright anti-continuum: refusals name --start and --coupling" * doctes
       CHECK(e.parameter() == "coupling");
     }
   }
+  // a = 0 is in a's range but leaves the cells coupled: the single oscillator is no orbit there (its
+  // neighbours feel C), refused naming coupling when the job runs.
+  c.coupling = "a";
+  c.sites = 21;
+  validate(c);
+  try {
+    run(c);
+    FAIL("ran");
+  } catch (const InvalidParameter& e) {
+    CHECK(e.parameter() == "coupling");
+    CHECK(std::string(e.what()).find("does not uncouple") != std::string::npos);
+  }
 }

@@ -235,6 +235,14 @@ Eigen::VectorXd anti_continuum_start(const BrightBreatherConfig& c, const Bright
   const sim::bright::AntiContinuumOrbit orbit =
       sim::bright::anti_continuum_orbit(shooting, c.omega_b, c.sites, c.center == "bond", r.edge.theta != 0);
   r.anti_continuum_amplitude = orbit.amplitude;
+  // The orbit solves the lattice at coupling 0 only if that parameter uncouples the cells.
+  Eigen::VectorXd residual;
+  shooting.evaluate(orbit.z0, c.omega_b, residual, nullptr);
+  if (const double worst = residual.lpNorm<Eigen::Infinity>(); !(worst <= 1e-8 * std::max(1.0, orbit.amplitude)))
+    throw InvalidParameter("coupling", fmt::format("{} = 0 does not uncouple the cells of {}: one oscillator at omega_b = "
+                                                   "{} with the others at rest is no orbit there (residual {:.3g}); name "
+                                                   "the parameter of the coupling between neighbours",
+                                                   c.coupling, model.name(), c.omega_b, worst));
   const double coupling = model.parameter(c.coupling);
   if (coupling == 0) return orbit.z0;
   BrightBreatherConfig steps = c;
