@@ -37,7 +37,9 @@ class BrightFloquet:
     flow; ``trivial_found`` when they lie within 1e-3 of +1, ``trivial_distance`` their largest
     |lambda - 1|), ``stable`` (every other |lambda| <= 1 + unit_tolerance), ``kind``,
     ``max_nontrivial_modulus``, ``unit_circle_defect`` (max ||lambda| - 1| of the others),
-    ``pairing_defect`` and ``det_defect`` = |det M - 1| (accuracy of the symplectic structure)."""
+    ``pairing_defect`` and ``det_defect`` = |det M - 1| (accuracy of the symplectic structure); from
+    :func:`floquet`, ``krein``: per multiplier on the upper unit circle a dict angle, modulus and signature
+    (+1, -1, None when undetermined), so that an oscillatory instability's colliding pair is labelled."""
 
     multipliers: np.ndarray
     trivial: np.ndarray
@@ -50,6 +52,7 @@ class BrightFloquet:
     unit_circle_defect: float
     pairing_defect: float
     det_defect: float
+    krein: list = None
 
     def __repr__(self):
         return (f"BrightFloquet({'stable' if self.stable else self.kind}, {len(self.multipliers)} multipliers, "
@@ -121,7 +124,7 @@ def _breather(d):
             multipliers=_complex(floquet["multipliers"]), trivial=_complex(floquet["trivial"]),
             **{k: floquet[k] for k in ("trivial_expected", "trivial_found", "trivial_distance", "stable", "kind",
                                        "max_nontrivial_modulus", "unit_circle_defect", "pairing_defect",
-                                       "det_defect")})
+                                       "det_defect")}, krein=floquet.get("krein"))
     return BrightBreather(omega_b=d["omega_b"], center=d["center"], n=np.arange(sites) - (sites - 1) // 2, z=z,
                           seed=seed, variables=variables, newton_residuals=np.array(d["newton_residuals"]),
                           edge=d["edge"], bands=d["bands"], harmonics_checked=d["harmonics_checked"],

@@ -37,6 +37,12 @@ def test_fpu_page_mode_is_stable_with_the_trivial_multipliers_found():
     assert f.stable and f.trivial_found and f.trivial_expected == 4 and len(f.trivial) == 4
     assert f.multipliers.dtype == complex and len(f.multipliers) == 2 * 41
     assert f.unit_circle_defect <= 1e-8 and f.det_defect <= 1e-8
+    # Krein signatures of the 41 - 2 non-trivial multipliers on the upper circle (strain form, lifted to
+    # displacements: tests/unit/bright_strain_krein_test.cpp checks the lift against the displacement
+    # form); both signs occur, each +1 or -1.
+    assert len(f.krein) == 39
+    assert {k["signature"] for k in f.krein} == {1, -1}
+    assert all(abs(k["modulus"] - 1) <= 1e-6 and 0 < k["angle"] < 3.1416 for k in f.krein)
 
 
 def test_refusals_name_omega_b_and_failures_raise_numerical_failure():

@@ -94,6 +94,12 @@ void check_against_displacement_form(const char* name, const std::vector<std::pa
   }
   CHECK(plus > 0);  // both signatures occur, so a sign convention flipped in one form would show
   CHECK(plus < int(ks.size()));
+  // The floquet step reports the same signatures (BrightBreatherResult::krein, the JSON's floquet.krein).
+  REQUIRE(r.krein.size() == kd.size());
+  for (std::size_t i = 0; i < kd.size(); ++i) {
+    CHECK(std::abs(r.krein[i].lambda - kd[i].lambda) < 1e-9);
+    CHECK(r.krein[i].signature == kd[i].signature);
+  }
   // The lift of each strain-form eigenvector is an eigenvector of the displacement-form monodromy.
   Eigen::EigenSolver<Eigen::MatrixXd> solver(mr, true);
   for (Eigen::Index k = 0; k < solver.eigenvalues().size(); ++k) {

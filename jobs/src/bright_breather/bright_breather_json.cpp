@@ -38,6 +38,16 @@ json floquet_json(const sim::bright::BrightFloquet& f) {
           {"multipliers", complex_list(f.multipliers.multipliers)}};
 }
 
+// Per multiplier on the upper unit circle: angle, modulus and Krein signature (null: undetermined, the
+// strain lift does not close).
+json krein_json(const std::vector<sim::bright::KreinMultiplier>& multipliers) {
+  json krein = json::array();
+  for (const auto& m : multipliers)
+    krein.push_back({{"angle", std::arg(m.lambda)}, {"modulus", std::abs(m.lambda)},
+                     {"signature", m.signature != 0 ? json(m.signature) : json(nullptr)}});
+  return krein;
+}
+
 json edge_json(const BrightEdge& e) {
   return {{"branch", e.branch}, {"theta", e.theta}, {"omega", e.nls.omega}, {"curvature", e.nls.curvature},
           {"h_tilde", e.nls.h_tilde}, {"lambda", e.mean_flow ? json(e.nls.lambda) : json(nullptr)},
@@ -62,14 +72,7 @@ json branch_json(const BrightBreatherResult& r) {
       point["stable"] = r.branch_floquets[k].stable;
       point["max_nontrivial_modulus"] = r.branch_floquets[k].max_nontrivial_modulus;
     }
-    point["krein"] = nullptr;  // no Floquet: no signatures
-    if (k < r.branch_krein.size()) {
-      json krein = json::array();
-      for (const auto& m : r.branch_krein[k])  // signature 0: undetermined (the strain lift does not close)
-        krein.push_back({{"angle", std::arg(m.lambda)}, {"modulus", std::abs(m.lambda)},
-                         {"signature", m.signature != 0 ? json(m.signature) : json(nullptr)}});
-      point["krein"] = krein;
-    }
+    point["krein"] = k < r.branch_krein.size() ? krein_json(r.branch_krein[k]) : json(nullptr);  // no Floquet: none
     points.push_back(point);
   }
   json bifurcations = json::array();
@@ -168,6 +171,7 @@ json to_json(const BrightBreatherResult& r) {
     j["seed_difference"] = r.seed_difference;
   }
   if (r.floquet) j["floquet"] = floquet_json(*r.floquet);
+  if (r.floquet && c.step == BrightStep::floquet) j["floquet"]["krein"] = krein_json(r.krein);
   if (r.krylov) j["krylov"] = to_json(*r.krylov);
   if (r.evolution) j["evolution"] = evolution_json(r);
   if (c.step == BrightStep::branch && r.newton.converged && r.rejected.empty()) j["branch"] = branch_json(r);

@@ -45,6 +45,15 @@ Eigen::VectorXd position_masses(const lrchain_lattice_kernels& kernels, const st
   return masses;
 }
 
+// The Krein signatures of the multipliers on the upper unit circle (krein_signature.hpp), in the
+// lattice's form (strain: lifted to displacements).
+std::vector<KreinMultiplier> krein_of(const Eigen::MatrixXd& monodromy, const std::vector<double>& parameters,
+                                      double trivial_distance, const BrightBreatherConfig& c, bool mean_flow) {
+  const Eigen::VectorXd masses = position_masses(*c.kernels, parameters, c.sites);
+  return mean_flow ? strain_krein_signatures(monodromy, masses, c.sites, c.unit_tolerance, trivial_distance)
+                   : krein_signatures(monodromy, masses, c.unit_tolerance, trivial_distance);
+}
+
 // The kept branch points as the bifurcation detector sees them: arclength |d(Z(0), omega_b)| summed
 // from the first point, slope, norm and (with Floquet) the real multipliers beyond +1 and -1.
 std::vector<BranchSample> branch_samples(const BrightBreatherResult& r, double unit_tolerance) {
@@ -150,11 +159,8 @@ void keep_bright_points(const BrightBreatherConfig& c,
                                            sim::dark::ShootingMode::reversible, {}, contacts);
     const Eigen::MatrixXd monodromy = shooting.monodromy(p.z0, p.omega_b);
     r.branch_floquets.push_back(bright_floquet(monodromy, r.edge.mean_flow, {c.unit_tolerance}));
-    const Eigen::VectorXd masses = position_masses(*c.kernels, parameters, c.sites);
-    const double trivial = r.branch_floquets.back().trivial_distance;
-    r.branch_krein.push_back(r.edge.mean_flow
-                                 ? strain_krein_signatures(monodromy, masses, c.sites, c.unit_tolerance, trivial)
-                                 : krein_signatures(monodromy, masses, c.unit_tolerance, trivial));
+    r.branch_krein.push_back(
+        krein_of(monodromy, parameters, r.branch_floquets.back().trivial_distance, c, r.edge.mean_flow));
   }
   r.bifurcations = branch_bifurcations(branch_samples(r, c.unit_tolerance));
 }
@@ -350,8 +356,11 @@ BrightBreatherResult run(const BrightBreatherConfig& c, const BrightBreatherHook
     if (r.rejected.empty() && c.step == BrightStep::floquet && r.krylov)
       windowed_floquet(shooting, {c.kernels, parameters, mean_flow, contacts}, r.z0, c.omega_b, c.krylov,
                        c.unit_tolerance, *r.krylov);
-    else if (r.rejected.empty() && c.step == BrightStep::floquet)
-      r.floquet = bright_floquet(shooting.monodromy(r.z0, c.omega_b), mean_flow, {c.unit_tolerance});
+    else if (r.rejected.empty() && c.step == BrightStep::floquet) {
+      const Eigen::MatrixXd monodromy = shooting.monodromy(r.z0, c.omega_b);
+      r.floquet = bright_floquet(monodromy, mean_flow, {c.unit_tolerance});
+      r.krein = krein_of(monodromy, parameters, r.floquet->trivial_distance, c, mean_flow);
+    }
     if (r.rejected.empty() && c.step == BrightStep::branch) continue_breather(shooting, contacts, c, hooks, r);
     if (r.rejected.empty() && c.step == BrightStep::evolve) evolve_breather(shooting, c, r);
   }

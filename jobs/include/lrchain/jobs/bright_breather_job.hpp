@@ -128,6 +128,8 @@ struct BrightBreatherResult {
   double seed_difference = 0;       // max |Z(0) - seed| / max |Z(0)|
   std::string rejected;             // why a converged Newton zero is no localized bright breather ("": it is)
   std::optional<sim::bright::BrightFloquet> floquet;
+  // floquet (dense): the Krein signatures of the multipliers on the upper unit circle (krein_signature.hpp)
+  std::vector<sim::bright::KreinMultiplier> krein;
   // branch: the continuation (sim/dark/continuation.hpp), each point's profile and (branch_floquet)
   // multipliers; points after the first that is no localized breather are dropped (branch.stop_reason).
   sim::dark::BranchResult branch;
