@@ -10,6 +10,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "../support/nearest_multiplier.hpp"
 #include "lrchain/jobs/dark_job.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/dark/contact_bonds.hpp"
@@ -18,6 +19,7 @@
 #include "lrchain/sim/model_lattice_bloch.hpp"
 
 using namespace lrchain;
+using lrchain::test::nearest;
 
 namespace {
 
@@ -38,12 +40,6 @@ jobs::dark::DarkResult dense_dark(const Model& model, const char* name, const ch
   REQUIRE(!jobs::dark::failure(r));
   REQUIRE(r.floquet);
   return r;
-}
-
-double nearest(std::complex<double> l, const std::vector<std::complex<double>>& all) {
-  double d = std::numeric_limits<double>::infinity();
-  for (const auto& m : all) d = std::min(d, std::abs(l - m));
-  return d;
 }
 
 }  // namespace

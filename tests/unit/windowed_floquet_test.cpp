@@ -7,6 +7,7 @@
 #include <complex>
 #include <limits>
 
+#include "../support/nearest_multiplier.hpp"
 #include "lrchain/jobs/bright_breather_job.hpp"
 #include "lrchain/model.hpp"
 #include "lrchain/sim/bright/windowed_floquet.hpp"
@@ -15,6 +16,7 @@
 #include "lrchain/sim/model_lattice_bloch.hpp"
 
 using namespace lrchain;
+using lrchain::test::nearest;
 
 namespace {
 
@@ -34,12 +36,6 @@ jobs::bright_breather::BrightBreatherResult dense_breather(const Model& model, c
   REQUIRE(!jobs::bright_breather::failure(r));
   REQUIRE(r.floquet);
   return r;
-}
-
-double nearest(std::complex<double> l, const std::vector<std::complex<double>>& all) {
-  double d = std::numeric_limits<double>::infinity();
-  for (const auto& m : all) d = std::min(d, std::abs(l - m));
-  return d;
 }
 
 }  // namespace
